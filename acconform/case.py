@@ -1,0 +1,131 @@
+"""Case files (a shrunk difference, replayable) and oracle records (ACE's answer to a scene).
+
+``acconform.case/1``: the scene, both outcomes, the field-by-field differences, the seed that
+found it, and the versions of the port and of ACE. ``acconform.record/1``: one scene with the
+outcome ACE gave, its version and runtime -- data only, ACE's answers, never its code.
+`load_document` reads any acconform JSON file and dispatches on its "format".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .codec import Reader, dumps, parse_json_text
+from .errors import InvalidScene
+from .outcome import FORMAT as OUTCOME_FORMAT, Outcome
+from .scene import FORMAT as SCENE_FORMAT, Scene, check_format
+
+CASE_FORMAT = "acconform.case/1"
+RECORD_FORMAT = "acconform.record/1"
+
+
+@dataclass(frozen=True, slots=True)
+class Versions:
+    acconform: str = ""
+    ace: str = ""  # ACE commit or assembly version the oracle ran
+    runtime: str = ""  # e.g. "mono 6.8.0.105" or "coreclr 10.0.0"
+
+    def to_json(self):
+        return {"acconform": self.acconform, "ace": self.ace, "runtime": self.runtime}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Versions":
+        r.obj({"acconform", "ace", "runtime"})
+        return Versions(*(r[k].str_() if r.has(k) else "" for k in ("acconform", "ace", "runtime")))
+
+
+@dataclass(frozen=True, slots=True)
+class Case:
+    scene: Scene
+    port: Outcome
+    oracle: Outcome
+    differences: tuple[str, ...] = ()  # human-readable "field: port=... oracle=..." lines
+    seed: str = ""
+    mode: str = "exact"
+    versions: Versions = field(default_factory=Versions)
+
+    def to_json(self):
+        return {"format": CASE_FORMAT, "seed": self.seed, "mode": self.mode, "versions": self.versions.to_json(),
+                "differences": list(self.differences), "scene": self.scene.to_json(),
+                "port": self.port.to_json(), "oracle": self.oracle.to_json()}
+
+    @staticmethod
+    def from_json(doc, path: str = "") -> "Case":
+        r = Reader(doc, path)
+        r.obj({"format", "seed", "mode", "versions", "differences", "scene", "port", "oracle"})
+        check_format(r, CASE_FORMAT)
+        return Case(
+            scene=Scene.from_json(r["scene"].value, r["scene"].path),
+            port=Outcome.from_json(r["port"].value, r["port"].path),
+            oracle=Outcome.from_json(r["oracle"].value, r["oracle"].path),
+            differences=tuple(d.str_() for d in r["differences"].list()) if r.has("differences") else (),
+            seed=r["seed"].str_() if r.has("seed") else "",
+            mode=r["mode"].str_() if r.has("mode") else "exact",
+            versions=Versions.from_json(r["versions"]) if r.has("versions") else Versions(),
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class Record:
+    scene: Scene
+    outcome: Outcome
+    versions: Versions = field(default_factory=Versions)
+
+    def to_json(self):
+        return {"format": RECORD_FORMAT, "versions": self.versions.to_json(),
+                "scene": self.scene.to_json(), "outcome": self.outcome.to_json()}
+
+    @staticmethod
+    def from_json(doc, path: str = "") -> "Record":
+        r = Reader(doc, path)
+        r.obj({"format", "versions", "scene", "outcome"})
+        check_format(r, RECORD_FORMAT)
+        return Record(Scene.from_json(r["scene"].value, r["scene"].path),
+                      Outcome.from_json(r["outcome"].value, r["outcome"].path),
+                      Versions.from_json(r["versions"]) if r.has("versions") else Versions())
+
+
+_READERS = {SCENE_FORMAT: Scene.from_json, OUTCOME_FORMAT: Outcome.from_json,
+            CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
+
+
+def parse_document(doc, source: str | None = None):
+    """A Scene, Outcome, Case or Record from parsed JSON, by its "format" field."""
+    try:
+        if not isinstance(doc, dict):
+            raise InvalidScene("", "expected a JSON object with a \"format\" field")
+        fmt = doc.get("format")
+        if not isinstance(fmt, str):
+            raise InvalidScene("format", "missing required field (e.g. \"acconform.scene/1\")")
+        reader = _READERS.get(fmt)
+        if reader is None:
+            family, _, version = fmt.partition("/")
+            known = {f.partition("/")[0]: f for f in _READERS}
+            if family in known:
+                raise InvalidScene("format", f"unknown format version {version!r} (this acconform reads {known[family]})")
+            raise InvalidScene("format", f"unknown format {fmt!r} (known: {', '.join(sorted(_READERS))})")
+        return reader(doc)
+    except InvalidScene as e:
+        raise e.in_file(source) if source and not e.source else e
+
+
+def load_document(path: str | Path):
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InvalidScene("", "no such file", str(path)) from None
+    except (OSError, UnicodeDecodeError) as e:
+        raise InvalidScene("", f"cannot read: {e}", str(path)) from None
+    return parse_document(parse_json_text(text, str(path)), str(path))
+
+
+def write_document(path: str | Path, doc) -> Path:
+    """Write a record's JSON atomically (temp file then rename): a crash never leaves half a file."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(dumps(doc.to_json()) + "\n", encoding="utf-8")
+    tmp.replace(path)
+    return path

@@ -1,0 +1,58 @@
+"""The `acconform` command: one entry point, one subcommand per job.
+
+Exit codes: 0 success; 1 the job ran and found differences (or a case still fails);
+2 bad input or configuration (a malformed file, no ACE configured, an unknown option) --
+always one line naming what is wrong, never a traceback.
+
+Subcommands live in their own modules, imported only when chosen, each with
+`add_arguments(parser)` and `run(args) -> int`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from . import __version__
+from .errors import AcconformError
+
+# name -> (module, one-line help). Modules are imported lazily so --help stays instant.
+COMMANDS: dict[str, tuple[str, str]] = {
+    "validate": ("acconform.commands.validate", "check scene, case and record files; exit 2 naming the first bad field"),
+}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="acconform",
+        description="Differential conformance testing of Asheron's Call physics: a Python port of "
+        "ACE's collision code against ACE itself.",
+    )
+    parser.add_argument("--version", action="version", version=f"acconform {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name, (module, help_) in COMMANDS.items():
+        p = sub.add_parser(name, help=help_, description=help_)
+        p.set_defaults(_module=module)
+        importlib.import_module(module).add_arguments(p)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "command", None):
+        parser.print_help()
+        return 2
+    try:
+        return int(importlib.import_module(args._module).run(args) or 0)
+    except AcconformError as e:
+        print(f"acconform {args.command}: error: {e}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"acconform {args.command}: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

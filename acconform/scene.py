@@ -1,0 +1,478 @@
+"""The scene: everything one transition needs, as immutable records with a versioned JSON form.
+
+A scene is what both the port and the oracle take. Format ``acconform.scene/1`` (README's
+"Scene format" section documents every field). All floats are float32 values held as Python
+floats; ids are uint32. Construction from JSON validates and names the bad field; records built
+in code (e.g. by the strategies) are checked the same way by `validate_scene`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from typing import Union
+
+from .codec import Reader, dumps, parse_json_text, write_f32, write_id, write_vec
+from .errors import InvalidScene
+from .flags import CullMode, PhysicsState, TransientState, flag_names
+
+FORMAT = "acconform.scene/1"
+
+Vec3 = tuple[float, float, float]
+Quat = tuple[float, float, float, float]  # (w, x, y, z), as AC's own files write frames
+
+# ACE reads the land height table from the region DAT; with no DAT the scene carries one.
+# Default: 2 m per index (index i -> 2.0 * i), exactly representable, covering 0..510 m.
+DEFAULT_LAND_HEIGHT_TABLE: tuple[float, ...] = tuple(2.0 * i for i in range(256))
+
+IDENTITY: Quat = (1.0, 0.0, 0.0, 0.0)
+
+_CULL_NAMES = {"Landblock": CullMode.Landblock, "None": CullMode.None_,
+               "Clockwise": CullMode.Clockwise, "CounterClockwise": CullMode.CounterClockwise}
+_CULL_BY_VALUE = {v: k for k, v in _CULL_NAMES.items()}
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    origin: Vec3
+    orientation: Quat = IDENTITY
+
+    def to_json(self):
+        return {"origin": write_vec(self.origin), "orientation": write_vec(self.orientation)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Frame":
+        r.obj({"origin", "orientation"})
+        o = r.get("orientation")
+        q = IDENTITY
+        if o is not None:
+            w, x, y, z = (c.f32() for c in o.list(count=4))
+            if w == 0 and x == 0 and y == 0 and z == 0:
+                o.fail("a zero quaternion is not a rotation")
+            q = (w, x, y, z)
+        return Frame(r["origin"].vec3(), q)
+
+
+@dataclass(frozen=True, slots=True)
+class Position:
+    cell: int
+    frame: Frame
+
+    def to_json(self):
+        return {"cell": write_id(self.cell), **self.frame.to_json()}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Position":
+        r.obj({"cell", "origin", "orientation"})
+        cell = r["cell"].id_()
+        return Position(cell, Frame.from_json(Reader({k: v for k, v in r.value.items() if k != "cell"}, r.path)))
+
+
+@dataclass(frozen=True, slots=True)
+class PlaneRec:
+    normal: Vec3
+    d: float
+
+    def to_json(self):
+        return {"normal": write_vec(self.normal), "d": write_f32(self.d)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "PlaneRec":
+        r.obj({"normal", "d"})
+        return PlaneRec(r["normal"].vec3(), r["d"].f32())
+
+
+@dataclass(frozen=True, slots=True)
+class SphereRec:
+    center: Vec3
+    radius: float
+
+    def to_json(self):
+        return {"center": write_vec(self.center), "radius": write_f32(self.radius)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "SphereRec":
+        r.obj({"center", "radius"})
+        s = SphereRec(r["center"].vec3(), r["radius"].f32())
+        if not s.radius > 0:
+            r["radius"].fail(f"a sphere needs a positive radius, got {s.radius}")
+        return s
+
+
+@dataclass(frozen=True, slots=True)
+class Landblock:
+    """One outdoor landblock as CellLandblock stores it: id 0xXXYYFFFF, 9x9 heights x-major."""
+
+    id: int
+    heights: tuple[int, ...]  # 81 indices into the land height table, [x * 9 + y]
+    terrain: tuple[int, ...]  # 81 terrain words (road, type, scenery bits); water type comes from them
+
+    def to_json(self):
+        return {"id": write_id(self.id), "heights": list(self.heights), "terrain": list(self.terrain)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Landblock":
+        r.obj({"id", "heights", "terrain"})
+        lb_id = r["id"].id_()
+        if lb_id & 0xFFFF != 0xFFFF:
+            r["id"].fail(f"a landblock id ends in FFFF (e.g. 0x{lb_id >> 16:04X}FFFF), got {write_id(lb_id)}")
+        heights = tuple(h.int_(0, 255) for h in r["heights"].list(count=81))
+        terrain = tuple(t.int_(0, 0xFFFF) for t in r["terrain"].list(count=81))
+        return Landblock(lb_id, heights, terrain)
+
+
+@dataclass(frozen=True, slots=True)
+class PolygonRec:
+    vertices: tuple[Vec3, ...]
+    sides_type: int = CullMode.None_
+
+    def to_json(self):
+        return {"vertices": [write_vec(v) for v in self.vertices], "sides_type": _CULL_BY_VALUE[CullMode(self.sides_type)]}
+
+    @staticmethod
+    def from_json(r: Reader) -> "PolygonRec":
+        r.obj({"vertices", "sides_type"})
+        verts = tuple(v.vec3() for v in r["vertices"].list())
+        if len(verts) < 3:
+            r["vertices"].fail(f"a polygon needs at least 3 vertices, got {len(verts)}")
+        if _newell_area2(verts) <= 1e-12:
+            r["vertices"].fail("degenerate polygon: its vertices span no area")
+        sides = CullMode.None_
+        s = r.get("sides_type")
+        if s is not None:
+            name = s.str_()
+            if name not in _CULL_NAMES:
+                s.fail(f"unknown sides_type {name!r} (known: {', '.join(_CULL_NAMES)})")
+            sides = _CULL_NAMES[name]
+        return PolygonRec(verts, int(sides))
+
+
+def _newell_area2(verts) -> float:
+    nx = ny = nz = 0.0
+    n = len(verts)
+    for i in range(n):
+        x0, y0, z0 = verts[i]
+        x1, y1, z1 = verts[(i + 1) % n]
+        nx += (y0 - y1) * (z0 + z1)
+        ny += (z0 - z1) * (x0 + x1)
+        nz += (x0 - x1) * (y0 + y1)
+    return math.sqrt(nx * nx + ny * ny + nz * nz)
+
+
+@dataclass(frozen=True, slots=True)
+class BSPLeaf:
+    polygons: tuple[int, ...]  # indices into the shape's polygon list
+    solid: bool
+    sphere: SphereRec
+
+    def to_json(self):
+        return {"type": "leaf", "polygons": list(self.polygons), "solid": self.solid, "sphere": self.sphere.to_json()}
+
+
+@dataclass(frozen=True, slots=True)
+class BSPNode:
+    plane: PlaneRec
+    sphere: SphereRec
+    front: "BSPLeaf | BSPNode"
+    back: "BSPLeaf | BSPNode"
+
+    def to_json(self):
+        return {"type": "node", "plane": self.plane.to_json(), "sphere": self.sphere.to_json(),
+                "front": self.front.to_json(), "back": self.back.to_json()}
+
+
+def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
+    if not isinstance(r.value, dict):
+        r.fail("expected a BSP node or leaf object")
+    kind = r["type"].str_()
+    if kind == "leaf":
+        r.obj({"type", "polygons", "solid", "sphere"})
+        polys = tuple(p.int_(0, npolys - 1) for p in r["polygons"].list())
+        solid = r["solid"].bool_() if r.has("solid") else False
+        return BSPLeaf(polys, solid, SphereRec.from_json(r["sphere"]))
+    if kind == "node":
+        r.obj({"type", "plane", "sphere", "front", "back"})
+        for side in ("front", "back"):
+            if not r.has(side):
+                r.fail(f"an internal BSP node needs both children; {side!r} is missing")
+        return BSPNode(PlaneRec.from_json(r["plane"]), SphereRec.from_json(r["sphere"]),
+                       _bsp_from_json(r["front"], npolys), _bsp_from_json(r["back"], npolys))
+    r["type"].fail(f"unknown BSP element type {kind!r} (known: node, leaf)")
+
+
+@dataclass(frozen=True, slots=True)
+class BSPShape:
+    """A GfxObj's physics BSP: polygons, a tree whose root is an internal node, a bounding sphere."""
+
+    polygons: tuple[PolygonRec, ...]
+    root: BSPNode
+    sphere: SphereRec  # GfxObj.PhysicsSphere
+    kind: str = field(default="bsp", init=False)
+
+    def to_json(self):
+        return {"kind": "bsp", "polygons": [p.to_json() for p in self.polygons],
+                "root": self.root.to_json(), "sphere": self.sphere.to_json()}
+
+
+@dataclass(frozen=True, slots=True)
+class SphereShape:
+    sphere: SphereRec
+    kind: str = field(default="sphere", init=False)
+
+    def to_json(self):
+        return {"kind": "sphere", **self.sphere.to_json()}
+
+
+@dataclass(frozen=True, slots=True)
+class CylSphereShape:
+    low_point: Vec3
+    radius: float
+    height: float
+    kind: str = field(default="cylsphere", init=False)
+
+    def to_json(self):
+        return {"kind": "cylsphere", "low_point": write_vec(self.low_point),
+                "radius": write_f32(self.radius), "height": write_f32(self.height)}
+
+
+Shape = Union[BSPShape, SphereShape, CylSphereShape]
+
+
+def _shape_from_json(r: Reader) -> Shape:
+    if not isinstance(r.value, dict):
+        r.fail("expected a shape object")
+    kind = r["kind"].str_()
+    if kind == "bsp":
+        r.obj({"kind", "polygons", "root", "sphere"})
+        polys = tuple(PolygonRec.from_json(p) for p in r["polygons"].list(min_count=1))
+        root = _bsp_from_json(r["root"], len(polys))
+        if isinstance(root, BSPLeaf):
+            r["root"].fail("the BSP root must be an internal node, not a leaf")
+        return BSPShape(polys, root, SphereRec.from_json(r["sphere"]))
+    if kind == "sphere":
+        r.obj({"kind", "center", "radius"})
+        return SphereShape(SphereRec.from_json(Reader({"center": r.value.get("center"), "radius": r.value.get("radius")}, r.path)))
+    if kind == "cylsphere":
+        r.obj({"kind", "low_point", "radius", "height"})
+        cyl = CylSphereShape(r["low_point"].vec3(), r["radius"].f32(), r["height"].f32())
+        if not cyl.radius > 0:
+            r["radius"].fail(f"a cylsphere needs a positive radius, got {cyl.radius}")
+        if not cyl.height > 0:
+            r["height"].fail(f"a cylsphere needs a positive height, got {cyl.height}")
+        return cyl
+    r["kind"].fail(f"unknown shape kind {kind!r} (known: bsp, sphere, cylsphere)")
+
+
+@dataclass(frozen=True, slots=True)
+class StaticObject:
+    id: int
+    position: Position
+    shape: Shape
+    state: int = int(PhysicsState.Static)  # PhysicsState flags
+    scale: float = 1.0
+
+    def to_json(self):
+        return {"id": write_id(self.id), "position": self.position.to_json(), "shape": self.shape.to_json(),
+                "state": flag_names(PhysicsState, self.state), "scale": write_f32(self.scale)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "StaticObject":
+        r.obj({"id", "position", "shape", "state", "scale"})
+        state = r["state"].flags(PhysicsState) if r.has("state") else int(PhysicsState.Static)
+        scale = r["scale"].f32() if r.has("scale") else 1.0
+        if not scale > 0:
+            r["scale"].fail(f"scale must be positive, got {scale}")
+        return StaticObject(r["id"].id_(), Position.from_json(r["position"]), _shape_from_json(r["shape"]), state, scale)
+
+
+@dataclass(frozen=True, slots=True)
+class ContactPlane:
+    cell: int
+    plane: PlaneRec
+    is_water: bool = False
+
+    def to_json(self):
+        return {"cell": write_id(self.cell), "plane": self.plane.to_json(), "is_water": self.is_water}
+
+    @staticmethod
+    def from_json(r: Reader) -> "ContactPlane":
+        r.obj({"cell", "plane", "is_water"})
+        water = r["is_water"].bool_() if r.has("is_water") else False
+        return ContactPlane(r["cell"].id_(), PlaneRec.from_json(r["plane"]), water)
+
+
+DEFAULT_MOVER_STATE = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
+DEFAULT_MOVER_TRANSIENT = int(TransientState.Contact | TransientState.OnWalkable)
+
+
+@dataclass(frozen=True, slots=True)
+class Mover:
+    """The moving PhysicsObj: its Setup spheres and step heights, flags, and the path to try."""
+
+    spheres: tuple[SphereRec, ...]
+    begin: Position
+    end: Position
+    step_up_height: float
+    step_down_height: float
+    scale: float = 1.0
+    state: int = DEFAULT_MOVER_STATE
+    transient_state: int = DEFAULT_MOVER_TRANSIENT
+    velocity: Vec3 = (0.0, 0.0, 0.0)
+    contact_plane: ContactPlane | None = None
+    sliding_normal: Vec3 | None = None
+
+    def to_json(self):
+        d = {"spheres": [s.to_json() for s in self.spheres], "scale": write_f32(self.scale),
+             "step_up_height": write_f32(self.step_up_height), "step_down_height": write_f32(self.step_down_height),
+             "state": flag_names(PhysicsState, self.state),
+             "transient_state": flag_names(TransientState, self.transient_state),
+             "velocity": write_vec(self.velocity),
+             "begin": self.begin.to_json(), "end": self.end.to_json()}
+        if self.contact_plane is not None:
+            d["contact_plane"] = self.contact_plane.to_json()
+        if self.sliding_normal is not None:
+            d["sliding_normal"] = write_vec(self.sliding_normal)
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "Mover":
+        r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
+               "velocity", "contact_plane", "sliding_normal", "begin", "end"})
+        spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
+        scale = r["scale"].f32() if r.has("scale") else 1.0
+        if not scale > 0:
+            r["scale"].fail(f"scale must be positive, got {scale}")
+        up = r["step_up_height"].f32()
+        down = r["step_down_height"].f32()
+        for name, v in (("step_up_height", up), ("step_down_height", down)):
+            if v < 0:
+                r[name].fail(f"a step height cannot be negative, got {v}")
+        return Mover(
+            spheres=spheres,
+            begin=Position.from_json(r["begin"]),
+            end=Position.from_json(r["end"]),
+            step_up_height=up,
+            step_down_height=down,
+            scale=scale,
+            state=r["state"].flags(PhysicsState) if r.has("state") else DEFAULT_MOVER_STATE,
+            transient_state=r["transient_state"].flags(TransientState) if r.has("transient_state") else DEFAULT_MOVER_TRANSIENT,
+            velocity=r["velocity"].vec3() if r.has("velocity") else (0.0, 0.0, 0.0),
+            contact_plane=ContactPlane.from_json(r["contact_plane"]) if r.has("contact_plane") else None,
+            sliding_normal=r["sliding_normal"].vec3() if r.has("sliding_normal") else None,
+        )
+
+
+ENGINE_MODES = ("server", "client")
+
+
+@dataclass(frozen=True, slots=True)
+class Scene:
+    landblocks: tuple[Landblock, ...]
+    mover: Mover
+    objects: tuple[StaticObject, ...] = ()
+    land_height_table: tuple[float, ...] = DEFAULT_LAND_HEIGHT_TABLE
+    engine_mode: str = "server"  # PhysicsEngine.Instance.Server: ACE's server default
+    name: str = ""
+
+    def to_json(self):
+        d = {"format": FORMAT}
+        if self.name:
+            d["name"] = self.name
+        d["engine"] = {"mode": self.engine_mode}
+        if self.land_height_table != DEFAULT_LAND_HEIGHT_TABLE:
+            d["land_height_table"] = [write_f32(h) for h in self.land_height_table]
+        d["landblocks"] = [lb.to_json() for lb in self.landblocks]
+        if self.objects:
+            d["objects"] = [o.to_json() for o in self.objects]
+        d["mover"] = self.mover.to_json()
+        return d
+
+    def dumps(self) -> str:
+        return dumps(self.to_json())
+
+    def replace(self, **changes) -> "Scene":
+        return replace(self, **changes)
+
+    @staticmethod
+    def from_json(doc, path: str = "") -> "Scene":
+        r = Reader(doc, path)
+        r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover"})
+        check_format(r, FORMAT)
+        name = r["name"].str_() if r.has("name") else ""
+        mode = "server"
+        if r.has("engine"):
+            e = r["engine"].obj({"mode"})
+            if e.has("mode"):
+                mode = e["mode"].str_()
+                if mode not in ENGINE_MODES:
+                    e["mode"].fail(f"unknown engine mode {mode!r} (known: server, client)")
+        table = DEFAULT_LAND_HEIGHT_TABLE
+        if r.has("land_height_table"):
+            table = tuple(h.f32() for h in r["land_height_table"].list(count=256))
+        landblocks = tuple(Landblock.from_json(lb) for lb in r["landblocks"].list(min_count=1))
+        objects = tuple(StaticObject.from_json(o) for o in r["objects"].list()) if r.has("objects") else ()
+        scene = Scene(landblocks, Mover.from_json(r["mover"]), objects, table, mode, name)
+        check_consistency(scene, path)
+        return scene
+
+    @staticmethod
+    def loads(text: str, source: str | None = None) -> "Scene":
+        try:
+            return Scene.from_json(parse_json_text(text, source))
+        except InvalidScene as e:
+            raise e.in_file(source) if source and not e.source else e
+
+
+def check_format(r: Reader, expected: str) -> None:
+    fmt = r["format"].str_()
+    if fmt != expected:
+        family, _, version = fmt.partition("/")
+        want_family = expected.partition("/")[0]
+        if family == want_family:
+            r["format"].fail(f"unknown format version {version!r} (this acconform reads {expected})")
+        r["format"].fail(f"expected format {expected!r}, got {fmt!r}")
+
+
+def _p(base: str, rest: str) -> str:
+    return f"{base}.{rest}" if base else rest
+
+
+def check_consistency(scene: Scene, path: str = "") -> None:
+    """The cross-field rules a single field's reader cannot see."""
+    seen = {}
+    for i, lb in enumerate(scene.landblocks):
+        if lb.id in seen:
+            raise InvalidScene(_p(path, f"landblocks[{i}].id"), f"landblock {lb.id:08X} is defined twice (also landblocks[{seen[lb.id]}])")
+        seen[lb.id] = i
+    defined = {lb.id >> 16 for lb in scene.landblocks}
+    for where, pos in (("mover.begin", scene.mover.begin), ("mover.contact_plane", scene.mover.contact_plane)):
+        if pos is None:
+            continue
+        cell = pos.cell
+        _check_outdoor_cell(_p(path, f"{where}.cell"), cell)
+        if cell >> 16 not in defined:
+            raise InvalidScene(_p(path, f"{where}.cell"),
+                               f"landblock {cell >> 16:04X} of cell {cell:08X} is not defined in landblocks "
+                               f"(defined: {', '.join(f'{b:04X}' for b in sorted(defined))})")
+    _check_outdoor_cell(_p(path, "mover.end.cell"), scene.mover.end.cell)
+    ids = set()
+    for i, o in enumerate(scene.objects):
+        where = _p(path, f"objects[{i}]")
+        if o.id in ids:
+            raise InvalidScene(f"{where}.id", f"object id {o.id:08X} is used twice")
+        ids.add(o.id)
+        _check_outdoor_cell(f"{where}.position.cell", o.position.cell)
+        if o.position.cell >> 16 not in defined:
+            raise InvalidScene(f"{where}.position.cell", f"landblock {o.position.cell >> 16:04X} is not defined in landblocks")
+
+
+def _check_outdoor_cell(path: str, cell: int) -> None:
+    low = cell & 0xFFFF
+    if not 1 <= low <= 64:
+        raise InvalidScene(path, f"cell {cell:08X} is not an outdoor land cell (low word 0x0001..0x0040); "
+                                 "indoor cells (EnvCells) are not supported in scenes")
+
+
+def validate_scene(scene: Scene) -> Scene:
+    """Check a scene built in code by the same rules as one read from JSON (round trip)."""
+    return Scene.from_json(scene.to_json())

@@ -1,0 +1,30 @@
+"""PhysicsGlobals and the other float32 constants the collision code uses (ACE PhysicsGlobals.cs).
+
+Each value is the exact float32 C# stores, written as a Python float so that it takes the
+run's scalar type (see acconform.numerics); tests pin every one by its bit pattern.
+"""
+
+from acconform.numerics import f32_from_bits
+
+# PhysicsGlobals.EPSILON = 0.0002f
+EPSILON = f32_from_bits(0x3951B717)
+# PhysicsGlobals.EpsilonSq = EPSILON * EPSILON, folded by the C# compiler in float32
+EPSILON_SQ = f32_from_bits(0x332BCC76)
+# PhysicsGlobals.FloorZ = 0.66417414618662751f: cos(48.4 deg); one ulp decides standing vs sliding
+FLOOR_Z = f32_from_bits(0x3F2A0751)
+# PhysicsGlobals.LandingZ = 0.0871557f: cos(85 deg), the walkable allowance when landing
+LANDING_Z = f32_from_bits(0x3DB27EB0)
+# PhysicsGlobals.DummySphereRadius = 0.1f; DummySphere = Sphere((0, 0, 0.1), 0.1)
+DUMMY_SPHERE_RADIUS = f32_from_bits(0x3DCCCCCD)
+# PhysicsGlobals.Gravity = -9.8f
+GRAVITY = f32_from_bits(0xC11CCCCD)
+# PhysicsGlobals.DefaultStepHeight = 0.01f
+DEFAULT_STEP_HEIGHT = f32_from_bits(0x3C23D70A)
+# Transition.cs StepDown/CheckWalkable literal 0.039999999f: the probe distance for edges
+STEP_DOWN_PROBE = f32_from_bits(0x3D23D70A)
+# LandDefs: BlockLength 192, CellLength 24, 8 cells a side, 9 vertices a side
+BLOCK_LENGTH = 192.0
+CELL_LENGTH = 24.0
+SIDE_CELL_COUNT = 8
+VERTEX_PER_CELL = 1
+SIDE_VERTEX_COUNT = 9
