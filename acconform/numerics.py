@@ -50,15 +50,18 @@ def cast_float(like, x):
 
 
 def cs_floor(x):
-    """``Math.Floor(double)``: a double, with +-inf and NaN passed through (Python's floor raises)."""
+    """``Math.Floor(double)``: a double; +-inf, NaN and signed zeros pass through as in IEEE floor."""
     x = float(x)
-    return float(math.floor(x)) if math.isfinite(x) else x
+    return float(math.floor(x)) if math.isfinite(x) and x != 0.0 else x
 
 
 def cs_ceiling(x):
-    """``Math.Ceiling(double)``: a double, with +-inf and NaN passed through."""
+    """``Math.Ceiling(double)``: a double; IEEE ceil keeps the sign, so (-1, -0] gives -0.0."""
     x = float(x)
-    return float(math.ceil(x)) if math.isfinite(x) else x
+    if not math.isfinite(x):
+        return x
+    r = float(math.ceil(x))
+    return math.copysign(0.0, x) if r == 0.0 else r
 
 
 def cs_fmod(a, b):

@@ -1,0 +1,57 @@
+"""Floats survive the JSON trip bit for bit; ids and flags read back as written."""
+
+import json
+import math
+import struct
+
+import numpy as np
+from hypothesis import example, given, settings, strategies as st
+
+from acconform.codec import Reader, write_f32
+
+finite_f32_bits = st.integers(0, 0xFFFFFFFF).filter(lambda b: (b >> 23) & 0xFF != 0xFF)
+
+
+def _trip(bits: int, allow_nonfinite=False) -> int:
+    x = struct.unpack("<f", struct.pack("<I", bits))[0]
+    text = json.dumps({"v": write_f32(x)})
+    back = Reader(json.loads(text)["v"], "v").f32(allow_nonfinite=allow_nonfinite)
+    return struct.unpack("<I", struct.pack("<f", back))[0]
+
+
+@settings(max_examples=3000)
+@given(finite_f32_bits)
+@example(0x00000000)  # +0
+@example(0x80000000)  # -0
+@example(0x00000001)  # smallest subnormal
+@example(0x007FFFFF)  # largest subnormal
+@example(0x00800000)  # smallest normal
+@example(0x7F7FFFFF)  # largest finite
+@example(0xFF7FFFFF)  # most negative finite
+@example(0x3F2A0751)  # FloorZ
+def test_every_finite_float32_round_trips_through_json_bit_for_bit(bits):
+    assert _trip(bits) == bits
+
+
+@given(st.integers(0, 0x7FFFFF))
+def test_subnormals_of_both_signs_round_trip(mantissa):
+    assert _trip(mantissa) == mantissa
+    assert _trip(0x80000000 | mantissa) == 0x80000000 | mantissa
+
+
+def test_non_finite_outcome_values_are_written_as_bit_patterns_and_read_back():
+    for bits in (0x7F800000, 0xFF800000, 0x7FC00000, 0xFFC00000):
+        x = np.uint32(bits).view(np.float32)
+        w = write_f32(x)
+        assert w == f"0x{bits:08x}"
+        assert _trip(bits, allow_nonfinite=True) == bits
+
+
+def test_written_floats_use_the_shortest_decimal():
+    assert json.dumps(write_f32(np.float32(0.1))) == "0.1"
+    assert json.dumps(write_f32(np.float32(-0.0))) == "-0.0"
+
+
+def test_a_double_that_is_not_a_float32_reads_as_the_nearest_float32():
+    got = Reader(0.1, "x").f32()
+    assert got == float(np.float32(0.1)) and not math.isclose(got, 0.1, rel_tol=1e-12)

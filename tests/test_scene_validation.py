@@ -1,0 +1,157 @@
+"""Every malformed or inconsistent scene is refused with a message naming the field."""
+
+import copy
+import json
+from pathlib import Path
+
+import pytest
+
+from acconform.case import parse_document
+from acconform.errors import InvalidScene
+from acconform.scene import Scene, validate_scene
+
+EXAMPLE = json.loads((Path(__file__).parent.parent / "examples" / "flat_walk.json").read_text())
+
+WALL = {
+    "kind": "bsp",
+    "polygons": [{"vertices": [[2, -1, 0], [2, 1, 0], [2, 1, 2], [2, -1, 2]], "sides_type": "None"}],
+    "root": {
+        "type": "node",
+        "plane": {"normal": [1, 0, 0], "d": -2},
+        "sphere": {"center": [2, 0, 1], "radius": 1.5},
+        "front": {"type": "leaf", "polygons": [0], "solid": False, "sphere": {"center": [2, 0, 1], "radius": 1.5}},
+        "back": {"type": "leaf", "polygons": [], "solid": False, "sphere": {"center": [2, 0, 1], "radius": 1.5}},
+    },
+    "sphere": {"center": [2, 0, 1], "radius": 1.5},
+}
+
+
+def scene_with(mutate):
+    doc = copy.deepcopy(EXAMPLE)
+    mutate(doc)
+    return doc
+
+
+def with_wall(mutate=lambda w: None):
+    def m(doc):
+        wall = copy.deepcopy(WALL)
+        mutate(wall)
+        doc["objects"] = [{"id": "0x70000001", "position": {"cell": "0xA9B40001", "origin": [10, 12, 20]}, "shape": wall}]
+    return m
+
+
+def refused(doc) -> str:
+    with pytest.raises(InvalidScene) as e:
+        parse_document(doc)
+    return str(e.value)
+
+
+def test_the_example_scene_is_valid_and_round_trips():
+    s = Scene.from_json(EXAMPLE)
+    assert Scene.from_json(json.loads(s.dumps())) == s
+    assert validate_scene(s) == s
+
+
+def test_a_scene_with_a_wall_is_valid():
+    s = Scene.from_json(scene_with(with_wall()))
+    assert s.objects[0].shape.root.front.polygons == (0,)
+
+
+@pytest.mark.parametrize(
+    "mutate, message",
+    [
+        (lambda d: d["landblocks"][0].__setitem__("heights", [1, 2, 3]), "landblocks[0].heights: expected 81 values, got 3"),
+        (lambda d: d["landblocks"][0].__setitem__("terrain", [0] * 80), "landblocks[0].terrain: expected 81 values, got 80"),
+        (lambda d: d.__setitem__("land_height_table", [0.0] * 255), "land_height_table: expected 256 values, got 255"),
+        (lambda d: d["mover"].__setitem__("spheres", []), "mover.spheres: expected at least 1 values, got 0"),
+        (lambda d: d["mover"].__setitem__("spheres", [d["mover"]["spheres"][0]] * 3), "mover.spheres: expected at most 2 values, got 3"),
+        (lambda d: d["mover"]["begin"].__setitem__("origin", [1, 2]), "mover.begin.origin: expected 3 values, got 2"),
+        (lambda d: d["mover"]["begin"].__setitem__("orientation", [1, 0, 0]), "mover.begin.orientation: expected 4 values, got 3"),
+    ],
+)
+def test_wrong_counts_are_refused_naming_the_field(mutate, message):
+    assert message in refused(scene_with(mutate))
+
+
+def test_non_finite_numbers_are_refused():
+    doc = scene_with(lambda d: d["mover"]["end"].__setitem__("origin", [float("nan"), 0, 0]))
+    assert "mover.end.origin[0]: expected a finite number, got nan" in refused(doc)
+    doc = scene_with(lambda d: d["mover"].__setitem__("step_up_height", float("inf")))
+    assert "mover.step_up_height: expected a finite number" in refused(doc)
+    doc = scene_with(lambda d: d["mover"].__setitem__("scale", 1e39))
+    assert "mover.scale: 1e+39 is outside float32's range" in refused(doc)
+
+
+def test_unknown_flag_names_are_refused_listing_the_known_ones():
+    msg = refused(scene_with(lambda d: d["mover"].__setitem__("state", ["Gravity", "Flying"])))
+    assert "mover.state[1]: unknown PhysicsState flag 'Flying'" in msg and "EdgeSlide" in msg
+    msg = refused(scene_with(lambda d: d["mover"].__setitem__("transient_state", ["Grounded"])))
+    assert "mover.transient_state[0]: unknown TransientState flag 'Grounded'" in msg
+
+
+def test_an_unknown_format_version_is_refused():
+    assert "format: unknown format version '2' (this acconform reads acconform.scene/1)" in refused(
+        scene_with(lambda d: d.__setitem__("format", "acconform.scene/2")))
+    assert "unknown format 'somethingelse/1'" in refused(scene_with(lambda d: d.__setitem__("format", "somethingelse/1")))
+
+
+def test_a_polygon_with_fewer_than_three_vertices_is_refused():
+    msg = refused(scene_with(with_wall(lambda w: w["polygons"][0].__setitem__("vertices", [[0, 0, 0], [1, 0, 0]]))))
+    assert "objects[0].shape.polygons[0].vertices: a polygon needs at least 3 vertices, got 2" in msg
+
+
+def test_a_degenerate_polygon_is_refused():
+    collinear = [[0, 0, 0], [1, 0, 0], [2, 0, 0]]
+    msg = refused(scene_with(with_wall(lambda w: w["polygons"][0].__setitem__("vertices", collinear))))
+    assert "objects[0].shape.polygons[0].vertices: degenerate polygon: its vertices span no area" in msg
+
+
+def test_a_bsp_whose_root_is_a_leaf_is_refused():
+    msg = refused(scene_with(with_wall(lambda w: w.__setitem__("root", w["root"]["front"]))))
+    assert "objects[0].shape.root: the BSP root must be an internal node, not a leaf" in msg
+
+
+def test_an_internal_bsp_node_without_both_children_is_refused():
+    msg = refused(scene_with(with_wall(lambda w: w["root"].pop("back"))))
+    assert "objects[0].shape.root: an internal BSP node needs both children; 'back' is missing" in msg
+
+
+def test_a_leaf_naming_a_polygon_that_does_not_exist_is_refused():
+    msg = refused(scene_with(with_wall(lambda w: w["root"]["front"].__setitem__("polygons", [3]))))
+    assert "objects[0].shape.root.front.polygons[0]: expected an integer in [0, 0], got 3" in msg
+
+
+def test_a_begin_position_in_an_undefined_landblock_is_refused():
+    doc = scene_with(lambda d: d["mover"]["begin"].__setitem__("cell", "0xAAB40001"))
+    assert "mover.begin.cell: landblock AAB4 of cell AAB40001 is not defined in landblocks (defined: A9B4)" in refused(doc)
+
+
+@pytest.mark.parametrize("where", ["spheres", "object"])
+def test_a_sphere_with_a_non_positive_radius_is_refused(where):
+    if where == "spheres":
+        doc = scene_with(lambda d: d["mover"]["spheres"][0].__setitem__("radius", 0))
+        assert "mover.spheres[0].radius: a sphere needs a positive radius, got 0.0" in refused(doc)
+    else:
+        doc = scene_with(with_wall(lambda w: w["sphere"].__setitem__("radius", -1)))
+        assert "objects[0].shape.sphere.radius: a sphere needs a positive radius, got -1.0" in refused(doc)
+
+
+def test_unknown_and_missing_fields_are_named():
+    assert "mover: unknown field 'spheers'" in refused(scene_with(lambda d: d["mover"].__setitem__("spheers", [])))
+    assert "mover.step_down_height: missing required field" in refused(scene_with(lambda d: d["mover"].pop("step_down_height")))
+
+
+def test_indoor_cells_are_refused_because_scenes_have_no_env_cells():
+    doc = scene_with(lambda d: d["mover"]["begin"].__setitem__("cell", "0xA9B40100"))
+    assert "mover.begin.cell: cell A9B40100 is not an outdoor land cell" in refused(doc)
+
+
+def test_a_landblock_id_must_end_in_ffff_and_appear_once():
+    assert "landblocks[0].id: a landblock id ends in FFFF" in refused(scene_with(lambda d: d["landblocks"][0].__setitem__("id", "0xA9B40001")))
+    assert "landblocks[1].id: landblock A9B4FFFF is defined twice" in refused(
+        scene_with(lambda d: d["landblocks"].append(copy.deepcopy(d["landblocks"][0]))))
+
+
+def test_heights_must_be_byte_indices():
+    doc = scene_with(lambda d: d["landblocks"][0]["heights"].__setitem__(5, 256))
+    assert "landblocks[0].heights[5]: expected an integer in [0, 255], got 256" in refused(doc)
