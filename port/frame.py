@@ -1,0 +1,295 @@
+"""AFrame (Combine, GlobalToLocal, GlobalToLocalVec, LocalToGlobal, LocalToGlobalVec, InterpolateOrigin, InterpolateRotation, Subtract, set_heading, set_vector_heading, get_heading, set_rotate) and Position (GetOffset, LocalToLocal, LocalToGlobal, GlobalToLocalVec, GetCell).
+
+ACE's Animation/AFrame.cs and Common/Position.cs. Both are C# classes (reference types), so
+they are mutable here too; their Vector3/Quaternion fields are immutable values. Copy with
+`copy()` where ACE uses the copy constructor. `ToRadians`/`ToDegrees` (Extensions/FloatExtensions.cs)
+and `Quaternion.CreateFromYawPitchRoll` (mono System.Numerics) are written out here because only
+set_heading needs them; the latter belongs in acconform.numerics (reported to the lead).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from acconform.numerics import (
+    MONO,
+    Matrix4x4,
+    Mode,
+    Quaternion,
+    Runtime,
+    Vector3,
+    cast_float,
+    cs_fmod,
+    lerp,
+    quat_inverse,
+    quat_lerp,
+    quat_multiply,
+    quat_normalize,
+    transform_by_matrix,
+    transform_by_quaternion,
+    wrap_u32,
+)
+from acconform.port.anchors import anchor
+from acconform.port.constants import CELL_LENGTH, EPSILON
+from acconform.port.land import land_defs
+from acconform.port.vec import normalize_check_small
+
+# C# literals used by the heading code, exact in float32
+_F450 = 450.0
+_F360 = 360.0
+
+
+def _cs_math(fn, x: float) -> float:
+    """Math.Sin/Cos/Asin: NaN where C# gives NaN (Python raises on +-inf and out-of-domain)."""
+    try:
+        return fn(x)
+    except ValueError:
+        return math.nan
+
+
+def to_radians(angle):
+    """FloatExtensions.ToRadians: ``(float)(Math.PI / 180.0f * angle)`` (the product in double)."""
+    return cast_float(angle, (math.pi / 180.0) * float(angle))
+
+
+def to_degrees(rads):
+    """FloatExtensions.ToDegrees: ``(float)(180.0f / Math.PI * rads)``."""
+    return cast_float(rads, (180.0 / math.pi) * float(rads))
+
+
+def create_from_yaw_pitch_roll(yaw, pitch, roll) -> Quaternion:
+    """Quaternion.CreateFromYawPitchRoll (mono): half angles in float, sin/cos in double cast back."""
+    half_roll = roll * 0.5
+    sr = cast_float(half_roll, _cs_math(math.sin, float(half_roll)))
+    cr = cast_float(half_roll, _cs_math(math.cos, float(half_roll)))
+    half_pitch = pitch * 0.5
+    sp = cast_float(half_pitch, _cs_math(math.sin, float(half_pitch)))
+    cp = cast_float(half_pitch, _cs_math(math.cos, float(half_pitch)))
+    half_yaw = yaw * 0.5
+    sy = cast_float(half_yaw, _cs_math(math.sin, float(half_yaw)))
+    cy = cast_float(half_yaw, _cs_math(math.cos, float(half_yaw)))
+    return Quaternion(
+        cy * sp * cr + sy * cp * sr,
+        sy * cp * cr - cy * sp * sr,
+        cy * cp * sr - sy * sp * cr,
+        cy * cp * cr + sy * sp * sr,
+    )
+
+
+@dataclass(slots=True, eq=False)
+class AFrame:
+    origin: Vector3
+    orientation: Quaternion
+
+    @staticmethod
+    def identity(mode: Mode) -> "AFrame":
+        """``new AFrame()``: origin zero, orientation identity, in the mode's scalar type."""
+        return AFrame(mode.vec(0, 0, 0), mode.quat(0, 0, 0, 1))
+
+    @staticmethod
+    def from_record(frame, mode: Mode) -> "AFrame":
+        """From a scene Frame record (orientation written (w, x, y, z) as AC files do)."""
+        w, x, y, z = frame.orientation
+        return AFrame(mode.vec(*frame.origin), mode.quat(x, y, z, w))
+
+    def copy(self) -> "AFrame":
+        """``new AFrame(frame)``."""
+        return AFrame(self.origin, self.orientation)
+
+    @staticmethod
+    @anchor("AFrame::combine", "AFrame.cs:Combine")
+    def combine(a: "AFrame", b: "AFrame") -> "AFrame":
+        return AFrame(a.origin + transform_by_quaternion(b.origin, a.orientation), quat_multiply(a.orientation, b.orientation))
+
+    @anchor("AFrame::combine", "AFrame.cs:Combine(AFrame, AFrame, Vector3)")
+    def combine_scaled(self, a: "AFrame", b: "AFrame", scale: Vector3) -> None:
+        self.origin = a.origin + transform_by_quaternion(b.origin * scale, a.orientation)
+        self.orientation = quat_multiply(a.orientation, b.orientation)
+
+    @anchor("AFrame::global_to_local", "AFrame.cs:GlobalToLocal")
+    def global_to_local(self, point: Vector3) -> Vector3:
+        offset = point - self.origin
+        return self.global_to_local_vec(offset)
+
+    @anchor("AFrame::global_to_local_vec", "AFrame.cs:GlobalToLocalVec")
+    def global_to_local_vec(self, point: Vector3) -> Vector3:
+        rotate = Matrix4x4.create_from_quaternion(self.orientation).transpose()
+        return transform_by_matrix(point, rotate)
+
+    @anchor("AFrame::interpolate_origin", "AFrame.cs:InterpolateOrigin")
+    def interpolate_origin(self, from_: "AFrame", to: "AFrame", t) -> None:
+        self.origin = lerp(from_.origin, to.origin, t)
+
+    @anchor("AFrame::interpolate_rotation", "AFrame.cs:InterpolateRotation")
+    def interpolate_rotation(self, from_: "AFrame", to: "AFrame", t) -> None:
+        self.orientation = quat_lerp(from_.orientation, to.orientation, t)
+
+    @anchor("AFrame::IsQuaternionEqual", "AFrame.cs:IsQuaternionEqual")
+    def is_quaternion_equal(self, frame: "AFrame") -> bool:
+        return bool(self.orientation == frame.orientation)
+
+    @anchor("AFrame::local_to_global", "AFrame.cs:LocalToGlobal")
+    def local_to_global(self, point: Vector3) -> Vector3:
+        return self.origin + self.local_to_global_vec(point)
+
+    @anchor("AFrame::local_to_global_vec", "AFrame.cs:LocalToGlobalVec")
+    def local_to_global_vec(self, point: Vector3) -> Vector3:
+        return transform_by_quaternion(point, self.orientation)
+
+    @anchor("AFrame::grotate", "AFrame.cs:GRotate")
+    def grotate(self, rotation: Vector3) -> None:
+        self.orientation = quat_multiply(self.orientation, create_from_yaw_pitch_roll(rotation.x, rotation.y, rotation.z))
+        self.orientation = quat_normalize(self.orientation)
+
+    @anchor("AFrame::rotate", "AFrame.cs:Rotate(Quaternion)")
+    def rotate(self, rotation: Quaternion) -> None:
+        self.orientation = quat_multiply(rotation, self.orientation)
+        self.orientation = quat_normalize(self.orientation)
+
+    @anchor("AFrame::subtract", "AFrame.cs:Subtract")
+    def subtract(self, frame: "AFrame") -> None:
+        self.origin = self.origin - transform_by_quaternion(frame.origin, frame.orientation)
+        self.orientation = quat_multiply(self.orientation, quat_inverse(frame.orientation))
+
+    @anchor("AFrame::get_heading", "AFrame.cs:get_heading")
+    def get_heading(self):
+        m = Matrix4x4.create_from_quaternion(self.orientation).m
+        heading = cast_float(m[5], math.atan2(float(m[5]), float(m[4])))  # Atan2(M22, M21)
+        return cs_fmod(_F450 - to_degrees(heading), _F360)
+
+    @anchor("AFrame::get_vector_heading", "AFrame.cs:get_vector_heading")
+    def get_vector_heading(self) -> Vector3:
+        m = Matrix4x4.create_from_quaternion(self.orientation).m
+        return Vector3(m[4], m[5], m[6])  # M21, M22, M23
+
+    @anchor("AFrame::set_heading", "AFrame.cs:set_heading")
+    def set_heading(self, degrees) -> None:
+        rads = to_radians(degrees)
+        m = Matrix4x4.create_from_quaternion(self.orientation).m
+        heading = Vector3(
+            cast_float(rads, _cs_math(math.sin, float(rads))),
+            cast_float(rads, _cs_math(math.cos, float(rads))),
+            m[6] + m[2],  # M23 + M13
+        )
+        self.set_vector_heading(heading)
+        # ACE then computes get_heading() into an unused local; it has no effect.
+
+    @anchor("AFrame::set_rotate", "AFrame.cs:set_rotate")
+    def set_rotate(self, orientation: Quaternion) -> None:
+        self.orientation = quat_normalize(orientation)
+
+    @anchor("AFrame::set_vector_heading", "AFrame.cs:set_vector_heading")
+    def set_vector_heading(self, heading: Vector3) -> None:
+        small, normal = normalize_check_small(heading)
+        if small:
+            return
+        z_deg = _F450 - to_degrees(cast_float(normal.y, math.atan2(float(normal.y), float(normal.x))))
+        z_rot = -to_radians(cs_fmod(z_deg, _F360))
+        x_rot = cast_float(normal.z, _cs_math(math.asin, float(normal.z)))
+        zero = type(x_rot)(0)
+        self.set_rotate(create_from_yaw_pitch_roll(x_rot, zero, z_rot))
+
+    @anchor("AFrame::equals", "AFrame.cs:Equals", note="ACE compares the argument's orientation with itself")
+    def equals(self, frame: "AFrame") -> bool:
+        o, fo = self.origin, frame.origin
+        if not (abs(fo.x - o.x) <= EPSILON and abs(fo.y - o.y) <= EPSILON and abs(fo.z - o.z) <= EPSILON):
+            return False
+        q = frame.orientation
+        # ACE: Math.Abs(frame.Orientation.X - frame.Orientation.X) <= EPSILON ..., false only for NaN
+        return bool(abs(q.x - q.x) <= EPSILON and abs(q.y - q.y) <= EPSILON
+                    and abs(q.z - q.z) <= EPSILON and abs(q.w - q.w) <= EPSILON)
+
+
+@dataclass(slots=True, eq=False)
+class Position:
+    obj_cell_id: int
+    frame: AFrame
+
+    @staticmethod
+    def from_record(pos, mode: Mode) -> "Position":
+        """From a scene Position record."""
+        return Position(pos.cell, AFrame.from_record(pos.frame, mode))
+
+    def copy(self) -> "Position":
+        """``new Position(p)``: a new AFrame, same values."""
+        return Position(self.obj_cell_id, self.frame.copy())
+
+    @property
+    def landblock(self) -> int:
+        return self.obj_cell_id >> 16
+
+    @anchor("Position::local_to_local", "Position.cs:LocalToLocal")
+    def local_to_local(self, pos: "Position", offset: Vector3) -> Vector3:
+        cell_offset = pos.frame.local_to_global(offset)
+        block_offset = land_defs.get_block_offset(self.obj_cell_id, pos.obj_cell_id)
+        return self.frame.global_to_local(block_offset + cell_offset)
+
+    @anchor("Position::local_to_global", "Position.cs:LocalToGlobal(Vector3)")
+    def local_to_global(self, point: Vector3) -> Vector3:
+        return self.frame.local_to_global(point)
+
+    @anchor("Position::local_to_global", "Position.cs:LocalToGlobal(Position, Vector3)")
+    def local_to_global_from(self, pos: "Position", point: Vector3) -> Vector3:
+        """ACE's overload LocalToGlobal(Position pos, Vector3 point): pos's local point in self's block."""
+        cell_offset = pos.frame.local_to_global(point)
+        block_offset = land_defs.get_block_offset(self.obj_cell_id, pos.obj_cell_id)
+        return block_offset + cell_offset
+
+    @anchor("Position::local_to_global_vec", "Position.cs:LocalToGlobalVec")
+    def local_to_global_vec(self, point: Vector3) -> Vector3:
+        return self.frame.local_to_global_vec(point)
+
+    @anchor("Position::global_to_local_vec", "Position.cs:GlobalToLocalVec")
+    def global_to_local_vec(self, point: Vector3) -> Vector3:
+        return self.frame.global_to_local_vec(point)
+
+    @anchor("Position::distance", "Position.cs:Distance")
+    def distance(self, pos: "Position"):
+        return self.get_offset(pos).length()
+
+    @anchor("Position::distance_squared", "Position.cs:DistanceSquared")
+    def distance_squared(self, pos: "Position"):
+        return self.get_offset(pos).length_squared()
+
+    @anchor("Position::get_offset", "Position.cs:GetOffset(Position)")
+    def get_offset(self, pos: "Position") -> Vector3:
+        """``blockOffset + pos.Frame.Origin - Frame.Origin``, left to right."""
+        block_offset = land_defs.get_block_offset(self.obj_cell_id, pos.obj_cell_id)
+        return block_offset + pos.frame.origin - self.frame.origin
+
+    @anchor("Position::get_offset", "Position.cs:GetOffset(Position, Vector3)")
+    def get_offset_point(self, pos: "Position", rotation: Vector3) -> Vector3:
+        """ACE's overload GetOffset(pos, rotation): `rotation` is a point local to pos."""
+        block_offset = land_defs.get_block_offset(self.obj_cell_id, pos.obj_cell_id)
+        return block_offset + pos.local_to_global(rotation) - self.frame.origin
+
+    @anchor("Position::add_offset", "Position.cs:add_offset")
+    def add_offset(self, offset: Vector3) -> None:
+        self.frame.origin = self.frame.origin + offset
+
+    @anchor("Position::adjust_to_outside", "Position.cs:adjust_to_outside")
+    def adjust_to_outside(self) -> bool:
+        return land_defs.adjust_to_outside_pos(self)
+
+    @anchor("Position::subtract", "Position.cs:Subtract")
+    def subtract(self, pos: "Position") -> AFrame:
+        self.frame.subtract(pos.frame)
+        return self.frame
+
+    @anchor("Position::get_cell", "Position.cs:GetCell")
+    def get_cell(self, block_cell_id: int, runtime: Runtime = MONO) -> int:
+        """Indoor cells need ACE's AdjustCell (EnvCell data), which scenes do not carry: not ported."""
+        if (block_cell_id & 0xFFFF) >= 0x100:
+            raise NotImplementedError("Position.GetIndoorCell: indoor cells are not supported in scenes")
+        return self.get_outdoor_cell(block_cell_id, runtime)
+
+    @anchor("Position::get_outdoor_cell", "Position.cs:GetOutdoorCell")
+    def get_outdoor_cell(self, block_cell_id: int, runtime: Runtime = MONO) -> int:
+        cell_x = runtime.to_uint32(self.frame.origin.x / CELL_LENGTH)
+        cell_y = runtime.to_uint32(self.frame.origin.y / CELL_LENGTH)
+        cell_id = wrap_u32(cell_x * land_defs.BLOCK_SIDE + cell_y + 1)
+        return (block_cell_id & 0xFFFF0000) | cell_id
+
+
+__all__ = ["AFrame", "Position", "create_from_yaw_pitch_roll", "to_degrees", "to_radians"]

@@ -1,0 +1,180 @@
+"""LandCell: find_terrain_poly, point_in_cell, add_all_outside_cells, add_outside_cell, check_add_cell_boundary, add_cell_block (plus the ObjCell/SortCell fields it carries).
+
+ACE's Common/LandCell.cs. ACE's LandCell derives from SortCell -> ObjCell -> PartCell; here it is
+a plain class holding the fields of those that LandCell uses (the transition engineer may make
+it subclass ObjCell). The collision entry points FindCollisions, FindEnvCollisions and
+find_transit_cells, and handle_move_restriction, belong to the transition code: they read
+`polygons`, `water_type`, `cur_landblock`, `building`, `id` and `pos` from here and call
+`find_terrain_poly`. The static helpers take the run's LScape as their first argument where
+ACE reaches the static LScape. add_all_outside_cells(numParts, parts, ...) (the static-object
+overload, which needs BBox and PhysicsPart) is not ported.
+"""
+
+from __future__ import annotations
+
+from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
+from acconform.port.anchors import anchor
+from acconform.port.frame import AFrame, Position
+from acconform.port.geom.polygon import Polygon, Sidedness
+from acconform.port.land import land_defs
+from acconform.port.land.land_defs import WaterType
+
+# ObjCell.get_water_depth's literals 0.89999998f and 0.1f (bit patterns pinned in the tests)
+WATER_DEPTH_ENTIRELY_WATER = 0.89999997615814208984375
+WATER_DEPTH_DRY = 0.100000001490116119384765625
+
+
+class LandCell:
+    """One 24 m outdoor cell: two terrain triangles and the ObjCell state the physics reads."""
+
+    __slots__ = (
+        "id", "water_type", "pos", "object_list", "shadow_object_list", "restriction_obj",
+        "cur_landblock", "building", "polygons", "in_view", "seen_outside", "voyeur_table",
+    )
+
+    @anchor("CLandCell::CLandCell", "LandCell.cs:LandCell(uint)")
+    def __init__(self, cell_id: int, mode: Mode):
+        # ObjCell(cellID): ID, then ObjCell.Init (Pos = new Position(): cell 0, identity frame)
+        self.id = cell_id
+        self.water_type = WaterType.NotWater
+        self.pos = Position(0, AFrame.identity(mode))
+        self.object_list: list = []
+        self.shadow_object_list: list = []
+        self.restriction_obj = 0
+        self.seen_outside = False
+        self.voyeur_table: list[int] = []
+        self.cur_landblock = None  # set by Landblock.init_landcell (PostInit)
+        # SortCell
+        self.building = None
+        # LandCell.Init: always 2 polygons
+        self.polygons: list[Polygon | None] = [None, None]
+        self.in_view = False
+
+    def __repr__(self) -> str:
+        return f"LandCell(0x{self.id:08X}, water={self.water_type.name})"
+
+    @anchor("CLandCell::find_terrain_poly", "LandCell.cs:find_terrain_poly")
+    def find_terrain_poly(self, origin: Vector3, walkable: Polygon | None = None) -> tuple[bool, Polygon | None]:
+        """find_terrain_poly(origin, ref walkable): returns (found, walkable).
+
+        walkable is left as given when neither triangle holds the point (2D test, edges inside).
+        """
+        for i in range(2):
+            if self.polygons[i].point_in_poly2D(origin, Sidedness.Positive):
+                return True, self.polygons[i]
+        return False, walkable
+
+    @anchor("CLandCell::point_in_cell", "LandCell.cs:point_in_cell")
+    def point_in_cell(self, point: Vector3) -> bool:
+        found, _ = self.find_terrain_poly(point, None)
+        return found
+
+    @anchor("CObjCell::get_block_water_type", "ObjCell.cs:get_block_water_type")
+    def get_block_water_type(self) -> WaterType:
+        if self.cur_landblock is not None:
+            return self.cur_landblock.water_type
+        return WaterType.NotWater
+
+    @anchor("CObjCell::get_water_depth", "ObjCell.cs:get_water_depth")
+    def get_water_depth(self, point: Vector3):
+        s = type(point.x)
+        if self.water_type == WaterType.NotWater:
+            return s(0.0)
+        if self.water_type == WaterType.EntirelyWater:
+            return s(WATER_DEPTH_ENTIRELY_WATER)
+        if self.cur_landblock is not None:
+            return self.cur_landblock.calc_water_depth(self.id, point)
+        return s(WATER_DEPTH_DRY)
+
+
+# ---------------------------------------------------------------- static helpers
+
+
+@anchor("CLandCell::add_all_outside_cells", "LandCell.cs:add_all_outside_cells(Position, int, List<Sphere>, CellArray)")
+def add_all_outside_cells(lscape, position: Position, num_sphere: int, spheres, cell_array) -> None:
+    """Add the outdoor cells the spheres touch. With no spheres, `position` itself is moved
+    to the outside (AdjustToOutside(position) mutates it, as in ACE).
+
+    Note ACE loops over every sphere in the list (not num_sphere of them), stops at the
+    first one AdjustToOutside rejects, and never sets cell_array.added_outside here.
+    """
+    if cell_array.added_outside:
+        return
+
+    if num_sphere != 0:
+        for sphere in spheres:
+            ok, cell_point, center = land_defs.adjust_to_outside(position.obj_cell_id, sphere.center)
+            if not ok:
+                break
+
+            point_x = center.x - cast_float(center.x, cs_floor(center.x / 24.0)) * 24.0
+            point_y = center.y - cast_float(center.y, cs_floor(center.y / 24.0)) * 24.0
+            min_rad = sphere.radius
+            max_rad = 24.0 - min_rad
+
+            lcoord = land_defs.gid_to_lcoord(cell_point)
+            if lcoord is not None:
+                add_outside_cell_lcoord(lscape, cell_array, lcoord)
+                check_add_cell_boundary(lscape, cell_array, (point_x, point_y), lcoord, min_rad, max_rad)
+    else:
+        if not land_defs.adjust_to_outside_pos(position):
+            return
+        lcoord = land_defs.gid_to_lcoord(position.obj_cell_id)
+        if lcoord is not None:
+            add_outside_cell_lcoord(lscape, cell_array, lcoord)
+
+
+@anchor("CLandCell::add_cell_block", "LandCell.cs:add_cell_block")
+def add_cell_block(lscape, min_x: int, min_y: int, max_x: int, max_y: int, cell_array, id: int) -> None:
+    for i in range(min_x, max_x + 1):
+        for j in range(min_y, max_y + 1):
+            if i < 0 or j < 0 or i >= land_defs.LAND_LENGTH or j >= land_defs.LAND_LENGTH:
+                continue
+            ui, uj = i, j
+            cell_id = wrap_u32((((uj >> 3) | 32 * (ui & 0xFFFFFFF8)) << 16) | ((uj & 7) + 8 * (ui & 7) + 1))
+            # FIXME! (ACE): only cells in id's own landblock
+            if id >> 16 != cell_id >> 16:
+                continue
+            cell = lscape.get_landcell(cell_id)
+            cell_array.add_cell(cell_id, cell)
+
+
+@anchor("CLandCell::add_outside_cell", "LandCell.cs:add_outside_cell(CellArray, float, float)")
+def add_outside_cell(lscape, cell_array, _x, _y) -> None:
+    """``(uint)_x``: on mono a negative coordinate wraps to a huge uint and is skipped."""
+    runtime = lscape.mode.runtime
+    x = runtime.to_uint32(_x)
+    y = runtime.to_uint32(_y)
+    if x < 2040 and y < 2040:  # (x >= 0 && y >= 0 hold for uint)
+        cell_id = wrap_u32((((y >> 3) | 32 * (x & 0xFFFFFFF8)) << 16) | ((y & 7) + 8 * (x & 7) + 1))
+        land_cell = lscape.get_landcell(cell_id)  # LandCell.Get
+        if land_cell is not None:
+            cell_array.add_cell(cell_id, land_cell)
+
+
+@anchor("CLandCell::add_outside_cell", "LandCell.cs:add_outside_cell(CellArray, Vector2)")
+def add_outside_cell_lcoord(lscape, cell_array, lcoord) -> None:
+    add_outside_cell(lscape, cell_array, lcoord[0], lcoord[1])
+
+
+@anchor("CLandCell::check_add_cell_boundary", "LandCell.cs:check_add_cell_boundary")
+def check_add_cell_boundary(lscape, cell_array, point, lcoord, min_rad, max_rad) -> None:
+    """Add the neighbours a sphere at `point` (x, y within its cell) reaches into."""
+    x, y = lcoord
+    px, py = point
+    if px > max_rad:
+        add_outside_cell(lscape, cell_array, x + 1, y)
+        if py > max_rad:
+            add_outside_cell(lscape, cell_array, x + 1, y + 1)
+        if py < min_rad:
+            add_outside_cell(lscape, cell_array, x + 1, y - 1)
+    if px < min_rad:
+        add_outside_cell(lscape, cell_array, x - 1, y)
+        if py > max_rad:
+            add_outside_cell(lscape, cell_array, x - 1, y + 1)
+        if py < min_rad:
+            add_outside_cell(lscape, cell_array, x - 1, y - 1)
+    if py > max_rad:
+        add_outside_cell(lscape, cell_array, x, y + 1)
+    if py < min_rad:
+        add_outside_cell(lscape, cell_array, x, y - 1)

@@ -1,0 +1,110 @@
+"""Landblock: the constructor from CellLandblock, get_land_limits, init_landcell (PostInit), get_landcell, GetCell, GetZ, get_terrain.
+
+ACE's Common/Landblock.cs (a LandblockStruct). The scene's Landblock record stands in for the
+DAT's CellLandblock (Id, Height bytes, Terrain words; HasObjects is false: a scene has no
+LandblockInfo, so Info, buildings and DAT static objects are absent). PostInit's
+init_buildings/init_static_objs then do nothing, and get_land_scenes (scenery generated from the
+region DAT) is not ported: a scene lists its objects explicitly. OnRoad/IsRoad, IsDungeon and
+the server-object lists are not physics and are left out.
+
+GetCell (and so GetZ) reaches ACE's static LScape; here the run's LScape is the first argument.
+"""
+
+from __future__ import annotations
+
+from acconform.numerics import Mode, Vector3, wrap_i32, wrap_u32
+from acconform.port.anchors import anchor
+from acconform.port.constants import EPSILON
+from acconform.port.land import land_defs
+from acconform.port.land.land_cell import LandCell
+from acconform.port.land.land_defs import Direction
+from acconform.port.land.landblock_struct import LandblockStruct
+from acconform.port.vec import dot2d
+
+
+def _int_div(a: int, b: int) -> int:
+    """C# int division: truncates toward zero."""
+    q = abs(a) // abs(b)
+    return q if (a < 0) == (b < 0) else -q
+
+
+class Landblock(LandblockStruct):
+    @anchor("CLandBlock::CLandBlock", "Landblock.cs:Landblock(CellLandblock)")
+    def __init__(self, record, land_height_table, mode: Mode):
+        """From a scene Landblock record (id 0xXXYYFFFF, 81 heights, 81 terrain words)."""
+        super().__init__(record.id, record.heights, record.terrain, land_height_table, mode)
+        # Landblock.Init
+        self.dir = Direction.Unknown
+        self.closest = (-1.0, -1.0)
+        self.static_objects: list = []
+        self.buildings: list = []
+
+        self.id = record.id
+        self.block_info_exists = False  # CellLandblock.HasObjects: no LandblockInfo in a scene
+        self.info = None
+        self.block_coord = land_defs.value_of(land_defs.blockid_to_lcoord(record.id), "Landblock(CellLandblock)")
+        self.get_land_limits()
+
+    @anchor("CLandBlock::get_land_limits", "Landblock.cs:get_land_limits")
+    def get_land_limits(self) -> None:
+        self.min_z = self.land_height_table[min(self.height)]
+        self.max_z = self.land_height_table[max(self.height)]
+
+    @anchor(None, "Landblock.cs:PostInit")
+    def post_init(self) -> None:
+        """init_landcell; init_buildings and init_static_objs have nothing to do without Info."""
+        self.init_landcell()
+
+    @anchor("CLandBlock::init_landcell", "Landblock.cs:init_landcell")
+    def init_landcell(self) -> None:
+        for land_cell in self.land_cells.values():
+            land_cell.cur_landblock = self
+
+    @anchor("CLandBlock::GetZ", "Landblock.cs:GetZ")
+    def get_z(self, lscape, point: Vector3):
+        """The terrain height under point (the plane's z at point's x, y), or point.z off the block."""
+        cell = self.get_cell(lscape, point)
+        if cell is None:
+            return point.z
+        found, walkable = cell.find_terrain_poly(point, None)
+        if not found:
+            return point.z
+        adj_z = point.z
+        n = walkable.plane.normal
+        if abs(n.z) > EPSILON:
+            adj_z = (dot2d(point, n) + walkable.plane.d) / n.z * -1
+        return adj_z
+
+    @anchor("CLandBlock::GetCell", "Landblock.cs:GetCell")
+    def get_cell(self, lscape, point: Vector3) -> LandCell | None:
+        """Note x or y exactly 192 passes ACE's range test: y = 192 names the next column's
+        cell 0 (whose triangles do not hold the point), x = 192 names no land cell."""
+        if point.x < 0 or point.y < 0 or point.x > 192 or point.y > 192:
+            return None
+        to_int32 = self.mode.runtime.to_int32
+        cell_x = _int_div(to_int32(point.x), 24)  # (int)point.X / 24
+        cell_y = _int_div(to_int32(point.y), 24)
+        # (ID & 0xFFFF0000) | (uint)(cellX * 8 + cellY) + 1: `+` binds before `|`
+        block_cell_id = (self.id & 0xFFFF0000) | wrap_u32(wrap_i32(cell_x * 8 + cell_y) + 1)
+        return lscape.get_landcell(block_cell_id)
+
+    @anchor("CLandBlock::get_landcell", "Landblock.cs:get_landcell")
+    def get_landcell(self, cell_id: int) -> LandCell | None:
+        """This block's cell with that id, None when the slot holds another id.
+
+        Raises land_defs.InvalidOperation where ACE's ``gid_to_lcoord(cellID).Value`` throws.
+        """
+        lcoord = land_defs.value_of(land_defs.gid_to_lcoord(cell_id), "Landblock.get_landcell")
+        idx = (int(lcoord[1]) & 7) + (int(lcoord[0]) & 7) * self.side_cell_count
+        cell = self.land_cells[idx]
+        return cell if cell.id == cell_id else None
+
+    @anchor("CLandBlock::get_terrain", "Landblock.cs:get_terrain", note="ACE indexes X * 255 * 9 + Y with global lcoords")
+    def get_terrain(self, cell_id: int, point: Vector3) -> int:
+        """ACE's index uses the global land coordinate, so only landblock column 0 with a small y
+        lands inside Terrain; anything else throws in ACE (IndexError here)."""
+        lcoord = land_defs.value_of(land_defs.gid_to_lcoord(cell_id), "Landblock.get_terrain")
+        idx = int(lcoord[0]) * 255 * 9 + int(lcoord[1])
+        if not 0 <= idx < len(self.terrain):
+            raise IndexError(f"Terrain[{idx}]: index out of range (ArgumentOutOfRangeException in ACE)")
+        return self.terrain[idx]

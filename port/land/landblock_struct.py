@@ -1,0 +1,299 @@
+"""LandblockStruct: Generate, InitPVArrays, ConstructVertices, TransAdjust, AdjustPlanes, ConstructPolygons, AddPolygon, FSplitNESW, CalcWater, CalcCellWater, calc_water_depth.
+
+ACE's Common/LandblockStruct.cs as the server builds it (PhysicsEngine.Instance.Server):
+ConstructUVs, GetCellRotation, GetPalCode and the UV/palette tables are the client's texture code
+and are not ported (Generate skips ConstructUVs on the server). FinalizePVArrays only swaps in
+cached vertices/polygons when VertexCache/PolygonCache are Enabled, which ACE leaves false: not
+ported. Init's 64 throwaway LandCells (replaced by InitPVArrays before anyone sees them) are
+not built either.
+
+The land height table is ACE's static LandDefs.LandHeightTable; here it comes with the
+constructor (the scene carries it), converted to the run's scalar type.
+"""
+
+from __future__ import annotations
+
+from acconform.flags import CullMode
+from acconform.numerics import Mode, Vector3, cs_fmod, wrap_i32, wrap_u32
+from acconform.port.anchors import anchor
+from acconform.port.geom.polygon import Polygon, Vertex
+from acconform.port.land import land_defs
+from acconform.port.land.land_cell import LandCell
+from acconform.port.land.land_defs import Direction, WaterType
+
+# SurfChar: 1 for the five water terrain types (0x10..0x14), indexed by (terrain >> 2) & 0x1F
+SURF_CHAR = (0,) * 16 + (1,) * 5 + (0,) * 11
+
+# ConstructPolygons' split test: `splitDir * 2.3283064e-10 < 0.5f`, a uint times a double literal,
+# compared in double. The literal is a little below 2^-32, so the first branch also takes
+# splitDir from 2^31 to 2^31 + 33 (pinned in tests/port/land/test_landblock_struct.py).
+SPLIT_SCALE = 2.3283064e-10
+
+# calc_water_depth's float literals 0.44999999f and 0.1f (bit patterns pinned in the tests)
+WATER_DEPTH_PARTIAL_WATER = 0.449999988079071044921875
+WATER_DEPTH_DRY = 0.100000001490116119384765625
+
+
+class LandblockStruct:
+    """The terrain mesh of one landblock: 81 vertices, 128 triangles, 64 LandCells."""
+
+    def __init__(self, landblock_id: int, height, terrain, land_height_table, mode: Mode):
+        """``LandblockStruct(CellLandblock)``: Init, take Height and Terrain, Generate(id, 1, Unknown).
+
+        Note that ACE's `ID` is still 0 here (the Landblock subclass sets it after this
+        constructor), so InitPVArrays names the cells 0..63 until ConstructPolygons renames them.
+        """
+        self.mode = mode
+        self.land_height_table = tuple(mode.scalar(h) for h in land_height_table)
+        self.id = 0
+        self.init()
+        self.height = tuple(height)
+        self.terrain = tuple(terrain)
+        # originally called from LScape.update_block()
+        self.generate(landblock_id, 1, Direction.Unknown)
+
+    @anchor(None, "LandblockStruct.cs:Init")
+    def init(self) -> None:
+        self.trans_dir = Direction.Unknown
+        self.water_type = WaterType.NotWater
+        self.side_vertex_count = 0
+        self.side_poly_count = 0
+        self.side_cell_count = 0
+        self.vertex_array: list[Vertex] = []
+        self.polygons: list[Polygon] = []
+        self.sw_to_ne_cut: list[bool] = []
+        self.land_cells: dict[int, LandCell] = {}
+
+    @anchor("CLandBlockStruct::AddPolygon", "LandblockStruct.cs:AddPolygon")
+    def add_polygon(self, poly_idx: int, _v0: int, _v1: int, _v2: int) -> Polygon:
+        polygon = self.polygons[poly_idx]
+        v0, v1, v2 = _v0, _v1, _v2  # (short) casts: indices below 81
+
+        polygon.vertices[0] = self.vertex_array[v0]
+        polygon.vertices[1] = self.vertex_array[v1]
+        polygon.vertices[2] = self.vertex_array[v2]
+
+        polygon.vertex_ids[0] = v0
+        polygon.vertex_ids[1] = v1
+        polygon.vertex_ids[2] = v2
+
+        polygon.make_plane()
+
+        polygon.pos_surface = 0
+        if polygon.vertices[0].origin.z != 0 or polygon.vertices[1].origin.z != 0 or polygon.vertices[2].origin.z != 0:
+            polygon.pos_surface = 1
+        return polygon
+
+    @anchor("CLandBlockStruct::AdjustPlanes", "LandblockStruct.cs:AdjustPlanes")
+    def adjust_planes(self) -> None:
+        for x in range(self.side_poly_count):
+            for y in range(self.side_poly_count):
+                for poly_idx in range(2):
+                    self.polygons[(x * self.side_poly_count + y) * 2 + poly_idx].make_plane()
+
+    @anchor("CLandBlockStruct::calc_cell_water", "LandblockStruct.cs:CalcCellWater")
+    def calc_cell_water(self, x: int, y: int) -> tuple[bool, bool]:
+        """CalcCellWater(x, y, out cellHasWater, out cellFullyFlooded): returns both."""
+        cell_has_water = False
+        cell_fully_flooded = True
+        vpc = land_defs.VERTEX_PER_CELL
+        for vx in range(x * vpc, vpc * (x + 1) + 1):
+            for vy in range(y * vpc, vpc * (y + 1) + 1):
+                terrain_idx = vx * self.side_vertex_count + vy
+                if SURF_CHAR[self.terrain[terrain_idx] >> 2 & 0x1F] == 1:
+                    cell_has_water = True
+                else:
+                    cell_fully_flooded = False
+        return cell_has_water, cell_fully_flooded
+
+    @anchor("CLandBlockStruct::calc_water", "LandblockStruct.cs:CalcWater")
+    def calc_water(self) -> None:
+        has_water = False
+        waterblock = True
+        if self.side_cell_count == land_defs.BLOCK_SIDE:
+            for x in range(self.side_cell_count):
+                for y in range(self.side_cell_count):
+                    cell_has_water, cell_fully_flooded = self.calc_cell_water(x, y)
+                    cell = self.land_cells[x * self.side_cell_count + y]
+                    if cell_has_water:
+                        has_water = True
+                        if cell_fully_flooded:
+                            cell.water_type = WaterType.EntirelyWater
+                        else:
+                            cell.water_type = WaterType.PartiallyWater
+                            waterblock = False
+                    else:
+                        cell.water_type = WaterType.NotWater
+                        waterblock = False
+        if has_water:
+            self.water_type = WaterType.EntirelyWater if waterblock else WaterType.PartiallyWater
+        else:
+            self.water_type = WaterType.NotWater
+
+    @anchor("CLandBlockStruct::ConstructPolygons", "LandblockStruct.cs:ConstructPolygons")
+    def construct_polygons(self, landblock_id: int) -> None:
+        lcoord = land_defs.value_of(land_defs.blockid_to_lcoord(landblock_id), "LandblockStruct.ConstructPolygons")
+        lx, ly = int(lcoord[0]), int(lcoord[1])
+        vpc = land_defs.VERTEX_PER_CELL
+
+        poly_num = 1
+        # (uint)((int)lcoord.X * VertexPerCell * 214614067): int overflow, then reinterpreted
+        seed_a = wrap_u32(wrap_i32(lx * vpc * 214614067))
+        seed_b = wrap_u32(wrap_i32(lx * vpc * 1109124029))
+        vertex_cnt = 0
+
+        for x in range(self.side_cell_count):
+            lcoord_x = lcoord[0] + x
+            origin_y = 1
+            col_vertex_cnt = 0
+            origin_x = poly_num
+
+            for y in range(self.side_cell_count):
+                lcoord_y = ly + y
+                magic_b = seed_b
+                magic_a = wrap_u32(seed_a + 1813693831)
+
+                for i in range(vpc):
+                    idx_i = vertex_cnt + i
+                    idx_j = col_vertex_cnt
+
+                    for j in range(vpc):
+                        # int * uint is long arithmetic in C#; the (uint) cast keeps the low 32 bits
+                        split_dir = wrap_u32((ly * vpc + idx_j) * magic_a - magic_b - 1369149221)
+                        poly_idx = (vpc * i + j) * 2
+
+                        cell_idx = x * self.side_cell_count + y
+                        vert_idx = idx_i * self.side_vertex_count + idx_j
+                        first_vertex = (idx_i * self.side_poly_count + idx_j) * 2
+                        next_vert_idx = (idx_i + 1) * self.side_vertex_count + idx_j
+
+                        lcell = self.land_cells[cell_idx]
+
+                        if split_dir * SPLIT_SCALE < 0.5:  # uint * double, in double
+                            #  2    1---0
+                            #  | \   \  |
+                            #  |  \   \ |
+                            #  0---1    2
+                            self.sw_to_ne_cut[cell_idx] = False
+                            lcell.polygons[poly_idx] = self.add_polygon(first_vertex, vert_idx, next_vert_idx, vert_idx + 1)
+                            lcell.polygons[poly_idx + 1] = self.add_polygon(
+                                first_vertex + 1, next_vert_idx + 1, vert_idx + 1, next_vert_idx
+                            )
+                        else:
+                            #     2   2---1
+                            #    / |  |  /
+                            #   /  |  | /
+                            #  0---1  0
+                            self.sw_to_ne_cut[cell_idx] = True
+                            lcell.polygons[poly_idx] = self.add_polygon(first_vertex, vert_idx, next_vert_idx, next_vert_idx + 1)
+                            lcell.polygons[poly_idx + 1] = self.add_polygon(first_vertex + 1, vert_idx, next_vert_idx + 1, vert_idx + 1)
+                        idx_j += 1
+                    magic_a = wrap_u32(magic_a + 214614067)
+                    magic_b = wrap_u32(magic_b + 1109124029)
+
+                cell_id = wrap_u32(land_defs.lcoord_to_gid(lcoord_x, lcoord_y, self.mode.runtime))
+                land_cell = self.land_cells[x * self.side_cell_count + y]
+                land_cell.id = cell_id
+                land_cell.pos.obj_cell_id = cell_id
+                s = self.mode.scalar
+                origin = land_cell.pos.frame.origin
+                origin = origin.with_x(s(origin_x * land_defs.HALF_SQUARE_LENGTH))
+                origin = origin.with_y(s(origin_y * land_defs.HALF_SQUARE_LENGTH))
+                land_cell.pos.frame.origin = origin
+
+                origin_y += 2
+                col_vertex_cnt += vpc
+            vertex_cnt += vpc
+            seed_b = wrap_u32(seed_b + 1109124029 * vpc)
+            seed_a = wrap_u32(seed_a + 214614067 * vpc)
+            poly_num += 2
+
+    @anchor("CLandBlockStruct::ConstructVertices", "LandblockStruct.cs:ConstructVertices")
+    def construct_vertices(self) -> None:
+        cell_scale = land_defs.BLOCK_SIDE // self.side_cell_count
+        cell_size = land_defs.BLOCK_LENGTH // self.side_poly_count
+        s = self.mode.scalar
+        for x in range(self.side_vertex_count):
+            cell_x = x * cell_size
+            for y in range(self.side_vertex_count):
+                cell_y = y * cell_size
+                vertex_idx = x * self.side_vertex_count + y
+                vertex = self.vertex_array[vertex_idx]
+                z_height = self.land_height_table[self.height[vertex_idx]]
+                vertex.origin = Vector3(s(cell_x), s(cell_y), z_height * cell_scale)
+
+    @anchor("CLandBlockStruct::FSplitNESW", "LandblockStruct.cs:FSplitNESW", note="not called by ACE's physics")
+    def f_split_nesw(self, x: int, y: int) -> bool:
+        """``x*y*0xCCAC033 - x*0x421BE3BD`` wraps as int; ``(y*0x6C1AC587 - 0x519B8F25) / 2147483648``
+        is int / uint, i.e. long division (truncating): -1 only for int.MinValue, else 0."""
+        a = wrap_i32(x * y * 0xCCAC033 - x * 0x421BE3BD)
+        b = wrap_i32(y * 0x6C1AC587 - 0x519B8F25)
+        q = -1 if b == -2147483648 else 0
+        split = a + q
+        return split % 2 != 0
+
+    @anchor("CLandBlockStruct::Generate", "LandblockStruct.cs:Generate")
+    def generate(self, landblock_id: int, cell_scale: int, trans_adj: Direction) -> bool:
+        cell_width = land_defs.BLOCK_SIDE // cell_scale
+
+        if cell_width == self.side_cell_count and self.trans_dir == trans_adj:
+            return False
+
+        cell_regen = False
+        if cell_width != self.side_cell_count:
+            cell_regen = True
+            # (ACE calls Destroy() first when SideCellCount > 0; a scene never regenerates.)
+            self.side_cell_count = cell_width
+            self.side_vertex_count = self.side_cell_count * land_defs.VERTEX_PER_CELL + 1
+            self.side_poly_count = self.side_cell_count * land_defs.VERTEX_PER_CELL
+            self.init_pv_arrays()
+
+        self.trans_dir = trans_adj
+        self.construct_vertices()
+
+        if self.trans_dir != Direction.Inside and 1 < self.side_cell_count < land_defs.BLOCK_SIDE:
+            raise NotImplementedError("LandblockStruct.TransAdjust: only reached for cellScale > 1 (client LOD)")
+
+        if not cell_regen:
+            self.adjust_planes()
+        else:
+            self.construct_polygons(landblock_id)
+            # ConstructUVs(landblockID) runs only when !PhysicsEngine.Instance.Server (client textures)
+
+        self.calc_water()
+        # FinalizePVArrays: a no-op while VertexCache/PolygonCache are disabled (ACE's default)
+        return cell_regen
+
+    @anchor("CLandBlockStruct::InitPVArrays", "LandblockStruct.cs:InitPVArrays")
+    def init_pv_arrays(self) -> None:
+        num_squares = self.side_poly_count * self.side_poly_count
+        num_verts = self.side_vertex_count * self.side_vertex_count
+        num_cells = self.side_cell_count * self.side_cell_count
+
+        self.vertex_array = [Vertex(index=i) for i in range(num_verts)]
+        self.polygons = [Polygon(i, 3, CullMode.Landblock) for i in range(num_squares * 2)]
+        self.sw_to_ne_cut = [False] * num_squares
+        self.land_cells = {i: LandCell(wrap_u32((self.id & land_defs.BLOCK_MASK) + i), self.mode) for i in range(num_cells)}
+
+    @anchor("CLandBlockStruct::calc_water_depth", "LandblockStruct.cs:calc_water_depth")
+    def calc_water_depth(self, block_cell_id: int, point: Vector3):
+        """0.44999999f where the terrain corner nearest `point` is water, else 0.1f.
+
+        ``point.X % 24.0f`` is C#'s float remainder (sign of the dividend), so a negative x
+        never reaches 12 and picks the west corner.
+        """
+        cell_id = (wrap_i32(block_cell_id) & 0xFFFF) - 1
+        cell_x = int(cell_id / 8)  # C# int division truncates
+        cell_y = cell_id - cell_x * 8  # C# % keeps the dividend's sign
+        terrain_idx = cell_x * land_defs.VERTEX_DIM + cell_y
+        if cs_fmod(point.x, 24.0) >= 12.0:
+            terrain_idx += 9
+        if cs_fmod(point.y, 24.0) >= 12.0:
+            terrain_idx += 1
+        if not 0 <= terrain_idx < len(self.terrain):
+            raise IndexError(f"Terrain[{terrain_idx}]: index out of range (ArgumentOutOfRangeException in ACE)")
+        terrain = self.terrain[terrain_idx]
+        surf_char_idx = terrain >> 2 & 0x1F
+        has_water = SURF_CHAR[surf_char_idx]
+        s = type(point.x)
+        return s(WATER_DEPTH_PARTIAL_WATER) if has_water != 0 else s(WATER_DEPTH_DRY)
