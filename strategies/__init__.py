@@ -1,0 +1,76 @@
+"""acconform.strategies: Hypothesis strategies that build valid scenes by construction.
+
+    scenes(kinds=("terrain",))      a strategy of acconform.scene.Scene
+    sample_scenes(kinds, n, seed)   n scenes, the same ones for the same seed (used by `record`)
+
+Kinds: "terrain" (a mover over generated terrain), "bsp" (BSP objects on mostly level ground:
+walls, floors, ramps, steps, ledges, platforms, posts, boxes, convex polygons), "obstacles"
+(spheres and cylspheres). DEFAULT_KINDS is what the port supports today; grow it as the port
+does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from hypothesis import strategies as st
+
+from acconform.errors import AcconformError
+
+from .scenes import scenes_of
+
+ALL_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
+# The kinds a default campaign draws: what the port supports. Terrain first; add kinds here.
+DEFAULT_KINDS: tuple[str, ...] = ("terrain",)
+
+
+def check_kinds(kinds) -> tuple[str, ...]:
+    if kinds is None:
+        return DEFAULT_KINDS
+    if isinstance(kinds, str):
+        kinds = tuple(k for k in kinds.split(",") if k)
+    kinds = tuple(kinds)
+    if not kinds:
+        raise AcconformError(f"no scene kinds chosen (known: {', '.join(ALL_KINDS)})")
+    for k in kinds:
+        if k not in ALL_KINDS:
+            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)})")
+    return kinds
+
+
+def scenes(kinds=None) -> st.SearchStrategy:
+    """Scenes of the given kinds (default DEFAULT_KINDS), drawn evenly across kinds."""
+    kinds = check_kinds(kinds)
+    if len(kinds) == 1:
+        return scenes_of(kinds[0])
+    return st.one_of(*(scenes_of(k) for k in kinds))
+
+
+def sample_scenes(kinds: tuple[str, ...] | None, n: int, seed: int) -> Iterator:
+    """n scenes drawn from scenes(kinds), deterministic for a seed (and a Hypothesis version).
+
+    Draws through Hypothesis' own engine (generation phase only, no database, derandomized
+    by `seed`), so sampled scenes have the same distribution a campaign explores.
+    """
+    from hypothesis import HealthCheck, Phase, given, settings
+    from hypothesis import seed as hseed
+
+    strategy = scenes(kinds)
+    out: list = []
+    round_ = 0
+    while len(out) < n:
+        batch: list = []
+
+        @hseed(seed * 1000003 + round_)
+        @settings(max_examples=n - len(out), database=None, phases=[Phase.generate], deadline=None,
+                  suppress_health_check=list(HealthCheck))
+        @given(strategy)
+        def collect(scene):
+            batch.append(scene)
+
+        collect()
+        out.extend(batch[: n - len(out)])
+        round_ += 1
+        if not batch:  # pragma: no cover - the strategy never runs dry
+            raise AcconformError("scene generation produced nothing")
+    yield from out

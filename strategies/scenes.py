@@ -1,0 +1,262 @@
+"""Scene strategies: a mover path over terrain, with BSP objects or obstacles near the path.
+
+Generation order (so that every feature matters): home landblock -> mover start -> terrain
+features placed around the start -> path aimed at a feature edge, an object, a block border or
+anywhere -> objects placed along the path -> every landblock the path (plus a margin of the
+spheres' reach) can touch, sliced from one height field so shared edges agree.
+"""
+
+from __future__ import annotations
+
+import math
+
+from hypothesis import strategies as st
+
+from acconform.flags import PhysicsState, TransientState
+from acconform.numerics import to_f32
+from acconform.scene import (IDENTITY, ContactPlane, Frame, Mover, PlaneRec, Position, Scene, SphereRec,
+                             StaticObject)
+
+from . import shapes as sh
+from . import terrain as tr
+
+BLOCK = 192.0
+CELL = 24.0
+
+# Typical Setup spheres: humans 0.35-0.5 m; the 2-sphere form stacks a head sphere above.
+RADII = (0.3, 0.35, 0.4, 0.48, 0.5, 1.0)
+STEP_HEIGHTS = (0.0, 0.01, 0.04, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0, 1.5, 2.0)
+
+
+def cell_of(bx: int, by: int, lx: float, ly: float) -> int:
+    cx = min(max(int(lx // CELL), 0), 7)
+    cy = min(max(int(ly // CELL), 0), 7)
+    return (bx << 24) | (by << 16) | (1 + cx * 8 + cy)
+
+
+def split_global(gx: float, gy: float) -> tuple[int, int, float, float]:
+    """(block x, block y, local x, local y) of a global point; locals are exact float32s in [0, 192)."""
+    bx, by = int(gx // BLOCK), int(gy // BLOCK)
+    lx, ly = to_f32(gx - bx * BLOCK), to_f32(gy - by * BLOCK)
+    if lx >= BLOCK:  # rounding up to 192.0 belongs to the next block
+        bx, lx = bx + 1, 0.0
+    if ly >= BLOCK:
+        by, ly = by + 1, 0.0
+    return bx, by, lx, ly
+
+
+def position(gx: float, gy: float, z: float, orientation=IDENTITY) -> Position:
+    bx, by, lx, ly = split_global(gx, gy)
+    return Position(cell_of(bx, by, lx, ly), Frame((lx, ly, to_f32(z)), orientation))
+
+
+def yaw(deg: float):
+    h = math.radians(deg) / 2
+    return (to_f32(math.cos(h)), 0.0, 0.0, to_f32(math.sin(h)))
+
+
+class _World:
+    """The height field plus a cache of sliced landblocks, for ground queries during a draw."""
+
+    def __init__(self, field: tr.Field):
+        self.field = field
+        self.blocks = {}
+
+    def block(self, bx, by):
+        lb = self.blocks.get((bx, by))
+        if lb is None:
+            lb = self.blocks[(bx, by)] = self.field.landblock(bx, by)
+        return lb
+
+    def ground(self, gx, gy):
+        bx, by, lx, ly = split_global(gx, gy)
+        return self.block(bx, by), tr.ground(self.block(bx, by), lx, ly)
+
+    def water(self, gx, gy) -> bool:
+        bx, by, lx, ly = split_global(gx, gy)
+        lb = self.block(bx, by)
+        cx, cy = min(int(lx // CELL), 7), min(int(ly // CELL), 7)
+        return any(tr.is_water_word(lb.terrain[(cx + i) * 9 + cy + j]) for i in (0, 1) for j in (0, 1))
+
+
+@st.composite
+def movers_spheres(draw):
+    r = draw(st.one_of(st.sampled_from(RADII), sh.f32s(0.1, 1.5)))
+    spheres = [SphereRec((0.0, 0.0, r), r)]
+    if draw(st.booleans()):
+        h = to_f32(r + r * draw(st.sampled_from((1.0, 1.6, 2.0, 0.5))))
+        spheres.append(SphereRec((0.0, 0.0, h), r))
+    return tuple(spheres)
+
+
+def step_heights(geometry_steps=()):
+    """Step heights: common values, values just around the geometry's own step sizes, anything."""
+    around = [to_f32(s + d) for s in geometry_steps for d in (-0.01, 0.0, 0.01) if s + d >= 0]
+    opts = [st.sampled_from(STEP_HEIGHTS), sh.f32s(0.0, 2.5)]
+    if around:
+        opts.insert(0, st.sampled_from(around))
+    return st.one_of(*opts)
+
+
+PATH_FACTORS = st.one_of(
+    sh.f32s(0.05, 1.0),  # a fraction of one step (one step = sphere radius)
+    sh.f32s(1.0, 4.0),
+    sh.f32s(4.0, 25.0),
+)
+
+
+@st.composite
+def scenes_of(draw, kind: str):
+    bx, by = draw(tr.landblock_coords(0x02, 0xFC))
+    # start: anywhere in the block, or hugging a border (the neighbour must be defined)
+    where = draw(st.sampled_from(("any", "any", "border", "corner")))
+    if where == "any":
+        lx, ly = draw(sh.f32s(0.0, 191.9)), draw(sh.f32s(0.0, 191.9))
+    else:
+        near = st.one_of(sh.f32s(0.0, 3.0), sh.f32s(189.0, 191.99))
+        lx = draw(near)
+        ly = draw(near) if where == "corner" else draw(sh.f32s(0.0, 191.9))
+        if draw(st.booleans()):
+            lx, ly = ly, lx
+    gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
+    vx, vy = round(gx0 / CELL), round(gy0 / CELL)
+    field = draw(tr.fields_near(vx, vy, flat=(kind != "terrain" and draw(st.integers(0, 3)) > 0)))
+    world = _World(field)
+
+    spheres = draw(movers_spheres())
+    r = spheres[0].radius
+    reach = max(s.center[2] + s.radius for s in spheres)
+
+    # objects go in first (the path may aim at one)
+    objects_spec = []
+    if kind == "bsp":
+        for _ in range(draw(st.integers(1, 3))):
+            objects_spec.append(draw(sh.bsp_shapes()))
+    elif kind == "obstacles":
+        for _ in range(draw(st.integers(1, 3))):
+            objects_spec.append(("obstacle", draw(st.one_of(sh.spheres_shapes(), sh.cylsphere_shapes())), 0.0))
+
+    # path
+    aim = draw(st.sampled_from(("feature", "border", "any", "object") if objects_spec else ("feature", "border", "any")))
+    if aim == "feature" and field.features:
+        f = field.features[draw(st.integers(0, len(field.features) - 1))]
+        tx, ty = _feature_target(f, vx, vy)
+        heading = math.degrees(math.atan2(ty * CELL - gy0, tx * CELL - gx0)) + draw(st.sampled_from((0, 0, 5, -5, 30, -30, 60)))
+    elif aim == "border":
+        dists = {0: BLOCK - lx, 180: lx, 90: BLOCK - ly, 270: ly}
+        heading = min(dists, key=dists.get) + draw(st.sampled_from((0, 0, 20, -20, 45, -45)))
+    else:
+        heading = draw(st.integers(0, 359))
+    heading += draw(st.sampled_from((0.0, 0.0, 0.5, 1.0)))
+    length = to_f32(r * draw(PATH_FACTORS))
+
+    # start height: on the ground (contact), a little above it, or well up in the air
+    lb0, (z0, n0, d0) = world.ground(gx0, gy0)
+    start = draw(st.sampled_from(("ground", "ground", "ground", "air")))
+    state = int(PhysicsState.Gravity)
+    if draw(st.integers(0, 3)) > 0:
+        state |= int(PhysicsState.EdgeSlide)
+    begin_cell = cell_of(bx, by, lx, ly)
+    contact = None
+    transient = 0
+    platform = None
+    geometry_steps = [abs(f.k) * 2.0 for f in field.features if f.kind in ("step", "box") and abs(f.k) < 4]
+
+    # BSP objects: maybe one is a platform under the mover (a ledge to walk off)
+    placed = []
+    if objects_spec and objects_spec[0][0] in ("platform", "ledge", "step", "floor") and draw(st.booleans()):
+        label, shape, top = objects_spec.pop(0)
+        ox = gx0 + draw(sh.f32s(-3.0, 3.0))
+        oy = gy0 + draw(sh.f32s(-3.0, 3.0))
+        angle = draw(st.sampled_from((0, 0, 30, 45, 90)))
+        platform = (label, shape, top, ox, oy, angle)
+        geometry_steps.append(top)
+    for label, shape, top in objects_spec:
+        geometry_steps.append(top)
+
+    if platform is not None:
+        label, shape, top, ox, oy, angle = platform
+        _, (gz, _, _) = world.ground(ox, oy)
+        z0 = to_f32(gz + top)
+        n0, d0 = (0.0, 0.0, 1.0), to_f32(-z0)
+        placed.append((shape, ox, oy, gz, yaw(angle)))
+    if start == "ground":
+        walkable = n0[2] >= tr.FLOOR_Z
+        transient = int(TransientState.Contact) | (int(TransientState.OnWalkable) if walkable else 0)
+        contact = ContactPlane(begin_cell, PlaneRec(n0, d0), world.water(gx0, gy0) and platform is None)
+        bz = z0
+    else:
+        bz = to_f32(z0 + draw(st.one_of(sh.f32s(0.001, 0.1), sh.f32s(0.1, 6.0))))
+
+    rad = math.radians(heading)
+    gx1 = gx0 + length * math.cos(rad)
+    gy1 = gy0 + length * math.sin(rad)
+    end_z = draw(st.sampled_from(("level", "ground", "fall", "rise")))
+    if end_z == "ground" and platform is None:
+        _, (ez, _, _) = world.ground(gx1, gy1)
+    elif end_z == "fall" or start == "air":
+        ez = bz - draw(sh.f32s(0.0, 3.0))
+    elif end_z == "rise":
+        ez = bz + draw(sh.f32s(0.0, 1.0))
+    else:
+        ez = bz
+
+    # the other objects: along the path, a little past its end, or to the side
+    for shape_i, (label, shape, top) in enumerate(objects_spec):
+        t = draw(st.sampled_from((0.5, 1.0, 1.0, 1.2)))
+        side = draw(st.sampled_from((0.0, 0.0, 0.5, -0.5, 1.0)))
+        dist = length * t + r + (shape.sphere.radius if hasattr(shape, "sphere") and label not in ("wall",) else 0.3) * draw(st.sampled_from((0.0, 0.5, 1.0)))
+        ox = gx0 + dist * math.cos(rad) - side * r * math.sin(rad)
+        oy = gy0 + dist * math.sin(rad) + side * r * math.cos(rad)
+        angle = heading + draw(st.sampled_from((0, 0, 90, 45, 10, -30)))
+        _, (gz, _, _) = world.ground(ox, oy)
+        placed.append((shape, ox, oy, gz, yaw(angle)))
+
+    # landblocks every sphere of the path can touch (plus a margin for steps and slides)
+    margin = reach + 3.0 + max((s[0].sphere.radius if hasattr(s[0], "sphere") else 3.0) for s in placed) if placed else reach + 3.0
+    xs = [gx0, gx1] + [p[1] for p in placed]
+    ys = [gy0, gy1] + [p[2] for p in placed]
+    blocks = {(bx, by)}
+    for ix in range(int((min(xs) - margin) // BLOCK), int((max(xs) + margin) // BLOCK) + 1):
+        for iy in range(int((min(ys) - margin) // BLOCK), int((max(ys) + margin) // BLOCK) + 1):
+            if 0 <= ix <= 0xFE and 0 <= iy <= 0xFE:
+                blocks.add((ix, iy))
+    landblocks = tuple(world.block(ix, iy) for ix, iy in sorted(blocks))
+
+    objects = []
+    for i, (shape, ox, oy, gz, q) in enumerate(placed):
+        objects.append(StaticObject(0x70000000 + i, position(ox, oy, gz, q), shape))
+
+    steps = geometry_steps + [r, 2 * r]
+    up = draw(step_heights(steps))
+    down = draw(step_heights(steps))
+    mover = Mover(
+        spheres=spheres,
+        begin=Position(begin_cell, Frame((lx, ly, bz))),
+        end=position(gx1, gy1, ez),
+        step_up_height=up,
+        step_down_height=down,
+        state=state,
+        transient_state=transient,
+        contact_plane=contact,
+    )
+    name = f"{kind}:{start}:{aim}" + (":platform" if platform else "")
+    return Scene(landblocks, mover, tuple(objects), name=name)
+
+
+def _feature_target(f: tr.Feature, vx: int, vy: int) -> tuple[float, float]:
+    """A global vertex point on the feature's edge nearest the start vertex (vx, vy)."""
+    if f.kind == "step":
+        if f.a == 0:
+            return vx, f.c / f.b
+        if f.b == 0:
+            return f.c / f.a, vy
+        # diagonal line a*x + b*y = c: project the start onto it
+        t = (f.c - f.a * vx - f.b * vy) / 2
+        return vx + f.a * t, vy + f.b * t
+    cx = min(max(vx, f.x0), f.x1)
+    cy = min(max(vy, f.y0), f.y1)
+    if (cx, cy) == (vx, vy):  # inside: aim at the nearest edge
+        d = {(f.x0, vy): vx - f.x0, (f.x1, vy): f.x1 - vx, (vx, f.y0): vy - f.y0, (vx, f.y1): f.y1 - vy}
+        return min(d, key=d.get)
+    return cx, cy

@@ -1,0 +1,173 @@
+"""BSP shapes and obstacles: convex solids and polygons with valid physics BSP trees.
+
+Every solid is convex and its polygons are listed counter-clockwise seen from outside (so the
+plane normal made from the vertices points out). Its physics BSP is a chain with one internal
+node per face plane: the front child is an empty leaf (a sphere wholly in front of any face of
+a convex solid cannot touch it), the back child the next node, and the last back child a solid
+leaf holding every polygon. Every node and leaf carries the solid's bounding sphere (centre the
+vertex box's middle, radius the farthest vertex, rounded up to a float32 that still covers it),
+so `sphere.intersects` never prunes a polygon it should reach. A lone polygon ("a convex polygon")
+gets one node on its plane with the polygon in the back leaf.
+
+All coordinates are exact float32s (rounded with to_f32); shapes are built in the object's
+local frame with z = 0 at the object's base.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from hypothesis import strategies as st
+
+from acconform.flags import CullMode
+from acconform.numerics import to_f32
+from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, PlaneRec, PolygonRec, SphereRec,
+                             SphereShape)
+
+
+def f32s(lo: float, hi: float):
+    """Exact float32s in [lo, hi] (Hypothesis draws binary32 values directly)."""
+    return st.floats(to_f32(lo), to_f32(hi), width=32, allow_nan=False, allow_infinity=False)
+
+
+def _v(p):
+    return tuple(to_f32(c) for c in p)
+
+
+def _plane(verts) -> PlaneRec:
+    # Newell's normal (robust for any planar convex polygon), unit length, through vertex 0
+    nx = ny = nz = 0.0
+    n = len(verts)
+    for i in range(n):
+        x0, y0, z0 = verts[i]
+        x1, y1, z1 = verts[(i + 1) % n]
+        nx += (y0 - y1) * (z0 + z1)
+        ny += (z0 - z1) * (x0 + x1)
+        nz += (x0 - x1) * (y0 + y1)
+    ln = math.sqrt(nx * nx + ny * ny + nz * nz)
+    nx, ny, nz = nx / ln, ny / ln, nz / ln
+    x0, y0, z0 = verts[0]
+    return PlaneRec(_v((nx, ny, nz)), to_f32(-(nx * x0 + ny * y0 + nz * z0)))
+
+
+def bounding_sphere(points) -> SphereRec:
+    xs, ys, zs = zip(*points)
+    c = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2, (min(zs) + max(zs)) / 2)
+    c = _v(c)
+    r = max(math.dist(c, p) for p in points)
+    rf = np.float32(r)
+    if float(rf) < r:
+        rf = np.nextafter(rf, np.float32(np.inf))
+    rf = np.nextafter(rf, np.float32(np.inf))  # one ulp of slack for float32 distance rounding
+    return SphereRec(c, float(max(rf, np.float32(0.01))))
+
+
+def solid(faces: list[list[tuple[float, float, float]]], sides: int = int(CullMode.Clockwise)) -> BSPShape:
+    """A BSPShape for a convex solid given its faces (each CCW from outside)."""
+    polys = tuple(PolygonRec(tuple(_v(p) for p in f), sides) for f in faces)
+    sphere = bounding_sphere([p for poly in polys for p in poly.vertices])
+    node = BSPLeaf(tuple(range(len(polys))), True, sphere)
+    for poly in reversed(polys):
+        node = BSPNode(_plane(poly.vertices), sphere, BSPLeaf((), False, sphere), node)
+    return BSPShape(polys, node, sphere)
+
+
+def box(sx: float, sy: float, sz: float, z0: float = 0.0) -> BSPShape:
+    """An axis-aligned box [-sx/2, sx/2] x [-sy/2, sy/2] x [z0, z0 + sz]."""
+    x0, x1, y0, y1, z1 = -sx / 2, sx / 2, -sy / 2, sy / 2, z0 + sz
+    return solid(_box_faces(x0, x1, y0, y1, z0, z1))
+
+
+def _box_faces(x0, x1, y0, y1, z0, z1):
+    return [
+        [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],  # top (+z)
+        [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],  # bottom (-z)
+        [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],  # +x
+        [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],  # -x
+        [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],  # +y
+        [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],  # -y
+    ]
+
+
+def wedge(sx: float, sy: float, sz: float) -> BSPShape:
+    """A ramp: rises along +x from height 0 at x = -sx/2 to sz at x = +sx/2."""
+    x0, x1, y0, y1 = -sx / 2, sx / 2, -sy / 2, sy / 2
+    faces = [
+        [(x0, y0, 0.0), (x1, y0, sz), (x1, y1, sz), (x0, y1, 0.0)],  # slope
+        [(x0, y0, 0.0), (x0, y1, 0.0), (x1, y1, 0.0), (x1, y0, 0.0)],  # bottom
+        [(x1, y0, 0.0), (x1, y1, 0.0), (x1, y1, sz), (x1, y0, sz)],  # back wall +x
+        [(x0, y1, 0.0), (x1, y1, sz), (x1, y1, 0.0)],  # +y side
+        [(x0, y0, 0.0), (x1, y0, 0.0), (x1, y0, sz)],  # -y side
+    ]
+    return solid(faces)
+
+
+def prism(n: int, radius: float, height: float, phase: float = 0.0) -> BSPShape:
+    """A regular n-gon prism (thin posts with small radius)."""
+    ring = [(radius * math.cos(phase + 2 * math.pi * k / n), radius * math.sin(phase + 2 * math.pi * k / n)) for k in range(n)]
+    ring = [(to_f32(x), to_f32(y)) for x, y in ring]
+    faces = [[(x, y, height) for x, y in ring], [(x, y, 0.0) for x, y in reversed(ring)]]
+    for k in range(n):
+        (ax, ay), (bx, by) = ring[k], ring[(k + 1) % n]
+        faces.append([(ax, ay, 0.0), (bx, by, 0.0), (bx, by, height), (ax, ay, height)])
+    return solid(faces)
+
+
+def polygon_shape(verts) -> BSPShape:
+    """One convex polygon (two-sided), its BSP a single node on its plane."""
+    poly = PolygonRec(tuple(_v(p) for p in verts), int(CullMode.None_))
+    sphere = bounding_sphere(poly.vertices)
+    root = BSPNode(_plane(poly.vertices), sphere, BSPLeaf((), False, sphere), BSPLeaf((0,), False, sphere))
+    return BSPShape((poly,), root, sphere)
+
+
+# ---------------------------------------------------------------- strategies
+
+STEP_SIZES = (0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 1.0)
+
+
+@st.composite
+def convex_polygons(draw, max_vertices: int = 8):
+    """A convex polygon: points on an ellipse at increasing angles, tilted, CCW from +z before tilting."""
+    n = draw(st.integers(3, max_vertices))
+    angles = sorted(draw(st.lists(st.sampled_from(range(0, 360, 15)), min_size=n, max_size=n, unique=True)))
+    rx, ry = draw(f32s(0.5, 6.0)), draw(f32s(0.5, 6.0))
+    tilt = math.radians(draw(st.sampled_from((0, 0, 10, 30, 45, 50, 60, 90))))
+    z = draw(f32s(0.0, 3.0))
+    pts = []
+    for a in angles:
+        x, y = rx * math.cos(math.radians(a)), ry * math.sin(math.radians(a))
+        pts.append((x, y * math.cos(tilt), z + y * math.sin(tilt)))
+    return polygon_shape(pts)
+
+
+@st.composite
+def bsp_shapes(draw):
+    """(label, shape, top height, step size) for one BSP object (label says what it is)."""
+    kind = draw(st.sampled_from(("wall", "floor", "ramp", "ledge", "platform", "post", "box", "polygon", "step")))
+    if kind == "wall":
+        shape = box(draw(f32s(0.1, 1.0)), draw(f32s(2.0, 12.0)), draw(f32s(1.0, 6.0)))
+    elif kind in ("floor", "platform", "ledge", "step"):
+        height = draw(st.sampled_from(STEP_SIZES)) if kind == "step" else draw(f32s(0.05, 3.0))
+        shape = box(draw(f32s(1.0, 10.0)), draw(f32s(1.0, 10.0)), height if kind != "floor" else draw(f32s(0.02, 0.3)))
+    elif kind == "ramp":
+        length = draw(f32s(2.0, 12.0))
+        angle = draw(st.sampled_from((20.0, 45.0, 48.0, 48.4, 48.5, 49.0, 60.0)))
+        shape = wedge(length, draw(f32s(1.0, 6.0)), to_f32(length * math.tan(math.radians(angle))))
+    elif kind == "post":
+        shape = prism(draw(st.integers(3, 8)), draw(f32s(0.05, 0.4)), draw(f32s(1.0, 5.0)))
+    elif kind == "box":
+        shape = box(draw(f32s(0.5, 4.0)), draw(f32s(0.5, 4.0)), draw(f32s(0.5, 4.0)))
+    else:
+        shape = draw(convex_polygons())
+    zs = [p[2] for poly in shape.polygons for p in poly.vertices]
+    return kind, shape, max(zs)
+
+
+def spheres_shapes():
+    return st.builds(lambda c, r: SphereShape(SphereRec((0.0, 0.0, c), r)), f32s(0.0, 2.0), f32s(0.1, 3.0))
+
+
+def cylsphere_shapes():
+    return st.builds(lambda r, h: CylSphereShape((0.0, 0.0, 0.0), r, h), f32s(0.1, 2.0), f32s(0.2, 5.0))
