@@ -1,0 +1,151 @@
+"""ObjCell and SortCell: FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells, point_in_cell, Equals, find_cell_list (the sphere overloads), GetVisible.
+
+ACE's Common/ObjCell.cs and Common/SortCell.cs: the base behaviour every cell has. LandCell
+(land_cell.py) carries the fields; land_cell_collision.py gives it these methods and its own
+overrides. `EMPTY_CELL` is ACE's ObjCell.EmptyCell (id 0, FindCollisions -> Invalid), which
+CheckOtherCells passes in as the "find me a current cell" marker.
+
+find_cell_list outdoors: every cell the spheres touch is added to the CellArray (which is never
+cleared), then the current cell is the LAST cell in .NET dictionary order whose terrain holds
+sphere 0's center -- on a shared edge both cells hold it and the later one wins.
+"""
+
+from __future__ import annotations
+
+from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
+
+from ..anchors import anchor
+from . import land_defs
+from .land_cell import add_all_outside_cells
+
+
+class ObjCell:
+    """CObjCell's behaviour (and SortCell's overrides; a LandCell never holds a building here)."""
+
+    __slots__ = ("id",)
+
+    def __init__(self, cell_id: int = 0):
+        self.id = cell_id
+
+    @anchor(None, "ObjCell.cs:Equals")
+    def equals(self, obj_cell) -> bool:
+        if obj_cell is None:
+            return False
+        return self.id == obj_cell.id
+
+    @anchor("CObjCell::find_collisions", "ObjCell.cs:FindCollisions")
+    def find_collisions(self, transition) -> TransitionState:
+        return TransitionState.Invalid
+
+    @anchor("CObjCell::find_env_collisions", "ObjCell.cs:FindEnvCollisions")
+    def find_env_collisions(self, transition) -> TransitionState:
+        return TransitionState.Invalid
+
+    @anchor("CSortCell::find_collisions", "SortCell.cs:FindCollisions")
+    def sort_cell_find_collisions(self, transition) -> TransitionState:
+        if self.building is not None:
+            raise NotImplementedError("buildings (BuildingObj.find_building_collisions) are not ported")
+        return TransitionState.OK
+
+    @anchor("CSortCell::find_transit_cells", "SortCell.cs:find_transit_cells")
+    def sort_cell_find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
+        if self.building is not None:
+            raise NotImplementedError("buildings (BuildingObj.find_building_transit_cells) are not ported")
+
+    @anchor("CObjCell::find_obj_collisions", "ObjCell.cs:FindObjCollisions")
+    def find_obj_collisions(self, transition) -> TransitionState:
+        from ..transition.sphere_path import InsertType
+
+        path = transition.sphere_path
+        if path.insert_type == InsertType.InitialPlacement:
+            return TransitionState.OK
+
+        # ACE walks the shadow list from the end ("for (int i = Count - 1; i >= 0; i--)")
+        for i in range(len(self.shadow_object_list) - 1, -1, -1):
+            shadow_obj = self.shadow_object_list[i]
+            obj = shadow_obj.physics_obj
+            if obj.parent is not None or obj.equals(transition.object_info.object):
+                continue
+            state = obj.find_obj_collisions(transition)
+            if state != TransitionState.OK:
+                # custom (ACE): placements ignore ethereal objects
+                if path.insert_type == InsertType.Placement and obj.state & PhysicsState.Ethereal:
+                    continue
+                return state
+        return TransitionState.OK
+
+    @anchor(None, "ObjCell.cs:check_entry_restrictions")
+    def check_entry_restrictions(self, transition) -> TransitionState:
+        obj = transition.object_info.object
+        begin_cell = transition.sphere_path.begin_cell
+        if not obj.is_player or transition.collision_info.verified_restrictions or (
+                begin_cell is not None and begin_cell.id == self.id):
+            return TransitionState.OK
+        raise NotImplementedError("entry restrictions (housing barriers) for players are not ported")
+
+    @anchor(None, "ObjCell.cs:handle_move_restriction")
+    def handle_move_restriction(self, transition) -> bool:
+        return False
+
+    @anchor("CObjCell::find_transit_cells", "ObjCell.cs:find_transit_cells")
+    def find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
+        pass
+
+    @anchor("CObjCell::point_in_cell", "ObjCell.cs:point_in_cell")
+    def point_in_cell(self, point) -> bool:
+        return False
+
+
+# ObjCell.EmptyCell
+EMPTY_CELL = ObjCell()
+
+
+@anchor("CObjCell::GetVisible", "ObjCell.cs:GetVisible")
+def get_visible(lscape, cell_id: int):
+    if cell_id == 0:
+        return None
+    return lscape.get_landcell(cell_id)
+
+
+@anchor("CObjCell::find_cell_list", "ObjCell.cs:find_cell_list(Position, int, List<Sphere>, CellArray, ref ObjCell, SpherePath)")
+def find_cell_list(lscape, position, num_sphere: int, spheres: list, cell_array, curr_cell, path):
+    """The sphere overload; returns currCell after the call (C# ref)."""
+    cell_array.num_cells = 0
+    cell_array.added_outside = False
+
+    visible_cell = get_visible(lscape, position.obj_cell_id)
+
+    if (position.obj_cell_id & 0xFFFF) >= 0x100:
+        raise NotImplementedError("indoor cells (EnvCells) are not supported")
+    add_all_outside_cells(lscape, position, num_sphere, spheres, cell_array)
+
+    if visible_cell is not None and num_sphere != 0:
+        i = 0
+        while i < len(cell_array.cells):  # Count re-read each pass, as ACE's for loop does
+            cell = cell_array.cells.value_at(i)
+            i += 1
+            if cell is None:
+                continue
+            cell.find_transit_cells(lscape, position, num_sphere, spheres, cell_array, path)
+
+        if curr_cell is not None:
+            curr_cell = None
+            for cell in cell_array.cells.values():
+                if cell is None:
+                    continue
+                block_offset = land_defs.get_block_offset(position.obj_cell_id, cell.id)
+                local_point = spheres[0].center - block_offset
+                if cell.point_in_cell(local_point):
+                    curr_cell = cell
+                    if (cell.id & 0xFFFF) >= 0x100:
+                        if path is not None:
+                            path.hits_interior_cell = True
+                        return curr_cell
+    # (the !LoadCells indoor pruning does not apply outdoors)
+    return curr_cell
+
+
+@anchor("CObjCell::find_cell_list", "ObjCell.cs:find_cell_list(CellArray, ref ObjCell, SpherePath)")
+def find_cell_list_path(lscape, cell_array, check_cell, path):
+    """find_cell_list(cellArray, ref checkCell, path): the path's check position and global spheres."""
+    return find_cell_list(lscape, path.check_pos, path.num_sphere, path.global_sphere, cell_array, check_cell, path)
