@@ -1,0 +1,150 @@
+"""Landblock, LandCell and LScape (port/land/landblock.py, land_cell.py, lscape.py): cells, GetZ, outside cells."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from acconform.numerics import EXACT, FAST, f32_bits
+from acconform.port.frame import AFrame, Position
+from acconform.port.land import land_cell as lc
+from acconform.port.land.land_defs import InvalidOperation, WaterType
+
+from land_helpers import WATER, CellArrayStub, SphereStub, landblock, world
+
+F = np.float32
+NE = 0xFEFEFFFF  # global cell (2039, 2039) = cell 0x40 here cuts SE-NW (first branch, mono)
+
+
+def slope_world(mode=EXACT):
+    heights = [0] * 81
+    heights[8 * 9 + 8] = 12  # vertex (8, 8) at 24 m; the rest of cell 0x40 at 0
+    return world(landblock(NE, heights), mode=mode)
+
+
+@pytest.mark.anchor("CLandBlock::GetZ")
+def test_get_z_on_the_flat_triangle_is_negative_zero_as_ace_computes_it():
+    w = slope_world()
+    lb = w.get_landblock(NE)
+    z = lb.get_z(w, EXACT.vec(170, 170, 5))
+    # plane z = 0 with D = -(0/3) = -0: (0 + -0) / 1 * -1 = -0
+    assert f32_bits(z) == 0x80000000
+
+
+@pytest.mark.anchor("CLandBlock::GetZ")
+def test_get_z_on_the_sloped_triangle_follows_its_plane():
+    w = slope_world()
+    z = w.get_landblock(NE).get_z(w, EXACT.vec(190, 190, 5))
+    assert abs(float(z) - 20.0) < 1e-4  # plane through (192,168,0), (168,192,0), (192,192,24)
+    zf = slope_world(FAST).get_landblock(NE).get_z(slope_world(FAST), FAST.vec(190, 190, 5))
+    assert type(zf) is np.float64 and abs(zf - 20.0) < 1e-9
+
+
+@pytest.mark.anchor("CLandCell::find_terrain_poly")
+def test_a_point_on_the_diagonal_belongs_to_the_first_triangle():
+    w = slope_world()
+    cell = w.get_landcell(0xFEFE0040)
+    found, poly = cell.find_terrain_poly(EXACT.vec(180, 180, 0))
+    assert found and poly is cell.polygons[0]
+    found, poly = cell.find_terrain_poly(EXACT.vec(191, 191, 0))
+    assert found and poly is cell.polygons[1]
+
+
+@pytest.mark.anchor("CLandCell::find_terrain_poly")
+def test_points_on_cell_edges_count_as_inside_and_outside_points_keep_walkable():
+    cell = slope_world().get_landcell(0xFEFE0040)
+    for p in ((168, 170), (192, 170), (170, 168), (170, 192), (168, 168), (192, 192)):
+        assert cell.point_in_cell(EXACT.vec(*p, 0)), p
+    sentinel = object()
+    assert cell.find_terrain_poly(EXACT.vec(167.9, 170, 0), sentinel) == (False, sentinel)
+
+
+@pytest.mark.anchor("CLandBlock::GetCell")
+def test_get_cell_at_192_takes_no_cell_for_x_and_the_next_column_for_y():
+    w = slope_world()
+    lb = w.get_landblock(NE)
+    assert lb.get_cell(w, EXACT.vec(192, 10, 0)) is None  # id 0x41..: not a land cell
+    assert lb.get_cell(w, EXACT.vec(10, 192, 0)).id == 0xFEFE0009  # cell (1, 0)
+    assert lb.get_cell(w, EXACT.vec(-0.0, 0, 0)).id == 0xFEFE0001
+    assert lb.get_cell(w, EXACT.vec(-0.01, 0, 0)) is None
+    # so GetZ there falls back to the point's own z
+    assert lb.get_z(w, EXACT.vec(10, 192, 7)) == 7
+    assert lb.get_z(w, EXACT.vec(192.5, 10, 7)) == 7
+
+
+@pytest.mark.anchor("CLandBlock::get_landcell")
+def test_landblock_get_landcell_checks_the_id_and_raises_where_ace_throws():
+    w = slope_world()
+    lb = w.get_landblock(NE)
+    assert lb.get_landcell(0xFEFE0040).id == 0xFEFE0040
+    assert lb.get_landcell(0xA9B40040) is None  # same slot, other block
+    with pytest.raises(InvalidOperation):
+        lb.get_landcell(0xFEFE0041)
+
+
+@pytest.mark.anchor("LScape::get_landcell")
+def test_lscape_finds_cells_of_listed_landblocks_only():
+    w = world(landblock(0xA9B4FFFF), landblock(0xAAB4FFFF))
+    assert w.get_landcell(0xAAB40005).id == 0xAAB40005
+    assert w.get_landcell(0xAAB40005).cur_landblock is w.get_landblock(0xAAB40000)
+    assert w.get_landcell(0xABB40005) is None  # not in the scene (ACE would load the DAT)
+    assert w.get_landcell(0xA9B40041) is None
+    assert w.get_landcell(0xA9B40100) is None  # indoor: unsupported
+    assert w.get_landblock(0xA9B40017) is w.get_landblock(0xA9B4FFFF)
+
+
+@pytest.mark.anchor("CObjCell::get_water_depth")
+def test_water_depth_of_cells():
+    terrain = [0] * 81
+    for i in (0, 1, 9, 10):
+        terrain[i] = WATER
+    terrain[9 * 3 + 3] = WATER
+    w = world(landblock(0xA9B4FFFF, terrain=terrain))
+    full, part, dry = (w.get_landcell(0xA9B40000 | c) for c in (1, 8 * 3 + 3 + 1, 8 * 5 + 5 + 1))
+    assert (full.water_type, part.water_type, dry.water_type) == (WaterType.EntirelyWater, WaterType.PartiallyWater, WaterType.NotWater)
+    assert f32_bits(full.get_water_depth(EXACT.vec(1, 1, 0))) == 0x3F666666  # 0.89999998f
+    assert f32_bits(part.get_water_depth(EXACT.vec(73, 73, 0))) == 0x3EE66666  # 73 % 24 = 1: SW corner (3,3), water
+    assert f32_bits(part.get_water_depth(EXACT.vec(70, 70, 0))) == 0x3DCCCCCD  # 70 % 24 = 22: NE corner, dry
+    assert dry.get_water_depth(EXACT.vec(1, 1, 0)) == 0
+    assert full.get_block_water_type() == WaterType.PartiallyWater
+
+
+@pytest.mark.anchor("CLandCell::add_all_outside_cells")
+def test_a_sphere_near_a_corner_adds_the_four_cells_across_blocks():
+    w = world(landblock(0xA9B4FFFF), landblock(0xAAB4FFFF), landblock(0xA9B5FFFF), landblock(0xAAB5FFFF))
+    ca = CellArrayStub()
+    pos = Position(0xA9B40040, AFrame.identity(EXACT))
+    lc.add_all_outside_cells(w, pos, 1, [SphereStub(EXACT.vec(191.8, 191.8, 0.5), F(0.5))], ca)
+    assert sorted(ca.cells) == [0xA9B40040, 0xA9B50039, 0xAAB40008, 0xAAB50001]
+    assert ca.added_outside is False  # this overload never sets it
+
+
+@pytest.mark.anchor("CLandCell::check_add_cell_boundary")
+def test_neighbours_west_of_the_world_are_skipped_because_mono_wraps_negative_uint():
+    w = world(landblock(0x0000FFFF))
+    ca = CellArrayStub()
+    lc.add_all_outside_cells(w, Position(0x00000001, AFrame.identity(EXACT)), 1,
+                             [SphereStub(EXACT.vec(0.2, 0.2, 0.5), F(0.5))], ca)
+    assert sorted(ca.cells) == [0x00000001]  # (uint)(-1.0f) on mono is 0xFFFFFFFF, not 0
+
+
+@pytest.mark.anchor("CLandCell::add_all_outside_cells")
+def test_without_spheres_the_position_itself_is_moved_outside():
+    w = world(landblock(0xA9B4FFFF), landblock(0xAAB4FFFF))
+    ca = CellArrayStub()
+    pos = Position(0xA9B40001, AFrame(EXACT.vec(200, 5, 0), EXACT.quat(0, 0, 0, 1)))
+    lc.add_all_outside_cells(w, pos, 0, [], ca)
+    assert pos.obj_cell_id == 0xAAB40001 and pos.frame.origin.x == 8
+    assert sorted(ca.cells) == [0xAAB40001]
+    ca.added_outside = True
+    lc.add_all_outside_cells(w, Position(0xA9B40001, AFrame.identity(EXACT)), 0, [], ca)
+    assert sorted(ca.cells) == [0xAAB40001]
+
+
+@pytest.mark.anchor("CLandCell::add_cell_block")
+def test_add_cell_block_keeps_only_cells_of_the_given_block():
+    w = world(landblock(0xA9B4FFFF), landblock(0xAAB4FFFF))
+    ca = CellArrayStub()
+    lc.add_cell_block(w, 1358, 1440, 1361, 1441, ca, 0xA9B40001)
+    # x 1358..1361: 1360 and 1361 are block 0xAA, dropped by ACE's "FIXME" same-block test
+    assert sorted(ca.cells) == [0xA9B40031, 0xA9B40032, 0xA9B40039, 0xA9B4003A]
