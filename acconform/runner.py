@@ -1,0 +1,345 @@
+"""The differential runner: scenes through two backends, compared, differences shrunk and saved.
+
+A backend is any callable ``scene -> Outcome``; the port (acconform.port.run.run_scene) and the
+oracle (acconform.oracle.get_oracle().run) are the default pair, and tests pass plain callables
+(e.g. a mutated port against the real one).
+
+Two kinds of campaign:
+
+- generative (a live oracle, or any callable pair): Hypothesis draws scenes from
+  acconform.strategies.scenes(kinds); a difference fails the example, Hypothesis shrinks it to a
+  minimal scene, and the minimal scene is written as a case file. Hypothesis' example database
+  (a directory) remembers failing scenes, so the next run tries them first.
+- replay (a recorded oracle): Hypothesis cannot ask a recording about scenes it never saw, so
+  the recorded scenes are replayed as they are and a difference is saved unshrunk.
+
+Deterministic for a seed (and a worker count): worker w draws with seed (seed, w). With
+``keep_going`` a campaign goes on after a difference, ignoring differences with the same
+*signature* (the set of differing field paths) so each shrink finds a new kind of failure.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import multiprocessing
+import os
+import sys
+import time
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable, Iterable
+
+from . import __version__
+from .case import Case, Versions, write_document
+from .compare import Difference, compare, render
+from .errors import AcconformError
+from .outcome import Outcome
+from .scene import Scene
+
+Backend = Callable[[Scene], Outcome]
+
+DEFAULT_DATABASE = Path(".hypothesis") / "acconform"
+
+
+@dataclass(slots=True)
+class Found:
+    """One difference found (and shrunk where the campaign can shrink)."""
+
+    case: Case
+    path: Path | None = None
+    signature: tuple[str, ...] = ()
+    shrunk: bool = False
+
+
+@dataclass(slots=True)
+class Result:
+    cases: int = 0
+    found: list[Found] = field(default_factory=list)
+    elapsed: float = 0.0
+    source: str = "generative"
+    timings: Counter = field(default_factory=Counter)  # seconds in "port", "oracle", "compare"
+
+    @property
+    def ok(self) -> bool:
+        return not self.found
+
+
+def scene_hash(scene: Scene) -> str:
+    from .codec import dumps_compact
+
+    return hashlib.sha256(dumps_compact(scene.to_json()).encode()).hexdigest()
+
+
+def signature(diffs: list[Difference]) -> tuple[str, ...]:
+    """What kind of failure: the differing fields, vector indices dropped."""
+    return tuple(sorted({d.field.split("[", 1)[0] for d in diffs}))
+
+
+def guarded(backend: Backend, scene: Scene) -> Outcome:
+    """A backend's outcome; an exception escaping it becomes the outcome's error (a verdict)."""
+    try:
+        return backend(scene)
+    except Exception as e:  # noqa: BLE001 - a crash on one side is a difference, not a runner crash
+        return Outcome(error=f"{type(e).__name__}: {e}")
+
+
+def versions_of(port: Backend, oracle: Backend) -> Versions:
+    v = getattr(oracle, "versions", None)
+    if isinstance(v, Versions):
+        return Versions(__version__, v.ace, v.runtime)
+    if isinstance(v, dict):
+        return Versions(__version__, str(v.get("ace", "")), str(v.get("runtime", "")))
+    return Versions(__version__, str(getattr(oracle, "name", "") or ""), "")
+
+
+def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions) -> Case:
+    return Case(scene=scene, port=a, oracle=b, differences=tuple(render(diffs)), seed=str(seed), mode=mode,
+                versions=versions)
+
+
+def write_case(case: Case, failures_dir: str | Path) -> Path:
+    path = Path(failures_dir) / f"case-{scene_hash(case.scene)[:12]}.json"
+    return write_document(path, case)
+
+
+class _Stop(BaseException):
+    """Ends a Hypothesis run at once (not an Exception, so Hypothesis neither catches nor shrinks it)."""
+
+
+class _Mismatch(Exception):
+    pass
+
+
+class Progress:
+    """A plain-text progress bar on stderr (redrawn in place on a terminal, a line per 10% otherwise)."""
+
+    def __init__(self, total: int, enabled: bool, stream=None):
+        self.total = max(total, 1)
+        self.enabled = enabled
+        self.stream = stream or sys.stderr
+        self.tty = hasattr(self.stream, "isatty") and self.stream.isatty()
+        self.start = time.monotonic()
+        self.last = 0.0
+        self.last_decile = -1
+
+    def update(self, done: int, found: int, force: bool = False) -> None:
+        if not self.enabled:
+            return
+        now = time.monotonic()
+        if not force and now - self.last < 0.2:
+            return
+        self.last = now
+        frac = min(done / self.total, 1.0)
+        rate = done / max(now - self.start, 1e-9)
+        width = 30
+        bar = "#" * int(frac * width) + "-" * (width - int(frac * width))
+        line = f"[{bar}] {done}/{self.total} cases  {found} difference{'s' if found != 1 else ''}  {rate:.0f} cases/s"
+        if self.tty:
+            self.stream.write("\r" + line)
+            self.stream.flush()
+        elif int(frac * 10) > self.last_decile or force:
+            self.last_decile = int(frac * 10)
+            self.stream.write(line + "\n")
+            self.stream.flush()
+
+    def close(self, done: int, found: int) -> None:
+        self.update(done, found, force=True)
+        if self.enabled and self.tty:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+# ---------------------------------------------------------------- one worker's campaign
+
+
+def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mode: str, keep_going: bool,
+                database, tick, should_stop, timings: Counter, versions: Versions) -> tuple[int, list[Found]]:
+    from hypothesis import HealthCheck, Phase, Verbosity, given, settings
+    from hypothesis import seed as hseed
+    from hypothesis.database import DirectoryBasedExampleDatabase
+
+    from .strategies import check_kinds, scenes
+
+    kinds = check_kinds(kinds)
+    db = DirectoryBasedExampleDatabase(str(database)) if database else None
+    found: list[Found] = []
+    known: set[tuple[str, ...]] = set()
+    done = 0
+    round_ = 0
+    while done < n:
+        last: list = []
+        ran = [0]
+
+        @hseed(seed * 7919 + round_)
+        @settings(max_examples=n - done, database=db, deadline=None, verbosity=Verbosity.quiet,
+                  suppress_health_check=list(HealthCheck), report_multiple_bugs=False,
+                  phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink])
+        @given(scenes(kinds))
+        def differential(scene):
+            if should_stop():
+                raise _Stop
+            ran[0] += 1
+            tick(1)
+            t0 = time.perf_counter()
+            a = guarded(port, scene)
+            t1 = time.perf_counter()
+            b = guarded(oracle, scene)
+            t2 = time.perf_counter()
+            diffs = compare(a, b, mode)
+            t3 = time.perf_counter()
+            timings["port"] += t1 - t0
+            timings["oracle"] += t2 - t1
+            timings["compare"] += t3 - t2
+            if diffs:
+                sig = signature(diffs)
+                if sig not in known:
+                    last[:] = [scene, a, b, diffs]
+                    raise _Mismatch(sig)
+
+        # one database key per campaign shape, so runs of other kinds or modes do not mix
+        differential._hypothesis_internal_add_digest = f"acconform:{','.join(kinds)}:{mode}".encode()
+        new = False
+        try:
+            differential()
+        except _Mismatch:
+            scene, a, b, diffs = last
+            sig = signature(diffs)
+            known.add(sig)
+            found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions), None, sig, True))
+            new = True
+        except _Stop:
+            return done + ran[0], found
+        done += ran[0]
+        round_ += 1
+        # stop: first difference and not keep_going; or a clean round (the budget is spent or
+        # Hypothesis ran out of scenes); or a round that ran nothing
+        if (new and not keep_going) or not new or ran[0] == 0:
+            break
+    return done, found
+
+
+def _replay(port: Backend, oracle: Backend, scenes: Iterable[Scene], *, mode: str, keep_going: bool, tick,
+            should_stop, timings: Counter, versions: Versions, seed) -> tuple[int, list[Found]]:
+    found: list[Found] = []
+    done = 0
+    for scene in scenes:
+        if should_stop():
+            break
+        done += 1
+        tick(1)
+        t0 = time.perf_counter()
+        a = guarded(port, scene)
+        t1 = time.perf_counter()
+        b = guarded(oracle, scene)
+        t2 = time.perf_counter()
+        diffs = compare(a, b, mode)
+        timings["port"] += t1 - t0
+        timings["oracle"] += t2 - t1
+        timings["compare"] += time.perf_counter() - t2
+        if diffs:
+            found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions), None, signature(diffs), False))
+            if not keep_going:
+                break
+    return done, found
+
+
+# ---------------------------------------------------------------- workers
+
+_SHARED: dict = {}
+
+
+def _worker(w: int) -> tuple[int, list[dict], dict, list[bool]]:
+    s = _SHARED
+    counter, stop = s["counter"], s["stop"]
+
+    def tick(k):
+        with counter.get_lock():
+            counter.value += k
+
+    timings: Counter = Counter()
+    if s["replay"] is not None:
+        mine = [sc for i, sc in enumerate(s["replay"]) if i % s["workers"] == w]
+        done, found = _replay(s["port"], s["oracle"], mine, mode=s["mode"], keep_going=s["keep_going"], tick=tick,
+                              should_stop=lambda: stop.is_set(), timings=timings, versions=s["versions"],
+                              seed=s["seed"])
+    else:
+        n = s["n"] // s["workers"] + (1 if w < s["n"] % s["workers"] else 0)
+        done, found = _generative(s["port"], s["oracle"], kinds=s["kinds"], n=n, seed=s["seed"] * 1000 + w,
+                                  mode=s["mode"], keep_going=s["keep_going"], database=s["database"], tick=tick,
+                                  should_stop=lambda: stop.is_set(), timings=timings, versions=s["versions"])
+    if found and not s["keep_going"]:
+        stop.set()
+    return done, [f.case.to_json() for f in found], dict(timings), [f.shrunk for f in found]
+
+
+def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, seed: int = 0, mode: str = "exact",
+                 keep_going: bool = False, failures_dir: str | Path | None = "failures",
+                 database: str | Path | None = DEFAULT_DATABASE, workers: int = 1, progress: bool = False,
+                 replay: Iterable[Scene] | None = None) -> Result:
+    """Run a campaign of `n` scenes (or replay `replay`) through port and oracle; see the module doc.
+
+    Found differences are written to `failures_dir` (None: not written). `workers` > 1 forks
+    worker processes (the backends are inherited, so any callable works).
+    """
+    if mode not in ("exact", "fast"):
+        raise AcconformError(f"unknown mode {mode!r}: choose exact or fast")
+    versions = versions_of(port, oracle)
+    replay_list = list(replay) if replay is not None else None
+    total = len(replay_list) if replay_list is not None else n
+    bar = Progress(total, progress)
+    start = time.monotonic()
+    workers = max(1, min(workers, total or 1))
+    result = Result(source="replay" if replay_list is not None else "generative")
+
+    if workers == 1:
+        count = [0]
+
+        def tick(k):
+            count[0] += k
+            bar.update(count[0], 0)
+
+        timings: Counter = Counter()
+        if replay_list is not None:
+            done, found = _replay(port, oracle, replay_list, mode=mode, keep_going=keep_going, tick=tick,
+                                  should_stop=lambda: False, timings=timings, versions=versions, seed=seed)
+        else:
+            done, found = _generative(port, oracle, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
+                                      database=database, tick=tick, should_stop=lambda: False, timings=timings,
+                                      versions=versions)
+        result.cases, result.found, result.timings = done, found, timings
+    else:
+        ctx = multiprocessing.get_context("fork")
+        counter = ctx.Value("q", 0)
+        stop = ctx.Event()
+        _SHARED.update(port=port, oracle=oracle, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
+                       database=database, versions=versions, replay=replay_list, workers=workers, counter=counter,
+                       stop=stop)
+        try:
+            with ctx.Pool(workers) as pool:
+                pending = pool.map_async(_worker, range(workers))
+                while not pending.ready():
+                    pending.wait(0.2)
+                    bar.update(counter.value, 0)
+                outs = pending.get()
+        finally:
+            _SHARED.clear()
+        for done, cases, timings, shrunk in outs:
+            result.cases += done
+            result.timings.update(timings)
+            for doc, sh in zip(cases, shrunk):
+                case = Case.from_json(doc)
+                diffs = compare(case.port, case.oracle, mode)
+                result.found.append(Found(case, None, signature(diffs), sh))
+        if not keep_going:
+            result.found = result.found[:1]
+    if failures_dir is not None:
+        for f in result.found:
+            f.path = write_case(f.case, failures_dir)
+    result.elapsed = time.monotonic() - start
+    bar.close(result.cases, len(result.found))
+    return result
+
+
+def default_workers() -> int:
+    return os.cpu_count() or 1
