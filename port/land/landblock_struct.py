@@ -34,6 +34,14 @@ WATER_DEPTH_PARTIAL_WATER = 0.449999988079071044921875
 WATER_DEPTH_DRY = 0.100000001490116119384765625
 
 
+@anchor(None, "LandblockStruct.cs:ConstructPolygons", note="the split test `splitDir * 2.3283064e-10 < 0.5f`")
+def split_cuts_se_to_nw(split_dir: int) -> bool:
+    """ConstructPolygons' branch test, named so its boundary can be tested: no land cell's hash
+    comes within 440 of 2^31 (the nearest is cell (657, 1857) at 2^31 + 440), so the double
+    rounding that lets 2^31..2^31+33 through is invisible in the world, but pinned anyway."""
+    return split_dir * SPLIT_SCALE < 0.5  # uint * double literal, compared in double
+
+
 class LandblockStruct:
     """The terrain mesh of one landblock: 81 vertices, 128 triangles, 64 LandCells."""
 
@@ -169,7 +177,7 @@ class LandblockStruct:
 
                         lcell = self.land_cells[cell_idx]
 
-                        if split_dir * SPLIT_SCALE < 0.5:  # uint * double, in double
+                        if split_cuts_se_to_nw(split_dir):
                             #  2    1---0
                             #  | \   \  |
                             #  |  \   \ |
