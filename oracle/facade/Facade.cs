@@ -1,0 +1,553 @@
+// acconform oracle facade -- MIT licensed, part of acconform (not ACE code).
+//
+// Runs one acconform scene through ACE's physics in a single call: it takes the scene packed by
+// acconform/oracle/pack.py, builds ACE's objects with ACE's own public API, runs the transition
+// as PhysicsObj.transition does, and returns the outcome packed for pack.unpack_outcome. It is
+// compiled on the user's machine against the user's ACE assemblies when the oracle loads, and
+// cached outside the repository. It touches only members listed in oracle/members.py, which the
+// oracle checks exist before compiling this file.
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Numerics;
+using System.Reflection;
+using System.Runtime.Serialization;
+using System.Text;
+
+using ACE.DatLoader.FileTypes;
+using LandblockId = ACE.Entity.LandblockId;
+using GfxObj = ACE.Server.Physics.Collision.GfxObj;
+using Polygon = ACE.Server.Physics.Polygon;
+using Sphere = ACE.Server.Physics.Sphere;
+using BSPNode = ACE.Server.Physics.BSP.BSPNode;
+using BSPLeaf = ACE.Server.Physics.BSP.BSPLeaf;
+using ACE.Entity.Enum;
+using ACE.Server.Physics;
+using ACE.Server.Physics.Animation;
+using ACE.Server.Physics.BSP;
+using ACE.Server.Physics.Collision;
+using ACE.Server.Physics.Common;
+using ACE.Server.Physics.Entity;
+using ACE.Server.Physics.Managers;
+using ACE.Server.Physics.Util;
+
+namespace Acconform.Oracle
+{
+    public static class Facade
+    {
+        public const int PackVersion = 1;
+        public const uint MoverId = 0x50000001;
+
+        /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
+        /// A landblock's cells get the scene's shadow objects, which are removed after each scene.</summary>
+        public static bool CacheLandblocks = true;
+        public const int CacheLimit = 2048;
+        static readonly Dictionary<string, ACE.Server.Physics.Common.Landblock> landblockCache =
+            new Dictionary<string, ACE.Server.Physics.Common.Landblock>();
+        static readonly List<PhysicsObj> sceneStatics = new List<PhysicsObj>();
+
+        static readonly List<Tuple<int, int>> tableUsed = new List<Tuple<int, int>>();
+        static bool tableCleared;
+        static byte[] lastTableBytes;
+        static string lastTableKey;
+        static readonly Dictionary<string, Setup> setupCache = new Dictionary<string, Setup>();
+
+        static FieldInfo lbmTable;
+        static FieldInfo serverLbPhysics;
+        static FieldInfo serverLbId;
+
+        /// <summary>Run one packed scene; returns the packed outcome.</summary>
+        public static byte[] Run(byte[] scene)
+        {
+            var outcome = new MemoryStream(256);
+            var w = new BinaryWriter(outcome);
+            double fvpMicros = 0;
+            var total = Stopwatch.StartNew();
+            try
+            {
+                var r = new BinaryReader(new MemoryStream(scene));
+                var mover = BuildScene(r);
+                var ok = RunTransition(mover.Item1, mover.Item2, mover.Item3, out var trans, out fvpMicros);
+                WriteOutcome(w, ok, trans, mover.Item1, fvpMicros);
+                RemoveStatics();
+                w.Write(total.Elapsed.TotalMilliseconds * 1000.0);
+            }
+            catch (Exception e)
+            {
+                while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
+                outcome.SetLength(0);
+                w.Write((byte)0xEE);
+                var msg = Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
+                w.Write(msg.Length);
+                w.Write(msg);
+                w.Write(fvpMicros);
+                try { RemoveStatics(); }
+                catch (Exception) { landblockCache.Clear(); sceneStatics.Clear(); }
+                w.Write(total.Elapsed.TotalMilliseconds * 1000.0);
+            }
+            w.Flush();
+            return outcome.ToArray();
+        }
+
+        public static string RunBase64(string scene)
+        {
+            return Convert.ToBase64String(Run(Convert.FromBase64String(scene)));
+        }
+
+        /// <summary>Several scenes in one call: (int count, then per scene int length + bytes) in,
+        /// per outcome (int length + bytes) out.</summary>
+        public static string RunBatchBase64(string scenes)
+        {
+            var r = new BinaryReader(new MemoryStream(Convert.FromBase64String(scenes)));
+            var ms = new MemoryStream();
+            var w = new BinaryWriter(ms);
+            var n = r.ReadInt32();
+            for (var i = 0; i < n; i++)
+            {
+                var one = Run(r.ReadBytes(r.ReadInt32()));
+                w.Write(one.Length);
+                w.Write(one);
+            }
+            w.Flush();
+            return Convert.ToBase64String(ms.ToArray());
+        }
+
+        public static void ClearCache()
+        {
+            serverLandblocks.Clear();
+            landblockCache.Clear();
+            setupCache.Clear();
+        }
+
+        static void RemoveStatics()
+        {
+            // leave cached landblocks as they were built: take this scene's shadow objects out again
+            foreach (var obj in sceneStatics)
+                obj.remove_shadows_from_cells();
+            sceneStatics.Clear();
+        }
+
+        // ------------------------------------------------------------------ global state
+        public static void Reset(bool server)
+        {
+            var eng = new PhysicsEngine(new ObjectMaint(), new SmartBox());  // sets PhysicsEngine.Instance
+            eng.Server = true;  // landblocks are built in server mode (LandblockStruct.ConstructUVs reads DATs)
+            if (!LScape.Landblocks.IsEmpty) LScape.Landblocks.Clear();
+            if (!AdjustCell.AdjustCells.IsEmpty) AdjustCell.AdjustCells.Clear();
+            if (VertexCache.Vertices.Count > 0) VertexCache.Vertices.Clear();
+            if (PolygonCache.Polygons.Count > 0) PolygonCache.Polygons.Clear();
+            if (BSPCache.BSPTrees.Count > 0) BSPCache.BSPTrees.Clear();
+            if (!ServerObjectManager.ServerObjects.IsEmpty) ServerObjectManager.ServerObjects.Clear();
+            var t = LandblockTable();
+            if (!tableCleared)
+            {
+                Array.Clear(t, 0, t.Length);  // first scene: whatever the process put there before
+                tableCleared = true;
+            }
+            foreach (var xy in tableUsed) t[xy.Item1, xy.Item2] = null;
+            tableUsed.Clear();
+            ACE.Server.Physics.Common.Landblock.UseSceneFiles = false;
+        }
+
+        static ACE.Server.Entity.Landblock[,] table2d;
+
+        static ACE.Server.Entity.Landblock[,] LandblockTable()
+        {
+            // LandblockManager's private static readonly landblocks[255, 255]: the same array for the process
+            if (table2d == null)
+            {
+                lbmTable = typeof(ACE.Server.Managers.LandblockManager).GetField("landblocks", BindingFlags.NonPublic | BindingFlags.Static);
+                table2d = (ACE.Server.Entity.Landblock[,])lbmTable.GetValue(null);
+            }
+            return table2d;
+        }
+
+        static readonly Dictionary<ACE.Server.Physics.Common.Landblock, ACE.Server.Entity.Landblock> serverLandblocks =
+            new Dictionary<ACE.Server.Physics.Common.Landblock, ACE.Server.Entity.Landblock>();
+
+        static void RegisterServerLandblock(uint landblockId, ACE.Server.Physics.Common.Landblock physics)
+        {
+            var id = new LandblockId(landblockId);
+            ACE.Server.Entity.Landblock lb;
+            if (!serverLandblocks.TryGetValue(physics, out lb))
+            {
+                lb = MakeServerLandblock(id, physics);
+                if (CacheLandblocks)
+                {
+                    if (serverLandblocks.Count >= CacheLimit) serverLandblocks.Clear();
+                    serverLandblocks[physics] = lb;
+                }
+            }
+            LandblockTable()[id.LandblockX, id.LandblockY] = lb;
+            tableUsed.Add(Tuple.Create((int)id.LandblockX, (int)id.LandblockY));
+        }
+
+        static ACE.Server.Entity.Landblock MakeServerLandblock(LandblockId id, ACE.Server.Physics.Common.Landblock physics)
+        {
+            // What LandblockManager.GetLandblock would hold for a loaded landblock: a server Landblock
+            // whose PhysicsLandblock is this one. Built without its DAT-reading constructor.
+            var t = typeof(ACE.Server.Entity.Landblock);
+            if (serverLbPhysics == null)
+            {
+                serverLbPhysics = t.GetField("<PhysicsLandblock>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance);
+                serverLbId = t.GetField("<Id>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance);
+            }
+            var lb = (ACE.Server.Entity.Landblock)FormatterServices.GetUninitializedObject(t);
+            serverLbPhysics.SetValue(lb, physics);
+            if (serverLbId != null) serverLbId.SetValue(lb, id);
+            return lb;
+        }
+
+        // ------------------------------------------------------------------ scene
+        static Vector3 V3(BinaryReader r) { return new Vector3(r.ReadSingle(), r.ReadSingle(), r.ReadSingle()); }
+        static Quaternion Q(BinaryReader r)
+        {
+            var w = r.ReadSingle(); var x = r.ReadSingle(); var y = r.ReadSingle(); var z = r.ReadSingle();
+            return new Quaternion(x, y, z, w);
+        }
+        static ACE.Server.Physics.Common.Position Pos(BinaryReader r)
+        {
+            var cell = r.ReadUInt32();
+            var origin = V3(r);
+            var q = Q(r);
+            return new ACE.Server.Physics.Common.Position(cell, new AFrame(origin, q));
+        }
+
+        static Tuple<PhysicsObj, ACE.Server.Physics.Common.Position, ACE.Server.Physics.Common.Position> BuildScene(BinaryReader r)
+        {
+            if (r.ReadInt32() != PackVersion) throw new InvalidDataException("acconform facade: pack version mismatch");
+            var server = r.ReadByte() != 0;
+            Reset(server);
+
+            var table = ReadHeightTable(r);
+            LandDefs.LandHeightTable = table;
+
+            var nlb = r.ReadInt32();
+            var built = new List<ACE.Server.Physics.Common.Landblock>();
+            string tableKey = null;
+            for (var i = 0; i < nlb; i++)
+            {
+                var len = r.ReadInt32();
+                var bytes = r.ReadBytes(len);
+                ACE.Server.Physics.Common.Landblock lb = null;
+                string key = null;
+                if (CacheLandblocks)
+                {
+                    if (tableKey == null) tableKey = lastTableKey;
+                    key = Convert.ToBase64String(bytes) + tableKey;
+                    landblockCache.TryGetValue(key, out lb);
+                }
+                if (lb == null)
+                {
+                    var clb = new CellLandblock();
+                    clb.Unpack(new BinaryReader(new MemoryStream(bytes)));
+                    lb = new ACE.Server.Physics.Common.Landblock(clb);
+                    built.Add(lb);
+                    if (key != null)
+                    {
+                        if (landblockCache.Count >= CacheLimit) landblockCache.Clear();
+                        landblockCache[key] = lb;
+                    }
+                }
+                var id = lb.ID | 0xFFFF;
+                LScape.Landblocks[id] = lb;  // registered before PostInit, as LScape.get_landblock does
+                if (server) RegisterServerLandblock(id, lb);
+            }
+            foreach (var lb in built) lb.PostInit();
+            if (!server)
+                PhysicsEngine.Instance.Server = false;
+
+            var nobj = r.ReadInt32();
+            for (var i = 0; i < nobj; i++)
+                BuildStatic(r);
+
+            return BuildMover(r);
+        }
+
+        static List<float> lastTableList;
+        static readonly Dictionary<string, int> tableIds = new Dictionary<string, int>();
+
+        /// <summary>The scene's land height table; the same List as the last scene's when the values are
+        /// bit-identical (ACE only reads it), and a small id naming its bits for the landblock cache key.</summary>
+        static List<float> ReadHeightTable(BinaryReader r)
+        {
+            var bytes = r.ReadBytes(256 * 4);
+            if (lastTableBytes != null && BytesEqual(bytes, lastTableBytes))
+                return lastTableList;
+            var table = new List<float>(256);
+            for (var i = 0; i < 256; i++) table.Add(BitConverter.ToSingle(bytes, i * 4));
+            var b64 = Convert.ToBase64String(bytes);
+            int id;
+            if (!tableIds.TryGetValue(b64, out id))
+            {
+                if (tableIds.Count >= CacheLimit) { tableIds.Clear(); landblockCache.Clear(); }
+                id = tableIds.Count;
+                tableIds[b64] = id;
+            }
+            lastTableBytes = bytes;
+            lastTableList = table;
+            lastTableKey = "|" + id.ToString();
+            return table;
+        }
+
+        static bool BytesEqual(byte[] a, byte[] b)
+        {
+            if (a.Length != b.Length) return false;
+            for (var i = 0; i < a.Length; i++) if (a[i] != b[i]) return false;
+            return true;
+        }
+
+        static Setup MakeSetup(List<Vector4> spheres, List<Vector3> cylLow, List<Vector2> cylRH, float height, float radius,
+                               float stepUp, float stepDown, Vector4 sorting)
+        {
+            var ms = new MemoryStream();
+            var w = new BinaryWriter(ms);
+            w.Write(0x02000001u); w.Write(0u); w.Write(0u);       // Id, Flags, NumParts
+            w.Write(0); w.Write(0); w.Write(0);                    // HoldingLocations, ConnectionPoints, PlacementFrames
+            w.Write(cylLow.Count);
+            for (var i = 0; i < cylLow.Count; i++)
+            {
+                w.Write(cylLow[i].X); w.Write(cylLow[i].Y); w.Write(cylLow[i].Z);
+                w.Write(cylRH[i].X); w.Write(cylRH[i].Y);          // Radius, Height (DAT order)
+            }
+            w.Write(spheres.Count);
+            foreach (var s in spheres) { w.Write(s.X); w.Write(s.Y); w.Write(s.Z); w.Write(s.W); }
+            w.Write(height); w.Write(radius); w.Write(stepUp); w.Write(stepDown);
+            for (var k = 0; k < 2; k++) { w.Write(sorting.X); w.Write(sorting.Y); w.Write(sorting.Z); w.Write(sorting.W); }
+            w.Write(0);                                            // Lights
+            for (var k = 0; k < 5; k++) w.Write(0u);               // default anim/script/mtable/stable/phstable
+            w.Flush();
+            string key = null;
+            Setup setup;
+            if (CacheLandblocks)
+            {
+                key = Convert.ToBase64String(ms.GetBuffer(), 0, (int)ms.Length);
+                if (setupCache.TryGetValue(key, out setup)) return setup;
+            }
+            ms.Position = 0;
+            var model = new SetupModel();
+            model.Unpack(new BinaryReader(ms));
+            setup = new Setup(model);
+            if (key != null)
+            {
+                if (setupCache.Count >= CacheLimit) setupCache.Clear();
+                setupCache[key] = setup;
+            }
+            return setup;
+        }
+
+        static PartArray MakePartArray(PhysicsObj owner, Setup setup)
+        {
+            var pa = new PartArray();
+            pa.Owner = owner;
+            pa.Setup = setup;
+            pa.NumParts = 0;
+            pa.Parts = new List<PhysicsPart>();
+            return pa;
+        }
+
+        static Polygon ReadPolygon(BinaryReader r, int idx)
+        {
+            var sides = (CullMode)r.ReadInt32();
+            var n = r.ReadInt32();
+            var poly = new Polygon(idx, n, sides);
+            for (var k = 0; k < n; k++)
+            {
+                poly.Vertices[k] = new Vertex(V3(r));
+                poly.VertexIDs[k] = (short)k;
+            }
+            poly.make_plane();
+            return poly;
+        }
+
+        static Sphere ReadSphere(BinaryReader r) { var c = V3(r); return new Sphere(c, r.ReadSingle()); }
+
+        static BSPNode ReadNode(BinaryReader r, List<Polygon> polys)
+        {
+            var kind = r.ReadByte();
+            if (kind == 0)
+            {
+                var leaf = new BSPLeaf(BSPTreeType.Physics);
+                leaf.Solid = r.ReadByte() != 0;
+                leaf.Sphere = ReadSphere(r);
+                var n = r.ReadInt32();
+                leaf.NumPolys = n;
+                leaf.Polygons = new List<Polygon>(n);
+                for (var k = 0; k < n; k++) leaf.Polygons.Add(polys[r.ReadInt32()]);
+                return leaf;
+            }
+            var node = new BSPNode(BSPTreeType.Physics);
+            var normal = V3(r);
+            node.SplittingPlane = new Plane(normal, r.ReadSingle());
+            node.Sphere = ReadSphere(r);
+            node.Polygons = new List<Polygon>();
+            node.PosNode = ReadNode(r, polys);
+            node.NegNode = ReadNode(r, polys);
+            return node;
+        }
+
+        static void BuildStatic(BinaryReader r)
+        {
+            var id = r.ReadUInt32();
+            var pos = Pos(r);
+            var state = (PhysicsState)r.ReadUInt32();
+            var scale = r.ReadSingle();
+            var kind = r.ReadByte();
+
+            var obj = new PhysicsObj();
+            obj.ID = id;
+            var spheres = new List<Vector4>();
+            var cylLow = new List<Vector3>();
+            var cylRH = new List<Vector2>();
+            GfxObj gfx = null;
+            Vector4 bound;
+            if (kind == 0)
+            {
+                var c = V3(r); var rad = r.ReadSingle();
+                spheres.Add(new Vector4(c, rad));
+                bound = new Vector4(c, rad);
+            }
+            else if (kind == 1)
+            {
+                var low = V3(r); var rad = r.ReadSingle(); var h = r.ReadSingle();
+                cylLow.Add(low); cylRH.Add(new Vector2(rad, h));
+                bound = new Vector4(low + new Vector3(0, 0, h / 2), rad + h / 2);
+            }
+            else
+            {
+                var npoly = r.ReadInt32();
+                var polys = new List<Polygon>(npoly);
+                for (var k = 0; k < npoly; k++) polys.Add(ReadPolygon(r, k));
+                var root = ReadNode(r, polys);
+                var sphere = ReadSphere(r);
+                gfx = new GfxObj();
+                gfx.PhysicsBSP = new BSPTree(root);
+                gfx.PhysicsSphere = sphere;
+                bound = new Vector4(sphere.Center, sphere.Radius);
+            }
+            var setup = MakeSetup(spheres, cylLow, cylRH, 0, 0, 0, 0, bound);
+            var pa = MakePartArray(obj, setup);
+            obj.PartArray = pa;
+            if (gfx != null)
+            {
+                var part = new PhysicsPart();
+                part.GfxObj = gfx;
+                part.GfxObjScale = Vector3.One;
+                part.PhysicsObj = obj;
+                part.Pos = new ACE.Server.Physics.Common.Position(pos);
+                pa.Parts.Add(part);
+                pa.NumParts = 1;
+            }
+            obj.State = state;
+            obj.Position = new ACE.Server.Physics.Common.Position(pos);
+            obj.SetScaleStatic(scale);
+            sceneStatics.Add(obj);
+
+            // registered as a shadow object in each cell listed by the scene packer
+            var ncells = r.ReadInt32();
+            for (var k = 0; k < ncells; k++)
+            {
+                var cell = LScape.get_landcell(r.ReadUInt32());
+                if (k == 0) obj.CurCell = cell;
+                obj.add_shadows_to_cell(cell);
+            }
+        }
+
+        static Tuple<PhysicsObj, ACE.Server.Physics.Common.Position, ACE.Server.Physics.Common.Position> BuildMover(BinaryReader r)
+        {
+            var n = r.ReadInt32();
+            var spheres = new List<Vector4>(n);
+            for (var k = 0; k < n; k++) { var c = V3(r); spheres.Add(new Vector4(c, r.ReadSingle())); }
+            var height = r.ReadSingle();
+            var radius = r.ReadSingle();
+            var stepUp = r.ReadSingle();
+            var stepDown = r.ReadSingle();
+            var scale = r.ReadSingle();
+            var state = (PhysicsState)r.ReadUInt32();
+            var ts = (TransientStateFlags)r.ReadUInt32();
+            var velocity = V3(r);
+            var hasContact = r.ReadByte() != 0;
+            var cpCell = r.ReadUInt32();
+            var cpNormal = V3(r);
+            var cpD = r.ReadSingle();
+            var hasSliding = r.ReadByte() != 0;
+            var sliding = V3(r);
+            var begin = Pos(r);
+            var end = Pos(r);
+
+            var obj = new PhysicsObj();
+            obj.ID = MoverId;
+            var setup = MakeSetup(spheres, new List<Vector3>(), new List<Vector2>(), height, radius, stepUp, stepDown, spheres[0]);
+            obj.PartArray = MakePartArray(obj, setup);
+            obj.SetScaleStatic(scale);
+            obj.State = state;
+            obj.TransientState = ts;
+            obj.Velocity = velocity;
+            if (hasContact)
+            {
+                obj.ContactPlane = new Plane(cpNormal, cpD);
+                obj.ContactPlaneCellID = cpCell;
+            }
+            if (hasSliding) obj.SlidingNormal = sliding;
+            obj.Position = new ACE.Server.Physics.Common.Position(begin);
+            obj.CurCell = LScape.get_landcell(begin.ObjCellID);
+            return Tuple.Create(obj, new ACE.Server.Physics.Common.Position(begin), end);
+        }
+
+        // ------------------------------------------------------------------ transition
+        static bool RunTransition(PhysicsObj obj, ACE.Server.Physics.Common.Position oldPos, ACE.Server.Physics.Common.Position newPos,
+                                  out Transition trans, out double fvpMicros)
+        {
+            // PhysicsObj.transition(oldPos, newPos, adminMove: false), step by step, keeping the Transition.
+            trans = Transition.MakeTransition();
+            var info = obj.get_object_info(trans, false);
+            trans.InitObject(obj, info.State);
+            if (obj.PartArray == null || obj.PartArray.GetNumSphere() == 0)
+                trans.InitSphere(1, PhysicsGlobals.DummySphere, 1.0f);
+            else
+                trans.InitSphere(obj.PartArray.GetNumSphere(), obj.PartArray.GetSphere(), obj.Scale);
+            trans.InitPath(obj.CurCell, oldPos, newPos);
+            var ts = obj.TransientState;
+            if ((ts & TransientStateFlags.StationaryStuck) != 0) trans.CollisionInfo.FramesStationaryFall = 3;
+            else if ((ts & TransientStateFlags.StationaryStop) != 0) trans.CollisionInfo.FramesStationaryFall = 2;
+            else if ((ts & TransientStateFlags.StationaryFall) != 0) trans.CollisionInfo.FramesStationaryFall = 1;
+            var sw = Stopwatch.StartNew();
+            var ok = trans.FindValidPosition();
+            sw.Stop();
+            fvpMicros = sw.Elapsed.TotalMilliseconds * 1000.0;
+            trans.CleanupTransition();
+            return ok;
+        }
+
+        // ------------------------------------------------------------------ outcome
+        static void W3(BinaryWriter w, Vector3 v) { w.Write(v.X); w.Write(v.Y); w.Write(v.Z); }
+
+        static void WriteOutcome(BinaryWriter w, bool ok, Transition trans, PhysicsObj obj, double fvpMicros)
+        {
+            var sp = trans.SpherePath;
+            var ci = trans.CollisionInfo;
+            w.Write((byte)1);
+            w.Write((byte)(ok ? 1 : 0));
+            w.Write(sp.CurCell != null ? sp.CurCell.ID : 0u);
+            W3(w, sp.CurPos.Frame.Origin);
+            var q = sp.CurPos.Frame.Orientation;
+            w.Write(q.W); w.Write(q.X); w.Write(q.Y); w.Write(q.Z);
+            w.Write((uint)trans.ObjectInfo.State);
+            w.Write((byte)(ci.ContactPlaneValid ? 1 : 0)); w.Write(ci.ContactPlaneCellID);
+            w.Write((byte)(ci.ContactPlaneIsWater ? 1 : 0)); W3(w, ci.ContactPlane.Normal); w.Write(ci.ContactPlane.D);
+            w.Write((byte)(ci.LastKnownContactPlaneValid ? 1 : 0)); w.Write(ci.LastKnownContactPlaneCellID);
+            w.Write((byte)(ci.LastKnownContactPlaneIsWater ? 1 : 0)); W3(w, ci.LastKnownContactPlane.Normal); w.Write(ci.LastKnownContactPlane.D);
+            w.Write((byte)(ci.CollisionNormalValid ? 1 : 0)); W3(w, ci.CollisionNormal);
+            w.Write((byte)(ci.SlidingNormalValid ? 1 : 0)); W3(w, ci.SlidingNormal);
+            w.Write((byte)(ci.CollidedWithEnvironment ? 1 : 0));
+            w.Write(ci.FramesStationaryFall);
+            W3(w, obj.Velocity);
+            w.Write(sp.CheckCell != null ? sp.CheckCell.ID : 0u);
+            w.Write((byte)(sp.Walkable != null ? 1 : 0));
+            w.Write((byte)(sp.StepUp ? 1 : 0));
+            w.Write((byte)(sp.NegPolyHit ? 1 : 0));
+            w.Write(fvpMicros);
+        }
+    }
+}

@@ -1,0 +1,131 @@
+"""The live oracle: ACE's own physics, run on a scene through pythonnet.
+
+`LiveOracle(assembly, runtime=None)` finds and loads ACE (oracle/config.py, oracle/runtime.py),
+then runs each scene in one call into acconform's C# facade (oracle/facade/Facade.cs, compiled
+against the user's ACE on first use), or, when no compiler is available, through the
+pure-pythonnet path (oracle/direct.py), which builds the same objects the same way. Every scene
+starts from fresh ACE global state; an exception ACE raises is the verdict `Outcome(error=...)`.
+"""
+
+from __future__ import annotations
+
+import base64
+import os
+import struct
+
+from .. import __version__
+from ..case import Versions
+from ..errors import OracleError
+from ..outcome import Outcome
+from ..scene import Scene
+from . import config
+from . import runtime as _rt
+from .pack import pack_scene, unpack_outcome
+
+PATHS = ("auto", "facade", "direct")
+ENV_PATH = "ACCONFORM_ORACLE_PATH"
+
+
+class LiveOracle:
+    name = "live"
+
+    def __init__(self, assembly=None, runtime: str | None = None, path: str | None = None):
+        location = config.resolve(assembly, runtime)
+        if location is None:
+            from ..errors import OracleUnavailable
+
+            raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {config.HOW_TO_SET}")
+        self.location = location
+        self.ace = _load(location)
+        self.versions = Versions(acconform=__version__, ace=self.ace.ace_version, runtime=self.ace.runtime_version)
+        want = path or os.environ.get(ENV_PATH) or "auto"
+        if want not in PATHS:
+            raise OracleError(f"unknown oracle path {want!r} (from {'path' if path else ENV_PATH}); known: {', '.join(PATHS)}")
+        self._facade = None
+        self.facade_status = "not tried (direct path requested)"
+        if want in ("auto", "facade"):
+            self._facade, self.facade_status = _load_facade(self.ace)
+            if self._facade is None and want == "facade":
+                from ..errors import OracleUnavailable
+
+                raise OracleUnavailable(f"the C# facade is unavailable: {self.facade_status}")
+        if self._facade is None:
+            from . import direct
+
+            self._direct = direct.DirectRunner()
+        self.path = "facade" if self._facade is not None else "direct"
+        self.last_ace_micros = 0.0  # ACE's in-runtime FindValidPosition time for the last scene
+        self.last_case_micros = 0.0  # the whole scene inside .NET (build, transition, read back)
+
+    def run(self, scene: Scene) -> Outcome:
+        return self.run_timed(scene)[0]
+
+    def run_timed(self, scene: Scene) -> tuple[Outcome, float]:
+        """(Outcome, ACE's in-runtime FindValidPosition time in microseconds)."""
+        if self._facade is not None:
+            data = pack_scene(scene)
+            try:
+                reply = self._facade.RunBase64(base64.b64encode(data).decode("ascii"))
+            except Exception as e:  # the facade catches ACE's exceptions itself; this is the bridge failing
+                raise OracleError(f"the oracle facade failed outside ACE: {type(e).__name__}: {e}") from None
+            outcome, us, case_us = unpack_outcome(base64.b64decode(str(reply)))
+        else:
+            outcome, us, case_us = self._direct.run(scene)
+        self.last_ace_micros, self.last_case_micros = us, case_us
+        return outcome, us
+
+    def run_many(self, scenes) -> list[tuple[Outcome, float]]:
+        """Several scenes in one crossing of the .NET boundary (the facade's batch call); each scene
+        still starts from fresh ACE state. Returns (Outcome, ACE's FindValidPosition microseconds)."""
+        scenes = list(scenes)
+        if self._facade is None:
+            return [self.run_timed(s) for s in scenes]
+        parts = [struct.pack("<i", len(scenes))]
+        for s in scenes:
+            d = pack_scene(s)
+            parts.append(struct.pack("<i", len(d)))
+            parts.append(d)
+        try:
+            reply = self._facade.RunBatchBase64(base64.b64encode(b"".join(parts)).decode("ascii"))
+        except Exception as e:
+            raise OracleError(f"the oracle facade failed outside ACE: {type(e).__name__}: {e}") from None
+        data = base64.b64decode(str(reply))
+        out, pos = [], 0
+        for _ in scenes:
+            (n,) = struct.unpack_from("<i", data, pos)
+            outcome, us, _case = unpack_outcome(data[pos + 4:pos + 4 + n])
+            out.append((outcome, us))
+            pos += 4 + n
+        return out
+
+    def set_landblock_cache(self, enabled: bool) -> None:
+        """Reuse built landblocks across scenes (default on); off rebuilds every landblock per scene."""
+        if self._facade is not None:
+            self._facade.CacheLandblocks = bool(enabled)
+            self._facade.ClearCache()
+        else:
+            self._direct.cache_landblocks = bool(enabled)
+            self._direct.cache.clear()
+
+    def __repr__(self):
+        return f"LiveOracle({str(self.location.assembly)!r}, runtime={self.location.runtime!r}, path={self.path!r})"
+
+
+def _load(location):
+    return _rt.load(location)
+
+
+def _load_facade(ace):
+    from .facade_build import build
+
+    dll, status = build(ace)
+    if dll is None:
+        return None, status
+    try:
+        import clr
+
+        clr.AddReference(str(dll))
+        from Acconform.Oracle import Facade  # type: ignore[import-not-found]
+    except Exception as e:
+        return None, f"cannot load the compiled facade {dll}: {type(e).__name__}: {e}"
+    return Facade, status

@@ -1,0 +1,89 @@
+"""Every ACE type and member the oracle touches, in one table, checked when the oracle loads.
+
+The facade (oracle/facade/Facade.cs) and the pure-pythonnet path (oracle/direct.py) use only
+these. `check_members` looks each type up by full name across the loaded assemblies and each
+member by name (public or not, static or instance), so an ACE build that lacks one fails with
+one message naming the type, the member and the assembly directory, instead of a .NET
+traceback half-way through a scene.
+"""
+
+from __future__ import annotations
+
+from ..errors import OracleUnavailable
+
+# (type full name, members). ".ctor" is a constructor.
+REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("ACE.Server.Physics.PhysicsEngine", (".ctor", "Instance", "Server")),
+    ("ACE.Server.Physics.TransientStateFlags", ("StationaryStuck", "StationaryStop", "StationaryFall")),
+    ("ACE.Server.Physics.PhysicsGlobals", ("DummySphere",)),
+    ("ACE.Server.Physics.Common.ObjectMaint", (".ctor",)),
+    ("ACE.Server.Physics.Common.SmartBox", (".ctor",)),
+    ("ACE.Server.Physics.Common.LScape", ("Landblocks", "get_landcell")),
+    ("ACE.Server.Physics.Common.LandDefs", ("LandHeightTable",)),
+    ("ACE.Server.Physics.Common.Landblock", (".ctor", "UseSceneFiles", "PostInit", "ID")),
+    ("ACE.Server.Physics.Common.ObjCell", ("ID",)),
+    ("ACE.Server.Physics.Common.Position", (".ctor", "ObjCellID", "Frame")),
+    ("ACE.Server.Physics.Util.AdjustCell", ("AdjustCells",)),
+    ("ACE.Server.Physics.Entity.VertexCache", ("Vertices",)),
+    ("ACE.Server.Physics.Entity.PolygonCache", ("Polygons",)),
+    ("ACE.Server.Physics.Entity.BSPCache", ("BSPTrees",)),
+    ("ACE.Server.Physics.Entity.Vertex", (".ctor",)),
+    ("ACE.Server.Physics.Managers.ServerObjectManager", ("ServerObjects",)),
+    # server mode: ACE's LandblockManager table and the server landblock's auto-property
+    ("ACE.Server.Managers.LandblockManager", ("landblocks", "GetLandblock")),
+    ("ACE.Server.Entity.Landblock", ("PhysicsLandblock", "<PhysicsLandblock>k__BackingField")),
+    ("ACE.Entity.LandblockId", (".ctor", "LandblockX", "LandblockY")),
+    ("ACE.Entity.Enum.PhysicsState", ("Static", "HasPhysicsBSP")),
+    ("ACE.Entity.Enum.CullMode", ("Landblock", "Clockwise", "CounterClockwise")),
+    ("ACE.DatLoader.FileTypes.CellLandblock", (".ctor", "Unpack", "Id")),
+    ("ACE.DatLoader.FileTypes.SetupModel", (".ctor", "Unpack")),
+    ("ACE.Server.Physics.Setup", (".ctor",)),
+    ("ACE.Server.Physics.PartArray", (".ctor", "Owner", "Setup", "NumParts", "Parts", "GetNumSphere", "GetSphere")),
+    ("ACE.Server.Physics.PhysicsPart", (".ctor", "GfxObj", "GfxObjScale", "PhysicsObj", "Pos")),
+    ("ACE.Server.Physics.PhysicsObj", (".ctor", "ID", "PartArray", "State", "TransientState", "Velocity", "ContactPlane",
+                                       "ContactPlaneCellID", "SlidingNormal", "Position", "CurCell", "Scale",
+                                       "SetScaleStatic", "add_shadows_to_cell", "remove_shadows_from_cells",
+                                       "get_object_info")),
+    ("ACE.Server.Physics.Polygon", (".ctor", "Vertices", "VertexIDs", "make_plane")),
+    ("ACE.Server.Physics.Sphere", (".ctor", "Center", "Radius")),
+    ("ACE.Server.Physics.BSP.BSPNode", (".ctor", "SplittingPlane", "Sphere", "NumPolys", "Polygons", "PosNode", "NegNode")),
+    ("ACE.Server.Physics.BSP.BSPLeaf", (".ctor", "Solid")),
+    ("ACE.Server.Physics.BSP.BSPTree", (".ctor",)),
+    ("ACE.Server.Physics.BSP.BSPTreeType", ("Physics",)),
+    ("ACE.Server.Physics.Collision.GfxObj", (".ctor", "PhysicsBSP", "PhysicsSphere")),
+    ("ACE.Server.Physics.Animation.AFrame", (".ctor", "Origin", "Orientation")),
+    ("ACE.Server.Physics.Animation.Transition", ("MakeTransition", "InitObject", "InitSphere", "InitPath",
+                                                 "FindValidPosition", "CleanupTransition", "SpherePath",
+                                                 "CollisionInfo", "ObjectInfo")),
+    ("ACE.Server.Physics.Animation.ObjectInfo", ("State",)),
+    ("ACE.Server.Physics.Animation.SpherePath", ("CurCell", "CurPos", "CheckCell", "Walkable", "StepUp", "NegPolyHit")),
+    ("ACE.Server.Physics.Collision.CollisionInfo", (
+        "ContactPlaneValid", "ContactPlane", "ContactPlaneCellID", "ContactPlaneIsWater",
+        "LastKnownContactPlaneValid", "LastKnownContactPlane", "LastKnownContactPlaneCellID",
+        "LastKnownContactPlaneIsWater", "CollisionNormalValid", "CollisionNormal", "SlidingNormalValid",
+        "SlidingNormal", "CollidedWithEnvironment", "FramesStationaryFall")),
+)
+
+
+def check_members(find_type, has_member, where: str, required=REQUIRED) -> None:
+    """Raise OracleUnavailable naming every type or member `required` lists that is absent.
+
+    `find_type(full_name)` returns a type handle or None; `has_member(type, name)` says whether the
+    member exists. Both are supplied by the runtime (oracle/runtime.py), so this logic is tested
+    without .NET.
+    """
+    missing = []
+    for type_name, members in required:
+        t = find_type(type_name)
+        if t is None:
+            missing.append(f"type {type_name}")
+            continue
+        for m in members:
+            if not has_member(t, m):
+                missing.append(f"{type_name}.{m}")
+    if missing:
+        shown = ", ".join(missing[:8]) + (f" (and {len(missing) - 8} more)" if len(missing) > 8 else "")
+        raise OracleUnavailable(
+            f"the ACE build at {where} lacks what the oracle needs: {shown}. The oracle runs ACE's "
+            "physics as of commit 7b47913; point --ace / ACE_ASSEMBLY at an ACE build that has these "
+            "members (see docs/oracle.md)")

@@ -1,0 +1,158 @@
+"""Loading a .NET runtime and ACE's assemblies through pythonnet, once per process.
+
+This module and oracle/direct.py are the only places that import pythonnet (`clr`). Every
+failure here becomes one OracleUnavailable naming what was looked for, where, and what to set.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import OracleUnavailable
+from .config import HOW_TO_SET, AceLocation
+from .members import REQUIRED, check_members
+
+ACE_ASSEMBLIES = ("ACE.Common", "ACE.Entity", "ACE.DatLoader", "ACE.Server")
+PIP_HINT = "install the optional extra: pip install 'acconform[oracle]' (pythonnet >= 3.0.3)"
+
+_state: dict = {}  # "runtime" -> name, "dir" -> Path once loaded
+
+
+@dataclass(frozen=True, slots=True)
+class LoadedAce:
+    location: AceLocation
+    ace_version: str  # "ACE.Server <assembly version> sha256:<12 hex>"
+    runtime_version: str  # "mono 6.8.0.105" / "coreclr .NET 10.0.0"
+    assembly_hash: str  # sha256 over the ACE assemblies (the facade cache key)
+
+
+def _sha256(paths) -> str:
+    h = hashlib.sha256()
+    for p in paths:
+        h.update(p.name.encode())
+        h.update(p.read_bytes())
+    return h.hexdigest()
+
+
+def load(location: AceLocation) -> LoadedAce:
+    """Start the runtime (once), reference ACE's assemblies and check every member the oracle uses."""
+    prev = _state.get("runtime")
+    if prev is not None:
+        if prev != location.runtime:
+            raise OracleUnavailable(f"this process already runs .NET on {prev}; it cannot also load {location.runtime} "
+                                    f"for {location.assembly} (pythonnet loads one runtime per process)")
+        if _state["dir"] != location.directory:
+            raise OracleUnavailable(f"this process already loaded ACE from {_state['dir']}; it cannot also load "
+                                    f"{location.directory} (one ACE build per process)")
+    else:
+        _start_runtime(location)
+        _reference_assemblies(location)
+        _state["runtime"] = location.runtime
+        _state["dir"] = location.directory
+    check_members(find_type, has_member, str(location.directory))
+    files = [location.directory / f"{a}.dll" for a in ACE_ASSEMBLIES]
+    return LoadedAce(location, _ace_version(location), _runtime_version(location.runtime), _sha256(files))
+
+
+def _start_runtime(location: AceLocation) -> None:
+    try:
+        import pythonnet
+    except ImportError:
+        raise OracleUnavailable(f"the live oracle needs pythonnet: {PIP_HINT}") from None
+    try:
+        if location.runtime == "coreclr":
+            pythonnet.load("coreclr", runtime_config=str(location.runtime_config))
+        else:
+            pythonnet.load("mono")
+    except Exception as e:  # pythonnet raises RuntimeError / clr_loader errors of several kinds
+        hint = ("install mono (e.g. apt-get install mono-runtime) or use --runtime coreclr with a .NET build"
+                if location.runtime == "mono" else
+                f"install the .NET runtime named in {location.runtime_config} or use --runtime mono with a mono build")
+        raise OracleUnavailable(f"cannot start the {location.runtime} runtime for {location.assembly} "
+                                f"({location.runtime_source}): {type(e).__name__}: {e}; {hint}") from None
+
+
+def _reference_assemblies(location: AceLocation) -> None:
+    import clr  # noqa: F401  (pythonnet, after load)
+
+    d = str(location.directory)
+    if d not in sys.path:
+        sys.path.append(d)
+    for name in ACE_ASSEMBLIES:
+        f = location.directory / f"{name}.dll"
+        if not f.is_file():
+            raise OracleUnavailable(f"{name}.dll is missing beside {location.assembly}; the oracle needs "
+                                    f"{', '.join(a + '.dll' for a in ACE_ASSEMBLIES)} from one ACE build output; {HOW_TO_SET}")
+        try:
+            clr.AddReference(str(f))
+        except Exception as e:
+            raise OracleUnavailable(f"cannot load {f} on {location.runtime}: {_net_message(e)}; is it built for "
+                                    f"{location.runtime}? ({HOW_TO_SET}, or force --runtime)") from None
+
+
+def _net_message(e: BaseException) -> str:
+    msg = str(e).strip().splitlines()
+    return f"{type(e).__name__}: {msg[0] if msg else ''}"
+
+
+def find_type(full_name: str):
+    """A System.Type by full name across the loaded assemblies, or None."""
+    from System import AppDomain
+
+    for asm in AppDomain.CurrentDomain.GetAssemblies():
+        try:
+            t = asm.GetType(full_name, False)
+        except Exception:
+            t = None
+        if t is not None:
+            return t
+    return None
+
+
+def has_member(t, name: str) -> bool:
+    from System.Reflection import BindingFlags
+
+    flags = BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static | BindingFlags.Instance
+    if name == ".ctor":
+        return len(t.GetConstructors(flags)) > 0
+    return len(t.GetMember(name, flags)) > 0
+
+
+def _ace_version(location: AceLocation) -> str:
+    from System.Reflection import AssemblyName
+
+    try:
+        v = str(AssemblyName.GetAssemblyName(str(location.assembly)).Version)
+    except Exception:
+        v = "?"
+    digest = hashlib.sha256(location.assembly.read_bytes()).hexdigest()[:12]
+    return f"ACE.Server {v} sha256:{digest}"
+
+
+def _runtime_version(runtime: str) -> str:
+    from System import Type
+    from System.Reflection import BindingFlags
+
+    if runtime == "mono":
+        t = Type.GetType("Mono.Runtime")
+        m = t.GetMethod("GetDisplayName", BindingFlags.NonPublic | BindingFlags.Static) if t is not None else None
+        shown = str(m.Invoke(None, None)).split(" ")[0] if m is not None else "?"
+        return f"mono {shown}"
+    from System.Runtime.InteropServices import RuntimeInformation
+
+    return f"coreclr {RuntimeInformation.FrameworkDescription}"
+
+
+def loaded_runtime() -> str | None:
+    return _state.get("runtime")
+
+
+def check_required(required, where: str = "the loaded ACE build") -> None:
+    """Run the member checker on another table (tests use it to prove a missing member fails clearly)."""
+    check_members(find_type, has_member, where, required)
+
+
+__all__ = ["LoadedAce", "load", "find_type", "has_member", "check_required", "REQUIRED", "loaded_runtime"]
