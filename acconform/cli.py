@@ -20,6 +20,10 @@ from .errors import AcconformError
 # name -> (module, one-line help). Modules are imported lazily so --help stays instant.
 COMMANDS: dict[str, tuple[str, str]] = {
     "validate": ("acconform.commands.validate", "check scene, case and record files; exit 2 naming the first bad field"),
+    "check": ("acconform.commands.check", "run a differential campaign, port vs ACE (live or recorded); save shrunk cases"),
+    "repro": ("acconform.commands.repro", "replay a case file on the port (and live ACE) and print the differences"),
+    "show": ("acconform.commands.show", "print a scene, case, record or outcome file readably"),
+    "coverage": ("acconform.commands.coverage", "how often each port branch fires per 1,000 generated scenes"),
 }
 
 

@@ -98,24 +98,38 @@ def step_heights(geometry_steps=()):
     return st.one_of(*opts)
 
 
+AIMS = st.sampled_from(("feature", "feature", "border", "any"))
+AIMS_WITH_OBJECTS = st.sampled_from(("feature", "border", "any", "object", "object"))
+JITTER = st.sampled_from((0, 0, 0, 5, -5, 30, -30, 60))
+BORDER_JITTER = st.sampled_from((0, 0, 20, -20, 45, -45))
+FINE_JITTER = st.sampled_from((0.0, 0.0, 0.5, 1.0))
+# how far before an edge the path starts, in sphere radii: on it, within a step, a few steps
+GAPS = st.one_of(st.sampled_from((0.0, 0.5, 1.0)), sh.f32s(0.0, 1.0), sh.f32s(1.0, 6.0))
+
 PATH_FACTORS = st.one_of(
     sh.f32s(0.05, 1.0),  # a fraction of one step (one step = sphere radius)
+    st.sampled_from((0.0, 1.0, 2.0, 30.0, 31.0, 45.0)),  # standing still; exactly whole steps; past the step cap
     sh.f32s(1.0, 4.0),
     sh.f32s(4.0, 25.0),
 )
+
+
+CENTRED = sh.f32s(-95.9, 95.9)
+WHERE = st.sampled_from(("any", "any", "border", "corner"))
+NEAR_BORDER = st.one_of(sh.f32s(0.0, 3.0), sh.f32s(189.0, 191.99))
 
 
 @st.composite
 def scenes_of(draw, kind: str):
     bx, by = draw(tr.landblock_coords(0x02, 0xFC))
     # start: anywhere in the block, or hugging a border (the neighbour must be defined)
-    where = draw(st.sampled_from(("any", "any", "border", "corner")))
+    where = draw(WHERE)
     if where == "any":
-        lx, ly = draw(sh.f32s(0.0, 191.9)), draw(sh.f32s(0.0, 191.9))
+        lx, ly = to_f32(96.0 + draw(CENTRED)), to_f32(96.0 + draw(CENTRED))
     else:
-        near = st.one_of(sh.f32s(0.0, 3.0), sh.f32s(189.0, 191.99))
+        near = NEAR_BORDER
         lx = draw(near)
-        ly = draw(near) if where == "corner" else draw(sh.f32s(0.0, 191.9))
+        ly = draw(near) if where == "corner" else to_f32(96.0 + draw(CENTRED))
         if draw(st.booleans()):
             lx, ly = ly, lx
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
@@ -137,18 +151,28 @@ def scenes_of(draw, kind: str):
             objects_spec.append(("obstacle", draw(st.one_of(sh.spheres_shapes(), sh.cylsphere_shapes())), 0.0))
 
     # path
-    aim = draw(st.sampled_from(("feature", "border", "any", "object") if objects_spec else ("feature", "border", "any")))
+    aim = draw(AIMS_WITH_OBJECTS if objects_spec else AIMS)
     if aim == "feature" and field.features:
+        # aim at a feature's edge from a short gap before it, so the path crosses it
         f = field.features[draw(st.integers(0, len(field.features) - 1))]
-        tx, ty = _feature_target(f, vx, vy)
-        heading = math.degrees(math.atan2(ty * CELL - gy0, tx * CELL - gx0)) + draw(st.sampled_from((0, 0, 5, -5, 30, -30, 60)))
-    elif aim == "border":
-        dists = {0: BLOCK - lx, 180: lx, 90: BLOCK - ly, 270: ly}
-        heading = min(dists, key=dists.get) + draw(st.sampled_from((0, 0, 20, -20, 45, -45)))
+        tx, ty = _feature_target(f, vx, vy, draw(st.booleans()))
+        tx, ty = tx * CELL, ty * CELL
+        heading = math.degrees(math.atan2(ty - gy0, tx - gx0)) + draw(JITTER)
+        gap = draw(GAPS) * r
+        hr = math.radians(heading)
+        gx0 = min(max(tx - gap * math.cos(hr), (bx - 1) * BLOCK + 1.0), (bx + 2) * BLOCK - 1.0)
+        gy0 = min(max(ty - gap * math.sin(hr), (by - 1) * BLOCK + 1.0), (by + 2) * BLOCK - 1.0)
+        bx, by, lx, ly = split_global(gx0, gy0)
+        gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
+        length = to_f32(gap + r * draw(PATH_FACTORS))
     else:
-        heading = draw(st.integers(0, 359))
-    heading += draw(st.sampled_from((0.0, 0.0, 0.5, 1.0)))
-    length = to_f32(r * draw(PATH_FACTORS))
+        if aim == "border":
+            dists = {0: BLOCK - lx, 180: lx, 90: BLOCK - ly, 270: ly}
+            heading = min(dists, key=dists.get) + draw(BORDER_JITTER)
+        else:
+            heading = draw(st.integers(0, 359))
+        length = to_f32(r * draw(PATH_FACTORS))
+    heading += draw(FINE_JITTER)
 
     # start height: on the ground (contact), a little above it, or well up in the air
     lb0, (z0, n0, d0) = world.ground(gx0, gy0)
@@ -227,9 +251,11 @@ def scenes_of(draw, kind: str):
     for i, (shape, ox, oy, gz, q) in enumerate(placed):
         objects.append(StaticObject(0x70000000 + i, position(ox, oy, gz, q), shape))
 
-    steps = geometry_steps + [r, 2 * r]
+    steps = geometry_steps + [r * t for t in (0.5, 1.0, 1.25, 1.5, 2.0)]
     up = draw(step_heights(steps))
-    down = draw(step_heights(steps))
+    # step-down in [r, 2r] reaches a cliff's face within one step (and stays whole: above 2r a
+    # one-sphere mover halves it), which is what EdgeSlide's CliffSlide branch needs
+    down = draw(st.one_of(sh.f32s(r, 2 * r), step_heights(steps)))
     mover = Mover(
         spheres=spheres,
         begin=Position(begin_cell, Frame((lx, ly, bz))),
@@ -244,15 +270,20 @@ def scenes_of(draw, kind: str):
     return Scene(landblocks, mover, tuple(objects), name=name)
 
 
-def _feature_target(f: tr.Feature, vx: int, vy: int) -> tuple[float, float]:
-    """A global vertex point on the feature's edge nearest the start vertex (vx, vy)."""
+def _feature_target(f: tr.Feature, vx: int, vy: int, top: bool) -> tuple[float, float]:
+    """A global vertex point on the feature's edge nearest the start vertex (vx, vy).
+
+    A step's slope spans the cells between the lines a*x + b*y = c - 1 and = c; `top` picks the
+    first (where the ground starts to change, seen from the base side), else the second.
+    """
     if f.kind == "step":
+        c = f.c - 1 if top else f.c
         if f.a == 0:
-            return vx, f.c / f.b
+            return vx, c / f.b
         if f.b == 0:
-            return f.c / f.a, vy
+            return c / f.a, vy
         # diagonal line a*x + b*y = c: project the start onto it
-        t = (f.c - f.a * vx - f.b * vy) / 2
+        t = (c - f.a * vx - f.b * vy) / 2
         return vx + f.a * t, vy + f.b * t
     cx = min(max(vx, f.x0), f.x1)
     cy = min(max(vy, f.y0), f.y1)

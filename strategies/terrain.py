@@ -204,11 +204,20 @@ STEP_DELTAS = st.one_of(
 )
 
 
+DIRECTIONS = st.sampled_from(((1, 0), (0, 1), (-1, 0), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)))
+CLIFF_DOWN = st.integers(-24, -14)  # tan 1.17 .. 2.0 over one cell: unwalkable, yet a step-down can reach it
+
+
 @st.composite
 def features_near(draw, gx: int, gy: int):
     """Terrain features whose edges pass within a cell or two of global vertex (gx, gy)."""
     out = []
     n = draw(st.integers(0, 3))
+    if draw(st.integers(0, 2)) == 0:
+        # policy: a cliff edge (a down step steeper than FloorZ but within reach of a step-down)
+        a, b = draw(DIRECTIONS)
+        d = draw(st.integers(-1, 2))
+        out.append(Feature("step", a=a, b=b, c=a * (gx + d) + b * (gy + d), k=draw(CLIFF_DOWN)))
     for _ in range(n):
         kind = draw(st.sampled_from(("step", "ramp", "box", "water", "step", "ramp")))
         dx, dy = draw(st.integers(-1, 2)), draw(st.integers(-1, 2))

@@ -1,0 +1,46 @@
+"""acconform repro FILE: replay a case on the port (and the live oracle where configured).
+
+Prints the field-by-field difference. Exit 0 when the case no longer fails, 1 when it still
+does, 2 for a bad file. Without a live ACE the oracle's side is the outcome stored in the case.
+"""
+
+from __future__ import annotations
+
+
+def add_arguments(p) -> None:
+    p.add_argument("file", metavar="FILE", help="a case file (from acconform check)")
+    p.add_argument("--mode", choices=("exact", "fast"), default=None, help="override the case's mode")
+    p.add_argument("--ace", default=None, help="ACE assembly for the live oracle")
+    p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
+
+
+def run(args) -> int:
+    from ..case import Case, load_document
+    from ..compare import compare, render
+    from ..errors import InvalidScene
+    from ..oracle import live_configured
+    from ..port.run import run_scene
+    from ..runner import guarded
+
+    doc = load_document(args.file)
+    if not isinstance(doc, Case):
+        raise InvalidScene("format", "expected a case file (\"acconform.case/1\"); use `acconform show` for other files", args.file)
+    mode = args.mode or doc.mode
+    port = guarded(lambda s: run_scene(s, mode=mode), doc.scene)
+    if live_configured(args.ace):
+        from ..oracle import require_live
+
+        oracle = guarded(require_live(args.ace, args.runtime).run, doc.scene)
+        source = "live ACE"
+    else:
+        oracle = doc.oracle
+        source = "the oracle outcome recorded in the case (no ACE configured)"
+    diffs = compare(port, oracle, mode)
+    print(f"{args.file}: port (mode {mode}) vs {source}")
+    if not diffs:
+        print("no longer fails: every field agrees")
+        return 0
+    print(f"still fails: {len(diffs)} field{'s' if len(diffs) != 1 else ''} differ")
+    for line in render(diffs):
+        print(f"  {line}")
+    return 1

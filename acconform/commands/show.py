@@ -1,0 +1,100 @@
+"""acconform show FILE: a scene, case, record or outcome, printed for a person to read."""
+
+from __future__ import annotations
+
+
+def add_arguments(p) -> None:
+    p.add_argument("file", metavar="FILE", help="a scene, case, record or outcome file")
+
+
+def run(args) -> int:
+    from ..case import Case, Record, load_document
+    from ..outcome import Outcome
+
+    doc = load_document(args.file)
+    for line in describe(doc):
+        print(line)
+    return 0
+
+
+def _v(v) -> str:
+    return "(" + ", ".join(f"{float(c):.9g}" for c in v) + ")"
+
+
+def _id(n: int) -> str:
+    return f"0x{n:08X}"
+
+
+def describe_scene(scene) -> list[str]:
+    from ..flags import PhysicsState, TransientState, flag_names
+    from ..strategies.terrain import is_water_word
+
+    out = [f"scene {scene.name!r}" if scene.name else "scene", f"  engine: {scene.engine_mode}"]
+    table = scene.land_height_table
+    for lb in scene.landblocks:
+        zs = [table[h] for h in lb.heights]
+        water = sum(is_water_word(t) for t in lb.terrain)
+        out.append(f"  landblock {_id(lb.id)}: heights {min(zs):g}..{max(zs):g} m, {water} water vertices")
+    for o in scene.objects:
+        s = o.shape
+        if s.kind == "bsp":
+            what = f"bsp, {len(s.polygons)} polygons, bounding sphere r={s.sphere.radius:.6g}"
+        elif s.kind == "sphere":
+            what = f"sphere r={s.sphere.radius:.6g} at {_v(s.sphere.center)}"
+        else:
+            what = f"cylsphere r={s.radius:.6g} h={s.height:.6g}"
+        out.append(f"  object {_id(o.id)} in {_id(o.position.cell)} at {_v(o.position.frame.origin)} "
+                   f"rot {_v(o.position.frame.orientation)}: {what}")
+    m = scene.mover
+    out.append("  mover:")
+    out.append("    spheres: " + ", ".join(f"r={s.radius:.6g} at {_v(s.center)}" for s in m.spheres)
+               + (f", scale {m.scale:g}" if m.scale != 1.0 else ""))
+    out.append(f"    step up {m.step_up_height:.9g}, step down {m.step_down_height:.9g}")
+    out.append(f"    state {'|'.join(flag_names(PhysicsState, m.state)) or '0'}; "
+               f"transient {'|'.join(flag_names(TransientState, m.transient_state)) or '0'}")
+    out.append(f"    begin {_id(m.begin.cell)} {_v(m.begin.frame.origin)}")
+    out.append(f"    end   {_id(m.end.cell)} {_v(m.end.frame.origin)}")
+    if m.contact_plane is not None:
+        cp = m.contact_plane
+        out.append(f"    contact plane {_id(cp.cell)} n={_v(cp.plane.normal)} d={cp.plane.d:.9g}"
+                   + (" (water)" if cp.is_water else ""))
+    if any(v != 0 for v in m.velocity):
+        out.append(f"    velocity {_v(m.velocity)}")
+    return out
+
+
+def describe_outcome(o, label: str = "outcome") -> list[str]:
+    from ..flags import ObjectInfoState, flag_names
+
+    if o.error is not None:
+        return [f"{label}: error {o.error}"]
+    cp = o.contact_plane
+    return [
+        f"{label}: ok={o.ok} cell {_id(o.cell)} origin {_v(o.origin)}",
+        f"  state {'|'.join(flag_names(ObjectInfoState, o.object_info_state)) or '0'}; "
+        f"contact plane {'valid' if cp.valid else 'invalid'} {_id(cp.cell)} n={_v(cp.normal)} d={cp.d:.9g}",
+        f"  collision normal {'valid' if o.collision_normal.valid else 'invalid'} {_v(o.collision_normal.vector)}; "
+        f"sliding normal {'valid' if o.sliding_normal.valid else 'invalid'} {_v(o.sliding_normal.vector)}",
+        f"  walkable={o.walkable} step_up={o.step_up} neg_poly_hit={o.neg_poly_hit} "
+        f"collided_with_environment={o.collided_with_environment} frames_stationary_fall={o.frames_stationary_fall}",
+    ]
+
+
+def describe(doc) -> list[str]:
+    from ..case import Case, Record
+    from ..outcome import Outcome
+    from ..scene import Scene
+
+    if isinstance(doc, Scene):
+        return describe_scene(doc)
+    if isinstance(doc, Outcome):
+        return describe_outcome(doc)
+    if isinstance(doc, Record):
+        v = doc.versions
+        return describe_scene(doc.scene) + [f"recorded from ACE {v.ace or '?'} on {v.runtime or '?'}"] + describe_outcome(doc.outcome, "ACE")
+    assert isinstance(doc, Case)
+    v = doc.versions
+    out = [f"case: mode {doc.mode}, seed {doc.seed or '?'}, acconform {v.acconform or '?'}, ACE {v.ace or '?'} on {v.runtime or '?'}"]
+    out.append(f"{len(doc.differences)} difference{'s' if len(doc.differences) != 1 else ''}:")
+    out += [f"  {d}" for d in doc.differences]
+    return out + describe_scene(doc.scene) + describe_outcome(doc.port, "port") + describe_outcome(doc.oracle, "oracle")
