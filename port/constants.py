@@ -28,3 +28,16 @@ CELL_LENGTH = 24.0
 SIDE_CELL_COUNT = 8
 VERTEX_PER_CELL = 1
 SIDE_VERTEX_COUNT = 9
+
+# Sphere.cs / CylSphere.cs IntersectsSphere and StepSphereDown: `timecheck < -0.1f`
+STEP_INTERP_LIMIT = f32_from_bits(0xBDCCCCCD)
+# Polygon.cs adjust_sphere_to_plane: `interp < -0.5f`, the furthest a walkable adjustment may reach back
+ADJUST_TO_PLANE_INTERP_LIMIT = f32_from_bits(0xBF000000)
+# BSPNode.cs sphere_intersects_cell_bsp: `curSphere.Radius + 0.01f`
+CELL_BSP_SLACK = f32_from_bits(0x3C23D70A)
+# LandblockStruct.cs calc_water_depth: 0.44999999f where the nearest terrain corner is water, else 0.1f
+WATER_DEPTH_PARTIAL_WATER = f32_from_bits(0x3EE66666)
+# ObjCell.cs get_water_depth: 0.89999998f in a cell that is entirely water
+WATER_DEPTH_ENTIRELY_WATER = f32_from_bits(0x3F666666)
+# both: 0.1f on dry land
+WATER_DEPTH_DRY = f32_from_bits(0x3DCCCCCD)

@@ -9,12 +9,8 @@ set_heading needs them; the latter belongs in acconform.numerics (reported to th
 
 from __future__ import annotations
 
-import ctypes
-import ctypes.util
 import math
 from dataclasses import dataclass
-
-import numpy as np
 
 from acconform.numerics import (
     MONO,
@@ -25,10 +21,12 @@ from acconform.numerics import (
     Vector3,
     cast_float,
     cs_fmod,
+    cs_math,
     lerp,
     quat_inverse,
     quat_lerp,
     quat_multiply,
+    quat_create_from_yaw_pitch_roll,
     quat_normalize,
     transform_by_matrix,
     transform_by_quaternion,
@@ -44,14 +42,6 @@ _F450 = 450.0
 _F360 = 360.0
 
 
-def _cs_math(fn, x: float) -> float:
-    """Math.Sin/Cos/Asin: NaN where C# gives NaN (Python raises on +-inf and out-of-domain)."""
-    try:
-        return fn(x)
-    except ValueError:
-        return math.nan
-
-
 def to_radians(angle):
     """FloatExtensions.ToRadians: ``(float)(Math.PI / 180.0f * angle)`` (the product in double)."""
     return cast_float(angle, (math.pi / 180.0) * float(angle))
@@ -60,54 +50,6 @@ def to_radians(angle):
 def to_degrees(rads):
     """FloatExtensions.ToDegrees: ``(float)(180.0f / Math.PI * rads)``."""
     return cast_float(rads, (180.0 / math.pi) * float(rads))
-
-
-def _load_libm():
-    """The C library's float sinf/cosf, which mono's System.Numerics calls (through MathF)."""
-    path = ctypes.util.find_library("m") or "libm.so.6"
-    lib = ctypes.CDLL(path)
-    for name in ("sinf", "cosf"):
-        fn = getattr(lib, name)
-        fn.restype = ctypes.c_float
-        fn.argtypes = [ctypes.c_float]
-    return lib
-
-
-_LIBM = _load_libm()
-
-
-def _sin_like(x):
-    """MathF.Sin(x) for a float32 x (libm sinf); Math.Sin in fast mode."""
-    if type(x) is np.float32:
-        return np.float32(_LIBM.sinf(float(x)))
-    return cast_float(x, _cs_math(math.sin, float(x)))
-
-
-def _cos_like(x):
-    if type(x) is np.float32:
-        return np.float32(_LIBM.cosf(float(x)))
-    return cast_float(x, _cs_math(math.cos, float(x)))
-
-
-def create_from_yaw_pitch_roll(yaw, pitch, roll) -> Quaternion:
-    """Quaternion.CreateFromYawPitchRoll as mono computes it: half angles in float, then
-    MathF.Sin/Cos -- libm's float sinf/cosf, not (float)Math.Sin (checked against mono: the
-    double route is one ulp off in about 7% of cases)."""
-    half_roll = roll * 0.5
-    sr = _sin_like(half_roll)
-    cr = _cos_like(half_roll)
-    half_pitch = pitch * 0.5
-    sp = _sin_like(half_pitch)
-    cp = _cos_like(half_pitch)
-    half_yaw = yaw * 0.5
-    sy = _sin_like(half_yaw)
-    cy = _cos_like(half_yaw)
-    return Quaternion(
-        cy * sp * cr + sy * cp * sr,
-        sy * cp * cr - cy * sp * sr,
-        cy * cp * sr - sy * sp * cr,
-        cy * cp * cr + sy * sp * sr,
-    )
 
 
 @dataclass(slots=True, eq=False)
@@ -172,7 +114,7 @@ class AFrame:
 
     @anchor("AFrame::grotate", "AFrame.cs:GRotate")
     def grotate(self, rotation: Vector3) -> None:
-        self.orientation = quat_multiply(self.orientation, create_from_yaw_pitch_roll(rotation.x, rotation.y, rotation.z))
+        self.orientation = quat_multiply(self.orientation, quat_create_from_yaw_pitch_roll(rotation.x, rotation.y, rotation.z))
         self.orientation = quat_normalize(self.orientation)
 
     @anchor("AFrame::rotate", "AFrame.cs:Rotate(Quaternion)")
@@ -201,8 +143,8 @@ class AFrame:
         rads = to_radians(degrees)
         m = Matrix4x4.create_from_quaternion(self.orientation).m
         heading = Vector3(
-            cast_float(rads, _cs_math(math.sin, float(rads))),
-            cast_float(rads, _cs_math(math.cos, float(rads))),
+            cast_float(rads, cs_math(math.sin, float(rads))),
+            cast_float(rads, cs_math(math.cos, float(rads))),
             m[6] + m[2],  # M23 + M13
         )
         self.set_vector_heading(heading)
@@ -219,9 +161,9 @@ class AFrame:
             return
         z_deg = _F450 - to_degrees(cast_float(normal.y, math.atan2(float(normal.y), float(normal.x))))
         z_rot = -to_radians(cs_fmod(z_deg, _F360))
-        x_rot = cast_float(normal.z, _cs_math(math.asin, float(normal.z)))
+        x_rot = cast_float(normal.z, cs_math(math.asin, float(normal.z)))
         zero = type(x_rot)(0)
-        self.set_rotate(create_from_yaw_pitch_roll(x_rot, zero, z_rot))
+        self.set_rotate(quat_create_from_yaw_pitch_roll(x_rot, zero, z_rot))
 
     @anchor("AFrame::equals", "AFrame.cs:Equals", note="ACE compares the argument's orientation with itself")
     def equals(self, frame: "AFrame") -> bool:
@@ -325,4 +267,4 @@ class Position:
         return (block_cell_id & 0xFFFF0000) | cell_id
 
 
-__all__ = ["AFrame", "Position", "create_from_yaw_pitch_roll", "to_degrees", "to_radians"]
+__all__ = ["AFrame", "Position", "to_degrees", "to_radians"]

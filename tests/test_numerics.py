@@ -99,6 +99,12 @@ def test_fast_mode_vectors_compute_in_double():
         ("GRAVITY", k.GRAVITY, 0xC11CCCCD),
         ("DEFAULT_STEP_HEIGHT", k.DEFAULT_STEP_HEIGHT, 0x3C23D70A),
         ("STEP_DOWN_PROBE", k.STEP_DOWN_PROBE, 0x3D23D70A),
+        ("STEP_INTERP_LIMIT", k.STEP_INTERP_LIMIT, 0xBDCCCCCD),
+        ("ADJUST_TO_PLANE_INTERP_LIMIT", k.ADJUST_TO_PLANE_INTERP_LIMIT, 0xBF000000),
+        ("CELL_BSP_SLACK", k.CELL_BSP_SLACK, 0x3C23D70A),
+        ("WATER_DEPTH_PARTIAL_WATER", k.WATER_DEPTH_PARTIAL_WATER, 0x3EE66666),
+        ("WATER_DEPTH_ENTIRELY_WATER", k.WATER_DEPTH_ENTIRELY_WATER, 0x3F666666),
+        ("WATER_DEPTH_DRY", k.WATER_DEPTH_DRY, 0x3DCCCCCD),
     ],
 )
 def test_constants_are_pinned_by_their_float32_bit_patterns(name, value, bits):
@@ -112,6 +118,9 @@ def test_constants_match_the_csharp_literals_they_come_from():
     assert f32_bits(0.0871557) == f32_bits(k.LANDING_Z)
     assert f32_bits(0.039999999) == f32_bits(k.STEP_DOWN_PROBE)
     assert f32_bits(np.float32(0.0002) * np.float32(0.0002)) == f32_bits(k.EPSILON_SQ)
+    assert f32_bits(-0.1) == f32_bits(k.STEP_INTERP_LIMIT)
+    assert f32_bits(0.44999999) == f32_bits(k.WATER_DEPTH_PARTIAL_WATER)
+    assert f32_bits(0.89999998) == f32_bits(k.WATER_DEPTH_ENTIRELY_WATER)
 
 
 def test_math_floor_and_ceiling_pass_infinities_and_nan_through_as_csharp_does():

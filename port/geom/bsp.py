@@ -14,18 +14,16 @@ from __future__ import annotations
 from enum import IntEnum
 
 from acconform.flags import ObjectInfoState, TransitionState
-from acconform.numerics import D, Mode, Plane, Vector3, cast_float, dot, f32_from_bits
+from acconform.numerics import D, Mode, Plane, Vector3, cast_float, dot
 
 from ..anchors import anchor
-from ..constants import EPSILON, LANDING_Z
+from ..constants import CELL_BSP_SLACK, EPSILON, LANDING_Z
 from ..vec import Side, get_side, plane_local_to_global, zero_like
 from .polygon import Polygon
 from .sphere import Sphere
 
 # SpherePath.cs InsertType.Placement
 INSERT_TYPE_PLACEMENT = 1
-# BSPNode.cs sphere_intersects_cell_bsp: `curSphere.Radius + 0.01f` (float32 bits 0x3C23D70A)
-CELL_BSP_SLACK = f32_from_bits(0x3C23D70A)
 # BSPTree.cs adjust_to_plane: 15 tries (hard-coded in ACE), bisection stops below 0.02 (double)
 ADJUST_TO_PLANE_ITERATIONS = 15
 ADJUST_TO_PLANE_MIN_SPAN = 0.02

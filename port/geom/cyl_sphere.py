@@ -9,15 +9,13 @@ xyMoveLenSq)`` divide in double and round back to float32.
 from __future__ import annotations
 
 from acconform.flags import ObjectInfoState, TransitionState
-from acconform.numerics import Mode, Plane, Vector3, cast_float, dot, f32_from_bits
+from acconform.numerics import Mode, Plane, Vector3, cast_float, dot
 
 from ..anchors import anchor
-from ..constants import EPSILON, LANDING_Z
+from ..constants import EPSILON, LANDING_Z, STEP_INTERP_LIMIT
 from ..land.land_defs import get_block_offset
 from ..vec import cs_sqrt, dot2d, length_squared_2d, normalize_check_small, unit_z_like, zero_like
 
-# CylSphere.cs IntersectsSphere / StepSphereDown: `t < -0.1f` (float32 bits 0xBDCCCCCD)
-STEP_INTERP_LIMIT = f32_from_bits(0xBDCCCCCD)
 # SpherePath.cs InsertType.Placement
 INSERT_TYPE_PLACEMENT = 1
 

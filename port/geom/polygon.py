@@ -17,12 +17,8 @@ from acconform.flags import CullMode
 from acconform.numerics import D, Mode, Plane, Vector3, cross, dot, normalize
 
 from ..anchors import anchor
-from ..constants import EPSILON
+from ..constants import ADJUST_TO_PLANE_INTERP_LIMIT, EPSILON
 from ..vec import Ray, compute_time_of_intersection, zero_like
-
-# Polygon.cs adjust_sphere_to_plane: `interp < -0.5f`, the furthest a walkable adjustment may
-# move the sphere back along its path (pinned by bits in tests/port/geom).
-ADJUST_TO_PLANE_INTERP_LIMIT = -0.5
 
 
 class Sidedness(IntEnum):

@@ -19,15 +19,13 @@ SphereIntersectsRay's time is double.
 from __future__ import annotations
 
 from acconform.flags import ObjectInfoState, TransitionState
-from acconform.numerics import D, Mode, Plane, Vector3, cast_float, cross, dot, f32_from_bits
+from acconform.numerics import D, Mode, Plane, Vector3, cast_float, cross, dot
 
 from ..anchors import anchor
-from ..constants import EPSILON, LANDING_Z
+from ..constants import EPSILON, LANDING_Z, STEP_INTERP_LIMIT
 from ..land.land_defs import get_block_offset
 from ..vec import cs_sqrt, normalize_check_small, zero_like
 
-# Sphere.cs IntersectsSphere / StepSphereDown: `timecheck < -0.1f` (float32 bits 0xBDCCCCCD)
-STEP_INTERP_LIMIT = f32_from_bits(0xBDCCCCCD)
 # SpherePath.cs InsertType.Placement (InsertType is Transition 0, Placement 1, InitialPlacement 2)
 INSERT_TYPE_PLACEMENT = 1
 

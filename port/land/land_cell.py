@@ -14,14 +14,11 @@ from __future__ import annotations
 
 from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
 from acconform.port.anchors import anchor
+from acconform.port.constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom.polygon import Polygon, Sidedness
 from acconform.port.land import land_defs
 from acconform.port.land.land_defs import WaterType
-
-# ObjCell.get_water_depth's literals 0.89999998f and 0.1f (bit patterns pinned in the tests)
-WATER_DEPTH_ENTIRELY_WATER = 0.89999997615814208984375
-WATER_DEPTH_DRY = 0.100000001490116119384765625
 
 
 class LandCell:

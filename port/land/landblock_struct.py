@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from acconform.flags import CullMode
 from acconform.numerics import Mode, Vector3, cs_fmod, wrap_i32, wrap_u32
+
+from ..constants import WATER_DEPTH_PARTIAL_WATER, WATER_DEPTH_DRY
 from acconform.port.anchors import anchor
 from acconform.port.geom.polygon import Polygon, Vertex
 from acconform.port.land import land_defs
@@ -28,10 +30,6 @@ SURF_CHAR = (0,) * 16 + (1,) * 5 + (0,) * 11
 # compared in double. The literal is a little below 2^-32, so the first branch also takes
 # splitDir from 2^31 to 2^31 + 33 (pinned in tests/port/land/test_landblock_struct.py).
 SPLIT_SCALE = 2.3283064e-10
-
-# calc_water_depth's float literals 0.44999999f and 0.1f (bit patterns pinned in the tests)
-WATER_DEPTH_PARTIAL_WATER = 0.449999988079071044921875
-WATER_DEPTH_DRY = 0.100000001490116119384765625
 
 
 @anchor(None, "LandblockStruct.cs:ConstructPolygons", note="the split test `splitDir * 2.3283064e-10 < 0.5f`")

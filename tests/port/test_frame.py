@@ -17,7 +17,8 @@ import numpy as np
 import pytest
 
 from acconform.numerics import EXACT, FAST, Quaternion, Vector3, f32_bits, f32_from_bits
-from acconform.port.frame import AFrame, Position, create_from_yaw_pitch_roll
+from acconform.numerics import quat_create_from_yaw_pitch_roll
+from acconform.port.frame import AFrame, Position
 from acconform.port.land.land_defs import InvalidOperation
 
 DATA = Path(__file__).resolve().parent.parent / "data" / "numerics_mono.json"
@@ -190,7 +191,7 @@ def _port_create_from_quaternion(a):
 
 
 def _port_yaw_pitch_roll(a):
-    o = create_from_yaw_pitch_roll(F(a[0]), F(a[1]), F(a[2]))
+    o = quat_create_from_yaw_pitch_roll(F(a[0]), F(a[1]), F(a[2]))
     return [o.x, o.y, o.z, o.w]
 
 
