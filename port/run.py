@@ -8,6 +8,8 @@ becomes ``Outcome(error=...)``: a verdict, not a crash. Pass a ``collections.Cou
 
 from __future__ import annotations
 
+import numpy as np
+
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome
 from acconform.scene import Scene
@@ -64,7 +66,8 @@ def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
 def run_scene(scene: Scene, mode: str = "exact", trace=None) -> Outcome:
     """Run the scene's transition in the port; `trace` (a Counter) is incremented in place."""
     try:
-        return _run(scene, get_mode(mode), trace)
+        with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
+            return _run(scene, get_mode(mode), trace)
     except Exception as e:  # a port exception is a verdict
         return Outcome(error=f"{type(e).__name__}: {e}")
 

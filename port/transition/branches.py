@@ -1,0 +1,86 @@
+"""The branch names the port counts when run_scene is given a trace Counter.
+
+Each name is "<ACE routine>:<branch>". `BRANCHES` documents every name the port can emit;
+tests/port/transition/test_branches.py checks that each one outside `NOT_YET_REACHED` is
+reached by a recorded test scene, and that the port emits no name missing here.
+"""
+
+from __future__ import annotations
+
+BRANCHES: dict[str, str] = {
+    # Transition.AdjustOffset
+    "adjust_offset:slide_no_contact": "sliding normal opposes the offset, no contact plane: its component removed",
+    "adjust_offset:slide_blocked": "sliding normal opposes the offset, crease direction too small: offset zeroed",
+    "adjust_offset:slide_along_crease": "sliding normal opposes the offset on a contact plane: slide along the crease",
+    "adjust_offset:lift_above_contact_plane": "sphere sinks below the contact plane: check position lifted",
+    # Transition.CheckOtherCells
+    "check_other_cells:other_cell_collided": "a neighbouring cell's collision test returned Collided/Adjusted",
+    "check_other_cells:no_cell": "sphere center in no cell (adjusted to outside)",
+    # Transition.CheckWalkable
+    "check_walkable:walkable_ok": "not on walkable ground, or the walkable polygon still holds the sphere",
+    "check_walkable:probe_blocked": "downward probe met ground: walkable",
+    "check_walkable:probe_fell": "downward probe met nothing: not walkable",
+    # Transition.CliffSlide
+    "cliff_slide:parallel_planes": "contact and last-known planes give no slide direction: OK",
+    "cliff_slide:normal_kept": "movement opposes the cliff normal: slide with it",
+    "cliff_slide:normal_flipped": "movement along the cliff normal: slide with it reversed",
+    # Transition.EdgeSlide
+    "edge_slide:off": "not on walkable ground or no EdgeSlide flag: no slide",
+    "edge_slide:cliff_slide": "contact plane below walkable Z: cliff slide",
+    "edge_slide:precipice_slide": "the walkable polygon just left is known: precipice slide along its crossed edge",
+    "edge_slide:contact_plane_valid": "a walkable contact plane is still valid: OK",
+    "edge_slide:back_probe": "walkable lost: step down from the current sphere center to rediscover it",
+    "edge_slide:back_probe_precipice_slide": "the back-probe found the walkable polygon: precipice slide",
+    "edge_slide:back_probe_no_walkable": "the back-probe found no walkable polygon (always on terrain): Collided",
+    # SpherePath.PrecipiceSlide
+    "precipice_slide:no_crossed_edge": "no crossed edge found: Collided",
+    "precipice_slide:normal_flipped": "edge normal turned to oppose the movement",
+    "precipice_slide:normal_kept": "edge normal already opposes the movement",
+    # Transition.FindTransitionalPosition
+    "find_transitional_position:too_many_steps": "more than 1000 steps: refused",
+    "find_transitional_position:no_steps": "begin == end: cell list only",
+    "find_transitional_position:offset_vanished": "the adjusted offset is below EPSILON: stop",
+    "find_transitional_position:stationary_fall_stop": "FramesStationaryFall > 0 after a step: stop",
+    # Transition.StepDown / StepUp
+    "step_down:ok": "stepped down onto walkable ground",
+    "step_down:placement_blocked": "found ground but the placement insert failed",
+    "step_down:fail": "no walkable ground within reach",
+    "step_up:ok": "stepped up",
+    "step_up:fail": "could not step up: check position restored",
+    # Transition.TransitionalInsert
+    "transitional_insert:neg_poly_step_up": "hit a polygon from behind, step up requested",
+    "transitional_insert:neg_poly_slide": "hit a polygon from behind: slide",
+    "transitional_insert:step_down_whole": "lost contact: one step-down (height <= 2r, or r/2 for one sphere)",
+    "transitional_insert:step_down_halves": "lost contact: two half step-downs (two spheres, height > 2r)",
+    "transitional_insert:collide_landed": "collide flag: landed on walkable ground",
+    "transitional_insert:collide_reset": "collide flag: check position reset, Collided",
+    # Transition.ValidateTransition
+    "validate_transition:rejected_step": "a step came back not OK: back to the current position",
+    "validate_transition:last_known_contact_restored": "the last known contact plane still touches: restored",
+    "validate_transition:stationary_fall_1": "FramesStationaryFall 0 -> 1",
+    "validate_transition:stationary_fall_2": "FramesStationaryFall 1 -> 2",
+    "validate_transition:stationary_fall_3": "FramesStationaryFall >= 2 -> 3, contact plane forced",
+    # LandCell.FindEnvCollisions, PhysicsObj.get_object_info
+    "land_cell:entirely_water_block": "an entirely-water landblock: Collided",
+    "get_object_info:leaving_contact": "velocity leaves the contact plane: only a last-known plane",
+}
+
+# Branches no recorded test scene reaches yet, and why.
+NOT_YET_REACHED: dict[str, str] = {
+    "check_other_cells:no_cell": "needs a sphere center outside every loaded cell; DAT-less ACE crashes there",
+    "check_walkable:probe_blocked": "needs SpherePath.Walkable, which only BSP geometry sets (static objects pending)",
+    "check_walkable:probe_fell": "needs SpherePath.Walkable (BSP)",
+    "edge_slide:precipice_slide": "needs SpherePath.Walkable (BSP)",
+    "edge_slide:back_probe_precipice_slide": "needs SpherePath.Walkable (BSP)",
+    "edge_slide:contact_plane_valid": "not found on terrain in 1,000 sampled scenes",
+    "precipice_slide:no_crossed_edge": "needs SpherePath.Walkable (BSP)",
+    "precipice_slide:normal_flipped": "needs SpherePath.Walkable (BSP)",
+    "precipice_slide:normal_kept": "needs SpherePath.Walkable (BSP)",
+    "step_down:placement_blocked": "not found on terrain in 1,000 sampled scenes",
+    "step_up:ok": "step up is requested by BSP/sphere collisions only",
+    "step_up:fail": "step up is requested by BSP/sphere collisions only",
+    "transitional_insert:neg_poly_step_up": "BSP only",
+    "transitional_insert:neg_poly_slide": "BSP only",
+    "transitional_insert:collide_landed": "SetCollide comes from BSP/sphere collisions",
+    "transitional_insert:collide_reset": "SetCollide comes from BSP/sphere collisions",
+}
