@@ -152,3 +152,13 @@ def _choose_runtime(assembly: Path, forced: str | None) -> tuple[str, str]:
         raise OracleUnavailable(f"runtime mono (from {source}) cannot run {assembly}: {rc.name} beside it marks a "
                                 ".NET (CoreCLR) build; use --runtime coreclr")
     return choice, source
+
+
+def ace_label() -> str:
+    """A human label for the ACE build (e.g. its git commit), from ACE_VERSION or config ``ace_version``;
+    recorded beside the assembly version and hash, which an mcs build leaves at 0.0.0.0."""
+    v = os.environ.get("ACE_VERSION")
+    if v:
+        return v
+    v = _read_config(config_path()).get("ace_version")
+    return v if isinstance(v, str) else ""

@@ -37,7 +37,9 @@ class LiveOracle:
             raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {config.HOW_TO_SET}")
         self.location = location
         self.ace = _load(location)
-        self.versions = Versions(acconform=__version__, ace=self.ace.ace_version, runtime=self.ace.runtime_version)
+        label = config.ace_label()
+        ace = f"{label} ({self.ace.ace_version})" if label else self.ace.ace_version
+        self.versions = Versions(acconform=__version__, ace=ace, runtime=self.ace.runtime_version)
         want = path or os.environ.get(ENV_PATH) or "auto"
         if want not in PATHS:
             raise OracleError(f"unknown oracle path {want!r} (from {'path' if path else ENV_PATH}); known: {', '.join(PATHS)}")

@@ -1,0 +1,81 @@
+"""Hand-made scenes the oracle tests share: the four probe cases (/work/acebuild/probe_output.txt,
+measured with ACE commit 7b47913 on mono 6.8), a BSP wall, obstacles, and an unregistered landblock."""
+
+from acconform.flags import CullMode, PhysicsState
+from acconform.scene import (BSPLeaf, BSPNode, BSPShape, ContactPlane, CylSphereShape, Frame, Landblock, Mover,
+                             PlaneRec, PolygonRec, Position, Scene, SphereRec, SphereShape, StaticObject,
+                             validate_scene)
+
+LB = 0xA9B40000
+
+
+def cell_at(x, y, lb=LB):
+    return lb | (int(x // 24) * 8 + int(y // 24) + 1)
+
+
+def landblock(height_fn, lb=LB):
+    return Landblock(lb | 0xFFFF, tuple(height_fn(i // 9, i % 9) for i in range(81)), (0,) * 81)
+
+
+def walk(height_fn, start, end, ground_z, mode="server", objects=(), name="", landblocks=None):
+    mover = Mover(spheres=(SphereRec((0.0, 0.0, 0.48), 0.48),),
+                  begin=Position(cell_at(*start[:2]), Frame(start)), end=Position(cell_at(*end[:2]), Frame(end)),
+                  step_up_height=0.4, step_down_height=0.4,
+                  contact_plane=ContactPlane(cell_at(*start[:2]), PlaneRec((0.0, 0.0, 1.0), -ground_z)))
+    lbs = landblocks if landblocks is not None else (landblock(height_fn),)
+    return validate_scene(Scene(lbs, mover, objects, engine_mode=mode, name=name))
+
+
+def flat(x, y):
+    return 10  # z = 20 m
+
+
+def cliff(x, y):
+    return 100 if x <= 3 else 0  # 200 m drop between vertex columns 3 and 4
+
+
+def ramp(x, y):
+    return 10 + x
+
+
+PROBE = {
+    "flat 1-step walk": walk(flat, (12.0, 12.0, 20.0), (12.4, 12.0, 20.0), 20.0),
+    "flat ~11-step walk (5 m)": walk(flat, (12.0, 12.0, 20.0), (17.0, 12.0, 20.0), 20.0),
+    "cliff edge walk (EdgeSlide)": walk(cliff, (70.0, 12.0, 200.0), (75.0, 12.0, 200.0), 200.0),
+    "ramp walk uphill": walk(ramp, (30.0, 12.0, 22.5), (35.0, 12.0, 22.5 + 5 * 2 / 24), 22.5),
+}
+
+
+def wall(x=14.0, cell=LB | 1, ident=0x70000010, facing_mover=True):
+    """A 4 m wide, 3 m high wall in the object's local plane x = 0; facing -x (towards a mover coming
+    from smaller x) when `facing_mover`. ACE's BSP polygons are one-sided: Polygon.pos_hits_sphere
+    ignores a hit when the movement is along the normal."""
+    verts = ((0.0, -2.0, 3.0), (0.0, 2.0, 3.0), (0.0, 2.0, 0.0), (0.0, -2.0, 0.0))
+    if not facing_mover:
+        verts = tuple(reversed(verts))
+    poly = PolygonRec(verts, int(CullMode.None_))
+    sph = SphereRec((0.0, 0.0, 1.5), 2.6)
+    nx = -1.0 if facing_mover else 1.0
+    root = BSPNode(PlaneRec((nx, 0.0, 0.0), 0.0), sph, BSPLeaf((0,), False, sph), BSPLeaf((0,), False, sph))
+    return StaticObject(ident, Position(cell, Frame((x, 12.0, 20.0))), BSPShape((poly,), root, sph),
+                        int(PhysicsState.Static | PhysicsState.HasPhysicsBSP))
+
+
+def post(x=15.0):
+    return StaticObject(0x70000001, Position(cell_at(x, 12.0), Frame((x, 12.0, 20.0))), CylSphereShape((0.0, 0.0, 0.0), 0.5, 2.0))
+
+
+def boulder(x=15.0):
+    return StaticObject(0x70000002, Position(cell_at(x, 12.0), Frame((x, 12.0, 20.0))), SphereShape(SphereRec((0.0, 0.0, 0.5), 1.0)))
+
+
+def off_the_map():
+    """A walk across A9B4's north edge into A9B5, which the scene does not define: ACE tries to load
+    A9B5 from the cell DAT and throws (no DATs); the oracle reports that as the outcome."""
+    start = (12.0, 190.0, 20.0)
+    mover = Mover(spheres=(SphereRec((0.0, 0.0, 0.48), 0.48),),
+                  begin=Position(cell_at(12.0, 190.0), Frame(start)),
+                  end=Position(0xA9B50001, Frame((12.0, 4.0, 20.0))),
+                  step_up_height=0.4, step_down_height=0.4,
+                  contact_plane=ContactPlane(cell_at(12.0, 190.0), PlaneRec((0.0, 0.0, 1.0), -20.0)))
+    return validate_scene(Scene((landblock(flat),), mover, name="into an unregistered landblock"))

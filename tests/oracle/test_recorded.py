@@ -1,0 +1,101 @@
+"""The recorded oracle and the committed corpus: replay, round trip, and loud failure when absent."""
+
+import gzip
+import json
+
+import pytest
+
+from acconform.case import Record, Versions
+from acconform.outcome import Outcome
+from acconform.oracle import DEFAULT_CORPUS, get_oracle
+from acconform.oracle.recorded import CorpusMissing, CorpusWriter, RecordedOracle, UnrecordedScene, scene_key, shards
+
+from .scenes import PROBE, off_the_map
+
+MIN_CORPUS = 10_000
+
+
+def test_committed_corpus_exists_and_is_large():
+    """Fails (never skips) when the corpus is missing or small: CI's differential lane depends on it."""
+    oracle = RecordedOracle(DEFAULT_CORPUS)
+    assert len(oracle) >= MIN_CORPUS, f"{DEFAULT_CORPUS} holds {len(oracle)} records, fewer than {MIN_CORPUS}"
+
+
+def test_committed_corpus_spans_every_scene_kind():
+    kinds = {p.name.split("-")[0] for p in shards(DEFAULT_CORPUS)}
+    assert {"terrain", "bsp", "obstacles"} <= kinds
+
+
+def test_committed_corpus_replays_its_own_scenes_and_names_its_ace():
+    oracle = RecordedOracle(DEFAULT_CORPUS)
+    assert oracle.versions.ace and oracle.versions.runtime
+    seen = 0
+    for i, rec in enumerate(oracle.records()):
+        if i % 97:
+            continue
+        assert oracle.run(rec.scene) == rec.outcome
+        seen += 1
+    assert seen > 50
+
+
+def test_record_then_replay_round_trips(tmp_path, isolated_config):
+    outcome = Outcome(ok=True, cell=0xA9B40001, origin=(12.5, 12.0, 20.0))
+    v = Versions("0.1.0", "test-ace", "mono 6.8")
+    with CorpusWriter(tmp_path, shard_size=2) as w:
+        for s in list(PROBE.values()) + [off_the_map()]:
+            w.add(Record(s, outcome if s.name != off_the_map().name else Outcome(error="NullReferenceException: x"), v))
+    assert len(shards(tmp_path)) == 3  # 5 terrain records, 2 per shard
+    oracle = get_oracle(corpus=tmp_path)
+    assert len(oracle) == 5 and oracle.versions == v
+    assert oracle.run(PROBE["ramp walk uphill"]) == outcome
+    assert oracle.run(off_the_map()).error.startswith("NullReferenceException")
+    assert {s.name for s in oracle.scenes()} >= {off_the_map().name}
+
+
+def test_a_scene_is_found_whatever_its_name(tmp_path):
+    s = PROBE["flat 1-step walk"]
+    with CorpusWriter(tmp_path) as w:
+        w.add(Record(s, Outcome(ok=True)))
+    assert RecordedOracle(tmp_path).run(s.replace(name="renamed")).ok
+    assert scene_key(s) == scene_key(s.replace(name="other"))
+
+
+def test_an_unrecorded_scene_raises_a_clear_error(tmp_path):
+    with CorpusWriter(tmp_path) as w:
+        w.add(Record(PROBE["flat 1-step walk"], Outcome(ok=True)))
+    with pytest.raises(UnrecordedScene, match="no answer for scene 'into an unregistered landblock'.*acconform record"):
+        RecordedOracle(tmp_path).run(off_the_map())
+
+
+def test_a_missing_or_empty_corpus_fails_loudly(tmp_path):
+    with pytest.raises(CorpusMissing, match="no recorded-oracle corpus"):
+        RecordedOracle(tmp_path / "absent")
+    with pytest.raises(CorpusMissing, match="holds no records"):
+        RecordedOracle(tmp_path)
+
+
+def test_shards_are_gzip_json_lines_of_records(tmp_path):
+    with CorpusWriter(tmp_path) as w:
+        w.add(Record(PROBE["flat 1-step walk"], Outcome(ok=True)))
+    (shard,) = shards(tmp_path)
+    assert shard.name == "terrain-0000.jsonl.gz"
+    with gzip.open(shard, "rt") as f:
+        doc = json.loads(f.readline())
+    assert doc["format"] == "acconform.record/1"
+
+
+@pytest.mark.live_oracle
+def test_live_record_command_then_recorded_oracle_replays_the_same_outcomes(live, tmp_path):
+    from acconform.cli import main
+
+    files = []
+    for i, s in enumerate(list(PROBE.values()) + [off_the_map()]):
+        p = tmp_path / f"s{i}.json"
+        p.write_text(s.dumps())
+        files.append(str(p))
+    assert main(["record", "-q", "--out", str(tmp_path / "corpus"), *files]) == 0
+    rec = RecordedOracle(tmp_path / "corpus")
+    for s in list(PROBE.values()) + [off_the_map()]:
+        assert rec.run(s) == live.run(s)
+    assert main(["record", "-q", "--out", str(tmp_path / "corpus"), *files]) == 0  # all skipped
+    assert len(RecordedOracle(tmp_path / "corpus")) == 5
