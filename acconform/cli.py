@@ -23,6 +23,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "check": ("acconform.commands.check", "run a differential campaign, port vs ACE (live or recorded); save shrunk cases"),
     "repro": ("acconform.commands.repro", "replay a case file on the port (and live ACE) and print the differences"),
     "show": ("acconform.commands.show", "print a scene, case, record or outcome file readably"),
+    "record": ("acconform.commands.record", "run scenes through live ACE and append the records to the recorded-oracle corpus"),
     "coverage": ("acconform.commands.coverage", "how often each port branch fires per 1,000 generated scenes"),
 }
 
