@@ -98,6 +98,7 @@ def step_heights(geometry_steps=()):
     return st.one_of(*opts)
 
 
+HEADINGS = st.one_of(st.sampled_from((0, 90, 180, 270, 45)), st.integers(0, 359))
 AIMS = st.sampled_from(("feature", "feature", "border", "any"))
 AIMS_WITH_OBJECTS = st.sampled_from(("feature", "border", "any", "object", "object"))
 JITTER = st.sampled_from((0, 0, 0, 5, -5, 30, -30, 60))
@@ -170,7 +171,7 @@ def scenes_of(draw, kind: str):
             dists = {0: BLOCK - lx, 180: lx, 90: BLOCK - ly, 270: ly}
             heading = min(dists, key=dists.get) + draw(BORDER_JITTER)
         else:
-            heading = draw(st.integers(0, 359))
+            heading = draw(HEADINGS)
         length = to_f32(r * draw(PATH_FACTORS))
     heading += draw(FINE_JITTER)
 

@@ -218,6 +218,16 @@ def features_near(draw, gx: int, gy: int):
         a, b = draw(DIRECTIONS)
         d = draw(st.integers(-1, 2))
         out.append(Feature("step", a=a, b=b, c=a * (gx + d) + b * (gy + d), k=draw(CLIFF_DOWN)))
+    if draw(st.integers(0, 2)) == 0:
+        # policy: a slope just either side of FloorZ starting at the next vertex over
+        i, j = draw(st.sampled_from(STRADDLING_GRADIENTS))
+        si, sj = draw(st.sampled_from((1, -1))), draw(st.sampled_from((1, -1)))
+        x0, y0 = gx + draw(st.integers(-1, 1)), gy + draw(st.integers(-1, 1))
+        out.append(Feature("ramp", x0=x0, y0=y0, x1=x0 + 2, y1=y0 + 2, i=si * i, j=sj * j))
+    if draw(st.integers(0, 2)) == 0:
+        # policy: tilt the whole neighbourhood gently, so block borders have sloped contact planes
+        out.append(Feature("ramp", x0=gx - 16, y0=gy - 16, x1=gx + 16, y1=gy + 16,
+                           i=draw(st.integers(-3, 3)), j=draw(st.integers(-3, 3))))
     for _ in range(n):
         kind = draw(st.sampled_from(("step", "ramp", "box", "water", "step", "ramp")))
         dx, dy = draw(st.integers(-1, 2)), draw(st.integers(-1, 2))

@@ -1,0 +1,120 @@
+"""Planted bugs: mutated copies of the port, loaded as separate packages beside the real one.
+
+`load_mutant(m)` copies port/ into a temporary directory as package ``acconform_mutant_<i>``,
+rewrites its absolute ``acconform.port`` imports to point at the copy, applies the mutation
+(an exact text replacement that must match exactly once, so a mutation that no longer applies
+fails loudly instead of testing nothing) and returns the copy's ``run_scene``. The real port is
+never edited and keeps working in the same process (it is the oracle in the mutation check).
+"""
+
+from __future__ import annotations
+
+import importlib
+import shutil
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+PORT_DIR = Path(__file__).resolve().parents[2] / "port"
+
+
+@dataclass(frozen=True)
+class Mutation:
+    name: str
+    file: str  # relative to port/
+    old: str
+    new: str
+    what: str
+
+
+MUTATIONS: tuple[Mutation, ...] = (
+    Mutation("cliff_slide_sign_flipped", "transition/transition.py",
+             "        if angle <= 0.0:\n            self._hit(\"cliff_slide:normal_kept\")",
+             "        if angle > 0.0:\n            self._hit(\"cliff_slide:normal_kept\")",
+             "CliffSlide's sign test flipped: slides toward the cliff instead of along it"),
+    Mutation("edge_slide_back_probe_skipped", "transition/transition.py",
+             "        sp.add_offset_to_check_pos(offset)\n\n        self.step_down(step_down_height, zval)\n",
+             "        sp.add_offset_to_check_pos(offset)\n\n",
+             "EdgeSlide's back-probe (the StepDown from the previous position) skipped"),
+    Mutation("adjust_offset_block_offset_dropped", "transition/transition.py",
+             "dist = dot(glob_sphere.center - block_offset, ci.contact_plane.normal)",
+             "dist = dot(glob_sphere.center, ci.contact_plane.normal)",
+             "AdjustOffset ignores the block offset of a contact plane in another landblock"),
+    Mutation("cliff_slide_block_offset_dropped", "transition/transition.py",
+             "angle = dot(collide_normal, offset + block_offset)",
+             "angle = dot(collide_normal, offset)",
+             "CliffSlide ignores the block offset between current and check cell"),
+    Mutation("step_down_one_sphere_halved_differently", "transition/transition.py",
+             "step_down_height = sp.global_sphere[0].radius * 0.5",
+             "step_down_height = sp.global_sphere[0].radius * 0.25",
+             "the one-sphere step-down cap is r/4 instead of r/2"),
+    Mutation("step_down_two_halves_made_thirds", "transition/transition.py",
+             "step_down_height = step_down_height * 0.5",
+             "step_down_height = step_down_height * 0.333",
+             "the two half step-downs are thirds"),
+    Mutation("validate_walkable_contact_test_strict", "transition/object_info.py",
+             "        if dist >= -EPSILON:\n            if dist > EPSILON:",
+             "        if dist > -EPSILON:\n            if dist > EPSILON:",
+             "ValidateWalkable's sphere-on-plane test `>=` made `>`"),
+    Mutation("validate_walkable_touch_band_widened", "transition/object_info.py",
+             "            if dist > EPSILON:\n                return TransitionState.OK",
+             "            if dist > EPSILON * 4:\n                return TransitionState.OK",
+             "ValidateWalkable treats a sphere up to 4 epsilon above the ground as touching it"),
+    Mutation("step_down_interp_floor_raised", "transition/object_info.py",
+             "if interp >= path.walk_interp or interp < -0.1:",
+             "if interp >= path.walk_interp or interp < 0.0:",
+             "the step-down interpolation accepts no overshoot (-0.1 made 0)"),
+    Mutation("edge_slide_cliff_threshold_lowered", "transition/transition.py",
+             "if ci.contact_plane_valid and ci.contact_plane.normal.z < zval:",
+             "if ci.contact_plane_valid and ci.contact_plane.normal.z < zval * 0.9:",
+             "EdgeSlide takes slopes just past FloorZ for precipices, not cliffs"),
+    Mutation("block_offset_x_sign_flipped", "land/land_defs.py",
+             "(local_to[0] - local_from[0]) * SQUARE_LENGTH",
+             "(local_from[0] - local_to[0]) * SQUARE_LENGTH",
+             "GetBlockOffset's x offset has the wrong sign"),
+    Mutation("partial_water_depth_changed", "land/landblock_struct.py",
+             "return s(WATER_DEPTH_PARTIAL_WATER) if has_water != 0 else s(WATER_DEPTH_DRY)",
+             "return s(WATER_DEPTH_DRY) if has_water != 0 else s(WATER_DEPTH_DRY)",
+             "a partly flooded cell's water corner sinks the sphere like dry land"),
+    Mutation("walkable_floor_z_one_percent_lower", "physics_obj.py",
+             "return bool(normal.z >= FLOOR_Z)",
+             "return bool(normal.z >= FLOOR_Z * 0.99)",
+             "IsValidWalkable accepts slopes 1% steeper than FloorZ"),
+    Mutation("num_steps_divides_instead", "transition/transition.py",
+             "offset_per_step = offset * (s(1.0) / s(num_steps))",
+             "offset_per_step = offset / s(num_steps)",
+             "CalcNumSteps divides by the step count instead of multiplying by its reciprocal"),
+)
+
+
+_loaded: dict[str, object] = {}
+_tmp = None
+
+
+def load_mutant(index: int):
+    """The mutated port's run_scene for MUTATIONS[index] (cached per process)."""
+    global _tmp
+    m = MUTATIONS[index]
+    if m.name in _loaded:
+        return _loaded[m.name]
+    if _tmp is None:
+        _tmp = tempfile.mkdtemp(prefix="acconform-mutants-")
+        sys.path.insert(0, _tmp)
+    pkg = f"acconform_mutant_{index}"
+    dest = Path(_tmp) / pkg
+    shutil.copytree(PORT_DIR, dest, ignore=shutil.ignore_patterns("__pycache__"))
+    for f in dest.rglob("*.py"):
+        text = f.read_text()
+        if "acconform.port" in text:
+            f.write_text(text.replace("acconform.port", pkg))
+    target = dest / m.file
+    text = target.read_text()
+    count = text.count(m.old)
+    if count != 1:
+        raise AssertionError(f"mutation {m.name}: expected its text once in port/{m.file}, found {count} times")
+    target.write_text(text.replace(m.old, m.new))
+    importlib.invalidate_caches()
+    run = importlib.import_module(f"{pkg}.run").run_scene
+    _loaded[m.name] = run
+    return run
