@@ -24,8 +24,8 @@ BLOCK = 192.0
 CELL = 24.0
 
 # Typical Setup spheres: humans 0.35-0.5 m; the 2-sphere form stacks a head sphere above.
-RADII = (0.3, 0.35, 0.4, 0.48, 0.5, 1.0)
-STEP_HEIGHTS = (0.0, 0.01, 0.04, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0, 1.5, 2.0)
+RADII = tuple(to_f32(r) for r in (0.3, 0.35, 0.4, 0.48, 0.5, 1.0))
+STEP_HEIGHTS = tuple(to_f32(h) for h in (0.0, 0.01, 0.04, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0, 1.5, 2.0))
 
 
 def cell_of(bx: int, by: int, lx: float, ly: float) -> int:

@@ -124,7 +124,7 @@ def polygon_shape(verts) -> BSPShape:
 
 # ---------------------------------------------------------------- strategies
 
-STEP_SIZES = (0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 1.0)
+STEP_SIZES = tuple(to_f32(h) for h in (0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 1.0))
 
 
 @st.composite
