@@ -1,10 +1,13 @@
-"""PhysicsObj: transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, Equals.
+"""PhysicsObj: transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, add_shadows_to_cell, IsPlayer, Equals.
 
 The part of ACE's PhysicsObj.cs a transition uses: the set-up PhysicsObj.transition does before
-FindValidPosition, and the members the transition reads back (walkable checks, StopVelocity's
-set_velocity). The mover's PartArray is reduced to what it answers here: its Setup's spheres,
-step heights and AllowFreeHeading; the WeenieObj is ACE's WeenieObject.DummyObject (no player,
-creature or PK flags), which is what a PhysicsObj made without a WorldObject carries.
+FindValidPosition, the members the transition reads back (walkable checks, StopVelocity's
+set_velocity), and a static object's side: FindObjCollisions (BSP through the PartArray, or the
+Setup's spheres / cylspheres) and its registration as a shadow object in the cells it overlaps.
+Both the mover and the static objects carry a PartArray over a Setup (port/part_array.py,
+port/setup.py), built as the oracle builds them (see run.py). The WeenieObj is ACE's
+WeenieObject.DummyObject (no player, creature or PK flags), which is what a PhysicsObj made
+without a WorldObject carries; DatObject stays false (the oracle does not set it).
 """
 
 from __future__ import annotations
@@ -16,6 +19,7 @@ from acconform.numerics import Plane, Vector3, dot
 
 from .anchors import anchor
 from .constants import DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z
+from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
 
@@ -40,14 +44,6 @@ class DummyWeenie:
         return False
 
 
-@dataclass(slots=True)
-class ShadowObj:
-    """Common/ShadowObj.cs: an object's entry in a cell it overlaps."""
-
-    physics_obj: "PhysicsObj"
-    cell: object
-
-
 @dataclass(slots=True, eq=False)
 class PhysicsObj:
     id: int
@@ -60,18 +56,20 @@ class PhysicsObj:
     contact_plane_cell_id: int = 0
     sliding_normal: Vector3 | None = None
     scale: object = 1.0
-    spheres: list = field(default_factory=list)  # PartArray.GetSphere(): the Setup's spheres
-    setup_step_up_height: object = 0.0
-    setup_step_down_height: object = 0.0
-    has_part_array: bool = True
-    allows_free_heading: bool = False
+    part_array: object = None  # port.part_array.PartArray
     weenie_obj: object = field(default_factory=DummyWeenie)
+    dat_object: bool = False
     projectile_target: object = None
     parent: object = None
-    is_player: bool = False
     is_sight_obj: bool = False
     jumped_this_frame: bool = False
-    shape: object = None  # a static object's collision shape (see find_obj_collisions)
+    shadow_objects: dict = field(default_factory=dict)  # cell id -> ShadowObj (a .NET Dictionary)
+    num_shadow_objects: int = 0
+
+    @property
+    def is_player(self) -> bool:
+        """``IsPlayer => ID >= 0x50000001 && ID <= 0x5FFFFFFF`` (the mover's id is in that range)."""
+        return 0x50000001 <= self.id <= 0x5FFFFFFF
 
     @anchor(None, "PhysicsObj.cs:Equals")
     def equals(self, obj) -> bool:
@@ -81,16 +79,41 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::GetStepUpHeight", "PhysicsObj.cs:GetStepUpHeight")
     def get_step_up_height(self):
-        """PartArray.GetStepUpHeight: Setup.StepUpHeight * PartArray.Scale.Z (the object's scale)."""
-        if not self.has_part_array:
+        if self.part_array is None:
             return type(self.scale)(0.0)
-        return self.setup_step_up_height * self.scale
+        return self.part_array.get_step_up_height()
 
     @anchor("CPhysicsObj::GetStepDownHeight", "PhysicsObj.cs:GetStepDownHeight")
     def get_step_down_height(self):
-        if not self.has_part_array:
+        if self.part_array is None:
             return type(self.scale)(0.0)
-        return self.setup_step_down_height * self.scale
+        return self.part_array.get_step_down_height()
+
+    @anchor("CPhysicsObj::CacheHasPhysicsBSP", "PhysicsObj.cs:CacheHasPhysicsBSP")
+    def cache_has_physics_bsp(self) -> bool:
+        if self.part_array is not None and self.part_array.cache_has_physics_bsp():
+            self.state |= PhysicsState.HasPhysicsBSP
+            return True
+        self.state &= ~int(PhysicsState.HasPhysicsBSP)
+        return False
+
+    @anchor("CPhysicsObj::SetScaleStatic", "PhysicsObj.cs:SetScaleStatic")
+    def set_scale_static(self, scale) -> None:
+        self.scale = scale
+        if self.part_array is not None:
+            self.part_array.set_scale_internal(Vector3(scale, scale, scale))
+
+    @anchor("CPhysicsObj::add_shadows_to_cell", "PhysicsObj.cs:add_shadows_to_cell(ObjCell)")
+    def add_shadows_to_cell(self, cell) -> None:
+        shadow_obj = ShadowObj.create(self, cell)
+        # ShadowObjects.Add or overwrite: a .NET Dictionary keeps the key's slot either way
+        self.shadow_objects[cell.id] = shadow_obj
+
+        if cell is not None:
+            cell.add_shadow_object(shadow_obj)
+
+        if self.part_array is not None:
+            self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
 
     @anchor("CPhysicsObj::check_contact", "PhysicsObj.cs:check_contact")
     def check_contact(self, contact: bool) -> bool:
@@ -120,7 +143,7 @@ class PhysicsObj:
             if self.transient_state & TransientState.Sliding:
                 transition.init_sliding_normal(self.sliding_normal)
 
-        if self.has_part_array and self.allows_free_heading:
+        if self.part_array is not None and self.part_array.allows_free_heading():
             obj_info.state |= ObjectInfoState.FreeRotate
 
         if self.state & PhysicsState.Missile:
@@ -151,7 +174,72 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::FindObjCollisions", "PhysicsObj.cs:FindObjCollisions")
     def find_obj_collisions(self, transition: Transition) -> TransitionState:
-        raise NotImplementedError("static object collisions are not ported yet")
+        ethereal = False
+
+        if self.state & PhysicsState.Ethereal and self.state & PhysicsState.IgnoreCollisions:
+            return TransitionState.OK
+
+        if (self.weenie_obj is not None and transition.object_info.state & ObjectInfoState.IsViewer
+                and self.weenie_obj.is_creature):
+            return TransitionState.OK
+
+        if self.state & PhysicsState.Ethereal or not self.state & PhysicsState.Static and transition.object_info.ethereal:
+            if transition.sphere_path.step_down:
+                return TransitionState.OK
+            ethereal = True
+        transition.sphere_path.obstruction_ethereal = ethereal
+
+        state = transition.object_info.state
+
+        wobj = self.weenie_obj
+        exemption = not (self.dat_object or not wobj.is_player or not state & ObjectInfoState.IsPlayer
+                         or state & ObjectInfoState.IsImpenetrable or wobj.is_impenetrable()
+                         or state & ObjectInfoState.IsPK and wobj.is_pk()
+                         or state & ObjectInfoState.IsPKLite and wobj.is_pk_lite())
+
+        missile_ignore = transition.object_info.missile_ignore(self)
+
+        is_creature = bool(self.state & PhysicsState.Missile) or self.weenie_obj is not None and self.weenie_obj.is_creature
+
+        pa = self.part_array
+        if not self.state & PhysicsState.HasPhysicsBSP or missile_ignore or exemption:
+            if pa is None or pa.get_num_cylsphere() == 0 or missile_ignore or exemption:
+                if pa is not None and pa.get_num_sphere() != 0 and not missile_ignore and not exemption:
+                    spheres = pa.get_sphere()
+                    for i in range(pa.get_num_sphere()):
+                        intersects = spheres[i].intersects_sphere(self.position, self.scale, transition, is_creature)
+                        if intersects != TransitionState.OK:
+                            return self.find_obj_collisions_inner(transition, intersects, ethereal, is_creature)
+            else:
+                if pa is not None and pa.get_num_cylsphere() != 0 and not missile_ignore and not exemption:
+                    cyl_spheres = pa.get_cyl_sphere()
+                    for i in range(pa.get_num_cylsphere()):
+                        intersects = cyl_spheres[i].intersects_sphere_at(self.position, self.scale, transition)
+                        if intersects != TransitionState.OK:
+                            return self.find_obj_collisions_inner(transition, intersects, ethereal, is_creature)
+        elif pa is not None:
+            collided = pa.find_obj_collisions(transition)
+            if collided != TransitionState.OK:
+                return self.find_obj_collisions_inner(transition, collided, ethereal, is_creature)
+
+        transition.sphere_path.obstruction_ethereal = False
+        return TransitionState.OK
+
+    @anchor("CPhysicsObj::FindObjCollisions_Inner", "PhysicsObj.cs:FindObjCollisions_Inner")
+    def find_obj_collisions_inner(self, transition: Transition, result: TransitionState, ethereal: bool,
+                                  is_creature: bool) -> TransitionState:
+        if not transition.sphere_path.step_down:
+            if self.state & PhysicsState.Static:
+                if not transition.object_info.state & ObjectInfoState.Contact:
+                    transition.collision_info.collided_with_environment = True
+            elif ethereal or is_creature and transition.object_info.state & ObjectInfoState.IgnoreCreatures:
+                result = TransitionState.OK
+                transition.collision_info.collision_normal_valid = False
+                transition.collision_info.add_object(self, TransitionState.OK)
+            else:
+                transition.collision_info.add_object(self, result)
+        transition.sphere_path.obstruction_ethereal = False
+        return result
 
     @anchor("CPhysicsObj::transition", "PhysicsObj.cs:transition")
     def transition(self, old_pos, new_pos, admin_move: bool, lscape, trace=None) -> tuple[Transition, bool]:
@@ -163,13 +251,13 @@ class PhysicsObj:
         trans.init_object(self, object_info.state)
 
         mode = lscape.mode
-        if not self.has_part_array or len(self.spheres) == 0:
+        if self.part_array is None or self.part_array.get_num_sphere() == 0:
             from .geom.sphere import Sphere
 
             dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
             trans.init_sphere(1, [dummy], mode.scalar(1.0))
         else:
-            trans.init_sphere(len(self.spheres), self.spheres, self.scale)
+            trans.init_sphere(self.part_array.get_num_sphere(), self.part_array.get_sphere(), self.scale)
 
         trans.init_path(self.cur_cell, old_pos, new_pos)
 

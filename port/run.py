@@ -2,7 +2,10 @@
 
 The world (LScape) and the mover (PhysicsObj) are built from the scene the way the oracle builds
 ACE's; the outcome reads the same fields the oracle reads. A Python exception inside the port
-becomes ``Outcome(error=...)``: a verdict, not a crash. Pass a ``collections.Counter`` as
+becomes ``Outcome(error=...)``: a verdict, not a crash. An AceException (port/errors.py: where
+ACE itself throws) reads ``"<.NET type>: <message>"``, as the oracle formats ACE's exceptions.
+Static objects are built and registered as the oracle builds them (the conventions are
+acconform.oracle.pack's: shadow_cells, mover_setup_dims). Pass a ``collections.Counter`` as
 `trace` to count the branches the run took (names in acconform.port.transition.branches).
 """
 
@@ -12,16 +15,22 @@ import numpy as np
 
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome
-from acconform.scene import Scene
+from acconform.oracle.pack import mover_setup_dims, shadow_cells
+from acconform.scene import CylSphereShape, Scene, SphereShape, StaticObject
 
 from .anchors import anchor
+from .errors import AceException
 from .frame import Position
+from .geom.cyl_sphere import CylSphere
 from .geom.sphere import Sphere
+from .gfx_obj import GfxObj
 from .land.lscape import LScape
+from .part_array import PartArray, PhysicsPart
 from .physics_obj import PhysicsObj
+from .setup import Setup
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 
-# the id the mover gets (ACE's PhysicsObj.ID; only compared for equality with static objects)
+# the mover's PhysicsObj.ID, as the oracle's: player range, so PhysicsObj.IsPlayer is true
 MOVER_ID = 0x50000001
 
 
@@ -34,7 +43,9 @@ def _plane_state(valid: bool, cell: int, is_water: bool, plane: Plane) -> Contac
 
 
 def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
-    """The mover as a PhysicsObj: Setup spheres and step heights, flags, contact plane, velocity."""
+    """The mover as the oracle builds it: a PhysicsObj with a PartArray over a Setup of its spheres,
+    Height/Radius (pack.mover_setup_dims) and step heights; SetScaleStatic; flags, velocity,
+    contact plane, sliding normal, position and cell."""
     mode = lscape.mode
     m = scene.mover
     s = mode.scalar
@@ -44,22 +55,56 @@ def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
     else:
         contact_plane = Plane(mode.vec(0, 0, 0), s(0.0))
         contact_cell = 0
-    position = Position.from_record(m.begin, mode)
-    return PhysicsObj(
-        id=MOVER_ID,
-        state=m.state,
-        position=position,
-        cur_cell=lscape.get_landcell(m.begin.cell),
-        transient_state=m.transient_state,
-        velocity=mode.vec(*m.velocity),
-        contact_plane=contact_plane,
-        contact_plane_cell_id=contact_cell,
-        sliding_normal=mode.vec(*(m.sliding_normal or (0.0, 0.0, 0.0))),
-        scale=s(m.scale),
-        spheres=[Sphere(mode.vec(*sp.center), s(sp.radius)) for sp in m.spheres],
-        setup_step_up_height=s(m.step_up_height),
-        setup_step_down_height=s(m.step_down_height),
-    )
+    height, radius = mover_setup_dims(scene)
+    obj = PhysicsObj(id=MOVER_ID, state=0, position=None)
+    setup = Setup.create([Sphere(mode.vec(*sp.center), s(sp.radius)) for sp in m.spheres], [], s(height), s(radius),
+                         s(m.step_up_height), s(m.step_down_height))
+    obj.part_array = PartArray(owner=obj, setup=setup, num_parts=0, parts=[], scale=mode.vec(1, 1, 1))
+    obj.set_scale_static(s(m.scale))
+    obj.state = m.state
+    obj.transient_state = m.transient_state
+    obj.velocity = mode.vec(*m.velocity)
+    obj.contact_plane = contact_plane
+    obj.contact_plane_cell_id = contact_cell
+    obj.sliding_normal = mode.vec(*(m.sliding_normal or (0.0, 0.0, 0.0)))
+    obj.position = Position.from_record(m.begin, mode)
+    obj.cur_cell = lscape.get_landcell(m.begin.cell)
+    return obj
+
+
+def build_static(record: StaticObject, landblock_ids: list[int], lscape: LScape) -> PhysicsObj:
+    """A scene StaticObject as the oracle builds it (Facade.cs BuildStatic): a PhysicsObj whose
+    PartArray's Setup holds the sphere or cylsphere; a BSP shape is one PhysicsPart (GfxObj with
+    PhysicsBSP and PhysicsSphere, Pos = the object's position). State is the scene's flags as
+    given (the oracle sets State directly; ACE's makeObject would also CacheHasPhysicsBSP).
+    Registered as a shadow object in `shadow_cells`' cells, in that order."""
+    mode = lscape.mode
+    s = mode.scalar
+    obj = PhysicsObj(id=record.id, state=0, position=None)
+    shape = record.shape
+    spheres, cyl_spheres, gfx = [], [], None
+    if isinstance(shape, SphereShape):
+        spheres.append(Sphere.from_rec(shape.sphere, mode))
+    elif isinstance(shape, CylSphereShape):
+        cyl_spheres.append(CylSphere.from_rec(shape, mode))
+    else:
+        gfx = GfxObj.from_shape(shape, mode)
+    setup = Setup.create(spheres, cyl_spheres, s(0.0), s(0.0), s(0.0), s(0.0))
+    obj.part_array = PartArray(owner=obj, setup=setup, num_parts=0, parts=[], scale=mode.vec(1, 1, 1))
+    pos = Position.from_record(record.position, mode)
+    if gfx is not None:
+        part = PhysicsPart(gfx_obj=gfx, gfx_obj_scale=mode.vec(1, 1, 1), physics_obj=obj, pos=pos.copy())
+        obj.part_array.parts.append(part)
+        obj.part_array.num_parts = 1
+    obj.state = record.state
+    obj.position = pos.copy()
+    obj.set_scale_static(s(record.scale))
+    for k, cell_id in enumerate(shadow_cells(record, landblock_ids)):
+        cell = lscape.get_landcell(cell_id)
+        if k == 0:
+            obj.cur_cell = cell
+        obj.add_shadows_to_cell(cell)
+    return obj
 
 
 @anchor(None, "PhysicsObj.cs:transition", "the scene -> outcome driver around PhysicsObj.transition")
@@ -68,14 +113,17 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None) -> Outcome:
     try:
         with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
             return _run(scene, get_mode(mode), trace)
-    except Exception as e:  # a port exception is a verdict
+    except AceException as e:  # where ACE throws: its .NET type, as the oracle reports ACE's
+        return Outcome(error=e.verdict())
+    except Exception as e:  # any other port exception is a verdict too (a port bug or gap)
         return Outcome(error=f"{type(e).__name__}: {e}")
 
 
 def _run(scene: Scene, mode, trace) -> Outcome:
-    if scene.objects:
-        raise NotImplementedError("static objects in scenes are not ported yet")
     lscape = LScape(scene, mode)
+    landblock_ids = [lb.id for lb in scene.landblocks]
+    for record in scene.objects:
+        build_static(record, landblock_ids, lscape)
     mover = build_mover(scene, lscape)
     old_pos = mover.position.copy()
     new_pos = Position.from_record(scene.mover.end, mode)

@@ -86,7 +86,7 @@ def handle_move_restriction(self, transition) -> bool:
 
 
 # ACE: class LandCell : SortCell : ObjCell -- the inherited behaviour, then LandCell's overrides.
-for _name in ("equals", "find_obj_collisions", "check_entry_restrictions", "sort_cell_find_collisions",
+for _name in ("equals", "add_shadow_object", "find_obj_collisions", "check_entry_restrictions", "sort_cell_find_collisions",
               "sort_cell_find_transit_cells"):
     setattr(LandCell, _name, getattr(ObjCell, _name))
 LandCell.find_collisions = find_collisions

@@ -15,6 +15,7 @@ from enum import IntEnum
 from acconform.numerics import MONO, Runtime, Vector3, cast_float, cs_floor, wrap_i32, wrap_u32
 from acconform.port.anchors import anchor
 from acconform.port.constants import EPSILON
+from acconform.port.errors import InvalidOperationException
 
 # LandDefs constants (C# int consts)
 BLOCK_CELL_ID = 0x0000FFFF
@@ -59,21 +60,15 @@ class WaterType(IntEnum):
     EntirelyWater = 0x2
 
 
-class InvalidOperation(Exception):
-    """What .NET raises where ACE reads ``.Value`` of an empty ``Nullable`` (InvalidOperationException).
-
-    ACE crashes there (e.g. GetBlockOffset for landblock column 0xFF); the port raises this so the
-    run reports the same verdict instead of going on with a made-up value.
-    """
-
-    def __init__(self, where: str):
-        super().__init__(f"Nullable object must have a value. ({where})")
+# ACE's "Nullable object must have a value" (InvalidOperationException), now in port/errors.py;
+# the old name stays for callers that catch it.
+InvalidOperation = InvalidOperationException
 
 
 def value_of(lcoord, where: str):
-    """C# ``nullable.Value``: the value, or InvalidOperation when there is none."""
+    """C# ``nullable.Value``: the value, or InvalidOperationException when there is none."""
     if lcoord is None:
-        raise InvalidOperation(where)
+        raise InvalidOperationException(where)
     return lcoord
 
 
@@ -112,7 +107,7 @@ def adjust_to_outside_pos(pos) -> bool:
 def get_block_offset(cell_from: int, cell_to: int) -> Vector3:
     """The offset from cell_from's landblock to cell_to's (Python floats, see the module note).
 
-    Raises InvalidOperation where ACE's ``.Value`` throws: a landblock in column or row 0xFF.
+    Raises InvalidOperationException where ACE's ``.Value`` throws: a landblock in column or row 0xFF.
     """
     if cell_from >> BLOCK_PART_SHIFT == cell_to >> BLOCK_PART_SHIFT:
         return Vector3(0.0, 0.0, 0.0)

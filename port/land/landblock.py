@@ -92,7 +92,7 @@ class Landblock(LandblockStruct):
     def get_landcell(self, cell_id: int) -> LandCell | None:
         """This block's cell with that id, None when the slot holds another id.
 
-        Raises land_defs.InvalidOperation where ACE's ``gid_to_lcoord(cellID).Value`` throws.
+        Raises InvalidOperationException (port.errors) where ACE's ``gid_to_lcoord(cellID).Value`` throws.
         """
         lcoord = land_defs.value_of(land_defs.gid_to_lcoord(cell_id), "Landblock.get_landcell")
         idx = (int(lcoord[1]) & 7) + (int(lcoord[0]) & 7) * self.side_cell_count

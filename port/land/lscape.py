@@ -3,15 +3,18 @@
 ACE keeps loaded landblocks in statics (LScape.Landblocks on the client, LandblockManager on
 the server) and loads a missing one from the cell DAT. A run here builds one LScape from the
 scene: every landblock the scene lists, built and PostInit'ed up front, in a dict keyed by
-landblock id (0xXXYYFFFF). There is no DAT, so a landblock the scene does not list is absent
-(get_landblock returns None) where ACE would load it; indoor cells (EnvCells) are not
-supported and get_landcell returns None for them.
+landblock id (0xXXYYFFFF). There is no DAT: where ACE would load a landblock the scene does not
+list, DAT-less ACE throws NullReferenceException (LandblockManager's landblock has no physics
+landblock), and get_landblock raises the port's NullReferenceException (port/errors.py), which
+run_scene reports as the same verdict. Indoor cells (EnvCells) are not supported and
+get_landcell returns None for them.
 """
 
 from __future__ import annotations
 
 from acconform.numerics import Mode
 from acconform.port.anchors import anchor
+from acconform.port.errors import NullReferenceException
 from acconform.port.land import land_defs
 from acconform.port.land.land_cell import LandCell
 from acconform.port.land.landblock import Landblock
@@ -29,17 +32,19 @@ class LScape:
             landblock.post_init()
 
     @anchor("LScape::get_landblock", "LScape.cs:get_landblock")
-    def get_landblock(self, block_cell_id: int) -> Landblock | None:
+    def get_landblock(self, block_cell_id: int) -> Landblock:
         landblock_id = block_cell_id | 0xFFFF
-        return self.landblocks.get(landblock_id)
+        landblock = self.landblocks.get(landblock_id)
+        if landblock is None:
+            raise NullReferenceException(
+                f"landblock {landblock_id:08X} is not in the scene (ACE would read it from the DAT)")
+        return landblock
 
     @anchor("LScape::get_landcell", "LScape.cs:get_landcell")
     def get_landcell(self, block_cell_id: int) -> LandCell | None:
         """The outdoor cell with that id. Unlike Landblock.get_landcell, ACE does not check the
         slot's id here; the slot comes from gid_to_lcoord without the env check."""
         landblock = self.get_landblock(block_cell_id)
-        if landblock is None:
-            return None
         cell_id = block_cell_id & 0xFFFF
         if cell_id < 0x100:
             lcoord = land_defs.gid_to_lcoord(block_cell_id, False)

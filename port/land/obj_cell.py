@@ -1,4 +1,4 @@
-"""ObjCell and SortCell: FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells, point_in_cell, Equals, find_cell_list (the sphere overloads), GetVisible.
+"""ObjCell and SortCell: AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells, point_in_cell, Equals, find_cell_list (the sphere overloads), GetVisible.
 
 ACE's Common/ObjCell.cs and Common/SortCell.cs: the base behaviour every cell has. LandCell
 (land_cell.py) carries the fields; land_cell_collision.py gives it these methods and its own
@@ -32,6 +32,13 @@ class ObjCell:
         if obj_cell is None:
             return False
         return self.id == obj_cell.id
+
+    @anchor("CObjCell::add_shadow_object", "ObjCell.cs:AddShadowObject")
+    def add_shadow_object(self, shadow_obj) -> None:
+        """Appends to ShadowObjectList (FindObjCollisions walks it from the end). NumShadowObjects,
+        which nothing in a transition reads, is not kept."""
+        self.shadow_object_list.append(shadow_obj)
+        shadow_obj.cell = self
 
     @anchor("CObjCell::find_collisions", "ObjCell.cs:FindCollisions")
     def find_collisions(self, transition) -> TransitionState:
@@ -81,7 +88,16 @@ class ObjCell:
         if not obj.is_player or transition.collision_info.verified_restrictions or (
                 begin_cell is not None and begin_cell.id == self.id):
             return TransitionState.OK
-        raise NotImplementedError("entry restrictions (housing barriers) for players are not ported")
+
+        if transition.object_info.object is None:
+            return TransitionState.Collided
+
+        weenie_obj = obj.weenie_obj
+        if weenie_obj is not None:
+            if obj.is_player:
+                if self.restriction_obj != 0:
+                    raise NotImplementedError("entry restrictions (housing barriers) are not ported")
+        return TransitionState.OK
 
     @anchor(None, "ObjCell.cs:handle_move_restriction")
     def handle_move_restriction(self, transition) -> bool:

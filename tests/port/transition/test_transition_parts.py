@@ -78,17 +78,19 @@ def test_fast_mode_runs_the_same_walk_within_a_few_ulps():
 
 @pytest.mark.anchor("CTransition::find_transitional_position")
 def test_a_port_exception_becomes_an_error_verdict():
+    import dataclasses
     import sys
     from pathlib import Path
 
-    from acconform.scene import Frame, Position as PosRec, SphereRec, SphereShape, StaticObject
+    from acconform.scene import Frame, Position as PosRec
 
     sys.path.insert(0, str(Path(__file__).parent))
     from terrain_scenes import SCENES
     from acconform.port.run import run_scene
 
     scene = SCENES["flat-short"][0]
-    post = StaticObject(0x70000001, PosRec(0xA9B40001, Frame((13.0, 12.0, 20.0))), SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)))
-    out = run_scene(scene.replace(objects=(post,)))  # static objects are not ported yet
-    assert out.error is not None and out.error.startswith("NotImplementedError")
+    # walk west out of landblock A9B4 into A8B4, which the scene does not list: ACE would read the DAT
+    end = PosRec(scene.mover.end.cell, Frame((-1.0, 12.0, 20.0)))
+    out = run_scene(scene.replace(mover=dataclasses.replace(scene.mover, end=end)))
+    assert out.error == "NullReferenceException: landblock A8B4FFFF is not in the scene (ACE would read it from the DAT)"
     assert out.ok is False and out.cell == 0
