@@ -171,10 +171,11 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
         last: list = []
         ran = [0]
 
-        @hseed(seed * 7919 + round_)
+        # settings outside seed: @seed alone switches the example database off
         @settings(max_examples=n - done, database=db, deadline=None, verbosity=Verbosity.quiet,
                   suppress_health_check=list(HealthCheck), report_multiple_bugs=False,
                   phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink])
+        @hseed(seed * 7919 + round_)
         @given(scenes(kinds))
         def differential(scene):
             if should_stop():

@@ -1,0 +1,124 @@
+"""The comparator, field by field: every Outcome field is compared and reported with both values."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from acconform.compare import FAST_ABS, FAST_ULPS, Difference, compare, float_equal, ulp_distance
+from acconform.errors import AcconformError
+from acconform.numerics import f32_from_bits
+from acconform.outcome import ContactPlaneState, NormalState, Outcome
+
+BASE = Outcome(ok=True, cell=0xA9B40021, origin=(10.0, 20.0, 30.5), object_info_state=3,
+               contact_plane=ContactPlaneState(True, 0xA9B40021, False, (0.0, 0.0, 1.0), -30.0),
+               last_known_contact_plane=ContactPlaneState(True, 0xA9B40021, False, (0.0, 0.0, 1.0), -30.0),
+               check_cell=0xA9B40021, walkable=True)
+
+
+def nudge(x: float, ulps: int = 1) -> float:
+    return f32_from_bits(int(np.float32(x).view(np.uint32)) + ulps)
+
+
+def fields_of(diffs):
+    return [d.field for d in diffs]
+
+
+def test_compare_finds_nothing_between_equal_outcomes():
+    assert compare(BASE, BASE) == []
+    assert compare(BASE, BASE, "fast") == []
+
+
+def test_compare_reports_a_flipped_contact_plane_bit():
+    other = dataclasses.replace(BASE, contact_plane=dataclasses.replace(BASE.contact_plane, valid=False))
+    assert compare(BASE, other) == [Difference("contact_plane.valid", True, False)]
+    assert compare(BASE, other, "fast") == [Difference("contact_plane.valid", True, False)]
+
+
+@pytest.mark.parametrize("field,value", [
+    ("ok", False), ("cell", 0xA9B40022), ("check_cell", 0), ("object_info_state", 1),
+    ("collided_with_environment", True), ("frames_stationary_fall", 1), ("walkable", False),
+    ("step_up", True), ("neg_poly_hit", True),
+])
+def test_compare_reports_each_discrete_field_in_every_mode(field, value):
+    other = dataclasses.replace(BASE, **{field: value})
+    for mode in ("exact", "fast"):
+        assert compare(BASE, other, mode) == [Difference(field, getattr(BASE, field), value)]
+
+
+@pytest.mark.parametrize("sub", ["contact_plane", "last_known_contact_plane"])
+def test_compare_reports_each_contact_plane_field(sub):
+    cp = getattr(BASE, sub)
+    for name, value, want in [("cell", 1, f"{sub}.cell"), ("is_water", True, f"{sub}.is_water"),
+                              ("normal", (0.0, 1.0, 1.0), f"{sub}.normal[1]"), ("d", -31.0, f"{sub}.d")]:
+        other = dataclasses.replace(BASE, **{sub: dataclasses.replace(cp, **{name: value})})
+        assert fields_of(compare(BASE, other)) == [want]
+
+
+@pytest.mark.parametrize("sub", ["collision_normal", "sliding_normal"])
+def test_compare_reports_each_normal_field(sub):
+    other = dataclasses.replace(BASE, **{sub: NormalState(True, (0.0, 0.0, 0.0))})
+    assert fields_of(compare(BASE, other)) == [f"{sub}.valid"]
+    other = dataclasses.replace(BASE, **{sub: NormalState(False, (0.0, -0.5, 0.0))})
+    assert fields_of(compare(BASE, other)) == [f"{sub}.vector[1]"]
+
+
+def test_compare_lists_every_differing_vector_component_with_both_values():
+    other = dataclasses.replace(BASE, origin=(nudge(10.0), 20.0, 31.0), velocity=(0.0, 0.0, -1.0),
+                                orientation=(1.0, 0.0, 0.0, 1.0))
+    diffs = compare(BASE, other)
+    assert fields_of(diffs) == ["origin[0]", "origin[2]", "orientation[3]", "velocity[2]"]
+    assert diffs[0].a == 10.0 and diffs[0].b == nudge(10.0)
+    assert "origin[0]: port=10.0 (0x41200000) oracle=10.000001 (0x41200001)" == diffs[0].render()
+
+
+def test_exact_mode_compares_floats_by_bits():
+    assert not float_equal(0.0, -0.0, "exact")
+    assert float_equal(math.nan, math.nan, "exact")
+    assert not float_equal(math.nan, f32_from_bits(0x7FC00001), "exact")  # another NaN payload
+    assert not float_equal(1.0, nudge(1.0), "exact")
+
+
+def test_fast_mode_allows_the_documented_ulps_or_absolute_slack():
+    assert float_equal(1000.0, nudge(1000.0, FAST_ULPS), "fast")
+    assert not float_equal(1000.0, nudge(1000.0, FAST_ULPS + 1), "fast")
+    assert float_equal(0.0, FAST_ABS * 0.99, "fast")
+    assert float_equal(0.0, -0.0, "fast")
+    assert float_equal(math.nan, f32_from_bits(0x7FC00001), "fast")
+    assert not float_equal(math.inf, 3.4e38, "fast")
+    assert ulp_distance(-0.0, 0.0) == 0 and ulp_distance(f32_from_bits(1), f32_from_bits(0x80000001)) == 2
+
+
+def test_error_presence_always_counts_and_its_text_only_in_exact_mode():
+    a = dataclasses.replace(BASE, error="NullReferenceException: x")
+    b = dataclasses.replace(BASE, error="AttributeError: y")
+    assert fields_of(compare(BASE, a, "fast")) == ["error"]
+    assert fields_of(compare(a, b, "exact")) == ["error"]
+    assert compare(a, b, "fast") == []
+
+
+def test_compare_refuses_an_unknown_mode():
+    with pytest.raises(AcconformError, match="unknown comparison mode"):
+        compare(BASE, BASE, "approximately")
+
+
+def test_every_outcome_field_is_covered_by_a_field_test():
+    # a new Outcome field must show up in a difference when it changes
+    for f in dataclasses.fields(Outcome):
+        v = getattr(BASE, f.name)
+        if isinstance(v, bool):
+            new = not v
+        elif isinstance(v, int):
+            new = v + 1
+        elif isinstance(v, tuple):
+            new = tuple(c + 1.0 for c in v)
+        elif isinstance(v, ContactPlaneState):
+            new = dataclasses.replace(v, d=v.d + 1.0)
+        elif isinstance(v, NormalState):
+            new = dataclasses.replace(v, valid=not v.valid)
+        else:
+            new = "error"
+        assert compare(BASE, dataclasses.replace(BASE, **{f.name: new})), f.name

@@ -1,0 +1,101 @@
+"""The runner: clean pairs pass, planted differences are found, shrunk, saved and replayable."""
+
+from __future__ import annotations
+
+import dataclasses
+import warnings
+
+import pytest
+
+from acconform.case import Case, load_document
+from acconform.outcome import Outcome
+from acconform.runner import run_campaign
+from acconform.strategies import sample_scenes
+
+warnings.simplefilter("ignore", RuntimeWarning)
+
+
+def fake_port(scene):
+    """A stand-in backend: a cheap deterministic function of the scene."""
+    m = scene.mover
+    return Outcome(ok=True, cell=m.end.cell, origin=m.end.frame.origin, walkable=bool(m.contact_plane),
+                   object_info_state=m.transient_state)
+
+
+def buggy_when_long(scene):
+    """Wrong whenever the path leaves its start cell: a bug Hypothesis should shrink to a tiny scene."""
+    o = fake_port(scene)
+    if scene.mover.end.cell != scene.mover.begin.cell:
+        return dataclasses.replace(o, walkable=not o.walkable)
+    return o
+
+
+def test_a_clean_pair_finds_no_difference(tmp_path):
+    r = run_campaign(fake_port, fake_port, n=40, seed=1, failures_dir=tmp_path, database=None)
+    assert r.ok and r.cases == 40 and not list(tmp_path.iterdir())
+
+
+def test_a_difference_is_found_shrunk_and_written_as_a_replayable_case(tmp_path):
+    r = run_campaign(buggy_when_long, fake_port, n=300, seed=2, failures_dir=tmp_path, database=None)
+    assert len(r.found) == 1
+    f = r.found[0]
+    assert f.shrunk and f.signature == ("walkable",)
+    case = load_document(f.path)
+    assert isinstance(case, Case)
+    assert case.scene == f.case.scene and case.differences == ("walkable: port=True oracle=False",) or \
+        case.differences == ("walkable: port=False oracle=True",)
+    assert case.seed == "2" and case.mode == "exact" and case.versions.acconform
+    # shrunk: one plain terrain landblock or a neighbour, no objects, one sphere, a short hop
+    assert len(case.scene.landblocks) <= 2 and not case.scene.objects and len(case.scene.mover.spheres) == 1
+
+
+def test_keep_going_shrinks_each_new_kind_of_difference(tmp_path):
+    def two_bugs(scene):
+        o = buggy_when_long(scene)
+        return dataclasses.replace(o, step_up=True) if len(scene.mover.spheres) == 2 else o
+
+    r = run_campaign(two_bugs, fake_port, n=400, seed=3, failures_dir=tmp_path, database=None, keep_going=True)
+    sigs = {f.signature for f in r.found}
+    assert ("step_up",) in sigs and ("walkable",) in sigs
+
+
+def test_the_same_seed_finds_the_same_shrunk_case(tmp_path):
+    a = run_campaign(buggy_when_long, fake_port, n=300, seed=5, failures_dir=None, database=None)
+    b = run_campaign(buggy_when_long, fake_port, n=300, seed=5, failures_dir=None, database=None)
+    assert a.found[0].case.scene == b.found[0].case.scene and a.cases == b.cases
+
+
+def test_worker_processes_split_the_campaign_and_stop_at_the_first_difference(tmp_path):
+    r = run_campaign(fake_port, fake_port, n=60, seed=1, failures_dir=None, database=None, workers=2)
+    assert r.ok and r.cases == 60
+    r = run_campaign(buggy_when_long, fake_port, n=300, seed=2, failures_dir=tmp_path, database=None, workers=2)
+    assert len(r.found) == 1 and r.found[0].path.exists()
+
+
+def test_the_example_database_replays_a_saved_failure_first(tmp_path):
+    db = tmp_path / "db"
+    first = run_campaign(buggy_when_long, fake_port, n=300, seed=7, failures_dir=None, database=db)
+    again = run_campaign(buggy_when_long, fake_port, n=300, seed=99, failures_dir=None, database=db)
+    assert any(db.rglob("*")) and again.found[0].case.scene == first.found[0].case.scene
+
+
+def test_replay_compares_recorded_scenes_without_shrinking(tmp_path):
+    scenes = list(sample_scenes(None, 10, 1))
+    r = run_campaign(buggy_when_long, fake_port, replay=scenes, failures_dir=tmp_path, keep_going=True)
+    assert r.source == "replay" and r.cases == 10
+    assert all(not f.shrunk for f in r.found)
+    assert len(r.found) == sum(s.mover.end.cell != s.mover.begin.cell for s in scenes)
+
+
+def test_a_backend_that_raises_gives_an_error_outcome_not_a_crash(tmp_path):
+    def crashes(scene):
+        raise ZeroDivisionError("boom")
+
+    r = run_campaign(crashes, fake_port, n=20, seed=1, failures_dir=None, database=None)
+    assert "error" in r.found[0].signature and r.found[0].case.port.error == "ZeroDivisionError: boom"
+
+
+def test_a_progress_bar_goes_to_stderr(capsys):
+    run_campaign(fake_port, fake_port, n=30, seed=1, failures_dir=None, database=None, progress=True)
+    err = capsys.readouterr().err
+    assert "30/30 cases" in err and "0 differences" in err
