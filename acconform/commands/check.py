@@ -63,13 +63,22 @@ def run(args) -> int:
 
 def _oracle(args):
     """(oracle, scenes to replay or None). Exit-2 errors when there is nothing to compare against."""
-    from ..errors import OracleUnavailable
+    from ..errors import AcconformError, OracleUnavailable
     from ..oracle import get_oracle
 
-    oracle = get_oracle(args.ace, args.runtime, args.corpus)
-    if getattr(oracle, "name", "") == "live":
-        return oracle, None
-    scenes = list(oracle.scenes()) if hasattr(oracle, "scenes") else []
+    from ..oracle import live_configured
+
+    live = live_configured(args.ace)
+    try:
+        oracle = get_oracle(args.ace, args.runtime, args.corpus)
+        if getattr(oracle, "name", "") == "live":
+            return oracle, None
+        scenes = list(oracle.scenes()) if hasattr(oracle, "scenes") else []
+    except AcconformError as e:
+        if live:
+            raise
+        raise OracleUnavailable(f"nothing to check against: no ACE assembly is configured (pass --ace, set "
+                                f"ACE_ASSEMBLY or the config file) and {e}") from None
     if args.kinds is not None:
         scenes = [s for s in scenes if _kind(s) in set(args.kinds.split(","))]
     if not scenes:
@@ -82,6 +91,12 @@ def _oracle(args):
 
 
 def _kind(scene) -> str:
+    try:
+        from ..oracle.recorded import scene_kind
+
+        return scene_kind(scene)
+    except ImportError:
+        pass
     if not scene.objects:
         return "terrain"
     return "bsp" if any(o.shape.kind == "bsp" for o in scene.objects) else "obstacles"

@@ -1,0 +1,85 @@
+"""check / repro / show / coverage from the command line: exit codes and what they print."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import warnings
+
+import pytest
+
+from acconform.case import Case, Versions, write_document
+from acconform.cli import main
+from acconform.compare import compare, render
+from acconform.strategies import sample_scenes
+
+warnings.simplefilter("ignore", RuntimeWarning)
+
+
+@pytest.fixture
+def no_ace(monkeypatch, tmp_path):
+    monkeypatch.delenv("ACE_ASSEMBLY", raising=False)
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+
+
+def _port():
+    return pytest.importorskip("acconform.port.run").run_scene
+
+
+def _case(tmp_path, tamper: bool) -> str:
+    run_scene = _port()
+    scene = next(iter(sample_scenes(("terrain",), 1, 11)))
+    port = run_scene(scene)
+    oracle = dataclasses.replace(port, walkable=not port.walkable) if tamper else port
+    case = Case(scene, port, oracle, tuple(render(compare(port, oracle))), "11", "exact", Versions("0.1.0", "", ""))
+    return str(write_document(tmp_path / "case.json", case))
+
+
+def test_check_without_ace_or_corpus_exits_2_with_a_clear_message(no_ace, tmp_path, capsys):
+    pytest.importorskip("acconform.oracle.recorded", reason="the recorded oracle has not landed yet")
+    empty = tmp_path / "corpus"
+    empty.mkdir()
+    assert main(["check", "--corpus", str(empty), "-n", "5", "--no-progress"]) == 2
+    err = capsys.readouterr().err
+    assert "no ACE assembly is configured" in err and "holds no" in err
+
+
+def test_repro_of_a_case_that_still_fails_prints_the_difference_and_exits_1(no_ace, tmp_path, capsys):
+    path = _case(tmp_path, tamper=True)
+    assert main(["repro", path]) == 1
+    out = capsys.readouterr().out
+    assert "still fails" in out and "walkable: port=" in out
+
+
+def test_repro_of_a_case_that_no_longer_fails_says_so_and_exits_0(no_ace, tmp_path, capsys):
+    path = _case(tmp_path, tamper=False)
+    assert main(["repro", path]) == 0
+    assert "no longer fails" in capsys.readouterr().out
+
+
+def test_repro_and_show_name_the_bad_field_of_a_broken_file_and_exit_2(tmp_path, capsys):
+    path = _case(tmp_path, tamper=True)
+    doc = json.loads(open(path).read())
+    doc["scene"]["mover"]["step_up_height"] = "high"
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps(doc))
+    assert main(["repro", str(bad)]) == 2
+    assert "scene.mover.step_up_height" in capsys.readouterr().err
+    assert main(["show", str(bad)]) == 2
+    assert "scene.mover.step_up_height" in capsys.readouterr().err
+
+
+def test_show_prints_a_case_readably(tmp_path, capsys):
+    path = _case(tmp_path, tamper=True)
+    assert main(["show", path]) == 0
+    out = capsys.readouterr().out
+    for needle in ("1 difference", "landblock 0x", "mover:", "begin 0x", "port: ok=", "oracle: ok="):
+        assert needle in out
+
+
+def test_coverage_prints_a_branch_table_per_1000_scenes(capsys):
+    _port()
+    assert main(["coverage", "--branches", "-n", "40", "--seed", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "scenes/1000" in out and "step_down:ok" in out
