@@ -1,8 +1,10 @@
 """The branch names the port counts when run_scene is given a trace Counter.
 
 Each name is "<ACE routine>:<branch>". `BRANCHES` documents every name the port can emit;
-tests/port/transition/test_branches.py checks that each one outside `NOT_YET_REACHED` is
-reached by a recorded test scene, and that the port emits no name missing here.
+tests/port/transition/test_branches.py checks that the port emits exactly these names; each
+one outside `NOT_YET_REACHED` is reached by a recorded test scene where the port matches ACE:
+a terrain scene (tests/port/transition) or, for `REACHED_BY_OBJECT_SCENES`, a static-object
+scene (tests/port/objects).
 """
 
 from __future__ import annotations
@@ -68,15 +70,20 @@ BRANCHES: dict[str, str] = {
 # Branches no recorded test scene reaches yet, and why.
 NOT_YET_REACHED: dict[str, str] = {
     "check_other_cells:no_cell": "needs a sphere center outside every loaded cell; DAT-less ACE crashes there",
-    "check_walkable:probe_blocked": "needs SpherePath.Walkable, which only BSP geometry sets (static objects pending)",
+}
+
+# Branches only the static-object scenes reach (tests/port/objects: BSP sets SpherePath.Walkable,
+# BSP/sphere collisions request step-up and SetCollide); the terrain scenes never do.
+REACHED_BY_OBJECT_SCENES: dict[str, str] = {
+    "check_walkable:probe_blocked": "needs SpherePath.Walkable, which only BSP geometry sets",
     "check_walkable:probe_fell": "needs SpherePath.Walkable (BSP)",
     "edge_slide:precipice_slide": "needs SpherePath.Walkable (BSP)",
     "edge_slide:back_probe_precipice_slide": "needs SpherePath.Walkable (BSP)",
-    "edge_slide:contact_plane_valid": "not found on terrain in 1,000 sampled scenes",
+    "edge_slide:contact_plane_valid": "not found on terrain in 1,000 sampled scenes; an obstacle scene reaches it",
     "precipice_slide:no_crossed_edge": "needs SpherePath.Walkable (BSP)",
     "precipice_slide:normal_flipped": "needs SpherePath.Walkable (BSP)",
     "precipice_slide:normal_kept": "needs SpherePath.Walkable (BSP)",
-    "step_down:placement_blocked": "not found on terrain in 1,000 sampled scenes",
+    "step_down:placement_blocked": "not found on terrain in 1,000 sampled scenes; an obstacle scene reaches it",
     "step_up:ok": "step up is requested by BSP/sphere collisions only",
     "step_up:fail": "step up is requested by BSP/sphere collisions only",
     "transitional_insert:neg_poly_step_up": "BSP only",
