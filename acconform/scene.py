@@ -287,18 +287,19 @@ class StaticObject:
 
 @dataclass(frozen=True, slots=True)
 class ContactPlane:
+    """PhysicsObj.ContactPlane and ContactPlaneCellID. Whether it is water is not stored here:
+    get_object_info reads that from TransientState.WaterContact, so the scene says it there."""
+
     cell: int
     plane: PlaneRec
-    is_water: bool = False
 
     def to_json(self):
-        return {"cell": write_id(self.cell), "plane": self.plane.to_json(), "is_water": self.is_water}
+        return {"cell": write_id(self.cell), "plane": self.plane.to_json()}
 
     @staticmethod
     def from_json(r: Reader) -> "ContactPlane":
-        r.obj({"cell", "plane", "is_water"})
-        water = r["is_water"].bool_() if r.has("is_water") else False
-        return ContactPlane(r["cell"].id_(), PlaneRec.from_json(r["plane"]), water)
+        r.obj({"cell", "plane"})
+        return ContactPlane(r["cell"].id_(), PlaneRec.from_json(r["plane"]))
 
 
 DEFAULT_MOVER_STATE = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)

@@ -208,7 +208,9 @@ def scenes_of(draw, kind: str):
     if start == "ground":
         walkable = n0[2] >= tr.FLOOR_Z
         transient = int(TransientState.Contact) | (int(TransientState.OnWalkable) if walkable else 0)
-        contact = ContactPlane(begin_cell, PlaneRec(n0, d0), world.water(gx0, gy0) and platform is None)
+        if world.water(gx0, gy0) and platform is None:
+            transient |= int(TransientState.WaterContact)
+        contact = ContactPlane(begin_cell, PlaneRec(n0, d0))
         bz = z0
     else:
         bz = to_f32(z0 + draw(st.one_of(sh.f32s(0.001, 0.1), sh.f32s(0.1, 6.0))))
