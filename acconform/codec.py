@@ -170,7 +170,7 @@ def _kind(v: Any) -> str:
         return f"the string {v!r}"
     if isinstance(v, list):
         return f"a list of {len(v)}"
-    return f"an object" if isinstance(v, dict) else type(v).__name__
+    return "an object" if isinstance(v, dict) else type(v).__name__
 
 
 def parse_json_text(text: str, source: str | None = None) -> Any:

@@ -13,7 +13,8 @@ import time
 
 from ..outcome import ContactPlaneState, NormalState, Outcome
 from ..scene import BSPLeaf, CylSphereShape, Scene, SphereShape
-from .pack import MOVER_ID, landblock_bytes, mover_setup_dims, shadow_cells
+from ..staging import MOVER_ID, mover_setup_dims, shadow_cells
+from .pack import landblock_bytes
 
 
 class DirectRunner:

@@ -2,23 +2,19 @@
 
 The layout is read by oracle/facade/Facade.cs (BuildScene / WriteOutcome); both sides change
 together and carry PACK_VERSION. All floats travel as float32, so the facade sees exactly the
-scene's values. Also here: the scene conventions the oracle applies and the port must mirror
-(`shadow_cells`, `mover_setup_dims`, `MOVER_ID`), documented in docs/oracle.md.
+scene's values. The conventions both sides apply when staging a scene live in acconform.staging.
 """
 
 from __future__ import annotations
 
-import math
 import struct
 
 from ..flags import TransientState
 from ..outcome import ContactPlaneState, NormalState, Outcome
-from ..scene import BSPLeaf, BSPNode, BSPShape, CylSphereShape, Landblock, Scene, SphereShape, StaticObject
+from ..scene import BSPLeaf, CylSphereShape, Landblock, Scene, SphereShape
+from ..staging import mover_setup_dims, shadow_cells
 
 PACK_VERSION = 1
-MOVER_ID = 0x50000001  # the mover is a player-range PhysicsObj (PhysicsObj.IsPlayer), as ACE's players are
-CELL_SIZE = 24.0
-BLOCK_SIZE = 192.0
 SHAPE_KIND = {"sphere": 0, "cylsphere": 1, "bsp": 2}
 
 _f = struct.Struct("<f")
@@ -30,71 +26,6 @@ def landblock_bytes(lb: Landblock) -> bytes:
     """The CellLandblock DAT layout: Id, HasObjects 0, 81 terrain words, 81 heights, 4-byte aligned."""
     b = struct.pack("<II", lb.id | 0xFFFF, 0) + struct.pack("<81H", *lb.terrain) + bytes(lb.heights)
     return b + b"\0" * ((4 - len(b) % 4) % 4)
-
-
-def _rotate(q, v):
-    w, x, y, z = q
-    n = math.sqrt(w * w + x * x + y * y + z * z) or 1.0
-    w, x, y, z = w / n, x / n, y / n, z / n
-    vx, vy, vz = v
-    # v + 2w(q x v) + 2 q x (q x v)
-    cx, cy, cz = y * vz - z * vy, z * vx - x * vz, x * vy - y * vx
-    cx2, cy2, cz2 = y * cz - z * cy, z * cx - x * cz, x * cy - y * cx
-    return (vx + 2 * (w * cx + cx2), vy + 2 * (w * cy + cy2), vz + 2 * (w * cz + cz2))
-
-
-def bounding_sphere(obj: StaticObject) -> tuple[tuple[float, float, float], float]:
-    """The object's bounding sphere in its cell's landblock coordinates (centre, radius)."""
-    shape = obj.shape
-    if isinstance(shape, SphereShape):
-        c, r = shape.sphere.center, shape.sphere.radius
-    elif isinstance(shape, CylSphereShape):
-        lx, ly, lz = shape.low_point
-        c, r = (lx, ly, lz + shape.height / 2), shape.radius + shape.height / 2
-    else:
-        c, r = shape.sphere.center, shape.sphere.radius
-    s = obj.scale
-    rc = _rotate(obj.position.frame.orientation, (c[0] * s, c[1] * s, c[2] * s))
-    o = obj.position.frame.origin
-    return (o[0] + rc[0], o[1] + rc[1], o[2] + rc[2]), r * s
-
-
-def shadow_cells(obj: StaticObject, landblock_ids) -> list[int]:
-    """The outdoor cells a static object is registered in (as a shadow object), in order.
-
-    Convention (the oracle's and the port's): the object's own cell first, then every other cell,
-    in ascending id, of a landblock present in the scene whose 24 m x 24 m square the object's
-    bounding sphere (`bounding_sphere`) reaches horizontally. ACE itself would find these with
-    find_cell_list / find_bbox_cell_list from DAT bounding data that scenes do not carry.
-    """
-    own = obj.position.cell
-    (cx, cy, _), r = bounding_sphere(obj)
-    bx, by = (own >> 24) & 0xFF, (own >> 16) & 0xFF
-    gx, gy = bx * BLOCK_SIZE + cx, by * BLOCK_SIZE + cy
-    present = {lb >> 16 for lb in landblock_ids}
-    cells = []
-    for ix in range(math.floor((gx - r) / CELL_SIZE), math.floor((gx + r) / CELL_SIZE) + 1):
-        for iy in range(math.floor((gy - r) / CELL_SIZE), math.floor((gy + r) / CELL_SIZE) + 1):
-            if ix < 0 or iy < 0 or ix >= 255 * 8 or iy >= 255 * 8:
-                continue
-            # nearest point of the square to the centre
-            nx = min(max(gx, ix * CELL_SIZE), (ix + 1) * CELL_SIZE)
-            ny = min(max(gy, iy * CELL_SIZE), (iy + 1) * CELL_SIZE)
-            if (nx - gx) ** 2 + (ny - gy) ** 2 > r * r:
-                continue
-            lb = ((ix // 8) << 8) | (iy // 8)
-            if lb not in present:
-                continue
-            cell = (lb << 16) | ((ix % 8) * 8 + (iy % 8) + 1)
-            if cell != own:
-                cells.append(cell)
-    return [own] + sorted(cells)
-
-
-def mover_setup_dims(scene: Scene) -> tuple[float, float]:
-    """Setup Height and Radius the oracle gives the mover: top of the highest sphere, largest radius."""
-    sph = scene.mover.spheres
-    return max(s.center[2] + s.radius for s in sph), max(s.radius for s in sph)
 
 
 def _pos(p) -> bytes:

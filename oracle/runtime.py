@@ -9,7 +9,6 @@ from __future__ import annotations
 import hashlib
 import sys
 from dataclasses import dataclass
-from pathlib import Path
 
 from ..errors import OracleUnavailable
 from .config import HOW_TO_SET, AceLocation

@@ -5,7 +5,7 @@ ACE's; the outcome reads the same fields the oracle reads. A Python exception in
 becomes ``Outcome(error=...)``: a verdict, not a crash. An AceException (port/errors.py: where
 ACE itself throws) reads ``"<.NET type>: <message>"``, as the oracle formats ACE's exceptions.
 Static objects are built and registered as the oracle builds them (the conventions are
-acconform.oracle.pack's: shadow_cells, mover_setup_dims). Pass a ``collections.Counter`` as
+acconform.staging: shadow_cells, mover_setup_dims, MOVER_ID). Pass a ``collections.Counter`` as
 `trace` to count the branches the run took (names in acconform.port.transition.branches).
 """
 
@@ -15,7 +15,7 @@ import numpy as np
 
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome
-from acconform.oracle.pack import mover_setup_dims, shadow_cells
+from acconform.staging import MOVER_ID, mover_setup_dims, shadow_cells
 from acconform.scene import CylSphereShape, Scene, SphereShape, StaticObject
 
 from .anchors import anchor
@@ -31,7 +31,6 @@ from .setup import Setup
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 
 # the mover's PhysicsObj.ID, as the oracle's: player range, so PhysicsObj.IsPlayer is true
-MOVER_ID = 0x50000001
 
 
 def _vec(v) -> tuple[float, float, float]:
@@ -44,7 +43,7 @@ def _plane_state(valid: bool, cell: int, is_water: bool, plane: Plane) -> Contac
 
 def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
     """The mover as the oracle builds it: a PhysicsObj with a PartArray over a Setup of its spheres,
-    Height/Radius (pack.mover_setup_dims) and step heights; SetScaleStatic; flags, velocity,
+    Height/Radius (staging.mover_setup_dims) and step heights; SetScaleStatic; flags, velocity,
     contact plane, sliding normal, position and cell."""
     mode = lscape.mode
     m = scene.mover

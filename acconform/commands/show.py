@@ -8,8 +8,7 @@ def add_arguments(p) -> None:
 
 
 def run(args) -> int:
-    from ..case import Case, Record, load_document
-    from ..outcome import Outcome
+    from ..case import load_document
 
     doc = load_document(args.file)
     for line in describe(doc):

@@ -12,7 +12,7 @@ sphere 0's center -- on a shared edge both cells hold it and the later one wins.
 
 from __future__ import annotations
 
-from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
+from acconform.flags import PhysicsState, TransitionState
 
 from ..anchors import anchor
 from . import land_defs

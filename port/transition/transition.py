@@ -10,7 +10,6 @@ and `trace` (a collections.Counter or None) counts the branches named in branche
 
 from __future__ import annotations
 
-import math
 
 from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Mode, Plane, Vector3, cs_ceiling, cs_floor, cross, dot
