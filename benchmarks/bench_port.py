@@ -1,0 +1,183 @@
+"""Port cost per scene, by scene kind and mode, and its share in landblock construction.
+
+    python benchmarks/bench_port.py [--n 60] [--generated 40] [--repeat 3]
+    python benchmarks/bench_port.py --against HEAD~3      # old/new ratio, measured in one run
+
+Scenes: the recorded corpus (tests/data/corpus/{terrain,bsp,obstacles}-*.jsonl.gz, the first
+--n of each kind) and --generated scenes from acconform.strategies.sample_scenes (seed 1).
+Each scene set runs --repeat times through run_scene in exact and fast mode; the best pass is
+reported as ms/scene. "build%" is the share of that pass spent constructing landblocks
+(Landblock.__init__ and post_init, plus any lazy cell building the port does on first access),
+measured in a separate instrumented pass so the timing pass carries no wrapper cost.
+
+--against REV checks REV out into a temporary git worktree, runs this same script there in a
+subprocess (imports resolve to the worktree through a shim on sys.path) and prints old, new and
+old/new side by side. Both runs see the same scenes; the new run goes second.
+"""
+
+from __future__ import annotations
+
+import argparse
+import gzip
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+KINDS = ("terrain", "bsp", "obstacles")
+
+
+def _shim(worktree: Path) -> Path:
+    """A directory whose `acconform` package is the worktree's (acconform/, port/, oracle/, strategies/)."""
+    shim = Path(tempfile.mkdtemp(prefix="acconform-shim-"))
+    pkg = shim / "acconform"
+    pkg.mkdir()
+    for entry in (worktree / "acconform").iterdir():
+        (pkg / entry.name).symlink_to(entry)
+    for sub in ("port", "oracle", "strategies"):
+        (pkg / sub).symlink_to(worktree / sub)
+    return shim
+
+
+def load_corpus(kind: str, n: int):
+    from acconform.case import parse_document
+
+    out = []
+    for path in sorted((ROOT / "tests/data/corpus").glob(f"{kind}-*.jsonl.gz")):
+        with gzip.open(path, "rt", encoding="utf-8") as f:
+            for line in f:
+                rec = parse_document(json.loads(line))
+                out.append(getattr(rec, "scene", rec))
+                if len(out) >= n:
+                    return out
+    return out
+
+
+def _build_functions():
+    """(owner, attribute) pairs that construct landblocks, whichever of them this tree has."""
+    from acconform.port.land import landblock, landblock_struct, lscape
+
+    names = [(landblock.Landblock, "__init__"), (landblock.Landblock, "post_init"),
+             (landblock_struct.LandblockStruct, "build_land_cell"), (lscape, "build_landblock")]
+    return [(o, a) for o, a in names if a in vars(o)]
+
+
+class BuildTimer:
+    """Wraps the construction functions; counts outermost time only (they nest)."""
+
+    def __init__(self):
+        self.total = 0.0
+        self.depth = 0
+        self.saved = []
+
+    def __enter__(self):
+        for owner, attr in _build_functions():
+            fn = vars(owner)[attr]
+            self.saved.append((owner, attr, fn))
+            setattr(owner, attr, self._wrap(fn))
+        return self
+
+    def _wrap(self, fn):
+        timer = self
+
+        def wrapped(*a, **k):
+            if timer.depth:
+                return fn(*a, **k)
+            timer.depth += 1
+            t0 = time.perf_counter()
+            try:
+                return fn(*a, **k)
+            finally:
+                timer.total += time.perf_counter() - t0
+                timer.depth -= 1
+        return wrapped
+
+    def __exit__(self, *exc):
+        for owner, attr, fn in self.saved:
+            setattr(owner, attr, fn)
+
+
+def _clear_caches():
+    from acconform.port.land import lscape
+
+    clear = getattr(lscape, "clear_landblock_cache", None)
+    if clear is not None:
+        clear()
+
+
+def measure(scenes, mode: str, repeat: int) -> dict:
+    from acconform.port.run import run_scene
+
+    best = float("inf")
+    for _ in range(repeat):
+        _clear_caches()  # every pass starts cold: the cache's gain is within a pass
+        t0 = time.perf_counter()
+        for s in scenes:
+            run_scene(s, mode)
+        best = min(best, time.perf_counter() - t0)
+    _clear_caches()
+    with BuildTimer() as bt:
+        t0 = time.perf_counter()
+        for s in scenes:
+            run_scene(s, mode)
+        total = time.perf_counter() - t0
+    return {"ms": best / len(scenes) * 1e3, "build": bt.total / total if total else 0.0}
+
+
+def run(args) -> dict:
+    sets = {k: load_corpus(k, args.n) for k in KINDS}
+    if args.generated:
+        from acconform.strategies import sample_scenes
+
+        sets["generated"] = list(sample_scenes(None, args.generated, 1))
+    results = {}
+    for name, scenes in sets.items():
+        for mode in ("exact", "fast"):
+            results[f"{name}/{mode}"] = measure(scenes, mode, args.repeat) | {"scenes": len(scenes)}
+    return results
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--n", type=int, default=60, help="corpus scenes per kind")
+    ap.add_argument("--generated", type=int, default=40)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) and print old/new")
+    ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
+    args = ap.parse_args()
+
+    old = None
+    if args.against:
+        wt = Path(tempfile.mkdtemp(prefix="acconform-old-")) / "tree"
+        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt), args.against],
+                       check=True, capture_output=True)
+        try:
+            env = dict(os.environ, PYTHONPATH=str(_shim(wt)))
+            cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--n", str(args.n),
+                   "--generated", str(args.generated), "--repeat", str(args.repeat)]
+            old = json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout)
+        finally:
+            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)], capture_output=True)
+
+    new = run(args)
+    if args.json:
+        print(json.dumps(new))
+        return
+    if old is None:
+        print(f"{'scenes/mode':20s} {'n':>4s} {'ms/scene':>9s} {'build%':>7s}")
+        for key, r in new.items():
+            print(f"{key:20s} {r['scenes']:4d} {r['ms']:9.2f} {r['build'] * 100:6.1f}%")
+        return
+    print(f"{'scenes/mode':20s} {'n':>4s} {'old ms':>8s} {'build%':>7s} {'new ms':>8s} {'build%':>7s} {'old/new':>8s}")
+    for key, r in new.items():
+        o = old[key]
+        print(f"{key:20s} {r['scenes']:4d} {o['ms']:8.2f} {o['build'] * 100:6.1f}% {r['ms']:8.2f} "
+              f"{r['build'] * 100:6.1f}% {o['ms'] / r['ms']:7.2f}x")
+
+
+if __name__ == "__main__":
+    main()
