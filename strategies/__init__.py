@@ -4,7 +4,8 @@
     sample_scenes(kinds, n, seed)   n scenes, the same ones for the same seed (used by `record`)
 
 Kinds: "terrain" (a mover over generated terrain), "bsp" (BSP objects on mostly level ground:
-walls, floors, ramps, steps, ledges, platforms, posts, boxes, convex polygons), "obstacles"
+ledges to walk off, stairs to climb, walls and corners to slide along -- strategies/objects.py --
+or walls, floors, ramps, steps, platforms, posts, boxes, convex polygons scattered along a path), "obstacles"
 (spheres and cylspheres). DEFAULT_KINDS is what the port supports today; grow it as the port
 does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
 """
@@ -20,8 +21,8 @@ from acconform.errors import AcconformError
 from .scenes import scenes_of
 
 ALL_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
-# The kinds a default campaign draws: what the port supports. Terrain first; add kinds here.
-DEFAULT_KINDS: tuple[str, ...] = ("terrain",)
+# The kinds a default campaign draws: what the port supports (all of them since static objects landed).
+DEFAULT_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
 
 
 def check_kinds(kinds) -> tuple[str, ...]:

@@ -17,6 +17,9 @@ from acconform.numerics import to_f32
 from acconform.scene import (IDENTITY, ContactPlane, Frame, Mover, PlaneRec, Position, Scene, SphereRec,
                              StaticObject)
 
+from acconform import staging
+
+from . import objects as ob
 from . import shapes as sh
 from . import terrain as tr
 
@@ -109,6 +112,7 @@ GAPS = st.one_of(st.sampled_from((0.0, 0.5, 1.0)), sh.f32s(0.0, 1.0), sh.f32s(1.
 
 PATH_FACTORS = st.one_of(
     sh.f32s(0.05, 1.0),  # a fraction of one step (one step = sphere radius)
+    sh.f32s(0.001, 0.05),  # a sliver: a step-down from barely above gentle ground overshoots (interp in [-0.1, 0))
     st.sampled_from((0.0, 1.0, 2.0, 30.0, 31.0, 45.0)),  # standing still; exactly whole steps; past the step cap
     sh.f32s(1.0, 4.0),
     sh.f32s(4.0, 25.0),
@@ -118,6 +122,10 @@ PATH_FACTORS = st.one_of(
 CENTRED = sh.f32s(-95.9, 95.9)
 WHERE = st.sampled_from(("any", "any", "border", "corner"))
 NEAR_BORDER = st.one_of(sh.f32s(0.0, 3.0), sh.f32s(189.0, 191.99))
+
+
+BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter"))
+SNAP_END = st.sampled_from((None, None, None, None, "cell", "block"))
 
 
 @st.composite
@@ -135,12 +143,16 @@ def scenes_of(draw, kind: str):
             lx, ly = ly, lx
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     vx, vy = round(gx0 / CELL), round(gy0 / CELL)
-    field = draw(tr.fields_near(vx, vy, flat=(kind != "terrain" and draw(st.integers(0, 3)) > 0)))
+    policy = draw(BSP_POLICIES) if kind == "bsp" else "scatter"
+    flat = kind != "terrain" and (policy != "scatter" or draw(st.integers(0, 3)) > 0)
+    field = draw(tr.fields_near(vx, vy, flat=flat))
     world = _World(field)
 
     spheres = draw(movers_spheres())
     r = spheres[0].radius
     reach = max(s.center[2] + s.radius for s in spheres)
+    if policy != "scatter":
+        return _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres)
 
     # objects go in first (the path may aim at one)
     objects_spec = []
@@ -199,28 +211,29 @@ def scenes_of(draw, kind: str):
     for label, shape, top in objects_spec:
         geometry_steps.append(top)
 
+    obj_state = (lambda: draw(ob.BSP_STATES)) if kind == "bsp" else (lambda: int(PhysicsState.Static))
     if platform is not None:
         label, shape, top, ox, oy, angle = platform
         _, (gz, _, _) = world.ground(ox, oy)
         z0 = to_f32(gz + top)
         n0, d0 = (0.0, 0.0, 1.0), to_f32(-z0)
-        placed.append((shape, ox, oy, gz, yaw(angle)))
+        placed.append((shape, ox, oy, gz, yaw(angle), obj_state()))
     if start == "ground":
         walkable = n0[2] >= tr.FLOOR_Z
         transient = int(TransientState.Contact) | (int(TransientState.OnWalkable) if walkable else 0)
         if world.water(gx0, gy0) and platform is None:
             transient |= int(TransientState.WaterContact)
         contact = ContactPlane(begin_cell, PlaneRec(n0, d0))
-        bz = z0
+        bz = to_f32(z0 + draw(ob.PLANE_DZ))  # on the plane, or EPSILON either side of it
     else:
         bz = to_f32(z0 + draw(st.one_of(sh.f32s(0.001, 0.1), sh.f32s(0.1, 6.0))))
 
     rad = math.radians(heading)
-    gx1 = gx0 + length * math.cos(rad)
-    gy1 = gy0 + length * math.sin(rad)
+    gx1, gy1 = _snap(draw, gx0 + length * math.cos(rad), gy0 + length * math.sin(rad))
     end_z = draw(st.sampled_from(("level", "ground", "fall", "rise")))
     if end_z == "ground" and platform is None:
         _, (ez, _, _) = world.ground(gx1, gy1)
+        ez = to_f32(ez + draw(ob.PLANE_DZ))
     elif end_z == "fall" or start == "air":
         ez = bz - draw(sh.f32s(0.0, 3.0))
     elif end_z == "rise":
@@ -237,22 +250,7 @@ def scenes_of(draw, kind: str):
         oy = gy0 + dist * math.sin(rad) + side * r * math.cos(rad)
         angle = heading + draw(st.sampled_from((0, 0, 90, 45, 10, -30)))
         _, (gz, _, _) = world.ground(ox, oy)
-        placed.append((shape, ox, oy, gz, yaw(angle)))
-
-    # landblocks every sphere of the path can touch (plus a margin for steps and slides)
-    margin = reach + 3.0 + max((s[0].sphere.radius if hasattr(s[0], "sphere") else 3.0) for s in placed) if placed else reach + 3.0
-    xs = [gx0, gx1] + [p[1] for p in placed]
-    ys = [gy0, gy1] + [p[2] for p in placed]
-    blocks = {(bx, by)}
-    for ix in range(int((min(xs) - margin) // BLOCK), int((max(xs) + margin) // BLOCK) + 1):
-        for iy in range(int((min(ys) - margin) // BLOCK), int((max(ys) + margin) // BLOCK) + 1):
-            if 0 <= ix <= 0xFE and 0 <= iy <= 0xFE:
-                blocks.add((ix, iy))
-    landblocks = tuple(world.block(ix, iy) for ix, iy in sorted(blocks))
-
-    objects = []
-    for i, (shape, ox, oy, gz, q) in enumerate(placed):
-        objects.append(StaticObject(0x70000000 + i, position(ox, oy, gz, q), shape))
+        placed.append((shape, ox, oy, gz, yaw(angle), obj_state()))
 
     steps = geometry_steps + [r * t for t in (0.5, 1.0, 1.25, 1.5, 2.0)]
     up = draw(step_heights(steps))
@@ -268,9 +266,96 @@ def scenes_of(draw, kind: str):
         state=state,
         transient_state=transient,
         contact_plane=contact,
+        velocity=draw(ob.VELOCITIES),
     )
     name = f"{kind}:{start}:{aim}" + (":platform" if platform else "")
+    return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, name)
+
+
+def _snap(draw, gx: float, gy: float) -> tuple[float, float]:
+    """Maybe move a path's end exactly onto the nearest cell or landblock border (a decision boundary)."""
+    how = draw(SNAP_END)
+    if how is None:
+        return gx, gy
+    unit = CELL if how == "cell" else BLOCK
+    sx, sy = round(gx / unit) * unit, round(gy / unit) * unit
+    if abs(sx - gx) <= abs(sy - gy) or draw(st.booleans()):
+        return float(sx), gy
+    return gx, float(sy)
+
+
+def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
+    """A BSP scene from one of strategies.objects' policies (the mover placed with the objects)."""
+    r = spheres[0].radius
+    reach = max(s.center[2] + s.radius for s in spheres)
+    gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
+    plan = draw(ob.POLICIES[policy](gx0, gy0, r))
+    placed = []
+    for shape, ox, oy, angle, st_ in plan.objects:
+        _, (gz, _, _) = world.ground(ox, oy)
+        placed.append((shape, ox, oy, gz, yaw(angle), st_))
+    _, (z0, n0, d0) = world.ground(gx0, gy0)
+    begin_cell = cell_of(bx, by, lx, ly)
+    state, transient = ob.mover_flags(plan)
+    if plan.stand_on is not None:
+        _, (pz, _, _) = world.ground(plan.objects[0][1], plan.objects[0][2])
+        z0, n0, d0 = to_f32(pz + plan.stand_on), (0.0, 0.0, 1.0), to_f32(-to_f32(pz + plan.stand_on))
+    contact = None
+    if plan.airborne:
+        bz = to_f32(z0 + plan.airborne)
+    else:
+        contact = ContactPlane(begin_cell, PlaneRec(n0, d0))
+        bz = to_f32(z0 + draw(ob.PLANE_DZ))
+        if n0[2] < tr.FLOOR_Z:
+            transient &= ~int(TransientState.OnWalkable)
+    rad = math.radians(plan.heading)
+    gx1, gy1 = gx0 + plan.length * math.cos(rad), gy0 + plan.length * math.sin(rad)
+    ez = bz if not plan.airborne else to_f32(bz - draw(sh.f32s(0.0, 2.0)))
+    steps = plan.steps + [r * t for t in (0.5, 1.0, 1.5)]
+    up = plan.step_up if plan.step_up is not None else draw(step_heights(steps))
+    down = plan.step_down if plan.step_down is not None else draw(st.one_of(sh.f32s(r, 2 * r), step_heights(steps)))
+    mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, bz))), end=position(gx1, gy1, ez),
+                  step_up_height=up, step_down_height=down, state=state, transient_state=transient,
+                  contact_plane=contact, velocity=draw(ob.VELOCITIES))
+    name = f"{kind}:{plan.label}" + (":air" if plan.airborne else "") + ("" if plan.edge_slide else ":no-edge-slide")
+    return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, name)
+
+
+def _scene(world, bx, by, p0, p1, reach, placed, mover, name) -> Scene:
+    objects = []
+    for i, (shape, ox, oy, gz, q, state) in enumerate(placed):
+        objects.append(StaticObject(0x70000000 + i, position(ox, oy, gz, q), shape, state))
+    landblocks = tuple(world.block(ix, iy) for ix, iy in sorted(_blocks_in_reach(bx, by, p0, p1, reach, objects)))
     return Scene(landblocks, mover, tuple(objects), name=name)
+
+
+def _blocks_in_reach(bx, by, p0, p1, reach, objects) -> set[tuple[int, int]]:
+    """Every landblock the mover's path (plus the spheres' reach and a margin for steps and
+    slides) or any object's bounding sphere (plus the same margin) can touch."""
+    margin = reach + 3.0
+    boxes = [(min(p0[0], p1[0]) - margin, min(p0[1], p1[1]) - margin,
+              max(p0[0], p1[0]) + margin, max(p0[1], p1[1]) + margin)]
+    for o in objects:
+        (cx, cy, _), rad = staging.bounding_sphere(o)
+        ox = (o.position.cell >> 24) * BLOCK + cx
+        oy = ((o.position.cell >> 16) & 0xFF) * BLOCK + cy
+        m = rad + margin
+        boxes.append((ox - m, oy - m, ox + m, oy + m))
+    blocks = {(bx, by)}
+    for x0, y0, x1, y1 in boxes:
+        ix0, ix1, iy0, iy1 = int(x0 // BLOCK), int(x1 // BLOCK), int(y0 // BLOCK), int(y1 // BLOCK)
+        # a sphere stepping down just across a border looks one landblock further along the
+        # crossing axis (check_pos keeps the old block's frame for a moment: add_all_outside_cells
+        # reaches the cell beyond), so a box spanning a border takes one more block each side
+        if ix1 > ix0:
+            ix0, ix1 = ix0 - 1, ix1 + 1
+        if iy1 > iy0:
+            iy0, iy1 = iy0 - 1, iy1 + 1
+        for ix in range(ix0, ix1 + 1):
+            for iy in range(iy0, iy1 + 1):
+                if 0 <= ix <= 0xFE and 0 <= iy <= 0xFE:
+                    blocks.add((ix, iy))
+    return blocks
 
 
 def _feature_target(f: tr.Feature, vx: int, vy: int, top: bool) -> tuple[float, float]:

@@ -12,6 +12,7 @@ from acconform.errors import AcconformError
 from acconform.scene import Scene, validate_scene
 from acconform.strategies import ALL_KINDS, DEFAULT_KINDS, check_kinds, sample_scenes, scenes
 from acconform.strategies import terrain as tr
+from acconform.strategies.objects import EPS
 from acconform.strategies.scenes import BLOCK
 
 FAST = settings(max_examples=60, deadline=None, suppress_health_check=list(HealthCheck), database=None)
@@ -112,7 +113,8 @@ def test_movers_on_the_ground_begin_at_the_ports_terrain_height():
         ls = LScape(scene, EXACT)
         lb = ls.get_landblock(m.begin.cell)
         z = lb.get_z(ls, EXACT.vec(*m.begin.frame.origin))
-        assert abs(float(z) - m.begin.frame.origin[2]) <= 1e-4 * max(1.0, abs(float(z)))
+        # on the ground, or a deliberate boundary offset (PLANE_DZ: up to 2 EPSILON either side)
+        assert abs(float(z) - m.begin.frame.origin[2]) <= 1e-4 * max(1.0, abs(float(z))) + 2 * EPS
         checked += 1
     assert checked > 20
 

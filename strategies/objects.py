@@ -1,0 +1,201 @@
+"""BSP object policies: scenes built around one behaviour a static object makes possible.
+
+Each policy places BSP objects and the mover together, so the mover meets the object the way
+the branch it aims at needs (the scatter policy in scenes.py places objects along a free path):
+
+- ``ledge``: the mover stands on a platform's top near one of its edges (contact plane = the top,
+  OnWalkable) and walks off it at an angle to the edge, EdgeSlide on or off; sometimes a second
+  platform shares the edge (same height, a little lower or higher), so the path crosses a
+  polygon edge between two walkable tops. Reaches PrecipiceSlide and the back-probe.
+- ``stairs``: the mover walks at a stair (1-3 steps) whose rise is drawn around its step-up
+  height (0.5x .. 2x, dense around 1.5x, where ACE's reach ends: it climbs ~0.6 m with step-up
+  0.4 and radius 0.48). Reaches StepUp ok/fail and the neg-poly step-up.
+- ``wall``: a wall approached head-on to grazing (89.5 degrees), or the inside corner of two walls;
+  sometimes airborne (SetCollide). Reaches slides, the collide paths, AdjustOffset's crease.
+
+BSP objects get ``Static|HasPhysicsBSP`` (what ACE's makeObject leaves via CacheHasPhysicsBSP),
+now and then with Ethereal (and IgnoreCollisions), or ``Static`` alone (walked through).
+"""
+
+from __future__ import annotations
+
+import math
+
+from hypothesis import strategies as st
+
+from acconform.flags import PhysicsState, TransientState
+from acconform.numerics import to_f32
+
+from . import shapes as sh
+
+BSP_STATE = int(PhysicsState.Static | PhysicsState.HasPhysicsBSP)
+BSP_STATES = st.sampled_from(
+    (BSP_STATE,) * 12
+    + (int(PhysicsState.Static),  # no physics BSP flag: ACE passes through
+       BSP_STATE | int(PhysicsState.Ethereal),  # a static ethereal object still blocks
+       BSP_STATE | int(PhysicsState.Ethereal | PhysicsState.IgnoreCollisions)))  # ignored entirely
+
+EPS = to_f32(0.0002)  # PhysicsGlobals.EPSILON
+# how far above a plane the mover's sphere starts: exactly on it, EPSILON either side, an ulp
+PLANE_DZ = st.one_of(st.just(0.0), st.just(0.0), st.sampled_from((EPS, -EPS, EPS / 2, -EPS / 2, 2 * EPS, 1e-6, -1e-6)))
+
+EDGE_ANGLES = st.one_of(st.sampled_from((0.0, 0.0, 15.0, -15.0, 30.0, -30.0, 45.0, -45.0, 60.0, -60.0, 80.0, -80.0,
+                                         89.0, -89.0, 90.0)), st.floats(-89.9, 89.9))
+WALL_ANGLES = st.one_of(st.sampled_from((0.0, 20.0, 45.0, 70.0, 80.0, 85.0, 88.0, 89.0, 89.5)), st.floats(0.0, 89.5))
+YAWS = st.one_of(st.sampled_from((0.0, 0.0, 90.0, 30.0, 45.0, 180.0)), st.floats(0.0, 359.0))
+LIP_FACTORS = st.one_of(st.sampled_from((0.5, 0.9, 1.0, 1.001, 1.25, 1.4, 1.5, 1.6, 2.0)), st.floats(1.2, 1.8))
+# the mover's velocity: mostly at rest; rising or falling (get_object_info: leaving the contact plane)
+VELOCITIES = st.one_of(*[st.just((0.0, 0.0, 0.0))] * 8,
+                       st.tuples(st.just(0.0), st.just(0.0), st.sampled_from((0.5, 4.0, -1.0, -10.0, to_f32(1e-3)))),
+                       st.tuples(sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0)))
+STEP_UPS = st.one_of(st.sampled_from((0.4, 0.4, 0.4, 0.25, 0.3, 0.5, 0.6, 1.0)), sh.f32s(0.1, 1.2))
+
+
+def _rot(theta_deg: float, x: float, y: float) -> tuple[float, float]:
+    t = math.radians(theta_deg)
+    return x * math.cos(t) - y * math.sin(t), x * math.sin(t) + y * math.cos(t)
+
+
+class Plan:
+    """What a policy decided: objects (shape, global x, y, yaw, state, top), and the mover."""
+
+    def __init__(self):
+        self.objects: list[tuple] = []  # (shape, gx, gy, yaw_deg, state)
+        self.begin = (0.0, 0.0)  # global x, y
+        self.heading = 0.0
+        self.length = 0.0
+        self.stand_on: float | None = None  # height of a platform top the mover stands on, over the ground
+        self.airborne = 0.0
+        self.edge_slide = True
+        self.step_up = None
+        self.step_down = None
+        self.label = ""
+        self.steps: list[float] = []
+
+
+@st.composite
+def ledge(draw, gx: float, gy: float, r: float) -> Plan:
+    p = Plan()
+    sx, sy = draw(sh.f32s(1.0, 10.0)), draw(sh.f32s(1.0, 10.0))
+    h = draw(st.one_of(st.sampled_from(sh.STEP_SIZES), sh.f32s(0.05, 3.0), st.sampled_from((to_f32(r), to_f32(2 * r)))))
+    yaw = draw(YAWS)
+    if draw(st.sampled_from((False, False, False, True))):
+        # the top as one two-sided polygon, wound either way (a crossed edge's normal may point in)
+        quad = [(-sx / 2, -sy / 2, h), (sx / 2, -sy / 2, h), (sx / 2, sy / 2, h), (-sx / 2, sy / 2, h)]
+        if draw(st.booleans()):
+            quad.reverse()
+        top = sh.polygon_shape(quad)
+    else:
+        top = sh.box(sx, sy, h)
+    # the edge to walk off (local outward normal), where along it, and how far inside it to start
+    ex, ey = draw(st.sampled_from(((1, 0), (-1, 0), (0, 1), (0, -1))))
+    half_n, half_t = (sx / 2, sy / 2) if ex else (sy / 2, sx / 2)
+    along = draw(st.one_of(st.floats(-0.9, 0.9), st.sampled_from((0.0, 1.0, -1.0, 0.99, -0.99)))) * half_t
+    inside = draw(st.one_of(st.sampled_from((0.0, 0.0, 0.5, 1.0, 0.01)), st.floats(0.0, 2.0))) * r
+    inside = min(inside, half_n * 2 * 0.95)
+    d = half_n - inside  # local distance of the start from the centre, along the outward normal
+    lx, ly = (ex * d, along) if ex else (along, ey * d)
+    ox, oy = _rot(yaw, lx, ly)
+    p.objects.append((top, gx - ox, gy - oy, yaw, draw(BSP_STATES)))
+    if draw(st.sampled_from((False, True, False))):
+        # a second platform sharing the edge: the path crosses a polygon edge between two tops
+        h2 = draw(st.sampled_from((h, h, to_f32(h - 0.01), to_f32(h * 0.5), to_f32(h + 0.1), to_f32(max(h - 0.2, 0.05)))))
+        h2 = max(h2, to_f32(0.02))
+        w2 = draw(sh.f32s(0.5, 6.0))
+        cx, cy = (ex * (half_n + w2 / 2), 0.0) if ex else (0.0, ey * (half_n + w2 / 2))
+        b2 = sh.box(w2, 2 * half_t, h2) if ex else sh.box(2 * half_t, w2, h2)
+        c2x, c2y = _rot(yaw, cx, cy)
+        p.objects.append((b2, gx - ox + c2x, gy - oy + c2y, yaw, BSP_STATE))
+        p.steps.append(h2)
+    out = math.degrees(math.atan2(ey, ex)) + yaw
+    p.heading = out + draw(EDGE_ANGLES)
+    p.begin = (gx, gy)
+    p.length = to_f32(inside + r * draw(st.one_of(st.sampled_from((0.2, 0.5, 1.0, 1.5, 2.0, 3.0)), sh.f32s(0.05, 6.0))))
+    p.stand_on = h
+    p.edge_slide = draw(st.sampled_from((True, True, False, True)))
+    p.step_down = draw(st.one_of(st.sampled_from((to_f32(h - 0.01), h, to_f32(h + 0.01))), sh.f32s(r, 2 * r),
+                                 st.sampled_from((to_f32(0.4), to_f32(1.0), to_f32(2.0)))))
+    p.step_down = max(p.step_down, 0.0)
+    p.steps.append(h)
+    p.label = "ledge"
+    return p
+
+
+@st.composite
+def stairs(draw, gx: float, gy: float, r: float) -> Plan:
+    p = Plan()
+    up = draw(STEP_UPS)
+    rise = to_f32(up * draw(LIP_FACTORS))
+    n = draw(st.sampled_from((1, 1, 2, 3)))
+    w = draw(st.one_of(st.sampled_from((0.3, 0.5, 1.0, 2.0)), sh.f32s(0.2, 3.0)))
+    wy = draw(sh.f32s(1.5, 8.0))
+    yaw = draw(YAWS)
+    gap = draw(st.one_of(st.sampled_from((0.0, 0.001, 0.5, 1.0)), st.floats(0.0, 3.0))) * r
+    # stair frame: the first riser at x = 0 facing -x; the mover starts at x = -(r + gap)
+    across = draw(st.floats(-0.8, 0.8)) * wy / 2
+    sx0, sy0 = -(r + gap), across
+    for k in range(n):
+        shape = sh.box(w, wy, to_f32(rise * (k + 1)))
+        cx, cy = _rot(yaw, k * w + w / 2 - sx0, -sy0)
+        p.objects.append((shape, gx + cx, gy + cy, yaw, draw(BSP_STATES) if k == 0 else BSP_STATE))
+    p.heading = yaw + draw(st.sampled_from((0.0, 0.0, 10.0, -10.0, 30.0, -30.0, 45.0, 60.0, -70.0)))
+    p.begin = (gx, gy)
+    p.length = to_f32(gap + r + w * n * draw(st.sampled_from((0.5, 1.0, 1.0, 1.5))))
+    p.step_up = to_f32(up)
+    p.edge_slide = draw(st.sampled_from((True, True, False, True)))
+    p.steps += [rise, to_f32(up)]
+    p.label = "stairs"
+    return p
+
+
+@st.composite
+def wall(draw, gx: float, gy: float, r: float) -> Plan:
+    p = Plan()
+    t = draw(sh.f32s(0.1, 1.0))
+    length = draw(sh.f32s(2.0, 12.0))
+    height = draw(st.one_of(sh.f32s(1.0, 6.0), sh.f32s(0.2, 1.0)))
+    yaw = draw(YAWS)
+    gap = draw(st.one_of(st.sampled_from((0.0, 0.001, 0.5)), st.floats(0.0, 3.0))) * r
+    inc = draw(WALL_ANGLES) * draw(st.sampled_from((1, -1)))
+    corner = draw(st.sampled_from((False, False, True, False)))
+    # wall frame: the wall's face at x = 0 facing -x, centre at x = t/2; the mover at x = -(r + gap)
+    along = draw(st.floats(-0.45, 0.45)) * length
+    if corner:
+        along = length / 2 - draw(st.floats(0.5, 3.0)) * r  # near the far end, where a second wall closes it
+        inc = abs(inc) * 0.5 + 20.0
+    sx0, sy0 = -(r + gap), along
+    cx, cy = _rot(yaw, t / 2 - sx0, -sy0)
+    state = draw(BSP_STATES)
+    if draw(st.sampled_from((False, False, True))):
+        # a lone two-sided polygon (sides None), faced either way: hit from behind it is a neg-poly hit
+        y0, y1 = -length / 2, length / 2
+        quad = [(0.0, y0, 0.0), (0.0, y1, 0.0), (0.0, y1, height), (0.0, y0, height)]
+        if draw(st.booleans()):
+            quad.reverse()
+        cx, cy = _rot(yaw, -sx0, -sy0)
+        p.objects.append((sh.polygon_shape(quad), gx + cx, gy + cy, yaw, state))
+    else:
+        p.objects.append((sh.box(t, length, height), gx + cx, gy + cy, yaw, state))
+    if corner:
+        # the second wall along x at y = length/2, facing -y, reaching back past the mover
+        l2 = draw(sh.f32s(2.0, 8.0))
+        c2x, c2y = _rot(yaw, -l2 / 2 + t - sx0, length / 2 + t / 2 - sy0)
+        p.objects.append((sh.box(l2, t, height), gx + c2x, gy + c2y, yaw, BSP_STATE))
+    p.heading = yaw + inc
+    p.begin = (gx, gy)
+    cos = max(math.cos(math.radians(inc)), 0.05)
+    p.length = to_f32(min((gap + r * draw(st.sampled_from((0.5, 1.0, 2.0, 4.0)))) / cos, 40 * r))
+    p.airborne = draw(st.sampled_from((0.0, 0.0, 0.0, 0.5, 2.0)))
+    p.edge_slide = draw(st.sampled_from((True, True, False, True)))
+    p.steps.append(height)
+    p.label = "corner" if corner else "wall"
+    return p
+
+
+POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall}
+
+
+def mover_flags(plan: Plan) -> tuple[int, int]:
+    state = int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if plan.edge_slide else 0)
+    transient = 0 if plan.airborne else int(TransientState.Contact | TransientState.OnWalkable)
+    return state, transient
