@@ -25,6 +25,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "show": ("acconform.commands.show", "print a scene, case, record or outcome file readably"),
     "record": ("acconform.commands.record", "run scenes through live ACE and append the records to the recorded-oracle corpus"),
     "coverage": ("acconform.commands.coverage", "how often each port branch fires per 1,000 generated scenes"),
+    "bench": ("acconform.commands.bench", "run time against error: the port in exact and fast mode (and the oracle), per kind"),
+    "stress": ("acconform.commands.stress", "numerical stability: ULP nudges, borders, FloorZ, world edges; port vs live ACE"),
 }
 
 

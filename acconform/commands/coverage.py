@@ -16,7 +16,9 @@ KEY_PREFIXES = ("edge_slide", "cliff_slide", "precipice_slide", "step_up", "step
 
 
 def add_arguments(p) -> None:
-    p.add_argument("--branches", action="store_true", help="print the branch table (the default and only report)")
+    p.add_argument("--branches", action="store_true", help="print the branch table (the default report)")
+    p.add_argument("--anchors", action="store_true", help="print calls per retail anchor and the anchors never reached "
+                   "(with --branches, both tables)")
     p.add_argument("-n", "--cases", type=int, default=1000, help="scenes to draw (default 1000)")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: what the port supports)")
@@ -61,7 +63,16 @@ def run(args) -> int:
 
     kinds = check_kinds(args.kinds)
     warnings.simplefilter("ignore", RuntimeWarning)
-    present, total, gen, port, errors = measure(kinds, args.cases, args.seed, args.mode)
+    from contextlib import nullcontext
+
+    from ..anchor_coverage import counting_anchors, render_table
+
+    with counting_anchors() if args.anchors else nullcontext() as counted:
+        present, total, gen, port, errors = measure(kinds, args.cases, args.seed, args.mode)
+    if args.anchors and not args.branches:
+        print(f"kinds {','.join(kinds)}, {args.cases} scenes, seed {args.seed}, mode {args.mode}")
+        print("\n".join(render_table(counted.calls, counted.unwrapped)))
+        return 0
     n = args.cases
     names = sorted(set(known_branches()) | set(total))
     print(f"kinds {','.join(kinds)}, {n} scenes, seed {args.seed}: generation {n / gen:.0f} scenes/s, "
@@ -71,6 +82,8 @@ def run(args) -> int:
         key = "*" if name.startswith(KEY_PREFIXES) or name.endswith(KEY_PREFIXES) or ":" + name.split(":")[-1] in (
             ":cliff_slide", ":precipice_slide") else " "
         print(f"{key}{name:47} {present[name] * 1000 / n:12.1f} {total[name] * 1000 / n:11.1f}")
+    if args.anchors:
+        print("\n".join(render_table(counted.calls, counted.unwrapped)))
     if errors:
         print("port errors: " + ", ".join(f"{k} x{v}" for k, v in errors.most_common()), file=sys.stderr)
     return 0

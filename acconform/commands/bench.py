@@ -1,0 +1,282 @@
+"""acconform bench: the port's run time against its error, exact (float32) mode vs fast (double) mode.
+
+For N scenes per kind (drawn with acconform.strategies.sample_scenes, or taken from a recorded
+corpus with --corpus) runs the port in both modes and prints per kind: milliseconds per scene
+in each mode and their ratio; how many scenes' discrete outcome (ok, cells, flags, validity
+bits, water, SpherePath bits, error presence) differs; and, per float field of the outcome,
+the max and median float32 ULP distance and absolute error of fast mode against exact mode,
+and against the oracle when there is one (live ACE, or the corpus's recorded answers). Float
+figures are taken over the scenes whose discrete outcome agrees (a scene that took another
+branch is counted once, in the discrete column, instead of swamping the float columns).
+
+A benchmark that prints figures, not a test: it always exits 0 (2 for bad options).
+`--json FILE` also writes every figure.
+"""
+
+from __future__ import annotations
+
+import sys
+
+DEFAULT_KINDS = ("terrain", "bsp", "obstacles")
+
+
+def add_arguments(p) -> None:
+    p.add_argument("-n", "--cases", type=int, default=200, help="scenes per kind (default 200)")
+    p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
+    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default terrain,bsp,obstacles)")
+    p.add_argument("--corpus", nargs="?", const="", default=None, metavar="DIR",
+                   help="take the scenes (and the oracle's answers) from a recorded corpus (default: the repository's)")
+    p.add_argument("--no-oracle", action="store_true", help="do not compare against an oracle even when ACE is configured")
+    p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
+    p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
+    p.add_argument("--json", default=None, metavar="FILE", help="also write the figures as JSON")
+
+
+# ---------------------------------------------------------------- outcome leaves (shared with stress)
+
+
+def leaves(outcome, prefix: str = ""):
+    """(path, value) for every leaf of an Outcome, vectors split into components (path[i])."""
+    from dataclasses import fields, is_dataclass
+
+    for f in fields(outcome):
+        v = getattr(outcome, f.name)
+        path = prefix + f.name
+        if is_dataclass(v):
+            yield from leaves(v, path + ".")
+        elif isinstance(v, tuple):
+            for i, c in enumerate(v):
+                yield f"{path}[{i}]", c
+        else:
+            yield path, v
+
+
+def float_part(outcome) -> dict[str, float]:
+    return {p: v for p, v in leaves(outcome) if isinstance(v, float)}
+
+
+def discrete_part(outcome) -> tuple:
+    """Every non-float leaf; an error counts by its presence (its message is free text)."""
+    return tuple((p, (v is not None) if p == "error" else v) for p, v in leaves(outcome) if not isinstance(v, float))
+
+
+def nonfinite_fields(outcome) -> list[str]:
+    import math
+
+    return [p for p, v in float_part(outcome).items() if not math.isfinite(v)]
+
+
+def distance(a: float, b: float) -> tuple[float, float]:
+    """(float32 ULPs, absolute error) between a and b; NaN~NaN is 0 apart, any other non-finite pair inf."""
+    import math
+
+    from ..compare import ulp_distance
+
+    if math.isnan(a) and math.isnan(b):
+        return 0.0, 0.0
+    if not (math.isfinite(a) and math.isfinite(b)):
+        return (0.0, 0.0) if a == b else (math.inf, math.inf)
+    return float(ulp_distance(a, b)), abs(a - b)
+
+
+class ErrorStats:
+    """One comparison (e.g. fast against exact) over a kind's scenes."""
+
+    def __init__(self):
+        self.scenes = 0
+        self.discrete = 0  # scenes whose discrete outcome differs
+        self.ulps: dict[str, list[float]] = {}
+        self.abs: dict[str, list[float]] = {}
+
+    def add(self, a, b) -> None:
+        self.scenes += 1
+        if discrete_part(a) != discrete_part(b):
+            self.discrete += 1
+            return
+        if a.error is not None:  # both raised: no floats to compare
+            return
+        fb = float_part(b)
+        for path, va in float_part(a).items():
+            u, e = distance(va, fb[path])
+            self.ulps.setdefault(path, []).append(u)
+            self.abs.setdefault(path, []).append(e)
+
+    def fields(self) -> dict[str, dict[str, float]]:
+        from statistics import median
+
+        return {p: {"ulp_max": max(us), "ulp_median": median(us), "abs_max": max(self.abs[p]),
+                    "abs_median": median(self.abs[p])} for p, us in self.ulps.items()}
+
+    def to_json(self):
+        return {"scenes": self.scenes, "discrete_differs": self.discrete,
+                "float_scenes": len(next(iter(self.ulps.values()), [])), "fields": self.fields()}
+
+
+# ---------------------------------------------------------------- the run
+
+
+def _scenes(args, kinds):
+    """{kind: scenes}, and the recorded oracle when the scenes come from a corpus."""
+    from ..strategies import sample_scenes
+
+    if args.corpus is None:
+        return {k: list(sample_scenes((k,), args.cases, args.seed)) for k in kinds}, None
+    from ..errors import AcconformError
+    from ..oracle import DEFAULT_CORPUS
+    from ..oracle.recorded import RecordedOracle, scene_kind
+
+    oracle = RecordedOracle(args.corpus or DEFAULT_CORPUS)
+    out: dict[str, list] = {k: [] for k in kinds}
+    for s in oracle.scenes():
+        k = scene_kind(s)
+        if k in out and len(out[k]) < args.cases:
+            out[k].append(s)
+            if all(len(ss) >= args.cases for ss in out.values()):
+                break
+    empty = [k for k, ss in out.items() if not ss]
+    if empty:
+        raise AcconformError(f"the corpus {oracle.corpus_dir} holds no scenes of kind {', '.join(empty)} "
+                             f"(choose others with --kinds)")
+    return out, oracle
+
+
+def measure_kind(scenes, oracle=None) -> dict:
+    """Every figure for one kind's scenes: timings and the three comparisons."""
+    import time
+
+    from ..port.run import run_scene
+
+    t_exact = t_fast = 0.0
+    fast_exact, fast_oracle, exact_oracle = ErrorStats(), ErrorStats(), ErrorStats()
+    errors = {"exact": 0, "fast": 0, "oracle": 0}
+    run_scene(scenes[0], mode="exact"), run_scene(scenes[0], mode="fast")  # warm caches and imports
+    exact, fast = [], []
+    for s in scenes:  # modes alternate scene by scene, so drift in machine load hits both alike
+        t0 = time.perf_counter()
+        e = run_scene(s, mode="exact")
+        t1 = time.perf_counter()
+        f = run_scene(s, mode="fast")
+        t2 = time.perf_counter()
+        t_exact += t1 - t0
+        t_fast += t2 - t1
+        exact.append(e)
+        fast.append(f)
+        fast_exact.add(f, e)
+        errors["exact"] += e.error is not None
+        errors["fast"] += f.error is not None
+    n = len(scenes)
+    out = {"scenes": n, "ms_exact": 1000 * t_exact / n, "ms_fast": 1000 * t_fast / n,
+           "exact_over_fast": t_exact / max(t_fast, 1e-12), "errors": errors,
+           "fast_vs_exact": fast_exact.to_json()}
+    if oracle is not None:
+        t0 = time.perf_counter()
+        if hasattr(oracle, "run_many"):
+            answers = []
+            ace_us = 0.0
+            for i in range(0, n, 256):
+                for o, us in oracle.run_many(scenes[i:i + 256]):
+                    answers.append(o)
+                    ace_us += us
+            out["ms_oracle_ace"] = ace_us / 1000 / n
+        else:
+            answers = [oracle.run(s) for s in scenes]
+        out["ms_oracle_wall"] = 1000 * (time.perf_counter() - t0) / n
+        for e, f, o in zip(exact, fast, answers):
+            fast_oracle.add(f, o)
+            exact_oracle.add(e, o)
+            errors["oracle"] += o.error is not None
+        out["fast_vs_oracle"] = fast_oracle.to_json()
+        out["exact_vs_oracle"] = exact_oracle.to_json()
+    return out
+
+
+def _g(x: float) -> str:
+    return "inf" if x == float("inf") else (f"{x:.0f}" if x == int(x) and abs(x) < 1e9 else f"{x:.3g}")
+
+
+def render_kind(kind: str, r: dict, oracle_name: str | None) -> list[str]:
+    fe = r["fast_vs_exact"]
+    head = (f"{kind}: {r['scenes']} scenes; ms/scene exact {r['ms_exact']:.2f}, fast {r['ms_fast']:.2f}, "
+            f"exact/fast {r['exact_over_fast']:.2f}")
+    if "ms_oracle_wall" in r:
+        head += f"; {oracle_name} oracle {r['ms_oracle_wall']:.2f}"
+        if "ms_oracle_ace" in r:
+            head += f" (ACE's FindValidPosition {r['ms_oracle_ace']:.3f})"
+    lines = [head]
+    disc = f"  discrete outcome differs: fast vs exact {fe['discrete_differs']}/{fe['scenes']}"
+    if "fast_vs_oracle" in r:
+        disc += (f", fast vs oracle {r['fast_vs_oracle']['discrete_differs']}/{r['scenes']}"
+                 f", exact vs oracle {r['exact_vs_oracle']['discrete_differs']}/{r['scenes']}")
+    errs = r["errors"]
+    lines.append(disc + f"; exceptions as verdicts: exact {errs['exact']}, fast {errs['fast']}"
+                 + (f", oracle {errs['oracle']}" if "fast_vs_oracle" in r else ""))
+    cols = [("fast vs exact", fe)] + ([("fast vs oracle", r["fast_vs_oracle"])] if "fast_vs_oracle" in r else [])
+    width = 36
+    titles = [f"{name} ({c['float_scenes']} scenes)" for name, c in cols]
+    lines.append(f"  {'':{width}}" + "".join(f" | {t:^39}" for t in titles))
+    lines.append(f"  {'float field':{width}}" + " | ulp max  ulp med    abs max    abs med" * len(cols))
+    for path in fe["fields"]:
+        row = f"  {path:{width}}"
+        for _, c in cols:
+            s = c["fields"].get(path)
+            row += (" | " + f"{_g(s['ulp_max']):>7}  {_g(s['ulp_median']):>7}  {s['abs_max']:9.3g}  {s['abs_median']:9.3g}"
+                    if s else " | " + f"{'-':>7}  {'-':>7}  {'-':>9}  {'-':>9}")
+        lines.append(row)
+    return lines
+
+
+def run(args) -> int:
+    import json
+    import warnings
+
+    from ..errors import AcconformError
+    from ..strategies import check_kinds
+
+    warnings.simplefilter("ignore", RuntimeWarning)
+    kinds = check_kinds(args.kinds or DEFAULT_KINDS)
+    if args.cases < 1:
+        raise AcconformError(f"--cases must be at least 1, got {args.cases}")
+    by_kind, oracle = _scenes(args, kinds)
+    note = None
+    if args.no_oracle:
+        oracle, note = None, "oracle columns off (--no-oracle)"
+    elif oracle is None:
+        from ..oracle import live_configured, require_live
+
+        if live_configured(args.ace):
+            oracle = require_live(args.ace, args.runtime)
+        else:
+            note = ("no oracle: ACE is not configured (pass --ace or set ACE_ASSEMBLY for the live one, or --corpus "
+                    "for recorded scenes); fast-vs-oracle columns left out")
+    oracle_name = getattr(oracle, "name", None)
+    source = "recorded corpus" if args.corpus is not None else f"sample_scenes seed {args.seed}"
+    print(f"acconform bench: {', '.join(kinds)}; up to {args.cases} scenes per kind from {source}; oracle "
+          + (f"{oracle_name} ({oracle.versions.ace} on {oracle.versions.runtime})" if oracle is not None else "none"))
+    if note:
+        print(note)
+    results = {}
+    for k in kinds:
+        results[k] = measure_kind(by_kind[k], oracle)
+        print()
+        print("\n".join(render_kind(k, results[k], oracle_name)))
+    if args.json:
+        doc = {"format": "acconform.bench/1", "source": source, "seed": args.seed,
+               "oracle": None if oracle is None else {"name": oracle_name, "ace": oracle.versions.ace,
+                                                      "runtime": oracle.versions.runtime},
+               "kinds": results}
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(_finite(doc), f, indent=1, allow_nan=False)
+            f.write("\n")
+        print(f"\nfigures written to {args.json}", file=sys.stderr)
+    return 0
+
+
+def _finite(x):
+    """JSON has no inf or NaN: such figures are written as the strings "inf", "-inf", "nan"."""
+    import math
+
+    if isinstance(x, dict):
+        return {k: _finite(v) for k, v in x.items()}
+    if isinstance(x, float) and not math.isfinite(x):
+        return str(x)
+    return x

@@ -1,0 +1,53 @@
+"""acconform bench: prints run time against error per kind; --json writes the same figures."""
+
+from __future__ import annotations
+
+import json
+import math
+
+from acconform.cli import main
+from acconform.commands.bench import ErrorStats, distance
+from acconform.outcome import Outcome
+
+
+def test_bench_on_five_scenes_prints_timings_and_the_field_table_and_writes_json(no_ace, tmp_path, capsys):
+    out_file = tmp_path / "bench.json"
+    assert main(["bench", "-n", "5", "--kinds", "terrain", "--json", str(out_file)]) == 0
+    out = capsys.readouterr().out
+    assert "terrain: 5 scenes; ms/scene exact" in out and "exact/fast" in out
+    assert "discrete outcome differs: fast vs exact" in out
+    assert "origin[2]" in out and "ulp max" in out
+    assert "no oracle" in out  # no ACE configured: said, not silently dropped
+    doc = json.loads(out_file.read_text())
+    t = doc["kinds"]["terrain"]
+    assert t["scenes"] == 5 and t["ms_exact"] > 0 and t["ms_fast"] > 0
+    assert "origin[0]" in t["fast_vs_exact"]["fields"]
+
+
+def test_bench_against_a_recorded_corpus_adds_the_oracle_columns(no_ace, tmp_path, capsys):
+    from acconform.case import Record, Versions
+    from acconform.oracle.recorded import CorpusWriter
+    from acconform.port.run import run_scene
+    from acconform.strategies import sample_scenes
+
+    with CorpusWriter(tmp_path) as w:  # the port's own answers stand in for ACE's
+        for s in sample_scenes(("terrain",), 3, 5):
+            w.add(Record(s, run_scene(s), Versions("0.1.0", "test", "")))
+    assert main(["bench", "-n", "3", "--kinds", "terrain", "--corpus", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "fast vs oracle" in out and "exact vs oracle 0/3" in out
+
+
+def test_error_stats_count_a_discrete_flip_once_and_keep_it_out_of_the_float_columns():
+    s = ErrorStats()
+    s.add(Outcome(ok=True, origin=(1.0, 2.0, 3.0)), Outcome(ok=True, origin=(1.0, 2.0, 3.0000002)))
+    s.add(Outcome(ok=True, origin=(1.0, 2.0, 9.0)), Outcome(ok=False, origin=(1.0, 2.0, 3.0)))
+    f = s.fields()
+    assert s.discrete == 1 and s.scenes == 2
+    assert f["origin[2]"]["ulp_max"] == 1 and f["origin[0]"]["ulp_max"] == 0
+
+
+def test_distance_treats_nan_pairs_as_equal_and_other_nonfinite_mismatches_as_infinite():
+    assert distance(math.nan, math.nan) == (0.0, 0.0)
+    assert distance(math.inf, 1.0) == (math.inf, math.inf)
+    assert distance(1.0, 1.0000001192092896) == (1.0, 1.1920928955078125e-07)
