@@ -167,6 +167,9 @@ def get_mode(name: str, runtime: str = "mono") -> Mode:
 # Immutable value types: C# assigns structs by copy, so Python must never alias a mutable one.
 
 
+_new = object.__new__  # a Vector3 built without __init__ (its slots set directly: cheaper)
+
+
 class Vector3:
     """System.Numerics.Vector3 as mono's implementation computes it (component order kept)."""
 
@@ -178,26 +181,54 @@ class Vector3:
         self.z = z
 
     def __add__(self, o: "Vector3") -> "Vector3":
-        return Vector3(self.x + o.x, self.y + o.y, self.z + o.z)
+        r = _new(Vector3)
+        r.x = self.x + o.x
+        r.y = self.y + o.y
+        r.z = self.z + o.z
+        return r
 
     def __sub__(self, o: "Vector3") -> "Vector3":
-        return Vector3(self.x - o.x, self.y - o.y, self.z - o.z)
+        r = _new(Vector3)
+        r.x = self.x - o.x
+        r.y = self.y - o.y
+        r.z = self.z - o.z
+        return r
 
     def __neg__(self) -> "Vector3":
         # System.Numerics: operator -(Vector3 value) => Zero - value (so -(0) is +0, not -0)
-        return Vector3(0.0 - self.x, 0.0 - self.y, 0.0 - self.z)
+        r = _new(Vector3)
+        r.x = 0.0 - self.x
+        r.y = 0.0 - self.y
+        r.z = 0.0 - self.z
+        return r
 
     def __mul__(self, o) -> "Vector3":
         if type(o) is Vector3:
-            return Vector3(self.x * o.x, self.y * o.y, self.z * o.z)
-        return Vector3(self.x * o, self.y * o, self.z * o)
+            r = _new(Vector3)
+            r.x = self.x * o.x
+            r.y = self.y * o.y
+            r.z = self.z * o.z
+            return r
+        r = _new(Vector3)
+        r.x = self.x * o
+        r.y = self.y * o
+        r.z = self.z * o
+        return r
 
     def __rmul__(self, s) -> "Vector3":
-        return Vector3(s * self.x, s * self.y, s * self.z)
+        r = _new(Vector3)
+        r.x = s * self.x
+        r.y = s * self.y
+        r.z = s * self.z
+        return r
 
     def __truediv__(self, s) -> "Vector3":
         # mono divides each component (checked against System.Numerics: no reciprocal multiply).
-        return Vector3(self.x / s, self.y / s, self.z / s)
+        r = _new(Vector3)
+        r.x = self.x / s
+        r.y = self.y / s
+        r.z = self.z / s
+        return r
 
     def __eq__(self, o) -> bool:
         return type(o) is Vector3 and self.x == o.x and self.y == o.y and self.z == o.z
@@ -213,13 +244,25 @@ class Vector3:
         yield self.z
 
     def with_x(self, x) -> "Vector3":
-        return Vector3(x, self.y, self.z)
+        r = _new(Vector3)
+        r.x = x
+        r.y = self.y
+        r.z = self.z
+        return r
 
     def with_y(self, y) -> "Vector3":
-        return Vector3(self.x, y, self.z)
+        r = _new(Vector3)
+        r.x = self.x
+        r.y = y
+        r.z = self.z
+        return r
 
     def with_z(self, z) -> "Vector3":
-        return Vector3(self.x, self.y, z)
+        r = _new(Vector3)
+        r.x = self.x
+        r.y = self.y
+        r.z = z
+        return r
 
     def length_squared(self):
         return self.x * self.x + self.y * self.y + self.z * self.z
@@ -239,14 +282,22 @@ def dot(a: Vector3, b: Vector3):
 
 def cross(a: Vector3, b: Vector3) -> Vector3:
     """Vector3.Cross."""
-    return Vector3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x)
+    r = _new(Vector3)
+    r.x = a.y * b.z - a.z * b.y
+    r.y = a.z * b.x - a.x * b.z
+    r.z = a.x * b.y - a.y * b.x
+    return r
 
 
 def normalize(v: Vector3) -> Vector3:
     """Vector3.Normalize (mono, no hardware acceleration): divide by (float)Math.Sqrt(ls)."""
     ls = v.x * v.x + v.y * v.y + v.z * v.z
     length = type(ls)(math.sqrt(ls))
-    return Vector3(v.x / length, v.y / length, v.z / length)
+    r = _new(Vector3)
+    r.x = v.x / length
+    r.y = v.y / length
+    r.z = v.z / length
+    return r
 
 
 def distance(a: Vector3, b: Vector3):
@@ -260,7 +311,11 @@ def distance(a: Vector3, b: Vector3):
 
 def lerp(a: Vector3, b: Vector3, t) -> Vector3:
     """Vector3.Lerp as mono computes it: a + (b - a) * t."""
-    return Vector3(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t)
+    r = _new(Vector3)
+    r.x = a.x + (b.x - a.x) * t
+    r.y = a.y + (b.y - a.y) * t
+    r.z = a.z + (b.z - a.z) * t
+    return r
 
 
 class Quaternion:
@@ -349,11 +404,11 @@ def transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
     yy2 = q.y * y2
     yz2 = q.y * z2
     zz2 = q.z * z2
-    return Vector3(
-        v.x * (1.0 - yy2 - zz2) + v.y * (xy2 - wz2) + v.z * (xz2 + wy2),
-        v.x * (xy2 + wz2) + v.y * (1.0 - xx2 - zz2) + v.z * (yz2 - wx2),
-        v.x * (xz2 - wy2) + v.y * (yz2 + wx2) + v.z * (1.0 - xx2 - yy2),
-    )
+    r = _new(Vector3)
+    r.x = v.x * (1.0 - yy2 - zz2) + v.y * (xy2 - wz2) + v.z * (xz2 + wy2)
+    r.y = v.x * (xy2 + wz2) + v.y * (1.0 - xx2 - zz2) + v.z * (yz2 - wx2)
+    r.z = v.x * (xz2 - wy2) + v.y * (yz2 + wx2) + v.z * (1.0 - xx2 - yy2)
+    return r
 
 
 class Matrix4x4:
@@ -396,11 +451,11 @@ class Matrix4x4:
 def transform_by_matrix(v: Vector3, mat: Matrix4x4) -> Vector3:
     """Vector3.Transform(Vector3, Matrix4x4): the translation row is added (so -0 + 0 = +0)."""
     m = mat.m
-    return Vector3(
-        v.x * m[0] + v.y * m[4] + v.z * m[8] + m[12],
-        v.x * m[1] + v.y * m[5] + v.z * m[9] + m[13],
-        v.x * m[2] + v.y * m[6] + v.z * m[10] + m[14],
-    )
+    r = _new(Vector3)
+    r.x = v.x * m[0] + v.y * m[4] + v.z * m[8] + m[12]
+    r.y = v.x * m[1] + v.y * m[5] + v.z * m[9] + m[13]
+    r.z = v.x * m[2] + v.y * m[6] + v.z * m[10] + m[14]
+    return r
 
 
 class Plane:

@@ -62,7 +62,7 @@ def _build_functions():
     from acconform.port.land import landblock, landblock_struct, lscape
 
     names = [(landblock.Landblock, "__init__"), (landblock.Landblock, "post_init"),
-             (landblock_struct.LandblockStruct, "build_land_cell"), (lscape, "build_landblock")]
+             (lscape.LScape, "build_landblock")]
     return [(o, a) for o, a in names if a in vars(o)]
 
 

@@ -120,6 +120,13 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None) -> Outcome:
 
 def _run(scene: Scene, mode, trace) -> Outcome:
     lscape = LScape(scene, mode)
+    try:
+        return _run_in(scene, mode, trace, lscape)
+    finally:
+        lscape.release()
+
+
+def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
     landblock_ids = [lb.id for lb in scene.landblocks]
     for record in scene.objects:
         build_static(record, landblock_ids, lscape)

@@ -2,8 +2,16 @@
 
 ACE keeps loaded landblocks in statics (LScape.Landblocks on the client, LandblockManager on
 the server) and loads a missing one from the cell DAT. A run here builds one LScape from the
-scene: every landblock the scene lists, built and PostInit'ed up front, in a dict keyed by
-landblock id (0xXXYYFFFF). There is no DAT: where ACE would load a landblock the scene does not
+scene. ACE builds and PostInits every landblock up front; here a landblock is built on the
+first get_landblock that asks for it (most scenes list landblocks a transition never enters),
+into a dict keyed by landblock id (0xXXYYFFFF). That is observably the same because building is
+deterministic and independent of the other landblocks, with one exception kept eager: a
+landblock whose construction throws (an id past the world edge, where blockid_to_lcoord has
+no value) is built up front, so the run fails as ACE's does. Building is deterministic, so built landblocks are pooled across
+runs (`LandblockPool`), keyed by everything they are built from (id, heights, terrain, land
+height table, mode): a run checks one out of the pool (no other LScape can hold it meanwhile),
+its cells' per-run object lists are reset (shadow objects never leak between scenes), and
+`release()` hands it back when the run is over. There is no DAT: where ACE would load a landblock the scene does not
 list, DAT-less ACE throws NullReferenceException (LandblockManager's landblock has no physics
 landblock), and get_landblock raises the port's NullReferenceException (port/errors.py), which
 run_scene reports as the same verdict. Indoor cells (EnvCells) are not supported and
@@ -11,6 +19,8 @@ get_landcell returns None for them.
 """
 
 from __future__ import annotations
+
+from collections import OrderedDict
 
 from acconform.numerics import Mode
 from acconform.port.anchors import anchor
@@ -20,22 +30,91 @@ from acconform.port.land.land_cell import LandCell
 from acconform.port.land.landblock import Landblock
 
 
+class LandblockPool:
+    """Idle built landblocks, at most `size`, least recently released dropped first.
+
+    A landblock is in the pool only while no LScape holds it: `checkout` takes it out (or
+    builds one), `release` puts it back. What a run may change in a landblock is the ObjCell
+    state of its cells (objects and shadow objects registered in them); checkout resets
+    those to what LandCell's constructor leaves, so a pooled landblock reads as a new one.
+    Terrain (vertices, polygons and planes, cell ids and frames, water) is never changed
+    after construction.
+    """
+
+    def __init__(self, size: int = 256):
+        self.size = size
+        self.idle: OrderedDict[tuple, Landblock] = OrderedDict()
+
+    @staticmethod
+    def key(record, land_height_table, mode: Mode) -> tuple:
+        return (record.id, tuple(record.heights), tuple(record.terrain), tuple(land_height_table), mode)
+
+    def checkout(self, record, land_height_table, mode: Mode) -> Landblock:
+        landblock = self.idle.pop(self.key(record, land_height_table, mode), None)
+        if landblock is None:
+            landblock = Landblock(record, land_height_table, mode)
+            landblock.post_init()
+            return landblock
+        for cell in landblock.land_cells.values():  # LandCell(uint)'s ObjCell state
+            cell.object_list = []
+            cell.shadow_object_list = []
+            cell.restriction_obj = 0
+            cell.seen_outside = False
+            cell.voyeur_table = []
+            cell.building = None
+            cell.in_view = False
+        return landblock
+
+    def release(self, key: tuple, landblock: Landblock) -> None:
+        self.idle.pop(key, None)
+        self.idle[key] = landblock
+        while len(self.idle) > self.size:
+            self.idle.popitem(last=False)
+
+    def clear(self) -> None:
+        self.idle.clear()
+
+
+POOL = LandblockPool()
+
+
+def clear_landblock_cache() -> None:
+    """Drop every pooled landblock (benchmarks start cold with it)."""
+    POOL.clear()
+
+
 class LScape:
     """The scene's outdoor world for one run (no globals: make one per run)."""
 
     def __init__(self, scene, mode: Mode):
         self.mode = mode
-        self.landblocks: dict[int, Landblock] = {}
-        for record in scene.landblocks:
-            landblock = Landblock(record, scene.land_height_table, mode)
-            self.landblocks[record.id | 0xFFFF] = landblock
-            landblock.post_init()
+        self.land_height_table = scene.land_height_table
+        self.landblocks: dict[int, Landblock] = {}  # the ones built so far
+        self.records = {record.id | 0xFFFF: record for record in scene.landblocks}
+        for landblock_id, record in self.records.items():
+            if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
+                self.build_landblock(landblock_id)
+
+    def build_landblock(self, landblock_id: int) -> Landblock:
+        """``new Landblock(CellLandblock)`` then PostInit (pooled), on first use."""
+        landblock = POOL.checkout(self.records[landblock_id], self.land_height_table, self.mode)
+        self.landblocks[landblock_id] = landblock
+        return landblock
+
+    def release(self) -> None:
+        """The run is over: hand the landblocks back to the pool (this LScape is unusable after)."""
+        for landblock_id, landblock in self.landblocks.items():
+            POOL.release(LandblockPool.key(self.records[landblock_id], self.land_height_table, self.mode), landblock)
+        self.landblocks = {}
+        self.records = {}
 
     @anchor("LScape::get_landblock", "LScape.cs:get_landblock")
     def get_landblock(self, block_cell_id: int) -> Landblock:
         landblock_id = block_cell_id | 0xFFFF
         landblock = self.landblocks.get(landblock_id)
         if landblock is None:
+            if landblock_id in self.records:
+                return self.build_landblock(landblock_id)
             raise NullReferenceException(
                 f"landblock {landblock_id:08X} is not in the scene (ACE would read it from the DAT)")
         return landblock
