@@ -342,15 +342,16 @@ def _blocks_in_reach(bx, by, p0, p1, reach, objects) -> set[tuple[int, int]]:
         m = rad + margin
         boxes.append((ox - m, oy - m, ox + m, oy + m))
     blocks = {(bx, by)}
-    for x0, y0, x1, y1 in boxes:
+    for k, (x0, y0, x1, y1) in enumerate(boxes):
         ix0, ix1, iy0, iy1 = int(x0 // BLOCK), int(x1 // BLOCK), int(y0 // BLOCK), int(y1 // BLOCK)
-        # a sphere stepping down just across a border looks one landblock further along the
-        # crossing axis (check_pos keeps the old block's frame for a moment: add_all_outside_cells
-        # reaches the cell beyond), so a box spanning a border takes one more block each side
-        if ix1 > ix0:
-            ix0, ix1 = ix0 - 1, ix1 + 1
-        if iy1 > iy0:
-            iy0, iy1 = iy0 - 1, iy1 + 1
+        if k == 0:
+            # a sphere stepping down just across a border looks one landblock further on along
+            # the crossing (check_pos keeps the old block's frame a moment: add_all_outside_cells
+            # reaches the cell beyond), so a path spanning a border takes the next block ahead
+            if ix1 > ix0:
+                ix0, ix1 = (ix0 - 1, ix1) if p1[0] < p0[0] else (ix0, ix1 + 1)
+            if iy1 > iy0:
+                iy0, iy1 = (iy0 - 1, iy1) if p1[1] < p0[1] else (iy0, iy1 + 1)
         for ix in range(ix0, ix1 + 1):
             for iy in range(iy0, iy1 + 1):
                 if 0 <= ix <= 0xFE and 0 <= iy <= 0xFE:

@@ -56,7 +56,7 @@ def describe_scene(scene) -> list[str]:
     if m.contact_plane is not None:
         cp = m.contact_plane
         out.append(f"    contact plane {_id(cp.cell)} n={_v(cp.plane.normal)} d={cp.plane.d:.9g}"
-                   + (" (water)" if cp.is_water else ""))
+                   + (" (water)" if m.transient_state & TransientState.WaterContact else ""))
     if any(v != 0 for v in m.velocity):
         out.append(f"    velocity {_v(m.velocity)}")
     return out

@@ -1,0 +1,89 @@
+"""The fast lane's fixed, stratified sample of the recorded corpus.
+
+    python tests/runner/corpus_sample.py [--size 1500]     rebuild tests/data/corpus/fast-sample.json
+
+Runs every corpus record through the port with a branch trace, then picks, deterministically
+(by scene key): for each branch, rarest first, up to PER_BRANCH records that fire it; then
+records spread evenly over the kinds until SIZE. The file lists each picked record's key, kind
+and the branches it fires, plus how many corpus records fire each branch, so a test can check
+that the sample reaches every kind and every branch the whole corpus reaches without running
+the whole corpus (the full replay is the slow lane and `acconform check`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import warnings
+from collections import Counter, defaultdict
+from pathlib import Path
+
+SAMPLE_FILE = Path(__file__).resolve().parents[1] / "data" / "corpus" / "fast-sample.json"
+SIZE = 1500
+PER_BRANCH = 25
+
+
+def load_sample(path: Path = SAMPLE_FILE) -> dict:
+    return json.loads(path.read_text())
+
+
+def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
+    from acconform.oracle.recorded import RecordedOracle, _doc_key, scene_kind
+    from acconform.port.run import run_scene
+    from acconform.scene import Scene
+
+    warnings.simplefilter("ignore", RuntimeWarning)
+    oracle = RecordedOracle(corpus_dir)
+    fires: dict[str, tuple[str, frozenset]] = {}
+    for key in sorted(oracle._lines):
+        scene = Scene.from_json(json.loads(oracle._lines[key])["scene"])
+        trace: Counter = Counter()
+        run_scene(scene, trace=trace)
+        fires[key] = (scene_kind(scene), frozenset(trace))
+    by_branch: dict[str, list[str]] = defaultdict(list)
+    for key, (_, branches) in fires.items():
+        for b in branches:
+            by_branch[b].append(key)
+    picked: dict[str, None] = {}
+    for b in sorted(by_branch, key=lambda b: (len(by_branch[b]), b)):
+        for key in by_branch[b][:per_branch]:
+            picked[key] = None
+    by_kind: dict[str, list[str]] = defaultdict(list)
+    for key, (kind, _) in fires.items():
+        if key not in picked:
+            by_kind[kind].append(key)
+    kinds = sorted(by_kind)
+    i = 0
+    while len(picked) < size and any(by_kind.values()):
+        k = kinds[i % len(kinds)]
+        if by_kind[k]:
+            picked[by_kind[k].pop(0)] = None
+        i += 1
+    names = sorted(by_branch)
+    return {
+        "made_by": "python tests/runner/corpus_sample.py",
+        "corpus_records": len(fires),
+        "corpus_branches": {b: len(by_branch[b]) for b in names},
+        "branches": names,
+        "records": [[key, fires[key][0], sorted(names.index(b) for b in fires[key][1])] for key in picked],
+    }
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--size", type=int, default=SIZE)
+    p.add_argument("--corpus", default=None)
+    args = p.parse_args(argv)
+    from acconform.oracle import DEFAULT_CORPUS
+
+    doc = build(args.corpus or DEFAULT_CORPUS, args.size)
+    SAMPLE_FILE.write_text(json.dumps(doc, separators=(",", ":")) + "\n")
+    kinds = Counter(r[1] for r in doc["records"])
+    print(f"{len(doc['records'])} of {doc['corpus_records']} records ({dict(kinds)}), "
+          f"{len(doc['branches'])} branches -> {SAMPLE_FILE}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
