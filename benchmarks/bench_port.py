@@ -12,7 +12,8 @@ measured in a separate instrumented pass so the timing pass carries no wrapper c
 
 --against REV checks REV out into a temporary git worktree, runs this same script there in a
 subprocess (imports resolve to the worktree through a shim on sys.path) and prints old, new and
-old/new side by side. Both runs see the same scenes; the new run goes second.
+old/new side by side. Both runs see the same scenes (the corpus of this tree, and this tree's
+generated draw passed to the old run as JSON); the new run goes second.
 """
 
 from __future__ import annotations
@@ -128,12 +129,21 @@ def measure(scenes, mode: str, repeat: int) -> dict:
     return {"ms": best / len(scenes) * 1e3, "build": bt.total / total if total else 0.0}
 
 
+def generated_scenes(args) -> list:
+    """sample_scenes(None, --generated, seed 1) of this tree, or the --scenes file the parent wrote."""
+    if args.scenes:
+        from acconform.case import parse_document
+
+        return [parse_document(d) for d in json.loads(Path(args.scenes).read_text())]
+    from acconform.strategies import sample_scenes
+
+    return list(sample_scenes(None, args.generated, 1))
+
+
 def run(args) -> dict:
     sets = {k: load_corpus(k, args.n) for k in KINDS}
     if args.generated:
-        from acconform.strategies import sample_scenes
-
-        sets["generated"] = list(sample_scenes(None, args.generated, 1))
+        sets["generated"] = generated_scenes(args)
     results = {}
     for name, scenes in sets.items():
         for mode in ("exact", "fast"):
@@ -148,6 +158,7 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) and print old/new")
     ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
+    ap.add_argument("--scenes", help=argparse.SUPPRESS)  # generated scenes as JSON (the parent's draw)
     args = ap.parse_args()
 
     old = None
@@ -157,8 +168,11 @@ def main() -> None:
                        check=True, capture_output=True)
         try:
             env = dict(os.environ, PYTHONPATH=str(_shim(wt)))
+            scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "generated.json"
+            scenes.write_text(json.dumps([s.to_json() for s in generated_scenes(args)] if args.generated else []))
+            args.scenes = str(scenes)  # both runs time the same draw (strategies change between revisions)
             cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--n", str(args.n),
-                   "--generated", str(args.generated), "--repeat", str(args.repeat)]
+                   "--generated", str(args.generated), "--repeat", str(args.repeat), "--scenes", str(scenes)]
             old = json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout)
         finally:
             subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)], capture_output=True)
