@@ -85,12 +85,13 @@ def guarded(backend: Backend, scene: Scene) -> Outcome:
 
 
 def versions_of(port: Backend, oracle: Backend) -> Versions:
-    v = getattr(oracle, "versions", None)
+    owner = getattr(oracle, "__self__", oracle)  # a bound `oracle.run` carries its oracle
+    v = getattr(owner, "versions", None)
     if isinstance(v, Versions):
         return Versions(__version__, v.ace, v.runtime)
     if isinstance(v, dict):
         return Versions(__version__, str(v.get("ace", "")), str(v.get("runtime", "")))
-    return Versions(__version__, str(getattr(oracle, "name", "") or ""), "")
+    return Versions(__version__, str(getattr(owner, "name", "") or ""), "")
 
 
 def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions) -> Case:
@@ -259,6 +260,8 @@ def _worker(w: int) -> tuple[int, list[dict], dict, list[bool]]:
             counter.value += k
 
     timings: Counter = Counter()
+    if s["versions"] is None:  # a per-process oracle: this worker loads its own runtime
+        s["versions"] = versions_of(s["port"], s["oracle"])
     if s["replay"] is not None:
         mine = [sc for i, sc in enumerate(s["replay"]) if i % s["workers"] == w]
         done, found = _replay(s["port"], s["oracle"], mine, mode=s["mode"], keep_going=s["keep_going"], tick=tick,
@@ -281,11 +284,13 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
     """Run a campaign of `n` scenes (or replay `replay`) through port and oracle; see the module doc.
 
     Found differences are written to `failures_dir` (None: not written). `workers` > 1 forks
-    worker processes (the backends are inherited, so any callable works).
+    worker processes (the backends are inherited, so any callable works); an oracle marked
+    `per_process` (a .NET runtime cannot be forked) is first touched inside each worker.
     """
     if mode not in ("exact", "fast"):
         raise AcconformError(f"unknown mode {mode!r}: choose exact or fast")
-    versions = versions_of(port, oracle)
+    per_process = getattr(getattr(oracle, "__self__", oracle), "per_process", False)
+    versions = None if per_process and workers > 1 else versions_of(port, oracle)
     replay_list = list(replay) if replay is not None else None
     total = len(replay_list) if replay_list is not None else n
     bar = Progress(total, progress)

@@ -45,6 +45,46 @@ def get_oracle(ace=None, runtime: str | None = None, corpus=None) -> Oracle:
     return RecordedOracle(path)
 
 
+class PerProcessOracle:
+    """The live oracle, loaded in the process that first uses it.
+
+    A .NET runtime (mono or CoreCLR) does not survive fork(), and pythonnet allows one runtime per
+    process, so a campaign on several worker processes gives each worker its own ACE. The location
+    is checked on disk up front (`config.resolve`) so a missing or wrong file still fails at once,
+    in the parent; the runtime itself is started on the first `run` or `versions` in each process.
+    """
+
+    name = "live"
+    per_process = True
+
+    def __init__(self, ace=None, runtime: str | None = None):
+        from .config import resolve
+
+        if resolve(ace, runtime) is None:
+            from .config import HOW_TO_SET
+
+            raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {HOW_TO_SET}")
+        self._args = (ace, runtime)
+        self._pid = None
+        self._oracle = None
+
+    def _live(self):
+        import os
+
+        if self._oracle is None or self._pid != os.getpid():
+            from .live import LiveOracle
+
+            self._oracle, self._pid = LiveOracle(*self._args), os.getpid()
+        return self._oracle
+
+    @property
+    def versions(self) -> Versions:
+        return self._live().versions
+
+    def run(self, scene: Scene) -> Outcome:
+        return self._live().run(scene)
+
+
 def require_live(ace=None, runtime: str | None = None):
     """The live oracle, or OracleUnavailable saying that no ACE is configured (commands exit 2)."""
     from .config import HOW_TO_SET
@@ -56,4 +96,4 @@ def require_live(ace=None, runtime: str | None = None):
     return LiveOracle(ace, runtime)
 
 
-__all__ = ["Oracle", "get_oracle", "require_live", "live_configured", "DEFAULT_CORPUS"]
+__all__ = ["Oracle", "PerProcessOracle", "get_oracle", "require_live", "live_configured", "DEFAULT_CORPUS"]

@@ -33,7 +33,8 @@ def run(args) -> int:
     kinds = check_kinds(args.kinds)
     if args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
-    oracle, replay = _oracle(args)
+    workers = args.workers or default_workers()
+    oracle, replay = _oracle(args, workers)
     from ..port.run import run_scene
 
     mode = args.mode
@@ -41,7 +42,6 @@ def run(args) -> int:
     def port(scene):
         return run_scene(scene, mode=mode)
 
-    workers = args.workers or default_workers()
     database = None if args.no_database else (args.database or DEFAULT_DATABASE)
     source = f"recorded corpus ({len(replay)} scenes)" if replay is not None else f"{getattr(oracle, 'name', 'oracle')} oracle"
     print(f"acconform check: port vs {source}, mode {mode}, "
@@ -61,14 +61,14 @@ def run(args) -> int:
     return 1 if result.found else 0
 
 
-def _oracle(args):
+def _oracle(args, workers: int):
     """(oracle, scenes to replay or None). Exit-2 errors when there is nothing to compare against."""
     from ..errors import AcconformError, OracleUnavailable
-    from ..oracle import get_oracle
-
-    from ..oracle import live_configured
+    from ..oracle import PerProcessOracle, get_oracle, live_configured
 
     live = live_configured(args.ace)
+    if live and workers > 1:
+        return PerProcessOracle(args.ace, args.runtime), None
     try:
         oracle = get_oracle(args.ace, args.runtime, args.corpus)
         if getattr(oracle, "name", "") == "live":
