@@ -62,6 +62,28 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
         "LastKnownContactPlaneValid", "LastKnownContactPlane", "LastKnownContactPlaneCellID",
         "LastKnownContactPlaneIsWater", "CollisionNormalValid", "CollisionNormal", "SlidingNormalValid",
         "SlidingNormal", "CollidedWithEnvironment", "FramesStationaryFall")),
+    # oracle/functions.py: single ACE routines for the per-function differential tests
+    ("ACE.Server.Physics.Polygon", (
+        "Plane", "PosSurface", "Equals", "point_in_poly2D", "point_in_polygon", "find_crossed_edge",
+        "polygon_hits_sphere", "polygon_hits_sphere_precise", "hits_sphere", "pos_hits_sphere",
+        "walkable_hits_sphere", "check_walkable", "check_small_walkable", "adjust_sphere_to_plane",
+        "adjust_sphere_to_poly", "adjust_to_placement_poly", "polygon_hits_ray")),
+    ("ACE.Entity.Enum.Sidedness", ("Positive", "Negative")),
+    ("ACE.Server.Physics.Entity.Vertex", ("Origin",)),
+    ("ACE.Server.Physics.Ray", (".ctor",)),
+    ("ACE.Server.Physics.Sphere", ("FindTimeOfCollision", "CollidesWithSphere", "Intersects", "SphereIntersectsRay")),
+    ("ACE.Server.Physics.Animation.SpherePath", (".ctor", "WalkableAllowance", "WalkInterp")),
+    ("ACE.Server.Physics.Common.LandDefs", (
+        "GetBlockOffset", "AdjustToOutside", "blockid_to_lcoord", "gid_to_lcoord", "get_outside_lcoord",
+        "lcoord_to_gid", "inbound_valid_cellid", "cell_in_range", "InBlock")),
+    ("ACE.Server.Physics.Common.Landblock", (
+        "GetZ", "get_landcell", "calc_water_depth", "VertexArray", "Polygons", "SWtoNEcut", "LandCells",
+        "WaterType", "SideCellCount", "MinZ", "MaxZ")),
+    ("ACE.Server.Physics.Common.VertexArray", ("Vertices",)),
+    ("ACE.Server.Physics.Common.ObjCell", ("WaterType", "Pos")),
+    ("ACE.Server.Physics.Animation.AFrame", ("LocalToGlobal", "GlobalToLocal", "LocalToGlobalVec", "GlobalToLocalVec",
+                                             "Combine")),
+    ("ACE.Server.Physics.Common.Position", ("GetOffset", "LocalToLocal", "LocalToGlobal")),
 )
 
 
