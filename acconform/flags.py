@@ -1,10 +1,63 @@
 """ACE's flag enums that scenes and outcomes name (ACE.Entity PhysicsState, PhysicsEngine.cs
-TransientStateFlags, ObjectInfo.cs ObjectInfoState, CullMode); values are ACE's."""
+TransientStateFlags, ObjectInfo.cs ObjectInfoState, CullMode); values are ACE's.
 
-from enum import IntEnum, IntFlag
+The three flag sets are read in the port's hottest loops (``state & PhysicsState.Missile``), so
+they are plain classes whose attributes are plain ints: a test is one int ``&``, where an
+``enum.IntFlag`` member goes through Python-level ``__and__`` and ``__new__`` (~20x slower).
+A `FlagSet` class still answers like an enum for the JSON helpers and the scene codec:
+``PhysicsState["Static"]`` and iteration give `Flag` members (ints with ``.name``/``.value``),
+``PhysicsState.__members__`` maps names to them, and ``flag_names``/``flags_from_names`` below
+convert to and from the JSON form.
+"""
+
+from enum import IntEnum
 
 
-class PhysicsState(IntFlag):
+class Flag(int):
+    """One named flag of a FlagSet: an int that also has ``.name`` and ``.value`` (as an enum member)."""
+
+    __slots__ = ()
+
+    @property
+    def value(self) -> int:
+        return int(self)
+
+    @property
+    def name(self) -> str:
+        return self._names[int(self)]
+
+    def __repr__(self) -> str:
+        return f"<{self._owner}.{self.name}: {int(self)}>"
+
+
+class FlagSet(type):
+    """Metaclass of a flag table: int class attributes, enum-like lookup by name and iteration."""
+
+    def __new__(mcls, name, bases, ns):
+        cls = super().__new__(mcls, name, bases, ns)
+        names = {v: k for k, v in ns.items() if not k.startswith("_") and type(v) is int}
+        member = type(f"{name}Flag", (Flag,), {"__slots__": (), "_names": names, "_owner": name})
+        cls._members = {k: member(v) for v, k in sorted(names.items())}
+        return cls
+
+    @property
+    def __members__(cls) -> dict:
+        return dict(cls._members)
+
+    def __getitem__(cls, name: str) -> Flag:
+        return cls._members[name]
+
+    def __iter__(cls):
+        return iter(cls._members.values())
+
+    def __len__(cls) -> int:
+        return len(cls._members)
+
+    def __contains__(cls, value) -> bool:
+        return value in cls._members.values()
+
+
+class PhysicsState(metaclass=FlagSet):
     Static = 0x00000001
     Unused1 = 0x00000002
     Ethereal = 0x00000004
@@ -32,7 +85,7 @@ class PhysicsState(IntFlag):
     Frozen = 0x01000000
 
 
-class TransientState(IntFlag):
+class TransientState(metaclass=FlagSet):
     Contact = 0x1
     OnWalkable = 0x2
     Sliding = 0x4
@@ -44,7 +97,7 @@ class TransientState(IntFlag):
     CheckEthereal = 0x100
 
 
-class ObjectInfoState(IntFlag):
+class ObjectInfoState(metaclass=FlagSet):
     Contact = 0x1
     OnWalkable = 0x2
     IsViewer = 0x4
@@ -76,12 +129,12 @@ class TransitionState(IntEnum):
     Slid = 4
 
 
-def flag_names(enum: type[IntFlag], value: int) -> list[str]:
+def flag_names(enum: FlagSet, value: int) -> list[str]:
     """The member names set in `value`, in value order (the JSON form of a flag set)."""
     return [m.name for m in enum if m.value & value and m.value.bit_count() == 1]
 
 
-def flags_from_names(enum: type[IntFlag], names) -> int:
+def flags_from_names(enum: FlagSet, names) -> int:
     """Inverse of flag_names; raises KeyError naming the first unknown name."""
     value = 0
     for n in names:

@@ -54,7 +54,9 @@ def cast_float(like, x):
 def cs_floor(x):
     """``Math.Floor(double)``: a double; +-inf, NaN and signed zeros pass through as in IEEE floor."""
     x = float(x)
-    return float(math.floor(x)) if math.isfinite(x) and x != 0.0 else x
+    if x != 0.0 and -4503599627370496.0 < x < 4503599627370496.0:  # |x| < 2^52: may have a fraction
+        return float(math.floor(x))
+    return x  # +-0, +-inf, NaN and |x| >= 2^52 (already whole) are their own floor
 
 
 def cs_ceiling(x):
@@ -93,9 +95,10 @@ class Runtime:
         x = float(x)
         if self.name == "mono":
             # x86-64 cvttsd2si: NaN and out-of-range give int.MinValue (checked on mono 6.8).
-            if not math.isfinite(x) or not (-2147483649.0 < x < 2147483648.0):
-                return -2147483648
-            return int(x)
+            # (NaN and +-inf fail the range test.)
+            if -2147483649.0 < x < 2147483648.0:
+                return int(x)
+            return -2147483648
         # .NET 9+ (CoreCLR): conversions saturate and NaN gives 0.
         if math.isnan(x):
             return 0
@@ -109,10 +112,11 @@ class Runtime:
         """C# ``(uint)x`` for a float or double x."""
         x = float(x)
         if self.name == "mono":
-            # mono converts through a 64-bit cvtt and keeps the low 32 bits.
-            if not math.isfinite(x) or not (-9.223372036854775808e18 <= x < 9.223372036854775808e18):
-                return 0
-            return int(x) & 0xFFFFFFFF
+            # mono converts through a 64-bit cvtt and keeps the low 32 bits (NaN, +-inf and
+            # out-of-range fail the range test and give 0).
+            if -9.223372036854775808e18 <= x < 9.223372036854775808e18:
+                return int(x) & 0xFFFFFFFF
+            return 0
         if math.isnan(x) or x <= 0.0:
             return 0
         if x >= 4294967295.0:

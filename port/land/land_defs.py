@@ -146,8 +146,9 @@ def gid_to_lcoord(cell_id: int, env_check: bool = True):
     y = (cell_id >> BLOCK_PART_SHIFT & BLOCK_Y_MASK) << LANDBLOCK_SHIFT
 
     # uint arithmetic: `-` binds before `>>`/`&`; low word 0 cannot get here (not in range)
-    x = wrap_u32(x + (wrap_u32((cell_id & CELL_ID_MASK) - FIRST_LAND_CELL_ID) >> LANDBLOCK_SHIFT))
-    y = wrap_u32(y + (wrap_u32((cell_id & CELL_ID_MASK) - FIRST_LAND_CELL_ID) & LANDBLOCK_MASK))
+    # (`& 0xFFFFFFFF` is wrap_u32, written out in this hot spot)
+    x = (x + (((cell_id & CELL_ID_MASK) - FIRST_LAND_CELL_ID & 0xFFFFFFFF) >> LANDBLOCK_SHIFT)) & 0xFFFFFFFF
+    y = (y + ((cell_id & CELL_ID_MASK) - FIRST_LAND_CELL_ID & 0xFFFFFFFF & LANDBLOCK_MASK)) & 0xFFFFFFFF
 
     if x >= LAND_LENGTH or y >= LAND_LENGTH:
         return None

@@ -76,6 +76,7 @@ class LandblockPool:
 
 
 POOL = LandblockPool()
+_UNSEEN = object()
 
 
 def clear_landblock_cache() -> None:
@@ -90,6 +91,7 @@ class LScape:
         self.mode = mode
         self.land_height_table = scene.land_height_table
         self.landblocks: dict[int, Landblock] = {}  # the ones built so far
+        self.landcells: dict[int, LandCell | None] = {}  # get_landcell's answers so far (see there)
         self.records = {record.id | 0xFFFF: record for record in scene.landblocks}
         for landblock_id, record in self.records.items():
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
@@ -106,6 +108,7 @@ class LScape:
         for landblock_id, landblock in self.landblocks.items():
             POOL.release(LandblockPool.key(self.records[landblock_id], self.land_height_table, self.mode), landblock)
         self.landblocks = {}
+        self.landcells = {}
         self.records = {}
 
     @anchor("LScape::get_landblock", "LScape.cs:get_landblock")
@@ -122,7 +125,19 @@ class LScape:
     @anchor("LScape::get_landcell", "LScape.cs:get_landcell")
     def get_landcell(self, block_cell_id: int) -> LandCell | None:
         """The outdoor cell with that id. Unlike Landblock.get_landcell, ACE does not check the
-        slot's id here; the slot comes from gid_to_lcoord without the env check."""
+        slot's id here; the slot comes from gid_to_lcoord without the env check.
+
+        The answer for an id never changes during a run (a built landblock's cells are fixed),
+        so it is remembered per run: the transition asks for the same few cells thousands of
+        times. A failing lookup (a landblock not in the scene) raises every time."""
+        cell = self.landcells.get(block_cell_id, _UNSEEN)
+        if cell is not _UNSEEN:
+            return cell
+        cell = self.landcells[block_cell_id] = self._get_landcell(block_cell_id)
+        return cell
+
+    def _get_landcell(self, block_cell_id: int) -> LandCell | None:
+        """LScape.get_landcell as ACE writes it (get_landcell remembers its answers)."""
         landblock = self.get_landblock(block_cell_id)
         cell_id = block_cell_id & 0xFFFF
         if cell_id < 0x100:
