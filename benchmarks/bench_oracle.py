@@ -1,55 +1,144 @@
 """Oracle cost per case beside ACE's own in-runtime time, per scene kind.
 
     ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300] [--path facade|direct]
+    ACE_ASSEMBLY=... python benchmarks/bench_oracle.py --against HEAD~1   # before/after in one run
 
-Columns: per case, the oracle's wall time from Python (one `run` call; and per scene in a batch
-`run_many`), the facade's whole case inside .NET, and ACE's FindValidPosition (a Stopwatch
-inside the facade). Medians after a warm-up; landblocks cached across scenes (the default).
+Columns, per case (medians after a warm-up; landblocks cached across scenes, the default):
+  run() us    the oracle's wall time from Python for one `run` call (pack, cross, unpack)
+  batch us    the same per scene inside one `run_many` call
+  .NET us     the facade's whole case inside .NET (reset, build, transition, read back)
+  FVP us      ACE's Transition.FindValidPosition alone (a Stopwatch inside the facade)
+  /FVP, /.NET run() divided by each: issue 3's target is run()/FVP <= 2
+  built       landblocks the facade had to build per case (the rest came from its cache)
+
+--against REV checks REV out into a temporary git worktree and runs this script there in a
+subprocess (imports resolve to the worktree through a shim on sys.path), on the same scenes
+(passed as JSON), first; then this tree. It prints both and whether the outcomes are identical.
 """
 
 from __future__ import annotations
 
 import argparse
+import hashlib
+import json
+import os
 import statistics
+import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _shim(worktree: Path) -> Path:
+    """A directory whose `acconform` package is the worktree's (acconform/, port/, oracle/, strategies/)."""
+    shim = Path(tempfile.mkdtemp(prefix="acconform-shim-"))
+    pkg = shim / "acconform"
+    pkg.mkdir()
+    for entry in (worktree / "acconform").iterdir():
+        (pkg / entry.name).symlink_to(entry)
+    for sub in ("port", "oracle", "strategies"):
+        (pkg / sub).symlink_to(worktree / sub)
+    return shim
+
+
+def scene_groups(n: int) -> dict:
+    from acconform.strategies import sample_scenes
+    from tests.oracle.scenes import PROBE, flat, walk, wall
+
+    groups = {name: [s] * n for name, s in PROBE.items()}
+    groups["BSP wall (slide)"] = [walk(flat, (12.0, 12.0, 20.0), (17.0, 12.0, 20.0), 20.0, objects=(wall(),))] * n
+    for kind in ("terrain", "bsp", "obstacles"):
+        groups[f"strategies: {kind}"] = list(sample_scenes((kind,), n, 7))
+    return groups
+
+
+def measure(groups: dict, path) -> dict:
+    from acconform.oracle.live import LiveOracle
+
+    oracle = LiveOracle(path=path)
+    res = {"oracle": f"{oracle!r}: {oracle.versions.ace} on {oracle.versions.runtime}", "kinds": {}}
+    for name, scenes in groups.items():
+        for s in scenes[:50]:
+            oracle.run(s)  # warm-up: JIT, landblock cache
+        singles, ace, case, built = [], [], [], []
+        digest = hashlib.sha256()
+        for s in scenes:
+            t = time.perf_counter()
+            o, us = oracle.run_timed(s)
+            singles.append((time.perf_counter() - t) * 1e6)
+            ace.append(us)
+            case.append(oracle.last_case_micros)
+            built.append(getattr(oracle, "last_landblocks_built", float("nan")))
+            digest.update(json.dumps(o.to_json(), sort_keys=True).encode())
+        t = time.perf_counter()
+        batch = oracle.run_many(scenes)
+        batch_us = (time.perf_counter() - t) * 1e6 / len(scenes)
+        same = all(b[0].to_json() == oracle.run(s).to_json() for b, s in zip(batch[:20], scenes[:20]))
+        res["kinds"][name] = {"run": statistics.median(singles), "batch": batch_us, "net": statistics.median(case),
+                              "fvp": statistics.median(ace), "built": statistics.mean(built),
+                              "outcomes": digest.hexdigest()[:16], "batch_agrees": same}
+    return res
+
+
+def _ratio(a, b) -> str:
+    return f"{a / b:6.1f}" if b else "   nan"
 
 
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("-n", type=int, default=300)
     ap.add_argument("--path", default=None)
+    ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) first and print before/after")
+    ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
+    ap.add_argument("--scenes", help=argparse.SUPPRESS)  # the parent's scenes as JSON
     args = ap.parse_args()
-    from acconform.oracle.live import LiveOracle
-    from acconform.strategies import sample_scenes
-    from tests.oracle.scenes import PROBE, flat, walk, wall
+    if args.scenes:
+        from acconform.case import parse_document
 
-    oracle = LiveOracle(path=args.path)
-    print(f"{oracle!r}: {oracle.versions.ace} on {oracle.versions.runtime}; facade: {oracle.facade_status}")
-    groups = {name: [s] * args.n for name, s in PROBE.items()}
-    groups["BSP wall (slide)"] = [walk(flat, (12.0, 12.0, 20.0), (17.0, 12.0, 20.0), 20.0, objects=(wall(),))] * args.n
-    for kind in ("terrain", "bsp", "obstacles"):
-        groups[f"strategies: {kind}"] = list(sample_scenes((kind,), args.n, 7))
-    print(f"{'scene kind':32} {'run() us':>10} {'batch us':>10} {'in .NET us':>11} {'ACE FVP us':>11} {'ratio':>6}")
-    for name, scenes in groups.items():
-        for s in scenes[:50]:
-            oracle.run(s)  # warm-up: JIT, landblock cache
-        singles, ace, case = [], [], []
-        for s in scenes:
-            t = time.perf_counter()
-            _, us = oracle.run_timed(s)
-            singles.append((time.perf_counter() - t) * 1e6)
-            ace.append(us)
-            case.append(oracle.last_case_micros)
-        t = time.perf_counter()
-        oracle.run_many(scenes)
-        batch = (time.perf_counter() - t) * 1e6 / len(scenes)
-        a = statistics.median(ace)
-        print(f"{name:32} {statistics.median(singles):10.1f} {batch:10.1f} {statistics.median(case):11.1f} {a:11.1f} "
-              f"{batch / a if a else float('nan'):6.1f}")
+        groups = {k: [parse_document(d) for d in v] for k, v in json.loads(Path(args.scenes).read_text()).items()}
+    else:
+        sys.path.insert(0, str(ROOT))
+        groups = scene_groups(args.n)
+    if args.json:
+        print(json.dumps(measure(groups, args.path)))
+        return 0
+
+    old = None
+    if args.against:
+        wt = Path(tempfile.mkdtemp(prefix="acconform-old-")) / "tree"
+        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt), args.against],
+                       check=True, capture_output=True)
+        try:
+            scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "scenes.json"
+            scenes.write_text(json.dumps({k: [s.to_json() for s in v] for k, v in groups.items()}))
+            cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--scenes", str(scenes)]
+            if args.path:
+                cmd += ["--path", args.path]
+            env = dict(os.environ, PYTHONPATH=str(_shim(wt)))
+            old = json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout)
+        finally:
+            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)], capture_output=True)
+    new = measure(groups, args.path)
+
+    print(new["oracle"])
+    if old:
+        print(f"before = {args.against}, after = this tree; same scenes, one run (before first)")
+        print(f"{'scene kind':28} {'run() us':>17} {'batch us':>15} {'.NET us':>13} {'FVP us':>6} "
+              f"{'/FVP':>11} {'/.NET':>6} {'built':>5}  outcomes")
+        for name, b in new["kinds"].items():
+            a = old["kinds"][name]
+            print(f"{name:28} {a['run']:7.1f} -> {b['run']:6.1f} {a['batch']:6.1f} -> {b['batch']:5.1f} "
+                  f"{a['net']:5.1f} -> {b['net']:5.1f} {b['fvp']:6.1f} {_ratio(a['run'], a['fvp'])} ->{_ratio(b['run'], b['fvp'])} "
+                  f"{_ratio(b['run'], b['net'])} {b['built']:5.2f}  "
+                  f"{'identical' if a['outcomes'] == b['outcomes'] else 'DIFFER'}{'' if b['batch_agrees'] else ' (batch DIFFERS)'}")
+        return 0 if all(old["kinds"][k]["outcomes"] == v["outcomes"] for k, v in new["kinds"].items()) else 1
+    print(f"{'scene kind':28} {'run() us':>9} {'batch us':>9} {'.NET us':>8} {'FVP us':>7} {'/FVP':>6} {'/.NET':>6} {'built':>5}")
+    for name, b in new["kinds"].items():
+        print(f"{name:28} {b['run']:9.1f} {b['batch']:9.1f} {b['net']:8.1f} {b['fvp']:7.1f} {_ratio(b['run'], b['fvp'])} "
+              f"{_ratio(b['run'], b['net'])} {b['built']:5.2f}")
     return 0
 
 

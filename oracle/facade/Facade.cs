@@ -12,6 +12,7 @@ using System.Diagnostics;
 using System.IO;
 using System.Numerics;
 using System.Reflection;
+using System.Runtime.InteropServices;
 using System.Runtime.Serialization;
 using System.Text;
 
@@ -36,37 +37,141 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 1;
+        public const int PackVersion = 2;
         public const uint MoverId = 0x50000001;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's shadow objects, which are removed after each scene.</summary>
         public static bool CacheLandblocks = true;
         public const int CacheLimit = 2048;
-        static readonly Dictionary<string, ACE.Server.Physics.Common.Landblock> landblockCache =
-            new Dictionary<string, ACE.Server.Physics.Common.Landblock>();
+        static readonly Dictionary<ulong, LandblockEntry> landblockCache = new Dictionary<ulong, LandblockEntry>();
         static readonly List<PhysicsObj> sceneStatics = new List<PhysicsObj>();
 
         static readonly List<Tuple<int, int>> tableUsed = new List<Tuple<int, int>>();
         static bool tableCleared;
         static byte[] lastTableBytes;
-        static string lastTableKey;
-        static readonly Dictionary<string, Setup> setupCache = new Dictionary<string, Setup>();
+        static int lastTableId;
+        static readonly Dictionary<ulong, TableEntry> tableIds = new Dictionary<ulong, TableEntry>();
+        static readonly Dictionary<ulong, SetupEntry> setupCache = new Dictionary<ulong, SetupEntry>();
 
         static FieldInfo lbmTable;
         static FieldInfo serverLbPhysics;
         static FieldInfo serverLbId;
 
-        /// <summary>Run one packed scene; returns the packed outcome.</summary>
+        sealed class LandblockEntry { public byte[] Bytes; public int Table; public ACE.Server.Physics.Common.Landblock Landblock; }
+        sealed class TableEntry { public byte[] Bytes; public int Id; }
+        sealed class SetupEntry { public byte[] Bytes; public Setup Setup; }
+
+        // Counters for the last scene (written after the times in every outcome; see pack.unpack_outcome).
+        static int landblocksBuilt, landblocksReused;
+        static double buildMicros;
+
+        // ------------------------------------------------------------------ pinned buffers
+        // Python copies a packed scene straight into InputAddress (ctypes.memmove) and reads the packed
+        // outcome straight from OutputAddress: no per-element conversion and no base64 on either side.
+        // The arrays stay pinned (GCHandle) until they are replaced by bigger ones.
+        static byte[] inBuf, outBuf;
+        static GCHandle inHandle, outHandle;
+        static MemoryStream inStream;
+        static BinaryReader inReader;
+        static readonly MemoryStream outStream = new MemoryStream(4096);
+        static readonly BinaryWriter outWriter = new BinaryWriter(outStream);
+        public static long InputAddress, OutputAddress;
+        public static int InputCapacity, OutputCapacity;
+
+        /// <summary>Make the pinned input buffer hold at least n bytes (InputAddress may change).</summary>
+        public static void EnsureInput(int n)
+        {
+            if (inBuf != null && inBuf.Length >= n) return;
+            if (inHandle.IsAllocated) inHandle.Free();
+            inBuf = new byte[Math.Max(n, inBuf == null ? 1 << 16 : 2 * inBuf.Length)];
+            inHandle = GCHandle.Alloc(inBuf, GCHandleType.Pinned);
+            InputAddress = inHandle.AddrOfPinnedObject().ToInt64();
+            InputCapacity = inBuf.Length;
+            inStream = new MemoryStream(inBuf, 0, inBuf.Length, false, true);
+            inReader = new BinaryReader(inStream);
+        }
+
+        static void EnsureOutput(int n)
+        {
+            if (outBuf != null && outBuf.Length >= n) return;
+            if (outHandle.IsAllocated) outHandle.Free();
+            outBuf = new byte[Math.Max(n, outBuf == null ? 1 << 12 : 2 * outBuf.Length)];
+            outHandle = GCHandle.Alloc(outBuf, GCHandleType.Pinned);
+            OutputAddress = outHandle.AddrOfPinnedObject().ToInt64();
+            OutputCapacity = outBuf.Length;
+        }
+
+        /// <summary>Allocate both pinned buffers (called once when the oracle loads).</summary>
+        public static void Init()
+        {
+            EnsureInput(1 << 16);
+            EnsureOutput(1 << 12);
+        }
+
+        static int CopyOut()
+        {
+            var n = (int)outStream.Length;
+            EnsureOutput(n);  // a bigger buffer has a new address; the caller sees n > its OutputCapacity
+            Buffer.BlockCopy(outStream.GetBuffer(), 0, outBuf, 0, n);
+            return n;
+        }
+
+        /// <summary>Run the packed scene in the first `length` bytes of the input buffer; the packed
+        /// outcome is in the output buffer; returns its length.</summary>
+        public static int RunPinned(int length)
+        {
+            outStream.SetLength(0);
+            inStream.Position = 0;
+            RunInto(inReader, length, outWriter);
+            return CopyOut();
+        }
+
+        /// <summary>Several scenes from the input buffer (int count, then per scene int length + bytes);
+        /// per outcome (int length + bytes) in the output buffer; returns the total length.</summary>
+        public static int RunManyPinned(int length)
+        {
+            outStream.SetLength(0);
+            inStream.Position = 0;
+            var n = inReader.ReadInt32();
+            var pos = 4;
+            for (var i = 0; i < n; i++)
+            {
+                inStream.Position = pos;
+                var len = inReader.ReadInt32();
+                var lenAt = outStream.Position;
+                outWriter.Write(0);
+                inStream.Position = pos + 4;
+                RunInto(inReader, len, outWriter);
+                var end = outStream.Position;
+                outStream.Position = lenAt;
+                outWriter.Write((int)(end - lenAt - 4));
+                outStream.Position = end;
+                pos += 4 + len;
+            }
+            return CopyOut();
+        }
+
+        /// <summary>Run one packed scene; returns the packed outcome (for callers holding a byte[]).</summary>
         public static byte[] Run(byte[] scene)
         {
-            var outcome = new MemoryStream(256);
-            var w = new BinaryWriter(outcome);
+            var ms = new MemoryStream(256);
+            var w = new BinaryWriter(ms);
+            RunInto(new BinaryReader(new MemoryStream(scene, 0, scene.Length, false, true)), scene.Length, w);
+            w.Flush();
+            return ms.ToArray();
+        }
+
+        static void RunInto(BinaryReader r, int length, BinaryWriter w)
+        {
+            var outcome = (MemoryStream)w.BaseStream;
+            var start = outcome.Position;
             double fvpMicros = 0;
+            landblocksBuilt = landblocksReused = 0;
+            buildMicros = 0;
             var total = Stopwatch.StartNew();
             try
             {
-                var r = new BinaryReader(new MemoryStream(scene));
                 var mover = BuildScene(r);
                 var ok = RunTransition(mover.Item1, mover.Item2, mover.Item3, out var trans, out fvpMicros);
                 WriteOutcome(w, ok, trans, mover.Item1, fvpMicros);
@@ -76,41 +181,20 @@ namespace Acconform.Oracle
             catch (Exception e)
             {
                 while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
-                outcome.SetLength(0);
+                outcome.Position = start;
+                outcome.SetLength(start);
                 w.Write((byte)0xEE);
                 var msg = Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
                 w.Write(msg.Length);
                 w.Write(msg);
                 w.Write(fvpMicros);
                 try { RemoveStatics(); }
-                catch (Exception) { landblockCache.Clear(); sceneStatics.Clear(); }
+                catch (Exception) { ClearCache(); sceneStatics.Clear(); }
                 w.Write(total.Elapsed.TotalMilliseconds * 1000.0);
             }
-            w.Flush();
-            return outcome.ToArray();
-        }
-
-        public static string RunBase64(string scene)
-        {
-            return Convert.ToBase64String(Run(Convert.FromBase64String(scene)));
-        }
-
-        /// <summary>Several scenes in one call: (int count, then per scene int length + bytes) in,
-        /// per outcome (int length + bytes) out.</summary>
-        public static string RunBatchBase64(string scenes)
-        {
-            var r = new BinaryReader(new MemoryStream(Convert.FromBase64String(scenes)));
-            var ms = new MemoryStream();
-            var w = new BinaryWriter(ms);
-            var n = r.ReadInt32();
-            for (var i = 0; i < n; i++)
-            {
-                var one = Run(r.ReadBytes(r.ReadInt32()));
-                w.Write(one.Length);
-                w.Write(one);
-            }
-            w.Flush();
-            return Convert.ToBase64String(ms.ToArray());
+            w.Write(landblocksBuilt);
+            w.Write(landblocksReused);
+            w.Write(buildMicros);
         }
 
         public static void ClearCache()
@@ -118,6 +202,34 @@ namespace Acconform.Oracle
             serverLandblocks.Clear();
             landblockCache.Clear();
             setupCache.Clear();
+        }
+
+        // ------------------------------------------------------------------ content keys
+        /// <summary>FNV-1a over 8-byte words (then the tail): a cache key; entries keep their bytes and
+        /// a hit is confirmed byte for byte, so a collision can only cost a rebuild, never a wrong answer.</summary>
+        static ulong Hash(byte[] b, int off, int len)
+        {
+            ulong h = 14695981039346656037UL;
+            var i = 0;
+            for (; i + 8 <= len; i += 8) { h ^= BitConverter.ToUInt64(b, off + i); h *= 1099511628211UL; }
+            for (; i < len; i++) { h ^= b[off + i]; h *= 1099511628211UL; }
+            return h ^ (ulong)len;
+        }
+
+        static bool BytesEqual(byte[] a, byte[] b, int off, int len)
+        {
+            if (a.Length != len) return false;
+            var i = 0;
+            for (; i + 8 <= len; i += 8) if (BitConverter.ToUInt64(a, i) != BitConverter.ToUInt64(b, off + i)) return false;
+            for (; i < len; i++) if (a[i] != b[off + i]) return false;
+            return true;
+        }
+
+        static byte[] Slice(byte[] b, int off, int len)
+        {
+            var copy = new byte[len];
+            Buffer.BlockCopy(b, off, copy, 0, len);
+            return copy;
         }
 
         static void RemoveStatics()
@@ -225,36 +337,44 @@ namespace Acconform.Oracle
 
             var nlb = r.ReadInt32();
             var built = new List<ACE.Server.Physics.Common.Landblock>();
-            string tableKey = null;
+            var ms = (MemoryStream)r.BaseStream;
+            var buf = ms.GetBuffer();
+            var sw = Stopwatch.StartNew();
             for (var i = 0; i < nlb; i++)
             {
                 var len = r.ReadInt32();
-                var bytes = r.ReadBytes(len);
+                var off = (int)ms.Position;
+                ms.Position = off + len;
                 ACE.Server.Physics.Common.Landblock lb = null;
-                string key = null;
+                ulong key = 0;
                 if (CacheLandblocks)
                 {
-                    if (tableKey == null) tableKey = lastTableKey;
-                    key = Convert.ToBase64String(bytes) + tableKey;
-                    landblockCache.TryGetValue(key, out lb);
+                    key = Hash(buf, off, len) ^ ((ulong)(uint)lastTableId * 0x9E3779B97F4A7C15UL);
+                    LandblockEntry e;
+                    if (landblockCache.TryGetValue(key, out e) && e.Table == lastTableId && BytesEqual(e.Bytes, buf, off, len))
+                        lb = e.Landblock;
                 }
                 if (lb == null)
                 {
+                    var bytes = Slice(buf, off, len);
                     var clb = new CellLandblock();
                     clb.Unpack(new BinaryReader(new MemoryStream(bytes)));
                     lb = new ACE.Server.Physics.Common.Landblock(clb);
                     built.Add(lb);
-                    if (key != null)
+                    if (CacheLandblocks)
                     {
                         if (landblockCache.Count >= CacheLimit) landblockCache.Clear();
-                        landblockCache[key] = lb;
+                        landblockCache[key] = new LandblockEntry { Bytes = bytes, Table = lastTableId, Landblock = lb };
                     }
                 }
+                else landblocksReused++;
                 var id = lb.ID | 0xFFFF;
                 LScape.Landblocks[id] = lb;  // registered before PostInit, as LScape.get_landblock does
                 if (server) RegisterServerLandblock(id, lb);
             }
             foreach (var lb in built) lb.PostInit();
+            landblocksBuilt = built.Count;
+            buildMicros = sw.Elapsed.TotalMilliseconds * 1000.0;
             if (!server)
                 PhysicsEngine.Instance.Server = false;
 
@@ -266,43 +386,45 @@ namespace Acconform.Oracle
         }
 
         static List<float> lastTableList;
-        static readonly Dictionary<string, int> tableIds = new Dictionary<string, int>();
 
         /// <summary>The scene's land height table; the same List as the last scene's when the values are
         /// bit-identical (ACE only reads it), and a small id naming its bits for the landblock cache key.</summary>
         static List<float> ReadHeightTable(BinaryReader r)
         {
-            var bytes = r.ReadBytes(256 * 4);
-            if (lastTableBytes != null && BytesEqual(bytes, lastTableBytes))
+            var ms = (MemoryStream)r.BaseStream;
+            var buf = ms.GetBuffer();
+            var off = (int)ms.Position;
+            ms.Position = off + 256 * 4;
+            if (lastTableBytes != null && BytesEqual(lastTableBytes, buf, off, 256 * 4))
                 return lastTableList;
+            var bytes = Slice(buf, off, 256 * 4);
             var table = new List<float>(256);
             for (var i = 0; i < 256; i++) table.Add(BitConverter.ToSingle(bytes, i * 4));
-            var b64 = Convert.ToBase64String(bytes);
-            int id;
-            if (!tableIds.TryGetValue(b64, out id))
+            var h = Hash(bytes, 0, bytes.Length);
+            TableEntry e;
+            if (!tableIds.TryGetValue(h, out e) || !BytesEqual(e.Bytes, bytes, 0, bytes.Length))
             {
                 if (tableIds.Count >= CacheLimit) { tableIds.Clear(); landblockCache.Clear(); }
-                id = tableIds.Count;
-                tableIds[b64] = id;
+                // ids are never reused while a landblock built under an older table can still be cached
+                e = new TableEntry { Bytes = bytes, Id = ++tableSerial };
+                tableIds[h] = e;
             }
             lastTableBytes = bytes;
             lastTableList = table;
-            lastTableKey = "|" + id.ToString();
+            lastTableId = e.Id;
             return table;
         }
 
-        static bool BytesEqual(byte[] a, byte[] b)
-        {
-            if (a.Length != b.Length) return false;
-            for (var i = 0; i < a.Length; i++) if (a[i] != b[i]) return false;
-            return true;
-        }
+        static int tableSerial;
+        static readonly MemoryStream setupStream = new MemoryStream(256);
+        static readonly BinaryWriter setupWriter = new BinaryWriter(setupStream);
 
         static Setup MakeSetup(List<Vector4> spheres, List<Vector3> cylLow, List<Vector2> cylRH, float height, float radius,
                                float stepUp, float stepDown, Vector4 sorting)
         {
-            var ms = new MemoryStream();
-            var w = new BinaryWriter(ms);
+            var ms = setupStream;
+            ms.SetLength(0);
+            var w = setupWriter;
             w.Write(0x02000001u); w.Write(0u); w.Write(0u);       // Id, Flags, NumParts
             w.Write(0); w.Write(0); w.Write(0);                    // HoldingLocations, ConnectionPoints, PlacementFrames
             w.Write(cylLow.Count);
@@ -318,21 +440,23 @@ namespace Acconform.Oracle
             w.Write(0);                                            // Lights
             for (var k = 0; k < 5; k++) w.Write(0u);               // default anim/script/mtable/stable/phstable
             w.Flush();
-            string key = null;
-            Setup setup;
+            var len = (int)ms.Length;
+            var buf = ms.GetBuffer();
+            ulong key = 0;
             if (CacheLandblocks)
             {
-                key = Convert.ToBase64String(ms.GetBuffer(), 0, (int)ms.Length);
-                if (setupCache.TryGetValue(key, out setup)) return setup;
+                key = Hash(buf, 0, len);
+                SetupEntry e;
+                if (setupCache.TryGetValue(key, out e) && BytesEqual(e.Bytes, buf, 0, len)) return e.Setup;
             }
-            ms.Position = 0;
+            var bytes = Slice(buf, 0, len);
             var model = new SetupModel();
-            model.Unpack(new BinaryReader(ms));
-            setup = new Setup(model);
-            if (key != null)
+            model.Unpack(new BinaryReader(new MemoryStream(bytes)));
+            var setup = new Setup(model);
+            if (CacheLandblocks)
             {
                 if (setupCache.Count >= CacheLimit) setupCache.Clear();
-                setupCache[key] = setup;
+                setupCache[key] = new SetupEntry { Bytes = bytes, Setup = setup };
             }
             return setup;
         }

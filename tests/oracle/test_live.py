@@ -147,3 +147,20 @@ def test_a_bogus_member_asked_through_the_real_checker_fails_clearly(live):
     check_required((("ACE.Server.Physics.PhysicsObj", ("FindObjCollisions",)),))  # a real one passes
     with pytest.raises(OracleUnavailable, match=r"ACE\.Server\.Physics\.PhysicsObj\.NoSuchMember"):
         check_required((("ACE.Server.Physics.PhysicsObj", ("NoSuchMember",)),))
+
+
+def test_the_facade_counts_landblocks_built_and_reused(live):
+    if live.path != "facade":
+        pytest.skip("counters come from the C# facade; this oracle runs the pure-pythonnet path")
+    s = walk(ramp, (30.0, 12.0, 22.5), (31.0, 12.0, 22.5 + 2 / 24), 22.5, name="counted")
+    live.run(s)
+    live.run(s)
+    assert (live.last_landblocks_built, live.last_landblocks_reused) == (0, 1)  # same bytes, same height table
+    other = s.replace(land_height_table=tuple(x * 2 for x in s.land_height_table))
+    first = live.run(other)
+    assert (live.last_landblocks_built, live.last_landblocks_reused) == (1, 0) and live.last_build_micros > 0
+    live.set_landblock_cache(False)
+    try:
+        assert live.run(other) == first and live.last_landblocks_built == 1
+    finally:
+        live.set_landblock_cache(True)

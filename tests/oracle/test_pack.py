@@ -1,0 +1,58 @@
+"""The packed boundary without ACE: the outcome reader builds the same records the dataclasses do."""
+
+import math
+import struct
+
+from acconform.outcome import ContactPlaneState, NormalState, Outcome
+from acconform.oracle.pack import _OUT, _frozen_maker, pack_scene, unpack_outcome
+
+from .scenes import PROBE
+
+
+def _packed(cp_normal=(0.0, 0.0, 1.0), sliding=(0.0, 0.0, 0.0), neg=0):
+    vals = (1, 1, 0xA9B40001, 12.5, 12.0, 20.0, 1.0, 0.0, 0.0, 0.0, 0x103,
+            1, 0xA9B40001, 0, *cp_normal, -20.0,
+            1, 0xA9B40001, 0, 0.0, 0.0, 1.0, -20.0,
+            0, 0.0, 0.0, 0.0, 1, *sliding,
+            1, 0, 0.0, 0.0, 0.0, 0xA9B40001, 1, 0, neg, 1.5, 12.0, 2, 1, 30.0)
+    return _OUT.pack(*vals)
+
+
+def test_the_fast_record_maker_gives_records_equal_to_the_dataclass_constructor():
+    make = _frozen_maker(ContactPlaneState)
+    a, b = make(True, 5, False, (0.0, 0.0, 1.0), -20.0), ContactPlaneState(True, 5, False, (0.0, 0.0, 1.0), -20.0)
+    assert a == b and hash(a) == hash(b) and type(a) is ContactPlaneState
+
+
+def test_unpacking_reads_every_field_and_the_facade_counters():
+    o, fvp, case, counts = unpack_outcome(bytearray(_packed()))
+    assert o == Outcome(ok=True, cell=0xA9B40001, origin=(12.5, 12.0, 20.0), orientation=(1.0, 0.0, 0.0, 0.0),
+                        object_info_state=0x103,
+                        contact_plane=ContactPlaneState(True, 0xA9B40001, False, (0.0, 0.0, 1.0), -20.0),
+                        last_known_contact_plane=ContactPlaneState(True, 0xA9B40001, False, (0.0, 0.0, 1.0), -20.0),
+                        collision_normal=NormalState(), sliding_normal=NormalState(True, (0.0, 0.0, 0.0)),
+                        collided_with_environment=True, check_cell=0xA9B40001, walkable=True)
+    assert (fvp, case, counts) == (1.5, 12.0, (2, 1, 30.0))
+
+
+def test_shared_records_are_keyed_by_bits_so_negative_zero_stays_negative():
+    plus = unpack_outcome(_packed(sliding=(0.0, 0.0, 0.0)))[0]
+    minus = unpack_outcome(_packed(sliding=(-0.0, 0.0, 0.0)))[0]
+    assert math.copysign(1.0, plus.sliding_normal.vector[0]) == 1.0
+    assert math.copysign(1.0, minus.sliding_normal.vector[0]) == -1.0
+    again = unpack_outcome(_packed(cp_normal=(-0.0, 0.0, 1.0)))[0]
+    assert math.copysign(1.0, again.contact_plane.normal[0]) == -1.0 and again.last_known_contact_plane.normal[0] == 0.0
+    assert math.copysign(1.0, again.last_known_contact_plane.normal[0]) == 1.0
+
+
+def test_an_error_outcome_carries_the_message_and_the_counters():
+    msg = "NullReferenceException: boom".encode()
+    data = b"\xee" + struct.pack("<i", len(msg)) + msg + struct.pack("<ddiid", 0.0, 9.0, 1, 0, 5.0)
+    o, fvp, case, counts = unpack_outcome(data)
+    assert o == Outcome(error="NullReferenceException: boom") and (case, counts) == (9.0, (1, 0, 5.0))
+
+
+def test_packing_is_deterministic_and_shares_the_height_table_bytes():
+    s = PROBE["ramp walk uphill"]
+    assert pack_scene(s) == pack_scene(s)
+    assert pack_scene(s.replace(land_height_table=tuple(x + 1.0 for x in s.land_height_table))) != pack_scene(s)
