@@ -5,11 +5,12 @@
 
 Columns, per case (medians after a warm-up; landblocks cached across scenes, the default):
   run() us    the oracle's wall time from Python for one `run` call (pack, cross, unpack)
-  batch us    the same per scene inside one `run_many` call
+  batch us    the same per scene through `run_many`, BATCH scenes a call
   .NET us     the facade's whole case inside .NET (reset, build, transition, read back)
   FVP us      ACE's Transition.FindValidPosition alone (a Stopwatch inside the facade)
   /FVP, /.NET run() divided by each: issue 3's target is run()/FVP <= 2
   built       landblocks the facade had to build per case (the rest came from its cache)
+  us/lb       .NET time per landblock built (CellLandblock.Unpack, new Landblock, PostInit)
 
 --against REV checks REV out into a temporary git worktree and runs this script there in a
 subprocess (imports resolve to the worktree through a shim on sys.path), on the same scenes
@@ -30,6 +31,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+BATCH = 50  # scenes per run_many call
 
 
 def _shim(worktree: Path) -> Path:
@@ -63,7 +65,7 @@ def measure(groups: dict, path) -> dict:
     for name, scenes in groups.items():
         for s in scenes[:50]:
             oracle.run(s)  # warm-up: JIT, landblock cache
-        singles, ace, case, built = [], [], [], []
+        singles, ace, case, built, build_us = [], [], [], [], []
         digest = hashlib.sha256()
         for s in scenes:
             t = time.perf_counter()
@@ -72,13 +74,17 @@ def measure(groups: dict, path) -> dict:
             ace.append(us)
             case.append(oracle.last_case_micros)
             built.append(getattr(oracle, "last_landblocks_built", float("nan")))
+            build_us.append(getattr(oracle, "last_build_micros", float("nan")))
             digest.update(json.dumps(o.to_json(), sort_keys=True).encode())
-        t = time.perf_counter()
-        batch = oracle.run_many(scenes)
+        oracle.run_many(scenes[:BATCH])  # warm-up: the batch buffers grow once
+        batch, t = [], time.perf_counter()
+        for i in range(0, len(scenes), BATCH):
+            batch += oracle.run_many(scenes[i:i + BATCH])
         batch_us = (time.perf_counter() - t) * 1e6 / len(scenes)
         same = all(b[0].to_json() == oracle.run(s).to_json() for b, s in zip(batch[:20], scenes[:20]))
         res["kinds"][name] = {"run": statistics.median(singles), "batch": batch_us, "net": statistics.median(case),
                               "fvp": statistics.median(ace), "built": statistics.mean(built),
+                              "lb_us": sum(build_us) / sum(built) if sum(built) else float("nan"),
                               "outcomes": digest.hexdigest()[:16], "batch_agrees": same}
     return res
 
@@ -127,18 +133,18 @@ def main() -> int:
     if old:
         print(f"before = {args.against}, after = this tree; same scenes, one run (before first)")
         print(f"{'scene kind':28} {'run() us':>17} {'batch us':>15} {'.NET us':>13} {'FVP us':>6} "
-              f"{'/FVP':>11} {'/.NET':>6} {'built':>5}  outcomes")
+              f"{'/FVP':>11} {'/.NET':>6} {'built':>5} {'us/lb':>5}  outcomes")
         for name, b in new["kinds"].items():
             a = old["kinds"][name]
             print(f"{name:28} {a['run']:7.1f} -> {b['run']:6.1f} {a['batch']:6.1f} -> {b['batch']:5.1f} "
                   f"{a['net']:5.1f} -> {b['net']:5.1f} {b['fvp']:6.1f} {_ratio(a['run'], a['fvp'])} ->{_ratio(b['run'], b['fvp'])} "
-                  f"{_ratio(b['run'], b['net'])} {b['built']:5.2f}  "
+                  f"{_ratio(b['run'], b['net'])} {b['built']:5.2f} {b['lb_us']:5.0f}  "
                   f"{'identical' if a['outcomes'] == b['outcomes'] else 'DIFFER'}{'' if b['batch_agrees'] else ' (batch DIFFERS)'}")
         return 0 if all(old["kinds"][k]["outcomes"] == v["outcomes"] for k, v in new["kinds"].items()) else 1
-    print(f"{'scene kind':28} {'run() us':>9} {'batch us':>9} {'.NET us':>8} {'FVP us':>7} {'/FVP':>6} {'/.NET':>6} {'built':>5}")
+    print(f"{'scene kind':28} {'run() us':>9} {'batch us':>9} {'.NET us':>8} {'FVP us':>7} {'/FVP':>6} {'/.NET':>6} {'built':>5} {'us/lb':>5}")
     for name, b in new["kinds"].items():
         print(f"{name:28} {b['run']:9.1f} {b['batch']:9.1f} {b['net']:8.1f} {b['fvp']:7.1f} {_ratio(b['run'], b['fvp'])} "
-              f"{_ratio(b['run'], b['net'])} {b['built']:5.2f}")
+              f"{_ratio(b['run'], b['net'])} {b['built']:5.2f} {b['lb_us']:5.0f}")
     return 0
 
 
