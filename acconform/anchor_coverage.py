@@ -3,6 +3,7 @@
     with counting_anchors() as calls:      # calls: Counter, anchor qualname -> calls
         run_scene(scene)
     for row in anchor_rows(calls): ...     # (Anchor, calls), every registered anchor, registry order
+    for row in harness_rows(calls): ...    # (Harness, calls), the harness glue (port/anchors.py HARNESS)
 
 `counting_anchors` imports every port module (acconform.port.anchors.load_all), finds each
 anchored function by its qualname and replaces it -- and every other reference to the same
@@ -80,9 +81,9 @@ def _counting(fn, key: str, calls: Counter):
 @contextmanager
 def counting_anchors():
     """Count calls to every registered anchor inside the block; yields a Coverage (filled live)."""
-    from .port.anchors import load_all
+    from .port.anchors import HARNESS, load_all
 
-    registry = load_all()
+    registry = list(load_all()) + list(HARNESS)  # harness glue is counted too, and listed apart
     cov = Coverage()
     by_func: dict[int, str] = {}
     for key in registry:
@@ -120,6 +121,14 @@ def anchor_rows(calls: Counter):
     return [(a, calls.get(key, 0)) for key, a in load_all().items()]
 
 
+def harness_rows(calls: Counter):
+    """(Harness, calls) for every harness function (glue with no ACE counterpart), in registry order."""
+    from .port.anchors import HARNESS, load_all
+
+    load_all()
+    return [(h, calls.get(key, 0)) for key, h in HARNESS.items()]
+
+
 def render_table(calls: Counter, unwrapped=()) -> list[str]:
     """The `coverage --anchors` table: retail name, ACE File.cs:Method, calls; then the summary."""
     rows = anchor_rows(calls)
@@ -133,6 +142,13 @@ def render_table(calls: Counter, unwrapped=()) -> list[str]:
     out.append(f"{reached} of {len(rows)} anchors reached")
     if never:
         out.append(f"never reached ({len(never)}): " + ", ".join(a.retail or a.ace for a in never))
+    glue = harness_rows(calls)
+    if glue:
+        name_w = max(len(h.qualname) for h, _ in glue)
+        out.append("")
+        out.append(f"harness glue (no ACE counterpart, {len(glue)}):")
+        for h, n in glue:
+            out.append(f"  {h.qualname:{name_w}}  {n:9d}  {h.what}")
     if unwrapped:
         out.append(f"not counted (no reference found to wrap, {len(unwrapped)}): " + ", ".join(unwrapped))
     return out

@@ -8,6 +8,12 @@ Use as a decorator; it registers and returns the function unchanged (no call ove
 `retail` is the retail client's name (``None`` where ACE has no retail counterpart, e.g. a
 server-only helper); `ace` is ``File.cs:Method``. Coverage per anchor and the registry audit
 (tests/port/test_anchors.py) read `REGISTRY`.
+
+Harness glue -- public port functions with no ACE counterpart (building port objects from
+scene records, .NET library behaviour such as Dictionary order or ``Nullable.Value``, the
+landblock pool) -- is registered apart with ``@harness("what it does")`` in `HARNESS`, so the
+ACE registry holds only ACE. The audit requires every public port function to be in one of
+the two; ``acconform coverage --anchors`` lists the harness functions separately.
 """
 
 from __future__ import annotations
@@ -32,9 +38,33 @@ def anchor(retail: str | None, ace: str, note: str = ""):
 
     def register(fn):
         key = f"{fn.__module__}.{fn.__qualname__}"
-        if key in REGISTRY:
+        if key in REGISTRY or key in HARNESS:
             raise ValueError(f"{key} is anchored twice")
         REGISTRY[key] = Anchor(key, retail, ace, note)
+        return fn
+
+    return register
+
+
+@dataclass(frozen=True, slots=True)
+class Harness:
+    qualname: str  # module-qualified Python name of the harness function
+    what: str  # what it does instead of an ACE routine
+
+
+HARNESS: dict[str, Harness] = {}
+
+
+def harness(what: str):
+    """Register a public port function that is harness glue, not ACE (see the module note)."""
+    if not what:
+        raise ValueError("a harness function says what it does")
+
+    def register(fn):
+        key = f"{fn.__module__}.{fn.__qualname__}"
+        if key in HARNESS or key in REGISTRY:
+            raise ValueError(f"{key} is registered twice")
+        HARNESS[key] = Harness(key, what)
         return fn
 
     return register

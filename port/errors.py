@@ -8,12 +8,15 @@ the port's own (they say why); only the type is ACE's.
 
 from __future__ import annotations
 
+from .anchors import harness
+
 
 class AceException(Exception):
     """Where ACE throws: `dotnet_type` is the .NET exception's type name (Exception.GetType().Name)."""
 
     dotnet_type = "Exception"
 
+    @harness("formats the exception as the oracle reports ACE's: '<.NET type>: <message>'")
     def verdict(self) -> str:
         """The outcome's error string: ``"<dotnet_type>: <message>"``."""
         return f"{self.dotnet_type}: {self}"

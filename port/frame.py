@@ -32,7 +32,7 @@ from acconform.numerics import (
     transform_by_quaternion,
     wrap_u32,
 )
-from acconform.port.anchors import anchor
+from acconform.port.anchors import anchor, harness
 from acconform.port.constants import CELL_LENGTH, EPSILON
 from acconform.port.land import land_defs
 from acconform.port.vec import normalize_check_small
@@ -42,11 +42,13 @@ _F450 = 450.0
 _F360 = 360.0
 
 
+@anchor(None, "FloatExtensions.cs:ToRadians")
 def to_radians(angle):
     """FloatExtensions.ToRadians: ``(float)(Math.PI / 180.0f * angle)`` (the product in double)."""
     return cast_float(angle, (math.pi / 180.0) * float(angle))
 
 
+@anchor(None, "FloatExtensions.cs:ToDegrees")
 def to_degrees(rads):
     """FloatExtensions.ToDegrees: ``(float)(180.0f / Math.PI * rads)``."""
     return cast_float(rads, (180.0 / math.pi) * float(rads))
@@ -58,16 +60,19 @@ class AFrame:
     orientation: Quaternion
 
     @staticmethod
+    @anchor(None, "AFrame.cs:AFrame()", "the default constructor, in the run's mode")
     def identity(mode: Mode) -> "AFrame":
         """``new AFrame()``: origin zero, orientation identity, in the mode's scalar type."""
         return AFrame(mode.vec(0, 0, 0), mode.quat(0, 0, 0, 1))
 
     @staticmethod
+    @harness("builds an AFrame from a scene Frame record")
     def from_record(frame, mode: Mode) -> "AFrame":
         """From a scene Frame record (orientation written (w, x, y, z) as AC files do)."""
         w, x, y, z = frame.orientation
         return AFrame(mode.vec(*frame.origin), mode.quat(x, y, z, w))
 
+    @anchor(None, "AFrame.cs:AFrame(AFrame)", "the copy constructor")
     def copy(self) -> "AFrame":
         """``new AFrame(frame)``."""
         return AFrame(self.origin, self.orientation)
@@ -182,10 +187,12 @@ class Position:
     frame: AFrame
 
     @staticmethod
+    @harness("builds a Position from a scene Position record")
     def from_record(pos, mode: Mode) -> "Position":
         """From a scene Position record."""
         return Position(pos.cell, AFrame.from_record(pos.frame, mode))
 
+    @anchor(None, "Position.cs:Position(Position)", "the copy constructor")
     def copy(self) -> "Position":
         """``new Position(p)``: a new AFrame, same values."""
         return Position(self.obj_cell_id, self.frame.copy())

@@ -34,12 +34,15 @@ class DummyWeenie:
     is_player: bool = False
     is_creature: bool = False
 
+    @anchor(None, "WeenieObject.cs:IsImpenetrable", "DummyObject: no Player, so false")
     def is_impenetrable(self) -> bool:
         return False
 
+    @anchor(None, "WeenieObject.cs:IsPK", "DummyObject: no Player, so false")
     def is_pk(self) -> bool:
         return False
 
+    @anchor(None, "WeenieObject.cs:IsPKLite", "DummyObject: no Player, so false")
     def is_pk_lite(self) -> bool:
         return False
 

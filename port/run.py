@@ -18,7 +18,7 @@ from acconform.outcome import ContactPlaneState, NormalState, Outcome
 from acconform.staging import MOVER_ID, mover_setup_dims, shadow_cells
 from acconform.scene import CylSphereShape, Scene, SphereShape, StaticObject
 
-from .anchors import anchor
+from .anchors import anchor, harness
 from .errors import AceException
 from .frame import Position
 from .geom.cyl_sphere import CylSphere
@@ -41,6 +41,7 @@ def _plane_state(valid: bool, cell: int, is_water: bool, plane: Plane) -> Contac
     return ContactPlaneState(bool(valid), int(cell), bool(is_water), _vec(plane.normal), float(plane.d))
 
 
+@harness("builds the mover's PhysicsObj from the scene, as the oracle builds ACE's")
 def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
     """The mover as the oracle builds it: a PhysicsObj with a PartArray over a Setup of its spheres,
     Height/Radius (staging.mover_setup_dims) and step heights; SetScaleStatic; flags, velocity,
@@ -71,6 +72,7 @@ def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
     return obj
 
 
+@harness("builds a static object's PhysicsObj from a scene record, as the oracle's Facade.BuildStatic")
 def build_static(record: StaticObject, landblock_ids: list[int], lscape: LScape) -> PhysicsObj:
     """A scene StaticObject as the oracle builds it (Facade.cs BuildStatic): a PhysicsObj whose
     PartArray's Setup holds the sphere or cylsphere; a BSP shape is one PhysicsPart (GfxObj with

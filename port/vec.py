@@ -16,7 +16,7 @@ from enum import IntEnum
 
 from acconform.numerics import D, Plane, Vector3, cast_float, cs_fmod, dot
 
-from .anchors import anchor
+from .anchors import anchor, harness
 from .constants import EPSILON
 
 
@@ -28,6 +28,7 @@ class Side(IntEnum):
     Close = 0x2
 
 
+@harness(".NET Math.Sqrt: a double, NaN for a negative argument")
 def cs_sqrt(x):
     """C# ``Math.Sqrt(x)``: a double; NaN for a negative (or NaN) argument, -0 for -0."""
     x = float(x)
@@ -36,12 +37,14 @@ def cs_sqrt(x):
     return D(math.sqrt(x))
 
 
+@harness(".NET Vector3.Zero in the run's scalar type")
 def zero_like(s) -> Vector3:
     """``Vector3.Zero`` in the scalar type of `s` (exact float32 or fast double)."""
     z = type(s)(0.0)
     return Vector3(z, z, z)
 
 
+@harness(".NET Vector3.UnitZ in the run's scalar type")
 def unit_z_like(s) -> Vector3:
     """``Vector3.UnitZ`` in the scalar type of `s`."""
     t = type(s)

@@ -37,6 +37,7 @@ class CylSphere:
             self.radius = radius * scale
 
     @classmethod
+    @anchor(None, "CylSphere.cs:CylSphere(DatLoader.Entity.CylSphere)", "the DAT constructor, from a scene cylsphere record")
     def from_rec(cls, rec, mode: Mode) -> "CylSphere":
         """From a scene CylSphereShape (as ACE's DAT constructor: Origin, Height, Radius)."""
         return cls(mode.vec(*rec.low_point), mode.scalar(rec.height), mode.scalar(rec.radius))

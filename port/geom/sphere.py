@@ -45,6 +45,7 @@ class Sphere:
         return Sphere(self.center, self.radius)
 
     @classmethod
+    @anchor(None, "Sphere.cs:Sphere(DatLoader.Entity.Sphere)", "the DAT constructor, from a scene sphere record")
     def from_rec(cls, rec, mode: Mode) -> "Sphere":
         """A sphere from a scene SphereRec, as ACE's DAT constructor (Origin, Radius)."""
         return cls(mode.vec(*rec.center), mode.scalar(rec.radius))

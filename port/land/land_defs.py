@@ -13,7 +13,7 @@ from __future__ import annotations
 from enum import IntEnum
 
 from acconform.numerics import MONO, Runtime, Vector3, cast_float, cs_floor, wrap_i32, wrap_u32
-from acconform.port.anchors import anchor
+from acconform.port.anchors import anchor, harness
 from acconform.port.constants import EPSILON
 from acconform.port.errors import InvalidOperationException
 
@@ -65,6 +65,7 @@ class WaterType(IntEnum):
 InvalidOperation = InvalidOperationException
 
 
+@harness(".NET Nullable<T>.Value: the value, or InvalidOperationException when empty")
 def value_of(lcoord, where: str):
     """C# ``nullable.Value``: the value, or InvalidOperationException when there is none."""
     if lcoord is None:

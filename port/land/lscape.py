@@ -23,7 +23,7 @@ from __future__ import annotations
 from collections import OrderedDict
 
 from acconform.numerics import Mode
-from acconform.port.anchors import anchor
+from acconform.port.anchors import anchor, harness
 from acconform.port.errors import NullReferenceException
 from acconform.port.land import land_defs
 from acconform.port.land.land_cell import LandCell
@@ -46,9 +46,11 @@ class LandblockPool:
         self.idle: OrderedDict[tuple, Landblock] = OrderedDict()
 
     @staticmethod
+    @harness("the landblock pool's key: everything a landblock is built from")
     def key(record, land_height_table, mode: Mode) -> tuple:
         return (record.id, tuple(record.heights), tuple(record.terrain), tuple(land_height_table), mode)
 
+    @harness("takes a built landblock out of the pool (its cells' ObjCell state reset) or builds one")
     def checkout(self, record, land_height_table, mode: Mode) -> Landblock:
         landblock = self.idle.pop(self.key(record, land_height_table, mode), None)
         if landblock is None:
@@ -65,12 +67,14 @@ class LandblockPool:
             cell.in_view = False
         return landblock
 
+    @harness("hands a landblock back to the pool")
     def release(self, key: tuple, landblock: Landblock) -> None:
         self.idle.pop(key, None)
         self.idle[key] = landblock
         while len(self.idle) > self.size:
             self.idle.popitem(last=False)
 
+    @harness("empties the landblock pool")
     def clear(self) -> None:
         self.idle.clear()
 
@@ -79,6 +83,7 @@ POOL = LandblockPool()
 _UNSEEN = object()
 
 
+@harness("empties the module's landblock pool")
 def clear_landblock_cache() -> None:
     """Drop every pooled landblock (benchmarks start cold with it)."""
     POOL.clear()
@@ -97,12 +102,14 @@ class LScape:
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
                 self.build_landblock(landblock_id)
 
+    @harness("a scene landblock built (new Landblock, PostInit) or taken from the pool on first use")
     def build_landblock(self, landblock_id: int) -> Landblock:
         """``new Landblock(CellLandblock)`` then PostInit (pooled), on first use."""
         landblock = POOL.checkout(self.records[landblock_id], self.land_height_table, self.mode)
         self.landblocks[landblock_id] = landblock
         return landblock
 
+    @harness("the run is over: its landblocks go back to the pool")
     def release(self) -> None:
         """The run is over: hand the landblocks back to the pool (this LScape is unusable after)."""
         for landblock_id, landblock in self.landblocks.items():

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..anchors import anchor
+from ..anchors import anchor, harness
 
 
 class NetDictionary:
@@ -33,6 +33,7 @@ class NetDictionary:
     def __getitem__(self, key):
         return self._entries[self._index[key]][1]
 
+    @harness(".NET Dictionary.Add: a free slot (last freed first) or a new entry")
     def add(self, key, value) -> None:
         if key in self._index:
             raise KeyError(f"An item with the same key has already been added. Key: {key}")
@@ -44,6 +45,7 @@ class NetDictionary:
             self._entries.append([key, value])
         self._index[key] = slot
 
+    @harness(".NET Dictionary.Remove: the entry's slot joins the free list")
     def remove(self, key) -> bool:
         slot = self._index.pop(key, None)
         if slot is None:
@@ -52,13 +54,16 @@ class NetDictionary:
         self._free.append(slot)
         return True
 
+    @harness(".NET Dictionary.Keys in entry order")
     def keys(self) -> list:
         return [e[0] for e in self._entries if e is not None]
 
+    @harness(".NET Dictionary.Values in entry order")
     def values(self) -> list:
         """``Cells.Values`` enumerated now (a snapshot list, in .NET order)."""
         return [e[1] for e in self._entries if e is not None]
 
+    @harness(".NET Enumerable.ElementAt over Dictionary.Values")
     def value_at(self, i: int):
         """``Cells.Values.ElementAt(i)``."""
         for e in self._entries:

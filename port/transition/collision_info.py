@@ -39,6 +39,7 @@ class CollisionInfo:
     verified_restrictions: bool = False  # custom for server (ACE)
 
     @staticmethod
+    @anchor("COLLISIONINFO::COLLISIONINFO", "CollisionInfo.cs:CollisionInfo()", "C#'s default field values; Init's list is the dataclass default")
     def create(zero) -> "CollisionInfo":
         """``new CollisionInfo()``: C#'s default struct fields (zero vectors, zero plane) in the
         scalar type of `zero`."""
