@@ -7,7 +7,6 @@ Re-record after changing the inputs: ``python tests/port/test_frame.py --record`
 
 from __future__ import annotations
 
-import json
 import math
 import sys
 import zlib
@@ -16,10 +15,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from acconform.numerics import EXACT, FAST, Quaternion, Vector3, f32_bits, f32_from_bits
+from acconform.numerics import EXACT, FAST
 from acconform.numerics import quat_create_from_yaw_pitch_roll
 from acconform.port.frame import AFrame, Position
 from acconform.port.land.land_defs import InvalidOperation
+
+import numerics_replay
+from numerics_replay import bits, load_recorded, mismatches, mono, replay
 
 DATA = Path(__file__).resolve().parent.parent / "data" / "numerics_mono.json"
 F = np.float32
@@ -33,8 +35,6 @@ def q(x, y, z, w):
     return EXACT.quat(x, y, z, w)
 
 
-def bits(vals):
-    return [f32_bits(x) for x in vals]
 
 
 # ---------------------------------------------------------------- hand-checked frames
@@ -239,20 +239,6 @@ def _inputs(name: str, n: int, seed: int) -> list[list[float]]:
     return cases
 
 
-def _mono():
-    try:
-        from pythonnet import load
-
-        load("mono")
-        import clr
-
-        clr.AddReference("System.Numerics.Vectors")
-        import System.Numerics as sn
-    except Exception as e:  # pragma: no cover - depends on the machine
-        pytest.skip(f"pythonnet with a mono runtime is needed for live System.Numerics checks ({e})")
-    return sn
-
-
 def _mono_op(sn, name, a):
     Q, V, M = sn.Quaternion, sn.Vector3, sn.Matrix4x4
     if name == "Quaternion.Lerp":
@@ -281,20 +267,14 @@ def _mono_op(sn, name, a):
 
 
 def _mismatches(name, cases, expected):
-    port = OPS[name][1]
-    bad = []
-    for a, want in zip(cases, expected):
-        got = bits(port(a))
-        if got != list(want):
-            bad.append((a, [hex(b) for b in want], [hex(b) for b in got]))
-    return bad
+    return mismatches(OPS[name][1], cases, expected)
 
 
 @pytest.mark.live_runtime
 @pytest.mark.anchor("AFrame::global_to_local_vec")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_frame_numerics_match_mono_system_numerics_bit_for_bit(name):
-    sn = _mono()
+    sn = mono()
     cases = _inputs(name, 3000, seed=zlib.crc32(name.encode()))
     expected = [bits(_mono_op(sn, name, a)) for a in cases]
     bad = _mismatches(name, cases, expected)
@@ -302,25 +282,13 @@ def test_frame_numerics_match_mono_system_numerics_bit_for_bit(name):
 
 
 def _load_recorded():
-    if not DATA.exists():
-        pytest.fail(f"{DATA} is missing: record it with `python {Path(__file__).name} --record` (needs mono)")
-    return json.loads(DATA.read_text())
-
-
-def _unpack(hexstr: str, width: int) -> list[list[int]]:
-    vals = [int(hexstr[i:i + 8], 16) for i in range(0, len(hexstr), 8)]
-    return [vals[i:i + width] for i in range(0, len(vals), width)]
+    return load_recorded(DATA, Path(__file__).name)
 
 
 @pytest.mark.anchor("AFrame::global_to_local_vec")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_frame_numerics_match_recorded_mono_answers(name):
-    doc = _load_recorded()
-    rec = doc["ops"][name]
-    n_in = OPS[name][0]
-    cases = [[f32_from_bits(b) for b in row] for row in _unpack(rec["inputs"], n_in)]
-    expected = _unpack(rec["outputs"], len(rec["outputs"]) // 8 // len(cases))
-    assert len(cases) == rec["count"] and len(cases) >= 500
+    cases, expected = replay(_load_recorded(), name, OPS[name][0])
     bad = _mismatches(name, cases, expected)
     assert not bad, f"{len(bad)}/{len(cases)} differ from recorded mono answers, first: {bad[:3]}"
 
@@ -330,21 +298,9 @@ def test_recorded_mono_answers_cover_every_frame_op():
 
 
 def record(n: int = 600) -> None:
-    sn = _mono()
-    doc = {"about": "mono System.Numerics answers (float32 bit patterns, 8 hex digits each) for the "
-                    "calls port/frame.py makes; written by tests/port/test_frame.py --record",
-           "runtime": "mono", "ops": {}}
-    for name in sorted(OPS):
-        cases = _inputs(name, n, seed=zlib.crc32(name.encode()) ^ 0x5EED)
-        outs = [bits(_mono_op(sn, name, a)) for a in cases]
-        doc["ops"][name] = {
-            "count": n,
-            "inputs": "".join(f"{b:08x}" for a in cases for b in bits(a)),
-            "outputs": "".join(f"{b:08x}" for o in outs for b in o),
-        }
-    DATA.parent.mkdir(parents=True, exist_ok=True)
-    DATA.write_text(json.dumps(doc, indent=1) + "\n")
-    print(f"wrote {DATA}")
+    numerics_replay.record(DATA, OPS, _inputs, _mono_op,
+                           "mono System.Numerics answers (float32 bit patterns, 8 hex digits each) for the "
+                           "calls port/frame.py makes; written by tests/port/test_frame.py --record", n)
 
 
 if __name__ == "__main__":

@@ -9,7 +9,6 @@ Re-record after changing the inputs: ``python tests/port/geom/test_numerics_geom
 
 from __future__ import annotations
 
-import json
 import sys
 import zlib
 from pathlib import Path
@@ -17,8 +16,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from acconform.numerics import EXACT, Vector3, cross, dot, f32_bits, f32_from_bits, normalize
+from acconform.numerics import EXACT, cross, dot, f32_bits, f32_from_bits, normalize
 from acconform.port.vec import length_2d
+
+import numerics_replay
+from numerics_replay import bits, load_recorded, mismatches, mono, replay, unpack
 
 DATA = Path(__file__).resolve().parents[2] / "data" / "numerics_mono_geom.json"
 F = np.float32
@@ -28,8 +30,6 @@ def v(x, y, z):
     return EXACT.vec(x, y, z)
 
 
-def bits(vals):
-    return [f32_bits(x) for x in vals]
 
 
 def _port_cross(a):
@@ -108,20 +108,6 @@ def _inputs(name: str, n: int, seed: int) -> list[list[float]]:
     return cases
 
 
-def _mono():
-    try:
-        from pythonnet import load
-
-        load("mono")
-        import clr
-
-        clr.AddReference("System.Numerics.Vectors")
-        import System.Numerics as sn
-    except Exception as e:  # pragma: no cover - depends on the machine
-        pytest.skip(f"pythonnet with a mono runtime is needed for live System.Numerics checks ({e})")
-    return sn
-
-
 def _mono_op(sn, name, a):
     V = sn.Vector3
     if name == "Vector3.Cross":
@@ -150,20 +136,14 @@ def _mono_op(sn, name, a):
 
 
 def _mismatches(name, cases, expected):
-    port = OPS[name][1]
-    bad = []
-    for a, want in zip(cases, expected):
-        got = bits(port(a))
-        if got != list(want):
-            bad.append((a, [hex(b) for b in want], [hex(b) for b in got]))
-    return bad
+    return mismatches(OPS[name][1], cases, expected)
 
 
 @pytest.mark.live_runtime
 @pytest.mark.anchor("CPolygon::make_plane")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_geom_numerics_match_mono_system_numerics_bit_for_bit(name):
-    sn = _mono()
+    sn = mono()
     cases = _inputs(name, 3000, seed=zlib.crc32(name.encode()))
     expected = [bits(_mono_op(sn, name, a)) for a in cases]
     bad = _mismatches(name, cases, expected)
@@ -171,23 +151,13 @@ def test_geom_numerics_match_mono_system_numerics_bit_for_bit(name):
 
 
 def _load_recorded():
-    if not DATA.exists():
-        pytest.fail(f"{DATA} is missing: record it with `python {Path(__file__).name} --record` (needs mono)")
-    return json.loads(DATA.read_text())
-
-
-def _unpack(hexstr: str, width: int) -> list[list[int]]:
-    vals = [int(hexstr[i:i + 8], 16) for i in range(0, len(hexstr), 8)]
-    return [vals[i:i + width] for i in range(0, len(vals), width)]
+    return load_recorded(DATA, Path(__file__).name)
 
 
 @pytest.mark.anchor("CPolygon::make_plane")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_geom_numerics_match_recorded_mono_answers(name):
-    rec = _load_recorded()["ops"][name]
-    cases = [[f32_from_bits(b) for b in row] for row in _unpack(rec["inputs"], OPS[name][0])]
-    expected = _unpack(rec["outputs"], len(rec["outputs"]) // 8 // len(cases))
-    assert len(cases) == rec["count"] and len(cases) >= 500
+    cases, expected = replay(_load_recorded(), name, OPS[name][0])
     bad = _mismatches(name, cases, expected)
     assert not bad, f"{len(bad)}/{len(cases)} differ from recorded mono answers, first: {bad[:3]}"
 
@@ -201,29 +171,17 @@ def test_recorded_mono_geom_answers_cover_every_op():
 def test_recorded_mono_equals_treats_negative_zero_as_zero():
     """Sphere.SlideSphere's ``collisionNormal.Equals(Vector3.Zero)``: -0 equals 0 on mono."""
     rec = _load_recorded()["ops"]["Vector3.Equals"]
-    cases = [[f32_from_bits(b) for b in row] for row in _unpack(rec["inputs"], 6)]
-    outs = [row[0] for row in _unpack(rec["outputs"], 1)]
+    cases = [[f32_from_bits(b) for b in row] for row in unpack(rec["inputs"], 6)]
+    outs = [row[0] for row in unpack(rec["outputs"], 1)]
     signed_zero = [o for a, o in zip(cases, outs) if a[3:6] == [0.0, 0.0, 0.0] and a[0:3] == [0.0, 0.0, 0.0]
                    and any(str(x).startswith("-") for x in a[0:3])]
     assert signed_zero and all(o == f32_bits(1.0) for o in signed_zero)
 
 
 def record(n: int = 600) -> None:
-    sn = _mono()
-    doc = {"about": "mono System.Numerics answers (float32 bit patterns, 8 hex digits each) for the "
-                    "calls port/geom makes; written by tests/port/geom/test_numerics_geom.py --record",
-           "runtime": "mono", "ops": {}}
-    for name in sorted(OPS):
-        cases = _inputs(name, n, seed=zlib.crc32(name.encode()) ^ 0x5EED)
-        outs = [bits(_mono_op(sn, name, a)) for a in cases]
-        doc["ops"][name] = {
-            "count": n,
-            "inputs": "".join(f"{b:08x}" for a in cases for b in bits(a)),
-            "outputs": "".join(f"{b:08x}" for o in outs for b in o),
-        }
-    DATA.parent.mkdir(parents=True, exist_ok=True)
-    DATA.write_text(json.dumps(doc, indent=1) + "\n")
-    print(f"wrote {DATA}")
+    numerics_replay.record(DATA, OPS, _inputs, _mono_op,
+                           "mono System.Numerics answers (float32 bit patterns, 8 hex digits each) for the "
+                           "calls port/geom makes; written by tests/port/geom/test_numerics_geom.py --record", n)
 
 
 if __name__ == "__main__":

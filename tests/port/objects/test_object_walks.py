@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from acconform.flags import PhysicsState
-from acconform.numerics import f32_bits
+from acconform.compare import compare
 from acconform.outcome import Outcome
 from acconform.port.run import run_scene
 from acconform.port.transition.branches import BRANCHES, NOT_YET_REACHED, REACHED_BY_OBJECT_SCENES
@@ -27,27 +27,6 @@ def ace_outcome(name: str) -> Outcome:
     return Outcome.from_json(RECORDED[name])
 
 
-def _bits(v):
-    if isinstance(v, float):
-        return f32_bits(v)
-    if isinstance(v, tuple):
-        return tuple(_bits(x) for x in v)
-    if hasattr(v, "__dataclass_fields__"):
-        return tuple(_bits(getattr(v, f)) for f in v.__dataclass_fields__)
-    return v
-
-
-def differences(a: Outcome, b: Outcome) -> list[str]:
-    out = []
-    for name in Outcome.__dataclass_fields__:
-        x, y = getattr(a, name), getattr(b, name)
-        if name == "error":
-            x, y = (e.split(":", 1)[0] if e else e for e in (x, y))
-        if _bits(x) != _bits(y):
-            out.append(f"{name}: port {x!r} ace {y!r}")
-    return out
-
-
 def run(name: str) -> tuple[Outcome, Counter]:
     trace = Counter()
     return run_scene(SCENES[name][0], trace=trace), trace
@@ -55,7 +34,7 @@ def run(name: str) -> tuple[Outcome, Counter]:
 
 def matches_ace(name: str) -> tuple[Outcome, Counter]:
     out, trace = run(name)
-    assert differences(out, ace_outcome(name)) == [], name
+    assert compare(out, ace_outcome(name), "exact") == [], name
     return out, trace
 
 
@@ -71,7 +50,7 @@ def test_every_object_scene_has_a_recorded_ace_answer():
 @pytest.mark.parametrize("name", sorted(SCENES))
 def test_object_scene_matches_ace_bit_for_bit(name):
     out, _ = run(name)
-    assert differences(out, ace_outcome(name)) == []
+    assert compare(out, ace_outcome(name), "exact") == []
 
 
 @pytest.mark.anchor("CTransition::edge_slide")

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from acconform.compare import compare
 from acconform.numerics import f32_bits
 from acconform.outcome import Outcome
 from acconform.port.run import run_scene
@@ -25,26 +26,6 @@ def ace_outcome(name: str) -> Outcome:
     return Outcome.from_json(RECORDED[name])
 
 
-def differences(a: Outcome, b: Outcome) -> list[str]:
-    """Fields that differ, floats compared by float32 bits (so -0 and 0 differ)."""
-    out = []
-    for name in Outcome.__dataclass_fields__:
-        x, y = getattr(a, name), getattr(b, name)
-        if _bits(x) != _bits(y):
-            out.append(f"{name}: port {x!r} ace {y!r}")
-    return out
-
-
-def _bits(v):
-    if isinstance(v, float):
-        return f32_bits(v)
-    if isinstance(v, tuple):
-        return tuple(_bits(x) for x in v)
-    if hasattr(v, "__dataclass_fields__"):
-        return tuple(_bits(getattr(v, f)) for f in v.__dataclass_fields__)
-    return v
-
-
 @pytest.mark.anchor("CTransition::find_valid_position")
 def test_every_scene_has_a_recorded_ace_answer():
     assert set(SCENES) == set(RECORDED)
@@ -54,7 +35,7 @@ def test_every_scene_has_a_recorded_ace_answer():
 @pytest.mark.parametrize("name", sorted(SCENES))
 def test_terrain_walk_matches_ace_bit_for_bit(name):
     scene, _behaviour = SCENES[name]
-    assert differences(run_scene(scene), ace_outcome(name)) == []
+    assert compare(run_scene(scene), ace_outcome(name), "exact") == []
 
 
 def _scenes_reaching(branch: str) -> list[str]:
@@ -73,7 +54,7 @@ def test_branch_is_reached_by_a_scene_where_the_port_matches_ace(branch):
     names = _scenes_reaching(branch)
     assert names, f"no recorded scene reaches {branch}"
     for name in names:
-        assert differences(run_scene(SCENES[name][0]), ace_outcome(name)) == [], name
+        assert compare(run_scene(SCENES[name][0]), ace_outcome(name), "exact") == [], name
 
 
 # ---------------------------------------------------------------- the brief's measured ACE facts
