@@ -287,6 +287,7 @@ class AceFunctions:
             return [float(plb.GetZ(self._vec(p))) for p in points]
         finally:
             self._n["LScape"].Landblocks.Clear()
+            self._engine(server=True)  # ACE's server default, as the live oracle leaves it
 
     def get_landcell(self, landblock, cell_ids) -> list:
         """Landblock.get_landcell for each id: the cell's ID, None, or ("error", type)."""
