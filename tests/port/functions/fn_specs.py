@@ -208,6 +208,8 @@ def polygon_vertices(rng: random.Random) -> list:
     if kind == 0:  # terrain triangle on a 24-unit grid with integer-ish heights
         x0, y0 = rng.randrange(0, 8) * 24.0, rng.randrange(0, 8) * 24.0
         h = [rng.choice([0.0, 2.0, 4.0, 10.0, rng.randrange(0, 256) * 2.0]) for _ in range(3)]
+        if rng.random() < 0.5:
+            h = [h[0]] * 3
         vs = [(x0, y0, h[0]), (x0 + 24.0, y0, h[1]), (x0 + 24.0, y0 + 24.0, h[2])]
     elif kind == 1:  # axis-aligned square (floor, wall or ceiling)
         s = rng.choice([1.0, 2.0, 24.0, 0.5])
@@ -268,10 +270,51 @@ def radius(rng: random.Random) -> float:
     return f32(rng.choice([0.5, 0.48, 0.25, 1.0, 2.0, EPSILON, 0.0, rng.uniform(0.01, 3)]))
 
 
+def is_level(vs: list) -> bool:
+    """All vertices at one height: make_plane gives the normal (0, 0, +-1) exactly."""
+    return all(v[2] == vs[0][2] for v in vs) and len({(v[0], v[1]) for v in vs}) >= 3
+
+
+def sphere_at_vertex(rng: random.Random, vs: list) -> tuple:
+    """A sphere centred in a level polygon's plane, beside a vertex along x or y, at exactly the
+    distance the tests compare with: radius - EPSILON (polygon_hits_sphere's rad), the radius
+    (check_walkable's radsum), half of it (check_small_walkable's radsum * 0.25), or an ulp off."""
+    r = f32(rng.choice([0.5, 0.25, 1.0, 2.0, 0.48]))
+    rad_eps = f32(F(r) - F(EPSILON))
+    d = rng.choice([rad_eps, up_ulp(rad_eps), down_ulp(rad_eps), r, up_ulp(r), down_ulp(r), f32(r / 2),
+                    up_ulp(r / 2), down_ulp(r / 2)])
+    v = vs[rng.randrange(len(vs))]
+    if rng.random() < 0.5:
+        # off a corner by a 3-4-5 offset (exact in binary): the vertex-distance test decides
+        k = rng.choice([0.125, 0.0625, 0.25])
+        t = 5 * k
+        r = rng.choice([radius_for_rad(t), t, 2 * t])  # rad, radsum (r * r), small radsum (r * r * 0.25) == t * t
+        a, b = rng.choice([(3 * k, 4 * k), (4 * k, 3 * k)])
+        a, b = a * rng.choice([1, -1]), b * rng.choice([1, -1])
+        c = (f32(v[0] + a), f32(v[1] + b), v[2])
+        if rng.random() < 0.3:
+            c = (rng.choice([up_ulp, down_ulp])(c[0]), c[1], c[2])
+        return (c, f32(r))
+    dx, dy = rng.choice([(1, 0), (-1, 0), (0, 1), (0, -1)])
+    return ((f32(v[0] + dx * d), f32(v[1] + dy * d), v[2]), r)
+
+
+def radius_for_rad(t: float) -> float:
+    """A float32 r with r - EPSILON == t exactly in float32 (t itself when none is near)."""
+    r = F(t) + F(EPSILON)
+    for _ in range(8):
+        if r - F(EPSILON) == F(t):
+            return float(r)
+        r = np.nextafter(r, np.float32(np.inf)) if r - F(EPSILON) < F(t) else np.nextafter(r, np.float32(-np.inf))
+    return t
+
+
 def sphere_near(rng: random.Random, vs: list) -> tuple:
     """A sphere whose center sits on the plane's normal line through a point near the polygon,
     at the radius (tangent), radius - EPSILON (the precise test's boundary), an ulp either side,
     inside, on the plane or behind it."""
+    if is_level(vs) and rng.random() < 0.4:
+        return sphere_at_vertex(rng, vs)
     p = port_polygon(vs)
     n = p.plane.normal
     r = radius(rng)
@@ -291,6 +334,9 @@ def up_vector(rng: random.Random, vs: list) -> tuple:
         return (0.0, 0.0, 1.0)
     if kind == 2:
         return plain(port_polygon(vs).plane.normal)
+    if kind == 3 and is_level(vs):  # dot(normal, up) exactly +-EPSILON, an ulp either side, or 0
+        e = rng.choice([EPSILON, -EPSILON, up_ulp(EPSILON), down_ulp(EPSILON), -up_ulp(EPSILON), 0.0])
+        return (rnd(rng, -1, 1), rnd(rng, -1, 1), e)
     if kind == 3:  # nearly perpendicular to the plane normal: angle_up near EPSILON
         n = port_polygon(vs).plane.normal
         t = unit(rng)
@@ -417,7 +463,30 @@ def g_check_small_walkable(rng):
     return [vs, sphere_near(rng, vs), up_vector(rng, vs)]
 
 
+def g_adjust_sphere_to_plane_exact(rng):
+    """A level square and a vertical move placed so that interp = (1 - dist / dpMove) * WalkInterp
+    lands exactly on -0.5 (the limit), on WalkInterp itself (a tangent start), or beside them."""
+    z0 = f32(rng.choice([0.0, 1.0, -2.0, 10.5]))
+    vs = [(0.0, 0.0, z0), (4.0, 0.0, z0), (4.0, 4.0, z0), (0.0, 4.0, z0)]
+    if rng.random() < 0.5:
+        vs = vs[::-1]
+    normal_z = plain(port_polygon(vs).plane.normal)[2]
+    r = f32(rng.choice([0.5, 0.25, 1.0]))
+    m = f32(rng.choice([1.0, 0.5, 2.0]))
+    wi = f32(rng.choice([1.0, 0.5]))
+    i_dist = rng.choice([1 + 0.5 / wi, 1 + 0.5 / wi + 2 ** -20, 1 + 0.5 / wi - 2 ** -20, 0.0, 1.0, 0.5])
+    down = rng.random() < 0.5  # moving against the normal (dpMove < 0) or with it
+    mz = -m * normal_z if down else m * normal_z
+    # dpPos = normal_z * (cz - z0): against the normal dist = dpPos - r = dpMove * iDist,
+    # with it dist = -r - dpPos = dpMove * iDist
+    dp_pos = -m * i_dist + r if down else -r - m * i_dist
+    cz = f32(z0 + dp_pos * normal_z)
+    return [vs, wi, ((2.0, 2.0, cz), r), (0.0, 0.0, f32(mz))]
+
+
 def g_adjust_sphere_to_plane(rng):
+    if rng.random() < 0.3:
+        return g_adjust_sphere_to_plane_exact(rng)
     vs = polygon_vertices(rng)
     wi = f32(rng.choice([1.0, 1.0, 0.5, rng.random(), EPSILON, 0.0, -0.4]))
     return [vs, wi, sphere_near(rng, vs), movement(rng, vs)]

@@ -76,10 +76,11 @@ def test_port_matches_live_ace_bit_for_bit_on_generated_inputs(name, ace_functio
 @pytest.mark.live_oracle
 @pytest.mark.anchor("CPolygon::make_plane")
 def test_recorded_answers_are_what_the_configured_ace_answers(ace_functions):
+    """Every third recorded input through this ACE: recorded data from another build shows up here."""
     stale = []
     for name, entry in sorted(recorded()["functions"].items()):
         spec = SPECS[name]
-        for args, want in zip(entry["inputs"], entry["answers"]):
+        for args, want in list(zip(entry["inputs"], entry["answers"]))[::3]:
             got = plain(spec.ace(ace_functions, entry["context"], args))
             if not same(got, want):
                 stale.append(f"{name}{tuple(args)!r}: recorded {want!r}, this ACE {got!r}")
