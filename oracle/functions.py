@@ -41,20 +41,34 @@ class AceFunctions:
         self.runtime_version = self.ace.runtime_version
 
         import clr  # noqa: F401
+        from ACE.DatLoader.FileTypes import CellLandblock
+        from ACE.Entity.Enum import CullMode, Sidedness
+        from ACE.Server.Physics import PhysicsEngine, Polygon, Ray, Sphere
+        from ACE.Server.Physics.Animation import AFrame, SpherePath
+        from ACE.Server.Physics.Common import (
+            Landblock,
+            LandDefs,
+            LScape,
+            ObjectMaint,
+            Position,
+            SmartBox,
+        )
+        from ACE.Server.Physics.Entity import Vertex
         from System import Array, Byte, Single
         from System import Exception as NetException
         from System.Collections.Generic import List
         from System.IO import BinaryReader, MemoryStream
         from System.Numerics import Plane, Quaternion, Vector3
 
-        from ACE.DatLoader.FileTypes import CellLandblock
-        from ACE.Entity.Enum import CullMode, Sidedness
-        from ACE.Server.Physics import PhysicsEngine, Polygon, Ray, Sphere
-        from ACE.Server.Physics.Animation import AFrame, SpherePath
-        from ACE.Server.Physics.Common import LandDefs, Landblock, LScape, ObjectMaint, Position, SmartBox
-        from ACE.Server.Physics.Entity import Vertex
-
-        self._n = dict(locals())
+        # named explicitly (not locals()): a linter that drops "unused" imports cannot break it
+        self._n = {
+            "Array": Array, "Byte": Byte, "Single": Single, "List": List, "BinaryReader": BinaryReader,
+            "MemoryStream": MemoryStream, "Plane": Plane, "Quaternion": Quaternion, "Vector3": Vector3,
+            "CellLandblock": CellLandblock, "CullMode": CullMode, "Sidedness": Sidedness,
+            "PhysicsEngine": PhysicsEngine, "Polygon": Polygon, "Ray": Ray, "Sphere": Sphere, "AFrame": AFrame,
+            "SpherePath": SpherePath, "LandDefs": LandDefs, "Landblock": Landblock, "LScape": LScape,
+            "ObjectMaint": ObjectMaint, "Position": Position, "SmartBox": SmartBox, "Vertex": Vertex,
+        }
         self._net_exception = NetException
         self._landblocks: dict = {}  # key -> ACE Landblock, for get_z / get_landcell / calc_water_depth
 

@@ -17,23 +17,22 @@ import math
 import random
 import struct
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from types import SimpleNamespace
-from typing import Callable
 
 import numpy as np
-
-from acconform.codec import write_f32
-from acconform.numerics import EXACT, Plane, Quaternion, Vector3, f32_from_bits
 from acconform.port.constants import EPSILON, FLOOR_Z, LANDING_Z
 from acconform.port.errors import AceException
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom import sphere as port_sphere
 from acconform.port.geom.polygon import Polygon, Sidedness, Vertex
 from acconform.port.land import land_defs
-from acconform.port.land.landblock import Landblock
 from acconform.port.vec import Ray
+
+from acconform.codec import write_f32
+from acconform.numerics import EXACT, Plane, Quaternion, Vector3, f32_from_bits
 from acconform.scene import DEFAULT_LAND_HEIGHT_TABLE
 
 DATA = Path(__file__).resolve().parent / "data" / "ace_functions.json.gz"
@@ -702,7 +701,10 @@ class _PortLandblocks:
             if len(self.cache) > 64:
                 self.cache.clear()
             from acconform.port.land.lscape import LScape
-            from acconform.scene import Frame, Landblock as LbRec, Mover, Position as PosRec, Scene, SphereRec
+
+            from acconform.scene import Frame, Mover, Scene, SphereRec
+            from acconform.scene import Landblock as LbRec
+            from acconform.scene import Position as PosRec
 
             rec = LbRec(lb_id, tuple(heights), tuple(terrain))
             pos = PosRec((lb_id & 0xFFFF0000) | 1, Frame((12.0, 12.0, 0.0)))
@@ -792,6 +794,10 @@ def _placement(a):
     return (h.center, o.center if o is not None else None)
 
 
+def _combined(f: AFrame) -> tuple:
+    return (f.origin, f.orientation)
+
+
 def _ray(r):
     return Ray(vec(r[0]), vec(r[1]), F(r[2]))
 
@@ -879,7 +885,7 @@ SPECS: dict[str, Spec] = {s.name: s for s in [
     _simple("frame_global_to_local_vec", "AFrame::global_to_local_vec", g_frame_point,
             lambda a: frame(a[0]).global_to_local_vec(vec(a[1]))),
     _simple("frame_combine", "AFrame::combine", g_frame_combine,
-            lambda a: (lambda f: (f.origin, f.orientation))(AFrame.combine(frame(a[0]), frame(a[1])))),
+            lambda a: _combined(AFrame.combine(frame(a[0]), frame(a[1])))),
     _simple("position_get_offset", "Position::get_offset", g_position_pair,
             lambda a: ace_error(lambda: position(a[0]).get_offset(position(a[1])))),
     _simple("position_local_to_local", "Position::local_to_local", g_position_pair_point,
@@ -909,7 +915,7 @@ def differences(spec: Spec, ctx, inputs, answers, limit: int = 5) -> tuple[int, 
     for args, want in zip(inputs, answers):
         try:
             got = port_answer(spec, ctx, args)
-        except Exception as e:  # the port crashed where ACE answered: a difference too
+        except Exception as e:  # noqa: BLE001 -- the port crashed where ACE answered: a difference too
             got = ("port raised", f"{type(e).__name__}: {e}")
         if not same(got, want):
             count += 1

@@ -17,7 +17,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import fn_specs  # noqa: E402
+import fn_specs
 
 
 def record(fns, specs=None) -> dict:

@@ -17,13 +17,12 @@ import json
 import math
 import warnings
 
+import fn_specs
 import numpy as np
 import pytest
+from fn_specs import SPECS, differences, generate, plain, same
 
 from acconform.errors import OracleUnavailable
-
-import fn_specs
-from fn_specs import SPECS, differences, generate, plain, same
 
 
 def _params():
