@@ -44,10 +44,25 @@ EDGE_ANGLES = st.one_of(st.sampled_from((0.0, 0.0, 15.0, -15.0, 30.0, -30.0, 45.
 WALL_ANGLES = st.one_of(st.sampled_from((0.0, 20.0, 45.0, 70.0, 80.0, 85.0, 88.0, 89.0, 89.5)), st.floats(0.0, 89.5))
 YAWS = st.one_of(st.sampled_from((0.0, 0.0, 90.0, 30.0, 45.0, 180.0)), st.floats(0.0, 359.0))
 LIP_FACTORS = st.one_of(st.sampled_from((0.5, 0.9, 1.0, 1.001, 1.25, 1.4, 1.5, 1.6, 2.0)), st.floats(1.2, 1.8))
-# the mover's velocity: mostly at rest; rising or falling (get_object_info: leaving the contact plane)
-VELOCITIES = st.one_of(*[st.just((0.0, 0.0, 0.0))] * 8,
-                       st.tuples(st.just(0.0), st.just(0.0), st.sampled_from((0.5, 4.0, -1.0, -10.0, to_f32(1e-3)))),
-                       st.tuples(sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0)))
+# the mover's velocity: at rest first (shrinking goes there); now and then falling (keeps contact),
+# rising (leaves the contact plane: get_object_info's leaving_contact) or anything. Drawn by
+# sampled_from, whose generation is close to uniform over its entries (one_of's is not).
+VELOCITY_KINDS = st.sampled_from(("rest",) * 16 + ("falling", "rising", "any"))
+
+
+@st.composite
+def velocities(draw):
+    how = draw(VELOCITY_KINDS)
+    if how == "rest":
+        return (0.0, 0.0, 0.0)
+    if how == "falling":
+        return (0.0, 0.0, draw(st.sampled_from((-1.0, -10.0))))
+    if how == "rising":
+        return (0.0, 0.0, draw(st.sampled_from((0.5, 4.0, to_f32(1e-3)))))
+    return draw(st.tuples(sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0)))
+
+
+VELOCITIES = velocities()
 STEP_UPS = st.one_of(st.sampled_from((0.4, 0.4, 0.4, 0.25, 0.3, 0.5, 0.6, 1.0)), sh.f32s(0.1, 1.2))
 
 
@@ -71,15 +86,37 @@ class Plan:
         self.step_down = None
         self.label = ""
         self.steps: list[float] = []
+        self.velocity = None  # None: drawn from VELOCITIES
+        self.plane_dz = None  # the start's height over its contact plane; None: drawn from PLANE_DZ
+
+
+# what a ledge scene is for (the first is the plainest, where shrinking goes):
+# - walk_off: walk off the top at an angle to the edge, any step-down, EdgeSlide on or off;
+# - back_probe: the walkable polygon is lost before EdgeSlide (the step's sphere centre is past the
+#   edge and the step-down cannot reach the ground), so EdgeSlide's back-probe steps down from the
+#   current centre, finds the top again and precipice-slides (edge_slide:back_probe_precipice_slide):
+#   EdgeSlide on, at rest, step-down short of the drop, the path crossing the edge within two steps;
+# - shared_edge: a second platform shares the edge (same height, a little lower or higher);
+# - drop: step-down a little more than the drop (drop in (2/3, 1] of it), which a two-sphere mover
+#   takes as two half step-downs (transitional_insert:step_down_halves).
+LEDGE_VARIANTS = st.sampled_from(("walk_off", "back_probe", "back_probe", "shared_edge", "drop"))
+PROBE_ANGLES = st.one_of(st.sampled_from((0.0, 15.0, -15.0, 30.0, -30.0, 45.0, -45.0)), st.floats(-50.0, 50.0))
+LEDGE_HEIGHTS = st.one_of(st.sampled_from(sh.STEP_SIZES), sh.f32s(0.05, 3.0))
 
 
 @st.composite
 def ledge(draw, gx: float, gy: float, r: float) -> Plan:
     p = Plan()
+    variant = draw(LEDGE_VARIANTS)
     sx, sy = draw(sh.f32s(1.0, 10.0)), draw(sh.f32s(1.0, 10.0))
-    h = draw(st.one_of(st.sampled_from(sh.STEP_SIZES), sh.f32s(0.05, 3.0), st.sampled_from((to_f32(r), to_f32(2 * r)))))
+    if variant == "walk_off" or variant == "shared_edge":
+        h = draw(st.one_of(LEDGE_HEIGHTS, st.sampled_from((to_f32(r), to_f32(2 * r)))))
+    elif variant == "back_probe":
+        h = draw(st.one_of(st.sampled_from((to_f32(1.0), to_f32(0.5), to_f32(2 * r))), sh.f32s(0.5, 3.0)))
+    else:  # drop: above 2r, so a two-sphere mover halves its step-down
+        h = to_f32(2 * r * draw(st.one_of(st.sampled_from((1.25, 1.5, 2.0)), sh.f32s(1.05, 3.0))))
     yaw = draw(YAWS)
-    if draw(st.sampled_from((False, False, False, True))):
+    if variant != "back_probe" and draw(st.sampled_from((False, False, False, True))):
         # the top as one two-sided polygon, wound either way (a crossed edge's normal may point in)
         quad = [(-sx / 2, -sy / 2, h), (sx / 2, -sy / 2, h), (sx / 2, sy / 2, h), (-sx / 2, sy / 2, h)]
         if draw(st.booleans()):
@@ -91,13 +128,18 @@ def ledge(draw, gx: float, gy: float, r: float) -> Plan:
     ex, ey = draw(st.sampled_from(((1, 0), (-1, 0), (0, 1), (0, -1))))
     half_n, half_t = (sx / 2, sy / 2) if ex else (sy / 2, sx / 2)
     along = draw(st.one_of(st.floats(-0.9, 0.9), st.sampled_from((0.0, 1.0, -1.0, 0.99, -0.99)))) * half_t
-    inside = draw(st.one_of(st.sampled_from((0.0, 0.0, 0.5, 1.0, 0.01)), st.floats(0.0, 2.0))) * r
+    if variant == "back_probe":
+        # a step on the top first (step_down:ok), then the next one's centre is past the edge
+        inside = draw(st.one_of(st.sampled_from((0.5, 0.9, 1.2)), st.floats(0.4, 1.5))) * r
+    else:
+        inside = draw(st.one_of(st.sampled_from((0.0, 0.0, 0.5, 1.0, 0.01)), st.floats(0.0, 2.0))) * r
     inside = min(inside, half_n * 2 * 0.95)
     d = half_n - inside  # local distance of the start from the centre, along the outward normal
     lx, ly = (ex * d, along) if ex else (along, ey * d)
     ox, oy = _rot(yaw, lx, ly)
-    p.objects.append((top, gx - ox, gy - oy, yaw, draw(BSP_STATES)))
-    if draw(st.sampled_from((False, True, False))):
+    state = BSP_STATE if variant == "back_probe" else draw(BSP_STATES)
+    p.objects.append((top, gx - ox, gy - oy, yaw, state))
+    if variant == "shared_edge":
         # a second platform sharing the edge: the path crosses a polygon edge between two tops
         h2 = draw(st.sampled_from((h, h, to_f32(h - 0.01), to_f32(h * 0.5), to_f32(h + 0.1), to_f32(max(h - 0.2, 0.05)))))
         h2 = max(h2, to_f32(0.02))
@@ -108,16 +150,30 @@ def ledge(draw, gx: float, gy: float, r: float) -> Plan:
         p.objects.append((b2, gx - ox + c2x, gy - oy + c2y, yaw, BSP_STATE))
         p.steps.append(h2)
     out = math.degrees(math.atan2(ey, ex)) + yaw
-    p.heading = out + draw(EDGE_ANGLES)
+    p.heading = out + draw(PROBE_ANGLES if variant == "back_probe" else EDGE_ANGLES)
     p.begin = (gx, gy)
-    p.length = to_f32(inside + r * draw(st.one_of(st.sampled_from((0.2, 0.5, 1.0, 1.5, 2.0, 3.0)), sh.f32s(0.05, 6.0))))
-    p.stand_on = h
-    p.edge_slide = draw(st.sampled_from((True, True, False, True)))
-    p.step_down = draw(st.one_of(st.sampled_from((to_f32(h - 0.01), h, to_f32(h + 0.01))), sh.f32s(r, 2 * r),
-                                 st.sampled_from((to_f32(0.4), to_f32(1.0), to_f32(2.0)))))
+    if variant == "back_probe":
+        # past the edge within one or two steps (a step is one radius)
+        p.length = to_f32(inside + r * draw(st.one_of(st.sampled_from((1.0, 1.5, 2.0)), sh.f32s(0.8, 2.5))))
+        p.edge_slide = True
+        p.velocity = (0.0, 0.0, 0.0)
+        # on the top or just above it: a sphere sunk into the top keeps the polygon as walkable
+        # (edge_slide:precipice_slide at once) and a lone two-sided polygon top is never found again
+        p.plane_dz = draw(st.sampled_from((0.0, 0.0, EPS / 2)))
+        p.step_down = to_f32(h * draw(st.one_of(st.sampled_from((0.5, 0.25, 0.9)), sh.f32s(0.05, 0.95))))
+    else:
+        p.length = to_f32(inside + r * draw(st.one_of(st.sampled_from((0.2, 0.5, 1.0, 1.5, 2.0, 3.0)),
+                                                      sh.f32s(0.05, 6.0))))
+        p.edge_slide = draw(st.sampled_from((True, True, False, True)))
+        if variant == "drop":
+            p.step_down = to_f32(h * draw(st.one_of(st.sampled_from((1.2, 1.01, 1.45)), sh.f32s(1.0, 1.49))))
+        else:
+            p.step_down = draw(st.one_of(st.sampled_from((to_f32(h - 0.01), h, to_f32(h + 0.01))), sh.f32s(r, 2 * r),
+                                         st.sampled_from((to_f32(0.4), to_f32(1.0), to_f32(2.0)))))
     p.step_down = max(p.step_down, 0.0)
+    p.stand_on = h
     p.steps.append(h)
-    p.label = "ledge"
+    p.label = "ledge" if variant in ("walk_off", "shared_edge") else f"ledge-{variant.replace('_', '-')}"
     return p
 
 

@@ -102,8 +102,9 @@ def step_heights(geometry_steps=()):
 
 
 HEADINGS = st.one_of(st.sampled_from((0, 90, 180, 270, 45)), st.integers(0, 359))
-AIMS = st.sampled_from(("feature", "feature", "border", "any"))
-AIMS_WITH_OBJECTS = st.sampled_from(("feature", "border", "any", "object", "object"))
+# the plainest choice first in every sampled_from / one_of: Hypothesis shrinks toward it
+AIMS = st.sampled_from(("any", "feature", "feature", "border"))
+AIMS_WITH_OBJECTS = st.sampled_from(("any", "object", "object", "feature", "border"))
 JITTER = st.sampled_from((0, 0, 0, 5, -5, 30, -30, 60))
 BORDER_JITTER = st.sampled_from((0, 0, 20, -20, 45, -45))
 FINE_JITTER = st.sampled_from((0.0, 0.0, 0.5, 1.0))
@@ -125,14 +126,18 @@ NEAR_BORDER = st.one_of(sh.f32s(0.0, 3.0), sh.f32s(189.0, 191.99))
 
 
 BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter"))
+# terrain: a free path, or "border_slope": grounded on tilted terrain, a few metres from a block
+# border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
+TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope"))
 SNAP_END = st.sampled_from((None, None, None, None, "cell", "block"))
 
 
 @st.composite
 def scenes_of(draw, kind: str):
     bx, by = draw(tr.landblock_coords(0x02, 0xFC))
+    crossing = kind == "terrain" and draw(TERRAIN_POLICIES) == "border_slope"
     # start: anywhere in the block, or hugging a border (the neighbour must be defined)
-    where = draw(WHERE)
+    where = draw(st.sampled_from(("border", "corner"))) if crossing else draw(WHERE)
     if where == "any":
         lx, ly = to_f32(96.0 + draw(CENTRED)), to_f32(96.0 + draw(CENTRED))
     else:
@@ -144,8 +149,8 @@ def scenes_of(draw, kind: str):
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     vx, vy = round(gx0 / CELL), round(gy0 / CELL)
     policy = draw(BSP_POLICIES) if kind == "bsp" else "scatter"
-    flat = kind != "terrain" and (policy != "scatter" or draw(st.integers(0, 3)) > 0)
-    field = draw(tr.fields_near(vx, vy, flat=flat))
+    flat = kind != "terrain" and (policy != "scatter" or draw(st.integers(0, 3)) < 3)
+    field = draw(tr.fields_near(vx, vy, flat=flat, tilt=crossing))
     world = _World(field)
 
     spheres = draw(movers_spheres())
@@ -164,7 +169,7 @@ def scenes_of(draw, kind: str):
             objects_spec.append(("obstacle", draw(st.one_of(sh.spheres_shapes(), sh.cylsphere_shapes())), 0.0))
 
     # path
-    aim = draw(AIMS_WITH_OBJECTS if objects_spec else AIMS)
+    aim = "border" if crossing else draw(AIMS_WITH_OBJECTS if objects_spec else AIMS)
     if aim == "feature" and field.features:
         # aim at a feature's edge from a short gap before it, so the path crosses it
         f = field.features[draw(st.integers(0, len(field.features) - 1))]
@@ -184,14 +189,19 @@ def scenes_of(draw, kind: str):
             heading = min(dists, key=dists.get) + draw(BORDER_JITTER)
         else:
             heading = draw(HEADINGS)
-        length = to_f32(r * draw(PATH_FACTORS))
+        if crossing:
+            # far enough to cross the border (aim "border": it is within NEAR_BORDER's 3 m)
+            gap = min(dists.values()) / max(math.cos(math.radians(heading - min(dists, key=dists.get))), 0.3)
+            length = to_f32(gap + r * draw(st.one_of(st.sampled_from((0.5, 1.0, 2.0)), sh.f32s(0.05, 4.0))))
+        else:
+            length = to_f32(r * draw(PATH_FACTORS))
     heading += draw(FINE_JITTER)
 
     # start height: on the ground (contact), a little above it, or well up in the air
     lb0, (z0, n0, d0) = world.ground(gx0, gy0)
-    start = draw(st.sampled_from(("ground", "ground", "ground", "air")))
+    start = "ground" if crossing else draw(st.sampled_from(("ground", "ground", "ground", "air")))
     state = int(PhysicsState.Gravity)
-    if draw(st.integers(0, 3)) > 0:
+    if draw(st.integers(0, 3)) > 0:  # shrinks to 0: EdgeSlide off
         state |= int(PhysicsState.EdgeSlide)
     begin_cell = cell_of(bx, by, lx, ly)
     contact = None
@@ -268,7 +278,7 @@ def scenes_of(draw, kind: str):
         contact_plane=contact,
         velocity=draw(ob.VELOCITIES),
     )
-    name = f"{kind}:{start}:{aim}" + (":platform" if platform else "")
+    name = f"{kind}:{start}:{aim}" + (":platform" if platform else "") + (":slope" if crossing else "")
     return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, name)
 
 
@@ -305,7 +315,7 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
         bz = to_f32(z0 + plan.airborne)
     else:
         contact = ContactPlane(begin_cell, PlaneRec(n0, d0))
-        bz = to_f32(z0 + draw(ob.PLANE_DZ))
+        bz = to_f32(z0 + (plan.plane_dz if plan.plane_dz is not None else draw(ob.PLANE_DZ)))
         if n0[2] < tr.FLOOR_Z:
             transient &= ~int(TransientState.OnWalkable)
     rad = math.radians(plan.heading)
@@ -316,7 +326,7 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
     down = plan.step_down if plan.step_down is not None else draw(st.one_of(sh.f32s(r, 2 * r), step_heights(steps)))
     mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, bz))), end=position(gx1, gy1, ez),
                   step_up_height=up, step_down_height=down, state=state, transient_state=transient,
-                  contact_plane=contact, velocity=draw(ob.VELOCITIES))
+                  contact_plane=contact, velocity=plan.velocity if plan.velocity is not None else draw(ob.VELOCITIES))
     name = f"{kind}:{plan.label}" + (":air" if plan.airborne else "") + ("" if plan.edge_slide else ":no-edge-slide")
     return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, name)
 
@@ -329,17 +339,25 @@ def _scene(world, bx, by, p0, p1, reach, placed, mover, name) -> Scene:
     return Scene(landblocks, mover, tuple(objects), name=name)
 
 
+# metres beyond the spheres' reach: float rounding, a step-up's lift, a slide's last epsilon. The
+# mover never ends farther from its path than its spheres reach (slides and steps only shorten
+# the move), and cells are gathered from the spheres (add_all_outside_cells), so a metre is ample.
+REACH_SLACK = 1.0
+
+
 def _blocks_in_reach(bx, by, p0, p1, reach, objects) -> set[tuple[int, int]]:
-    """Every landblock the mover's path (plus the spheres' reach and a margin for steps and
-    slides) or any object's bounding sphere (plus the same margin) can touch."""
-    margin = reach + 3.0
+    """Every landblock the mover's path (plus the spheres' reach and REACH_SLACK) or any object's
+    bounding sphere (plus REACH_SLACK) can touch: a function of the path and the objects only, so
+    as Hypothesis shrinks them the landblock set shrinks too (a short path inside one block and no
+    object across a border is a one-landblock scene)."""
+    margin = reach + REACH_SLACK
     boxes = [(min(p0[0], p1[0]) - margin, min(p0[1], p1[1]) - margin,
               max(p0[0], p1[0]) + margin, max(p0[1], p1[1]) + margin)]
     for o in objects:
         (cx, cy, _), rad = staging.bounding_sphere(o)
         ox = (o.position.cell >> 24) * BLOCK + cx
         oy = ((o.position.cell >> 16) & 0xFF) * BLOCK + cy
-        m = rad + margin
+        m = rad + REACH_SLACK
         boxes.append((ox - m, oy - m, ox + m, oy + m))
     blocks = {(bx, by)}
     for k, (x0, y0, x1, y1) in enumerate(boxes):

@@ -209,22 +209,32 @@ CLIFF_DOWN = st.integers(-24, -14)  # tan 1.17 .. 2.0 over one cell: unwalkable,
 
 
 @st.composite
-def features_near(draw, gx: int, gy: int):
-    """Terrain features whose edges pass within a cell or two of global vertex (gx, gy)."""
+def features_near(draw, gx: int, gy: int, tilt: bool = False):
+    """Terrain features whose edges pass within a cell or two of global vertex (gx, gy).
+
+    Each optional feature is switched on by a draw that shrinks to off (0), so a shrunk scene
+    keeps only the features its difference needs. `tilt` always tilts the neighbourhood (a
+    sloped contact plane on both sides of a block border).
+    """
     out = []
     n = draw(st.integers(0, 3))
-    if draw(st.integers(0, 2)) == 0:
+    if tilt:
+        i, j = draw(st.integers(1, 3)) * draw(st.sampled_from((1, -1))), draw(st.integers(-3, 3))
+        if draw(st.booleans()):
+            i, j = j, i
+        out.append(Feature("ramp", x0=gx - 16, y0=gy - 16, x1=gx + 16, y1=gy + 16, i=i, j=j))
+    if draw(st.integers(0, 2)) == 2:
         # policy: a cliff edge (a down step steeper than FloorZ but within reach of a step-down)
         a, b = draw(DIRECTIONS)
         d = draw(st.integers(-1, 2))
         out.append(Feature("step", a=a, b=b, c=a * (gx + d) + b * (gy + d), k=draw(CLIFF_DOWN)))
-    if draw(st.integers(0, 2)) == 0:
-        # policy: a slope just either side of FloorZ starting at the next vertex over
+    if draw(st.integers(0, 2)) >= 1:
+        # policy (2 in 3): a slope just either side of FloorZ starting at the next vertex over
         i, j = draw(st.sampled_from(STRADDLING_GRADIENTS))
         si, sj = draw(st.sampled_from((1, -1))), draw(st.sampled_from((1, -1)))
         x0, y0 = gx + draw(st.integers(-1, 1)), gy + draw(st.integers(-1, 1))
         out.append(Feature("ramp", x0=x0, y0=y0, x1=x0 + 2, y1=y0 + 2, i=si * i, j=sj * j))
-    if draw(st.integers(0, 2)) == 0:
+    if not tilt and draw(st.integers(0, 2)) == 2:
         # policy: tilt the whole neighbourhood gently, so block borders have sloped contact planes
         out.append(Feature("ramp", x0=gx - 16, y0=gy - 16, x1=gx + 16, y1=gy + 16,
                            i=draw(st.integers(-3, 3)), j=draw(st.integers(-3, 3))))
@@ -253,16 +263,17 @@ def features_near(draw, gx: int, gy: int):
 
 
 @st.composite
-def fields_near(draw, gx: int, gy: int, flat: bool = False):
-    """A terrain field with features around global vertex (gx, gy); `flat` keeps it level (for objects)."""
+def fields_near(draw, gx: int, gy: int, flat: bool = False, tilt: bool = False):
+    """A terrain field with features around global vertex (gx, gy); `flat` keeps it level or
+    gently tilted (for objects), `tilt` always tilts it (see features_near)."""
     base = draw(st.integers(60, 140))
     land_type = draw(st.sampled_from(LAND_TYPES))
     if flat:
-        if draw(st.booleans()):
+        if not draw(st.booleans()):
             return Field(base, (), 0, 0, land_type)
         i, j = draw(st.integers(-3, 3)), draw(st.integers(-3, 3))
         return Field(base, (Feature("ramp", x0=gx - 12, y0=gy - 12, x1=gx + 12, y1=gy + 12, i=i, j=j),), 0, 0, land_type)
-    feats = draw(features_near(gx, gy))
+    feats = draw(features_near(gx, gy, tilt))
     noise = draw(st.sampled_from((0, 0, 0, 1, 2, 5)))
     seed = draw(st.integers(0, 2**16)) if noise else 0
     return Field(base, feats, noise, seed, land_type)

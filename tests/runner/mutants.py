@@ -118,3 +118,59 @@ def load_mutant(index: int):
     run = importlib.import_module(f"{pkg}.run").run_scene
     _loaded[m.name] = run
     return run
+
+
+# ---------------------------------------------------------------- the hunt (test and report share it)
+
+BUDGET = 1500  # generated scenes per mutant before we call it missed
+SEED = 0
+
+
+def scene_size(scene) -> dict:
+    """How big a (shrunk) scene is: landblocks, objects, and the mover's path length in metres."""
+    import math
+
+    def glob(p):
+        return ((p.cell >> 24) * 192.0 + p.frame.origin[0], ((p.cell >> 16) & 0xFF) * 192.0 + p.frame.origin[1],
+                p.frame.origin[2])
+
+    m = scene.mover
+    return {"landblocks": len(scene.landblocks), "objects": len(scene.objects),
+            "path": round(math.dist(glob(m.begin), glob(m.end)), 3)}
+
+
+def hunt(index: int, budget: int = BUDGET, seed: int = SEED, failures_dir=None, kinds=None) -> dict:
+    """Run the mutant against the real port through run_campaign (one worker, no database) and
+    say whether it was caught, after how many generated scenes, and how small the shrunk scene is."""
+    import time
+    import warnings
+
+    from acconform.compare import compare
+    from acconform.port.run import run_scene
+    from acconform.runner import guarded, run_campaign
+
+    warnings.simplefilter("ignore", RuntimeWarning)
+    mutant = load_mutant(index)
+    calls = {"n": 0, "first": None, "last": None}
+
+    def port(scene):
+        calls["last"] = guarded(mutant, scene)
+        return calls["last"]
+
+    def oracle(scene):
+        calls["n"] += 1
+        b = run_scene(scene)
+        if calls["first"] is None and compare(calls["last"], b, "exact"):
+            calls["first"] = calls["n"]
+        return b
+
+    t0 = time.monotonic()
+    r = run_campaign(port, oracle, kinds=kinds, n=budget, seed=seed, failures_dir=failures_dir, database=None,
+                     workers=1)
+    out = {"name": MUTATIONS[index].name, "caught": bool(r.found), "scenes_to_find": calls["first"],
+           "runs": r.cases, "seconds": round(time.monotonic() - t0, 1)}
+    if r.found:
+        f = r.found[0]
+        out.update(scene_size(f.case.scene), shrunk=f.shrunk, scene_name=f.case.scene.name,
+                   differences=len(f.case.differences), path_file=str(f.path) if f.path else None)
+    return out
