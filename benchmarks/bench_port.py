@@ -63,7 +63,7 @@ def load_corpus(kind: str, n: int):
 
 def _build_functions():
     """(owner, attribute) pairs that construct landblocks, whichever of them this tree has."""
-    from acconform.port.land import landblock, landblock_struct, lscape
+    from acconform.port.land import landblock, lscape
 
     names = [(landblock.Landblock, "__init__"), (landblock.Landblock, "post_init"),
              (lscape.LScape, "build_landblock")]

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from acconform import numerics as nx
-from acconform.numerics import EXACT, FAST, MONO, CORECLR, Vector3, cs_ceiling, cs_floor, cs_fmod, f32_bits
+from acconform.numerics import EXACT, FAST, MONO, CORECLR, cs_ceiling, cs_floor, cs_fmod, f32_bits
 from acconform.port import constants as k
 
 _P = struct.Struct("<f")

@@ -29,7 +29,7 @@ def load_sample(path: Path = SAMPLE_FILE) -> dict:
 
 
 def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
-    from acconform.oracle.recorded import RecordedOracle, _doc_key, scene_kind
+    from acconform.oracle.recorded import RecordedOracle, scene_kind
     from acconform.port.run import run_scene
     from acconform.scene import Scene
 

@@ -5,7 +5,6 @@ from __future__ import annotations
 import dataclasses
 import warnings
 
-import pytest
 
 from acconform.case import Case, load_document
 from acconform.outcome import Outcome

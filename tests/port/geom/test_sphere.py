@@ -8,9 +8,9 @@ import math
 import numpy as np
 import pytest
 
-from acconform.flags import ObjectInfoState, TransitionState
+from acconform.flags import TransitionState
 from acconform.numerics import EXACT, Plane, f32_bits
-from acconform.port.constants import EPSILON, FLOOR_Z, LANDING_Z
+from acconform.port.constants import EPSILON, LANDING_Z
 from acconform.port.geom import sphere as sph
 from acconform.port.geom.cyl_sphere import CylSphere
 from acconform.port.geom.sphere import Sphere, collides_with_sphere, find_time_of_collision

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from acconform.numerics import EXACT, Vector3, f32_bits
+from acconform.numerics import EXACT, f32_bits
 from acconform.port.transition.cell_array import CellArray
 from acconform.port.transition.collision_info import CollisionInfo
 from acconform.port.transition.transition import Transition
