@@ -147,7 +147,8 @@ class PolygonRec:
         return PolygonRec(verts, int(sides))
 
 
-def _newell_area2(verts) -> float:
+def newell_normal(verts) -> tuple[float, float, float]:
+    """Newell's (unnormalised) polygon normal, in doubles: its length is twice the polygon's area."""
     nx = ny = nz = 0.0
     n = len(verts)
     for i in range(n):
@@ -156,7 +157,11 @@ def _newell_area2(verts) -> float:
         nx += (y0 - y1) * (z0 + z1)
         ny += (z0 - z1) * (x0 + x1)
         nz += (x0 - x1) * (y0 + y1)
-    return math.sqrt(nx * nx + ny * ny + nz * nz)
+    return nx, ny, nz
+
+
+def _newell_area2(verts) -> float:
+    return math.hypot(*newell_normal(verts))
 
 
 @dataclass(frozen=True, slots=True)

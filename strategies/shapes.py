@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 
 from acconform.flags import CullMode
 from acconform.numerics import to_f32
-from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, PlaneRec, PolygonRec, SphereRec,
+from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, PlaneRec, PolygonRec, SphereRec, newell_normal,
                              SphereShape)
 
 
@@ -37,14 +37,7 @@ def _v(p):
 
 def _plane(verts) -> PlaneRec:
     # Newell's normal (robust for any planar convex polygon), unit length, through vertex 0
-    nx = ny = nz = 0.0
-    n = len(verts)
-    for i in range(n):
-        x0, y0, z0 = verts[i]
-        x1, y1, z1 = verts[(i + 1) % n]
-        nx += (y0 - y1) * (z0 + z1)
-        ny += (z0 - z1) * (x0 + x1)
-        nz += (x0 - x1) * (y0 + y1)
+    nx, ny, nz = newell_normal(verts)
     ln = math.sqrt(nx * nx + ny * ny + nz * nz)
     nx, ny, nz = nx / ln, ny / ln, nz / ln
     x0, y0, z0 = verts[0]
