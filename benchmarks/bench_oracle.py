@@ -22,7 +22,6 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
-import os
 import statistics
 import subprocess
 import sys
@@ -30,20 +29,8 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from revision import ROOT, revision_env  # noqa: E402 (benchmarks run as scripts)
 BATCH = 50  # scenes per run_many call
-
-
-def _shim(worktree: Path) -> Path:
-    """A directory whose `acconform` package is the worktree's (acconform/, port/, oracle/, strategies/)."""
-    shim = Path(tempfile.mkdtemp(prefix="acconform-shim-"))
-    pkg = shim / "acconform"
-    pkg.mkdir()
-    for entry in (worktree / "acconform").iterdir():
-        (pkg / entry.name).symlink_to(entry)
-    for sub in ("port", "oracle", "strategies"):
-        (pkg / sub).symlink_to(worktree / sub)
-    return shim
 
 
 def scene_groups(n: int) -> dict:
@@ -114,19 +101,13 @@ def main() -> int:
 
     old = None
     if args.against:
-        wt = Path(tempfile.mkdtemp(prefix="acconform-old-")) / "tree"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt), args.against],
-                       check=True, capture_output=True)
-        try:
+        with revision_env(args.against) as env:
             scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "scenes.json"
             scenes.write_text(json.dumps({k: [s.to_json() for s in v] for k, v in groups.items()}))
             cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--scenes", str(scenes)]
             if args.path:
                 cmd += ["--path", args.path]
-            env = dict(os.environ, PYTHONPATH=str(_shim(wt)))
             old = json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout)
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)], capture_output=True)
     new = measure(groups, args.path)
 
     print(new["oracle"])

@@ -21,30 +21,17 @@ from __future__ import annotations
 import argparse
 import gzip
 import json
-import os
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from revision import ROOT, revision_env  # noqa: E402 (benchmarks run as scripts)
 KINDS = ("terrain", "bsp", "obstacles")
 # CPU time of this process, not wall time: the port is single-threaded, and the machine is shared
 # (tests and oracles run beside a benchmark), so wall time mostly measured the neighbours.
 CLOCK = time.process_time
-
-
-def _shim(worktree: Path) -> Path:
-    """A directory whose `acconform` package is the worktree's (acconform/, port/, oracle/, strategies/)."""
-    shim = Path(tempfile.mkdtemp(prefix="acconform-shim-"))
-    pkg = shim / "acconform"
-    pkg.mkdir()
-    for entry in (worktree / "acconform").iterdir():
-        (pkg / entry.name).symlink_to(entry)
-    for sub in ("port", "oracle", "strategies"):
-        (pkg / sub).symlink_to(worktree / sub)
-    return shim
 
 
 def load_corpus(kind: str, n: int):
@@ -166,11 +153,7 @@ def main() -> None:
 
     old = None
     if args.against:
-        wt = Path(tempfile.mkdtemp(prefix="acconform-old-")) / "tree"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt), args.against],
-                       check=True, capture_output=True)
-        try:
-            env = dict(os.environ, PYTHONPATH=str(_shim(wt)))
+        with revision_env(args.against) as env:
             scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "generated.json"
             scenes.write_text(json.dumps([s.to_json() for s in generated_scenes(args)] if args.generated else []))
             args.scenes = str(scenes)  # both runs time the same draw (strategies change between revisions)
@@ -180,8 +163,6 @@ def main() -> None:
             # this tree in a fresh process too: the parent holds the strategies' draw (hypothesis and
             # all), whose heap made every collection slower and the new side look ~15% slower
             new = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)], capture_output=True)
     else:
         new = run(args)
     if args.json:
