@@ -161,6 +161,7 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
     from hypothesis.database import DirectoryBasedExampleDatabase
 
     from .strategies import check_kinds, scenes
+    from .strategies.determinism import pinned_constants
 
     kinds = check_kinds(kinds)
     db = DirectoryBasedExampleDatabase(str(database)) if database else None
@@ -203,7 +204,8 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
         differential._hypothesis_internal_add_digest = f"acconform:{','.join(kinds)}:{mode}".encode()
         new = False
         try:
-            differential()
+            with pinned_constants():
+                differential()
         except _Mismatch:
             scene, a, b, diffs = last
             sig = signature(diffs)

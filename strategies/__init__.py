@@ -56,6 +56,8 @@ def sample_scenes(kinds: tuple[str, ...] | None, n: int, seed: int) -> Iterator:
     from hypothesis import HealthCheck, Phase, given, settings
     from hypothesis import seed as hseed
 
+    from .determinism import pinned_constants
+
     strategy = scenes(kinds)
     out: list = []
     round_ = 0
@@ -69,7 +71,8 @@ def sample_scenes(kinds: tuple[str, ...] | None, n: int, seed: int) -> Iterator:
         def collect(scene):
             batch.append(scene)
 
-        collect()
+        with pinned_constants():
+            collect()
         out.extend(batch[: n - len(out)])
         round_ += 1
         if not batch:  # pragma: no cover - the strategy never runs dry
