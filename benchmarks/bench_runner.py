@@ -1,9 +1,10 @@
 """End-to-end differential throughput on 2 cores, and where the time goes.
 
-    python benchmarks/bench_runner.py [-n 2000] [--workers 2] [--oracle port|recorded]
+    python benchmarks/bench_runner.py [-n 2000] [--workers 2] [--kinds K,..] [--oracle port|recorded|live]
 
-Oracle "port" (default) runs the port against itself -- the cost of a live oracle is ACE's, not
-ours, so this isolates the harness; "recorded" replays the corpus (the oracle is then a lookup).
+Oracle "live" is the real thing: ACE through pythonnet (ACE_ASSEMBLY or --ace), one runtime per
+worker. "port" runs the port against itself -- it isolates the harness's own cost; "recorded"
+replays the corpus (the oracle is then a lookup).
 Prints cases/s for the whole campaign and the split: generation (Hypothesis drawing scenes,
 measured separately), port, oracle, comparison.
 """
@@ -22,8 +23,9 @@ def main() -> None:
     p = argparse.ArgumentParser()
     p.add_argument("-n", type=int, default=2000)
     p.add_argument("--workers", type=int, default=2)
-    p.add_argument("--kinds", default="terrain")
-    p.add_argument("--oracle", choices=("port", "recorded"), default="port")
+    p.add_argument("--kinds", default="terrain,bsp,obstacles")
+    p.add_argument("--oracle", choices=("port", "recorded", "live"), default="port")
+    p.add_argument("--ace", default=None, help="ACE assembly for --oracle live (else ACE_ASSEMBLY)")
     a = p.parse_args()
     warnings.simplefilter("ignore", RuntimeWarning)
     from acconform.port.run import run_scene
@@ -39,6 +41,12 @@ def main() -> None:
         oracle = get_oracle()
         replay = list(oracle.scenes())[: a.n]
         r = run_campaign(run_scene, oracle.run, replay=replay, failures_dir=None, workers=a.workers, keep_going=True)
+    elif a.oracle == "live":
+        from acconform.oracle import PerProcessOracle
+
+        oracle = PerProcessOracle(a.ace)
+        r = run_campaign(run_scene, oracle.run, kinds=kinds, n=a.n, seed=0, failures_dir=None, database=None,
+                         workers=a.workers, keep_going=True)
     else:
         r = run_campaign(run_scene, run_scene, kinds=kinds, n=a.n, seed=0, failures_dir=None, database=None,
                          workers=a.workers, keep_going=True)
