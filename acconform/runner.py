@@ -94,6 +94,20 @@ def versions_of(port: Backend, oracle: Backend) -> Versions:
     return Versions(__version__, str(getattr(owner, "name", "") or ""), "")
 
 
+def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: Counter):
+    """One scene through both backends and the comparator, adding each step's time to `timings`."""
+    t0 = time.perf_counter()
+    a = guarded(port, scene)
+    t1 = time.perf_counter()
+    b = guarded(oracle, scene)
+    t2 = time.perf_counter()
+    diffs = compare(a, b, mode)
+    timings["port"] += t1 - t0
+    timings["oracle"] += t2 - t1
+    timings["compare"] += time.perf_counter() - t2
+    return a, b, diffs
+
+
 def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions) -> Case:
     return Case(scene=scene, port=a, oracle=b, differences=tuple(render(diffs)), seed=str(seed), mode=mode,
                 versions=versions)
@@ -184,16 +198,7 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
                 raise _Stop
             ran[0] += 1
             tick(1)
-            t0 = time.perf_counter()
-            a = guarded(port, scene)
-            t1 = time.perf_counter()
-            b = guarded(oracle, scene)
-            t2 = time.perf_counter()
-            diffs = compare(a, b, mode)
-            t3 = time.perf_counter()
-            timings["port"] += t1 - t0
-            timings["oracle"] += t2 - t1
-            timings["compare"] += t3 - t2
+            a, b, diffs = run_case(port, oracle, scene, mode, timings)
             if diffs:
                 sig = signature(diffs)
                 if sig not in known:
@@ -232,15 +237,7 @@ def _replay(port: Backend, oracle: Backend, scenes: Iterable[Scene], *, mode: st
             break
         done += 1
         tick(1)
-        t0 = time.perf_counter()
-        a = guarded(port, scene)
-        t1 = time.perf_counter()
-        b = guarded(oracle, scene)
-        t2 = time.perf_counter()
-        diffs = compare(a, b, mode)
-        timings["port"] += t1 - t0
-        timings["oracle"] += t2 - t1
-        timings["compare"] += time.perf_counter() - t2
+        a, b, diffs = run_case(port, oracle, scene, mode, timings)
         if diffs:
             found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions), None, signature(diffs), False))
             if not keep_going:

@@ -26,9 +26,6 @@ def live_direct(live):
 
 
 @pytest.fixture
-def isolated_config(tmp_path, monkeypatch):
-    """No ACE setting from the environment or the user's config file."""
-    monkeypatch.delenv("ACE_ASSEMBLY", raising=False)
-    monkeypatch.delenv("ACE_RUNTIME", raising=False)
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+def isolated_config(no_ace, tmp_path):
+    """No ACE setting from the environment or the user's config file (tests/conftest.py no_ace)."""
     return tmp_path

@@ -46,6 +46,23 @@ def mismatches(port, cases, expected) -> list[tuple]:
     return bad
 
 
+def assert_matches_live_mono(ops: dict, name: str, inputs, mono_op, n: int = 3000) -> None:
+    """The port's op `name` equals mono's System.Numerics on `n` fresh inputs, bit for bit."""
+    import zlib
+
+    sn = mono()
+    cases = inputs(name, n, seed=zlib.crc32(name.encode()))
+    bad = mismatches(ops[name][1], cases, [bits(mono_op(sn, name, a)) for a in cases])
+    assert not bad, f"{len(bad)}/{len(cases)} differ from mono, first: {bad[:3]}"
+
+
+def assert_matches_recorded_mono(ops: dict, name: str, path: Path, script: str) -> None:
+    """The port's op `name` equals mono's recorded answers, bit for bit."""
+    cases, expected = replay(load_recorded(path, script), name, ops[name][0])
+    bad = mismatches(ops[name][1], cases, expected)
+    assert not bad, f"{len(bad)}/{len(cases)} differ from recorded mono answers, first: {bad[:3]}"
+
+
 def load_recorded(path: Path, script: str) -> dict:
     """The recorded document; a missing file fails (a replay lane with no data must not pass)."""
     if not path.exists():

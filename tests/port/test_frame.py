@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 import sys
-import zlib
 from pathlib import Path
 
 import numpy as np
@@ -21,7 +20,7 @@ from acconform.port.frame import AFrame, Position
 from acconform.port.land.land_defs import InvalidOperation
 
 import numerics_replay
-from numerics_replay import bits, load_recorded, mismatches, mono, replay
+from numerics_replay import assert_matches_live_mono, assert_matches_recorded_mono, bits, load_recorded
 
 DATA = Path(__file__).resolve().parent.parent / "data" / "numerics_mono.json"
 F = np.float32
@@ -266,19 +265,11 @@ def _mono_op(sn, name, a):
     raise KeyError(name)
 
 
-def _mismatches(name, cases, expected):
-    return mismatches(OPS[name][1], cases, expected)
-
-
 @pytest.mark.live_runtime
 @pytest.mark.anchor("AFrame::global_to_local_vec")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_frame_numerics_match_mono_system_numerics_bit_for_bit(name):
-    sn = mono()
-    cases = _inputs(name, 3000, seed=zlib.crc32(name.encode()))
-    expected = [bits(_mono_op(sn, name, a)) for a in cases]
-    bad = _mismatches(name, cases, expected)
-    assert not bad, f"{len(bad)}/{len(cases)} differ from mono, first: {bad[:3]}"
+    assert_matches_live_mono(OPS, name, _inputs, _mono_op)
 
 
 def _load_recorded():
@@ -288,9 +279,7 @@ def _load_recorded():
 @pytest.mark.anchor("AFrame::global_to_local_vec")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_frame_numerics_match_recorded_mono_answers(name):
-    cases, expected = replay(_load_recorded(), name, OPS[name][0])
-    bad = _mismatches(name, cases, expected)
-    assert not bad, f"{len(bad)}/{len(cases)} differ from recorded mono answers, first: {bad[:3]}"
+    assert_matches_recorded_mono(OPS, name, DATA, Path(__file__).name)
 
 
 def test_recorded_mono_answers_cover_every_frame_op():

@@ -16,13 +16,6 @@ from acconform.strategies import sample_scenes
 warnings.simplefilter("ignore", RuntimeWarning)
 
 
-@pytest.fixture
-def no_ace(monkeypatch, tmp_path):
-    monkeypatch.delenv("ACE_ASSEMBLY", raising=False)
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-    monkeypatch.setenv("HOME", str(tmp_path / "home"))
-
-
 def _port():
     return pytest.importorskip("acconform.port.run").run_scene
 

@@ -18,6 +18,7 @@ from acconform.flags import PhysicsState, TransientState
 from acconform.strategies import sample_scenes
 from acconform.strategies.objects import BSP_STATE, EPS
 from acconform.strategies.scenes import BLOCK, CELL, REACH_SLACK
+from strategy_records import floats_in
 
 warnings.simplefilter("ignore", RuntimeWarning)
 
@@ -185,22 +186,9 @@ def test_velocities_are_mostly_at_rest_so_few_scenes_leave_their_contact_plane(d
     assert moving > 0, "rising, falling and free velocities are still drawn"
 
 
-def _floats(rec):
-    import dataclasses
-
-    if isinstance(rec, float):
-        yield rec
-    elif dataclasses.is_dataclass(rec):
-        for f in dataclasses.fields(rec):
-            yield from _floats(getattr(rec, f.name))
-    elif isinstance(rec, tuple):
-        for v in rec:
-            yield from _floats(v)
-
-
 def test_every_float_of_every_policy_is_an_exact_float32(bsp_scenes, terrain_scenes):
     for s in bsp_scenes + terrain_scenes:
-        for x in _floats(s):
+        for x in floats_in(s):
             assert float(np.float32(x)) == x, s.name
 
 

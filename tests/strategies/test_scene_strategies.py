@@ -14,22 +14,9 @@ from acconform.strategies import ALL_KINDS, DEFAULT_KINDS, check_kinds, sample_s
 from acconform.strategies import terrain as tr
 from acconform.strategies.objects import EPS
 from acconform.strategies.scenes import BLOCK
+from strategy_records import floats_in
 
 FAST = settings(max_examples=60, deadline=None, suppress_health_check=list(HealthCheck), database=None)
-
-
-def _floats(rec):
-    """Every float held anywhere in a record (dataclasses, tuples)."""
-    import dataclasses
-
-    if isinstance(rec, float):
-        yield rec
-    elif dataclasses.is_dataclass(rec):
-        for f in dataclasses.fields(rec):
-            yield from _floats(getattr(rec, f.name))
-    elif isinstance(rec, tuple):
-        for v in rec:
-            yield from _floats(v)
 
 
 @FAST
@@ -43,7 +30,7 @@ def test_generated_scenes_validate_and_round_trip_through_json_exactly(scene):
 @FAST
 @given(scenes(ALL_KINDS))
 def test_every_generated_float_is_an_exact_float32(scene):
-    for x in _floats(scene):
+    for x in floats_in(scene):
         assert float(np.float32(x)) == x
 
 

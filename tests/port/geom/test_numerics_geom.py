@@ -10,7 +10,6 @@ Re-record after changing the inputs: ``python tests/port/geom/test_numerics_geom
 from __future__ import annotations
 
 import sys
-import zlib
 from pathlib import Path
 
 import numpy as np
@@ -20,7 +19,7 @@ from acconform.numerics import EXACT, cross, dot, f32_bits, f32_from_bits, norma
 from acconform.port.vec import length_2d
 
 import numerics_replay
-from numerics_replay import bits, load_recorded, mismatches, mono, replay, unpack
+from numerics_replay import assert_matches_live_mono, assert_matches_recorded_mono, load_recorded, unpack
 
 DATA = Path(__file__).resolve().parents[2] / "data" / "numerics_mono_geom.json"
 F = np.float32
@@ -135,19 +134,11 @@ def _mono_op(sn, name, a):
     raise KeyError(name)
 
 
-def _mismatches(name, cases, expected):
-    return mismatches(OPS[name][1], cases, expected)
-
-
 @pytest.mark.live_runtime
 @pytest.mark.anchor("CPolygon::make_plane")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_geom_numerics_match_mono_system_numerics_bit_for_bit(name):
-    sn = mono()
-    cases = _inputs(name, 3000, seed=zlib.crc32(name.encode()))
-    expected = [bits(_mono_op(sn, name, a)) for a in cases]
-    bad = _mismatches(name, cases, expected)
-    assert not bad, f"{len(bad)}/{len(cases)} differ from mono, first: {bad[:3]}"
+    assert_matches_live_mono(OPS, name, _inputs, _mono_op)
 
 
 def _load_recorded():
@@ -157,9 +148,7 @@ def _load_recorded():
 @pytest.mark.anchor("CPolygon::make_plane")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_geom_numerics_match_recorded_mono_answers(name):
-    cases, expected = replay(_load_recorded(), name, OPS[name][0])
-    bad = _mismatches(name, cases, expected)
-    assert not bad, f"{len(bad)}/{len(cases)} differ from recorded mono answers, first: {bad[:3]}"
+    assert_matches_recorded_mono(OPS, name, DATA, Path(__file__).name)
 
 
 @pytest.mark.anchor("CPolygon::make_plane")
