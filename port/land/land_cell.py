@@ -13,7 +13,7 @@ overload, which needs BBox and PhysicsPart) is not ported.
 from __future__ import annotations
 
 from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
-from acconform.port.anchors import anchor
+from acconform.port.anchors import anchor, harness
 from acconform.port.constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom.polygon import Polygon, Sidedness
@@ -85,6 +85,55 @@ class LandCell:
 
 
 # ---------------------------------------------------------------- static helpers
+
+
+class _AddedCells:
+    """Stands in for the CellArray while add_all_outside_cells runs: records its add_cell calls."""
+
+    __slots__ = ("added_outside", "adds")
+
+    def __init__(self):
+        self.added_outside = False
+        self.adds: list = []
+
+    @harness("records an add_cell call for add_all_outside_cells_replayed")
+    def add_cell(self, cell_id: int, cell) -> None:
+        self.adds.append((cell_id, cell))
+
+
+@harness("add_all_outside_cells with its add_cell calls remembered per run and replayed")
+def add_all_outside_cells_replayed(lscape, position: Position, num_sphere: int, spheres, cell_array) -> None:
+    """add_all_outside_cells, answered from the run's memory when it has seen the same inputs.
+
+    With spheres, ACE's routine is a function of the position's cell id and each sphere's x, y
+    and radius (and of the world, fixed during a run): it only calls add_cell, on cells looked
+    up by id. find_cell_list calls it once and then once more per cell found (every
+    find_transit_cells repeats it, AddedOutside never being set), so ~90% of calls repeat an
+    earlier one. Replaying the same add_cell calls in the same order leaves the CellArray (and
+    its .NET entry order) exactly as running it again would. Keys hold the coordinates' values:
+    -0 and +0 meet as equal, which is safe because AdjustToOutside snaps |x|, |y| < EPSILON to
+    +0 first; a NaN never matches, so it always runs. With no spheres the routine moves
+    `position` itself, so that form always runs; so does a call that throws (its adds are
+    applied, then the exception goes on, as if it had run in place).
+    """
+    if cell_array.added_outside:
+        return
+    if num_sphere == 0:
+        add_all_outside_cells(lscape, position, num_sphere, spheres, cell_array)
+        return
+    key = (position.obj_cell_id, tuple((s.center.x, s.center.y, s.radius) for s in spheres))
+    adds = lscape.outside_cells.get(key)
+    if adds is None:
+        recorder = _AddedCells()
+        try:
+            add_all_outside_cells(lscape, position, num_sphere, spheres, recorder)
+        except BaseException:
+            for cell_id, cell in recorder.adds:
+                cell_array.add_cell(cell_id, cell)
+            raise
+        adds = lscape.outside_cells[key] = recorder.adds
+    for cell_id, cell in adds:
+        cell_array.add_cell(cell_id, cell)
 
 
 @anchor("CLandCell::add_all_outside_cells", "LandCell.cs:add_all_outside_cells(Position, int, List<Sphere>, CellArray)")

@@ -13,7 +13,7 @@ from acconform.numerics import Vector3
 
 from ..anchors import anchor
 from . import land_defs
-from .land_cell import LandCell, add_all_outside_cells
+from .land_cell import LandCell, add_all_outside_cells_replayed
 from .land_defs import WaterType
 from .obj_cell import ObjCell
 
@@ -63,7 +63,7 @@ def find_env_collisions(self, transition) -> TransitionState:
 @anchor("CLandCell::find_transit_cells", "LandCell.cs:find_transit_cells")
 def find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
     """The run's world `lscape` comes first, standing in for ACE's static LScape."""
-    add_all_outside_cells(lscape, position, num_sphere, spheres, cell_array)
+    add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
     self.sort_cell_find_transit_cells(lscape, position, num_sphere, spheres, cell_array, path)
 
 

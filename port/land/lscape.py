@@ -97,6 +97,7 @@ class LScape:
         self.land_height_table = scene.land_height_table
         self.landblocks: dict[int, Landblock] = {}  # the ones built so far
         self.landcells: dict[int, LandCell | None] = {}  # get_landcell's answers so far (see there)
+        self.outside_cells: dict[tuple, list] = {}  # land_cell.add_all_outside_cells_replayed's memory
         self.records = {record.id | 0xFFFF: record for record in scene.landblocks}
         for landblock_id, record in self.records.items():
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
@@ -116,6 +117,7 @@ class LScape:
             POOL.release(LandblockPool.key(self.records[landblock_id], self.land_height_table, self.mode), landblock)
         self.landblocks = {}
         self.landcells = {}
+        self.outside_cells = {}
         self.records = {}
 
     @anchor("LScape::get_landblock", "LScape.cs:get_landblock")

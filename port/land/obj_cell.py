@@ -16,7 +16,7 @@ from acconform.flags import PhysicsState, TransitionState
 
 from ..anchors import anchor
 from . import land_defs
-from .land_cell import add_all_outside_cells
+from .land_cell import add_all_outside_cells_replayed
 
 
 class ObjCell:
@@ -133,7 +133,7 @@ def find_cell_list(lscape, position, num_sphere: int, spheres: list, cell_array,
 
     if (position.obj_cell_id & 0xFFFF) >= 0x100:
         raise NotImplementedError("indoor cells (EnvCells) are not supported")
-    add_all_outside_cells(lscape, position, num_sphere, spheres, cell_array)
+    add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
 
     if visible_cell is not None and num_sphere != 0:
         i = 0

@@ -150,3 +150,32 @@ def test_add_cell_block_keeps_only_cells_of_the_given_block():
     lc.add_cell_block(w, 1358, 1440, 1361, 1441, ca, 0xA9B40001)
     # x 1358..1361: 1360 and 1361 are block 0xAA, dropped by ACE's "FIXME" same-block test
     assert sorted(ca.cells) == [0xA9B40031, 0xA9B40032, 0xA9B40039, 0xA9B4003A]
+
+
+def test_replayed_outside_cells_leave_the_cell_array_as_running_it_again_does():
+    """add_all_outside_cells_replayed (the per-run memory) against ACE's routine run every time:
+    same cells in the same .NET entry order, from a fresh array and from one already holding
+    cells, over spheres placed across cell and block borders, repeats included."""
+    from acconform.port.transition.cell_array import CellArray
+
+    w = world(*(landblock(((0xA8 + i) << 24) | ((0xB3 + j) << 16) | 0xFFFF) for i in range(4) for j in range(4)))
+    rng = np.random.default_rng(5)
+    coords = [0.0, -0.0, 0.3, 23.8, 24.0, 24.2, 100.0, 191.7, 191.99]
+    calls = 0
+    for trial in range(400):
+        # few cells (in two blocks), so inputs meet again
+        cell = int(rng.choice([0xA9B40000, 0xAAB50000])) | int(rng.choice([1, 8, 57, 64]))
+        spheres = [SphereStub(EXACT.vec(F(rng.choice(coords)) + F(rng.integers(0, 2) * 48),
+                                        F(rng.choice(coords)), 0.5), F(rng.choice([0.3, 0.5, 2.0])))
+                   for _ in range(int(rng.integers(1, 3)))]
+        direct, replayed = CellArray(), CellArray()
+        for ca in (direct, replayed):
+            ca.add_cell(0xA9B40001, w.get_landcell(0xA9B40001))  # an earlier step's cell
+        for _ in range(2):  # the second call is answered from memory
+            lc.add_all_outside_cells(w, Position(cell, AFrame.identity(EXACT)), len(spheres), spheres, direct)
+            lc.add_all_outside_cells_replayed(w, Position(cell, AFrame.identity(EXACT)), len(spheres), spheres,
+                                              replayed)
+            calls += 1
+        assert direct.cells.keys() == replayed.cells.keys()
+        assert direct.num_cells == replayed.num_cells
+    assert calls == 800 and len(w.outside_cells) > 50  # the memory was used, and for many inputs
