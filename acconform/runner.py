@@ -20,6 +20,8 @@ Deterministic for a seed (and a worker count): worker w draws with seed (seed, w
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import hashlib
 import multiprocessing
 import os
@@ -167,6 +169,28 @@ class Progress:
 
 # ---------------------------------------------------------------- one worker's campaign
 
+# The port's objects hold reference cycles (a PhysicsObj and its PartArray, a cell and its
+# landblock), so every case leaves cyclic garbage, and Hypothesis allocates heavily while it
+# draws. With CPython's default thresholds (700, 10, 10) the collector runs every few hundred
+# microseconds and keeps re-walking the long-lived objects (modules, Hypothesis' caches, the
+# pythonnet bridge). Freezing what exists before the campaign and collecting less often made
+# the port 12% faster per case (5.85 -> 5.10 ms, one run) with no visible memory cost.
+GC_THRESHOLDS = (20000, 20, 20)
+
+
+@contextlib.contextmanager
+def campaign_gc():
+    """The collector tuned for a campaign (see GC_THRESHOLDS); restored afterwards."""
+    old = gc.get_threshold()
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(*GC_THRESHOLDS)
+    try:
+        yield
+    finally:
+        gc.set_threshold(*old)
+        gc.unfreeze()
+
 
 def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mode: str, keep_going: bool,
                 database, tick, should_stop, timings: Counter, versions: Versions) -> tuple[int, list[Found]]:
@@ -261,6 +285,15 @@ def _worker(w: int) -> tuple[int, list[dict], dict, list[bool]]:
     timings: Counter = Counter()
     if s["versions"] is None:  # a per-process oracle: this worker loads its own runtime
         s["versions"] = versions_of(s["port"], s["oracle"])
+    with campaign_gc():
+        done, found = _worker_campaign(w, s, tick, timings)
+    if found and not s["keep_going"]:
+        stop.set()
+    return done, [f.case.to_json() for f in found], dict(timings), [f.shrunk for f in found]
+
+
+def _worker_campaign(w: int, s: dict, tick, timings: Counter):
+    stop = s["stop"]
     if s["replay"] is not None:
         mine = [sc for i, sc in enumerate(s["replay"]) if i % s["workers"] == w]
         done, found = _replay(s["port"], s["oracle"], mine, mode=s["mode"], keep_going=s["keep_going"], tick=tick,
@@ -271,9 +304,7 @@ def _worker(w: int) -> tuple[int, list[dict], dict, list[bool]]:
         done, found = _generative(s["port"], s["oracle"], kinds=s["kinds"], n=n, seed=s["seed"] * 1000 + w,
                                   mode=s["mode"], keep_going=s["keep_going"], database=s["database"], tick=tick,
                                   should_stop=lambda: stop.is_set(), timings=timings, versions=s["versions"])
-    if found and not s["keep_going"]:
-        stop.set()
-    return done, [f.case.to_json() for f in found], dict(timings), [f.shrunk for f in found]
+    return done, found
 
 
 def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, seed: int = 0, mode: str = "exact",
@@ -305,13 +336,14 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
             bar.update(count[0], 0)
 
         timings: Counter = Counter()
-        if replay_list is not None:
-            done, found = _replay(port, oracle, replay_list, mode=mode, keep_going=keep_going, tick=tick,
-                                  should_stop=lambda: False, timings=timings, versions=versions, seed=seed)
-        else:
-            done, found = _generative(port, oracle, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
-                                      database=database, tick=tick, should_stop=lambda: False, timings=timings,
-                                      versions=versions)
+        with campaign_gc():
+            if replay_list is not None:
+                done, found = _replay(port, oracle, replay_list, mode=mode, keep_going=keep_going, tick=tick,
+                                      should_stop=lambda: False, timings=timings, versions=versions, seed=seed)
+            else:
+                done, found = _generative(port, oracle, kinds=kinds, n=n, seed=seed, mode=mode,
+                                          keep_going=keep_going, database=database, tick=tick,
+                                          should_stop=lambda: False, timings=timings, versions=versions)
         result.cases, result.found, result.timings = done, found, timings
     else:
         ctx = multiprocessing.get_context("fork")

@@ -59,7 +59,9 @@ class LiveOracle:
         if self._facade is not None:
             self._facade.Init()
             self._buffers()
-            self._run_pinned, self._run_many_pinned = self._facade.RunPinned, self._facade.RunManyPinned
+            entry = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_int)
+            self._run_pinned = entry(int(self._facade.RunPinnedAddress))
+            self._run_many_pinned = entry(int(self._facade.RunManyPinnedAddress))
         self.last_ace_micros = 0.0  # ACE's in-runtime FindValidPosition time for the last scene
         self.last_case_micros = 0.0  # the whole scene inside .NET (build, transition, read back)
         self.last_landblocks_built = 0  # landblocks the facade built for the last scene
@@ -98,10 +100,10 @@ class LiveOracle:
             self._facade.EnsureInput(n)
             self._buffers()
         ctypes.memmove(self._in_addr, data, n)
-        try:
-            return method(n)
-        except Exception as e:  # the facade catches ACE's exceptions itself; this is the bridge failing
-            raise OracleError(f"the oracle facade failed outside ACE: {type(e).__name__}: {e}") from None
+        out = method(n)  # a native entry point (Facade.Init): ctypes, not a pythonnet call
+        if out < 0:  # the facade catches ACE's exceptions itself; this is the facade failing
+            raise OracleError(f"the oracle facade failed outside ACE: {self._facade.LastNativeError}")
+        return out
 
     def _overflow(self, n: int):
         self._buffers()  # the facade grew its output array for a long outcome (an error message)
