@@ -3,14 +3,19 @@
     ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300] [--path facade|direct]
     ACE_ASSEMBLY=... python benchmarks/bench_oracle.py --against HEAD~1   # before/after in one run
 
-Columns, per case (medians after a warm-up; landblocks cached across scenes, the default):
+Columns, per case (medians; landblocks cached across scenes, the default):
   run() us    the oracle's wall time from Python for one `run` call (pack, cross, unpack)
   batch us    the same per scene through `run_many`, BATCH scenes a call
-  .NET us     the facade's whole case inside .NET (reset, build, transition, read back)
-  FVP us      ACE's Transition.FindValidPosition alone (a Stopwatch inside the facade)
-  /FVP, /.NET run() divided by each: issue 3's target is run()/FVP <= 2
+  .NET us     the facade's whole case inside .NET: what ACE's runtime spends on the case (reset,
+              build the scene's world and objects, the transition, read back)
+  trans us    PhysicsObj.transition's own work (MakeTransition .. FindValidPosition .. CleanupTransition)
+  FVP us      ACE's Transition.FindValidPosition alone
+  /.NET /trans /FVP   run() divided by each
   built       landblocks the facade had to build per case (the rest came from its cache)
   us/lb       .NET time per landblock built (CellLandblock.Unpack, new Landblock, PostInit)
+The strategies' kinds are fresh scenes (warm-up on other seeds, so nothing measured was seen
+before) and also get campaign totals: sum of run() over sum of each in-runtime time, which is
+what a campaign pays.
 
 --against REV checks REV out into a temporary git worktree and runs this script there in a
 subprocess (imports resolve to the worktree through a shim on sys.path), on the same scenes
@@ -41,6 +46,8 @@ def scene_groups(n: int) -> dict:
     groups["BSP wall (slide)"] = [walk(flat, (12.0, 12.0, 20.0), (17.0, 12.0, 20.0), 20.0, objects=(wall(),))] * n
     for kind in ("terrain", "bsp", "obstacles"):
         groups[f"strategies: {kind}"] = list(sample_scenes((kind,), n, 7))
+        groups[f"warm-up: {kind}"] = list(sample_scenes((kind,), 50, 8))
+        groups[f"batch: {kind}"] = list(sample_scenes((kind,), n, 9))
     return groups
 
 
@@ -50,28 +57,39 @@ def measure(groups: dict, path) -> dict:
     oracle = LiveOracle(path=path)
     res = {"oracle": f"{oracle!r}: {oracle.versions.ace} on {oracle.versions.runtime}", "kinds": {}}
     for name, scenes in groups.items():
-        for s in scenes[:50]:
-            oracle.run(s)  # warm-up: JIT, landblock cache
-        singles, ace, case, built, build_us = [], [], [], [], []
+        if name.startswith(("warm-up: ", "batch: ")):
+            continue
+        fresh = name.startswith("strategies: ")
+        kind = name.split(": ", 1)[-1]
+        for s in (groups[f"warm-up: {kind}"] if fresh else scenes[:50]):
+            oracle.run(s)  # warm-up: JIT (and, for a repeated scene, its landblock)
+        singles, ace, trans, case, built, build_us = [], [], [], [], [], []
         digest = hashlib.sha256()
         for s in scenes:
             t = time.perf_counter()
             o, us = oracle.run_timed(s)
             singles.append((time.perf_counter() - t) * 1e6)
             ace.append(us)
+            trans.append(oracle.last_transition_micros)
             case.append(oracle.last_case_micros)
-            built.append(getattr(oracle, "last_landblocks_built", float("nan")))
-            build_us.append(getattr(oracle, "last_build_micros", float("nan")))
+            built.append(oracle.last_landblocks_built)
+            build_us.append(oracle.last_build_micros)
             digest.update(json.dumps(o.to_json(), sort_keys=True).encode())
-        oracle.run_many(scenes[:BATCH])  # warm-up: the batch buffers grow once
+        batch_scenes = groups[f"batch: {kind}"] if fresh else scenes
+        oracle.run_many(batch_scenes[:BATCH])  # warm-up: the batch buffers grow once
+        if fresh:
+            batch_scenes = batch_scenes[BATCH:]
         batch, t = [], time.perf_counter()
-        for i in range(0, len(scenes), BATCH):
-            batch += oracle.run_many(scenes[i:i + BATCH])
-        batch_us = (time.perf_counter() - t) * 1e6 / len(scenes)
-        same = all(b[0].to_json() == oracle.run(s).to_json() for b, s in zip(batch[:20], scenes[:20]))
+        for i in range(0, len(batch_scenes), BATCH):
+            batch += oracle.run_many(batch_scenes[i:i + BATCH])
+        batch_us = (time.perf_counter() - t) * 1e6 / max(len(batch_scenes), 1)
+        same = all(b[0].to_json() == oracle.run(s).to_json() for b, s in zip(batch[:20], batch_scenes[:20]))
         res["kinds"][name] = {"run": statistics.median(singles), "batch": batch_us, "net": statistics.median(case),
-                              "fvp": statistics.median(ace), "built": statistics.mean(built),
+                              "trans": statistics.median(trans), "fvp": statistics.median(ace),
+                              "built": statistics.mean(built),
                               "lb_us": sum(build_us) / sum(built) if sum(built) else float("nan"),
+                              "sum_run": sum(singles), "sum_net": sum(case), "sum_trans": sum(trans),
+                              "sum_fvp": sum(ace), "fresh": fresh,
                               "outcomes": digest.hexdigest()[:16], "batch_agrees": same}
     return res
 
@@ -113,19 +131,28 @@ def main() -> int:
     print(new["oracle"])
     if old:
         print(f"before = {args.against}, after = this tree; same scenes, one run (before first)")
-        print(f"{'scene kind':28} {'run() us':>17} {'batch us':>15} {'.NET us':>13} {'FVP us':>6} "
-              f"{'/FVP':>11} {'/.NET':>6} {'built':>5} {'us/lb':>5}  outcomes")
+        print(f"{'scene kind':28} {'run() us':>17} {'batch us':>15} {'.NET us':>13} {'trans':>6} {'FVP us':>6} "
+              f"{'/.NET':>6} {'/trans':>6} {'/FVP':>6} {'built':>5} {'us/lb':>5}  outcomes")
         for name, b in new["kinds"].items():
             a = old["kinds"][name]
             print(f"{name:28} {a['run']:7.1f} -> {b['run']:6.1f} {a['batch']:6.1f} -> {b['batch']:5.1f} "
-                  f"{a['net']:5.1f} -> {b['net']:5.1f} {b['fvp']:6.1f} {_ratio(a['run'], a['fvp'])} ->{_ratio(b['run'], b['fvp'])} "
-                  f"{_ratio(b['run'], b['net'])} {b['built']:5.2f} {b['lb_us']:5.0f}  "
+                  f"{a['net']:5.1f} -> {b['net']:5.1f} {b.get('trans', float('nan')):6.1f} {b['fvp']:6.1f} "
+                  f"{_ratio(b['run'], b['net'])} {_ratio(b['run'], b.get('trans', 0))} {_ratio(b['run'], b['fvp'])} "
+                  f"{b['built']:5.2f} {b['lb_us']:5.0f}  "
                   f"{'identical' if a['outcomes'] == b['outcomes'] else 'DIFFER'}{'' if b['batch_agrees'] else ' (batch DIFFERS)'}")
         return 0 if all(old["kinds"][k]["outcomes"] == v["outcomes"] for k, v in new["kinds"].items()) else 1
-    print(f"{'scene kind':28} {'run() us':>9} {'batch us':>9} {'.NET us':>8} {'FVP us':>7} {'/FVP':>6} {'/.NET':>6} {'built':>5} {'us/lb':>5}")
+    print(f"{'scene kind':28} {'run() us':>9} {'batch us':>9} {'.NET us':>8} {'trans us':>8} {'FVP us':>7} "
+          f"{'/.NET':>6} {'/trans':>6} {'/FVP':>6} {'built':>5} {'us/lb':>5}")
     for name, b in new["kinds"].items():
-        print(f"{name:28} {b['run']:9.1f} {b['batch']:9.1f} {b['net']:8.1f} {b['fvp']:7.1f} {_ratio(b['run'], b['fvp'])} "
-              f"{_ratio(b['run'], b['net'])} {b['built']:5.2f} {b['lb_us']:5.0f}")
+        print(f"{name:28} {b['run']:9.1f} {b['batch']:9.1f} {b['net']:8.1f} {b['trans']:8.1f} {b['fvp']:7.1f} "
+              f"{_ratio(b['run'], b['net'])} {_ratio(b['run'], b['trans'])} {_ratio(b['run'], b['fvp'])} "
+              f"{b['built']:5.2f} {b['lb_us']:5.0f}")
+    print("campaign totals on fresh scenes (sum of run() / sum of each):")
+    for name, b in new["kinds"].items():
+        if b["fresh"]:
+            print(f"  {name:26} run() {b['sum_run'] / len(groups[name]):7.1f} us a case:"
+                  f"  /.NET {b['sum_run'] / b['sum_net']:5.2f}  /trans {b['sum_run'] / b['sum_trans']:5.2f}"
+                  f"  /FVP {b['sum_run'] / b['sum_fvp']:5.2f}")
     return 0
 
 

@@ -67,6 +67,7 @@ class LiveOracle:
         self.last_landblocks_built = 0  # landblocks the facade built for the last scene
         self.last_landblocks_reused = 0  # ... and took from its cache (same bytes, same height table)
         self.last_build_micros = 0.0  # time building them (CellLandblock.Unpack, new Landblock, PostInit)
+        self.last_transition_micros = 0.0  # PhysicsObj.transition's own work (MakeTransition .. CleanupTransition)
 
     def run(self, scene: Scene) -> Outcome:
         return self.run_timed(scene)[0]
@@ -79,9 +80,10 @@ class LiveOracle:
             outcome, us, case_us, counts = unpack_outcome(self._out, 0) if n <= self._out_cap else self._overflow(n)
         else:
             outcome, us, case_us = self._direct.run(scene)
-            counts = (0, 0, 0.0)
+            counts = (0, 0, 0.0, float("nan"))
         self.last_ace_micros, self.last_case_micros = us, case_us
-        self.last_landblocks_built, self.last_landblocks_reused, self.last_build_micros = counts
+        (self.last_landblocks_built, self.last_landblocks_reused, self.last_build_micros,
+         self.last_transition_micros) = counts
         return outcome, us
 
     # -------------------------------------------------------------- the pinned buffers

@@ -15,7 +15,7 @@ from ..outcome import ContactPlaneState, NormalState, Outcome
 from ..scene import BSPLeaf, CylSphereShape, Landblock, Scene, SphereShape
 from ..staging import mover_setup_dims, shadow_cells
 
-PACK_VERSION = 2
+PACK_VERSION = 3
 SHAPE_KIND = {"sphere": 0, "cylsphere": 1, "bsp": 2}
 
 _f = struct.Struct("<f")
@@ -136,9 +136,10 @@ _parts: dict = {}  # (valid, cell, water, nx, ny, nz, d) / (valid, x, y, z) -> t
 _PARTS_LIMIT = 8192
 
 # tag 1, then the outcome fields, ACE's FindValidPosition time and the whole case (doubles), then
-# the facade's counters: landblocks built, landblocks reused (ints), building time (double)
-_OUT = struct.Struct("<BBI3f4fI" + "BIB3ff" * 2 + "B3f" * 2 + "Bi3fIBBBdd" + "iid")
-_TAIL = struct.Struct("<ddiid")  # after an error message: FVP time, whole case, counters
+# the facade's counters: landblocks built, landblocks reused (ints), building time, and the time of
+# PhysicsObj.transition's own work, MakeTransition to CleanupTransition (doubles)
+_OUT = struct.Struct("<BBI3f4fI" + "BIB3ff" * 2 + "B3f" * 2 + "Bi3fIBBBdd" + "iidd")
+_TAIL = struct.Struct("<ddiidd")  # after an error message: FVP time, whole case, counters
 
 
 _RAW = struct.Struct("<38x22s22s13s13s")  # the same four records' bytes: exact (bitwise) cache keys
@@ -162,16 +163,17 @@ def _ns(key, valid, x, y, z):
     return v
 
 
-def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[int, int, float]]:
+def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[int, int, float, float]]:
     """(Outcome, ACE's in-runtime FindValidPosition time, the facade's whole-case time, (landblocks
-    built, landblocks reused from the facade's cache, microseconds building them)), times in
+    built, landblocks reused from the facade's cache, microseconds building them, PhysicsObj.transition's
+    own time: MakeTransition to CleanupTransition)), times in
     microseconds, from the facade's bytes (`data` is any buffer; the outcome starts at `offset`)."""
     tag = data[offset]
     if tag == 0xEE or tag == b"\xee":
         (n,) = struct.unpack_from("<i", data, offset + 1)
         msg = bytes(data[offset + 5:offset + 5 + n]).decode("utf-8", "replace")
-        us, case_us, built, reused, build_us = _TAIL.unpack_from(data, offset + 5 + n)
-        return Outcome(error=msg), us, case_us, (built, reused, build_us)
+        us, case_us, built, reused, build_us, trans_us = _TAIL.unpack_from(data, offset + 5 + n)
+        return Outcome(error=msg), us, case_us, (built, reused, build_us, trans_us)
     v = _OUT.unpack_from(data, offset)
     if v[0] != 1:
         raise ValueError(f"unknown outcome tag {v[0]}")
@@ -180,7 +182,7 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
     lk = cp if kl == kc else _cps(kl, *v[18:25])
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
                           bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None),
-            v[42], v[43], (v[44], v[45], v[46]))
+            v[42], v[43], (v[44], v[45], v[46], v[47]))
 
 
 def frames_stationary_fall(transient_state: int) -> int:

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 2;
+        public const int PackVersion = 3;
         public const uint MoverId = 0x50000001;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
@@ -65,6 +65,7 @@ namespace Acconform.Oracle
         // Counters for the last scene (written after the times in every outcome; see pack.unpack_outcome).
         static int landblocksBuilt, landblocksReused;
         static double buildMicros;
+        static double transitionMicros;  // PhysicsObj.transition's work: MakeTransition .. CleanupTransition
 
         // ------------------------------------------------------------------ pinned buffers
         // Python copies a packed scene straight into InputAddress (ctypes.memmove) and reads the packed
@@ -197,7 +198,7 @@ namespace Acconform.Oracle
             var start = outcome.Position;
             double fvpMicros = 0;
             landblocksBuilt = landblocksReused = 0;
-            buildMicros = 0;
+            buildMicros = transitionMicros = 0;
             var total = Stopwatch.StartNew();
             try
             {
@@ -224,6 +225,7 @@ namespace Acconform.Oracle
             w.Write(landblocksBuilt);
             w.Write(landblocksReused);
             w.Write(buildMicros);
+            w.Write(transitionMicros);
         }
 
         public static void ClearCache()
@@ -653,6 +655,7 @@ namespace Acconform.Oracle
                                   out Transition trans, out double fvpMicros)
         {
             // PhysicsObj.transition(oldPos, newPos, adminMove: false), step by step, keeping the Transition.
+            var whole = Stopwatch.StartNew();
             trans = Transition.MakeTransition();
             var info = obj.get_object_info(trans, false);
             trans.InitObject(obj, info.State);
@@ -670,6 +673,7 @@ namespace Acconform.Oracle
             sw.Stop();
             fvpMicros = sw.Elapsed.TotalMilliseconds * 1000.0;
             trans.CleanupTransition();
+            transitionMicros = whole.Elapsed.TotalMilliseconds * 1000.0;
             return ok;
         }
 

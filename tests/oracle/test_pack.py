@@ -14,7 +14,7 @@ def _packed(cp_normal=(0.0, 0.0, 1.0), sliding=(0.0, 0.0, 0.0), neg=0):
             1, 0xA9B40001, 0, *cp_normal, -20.0,
             1, 0xA9B40001, 0, 0.0, 0.0, 1.0, -20.0,
             0, 0.0, 0.0, 0.0, 1, *sliding,
-            1, 0, 0.0, 0.0, 0.0, 0xA9B40001, 1, 0, neg, 1.5, 12.0, 2, 1, 30.0)
+            1, 0, 0.0, 0.0, 0.0, 0xA9B40001, 1, 0, neg, 1.5, 12.0, 2, 1, 30.0, 4.5)
     return _OUT.pack(*vals)
 
 
@@ -32,7 +32,7 @@ def test_unpacking_reads_every_field_and_the_facade_counters():
                         last_known_contact_plane=ContactPlaneState(True, 0xA9B40001, False, (0.0, 0.0, 1.0), -20.0),
                         collision_normal=NormalState(), sliding_normal=NormalState(True, (0.0, 0.0, 0.0)),
                         collided_with_environment=True, check_cell=0xA9B40001, walkable=True)
-    assert (fvp, case, counts) == (1.5, 12.0, (2, 1, 30.0))
+    assert (fvp, case, counts) == (1.5, 12.0, (2, 1, 30.0, 4.5))
 
 
 def test_shared_records_are_keyed_by_bits_so_negative_zero_stays_negative():
@@ -47,9 +47,9 @@ def test_shared_records_are_keyed_by_bits_so_negative_zero_stays_negative():
 
 def test_an_error_outcome_carries_the_message_and_the_counters():
     msg = "NullReferenceException: boom".encode()
-    data = b"\xee" + struct.pack("<i", len(msg)) + msg + struct.pack("<ddiid", 0.0, 9.0, 1, 0, 5.0)
+    data = b"\xee" + struct.pack("<i", len(msg)) + msg + struct.pack("<ddiidd", 0.0, 9.0, 1, 0, 5.0, 2.5)
     o, fvp, case, counts = unpack_outcome(data)
-    assert o == Outcome(error="NullReferenceException: boom") and (case, counts) == (9.0, (1, 0, 5.0))
+    assert o == Outcome(error="NullReferenceException: boom") and (case, counts) == (9.0, (1, 0, 5.0, 2.5))
 
 
 def test_packing_is_deterministic_and_shares_the_height_table_bytes():
