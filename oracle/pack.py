@@ -13,7 +13,7 @@ from dataclasses import fields
 from ..flags import TransientState
 from ..outcome import ContactPlaneState, NormalState, Outcome
 from ..scene import BSPLeaf, CylSphereShape, Landblock, Scene, SphereShape
-from ..staging import mover_setup_dims, shadow_cells
+from ..staging import MOVER_ID, mover_setup_dims, shadow_cells
 
 PACK_VERSION = 3
 SHAPE_KIND = {"sphere": 0, "cylsphere": 1, "bsp": 2}
@@ -89,7 +89,7 @@ def _object(o, ids) -> bytes:
 
 
 _HEAD = struct.Struct("<iB")
-_MOVER = struct.Struct("<5fII3fBI4fB3f" + _POS + _POS)
+_MOVER = struct.Struct("<I5fII3fBI4fB3f" + _POS + _POS)
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -110,7 +110,7 @@ def pack_scene(scene: Scene) -> bytes:
     cpv = (0, 0, 0.0, 0.0, 0.0, 0.0) if cp is None else (1, cp.cell, *cp.plane.normal, cp.plane.d)
     sn = m.sliding_normal
     snv = (0, 0.0, 0.0, 0.0) if sn is None else (1, *sn)
-    out.append(_MOVER.pack(height, radius, m.step_up_height, m.step_down_height, m.scale, m.state, m.transient_state,
+    out.append(_MOVER.pack(MOVER_ID, height, radius, m.step_up_height, m.step_down_height, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end)))
     return b"".join(out)
 

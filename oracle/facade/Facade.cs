@@ -38,7 +38,6 @@ namespace Acconform.Oracle
     public static class Facade
     {
         public const int PackVersion = 3;
-        public const uint MoverId = 0x50000001;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's shadow objects, which are removed after each scene.</summary>
@@ -614,6 +613,7 @@ namespace Acconform.Oracle
             var n = r.ReadInt32();
             var spheres = new List<Vector4>(n);
             for (var k = 0; k < n; k++) { var c = V3(r); spheres.Add(new Vector4(c, r.ReadSingle())); }
+            var moverId = r.ReadUInt32();  // acconform.staging.MOVER_ID
             var height = r.ReadSingle();
             var radius = r.ReadSingle();
             var stepUp = r.ReadSingle();
@@ -632,7 +632,7 @@ namespace Acconform.Oracle
             var end = Pos(r);
 
             var obj = new PhysicsObj();
-            obj.ID = MoverId;
+            obj.ID = moverId;
             var setup = MakeSetup(spheres, new List<Vector3>(), new List<Vector2>(), height, radius, stepUp, stepDown, spheres[0]);
             obj.PartArray = MakePartArray(obj, setup);
             obj.SetScaleStatic(scale);
