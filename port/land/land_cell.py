@@ -1,17 +1,16 @@
-"""LandCell: find_terrain_poly, point_in_cell, add_all_outside_cells, add_outside_cell, check_add_cell_boundary, add_cell_block (plus the ObjCell/SortCell fields it carries).
+"""LandCell: find_terrain_poly, point_in_cell, FindCollisions, FindEnvCollisions, find_transit_cells, handle_move_restriction, add_all_outside_cells, add_outside_cell, check_add_cell_boundary, add_cell_block.
 
-ACE's Common/LandCell.cs. ACE's LandCell derives from SortCell -> ObjCell -> PartCell; here it is
-a plain class holding the fields of those that LandCell uses (the transition engineer may make
-it subclass ObjCell). The collision entry points FindCollisions, FindEnvCollisions and
-find_transit_cells, and handle_move_restriction, belong to the transition code: they read
-`polygons`, `water_type`, `cur_landblock`, `building`, `id` and `pos` from here and call
-`find_terrain_poly`. The static helpers take the run's LScape as their first argument where
-ACE reaches the static LScape. add_all_outside_cells(numParts, parts, ...) (the static-object
-overload, which needs BBox and PhysicsPart) is not ported.
+ACE's Common/LandCell.cs. ACE's LandCell derives from SortCell -> ObjCell -> PartCell; here it
+derives from ObjCell (obj_cell.py, which holds SortCell's two overrides too) and carries the
+fields of those classes that LandCell uses. FindEnvCollisions tests sphere 0 only (its low point
+picks the triangle) against the terrain. The static helpers take the run's LScape as their first
+argument where ACE reaches the static LScape. add_all_outside_cells(numParts, parts, ...) (the
+static-object overload, which needs BBox and PhysicsPart) is not ported.
 """
 
 from __future__ import annotations
 
+from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
@@ -19,13 +18,14 @@ from acconform.port.frame import AFrame, Position
 from acconform.port.geom.polygon import Polygon, Sidedness
 from acconform.port.land import land_defs
 from acconform.port.land.land_defs import WaterType
+from acconform.port.land.obj_cell import ObjCell
 
 
-class LandCell:
+class LandCell(ObjCell):
     """One 24 m outdoor cell: two terrain triangles and the ObjCell state the physics reads."""
 
     __slots__ = (
-        "id", "water_type", "pos", "object_list", "shadow_object_list", "restriction_obj",
+        "water_type", "pos", "object_list", "shadow_object_list", "restriction_obj",
         "cur_landblock", "building", "polygons", "in_view", "seen_outside", "voyeur_table",
     )
 
@@ -65,6 +65,72 @@ class LandCell:
     def point_in_cell(self, point: Vector3) -> bool:
         found, _ = self.find_terrain_poly(point, None)
         return found
+
+    @anchor("CLandCell::find_collisions", "LandCell.cs:FindCollisions")
+    def find_collisions(self, transition) -> TransitionState:
+        transit_state = self.find_env_collisions(transition)
+        if transit_state == TransitionState.OK:
+            transit_state = self.sort_cell_find_collisions(transition)  # base.FindCollisions (SortCell)
+            if transit_state == TransitionState.OK:
+                transit_state = self.find_obj_collisions(transition)
+        return transit_state
+
+
+    @anchor("CLandCell::find_env_collisions", "LandCell.cs:FindEnvCollisions")
+    def find_env_collisions(self, transition) -> TransitionState:
+        transit_state = self.check_entry_restrictions(transition)
+        if transit_state != TransitionState.OK:
+            return transit_state
+
+        path = transition.sphere_path
+        block_offset = land_defs.get_block_offset(path.check_pos.obj_cell_id, self.id)
+        local_point = transition.sphere_path.global_low_point - block_offset
+
+        found, walkable = self.find_terrain_poly(local_point, None)
+        if not found:
+            return transit_state
+
+        obj_info = transition.object_info
+        if (self.get_block_water_type() == WaterType.EntirelyWater
+                and not obj_info.state & ObjectInfoState.IsViewer and not obj_info.object.state & PhysicsState.Missile):
+            if transition.trace is not None:
+                transition.trace["land_cell:entirely_water_block"] += 1
+            return TransitionState.Collided
+
+        water_depth = self.get_water_depth(local_point)
+
+        from ..geom.sphere import Sphere
+
+        check_pos = Sphere(path.global_sphere[0].center, path.global_sphere[0].radius)
+        check_pos.center = check_pos.center - land_defs.get_block_offset(path.check_pos.obj_cell_id, self.id)
+
+        return obj_info.validate_walkable(check_pos, walkable.plane, self.water_type != WaterType.NotWater,
+                                          water_depth, transition, self.id)
+
+
+    @anchor("CLandCell::find_transit_cells", "LandCell.cs:find_transit_cells")
+    def find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
+        """The run's world `lscape` comes first, standing in for ACE's static LScape."""
+        add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
+        self.sort_cell_find_transit_cells(lscape, position, num_sphere, spheres, cell_array, path)
+
+
+    @anchor("CLandCell::handle_move_restriction", "LandCell.cs:handle_move_restriction")
+    def handle_move_restriction(self, transition) -> bool:
+        offset = self.pos.get_offset(transition.sphere_path.cur_pos)
+        s = type(offset.x)
+        half = land_defs.HALF_SQUARE_LENGTH
+        if offset.y >= -half:
+            if offset.y <= half:
+                offset = offset.with_y(s(0.0))
+                offset = offset.with_x(s(-1.0) if offset.x < -half else s(1.0))
+            else:
+                offset = Vector3(s(0.0), s(1.0), offset.z)
+        else:
+            offset = Vector3(s(0.0), s(-1.0), offset.z)
+        normal = Vector3(offset.x, offset.y, s(0.0))
+        transition.collision_info.set_collision_normal(normal)
+        return True
 
     @anchor("CObjCell::get_block_water_type", "ObjCell.cs:get_block_water_type")
     def get_block_water_type(self) -> WaterType:

@@ -1,7 +1,7 @@
 """ObjCell and SortCell: AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells, point_in_cell, Equals, find_cell_list (the sphere overloads), GetVisible.
 
 ACE's Common/ObjCell.cs and Common/SortCell.cs: the base behaviour every cell has. LandCell
-(land_cell.py) carries the fields; land_cell_collision.py gives it these methods and its own
+(land_cell.py) derives from ObjCell, carries the fields and overrides what ACE's LandCell
 overrides. `EMPTY_CELL` is ACE's ObjCell.EmptyCell (id 0, FindCollisions -> Invalid), which
 CheckOtherCells passes in as the "find me a current cell" marker.
 
@@ -16,7 +16,6 @@ from acconform.flags import PhysicsState, TransitionState
 
 from ..anchors import anchor
 from . import land_defs
-from .land_cell import add_all_outside_cells_replayed
 
 
 class ObjCell:
@@ -115,6 +114,9 @@ class ObjCell:
 # ObjCell.EmptyCell
 EMPTY_CELL = ObjCell()
 
+# land_cell's LandCell derives from ObjCell, so land_cell is imported once ObjCell exists
+from . import land_cell  # noqa: E402
+
 
 @anchor("CObjCell::GetVisible", "ObjCell.cs:GetVisible")
 def get_visible(lscape, cell_id: int):
@@ -133,7 +135,7 @@ def find_cell_list(lscape, position, num_sphere: int, spheres: list, cell_array,
 
     if (position.obj_cell_id & 0xFFFF) >= 0x100:
         raise NotImplementedError("indoor cells (EnvCells) are not supported")
-    add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
+    land_cell.add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
 
     if visible_cell is not None and num_sphere != 0:
         i = 0

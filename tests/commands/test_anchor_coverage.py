@@ -42,16 +42,16 @@ def test_unreached_anchors_are_listed_with_zero_calls_and_a_summary(terrain_scen
 
 
 def test_counting_restores_every_wrapped_function_afterwards(terrain_scene):
-    from acconform.port.land import land_cell, land_cell_collision
+    from acconform.port.land import land_cell, obj_cell
     from acconform.port.land.land_cell import LandCell
     from acconform.port.transition.transition import Transition
 
     before = (Transition.__dict__["find_valid_position"], LandCell.__dict__["find_collisions"],
-              land_cell.__dict__["add_all_outside_cells"], land_cell_collision.__dict__["find_collisions"])
+              land_cell.__dict__["add_all_outside_cells"], obj_cell.ObjCell.__dict__["find_collisions"])
     with counting_anchors():
         assert Transition.__dict__["find_valid_position"] is not before[0]
     after = (Transition.__dict__["find_valid_position"], LandCell.__dict__["find_collisions"],
-             land_cell.__dict__["add_all_outside_cells"], land_cell_collision.__dict__["find_collisions"])
+             land_cell.__dict__["add_all_outside_cells"], obj_cell.ObjCell.__dict__["find_collisions"])
     assert all(a is b for a, b in zip(before, after))
 
 

@@ -56,7 +56,7 @@ def test_the_audit_sees_module_functions_methods_and_setattr_attached_methods():
     assert "acconform.port.land.land_defs.gid_to_lcoord" in keys
     assert "acconform.port.transition.transition.Transition.edge_slide" in keys
     assert "acconform.port.land.obj_cell.ObjCell.equals" in keys  # also LandCell.equals (setattr)
-    assert "acconform.port.land.land_cell_collision.find_collisions" in keys  # LandCell.find_collisions
+    assert "acconform.port.land.land_cell.LandCell.find_collisions" in keys
     assert len(keys) > 250
 
 
