@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 
 from acconform.errors import AcconformError
 
+from .draws import OneOf
 from .scenes import scenes_of
 
 ALL_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
@@ -44,7 +45,7 @@ def scenes(kinds=None) -> st.SearchStrategy:
     kinds = check_kinds(kinds)
     if len(kinds) == 1:
         return scenes_of(kinds[0])
-    return st.one_of(*(scenes_of(k) for k in kinds))
+    return OneOf(*(scenes_of(k) for k in kinds)).strategy  # st.one_of's draw, built once
 
 
 def sample_scenes(kinds: tuple[str, ...] | None, n: int, seed: int) -> Iterator:

@@ -15,6 +15,10 @@ the branch it aims at needs (the scatter policy in scenes.py places objects alon
 
 BSP objects get ``Static|HasPhysicsBSP`` (what ACE's makeObject leaves via CacheHasPhysicsBSP),
 now and then with Ethereal (and IgnoreCollisions), or ``Static`` alone (walked through).
+
+What a policy draws from is a module constant (strategies/draws.py says why); a one_of with a
+branch that depends on the mover or the ledge (a ledge r or 2r high, a step-down around the
+drop) is drawn with draws.one_of, its dependent branch built only when it is chosen.
 """
 
 from __future__ import annotations
@@ -26,6 +30,7 @@ from hypothesis import strategies as st
 from acconform.flags import PhysicsState, TransientState
 from acconform.numerics import to_f32
 
+from . import draws as dr
 from . import shapes as sh
 
 BSP_STATE = int(PhysicsState.Static | PhysicsState.HasPhysicsBSP)
@@ -37,17 +42,20 @@ BSP_STATES = st.sampled_from(
 
 EPS = to_f32(0.0002)  # PhysicsGlobals.EPSILON
 # how far above a plane the mover's sphere starts: exactly on it, EPSILON either side, an ulp
-PLANE_DZ = st.one_of(st.just(0.0), st.just(0.0), st.sampled_from((EPS, -EPS, EPS / 2, -EPS / 2, 2 * EPS, 1e-6, -1e-6)))
+PLANE_DZ = dr.OneOf(st.just(0.0), st.just(0.0), st.sampled_from((EPS, -EPS, EPS / 2, -EPS / 2, 2 * EPS, 1e-6, -1e-6)))
 
-EDGE_ANGLES = st.one_of(st.sampled_from((0.0, 0.0, 15.0, -15.0, 30.0, -30.0, 45.0, -45.0, 60.0, -60.0, 80.0, -80.0,
-                                         89.0, -89.0, 90.0)), st.floats(-89.9, 89.9))
-WALL_ANGLES = st.one_of(st.sampled_from((0.0, 20.0, 45.0, 70.0, 80.0, 85.0, 88.0, 89.0, 89.5)), st.floats(0.0, 89.5))
-YAWS = st.one_of(st.sampled_from((0.0, 0.0, 90.0, 30.0, 45.0, 180.0)), st.floats(0.0, 359.0))
-LIP_FACTORS = st.one_of(st.sampled_from((0.5, 0.9, 1.0, 1.001, 1.25, 1.4, 1.5, 1.6, 2.0)), st.floats(1.2, 1.8))
+EDGE_ANGLES = dr.OneOf(st.sampled_from((0.0, 0.0, 15.0, -15.0, 30.0, -30.0, 45.0, -45.0, 60.0, -60.0, 80.0, -80.0,
+                                        89.0, -89.0, 90.0)), dr.floats(-89.9, 89.9))
+WALL_ANGLES = dr.OneOf(st.sampled_from((0.0, 20.0, 45.0, 70.0, 80.0, 85.0, 88.0, 89.0, 89.5)), dr.floats(0.0, 89.5))
+YAWS = dr.OneOf(st.sampled_from((0.0, 0.0, 90.0, 30.0, 45.0, 180.0)), dr.floats(0.0, 359.0))
+LIP_FACTORS = dr.OneOf(st.sampled_from((0.5, 0.9, 1.0, 1.001, 1.25, 1.4, 1.5, 1.6, 2.0)), dr.floats(1.2, 1.8))
 # the mover's velocity: at rest first (shrinking goes there); now and then falling (keeps contact),
 # rising (leaves the contact plane: get_object_info's leaving_contact) or anything. Drawn by
 # sampled_from, whose generation is close to uniform over its entries (one_of's is not).
 VELOCITY_KINDS = st.sampled_from(("rest",) * 16 + ("falling", "rising", "any"))
+FALLING = st.sampled_from((-1.0, -10.0))
+RISING = st.sampled_from((0.5, 4.0, to_f32(1e-3)))
+ANY_VELOCITY = dr.eager(st.tuples(sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0)))
 
 
 @st.composite
@@ -56,14 +64,19 @@ def velocities(draw):
     if how == "rest":
         return (0.0, 0.0, 0.0)
     if how == "falling":
-        return (0.0, 0.0, draw(st.sampled_from((-1.0, -10.0))))
+        return (0.0, 0.0, draw(FALLING))
     if how == "rising":
-        return (0.0, 0.0, draw(st.sampled_from((0.5, 4.0, to_f32(1e-3)))))
-    return draw(st.tuples(sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0), sh.f32s(-5.0, 5.0)))
+        return (0.0, 0.0, draw(RISING))
+    return draw(ANY_VELOCITY)
 
 
-VELOCITIES = velocities()
-STEP_UPS = st.one_of(st.sampled_from((0.4, 0.4, 0.4, 0.25, 0.3, 0.5, 0.6, 1.0)), sh.f32s(0.1, 1.2))
+VELOCITIES = dr.eager(velocities())
+STEP_UPS = dr.OneOf(st.sampled_from((0.4, 0.4, 0.4, 0.25, 0.3, 0.5, 0.6, 1.0)), dr.f32(0.1, 1.2))
+
+
+def radius_to_diameter(r: float):
+    """A one_of branch (draws.one_of): a float32 in [r, 2r], its strategy built only when chosen."""
+    return lambda draw: draw(sh.f32s(r, 2 * r))
 
 
 def _rot(theta_deg: float, x: float, y: float) -> tuple[float, float]:
@@ -100,39 +113,59 @@ class Plan:
 # - drop: step-down a little more than the drop (drop in (2/3, 1] of it), which a two-sphere mover
 #   takes as two half step-downs (transitional_insert:step_down_halves).
 LEDGE_VARIANTS = st.sampled_from(("walk_off", "back_probe", "back_probe", "shared_edge", "drop"))
-PROBE_ANGLES = st.one_of(st.sampled_from((0.0, 15.0, -15.0, 30.0, -30.0, 45.0, -45.0)), st.floats(-50.0, 50.0))
-LEDGE_HEIGHTS = st.one_of(st.sampled_from(sh.STEP_SIZES), sh.f32s(0.05, 3.0))
+PROBE_ANGLES = dr.OneOf(st.sampled_from((0.0, 15.0, -15.0, 30.0, -30.0, 45.0, -45.0)), dr.floats(-50.0, 50.0))
+LEDGE_HEIGHTS = dr.OneOf(sh.STEPS, dr.f32(0.05, 3.0))
+PROBE_HEIGHTS = dr.f32(0.5, 3.0)
+DROP_FACTORS = dr.OneOf(st.sampled_from((1.25, 1.5, 2.0)), dr.f32(1.05, 3.0))
+TOP_SIDES = dr.f32(1.0, 10.0)
+ONE_IN_FOUR = st.sampled_from((False, False, False, True))
+EDGES = st.sampled_from(((1, 0), (-1, 0), (0, 1), (0, -1)))
+ALONG_EDGE = dr.OneOf(dr.floats(-0.9, 0.9), st.sampled_from((0.0, 1.0, -1.0, 0.99, -0.99)))
+PROBE_INSIDE = dr.OneOf(st.sampled_from((0.5, 0.9, 1.2)), dr.floats(0.4, 1.5))
+INSIDE = dr.OneOf(st.sampled_from((0.0, 0.0, 0.5, 1.0, 0.01)), dr.floats(0.0, 2.0))
+SECOND_WIDTHS = dr.f32(0.5, 6.0)
+PROBE_STEPS = dr.OneOf(st.sampled_from((1.0, 1.5, 2.0)), dr.f32(0.8, 2.5))
+ON_TOP = st.sampled_from((0.0, 0.0, EPS / 2))
+PROBE_DOWN = dr.OneOf(st.sampled_from((0.5, 0.25, 0.9)), dr.f32(0.05, 0.95))
+WALK_STEPS = dr.OneOf(st.sampled_from((0.2, 0.5, 1.0, 1.5, 2.0, 3.0)), dr.f32(0.05, 6.0))
+EDGE_SLIDE = st.sampled_from((True, True, False, True))
+DROP_DOWN = dr.OneOf(st.sampled_from((1.2, 1.01, 1.45)), dr.f32(1.0, 1.49))
+COMMON_DOWN = st.sampled_from((to_f32(0.4), to_f32(1.0), to_f32(2.0)))
+# one_ofs with a branch that depends on the mover or the ledge (draws.one_of)
+LEDGE_HEIGHT_SITE, PROBE_HEIGHT_SITE = dr.Site("ledge height"), dr.Site("back-probe ledge height")
+LEDGE_DOWN_SITE = dr.Site("ledge step-down")
 
 
 @st.composite
 def ledge(draw, gx: float, gy: float, r: float) -> Plan:
     p = Plan()
     variant = draw(LEDGE_VARIANTS)
-    sx, sy = draw(sh.f32s(1.0, 10.0)), draw(sh.f32s(1.0, 10.0))
+    sx, sy = draw(TOP_SIDES), draw(TOP_SIDES)
     if variant == "walk_off" or variant == "shared_edge":
-        h = draw(st.one_of(LEDGE_HEIGHTS, st.sampled_from((to_f32(r), to_f32(2 * r)))))
+        h = dr.one_of(draw, LEDGE_HEIGHT_SITE, LEDGE_HEIGHTS, lambda d: d(st.sampled_from((to_f32(r), to_f32(2 * r)))))
     elif variant == "back_probe":
-        h = draw(st.one_of(st.sampled_from((to_f32(1.0), to_f32(0.5), to_f32(2 * r))), sh.f32s(0.5, 3.0)))
+        h = dr.one_of(draw, PROBE_HEIGHT_SITE, lambda d: d(st.sampled_from((to_f32(1.0), to_f32(0.5), to_f32(2 * r)))),
+                      PROBE_HEIGHTS)
     else:  # drop: above 2r, so a two-sphere mover halves its step-down
-        h = to_f32(2 * r * draw(st.one_of(st.sampled_from((1.25, 1.5, 2.0)), sh.f32s(1.05, 3.0))))
-    yaw = draw(YAWS)
-    if variant != "back_probe" and draw(st.sampled_from((False, False, False, True))):
+        h = to_f32(2 * r * dr.take(draw, DROP_FACTORS))
+    yaw = dr.take(draw, YAWS)
+    if variant != "back_probe" and draw(ONE_IN_FOUR):
         # the top as one two-sided polygon, wound either way (a crossed edge's normal may point in)
         quad = [(-sx / 2, -sy / 2, h), (sx / 2, -sy / 2, h), (sx / 2, sy / 2, h), (-sx / 2, sy / 2, h)]
-        if draw(st.booleans()):
+        if draw(dr.BOOLEANS):
             quad.reverse()
         top = sh.polygon_shape(quad)
     else:
         top = sh.box(sx, sy, h)
     # the edge to walk off (local outward normal), where along it, and how far inside it to start
-    ex, ey = draw(st.sampled_from(((1, 0), (-1, 0), (0, 1), (0, -1))))
+    ex, ey = draw(EDGES)
     half_n, half_t = (sx / 2, sy / 2) if ex else (sy / 2, sx / 2)
-    along = draw(st.one_of(st.floats(-0.9, 0.9), st.sampled_from((0.0, 1.0, -1.0, 0.99, -0.99)))) * half_t
+    along = dr.take(draw, ALONG_EDGE) * half_t
     if variant == "back_probe":
         # a step on the top first (step_down:ok), then the next one's centre is past the edge
-        inside = draw(st.one_of(st.sampled_from((0.5, 0.9, 1.2)), st.floats(0.4, 1.5))) * r
+        inside = dr.take(draw, PROBE_INSIDE) * r
     else:
-        inside = draw(st.one_of(st.sampled_from((0.0, 0.0, 0.5, 1.0, 0.01)), st.floats(0.0, 2.0))) * r
+        inside = dr.take(draw, INSIDE) * r
     inside = min(inside, half_n * 2 * 0.95)
     d = half_n - inside  # local distance of the start from the centre, along the outward normal
     lx, ly = (ex * d, along) if ex else (along, ey * d)
@@ -141,35 +174,36 @@ def ledge(draw, gx: float, gy: float, r: float) -> Plan:
     p.objects.append((top, gx - ox, gy - oy, yaw, state))
     if variant == "shared_edge":
         # a second platform sharing the edge: the path crosses a polygon edge between two tops
-        h2 = draw(st.sampled_from((h, h, to_f32(h - 0.01), to_f32(h * 0.5), to_f32(h + 0.1), to_f32(max(h - 0.2, 0.05)))))
+        h2 = draw(st.sampled_from((h, h, to_f32(h - 0.01), to_f32(h * 0.5), to_f32(h + 0.1),
+                                   to_f32(max(h - 0.2, 0.05)))))
         h2 = max(h2, to_f32(0.02))
-        w2 = draw(sh.f32s(0.5, 6.0))
+        w2 = draw(SECOND_WIDTHS)
         cx, cy = (ex * (half_n + w2 / 2), 0.0) if ex else (0.0, ey * (half_n + w2 / 2))
         b2 = sh.box(w2, 2 * half_t, h2) if ex else sh.box(2 * half_t, w2, h2)
         c2x, c2y = _rot(yaw, cx, cy)
         p.objects.append((b2, gx - ox + c2x, gy - oy + c2y, yaw, BSP_STATE))
         p.steps.append(h2)
     out = math.degrees(math.atan2(ey, ex)) + yaw
-    p.heading = out + draw(PROBE_ANGLES if variant == "back_probe" else EDGE_ANGLES)
+    p.heading = out + dr.take(draw, PROBE_ANGLES if variant == "back_probe" else EDGE_ANGLES)
     p.begin = (gx, gy)
     if variant == "back_probe":
         # past the edge within one or two steps (a step is one radius)
-        p.length = to_f32(inside + r * draw(st.one_of(st.sampled_from((1.0, 1.5, 2.0)), sh.f32s(0.8, 2.5))))
+        p.length = to_f32(inside + r * dr.take(draw, PROBE_STEPS))
         p.edge_slide = True
         p.velocity = (0.0, 0.0, 0.0)
         # on the top or just above it: a sphere sunk into the top keeps the polygon as walkable
         # (edge_slide:precipice_slide at once) and a lone two-sided polygon top is never found again
-        p.plane_dz = draw(st.sampled_from((0.0, 0.0, EPS / 2)))
-        p.step_down = to_f32(h * draw(st.one_of(st.sampled_from((0.5, 0.25, 0.9)), sh.f32s(0.05, 0.95))))
+        p.plane_dz = draw(ON_TOP)
+        p.step_down = to_f32(h * dr.take(draw, PROBE_DOWN))
     else:
-        p.length = to_f32(inside + r * draw(st.one_of(st.sampled_from((0.2, 0.5, 1.0, 1.5, 2.0, 3.0)),
-                                                      sh.f32s(0.05, 6.0))))
-        p.edge_slide = draw(st.sampled_from((True, True, False, True)))
+        p.length = to_f32(inside + r * dr.take(draw, WALK_STEPS))
+        p.edge_slide = draw(EDGE_SLIDE)
         if variant == "drop":
-            p.step_down = to_f32(h * draw(st.one_of(st.sampled_from((1.2, 1.01, 1.45)), sh.f32s(1.0, 1.49))))
+            p.step_down = to_f32(h * dr.take(draw, DROP_DOWN))
         else:
-            p.step_down = draw(st.one_of(st.sampled_from((to_f32(h - 0.01), h, to_f32(h + 0.01))), sh.f32s(r, 2 * r),
-                                         st.sampled_from((to_f32(0.4), to_f32(1.0), to_f32(2.0)))))
+            around_h = (to_f32(h - 0.01), h, to_f32(h + 0.01))
+            p.step_down = dr.one_of(draw, LEDGE_DOWN_SITE, lambda d: d(st.sampled_from(around_h)),
+                                    radius_to_diameter(r), COMMON_DOWN)
     p.step_down = max(p.step_down, 0.0)
     p.stand_on = h
     p.steps.append(h)
@@ -177,56 +211,78 @@ def ledge(draw, gx: float, gy: float, r: float) -> Plan:
     return p
 
 
+STAIR_COUNTS = st.sampled_from((1, 1, 2, 3))
+TREADS = dr.OneOf(st.sampled_from((0.3, 0.5, 1.0, 2.0)), dr.f32(0.2, 3.0))
+STAIR_WIDTHS = dr.f32(1.5, 8.0)
+STAIR_GAPS = dr.OneOf(st.sampled_from((0.0, 0.001, 0.5, 1.0)), dr.floats(0.0, 3.0))
+ACROSS = dr.floats(-0.8, 0.8)
+STAIR_HEADINGS = st.sampled_from((0.0, 0.0, 10.0, -10.0, 30.0, -30.0, 45.0, 60.0, -70.0))
+STAIR_PATHS = st.sampled_from((0.5, 1.0, 1.0, 1.5))
+
+
 @st.composite
 def stairs(draw, gx: float, gy: float, r: float) -> Plan:
     p = Plan()
-    up = draw(STEP_UPS)
-    rise = to_f32(up * draw(LIP_FACTORS))
-    n = draw(st.sampled_from((1, 1, 2, 3)))
-    w = draw(st.one_of(st.sampled_from((0.3, 0.5, 1.0, 2.0)), sh.f32s(0.2, 3.0)))
-    wy = draw(sh.f32s(1.5, 8.0))
-    yaw = draw(YAWS)
-    gap = draw(st.one_of(st.sampled_from((0.0, 0.001, 0.5, 1.0)), st.floats(0.0, 3.0))) * r
+    up = dr.take(draw, STEP_UPS)
+    rise = to_f32(up * dr.take(draw, LIP_FACTORS))
+    n = draw(STAIR_COUNTS)
+    w = dr.take(draw, TREADS)
+    wy = draw(STAIR_WIDTHS)
+    yaw = dr.take(draw, YAWS)
+    gap = dr.take(draw, STAIR_GAPS) * r
     # stair frame: the first riser at x = 0 facing -x; the mover starts at x = -(r + gap)
-    across = draw(st.floats(-0.8, 0.8)) * wy / 2
+    across = draw(ACROSS) * wy / 2
     sx0, sy0 = -(r + gap), across
     for k in range(n):
         shape = sh.box(w, wy, to_f32(rise * (k + 1)))
         cx, cy = _rot(yaw, k * w + w / 2 - sx0, -sy0)
         p.objects.append((shape, gx + cx, gy + cy, yaw, draw(BSP_STATES) if k == 0 else BSP_STATE))
-    p.heading = yaw + draw(st.sampled_from((0.0, 0.0, 10.0, -10.0, 30.0, -30.0, 45.0, 60.0, -70.0)))
+    p.heading = yaw + draw(STAIR_HEADINGS)
     p.begin = (gx, gy)
-    p.length = to_f32(gap + r + w * n * draw(st.sampled_from((0.5, 1.0, 1.0, 1.5))))
+    p.length = to_f32(gap + r + w * n * draw(STAIR_PATHS))
     p.step_up = to_f32(up)
-    p.edge_slide = draw(st.sampled_from((True, True, False, True)))
+    p.edge_slide = draw(EDGE_SLIDE)
     p.steps += [rise, to_f32(up)]
     p.label = "stairs"
     return p
 
 
+WALL_THICKNESS, WALL_LENGTHS = dr.f32(0.1, 1.0), dr.f32(2.0, 12.0)
+WALL_HEIGHTS = dr.OneOf(dr.f32(1.0, 6.0), dr.f32(0.2, 1.0))
+WALL_GAPS = dr.OneOf(st.sampled_from((0.0, 0.001, 0.5)), dr.floats(0.0, 3.0))
+SIGNS = st.sampled_from((1, -1))
+WALL_ALONG = dr.floats(-0.45, 0.45)
+CORNER_ALONG = dr.floats(0.5, 3.0)
+CORNERS = st.sampled_from((False, False, True, False))
+ONE_IN_THREE = st.sampled_from((False, False, True))
+SECOND_WALLS = dr.f32(2.0, 8.0)
+WALL_PATHS = st.sampled_from((0.5, 1.0, 2.0, 4.0))
+AIRBORNE = st.sampled_from((0.0, 0.0, 0.0, 0.5, 2.0))
+
+
 @st.composite
 def wall(draw, gx: float, gy: float, r: float) -> Plan:
     p = Plan()
-    t = draw(sh.f32s(0.1, 1.0))
-    length = draw(sh.f32s(2.0, 12.0))
-    height = draw(st.one_of(sh.f32s(1.0, 6.0), sh.f32s(0.2, 1.0)))
-    yaw = draw(YAWS)
-    gap = draw(st.one_of(st.sampled_from((0.0, 0.001, 0.5)), st.floats(0.0, 3.0))) * r
-    inc = draw(WALL_ANGLES) * draw(st.sampled_from((1, -1)))
-    corner = draw(st.sampled_from((False, False, True, False)))
+    t = draw(WALL_THICKNESS)
+    length = draw(WALL_LENGTHS)
+    height = dr.take(draw, WALL_HEIGHTS)
+    yaw = dr.take(draw, YAWS)
+    gap = dr.take(draw, WALL_GAPS) * r
+    inc = dr.take(draw, WALL_ANGLES) * draw(SIGNS)
+    corner = draw(CORNERS)
     # wall frame: the wall's face at x = 0 facing -x, centre at x = t/2; the mover at x = -(r + gap)
-    along = draw(st.floats(-0.45, 0.45)) * length
+    along = draw(WALL_ALONG) * length
     if corner:
-        along = length / 2 - draw(st.floats(0.5, 3.0)) * r  # near the far end, where a second wall closes it
+        along = length / 2 - draw(CORNER_ALONG) * r  # near the far end, where a second wall closes it
         inc = abs(inc) * 0.5 + 20.0
     sx0, sy0 = -(r + gap), along
     cx, cy = _rot(yaw, t / 2 - sx0, -sy0)
     state = draw(BSP_STATES)
-    if draw(st.sampled_from((False, False, True))):
+    if draw(ONE_IN_THREE):
         # a lone two-sided polygon (sides None), faced either way: hit from behind it is a neg-poly hit
         y0, y1 = -length / 2, length / 2
         quad = [(0.0, y0, 0.0), (0.0, y1, 0.0), (0.0, y1, height), (0.0, y0, height)]
-        if draw(st.booleans()):
+        if draw(dr.BOOLEANS):
             quad.reverse()
         cx, cy = _rot(yaw, -sx0, -sy0)
         p.objects.append((sh.polygon_shape(quad), gx + cx, gy + cy, yaw, state))
@@ -234,20 +290,22 @@ def wall(draw, gx: float, gy: float, r: float) -> Plan:
         p.objects.append((sh.box(t, length, height), gx + cx, gy + cy, yaw, state))
     if corner:
         # the second wall along x at y = length/2, facing -y, reaching back past the mover
-        l2 = draw(sh.f32s(2.0, 8.0))
+        l2 = draw(SECOND_WALLS)
         c2x, c2y = _rot(yaw, -l2 / 2 + t - sx0, length / 2 + t / 2 - sy0)
         p.objects.append((sh.box(l2, t, height), gx + c2x, gy + c2y, yaw, BSP_STATE))
     p.heading = yaw + inc
     p.begin = (gx, gy)
     cos = max(math.cos(math.radians(inc)), 0.05)
-    p.length = to_f32(min((gap + r * draw(st.sampled_from((0.5, 1.0, 2.0, 4.0)))) / cos, 40 * r))
-    p.airborne = draw(st.sampled_from((0.0, 0.0, 0.0, 0.5, 2.0)))
-    p.edge_slide = draw(st.sampled_from((True, True, False, True)))
+    p.length = to_f32(min((gap + r * draw(WALL_PATHS)) / cos, 40 * r))
+    p.airborne = draw(AIRBORNE)
+    p.edge_slide = draw(EDGE_SLIDE)
     p.steps.append(height)
     p.label = "corner" if corner else "wall"
     return p
 
 
+# a policy: (global x, global y, mover radius) -> a strategy of Plans (built per scene: a policy
+# depends on the mover; it costs little next to the span of its own it gives the shrinker)
 POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall}
 
 

@@ -19,6 +19,7 @@ from acconform.scene import (IDENTITY, ContactPlane, Frame, Mover, PlaneRec, Pos
 
 from acconform import staging
 
+from . import draws as dr
 from . import objects as ob
 from . import shapes as sh
 from . import terrain as tr
@@ -82,26 +83,39 @@ class _World:
         return any(tr.is_water_word(lb.terrain[(cx + i) * 9 + cy + j]) for i in (0, 1) for j in (0, 1))
 
 
+SPHERE_RADII = dr.OneOf(st.sampled_from(RADII), dr.f32(0.1, 1.5))
+HEAD_HEIGHTS = st.sampled_from((1.0, 1.6, 2.0, 0.5))
+
+
 @st.composite
 def movers_spheres(draw):
-    r = draw(st.one_of(st.sampled_from(RADII), sh.f32s(0.1, 1.5)))
+    r = dr.take(draw, SPHERE_RADII)
     spheres = [SphereRec((0.0, 0.0, r), r)]
-    if draw(st.booleans()):
-        h = to_f32(r + r * draw(st.sampled_from((1.0, 1.6, 2.0, 0.5))))
+    if draw(dr.BOOLEANS):
+        h = to_f32(r + r * draw(HEAD_HEIGHTS))
         spheres.append(SphereRec((0.0, 0.0, h), r))
     return tuple(spheres)
 
 
-def step_heights(geometry_steps=()):
-    """Step heights: common values, values just around the geometry's own step sizes, anything."""
-    around = [to_f32(s + d) for s in geometry_steps for d in (-0.01, 0.0, 0.01) if s + d >= 0]
-    opts = [st.sampled_from(STEP_HEIGHTS), sh.f32s(0.0, 2.5)]
-    if around:
-        opts.insert(0, st.sampled_from(around))
-    return st.one_of(*opts)
+MOVER_SPHERES = dr.eager(movers_spheres())
+COMMON_STEPS = st.sampled_from(STEP_HEIGHTS)
+ANY_STEP = dr.f32(0.0, 2.5)
+STEP_UP_SITE, STEP_DOWN_SITE = dr.Site("step-up height"), dr.Site("step-down height")
 
 
-HEADINGS = st.one_of(st.sampled_from((0, 90, 180, 270, 45)), st.integers(0, 359))
+def step_heights(geometry_steps=()) -> tuple:
+    """Step heights, as one_of branches (draws.one_of): values just around the geometry's own
+    step sizes (built only when that branch is drawn), common values, anything."""
+    if not geometry_steps or max(geometry_steps) + 0.01 < 0:  # nothing around them is a height
+        return (COMMON_STEPS, ANY_STEP)
+
+    def around(draw):
+        return draw(st.sampled_from([to_f32(s + d) for s in geometry_steps for d in (-0.01, 0.0, 0.01) if s + d >= 0]))
+
+    return around, COMMON_STEPS, ANY_STEP
+
+
+HEADINGS = dr.OneOf(st.sampled_from((0, 90, 180, 270, 45)), dr.ints(0, 359))
 # the plainest choice first in every sampled_from / one_of: Hypothesis shrinks toward it
 AIMS = st.sampled_from(("any", "feature", "feature", "border"))
 AIMS_WITH_OBJECTS = st.sampled_from(("any", "object", "object", "feature", "border"))
@@ -109,20 +123,25 @@ JITTER = st.sampled_from((0, 0, 0, 5, -5, 30, -30, 60))
 BORDER_JITTER = st.sampled_from((0, 0, 20, -20, 45, -45))
 FINE_JITTER = st.sampled_from((0.0, 0.0, 0.5, 1.0))
 # how far before an edge the path starts, in sphere radii: on it, within a step, a few steps
-GAPS = st.one_of(st.sampled_from((0.0, 0.5, 1.0)), sh.f32s(0.0, 1.0), sh.f32s(1.0, 6.0))
+GAPS = dr.OneOf(st.sampled_from((0.0, 0.5, 1.0)), dr.f32(0.0, 1.0), dr.f32(1.0, 6.0))
 
-PATH_FACTORS = st.one_of(
-    sh.f32s(0.05, 1.0),  # a fraction of one step (one step = sphere radius)
-    sh.f32s(0.001, 0.05),  # a sliver: a step-down from barely above gentle ground overshoots (interp in [-0.1, 0))
+PATH_FACTORS = dr.OneOf(
+    dr.f32(0.05, 1.0),  # a fraction of one step (one step = sphere radius)
+    dr.f32(0.001, 0.05),  # a sliver: a step-down from barely above gentle ground overshoots (interp in [-0.1, 0))
     st.sampled_from((0.0, 1.0, 2.0, 30.0, 31.0, 45.0)),  # standing still; exactly whole steps; past the step cap
-    sh.f32s(1.0, 4.0),
-    sh.f32s(4.0, 25.0),
+    dr.f32(1.0, 4.0),
+    dr.f32(4.0, 25.0),
 )
+CROSSING_FACTORS = dr.OneOf(st.sampled_from((0.5, 1.0, 2.0)), dr.f32(0.05, 4.0))
 
 
-CENTRED = sh.f32s(-95.9, 95.9)
+HOME = dr.eager(tr.landblock_coords(0x02, 0xFC))
+CENTRED = dr.f32(-95.9, 95.9)
 WHERE = st.sampled_from(("any", "any", "border", "corner"))
-NEAR_BORDER = st.one_of(sh.f32s(0.0, 3.0), sh.f32s(189.0, 191.99))
+CROSSING_WHERE = st.sampled_from(("border", "corner"))
+NEAR_BORDER = dr.OneOf(dr.f32(0.0, 3.0), dr.f32(189.0, 191.99))
+QUARTERS = dr.ints(0, 3)
+OBJECT_COUNTS = dr.ints(1, 3)
 
 
 BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter"))
@@ -130,30 +149,43 @@ BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "
 # border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
 TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope"))
 SNAP_END = st.sampled_from((None, None, None, None, "cell", "block"))
+STARTS = st.sampled_from(("ground", "ground", "ground", "air"))
+PLATFORM_OFFSETS = dr.f32(-3.0, 3.0)
+PLATFORM_ANGLES = st.sampled_from((0, 0, 30, 45, 90))
+AIR_HEIGHTS = dr.OneOf(dr.f32(0.001, 0.1), dr.f32(0.1, 6.0))
+END_Z = st.sampled_from(("level", "ground", "fall", "rise"))
+FALLS, RISES, POLICY_FALLS = dr.f32(0.0, 3.0), dr.f32(0.0, 1.0), dr.f32(0.0, 2.0)
+ALONG_PATH = st.sampled_from((0.5, 1.0, 1.0, 1.2))
+SIDEWAYS = st.sampled_from((0.0, 0.0, 0.5, -0.5, 1.0))
+CLEARANCE = st.sampled_from((0.0, 0.5, 1.0))
+OBJECT_ANGLES = st.sampled_from((0, 0, 90, 45, 10, -30))
 
 
 @st.composite
 def scenes_of(draw, kind: str):
-    bx, by = draw(tr.landblock_coords(0x02, 0xFC))
+    return draw_scene(draw, kind)
+
+
+def draw_scene(draw, kind: str) -> Scene:
+    bx, by = draw(HOME)
     crossing = kind == "terrain" and draw(TERRAIN_POLICIES) == "border_slope"
     # start: anywhere in the block, or hugging a border (the neighbour must be defined)
-    where = draw(st.sampled_from(("border", "corner"))) if crossing else draw(WHERE)
+    where = draw(CROSSING_WHERE) if crossing else draw(WHERE)
     if where == "any":
         lx, ly = to_f32(96.0 + draw(CENTRED)), to_f32(96.0 + draw(CENTRED))
     else:
-        near = NEAR_BORDER
-        lx = draw(near)
-        ly = draw(near) if where == "corner" else to_f32(96.0 + draw(CENTRED))
-        if draw(st.booleans()):
+        lx = dr.take(draw, NEAR_BORDER)
+        ly = dr.take(draw, NEAR_BORDER) if where == "corner" else to_f32(96.0 + draw(CENTRED))
+        if draw(dr.BOOLEANS):
             lx, ly = ly, lx
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     vx, vy = round(gx0 / CELL), round(gy0 / CELL)
     policy = draw(BSP_POLICIES) if kind == "bsp" else "scatter"
-    flat = kind != "terrain" and (policy != "scatter" or draw(st.integers(0, 3)) < 3)
-    field = draw(tr.fields_near(vx, vy, flat=flat, tilt=crossing))
+    flat = kind != "terrain" and (policy != "scatter" or draw(QUARTERS) < 3)
+    field = tr.field_near(draw, vx, vy, flat=flat, tilt=crossing)
     world = _World(field)
 
-    spheres = draw(movers_spheres())
+    spheres = draw(MOVER_SPHERES)
     r = spheres[0].radius
     reach = max(s.center[2] + s.radius for s in spheres)
     if policy != "scatter":
@@ -162,46 +194,46 @@ def scenes_of(draw, kind: str):
     # objects go in first (the path may aim at one)
     objects_spec = []
     if kind == "bsp":
-        for _ in range(draw(st.integers(1, 3))):
-            objects_spec.append(draw(sh.bsp_shapes()))
+        for _ in range(draw(OBJECT_COUNTS)):
+            objects_spec.append(draw(sh.BSP_SHAPES))
     elif kind == "obstacles":
-        for _ in range(draw(st.integers(1, 3))):
-            objects_spec.append(("obstacle", draw(st.one_of(sh.spheres_shapes(), sh.cylsphere_shapes())), 0.0))
+        for _ in range(draw(OBJECT_COUNTS)):
+            objects_spec.append(("obstacle", dr.take(draw, sh.OBSTACLE_SHAPES), 0.0))
 
     # path
     aim = "border" if crossing else draw(AIMS_WITH_OBJECTS if objects_spec else AIMS)
     if aim == "feature" and field.features:
         # aim at a feature's edge from a short gap before it, so the path crosses it
-        f = field.features[draw(st.integers(0, len(field.features) - 1))]
-        tx, ty = _feature_target(f, vx, vy, draw(st.booleans()))
+        f = field.features[dr.index(draw, len(field.features))]
+        tx, ty = _feature_target(f, vx, vy, draw(dr.BOOLEANS))
         tx, ty = tx * CELL, ty * CELL
         heading = math.degrees(math.atan2(ty - gy0, tx - gx0)) + draw(JITTER)
-        gap = draw(GAPS) * r
+        gap = dr.take(draw, GAPS) * r
         hr = math.radians(heading)
         gx0 = min(max(tx - gap * math.cos(hr), (bx - 1) * BLOCK + 1.0), (bx + 2) * BLOCK - 1.0)
         gy0 = min(max(ty - gap * math.sin(hr), (by - 1) * BLOCK + 1.0), (by + 2) * BLOCK - 1.0)
         bx, by, lx, ly = split_global(gx0, gy0)
         gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
-        length = to_f32(gap + r * draw(PATH_FACTORS))
+        length = to_f32(gap + r * dr.take(draw, PATH_FACTORS))
     else:
         if aim == "border":
             dists = {0: BLOCK - lx, 180: lx, 90: BLOCK - ly, 270: ly}
             heading = min(dists, key=dists.get) + draw(BORDER_JITTER)
         else:
-            heading = draw(HEADINGS)
+            heading = dr.take(draw, HEADINGS)
         if crossing:
             # far enough to cross the border (aim "border": it is within NEAR_BORDER's 3 m)
             gap = min(dists.values()) / max(math.cos(math.radians(heading - min(dists, key=dists.get))), 0.3)
-            length = to_f32(gap + r * draw(st.one_of(st.sampled_from((0.5, 1.0, 2.0)), sh.f32s(0.05, 4.0))))
+            length = to_f32(gap + r * dr.take(draw, CROSSING_FACTORS))
         else:
-            length = to_f32(r * draw(PATH_FACTORS))
+            length = to_f32(r * dr.take(draw, PATH_FACTORS))
     heading += draw(FINE_JITTER)
 
     # start height: on the ground (contact), a little above it, or well up in the air
     lb0, (z0, n0, d0) = world.ground(gx0, gy0)
-    start = "ground" if crossing else draw(st.sampled_from(("ground", "ground", "ground", "air")))
+    start = "ground" if crossing else draw(STARTS)
     state = int(PhysicsState.Gravity)
-    if draw(st.integers(0, 3)) > 0:  # shrinks to 0: EdgeSlide off
+    if draw(QUARTERS) > 0:  # shrinks to 0: EdgeSlide off
         state |= int(PhysicsState.EdgeSlide)
     begin_cell = cell_of(bx, by, lx, ly)
     contact = None
@@ -211,11 +243,11 @@ def scenes_of(draw, kind: str):
 
     # BSP objects: maybe one is a platform under the mover (a ledge to walk off)
     placed = []
-    if objects_spec and objects_spec[0][0] in ("platform", "ledge", "step", "floor") and draw(st.booleans()):
+    if objects_spec and objects_spec[0][0] in ("platform", "ledge", "step", "floor") and draw(dr.BOOLEANS):
         label, shape, top = objects_spec.pop(0)
-        ox = gx0 + draw(sh.f32s(-3.0, 3.0))
-        oy = gy0 + draw(sh.f32s(-3.0, 3.0))
-        angle = draw(st.sampled_from((0, 0, 30, 45, 90)))
+        ox = gx0 + draw(PLATFORM_OFFSETS)
+        oy = gy0 + draw(PLATFORM_OFFSETS)
+        angle = draw(PLATFORM_ANGLES)
         platform = (label, shape, top, ox, oy, angle)
         geometry_steps.append(top)
     for label, shape, top in objects_spec:
@@ -234,39 +266,40 @@ def scenes_of(draw, kind: str):
         if world.water(gx0, gy0) and platform is None:
             transient |= int(TransientState.WaterContact)
         contact = ContactPlane(begin_cell, PlaneRec(n0, d0))
-        bz = to_f32(z0 + draw(ob.PLANE_DZ))  # on the plane, or EPSILON either side of it
+        bz = to_f32(z0 + dr.take(draw, ob.PLANE_DZ))  # on the plane, or EPSILON either side of it
     else:
-        bz = to_f32(z0 + draw(st.one_of(sh.f32s(0.001, 0.1), sh.f32s(0.1, 6.0))))
+        bz = to_f32(z0 + dr.take(draw, AIR_HEIGHTS))
 
     rad = math.radians(heading)
     gx1, gy1 = _snap(draw, gx0 + length * math.cos(rad), gy0 + length * math.sin(rad))
-    end_z = draw(st.sampled_from(("level", "ground", "fall", "rise")))
+    end_z = draw(END_Z)
     if end_z == "ground" and platform is None:
         _, (ez, _, _) = world.ground(gx1, gy1)
-        ez = to_f32(ez + draw(ob.PLANE_DZ))
+        ez = to_f32(ez + dr.take(draw, ob.PLANE_DZ))
     elif end_z == "fall" or start == "air":
-        ez = bz - draw(sh.f32s(0.0, 3.0))
+        ez = bz - draw(FALLS)
     elif end_z == "rise":
-        ez = bz + draw(sh.f32s(0.0, 1.0))
+        ez = bz + draw(RISES)
     else:
         ez = bz
 
     # the other objects: along the path, a little past its end, or to the side
     for shape_i, (label, shape, top) in enumerate(objects_spec):
-        t = draw(st.sampled_from((0.5, 1.0, 1.0, 1.2)))
-        side = draw(st.sampled_from((0.0, 0.0, 0.5, -0.5, 1.0)))
-        dist = length * t + r + (shape.sphere.radius if hasattr(shape, "sphere") and label not in ("wall",) else 0.3) * draw(st.sampled_from((0.0, 0.5, 1.0)))
+        t = draw(ALONG_PATH)
+        side = draw(SIDEWAYS)
+        clearance = shape.sphere.radius if hasattr(shape, "sphere") and label not in ("wall",) else 0.3
+        dist = length * t + r + clearance * draw(CLEARANCE)
         ox = gx0 + dist * math.cos(rad) - side * r * math.sin(rad)
         oy = gy0 + dist * math.sin(rad) + side * r * math.cos(rad)
-        angle = heading + draw(st.sampled_from((0, 0, 90, 45, 10, -30)))
+        angle = heading + draw(OBJECT_ANGLES)
         _, (gz, _, _) = world.ground(ox, oy)
         placed.append((shape, ox, oy, gz, yaw(angle), obj_state()))
 
-    steps = geometry_steps + [r * t for t in (0.5, 1.0, 1.25, 1.5, 2.0)]
-    up = draw(step_heights(steps))
+    steps = step_heights(geometry_steps + [r * t for t in (0.5, 1.0, 1.25, 1.5, 2.0)])
+    up = dr.one_of(draw, STEP_UP_SITE, *steps)
     # step-down in [r, 2r] reaches a cliff's face within one step (and stays whole: above 2r a
     # one-sphere mover halves it), which is what EdgeSlide's CliffSlide branch needs
-    down = draw(st.one_of(sh.f32s(r, 2 * r), step_heights(steps)))
+    down = dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps)
     mover = Mover(
         spheres=spheres,
         begin=Position(begin_cell, Frame((lx, ly, bz))),
@@ -289,7 +322,7 @@ def _snap(draw, gx: float, gy: float) -> tuple[float, float]:
         return gx, gy
     unit = CELL if how == "cell" else BLOCK
     sx, sy = round(gx / unit) * unit, round(gy / unit) * unit
-    if abs(sx - gx) <= abs(sy - gy) or draw(st.booleans()):
+    if abs(sx - gx) <= abs(sy - gy) or draw(dr.BOOLEANS):
         return float(sx), gy
     return gx, float(sy)
 
@@ -315,15 +348,16 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
         bz = to_f32(z0 + plan.airborne)
     else:
         contact = ContactPlane(begin_cell, PlaneRec(n0, d0))
-        bz = to_f32(z0 + (plan.plane_dz if plan.plane_dz is not None else draw(ob.PLANE_DZ)))
+        bz = to_f32(z0 + (plan.plane_dz if plan.plane_dz is not None else dr.take(draw, ob.PLANE_DZ)))
         if n0[2] < tr.FLOOR_Z:
             transient &= ~int(TransientState.OnWalkable)
     rad = math.radians(plan.heading)
     gx1, gy1 = gx0 + plan.length * math.cos(rad), gy0 + plan.length * math.sin(rad)
-    ez = bz if not plan.airborne else to_f32(bz - draw(sh.f32s(0.0, 2.0)))
-    steps = plan.steps + [r * t for t in (0.5, 1.0, 1.5)]
-    up = plan.step_up if plan.step_up is not None else draw(step_heights(steps))
-    down = plan.step_down if plan.step_down is not None else draw(st.one_of(sh.f32s(r, 2 * r), step_heights(steps)))
+    ez = bz if not plan.airborne else to_f32(bz - draw(POLICY_FALLS))
+    steps = step_heights(plan.steps + [r * t for t in (0.5, 1.0, 1.5)])
+    up = plan.step_up if plan.step_up is not None else dr.one_of(draw, STEP_UP_SITE, *steps)
+    down = plan.step_down if plan.step_down is not None else dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r),
+                                                                       *steps)
     mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, bz))), end=position(gx1, gy1, ez),
                   step_up_height=up, step_down_height=down, state=state, transient_state=transient,
                   contact_plane=contact, velocity=plan.velocity if plan.velocity is not None else draw(ob.VELOCITIES))

@@ -25,9 +25,11 @@ from acconform.numerics import to_f32
 from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, PlaneRec, PolygonRec, SphereRec, newell_normal,
                              SphereShape)
 
+from . import draws as dr
+
 
 def f32s(lo: float, hi: float):
-    """Exact float32s in [lo, hi] (Hypothesis draws binary32 values directly)."""
+    """Exact float32s in [lo, hi] (Hypothesis draws binary32 values directly); draws.f32: the same, unwrapped."""
     return st.floats(to_f32(lo), to_f32(hi), width=32, allow_nan=False, allow_infinity=False)
 
 
@@ -116,18 +118,30 @@ def polygon_shape(verts) -> BSPShape:
 
 
 # ---------------------------------------------------------------- strategies
+#
+# Module constants throughout (strategies/draws.py says why); the composites take no arguments,
+# so each is built once, and every object still draws inside a span of its own.
 
 STEP_SIZES = tuple(to_f32(h) for h in (0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 1.0))
+STEPS = st.sampled_from(STEP_SIZES)
+
+VERTEX_COUNTS = dr.ints(3, 8)
+# a polygon's vertex angles: n distinct multiples of 15 degrees, one list strategy per n
+ANGLES = {n: dr.eager(st.lists(st.sampled_from(range(0, 360, 15)), min_size=n, max_size=n, unique=True))
+          for n in range(3, 9)}
+SEMI_AXES = dr.f32(0.5, 6.0)
+TILTS = st.sampled_from((0, 0, 10, 30, 45, 50, 60, 90))
+LIFTS = dr.f32(0.0, 3.0)
 
 
 @st.composite
-def convex_polygons(draw, max_vertices: int = 8):
+def convex_polygons(draw):
     """A convex polygon: points on an ellipse at increasing angles, tilted, CCW from +z before tilting."""
-    n = draw(st.integers(3, max_vertices))
-    angles = sorted(draw(st.lists(st.sampled_from(range(0, 360, 15)), min_size=n, max_size=n, unique=True)))
-    rx, ry = draw(f32s(0.5, 6.0)), draw(f32s(0.5, 6.0))
-    tilt = math.radians(draw(st.sampled_from((0, 0, 10, 30, 45, 50, 60, 90))))
-    z = draw(f32s(0.0, 3.0))
+    n = draw(VERTEX_COUNTS)
+    angles = sorted(draw(ANGLES[n]))
+    rx, ry = draw(SEMI_AXES), draw(SEMI_AXES)
+    tilt = math.radians(draw(TILTS))
+    z = draw(LIFTS)
     pts = []
     for a in angles:
         x, y = rx * math.cos(math.radians(a)), ry * math.sin(math.radians(a))
@@ -135,27 +149,41 @@ def convex_polygons(draw, max_vertices: int = 8):
     return polygon_shape(pts)
 
 
+CONVEX_POLYGONS = dr.eager(convex_polygons())
+SHAPE_KINDS = st.sampled_from(("wall", "floor", "ramp", "ledge", "platform", "post", "box", "polygon", "step"))
+WALL_THICKNESS, WALL_LENGTHS, WALL_HEIGHTS = dr.f32(0.1, 1.0), dr.f32(2.0, 12.0), dr.f32(1.0, 6.0)
+TOP_HEIGHTS, TOP_SIDES, FLOOR_HEIGHTS = dr.f32(0.05, 3.0), dr.f32(1.0, 10.0), dr.f32(0.02, 0.3)
+RAMP_LENGTHS, RAMP_WIDTHS = dr.f32(2.0, 12.0), dr.f32(1.0, 6.0)
+RAMP_ANGLES = st.sampled_from((20.0, 45.0, 48.0, 48.4, 48.5, 49.0, 60.0))
+POST_SIDES, POST_RADII, POST_HEIGHTS = dr.ints(3, 8), dr.f32(0.05, 0.4), dr.f32(1.0, 5.0)
+BOX_SIDES = dr.f32(0.5, 4.0)
+
+
 @st.composite
 def bsp_shapes(draw):
-    """(label, shape, top height, step size) for one BSP object (label says what it is)."""
-    kind = draw(st.sampled_from(("wall", "floor", "ramp", "ledge", "platform", "post", "box", "polygon", "step")))
+    """(label, shape, top height) for one BSP object (label says what it is)."""
+    kind = draw(SHAPE_KINDS)
     if kind == "wall":
-        shape = box(draw(f32s(0.1, 1.0)), draw(f32s(2.0, 12.0)), draw(f32s(1.0, 6.0)))
+        shape = box(draw(WALL_THICKNESS), draw(WALL_LENGTHS), draw(WALL_HEIGHTS))
     elif kind in ("floor", "platform", "ledge", "step"):
-        height = draw(st.sampled_from(STEP_SIZES)) if kind == "step" else draw(f32s(0.05, 3.0))
-        shape = box(draw(f32s(1.0, 10.0)), draw(f32s(1.0, 10.0)), height if kind != "floor" else draw(f32s(0.02, 0.3)))
+        height = draw(STEPS) if kind == "step" else draw(TOP_HEIGHTS)
+        sx, sy = draw(TOP_SIDES), draw(TOP_SIDES)
+        shape = box(sx, sy, height if kind != "floor" else draw(FLOOR_HEIGHTS))
     elif kind == "ramp":
-        length = draw(f32s(2.0, 12.0))
-        angle = draw(st.sampled_from((20.0, 45.0, 48.0, 48.4, 48.5, 49.0, 60.0)))
-        shape = wedge(length, draw(f32s(1.0, 6.0)), to_f32(length * math.tan(math.radians(angle))))
+        length = draw(RAMP_LENGTHS)
+        angle = draw(RAMP_ANGLES)
+        shape = wedge(length, draw(RAMP_WIDTHS), to_f32(length * math.tan(math.radians(angle))))
     elif kind == "post":
-        shape = prism(draw(st.integers(3, 8)), draw(f32s(0.05, 0.4)), draw(f32s(1.0, 5.0)))
+        shape = prism(draw(POST_SIDES), draw(POST_RADII), draw(POST_HEIGHTS))
     elif kind == "box":
-        shape = box(draw(f32s(0.5, 4.0)), draw(f32s(0.5, 4.0)), draw(f32s(0.5, 4.0)))
+        shape = box(draw(BOX_SIDES), draw(BOX_SIDES), draw(BOX_SIDES))
     else:
-        shape = draw(convex_polygons())
+        shape = draw(CONVEX_POLYGONS)
     zs = [p[2] for poly in shape.polygons for p in poly.vertices]
     return kind, shape, max(zs)
+
+
+BSP_SHAPES = dr.eager(bsp_shapes())
 
 
 def spheres_shapes():
@@ -164,3 +192,6 @@ def spheres_shapes():
 
 def cylsphere_shapes():
     return st.builds(lambda r, h: CylSphereShape((0.0, 0.0, 0.0), r, h), f32s(0.1, 2.0), f32s(0.2, 5.0))
+
+
+OBSTACLE_SHAPES = dr.OneOf(dr.eager(spheres_shapes()), dr.eager(cylsphere_shapes()))

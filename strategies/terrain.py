@@ -17,6 +17,11 @@ Water: ACE reads a vertex's terrain type as ``word >> 2 & 0x1F`` and types 0x10.
 (WaterRunning .. WaterDeepSea) are water (LandblockStruct.SurfChar); a cell with every corner
 water is EntirelyWater, with some PartiallyWater (LandblockStruct.CalcCellWater). A block
 that is entirely water collides everything, so water regions are kept smaller than a block.
+
+Generation cost: features are drawn around vertex (0, 0) by strategies built once, then moved to
+the mover's vertex (a strategy built per scene cost more than the draws it made), and a block is
+sliced from the field in one numpy pass per feature (`Field.landblock`; `Field.height` and
+`Field.word` stay the vertex-by-vertex definition, and tests pin the two together).
 """
 
 from __future__ import annotations
@@ -24,10 +29,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
 from hypothesis import strategies as st
 
 from acconform.numerics import to_f32
 from acconform.scene import DEFAULT_LAND_HEIGHT_TABLE, Landblock
+
+from . import draws as dr
 
 CELL = 24.0
 BLOCK = 192.0
@@ -81,14 +89,33 @@ class Feature:
     j: int = 0
     water_type: int = 0x11
 
+    def moved(self, dx: int, dy: int) -> Feature:
+        """The same feature shifted by (dx, dy) vertices."""
+        return Feature(self.kind, self.x0 + dx, self.y0 + dy, self.x1 + dx, self.y1 + dy, self.a, self.b,
+                       self.c + self.a * dx + self.b * dy, self.k, self.i, self.j, self.water_type)
+
+
+# a landblock's 9 x 9 vertex offsets, x down the rows (heights are stored x-major)
+_VX = np.arange(9, dtype=np.int64).reshape(9, 1)
+_VY = np.arange(9, dtype=np.int64).reshape(1, 9)
+
 
 @dataclass(frozen=True, slots=True)
 class Field:
+    """A height field: `height` and `word` define it vertex by vertex; `landblock` computes the
+    same 81 values for a whole block at once (numpy, one pass per feature), which is what scene
+    generation slices several times a scene. tests/strategies pins the two against each other."""
+
     base: int
     features: tuple[Feature, ...]
     noise: int = 0  # amplitude in height indices
     noise_seed: int = 0
     land_type: int = 0x1
+
+    def moved(self, dx: int, dy: int) -> Field:
+        """The same field shifted by (dx, dy) vertices (the noise stays put: it is global)."""
+        return Field(self.base, tuple(f.moved(dx, dy) for f in self.features), self.noise, self.noise_seed,
+                     self.land_type)
 
     def height(self, gx: int, gy: int) -> int:
         h = self.base
@@ -115,17 +142,33 @@ class Field:
         return t << 2
 
     def landblock(self, bx: int, by: int) -> Landblock:
-        heights = []
-        terrain = []
-        for x in range(9):
-            for y in range(9):
-                gx, gy = bx * 8 + x, by * 8 + y
-                heights.append(self.height(gx, gy))
-                terrain.append(self.word(gx, gy))
-        return Landblock((bx << 24) | (by << 16) | 0xFFFF, tuple(heights), tuple(terrain))
+        lb_id = (bx << 24) | (by << 16) | 0xFFFF
+        if not self.features and not self.noise:  # level ground
+            return Landblock(lb_id, (min(max(self.base, 0), 255),) * 81, (self.land_type << 2,) * 81)
+        gx, gy = _VX + bx * 8, _VY + by * 8
+        h = np.full((9, 9), self.base, dtype=np.int64)
+        t = None
+        for f in self.features:
+            if f.kind == "step":
+                h += np.where(f.a * gx + f.b * gy >= f.c, f.k, 0)
+            elif f.kind == "box":
+                h += np.where((f.x0 <= gx) & (gx <= f.x1), f.k, 0) * ((f.y0 <= gy) & (gy <= f.y1))
+            elif f.kind == "ramp":  # (np.clip is several times slower than this on 9 values)
+                h += f.i * (np.minimum(np.maximum(gx, f.x0), f.x1) - f.x0)
+                h += f.j * (np.minimum(np.maximum(gy, f.y0), f.y1) - f.y0)
+            elif f.kind == "water":
+                if t is None:
+                    t = np.full((9, 9), self.land_type, dtype=np.int64)
+                t[((f.x0 <= gx) & (gx <= f.x1)) & ((f.y0 <= gy) & (gy <= f.y1))] = f.water_type
+        if self.noise:
+            h += _hash(self.noise_seed, gx, gy) % (2 * self.noise + 1) - self.noise
+        heights = tuple(np.minimum(np.maximum(h, 0), 255).ravel().tolist())
+        terrain = (self.land_type << 2,) * 81 if t is None else tuple((t << 2).ravel().tolist())
+        return Landblock(lb_id, heights, terrain)
 
 
-def _hash(seed: int, x: int, y: int) -> int:
+def _hash(seed, x, y):
+    """A 32-bit mix of (seed, x, y); x and y may be int64 arrays (every step stays below 2**63)."""
     h = (seed * 0x9E3779B1 + x * 0x85EBCA77 + y * 0xC2B2AE3D) & 0xFFFFFFFF
     h ^= h >> 15
     h = (h * 0x2C1B3C6D) & 0xFFFFFFFF
@@ -189,6 +232,10 @@ def ground(lb: Landblock, x: float, y: float, table=DEFAULT_LAND_HEIGHT_TABLE):
 
 
 # ---------------------------------------------------------------- strategies
+#
+# Every strategy here is a module constant (see strategies/draws.py for why): features and fields
+# are drawn around vertex (0, 0) and moved to the mover's vertex afterwards (`field_near`), so
+# the strategy that draws them does not depend on where the mover is.
 
 
 def landblock_coords(lo: int = 0x01, hi: int = 0xFD):
@@ -197,83 +244,114 @@ def landblock_coords(lo: int = 0x01, hi: int = 0xFD):
 
 
 # height index deltas: small bumps, the FloorZ straddle (13/14), cliffs
-STEP_DELTAS = st.one_of(
+STEP_DELTAS = dr.OneOf(
     st.sampled_from((13, 14, -13, -14, 12, 15, -12, -15)),
-    st.integers(-40, 40),
+    dr.ints(-40, 40),
     st.sampled_from((30, -30, 60, -60, 1, -1)),
 )
 
 
 DIRECTIONS = st.sampled_from(((1, 0), (0, 1), (-1, 0), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)))
-CLIFF_DOWN = st.integers(-24, -14)  # tan 1.17 .. 2.0 over one cell: unwalkable, yet a step-down can reach it
+CLIFF_DOWN = dr.ints(-24, -14)  # tan 1.17 .. 2.0 over one cell: unwalkable, yet a step-down can reach it
+SIGNS = st.sampled_from((1, -1))
+GENTLE = dr.ints(-3, 3)  # a neighbourhood's tilt, in height indices per cell
+STRADDLING = st.sampled_from(STRADDLING_GRADIENTS)
+RAMP_GRADIENTS = dr.OneOf(STRADDLING, st.tuples(dr.ints(-6, 6), dr.ints(-6, 6)))
+FEATURE_KINDS = st.sampled_from(("step", "ramp", "box", "water", "step", "ramp"))
+WATER = st.sampled_from(WATER_TYPES)
+FEATURE_COUNTS = dr.ints(0, 3)
+THIRDS = dr.ints(0, 2)  # a policy's switch: on at 2 (or at 1 and 2), off where shrinking goes
+STEEPNESS = dr.ints(1, 3)
+NEAR = dr.ints(-1, 1)  # vertices from (0, 0)
+OFFSETS = dr.ints(-1, 2)
+RAMP_SIZES, BOX_SIZES, WATER_SIZES = dr.ints(1, 4), dr.ints(0, 3), dr.ints(0, 4)  # cells
 
 
 @st.composite
-def features_near(draw, gx: int, gy: int, tilt: bool = False):
-    """Terrain features whose edges pass within a cell or two of global vertex (gx, gy).
+def features_near(draw, tilt: bool = False) -> tuple[Feature, ...]:
+    """Terrain features whose edges pass within a cell or two of vertex (0, 0).
 
     Each optional feature is switched on by a draw that shrinks to off (0), so a shrunk scene
     keeps only the features its difference needs. `tilt` always tilts the neighbourhood (a
     sloped contact plane on both sides of a block border).
     """
     out = []
-    n = draw(st.integers(0, 3))
+    n = draw(FEATURE_COUNTS)
     if tilt:
-        i, j = draw(st.integers(1, 3)) * draw(st.sampled_from((1, -1))), draw(st.integers(-3, 3))
-        if draw(st.booleans()):
+        i, j = draw(STEEPNESS) * draw(SIGNS), draw(GENTLE)
+        if draw(dr.BOOLEANS):
             i, j = j, i
-        out.append(Feature("ramp", x0=gx - 16, y0=gy - 16, x1=gx + 16, y1=gy + 16, i=i, j=j))
-    if draw(st.integers(0, 2)) == 2:
+        out.append(Feature("ramp", x0=-16, y0=-16, x1=16, y1=16, i=i, j=j))
+    if draw(THIRDS) == 2:
         # policy: a cliff edge (a down step steeper than FloorZ but within reach of a step-down)
         a, b = draw(DIRECTIONS)
-        d = draw(st.integers(-1, 2))
-        out.append(Feature("step", a=a, b=b, c=a * (gx + d) + b * (gy + d), k=draw(CLIFF_DOWN)))
-    if draw(st.integers(0, 2)) >= 1:
+        d = draw(OFFSETS)
+        out.append(Feature("step", a=a, b=b, c=a * d + b * d, k=draw(CLIFF_DOWN)))
+    if draw(THIRDS) >= 1:
         # policy (2 in 3): a slope just either side of FloorZ starting at the next vertex over
-        i, j = draw(st.sampled_from(STRADDLING_GRADIENTS))
-        si, sj = draw(st.sampled_from((1, -1))), draw(st.sampled_from((1, -1)))
-        x0, y0 = gx + draw(st.integers(-1, 1)), gy + draw(st.integers(-1, 1))
+        i, j = draw(STRADDLING)
+        si, sj = draw(SIGNS), draw(SIGNS)
+        x0, y0 = draw(NEAR), draw(NEAR)
         out.append(Feature("ramp", x0=x0, y0=y0, x1=x0 + 2, y1=y0 + 2, i=si * i, j=sj * j))
-    if not tilt and draw(st.integers(0, 2)) == 2:
+    if not tilt and draw(THIRDS) == 2:
         # policy: tilt the whole neighbourhood gently, so block borders have sloped contact planes
-        out.append(Feature("ramp", x0=gx - 16, y0=gy - 16, x1=gx + 16, y1=gy + 16,
-                           i=draw(st.integers(-3, 3)), j=draw(st.integers(-3, 3))))
+        out.append(Feature("ramp", x0=-16, y0=-16, x1=16, y1=16, i=draw(GENTLE), j=draw(GENTLE)))
     for _ in range(n):
-        kind = draw(st.sampled_from(("step", "ramp", "box", "water", "step", "ramp")))
-        dx, dy = draw(st.integers(-1, 2)), draw(st.integers(-1, 2))
+        kind = draw(FEATURE_KINDS)
+        dx, dy = draw(OFFSETS), draw(OFFSETS)
         if kind == "step":
-            a, b = draw(st.sampled_from(((1, 0), (0, 1), (-1, 0), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1))))
-            c = a * (gx + dx) + b * (gy + dy)
-            out.append(Feature("step", a=a, b=b, c=c, k=draw(STEP_DELTAS)))
+            a, b = draw(DIRECTIONS)
+            out.append(Feature("step", a=a, b=b, c=a * dx + b * dy, k=dr.take(draw, STEP_DELTAS)))
         elif kind == "ramp":
-            i, j = draw(st.one_of(st.sampled_from(STRADDLING_GRADIENTS), st.tuples(st.integers(-6, 6), st.integers(-6, 6))))
-            si, sj = draw(st.sampled_from((1, -1))), draw(st.sampled_from((1, -1)))
-            w, h = draw(st.integers(1, 4)), draw(st.integers(1, 4))
-            x0, y0 = gx + dx - draw(st.integers(0, w)), gy + dy - draw(st.integers(0, h))
+            i, j = dr.take(draw, RAMP_GRADIENTS)
+            si, sj = draw(SIGNS), draw(SIGNS)
+            w, h = draw(RAMP_SIZES), draw(RAMP_SIZES)
+            x0, y0 = dx - dr.index(draw, w + 1), dy - dr.index(draw, h + 1)
             out.append(Feature("ramp", x0=x0, y0=y0, x1=x0 + w, y1=y0 + h, i=si * i, j=sj * j))
         elif kind == "box":
-            w, h = draw(st.integers(0, 3)), draw(st.integers(0, 3))
-            x0, y0 = gx + dx - draw(st.integers(0, w + 1)), gy + dy - draw(st.integers(0, h + 1))
-            out.append(Feature("box", x0=x0, y0=y0, x1=x0 + w, y1=y0 + h, k=draw(STEP_DELTAS)))
+            w, h = draw(BOX_SIZES), draw(BOX_SIZES)
+            x0, y0 = dx - dr.index(draw, w + 2), dy - dr.index(draw, h + 2)
+            out.append(Feature("box", x0=x0, y0=y0, x1=x0 + w, y1=y0 + h, k=dr.take(draw, STEP_DELTAS)))
         else:
-            w, h = draw(st.integers(0, 4)), draw(st.integers(0, 4))
-            x0, y0 = gx + dx - draw(st.integers(0, w)), gy + dy - draw(st.integers(0, h))
-            out.append(Feature("water", x0=x0, y0=y0, x1=x0 + w, y1=y0 + h, water_type=draw(st.sampled_from(WATER_TYPES))))
+            w, h = draw(WATER_SIZES), draw(WATER_SIZES)
+            x0, y0 = dx - dr.index(draw, w + 1), dy - dr.index(draw, h + 1)
+            out.append(Feature("water", x0=x0, y0=y0, x1=x0 + w, y1=y0 + h, water_type=draw(WATER)))
     return tuple(out)
 
 
+FEATURES = {tilt: dr.eager(features_near(tilt)) for tilt in (False, True)}
+BASES = dr.ints(60, 140)
+LAND = st.sampled_from(LAND_TYPES)
+NOISE = st.sampled_from((0, 0, 0, 1, 2, 5))
+NOISE_SEEDS = dr.ints(0, 2**16)
+
+
 @st.composite
-def fields_near(draw, gx: int, gy: int, flat: bool = False, tilt: bool = False):
-    """A terrain field with features around global vertex (gx, gy); `flat` keeps it level or
-    gently tilted (for objects), `tilt` always tilts it (see features_near)."""
-    base = draw(st.integers(60, 140))
-    land_type = draw(st.sampled_from(LAND_TYPES))
+def _fields(draw, flat: bool, tilt: bool) -> Field:
+    """A terrain field with features around vertex (0, 0); `flat` keeps it level or gently tilted
+    (for objects), `tilt` always tilts it (see features_near)."""
+    base = draw(BASES)
+    land_type = draw(LAND)
     if flat:
-        if not draw(st.booleans()):
+        if not draw(dr.BOOLEANS):
             return Field(base, (), 0, 0, land_type)
-        i, j = draw(st.integers(-3, 3)), draw(st.integers(-3, 3))
-        return Field(base, (Feature("ramp", x0=gx - 12, y0=gy - 12, x1=gx + 12, y1=gy + 12, i=i, j=j),), 0, 0, land_type)
-    feats = draw(features_near(gx, gy, tilt))
-    noise = draw(st.sampled_from((0, 0, 0, 1, 2, 5)))
-    seed = draw(st.integers(0, 2**16)) if noise else 0
+        i, j = draw(GENTLE), draw(GENTLE)
+        return Field(base, (Feature("ramp", x0=-12, y0=-12, x1=12, y1=12, i=i, j=j),), 0, 0, land_type)
+    feats = draw(FEATURES[tilt])
+    noise = draw(NOISE)
+    seed = draw(NOISE_SEEDS) if noise else 0
     return Field(base, feats, noise, seed, land_type)
+
+
+# one strategy per (flat, tilt) the scenes ask for: a field around vertex (0, 0)
+FIELDS = {(flat, tilt): dr.eager(_fields(flat, tilt)) for flat, tilt in ((False, False), (False, True), (True, False))}
+
+
+def field_near(draw, gx: int, gy: int, flat: bool = False, tilt: bool = False) -> Field:
+    """Draw a field with features around global vertex (gx, gy) (flat and tilt as in _fields)."""
+    return draw(FIELDS[flat, tilt]).moved(gx, gy)
+
+
+def fields_near(gx: int, gy: int, flat: bool = False, tilt: bool = False):
+    """field_near as a strategy."""
+    return FIELDS[flat, tilt].map(lambda f: f.moved(gx, gy))
