@@ -16,6 +16,7 @@ from acconform.port.anchors import anchor, harness
 from acconform.port.constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom.polygon import Polygon, Sidedness
+from acconform.port.geom.sphere import Sphere
 from acconform.port.land import land_defs
 from acconform.port.land.land_defs import WaterType
 from acconform.port.land.obj_cell import ObjCell
@@ -98,8 +99,6 @@ class LandCell(ObjCell):
             return TransitionState.Collided
 
         water_depth = self.get_water_depth(local_point)
-
-        from ..geom.sphere import Sphere
 
         check_pos = Sphere(path.global_sphere[0].center, path.global_sphere[0].radius)
         check_pos.center = check_pos.center - land_defs.get_block_offset(path.check_pos.obj_cell_id, self.id)

@@ -15,6 +15,7 @@ from __future__ import annotations
 from acconform.flags import PhysicsState, TransitionState
 
 from ..anchors import anchor
+from ..transition.sphere_path import InsertType
 from . import land_defs
 
 
@@ -60,8 +61,6 @@ class ObjCell:
 
     @anchor("CObjCell::find_obj_collisions", "ObjCell.cs:FindObjCollisions")
     def find_obj_collisions(self, transition) -> TransitionState:
-        from ..transition.sphere_path import InsertType
-
         path = transition.sphere_path
         if path.insert_type == InsertType.InitialPlacement:
             return TransitionState.OK
