@@ -70,7 +70,7 @@ def measure(groups: dict, path) -> dict:
             o, us = oracle.run_timed(s)
             singles.append((time.perf_counter() - t) * 1e6)
             ace.append(us)
-            trans.append(oracle.last_transition_micros)
+            trans.append(getattr(oracle, "last_transition_micros", float("nan")))  # absent before b340fad
             case.append(oracle.last_case_micros)
             built.append(oracle.last_landblocks_built)
             build_us.append(oracle.last_build_micros)
@@ -125,7 +125,11 @@ def main() -> int:
             cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--scenes", str(scenes)]
             if args.path:
                 cmd += ["--path", args.path]
-            old = json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout)
+            done = subprocess.run(cmd, env=env, capture_output=True, text=True)
+            if done.returncode != 0:
+                sys.stderr.write(done.stderr)
+                raise SystemExit(f"bench_oracle: measuring {args.against} failed (its stderr is above)")
+            old = json.loads(done.stdout)
     new = measure(groups, args.path)
 
     print(new["oracle"])
@@ -140,6 +144,7 @@ def main() -> int:
                   f"{_ratio(b['run'], b['net'])} {_ratio(b['run'], b.get('trans', 0))} {_ratio(b['run'], b['fvp'])} "
                   f"{b['built']:5.2f} {b['lb_us']:5.0f}  "
                   f"{'identical' if a['outcomes'] == b['outcomes'] else 'DIFFER'}{'' if b['batch_agrees'] else ' (batch DIFFERS)'}")
+        _totals(new, groups)
         return 0 if all(old["kinds"][k]["outcomes"] == v["outcomes"] for k, v in new["kinds"].items()) else 1
     print(f"{'scene kind':28} {'run() us':>9} {'batch us':>9} {'.NET us':>8} {'trans us':>8} {'FVP us':>7} "
           f"{'/.NET':>6} {'/trans':>6} {'/FVP':>6} {'built':>5} {'us/lb':>5}")
@@ -147,13 +152,17 @@ def main() -> int:
         print(f"{name:28} {b['run']:9.1f} {b['batch']:9.1f} {b['net']:8.1f} {b['trans']:8.1f} {b['fvp']:7.1f} "
               f"{_ratio(b['run'], b['net'])} {_ratio(b['run'], b['trans'])} {_ratio(b['run'], b['fvp'])} "
               f"{b['built']:5.2f} {b['lb_us']:5.0f}")
-    print("campaign totals on fresh scenes (sum of run() / sum of each):")
-    for name, b in new["kinds"].items():
+    _totals(new, groups)
+    return 0
+
+
+def _totals(res: dict, groups: dict) -> None:
+    print("campaign totals on fresh scenes, this tree (sum of run() / sum of each):")
+    for name, b in res["kinds"].items():
         if b["fresh"]:
             print(f"  {name:26} run() {b['sum_run'] / len(groups[name]):7.1f} us a case:"
                   f"  /.NET {b['sum_run'] / b['sum_net']:5.2f}  /trans {b['sum_run'] / b['sum_trans']:5.2f}"
                   f"  /FVP {b['sum_run'] / b['sum_fvp']:5.2f}")
-    return 0
 
 
 if __name__ == "__main__":
