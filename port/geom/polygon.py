@@ -256,16 +256,19 @@ class Polygon:
     @anchor("CPolygon::point_in_poly2D", "Polygon.cs:point_in_poly2D")
     def point_in_poly2D(self, point: Vector3, side: Sidedness) -> bool:
         vertices = self.vertices
+        positive = side == Sidedness.Positive
         prev_idx = 0
         for i in range(self.num_points - 1, -1, -1):
-            prev_vertex = vertices[prev_idx]
-            vertex = vertices[i]
+            prev_vertex = vertices[prev_idx].origin
+            vertex = vertices[i].origin
 
-            diff = vertex - prev_vertex
+            # diff = vertex - prevVertex; its z is never read
+            diff_x = vertex.x - prev_vertex.x
+            diff_y = vertex.y - prev_vertex.y
 
-            diff_cross = (diff.y * vertex.origin.x) - (diff.x * vertex.origin.y) + (diff.x * point.y) - (diff.y * point.x)
+            diff_cross = (diff_y * vertex.x) - (diff_x * vertex.y) + (diff_x * point.y) - (diff_y * point.x)
 
-            if side != Sidedness.Positive:
+            if not positive:
                 if diff_cross < 0.0:
                     return False
             else:

@@ -22,11 +22,14 @@ from acconform.port.land.land_defs import WaterType
 from acconform.port.land.obj_cell import ObjCell
 
 
+TERRAIN_POLYS_LIMIT = 256  # remembered points per cell before the cell forgets them all
+
+
 class LandCell(ObjCell):
     """One 24 m outdoor cell: two terrain triangles and the ObjCell state the physics reads."""
 
     __slots__ = (
-        "water_type", "pos", "object_list", "shadow_object_list", "restriction_obj",
+        "terrain_polys", "water_type", "pos", "object_list", "shadow_object_list", "restriction_obj",
         "cur_landblock", "building", "polygons", "in_view", "seen_outside", "voyeur_table",
     )
 
@@ -47,6 +50,7 @@ class LandCell(ObjCell):
         # LandCell.Init: always 2 polygons
         self.polygons: list[Polygon | None] = [None, None]
         self.in_view = False
+        self.terrain_polys: dict = {}  # find_terrain_poly's answers (the port's, not ACE's: see there)
 
     def __repr__(self) -> str:
         return f"LandCell(0x{self.id:08X}, water={self.water_type.name})"
@@ -56,10 +60,27 @@ class LandCell(ObjCell):
         """find_terrain_poly(origin, ref walkable): returns (found, walkable).
 
         walkable is left as given when neither triangle holds the point (2D test, edges inside).
+
+        The answer depends only on the cell's two triangles, fixed once the landblock is built,
+        and on origin's x and y, so the cell remembers it (about 70% of calls in a transition
+        repeat an earlier point; a pooled landblock keeps its cells' answers). Keys are values:
+        -0 and +0 meet, which is safe because a zero coordinate only ever adds or subtracts a zero
+        product in point_in_poly2D's cross term, which is then compared with 0; a NaN never
+        meets itself (unless it is the same object, whose answer is the same).
         """
-        for i in range(2):
-            if self.polygons[i].point_in_poly2D(origin, Sidedness.Positive):
-                return True, self.polygons[i]
+        key = (origin.x, origin.y)
+        i = self.terrain_polys.get(key)
+        if i is None:
+            i = -1
+            for k in range(2):
+                if self.polygons[k].point_in_poly2D(origin, Sidedness.Positive):
+                    i = k
+                    break
+            if len(self.terrain_polys) >= TERRAIN_POLYS_LIMIT:
+                self.terrain_polys.clear()
+            self.terrain_polys[key] = i
+        if i >= 0:
+            return True, self.polygons[i]
         return False, walkable
 
     @anchor("CLandCell::point_in_cell", "LandCell.cs:point_in_cell")

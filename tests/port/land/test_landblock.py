@@ -179,3 +179,22 @@ def test_replayed_outside_cells_leave_the_cell_array_as_running_it_again_does():
         assert direct.cells.keys() == replayed.cells.keys()
         assert direct.num_cells == replayed.num_cells
     assert calls == 800 and len(w.outside_cells) > 50  # the memory was used, and for many inputs
+
+
+@pytest.mark.anchor("CLandCell::find_terrain_poly")
+def test_a_cells_remembered_terrain_polygon_answers_are_the_triangle_test_itself():
+    """find_terrain_poly's per-cell memory against the two point_in_poly2D tests run directly, on
+    points on and around both triangles' edges (the diagonal, the cell's sides, +-0), asked twice."""
+    from acconform.port.geom.polygon import Sidedness
+
+    w = slope_world()
+    cell = w.get_landcell(NE - 0xFFFF + 0x40)
+    rng = np.random.default_rng(7)
+    coords = [-0.0, 0.0, 168.0, 168.00002, 179.99998, 180.0, 191.99998, 192.0, 192.00002, 170.5]
+    points = [EXACT.vec(F(rng.choice(coords)), F(rng.choice(coords)), 3.0) for _ in range(300)]
+    points += [EXACT.vec(F(x), F(x), 1.0) for x in (168.0, 180.0, 192.0)]  # on the diagonal
+    for p in points + points:
+        direct = next((poly for poly in cell.polygons if poly.point_in_poly2D(p, Sidedness.Positive)), None)
+        found, poly = cell.find_terrain_poly(p, None)
+        assert (found, poly) == (direct is not None, direct)
+    assert 0 < len(cell.terrain_polys) <= len(points)
