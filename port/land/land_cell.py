@@ -62,8 +62,8 @@ class LandCell(ObjCell):
         walkable is left as given when neither triangle holds the point (2D test, edges inside).
 
         The answer depends only on the cell's two triangles, fixed once the landblock is built,
-        and on origin's x and y, so the cell remembers it (about 70% of calls in a transition
-        repeat an earlier point; a pooled landblock keeps its cells' answers). Keys are values:
+        and on origin's x and y, so the cell remembers it for the run (about 70% of calls in a
+        transition repeat an earlier point; the pool empties it at checkout, which bounds it). Keys are values:
         -0 and +0 meet, which is safe because a zero coordinate only ever adds or subtracts a zero
         product in point_in_poly2D's cross term, which is then compared with 0; a NaN never
         meets itself (unless it is the same object, whose answer is the same).

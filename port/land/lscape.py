@@ -65,6 +65,7 @@ class LandblockPool:
             cell.voyeur_table = []
             cell.building = None
             cell.in_view = False
+            cell.terrain_polys = {}  # the port's memory (LandCell.find_terrain_poly), kept per run
         return landblock
 
     @harness("hands a landblock back to the pool")
