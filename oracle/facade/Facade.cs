@@ -181,16 +181,6 @@ namespace Acconform.Oracle
             return CopyOut();
         }
 
-        /// <summary>Run one packed scene; returns the packed outcome (for callers holding a byte[]).</summary>
-        public static byte[] Run(byte[] scene)
-        {
-            var ms = new MemoryStream(256);
-            var w = new BinaryWriter(ms);
-            RunInto(new BinaryReader(new MemoryStream(scene, 0, scene.Length, false, true)), scene.Length, w);
-            w.Flush();
-            return ms.ToArray();
-        }
-
         static void RunInto(BinaryReader r, int length, BinaryWriter w)
         {
             var outcome = (MemoryStream)w.BaseStream;
