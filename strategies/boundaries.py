@@ -1,0 +1,80 @@
+"""Exact boundaries by construction: float32 geometry solved so that ACE's own arithmetic lands
+on a threshold's bit pattern, not near it.
+
+A walkable test (`normal.z >= FloorZ`), a landing test (`>= LandingZ`) or a `>=`/`>` swap in
+either changes behaviour only when the computed normal.z *is* the constant. Drawn at random, a
+float32 slope hits that value about once in ten million polygons, so no campaign ever tests
+that ulp. Here the slope is solved for: the rise of a ramp is searched over float32 bit
+patterns, a few ulps either side of the analytic value, until the port's `Polygon.make_plane`
+(the routine ACE's DAT polygon constructor runs, pinned against ACE) gives the target bits.
+
+The port is the judge because the scene records only vertices: both sides compute the plane
+from them, ACE with its own code and the port with its pinned copy, so a rise that makes the
+port land on FloorZ makes ACE land there too (the per-function lane checks make_plane).
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+from acconform.numerics import EXACT, Mode, f32_bits, f32_from_bits, to_f32
+from acconform.port.constants import FLOOR_Z, LANDING_Z
+from acconform.port.geom.polygon import Polygon
+from acconform.scene import PolygonRec
+
+# the normal.z thresholds and the ulps either side of each: name -> float32 bit pattern
+Z_BOUNDARIES: dict[str, int] = {}
+for _name, _z in (("floor_z", FLOOR_Z), ("landing_z", LANDING_Z)):
+    _b = f32_bits(_z)
+    Z_BOUNDARIES[_name] = _b
+    Z_BOUNDARIES[f"{_name}-1ulp"] = _b - 1
+    Z_BOUNDARIES[f"{_name}+1ulp"] = _b + 1
+
+# how far (in ulps of the rise) from the analytic rise the search looks; every target above is
+# found within 2 ulps for the runs the strategies draw (tests/strategies/test_boundaries.py)
+SEARCH_ULPS = 16
+
+
+def slope_polygon(sx: float, sy: float, sz: float) -> PolygonRec:
+    """The sloped face of `shapes.wedge(sx, sy, sz)`: rising along +x from 0 to sz."""
+    x0, x1, y0, y1 = to_f32(-sx / 2), to_f32(sx / 2), to_f32(-sy / 2), to_f32(sy / 2)
+    return PolygonRec(((x0, y0, 0.0), (x1, y0, sz), (x1, y1, sz), (x0, y1, 0.0)))
+
+
+def plane_normal_z_bits(poly: PolygonRec, mode: Mode = EXACT) -> int:
+    """The bits of normal.z that ACE's DAT polygon constructor (make_plane) computes for `poly`."""
+    return f32_bits(Polygon.from_rec(poly, mode).plane.normal.z)
+
+
+@lru_cache(maxsize=None)
+def wedge_rise_for(sx: float, sy: float, target_bits: int, mode: Mode = EXACT) -> float | None:
+    """A float32 rise sz for which `shapes.wedge(sx, sy, sz)`'s slope has normal.z == target_bits
+    exactly (the rise nearest the analytic one), or None when none lies within SEARCH_ULPS."""
+    z = f32_from_bits(target_bits)
+    run = float(to_f32(sx / 2)) - float(to_f32(-sx / 2))
+    base = f32_bits(to_f32(run * math.sqrt(1.0 / (z * z) - 1.0)))
+    for k in sorted(range(-SEARCH_ULPS, SEARCH_ULPS + 1), key=abs):
+        sz = f32_from_bits(base + k)
+        if plane_normal_z_bits(slope_polygon(sx, sy, sz), mode) == target_bits:
+            return sz
+    return None
+
+
+# the ramp sizes the boundary strategies draw from: run along the slope (sx) and width (sy)
+RAMP_RUNS = (0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0)
+RAMP_WIDTHS = (1.0, 2.0, 3.3)
+
+
+@lru_cache(maxsize=None)
+def exact_wedges(target_bits: int, mode: Mode = EXACT) -> tuple[tuple[float, float, float], ...]:
+    """Every (sx, sy, sz) from RAMP_RUNS x RAMP_WIDTHS whose slope lands exactly on target_bits.
+    Some pairs have none: normalize's float32 output skips values (a rise one ulp up moves
+    normal.z by more than one ulp), so the table keeps only the pairs that reach the target."""
+    found = []
+    for sx in RAMP_RUNS:
+        for sy in RAMP_WIDTHS:
+            sz = wedge_rise_for(sx, sy, target_bits, mode)
+            if sz is not None:
+                found.append((sx, sy, sz))
+    return tuple(found)
