@@ -19,6 +19,7 @@ from acconform.staging import MOVER_ID, mover_setup_dims, shadow_cells
 from acconform.scene import CylSphereShape, Scene, SphereShape, StaticObject
 
 from .anchors import anchor, harness
+from .constants import BLOCK_LENGTH, CELL_LENGTH
 from .errors import AceException
 from .frame import Position
 from .geom.cyl_sphere import CylSphere
@@ -29,6 +30,7 @@ from .part_array import PartArray, PhysicsPart
 from .physics_obj import PhysicsObj
 from .setup import Setup
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
+from .transition.branches import Trace
 
 # the mover's PhysicsObj.ID, as the oracle's: player range, so PhysicsObj.IsPlayer is true
 
@@ -108,9 +110,27 @@ def build_static(record: StaticObject, landblock_ids: list[int], lscape: LScape)
     return obj
 
 
+@harness("counts the cell_border and landblock_border boundaries where a transition ends")
+def border_boundaries(origin, trace: Trace) -> None:
+    """A block-local end x or y exactly on a cell border (a multiple of 24 m; 0 and 192 are
+    landblock borders too)."""
+    for c in (float(origin.x), float(origin.y)):
+        if c % CELL_LENGTH == 0.0:
+            trace["boundary:cell_border"] += 1
+            if c % BLOCK_LENGTH == 0.0:
+                trace["boundary:landblock_border"] += 1
+
+
 @anchor(None, "PhysicsObj.cs:transition", "the scene -> outcome driver around PhysicsObj.transition")
 def run_scene(scene: Scene, mode: str = "exact", trace=None) -> Outcome:
-    """Run the scene's transition in the port; `trace` (a Counter) is incremented in place."""
+    """Run the scene's transition in the port; `trace` (a Counter, or a branches.Trace to keep
+    the closest approach to each boundary too) is incremented in place."""
+    if trace is not None and not isinstance(trace, Trace):
+        into, trace = trace, Trace()
+        try:
+            return run_scene(scene, mode, trace)
+        finally:
+            into.update(trace)
     try:
         with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
             return _run(scene, get_mode(mode), trace)
@@ -136,6 +156,8 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
     old_pos = mover.position.copy()
     new_pos = Position.from_record(scene.mover.end, mode)
     trans, ok = mover.transition(old_pos, new_pos, False, lscape, trace)
+    if trace is not None:
+        border_boundaries(trans.sphere_path.cur_pos.frame.origin, trace)
 
     sp = trans.sphere_path
     ci = trans.collision_info

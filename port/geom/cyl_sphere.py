@@ -176,6 +176,10 @@ class CylSphere:
             disp_ = glob_sphere_.center - self.low_point
 
         radsum = self.radius - EPSILON + glob_sphere.radius
+        if path.trace is not None:
+            path.trace.boundary("cylsphere_tangent", disp.x * disp.x + disp.y * disp.y, radsum * radsum)
+            if path.num_sphere > 1:
+                path.trace.boundary("cylsphere_tangent", disp_.x * disp_.x + disp_.y * disp_.y, radsum * radsum)
 
         if path.insert_type == INSERT_TYPE_PLACEMENT or path.obstruction_ethereal:
             if self.collides_with_sphere(glob_sphere, disp, radsum):

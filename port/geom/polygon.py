@@ -421,6 +421,8 @@ class Polygon:
     @anchor("CPolygon::walkable_hits_sphere", "Polygon.cs:walkable_hits_sphere")
     def walkable_hits_sphere(self, path, sphere, up: Vector3) -> bool:
         dp = dot(up, self.plane.normal)
+        if path.trace is not None:
+            path.trace.walkable(dp, path.walkable_allowance)
         if dp <= path.walkable_allowance:
             return False
         contact_point = zero_like(sphere.radius)

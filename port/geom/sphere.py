@@ -242,6 +242,10 @@ def intersects_sphere(center: Vector3, radius, transition, is_creature: bool) ->
         disp_ = glob_sphere_.center - center
 
     radsum = glob_sphere.radius + radius - EPSILON
+    if path.trace is not None:
+        path.trace.boundary("sphere_tangent", disp.length_squared(), radsum * radsum)
+        if path.num_sphere > 1:
+            path.trace.boundary("sphere_tangent", disp_.length_squared(), radsum * radsum)
 
     if path.obstruction_ethereal or path.insert_type == INSERT_TYPE_PLACEMENT:
         if disp.length_squared() <= radsum * radsum:
@@ -437,6 +441,8 @@ def step_sphere_down(center: Vector3, radius, transition, check_pos: Sphere, dis
 
     disp = Vector3(disp.x, disp.y, disp.z + interp) * inv_rad_sum
 
+    if path.trace is not None:
+        path.trace.walkable(disp.z, path.walkable_allowance)
     if disp.z <= path.walkable_allowance:
         return TransitionState.OK, disp
 

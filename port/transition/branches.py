@@ -9,6 +9,15 @@ scene (tests/port/objects).
 
 from __future__ import annotations
 
+from collections import Counter
+
+from acconform.numerics import f32_bits
+
+from ..anchors import harness
+from ..constants import FLOOR_Z, LANDING_Z
+
+FLOOR_Z_BITS, LANDING_Z_BITS = f32_bits(FLOOR_Z), f32_bits(LANDING_Z)
+
 BRANCHES: dict[str, str] = {
     # Transition.AdjustOffset
     "adjust_offset:slide_no_contact": "sliding normal opposes the offset, no contact plane: its component removed",
@@ -91,3 +100,50 @@ REACHED_BY_OBJECT_SCENES: dict[str, str] = {
     "transitional_insert:collide_landed": "SetCollide comes from BSP/sphere collisions",
     "transitional_insert:collide_reset": "SetCollide comes from BSP/sphere collisions",
 }
+
+
+# Exact boundaries: comparisons whose two sides can be bit-equal, where a `>=` written `>` (or a
+# constant one ulp off) changes behaviour and nothing else does. A Trace counts each exact hit
+# as "boundary:<name>" and keeps, per boundary, the closest approach in float32 ulps (for
+# Hypothesis' target()).
+BOUNDARIES: dict[str, str] = {
+    "floor_z": "a walkable test compared a normal.z (or allowance) bit-equal to FloorZ",
+    "landing_z": "a walkable test compared a normal.z (or allowance) bit-equal to LandingZ",
+    "sphere_tangent": "a sphere test's squared distance bit-equal to the squared radius sum",
+    "cylsphere_tangent": "a cylsphere test's squared horizontal distance bit-equal to the squared radius sum",
+    "cell_border": "the transition ended exactly on a cell border (x or y a multiple of 24 m)",
+    "landblock_border": "the transition ended exactly on a landblock border (x or y a multiple of 192 m)",
+}
+
+
+def _ordered(bits: int) -> int:
+    # float32 bit patterns as integers that order like the floats (-0 and +0 meet at 0)
+    return bits if bits < 0x80000000 else 0x80000000 - bits
+
+
+class Trace(Counter):
+    """A run's branch counts (`trace[branch]`), plus `closest`: per boundary, the fewest float32
+    ulps seen between a compared value and its threshold."""
+
+    __slots__ = ("closest",)
+
+    def __init__(self):
+        super().__init__()
+        self.closest: dict[str, int] = {}
+
+    @harness("counts an exact hit of a boundary and keeps its closest approach in ulps")
+    def boundary(self, name: str, value, threshold) -> None:
+        ulps = abs(_ordered(f32_bits(value)) - _ordered(f32_bits(threshold)))
+        if ulps == 0:
+            self["boundary:" + name] += 1
+        if ulps < self.closest.get(name, 1 << 32):
+            self.closest[name] = ulps
+
+    @harness("a walkable test as the floor_z or landing_z boundary, by its threshold")
+    def walkable(self, value, threshold) -> None:
+        """A walkable test against FloorZ or LandingZ (other thresholds are no boundary of ours)."""
+        t = f32_bits(threshold)
+        if t == FLOOR_Z_BITS:
+            self.boundary("floor_z", value, threshold)
+        elif t == LANDING_Z_BITS:
+            self.boundary("landing_z", value, threshold)

@@ -12,7 +12,7 @@ from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Plane, Vector3, dot
 
 from ..anchors import anchor
-from ..constants import EPSILON
+from ..constants import EPSILON, FLOOR_Z
 from ..vec import zero_like
 
 
@@ -104,6 +104,8 @@ class ObjectInfo:
         if dist >= -EPSILON:
             if dist > EPSILON:
                 return TransitionState.OK
+            if path.trace is not None and not path.step_down and self.state & ObjectInfoState.OnWalkable:
+                path.trace.walkable(contact_plane.normal.z, FLOOR_Z)
             if path.step_down or not self.state & ObjectInfoState.OnWalkable or PhysicsObj.is_valid_walkable(contact_plane.normal):
                 collision.set_contact_plane(contact_plane, is_water)
                 collision.contact_plane_cell_id = land_cell_id
@@ -116,6 +118,8 @@ class ObjectInfo:
             return TransitionState.Collided
         z_dist = dist / contact_plane.normal.z
 
+        if path.trace is not None and not path.step_down and self.state & ObjectInfoState.OnWalkable:
+            path.trace.walkable(contact_plane.normal.z, FLOOR_Z)
         if path.step_down or not self.state & ObjectInfoState.OnWalkable or PhysicsObj.is_valid_walkable(contact_plane.normal):
             collision.set_contact_plane(contact_plane, is_water)
             collision.contact_plane_cell_id = land_cell_id

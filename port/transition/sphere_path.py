@@ -79,6 +79,8 @@ class SpherePath:
     neg_collision_normal: Vector3 | None = None
     neg_poly_hit: bool = False
     placement_allows_sliding: bool = False
+    # not ACE's: the run's branches.Trace (or None), for the boundary tests this path makes
+    trace: object = None
 
     def __post_init__(self):
         # the C# constructor: new Positions and Sphere, empty lists, default struct fields
@@ -193,6 +195,8 @@ class SpherePath:
 
     @anchor("SPHEREPATH::is_walkable_allowable", "SpherePath.cs:IsWalkableAllowable")
     def is_walkable_allowable(self, zval) -> bool:
+        if self.trace is not None:
+            self.trace.walkable(zval, self.walkable_allowance)
         return bool(zval > self.walkable_allowance)
 
     @anchor("SPHEREPATH::precipice_slide", "SpherePath.cs:PrecipiceSlide")

@@ -15,7 +15,7 @@ from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Mode, Plane, Vector3, cs_ceiling, cs_floor, cross, dot
 
 from ..anchors import anchor
-from ..constants import EPSILON, EPSILON_SQ, LANDING_Z, STEP_DOWN_PROBE
+from ..constants import EPSILON, EPSILON_SQ, FLOOR_Z, LANDING_Z, STEP_DOWN_PROBE
 from ..land import land_defs
 from ..land.obj_cell import EMPTY_CELL, find_cell_list_path
 from ..vec import normalize_check_small, snap_to_plane, unit_z_like
@@ -43,6 +43,7 @@ class Transition:
         self.lscape = lscape
         self.trace = trace
         self.init()
+        self.sphere_path.trace = trace
 
     def _hit(self, branch: str) -> None:
         if self.trace is not None:
@@ -467,6 +468,8 @@ class Transition:
         transition_state = self.transitional_insert(5)
         sp.step_down = False
 
+        if self.trace is not None and transition_state == TransitionState.OK and ci.contact_plane_valid:
+            self.trace.walkable(ci.contact_plane.normal.z, z_val)
         if (transition_state == TransitionState.OK and ci.contact_plane_valid and ci.contact_plane.normal.z >= z_val
                 and (not self.object_info.state & ObjectInfoState.EdgeSlide or sp.step_up or self.check_walkable(z_val))):
             sp.backup = sp.insert_type
@@ -692,6 +695,8 @@ class Transition:
             ci.last_known_contact_plane_cell_id = ci.contact_plane_cell_id
             ci.last_known_contact_plane_is_water = ci.contact_plane_is_water
             oi.state |= ObjectInfoState.Contact
+            if self.trace is not None:
+                self.trace.walkable(ci.contact_plane.normal.z, FLOOR_Z)
             if oi.is_valid_walkable(ci.contact_plane.normal):
                 oi.state |= ObjectInfoState.OnWalkable
             else:

@@ -775,7 +775,7 @@ def _pos_hits(a):
 
 def _walkable_hits(a):
     vs, allowance, s, up = a
-    return port_polygon(vs).walkable_hits_sphere(SimpleNamespace(walkable_allowance=F(allowance)), sph(s), vec(up))
+    return port_polygon(vs).walkable_hits_sphere(SimpleNamespace(walkable_allowance=F(allowance), trace=None), sph(s), vec(up))
 
 
 def _adjust_to_plane(a):

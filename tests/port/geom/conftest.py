@@ -50,6 +50,7 @@ class FakePath:
     check_walkable: bool = False
     collide: bool = False
     walkable_allowance: object = None
+    trace: object = None
     walk_interp: object = None
     step_down_amt: object = None
     offsets: list = field(default_factory=list)

@@ -34,6 +34,7 @@ class Path:
     def __init__(self, walk_interp=1.0, walkable_allowance=FLOOR_Z):
         self.walk_interp = F(walk_interp)
         self.walkable_allowance = F(walkable_allowance)
+        self.trace = None
 
 
 @pytest.mark.anchor("CPolygon::make_plane")
