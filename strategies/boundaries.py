@@ -1,5 +1,5 @@
 """Exact boundaries by construction: float32 geometry solved so that ACE's own arithmetic lands
-on a threshold's bit pattern, not near it.
+on a threshold's bit pattern, not near it (slopes at FloorZ and LandingZ, tangent obstacles).
 
 A walkable test (`normal.z >= FloorZ`), a landing test (`>= LandingZ`) or a `>=`/`>` swap in
 either changes behaviour only when the computed normal.z *is* the constant. Drawn at random, a
@@ -18,8 +18,10 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
+import numpy as np
+
 from acconform.numerics import EXACT, Mode, f32_bits, f32_from_bits, to_f32
-from acconform.port.constants import FLOOR_Z, LANDING_Z
+from acconform.port.constants import EPSILON, FLOOR_Z, LANDING_Z
 from acconform.port.geom.polygon import Polygon
 from acconform.scene import PolygonRec
 
@@ -45,6 +47,13 @@ def slope_polygon(sx: float, sy: float, sz: float) -> PolygonRec:
 def plane_normal_z_bits(poly: PolygonRec, mode: Mode = EXACT) -> int:
     """The bits of normal.z that ACE's DAT polygon constructor (make_plane) computes for `poly`."""
     return f32_bits(Polygon.from_rec(poly, mode).plane.normal.z)
+
+
+@lru_cache(maxsize=None)
+def slope_normal(sx: float, sy: float, sz: float, mode: Mode = EXACT) -> tuple[float, float, float]:
+    """The slope's plane normal as ACE's DAT polygon constructor computes it (local frame)."""
+    n = Polygon.from_rec(slope_polygon(sx, sy, sz), mode).plane.normal
+    return float(n.x), float(n.y), float(n.z)
 
 
 @lru_cache(maxsize=None)
@@ -78,3 +87,54 @@ def exact_wedges(target_bits: int, mode: Mode = EXACT) -> tuple[tuple[float, flo
             if sz is not None:
                 found.append((sx, sy, sz))
     return tuple(found)
+
+
+# ---------------------------------------------------------------- tangency
+# Block-local coordinates in [64, 128) are the multiples of 2^-17 there, so a sum of such a
+# coordinate and a length that is itself a multiple of 2^-17 is exact when it stays in range.
+# A mover moving along an axis by such a length, in one step (no longer than its radius), checks
+# its sphere exactly at its end; an obstacle centred exactly the radius sum beyond the end (the
+# radius sum as ACE computes it, itself a multiple of 2^-17) is then exactly tangent there:
+# disp is (radsum, 0, 0), disp.LengthSquared() == radsum * radsum bit for bit.
+GRID = 2.0 ** -17
+GRID_LO, GRID_HI = 64.0, 128.0
+
+
+def on_grid(x) -> bool:
+    return float(x) % GRID == 0.0
+
+
+def sphere_radsum(mover_r, obstacle_r):
+    """Sphere.IntersectsSphere's radius sum: glob_sphere.radius + radius - EPSILON (float32)."""
+    return (np.float32(mover_r) + np.float32(obstacle_r)) - np.float32(EPSILON)
+
+
+def cylsphere_radsum(mover_r, cyl_r):
+    """CylSphere.IntersectsSphere's radius sum: radius - EPSILON + glob_sphere.radius (float32)."""
+    return (np.float32(cyl_r) - np.float32(EPSILON)) + np.float32(mover_r)
+
+
+@lru_cache(maxsize=4096)
+def tangent_radius(kind: str, mover_r: float, want: float) -> tuple[float, float]:
+    """(obstacle radius, radius sum): a float32 radius near `want` (at or above it, bar rounding)
+    whose radius sum with a mover of radius mover_r, as ACE computes it for `kind` ("sphere" or
+    "cylsphere"), is a multiple of GRID."""
+    radsum = sphere_radsum if kind == "sphere" else cylsphere_radsum
+    target = math.ceil(float(radsum(mover_r, want)) / GRID) * GRID
+    for _ in range(64):
+        # the radius whose sum lands on `target`, searched a few ulps around the real solution
+        b = f32_bits(to_f32(target + float(EPSILON) - float(np.float32(mover_r))))
+        for k in sorted(range(-4, 5), key=abs):
+            r = f32_from_bits(b + k)
+            if float(radsum(mover_r, r)) == target:
+                return r, target
+        target += GRID
+    # a mover radius with bits below the sum's ulp can round every sum to even: only some
+    # sums are reachable. A mover radius that is a multiple of GRID never has that problem.
+    raise ValueError(f"no {kind} radius near {want} gives a radius sum on the grid with mover radius {mover_r}"
+                     " (round the mover radius to a multiple of GRID)")
+
+
+def grid_floor(x: float) -> float:
+    """The multiple of GRID at or below x."""
+    return math.floor(x / GRID) * GRID

@@ -12,6 +12,14 @@ the branch it aims at needs (the scatter policy in scenes.py places objects alon
   0.4 and radius 0.48). Reaches StepUp ok/fail and the neg-poly step-up.
 - ``wall``: a wall approached head-on to grazing (89.5 degrees), or the inside corner of two walls;
   sometimes airborne (SetCollide). Reaches slides, the collide paths, AdjustOffset's crease.
+- ``slope``: a ramp whose slope's normal.z is exactly FloorZ or LandingZ, or one ulp either side
+  (strategies/boundaries.py solves its rise); the mover walks up onto it from its foot, stands on
+  it (its contact plane the slope's) walking up, down or across, or lands on it from above.
+  Reaches the walkable and landing tests at exactly their thresholds.
+- ``seam``: two floor halves under one BSP node split between them (shapes.split_floor), level or
+  a little apart in height; the mover stands on the seam, within reach of both, and walks across
+  it, along it or aslant, or lands on it. find_walkable then finds a walkable polygon on each
+  side of the split, and the order it visits them decides which one it keeps.
 
 BSP objects get ``Static|HasPhysicsBSP`` (what ACE's makeObject leaves via CacheHasPhysicsBSP),
 now and then with Ethereal (and IgnoreCollisions), or ``Static`` alone (walked through).
@@ -30,6 +38,7 @@ from hypothesis import strategies as st
 from acconform.flags import PhysicsState, TransientState
 from acconform.numerics import to_f32
 
+from . import boundaries as bd
 from . import draws as dr
 from . import shapes as sh
 
@@ -101,6 +110,7 @@ class Plan:
         self.steps: list[float] = []
         self.velocity = None  # None: drawn from VELOCITIES
         self.plane_dz = None  # the start's height over its contact plane; None: drawn from PLANE_DZ
+        self.stand_normal = None  # the contact plane's global normal where the mover stands; None: (0, 0, 1)
 
 
 # what a ledge scene is for (the first is the plainest, where shrinking goes):
@@ -304,9 +314,84 @@ def wall(draw, gx: float, gy: float, r: float) -> Plan:
     return p
 
 
+SLOPE_TARGETS = st.sampled_from(tuple(bd.Z_BOUNDARIES))
+SLOPE_WEDGES = {name: st.sampled_from(bd.exact_wedges(bits)) for name, bits in bd.Z_BOUNDARIES.items()}
+SLOPE_VARIANTS = st.sampled_from(("on_slope", "on_slope", "walk_up", "land"))
+SLOPE_YAWS = st.sampled_from((0.0, 90.0, 180.0, 270.0, 30.0, 45.0))  # a yaw leaves normal.z's bits as they are
+SLOPE_HEADINGS = st.sampled_from((0.0, 180.0, 90.0, -90.0, 20.0, 160.0))  # up, down, across, slanted
+SLOPE_ALONG = dr.floats(-0.3, 0.3)
+SLOPE_GAPS = st.sampled_from((0.0, 0.1, 0.5))
+
+
+@st.composite
+def slope(draw, gx: float, gy: float, r: float) -> Plan:
+    p = Plan()
+    target = draw(SLOPE_TARGETS)
+    sx, sy, sz = draw(SLOPE_WEDGES[target])
+    yaw = draw(SLOPE_YAWS)
+    variant = draw(SLOPE_VARIANTS)
+    along = draw(SLOPE_ALONG) * sy
+    nx, _, nz = bd.slope_normal(sx, sy, sz)
+    if variant == "walk_up":
+        # on the ground before the foot, walking up the slope
+        gap = draw(SLOPE_GAPS)
+        u = -sx / 2 - r - gap
+        p.heading = yaw
+        p.length = to_f32(r + gap + sx / 2)  # to the middle of the slope
+    else:
+        u = sx * draw(SLOPE_ALONG)  # over the middle part of the slope
+        rise = (u + sx / 2) * sz / sx
+        p.stand_on = to_f32(rise + r / nz - r) if variant == "on_slope" else to_f32(rise)
+        c, s_ = math.cos(math.radians(yaw)), math.sin(math.radians(yaw))
+        p.stand_normal = (to_f32(nx * c), to_f32(nx * s_), nz)
+        p.heading = yaw + draw(SLOPE_HEADINGS)
+        p.length = to_f32(r * dr.take(draw, WALK_STEPS))
+        if variant == "land":
+            p.airborne = to_f32(r * draw(SLOPE_DROPS))
+            p.stand_normal = None
+    ox, oy = _rot(yaw, u, along)
+    p.objects.append((sh.wedge(sx, sy, sz), gx - ox, gy - oy, yaw, BSP_STATE))
+    p.begin = (gx, gy)
+    p.edge_slide = draw(EDGE_SLIDE)
+    p.steps.append(sz)
+    p.label = f"slope-{target.replace('_', '-')}-{variant.replace('_', '-')}"
+    return p
+
+
+SLOPE_DROPS = st.sampled_from((0.05, 0.5, 2.0))
+
+SEAM_DROPS = st.sampled_from((0.01, 0.01, EPS, 0.1, 0.0, -0.01, -EPS))  # the negative half is higher: both sides adjust
+SEAM_ACROSS = dr.floats(-0.5, 0.5)  # the start's distance from the seam, in radii
+SEAM_HEADINGS = st.sampled_from((0.0, 180.0, 90.0, 45.0, -30.0, 170.0))
+SEAM_VARIANTS = st.sampled_from(("stand", "stand", "land"))
+
+
+@st.composite
+def seam(draw, gx: float, gy: float, r: float) -> Plan:
+    p = Plan()
+    sx, sy = draw(TOP_SIDES), draw(TOP_SIDES)
+    h = draw(sh.STEPS)
+    dh = draw(SEAM_DROPS)
+    h_neg = to_f32(max(h + dh, 0.02))
+    yaw = dr.take(draw, YAWS)
+    u = to_f32(draw(SEAM_ACROSS) * r)
+    along = draw(SLOPE_ALONG) * sy
+    ox, oy = _rot(yaw, u, along)
+    p.objects.append((sh.split_floor(sx, sy, h, h_neg), gx - ox, gy - oy, yaw, BSP_STATE))
+    p.begin = (gx, gy)
+    p.stand_on = max(h, h_neg)
+    if draw(SEAM_VARIANTS) == "land":
+        p.airborne = to_f32(r * draw(SLOPE_DROPS))
+    p.heading = yaw + draw(SEAM_HEADINGS)
+    p.length = to_f32(r * dr.take(draw, WALK_STEPS))
+    p.edge_slide = draw(EDGE_SLIDE)
+    p.steps += [h, h_neg]
+    p.label = "seam" + ("-land" if p.airborne else "")
+    return p
+
 # a policy: (global x, global y, mover radius) -> a strategy of Plans (built per scene: a policy
 # depends on the mover; it costs little next to the span of its own it gives the shrinker)
-POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall}
+POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall, "slope": slope, "seam": seam}
 
 
 def mover_flags(plan: Plan) -> tuple[int, int]:

@@ -14,11 +14,12 @@ from hypothesis import strategies as st
 
 from acconform.flags import PhysicsState, TransientState
 from acconform.numerics import to_f32
-from acconform.scene import (IDENTITY, ContactPlane, Frame, Mover, PlaneRec, Position, Scene, SphereRec,
-                             StaticObject)
+from acconform.scene import (IDENTITY, ContactPlane, CylSphereShape, Frame, Mover, PlaneRec, Position, Scene, SphereRec,
+                             SphereShape, StaticObject)
 
 from acconform import staging
 
+from . import boundaries as bd
 from . import draws as dr
 from . import objects as ob
 from . import shapes as sh
@@ -144,7 +145,10 @@ QUARTERS = dr.ints(0, 3)
 OBJECT_COUNTS = dr.ints(1, 3)
 
 
-BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter"))
+BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter",
+                                "slope", "seam"))
+# obstacles: scattered along a free path, or "tangent": one exactly tangent to the mover's end
+OBSTACLE_POLICIES = st.sampled_from(("scatter", "scatter", "scatter", "scatter", "scatter", "tangent"))
 # terrain: a free path, or "border_slope": grounded on tilted terrain, a few metres from a block
 # border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
 TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope"))
@@ -180,7 +184,7 @@ def draw_scene(draw, kind: str) -> Scene:
             lx, ly = ly, lx
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     vx, vy = round(gx0 / CELL), round(gy0 / CELL)
-    policy = draw(BSP_POLICIES) if kind == "bsp" else "scatter"
+    policy = draw(BSP_POLICIES) if kind == "bsp" else draw(OBSTACLE_POLICIES) if kind == "obstacles" else "scatter"
     flat = kind != "terrain" and (policy != "scatter" or draw(QUARTERS) < 3)
     field = tr.field_near(draw, vx, vy, flat=flat, tilt=crossing)
     world = _World(field)
@@ -188,6 +192,8 @@ def draw_scene(draw, kind: str) -> Scene:
     spheres = draw(MOVER_SPHERES)
     r = spheres[0].radius
     reach = max(s.center[2] + s.radius for s in spheres)
+    if policy == "tangent":
+        return _tangent_scene(draw, world, bx, by, spheres)
     if policy != "scatter":
         return _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres)
 
@@ -343,6 +349,9 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
     if plan.stand_on is not None:
         _, (pz, _, _) = world.ground(plan.objects[0][1], plan.objects[0][2])
         z0, n0, d0 = to_f32(pz + plan.stand_on), (0.0, 0.0, 1.0), to_f32(-to_f32(pz + plan.stand_on))
+        if plan.stand_normal is not None:
+            n0 = plan.stand_normal
+            d0 = to_f32(-(n0[0] * lx + n0[1] * ly + n0[2] * z0))
     contact = None
     if plan.airborne:
         bz = to_f32(z0 + plan.airborne)
@@ -363,6 +372,46 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
                   contact_plane=contact, velocity=plan.velocity if plan.velocity is not None else draw(ob.VELOCITIES))
     name = f"{kind}:{plan.label}" + (":air" if plan.airborne else "") + ("" if plan.edge_slide else ":no-edge-slide")
     return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, name)
+
+
+TANGENT_STARTS = dr.f32(70.0, 118.0)  # block-local, inside boundaries.GRID_LO..GRID_HI with room to move
+AXES = st.sampled_from(((1, 0), (-1, 0), (0, 1), (0, -1)))
+TANGENT_STEPS = dr.f32(0.25, 1.0)  # of the mover's radius: one step, so the check position is the end
+TANGENT_KINDS = st.sampled_from(("sphere", "cylsphere"))
+TANGENT_RADII = dr.f32(0.1, 2.0)
+TANGENT_HEIGHTS = dr.f32(0.5, 4.0)
+
+
+def _tangent_scene(draw, world, bx, by, spheres) -> Scene:
+    """An obstacle exactly tangent to the mover's sphere at the end of a one-step move along an
+    axis (strategies/boundaries.py: every coordinate and the radius sum sit on GRID, so the
+    check position is the end and disp is (radsum, 0, 0) bit for bit)."""
+    r = bd.grid_floor(spheres[0].radius)
+    spheres = tuple(SphereRec((0.0, 0.0, r if i == 0 else s.center[2]), r) for i, s in enumerate(spheres))
+    lx, ly = draw(TANGENT_STARTS), draw(TANGENT_STARTS)
+    ax, ay = draw(AXES)
+    step = bd.grid_floor(r * draw(TANGENT_STEPS))
+    gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
+    gx1, gy1 = gx0 + step * ax, gy0 + step * ay
+    _, (z0, n0, d0) = world.ground(gx0, gy0)
+    kind = draw(TANGENT_KINDS)
+    radius, radsum = bd.tangent_radius(kind, r, draw(TANGENT_RADII))
+    ox, oy = gx1 + radsum * ax, gy1 + radsum * ay
+    if kind == "sphere":
+        shape, oz = SphereShape(SphereRec((0.0, 0.0, 0.0), radius)), to_f32(to_f32(z0) + r)
+    else:
+        shape, oz = CylSphereShape((0.0, 0.0, 0.0), radius, draw(TANGENT_HEIGHTS)), z0
+    begin_cell = cell_of(bx, by, lx, ly)
+    state = int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if draw(dr.BOOLEANS) else 0)
+    steps = step_heights([r * t for t in (0.5, 1.0, 1.5)])
+    mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, z0))), end=position(gx1, gy1, z0),
+                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps),
+                  step_down_height=dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps),
+                  state=state, transient_state=int(TransientState.Contact | TransientState.OnWalkable),
+                  contact_plane=ContactPlane(begin_cell, PlaneRec(n0, d0)), velocity=(0.0, 0.0, 0.0))
+    reach = max(s.center[2] + s.radius for s in spheres)
+    placed = [(shape, ox, oy, oz, IDENTITY, int(PhysicsState.Static))]
+    return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, f"obstacles:tangent-{kind}")
 
 
 def _scene(world, bx, by, p0, p1, reach, placed, mover, name) -> Scene:

@@ -109,6 +109,21 @@ def prism(n: int, radius: float, height: float, phase: float = 0.0) -> BSPShape:
     return solid(faces)
 
 
+def split_floor(sx: float, sy: float, h_pos: float, h_neg: float) -> BSPShape:
+    """Two floor halves (two-sided) meeting at x = 0, at heights h_pos (x >= 0) and h_neg (x <= 0),
+    under one BSP node whose splitting plane is x = 0: a sphere on the seam reaches a walkable
+    polygon on each side, and which one find_walkable keeps depends on the order it visits them."""
+    x0, x1, y0, y1 = to_f32(-sx / 2), to_f32(sx / 2), to_f32(-sy / 2), to_f32(sy / 2)
+    pos = PolygonRec(tuple(_v(p) for p in [(0.0, y0, h_pos), (x1, y0, h_pos), (x1, y1, h_pos), (0.0, y1, h_pos)]),
+                     int(CullMode.None_))
+    neg = PolygonRec(tuple(_v(p) for p in [(x0, y0, h_neg), (0.0, y0, h_neg), (0.0, y1, h_neg), (x0, y1, h_neg)]),
+                     int(CullMode.None_))
+    sphere = bounding_sphere(pos.vertices + neg.vertices)
+    root = BSPNode(PlaneRec((1.0, 0.0, 0.0), 0.0), sphere,
+                   BSPLeaf((0,), False, bounding_sphere(pos.vertices)), BSPLeaf((1,), False, bounding_sphere(neg.vertices)))
+    return BSPShape((pos, neg), root, sphere)
+
+
 def polygon_shape(verts) -> BSPShape:
     """One convex polygon (two-sided), its BSP a single node on its plane."""
     poly = PolygonRec(tuple(_v(p) for p in verts), int(CullMode.None_))

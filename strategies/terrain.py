@@ -33,13 +33,13 @@ import numpy as np
 from hypothesis import strategies as st
 
 from acconform.numerics import to_f32
+from acconform.port.constants import FLOOR_Z
 from acconform.scene import DEFAULT_LAND_HEIGHT_TABLE, Landblock
 
 from . import draws as dr
 
 CELL = 24.0
 BLOCK = 192.0
-FLOOR_Z = 0.66417414618662751  # PhysicsGlobals.FloorZ as C# writes it (float32 0x3F2A0751)
 
 # terrain words: bits 0-1 road, 2-6 terrain type, 11-15 scenery
 GRASSLAND = 0x1 << 2

@@ -92,8 +92,11 @@ class BSPNode:
             return self.pos_node.find_walkable(path, valid_pos, polygon, movement, up, changed)
         if dist <= -reach:
             return self.neg_node.find_walkable(path, valid_pos, polygon, movement, up, changed)
-        polygon, changed = self.pos_node.find_walkable(path, valid_pos, polygon, movement, up, changed)
-        return self.neg_node.find_walkable(path, valid_pos, polygon, movement, up, changed)
+        found, changed = self.pos_node.find_walkable(path, valid_pos, polygon, movement, up, changed)
+        last, changed = self.neg_node.find_walkable(path, valid_pos, found, movement, up, changed)
+        if path.trace is not None and found is not polygon and last is not found:
+            path.trace["boundary:bsp_split_walkable"] += 1
+        return last, changed
 
     @anchor("BSPNODE::hits_walkable", "BSPNode.cs:hits_walkable")
     def hits_walkable(self, path, valid_pos: Sphere, up: Vector3) -> bool:

@@ -111,6 +111,7 @@ BOUNDARIES: dict[str, str] = {
     "landing_z": "a walkable test compared a normal.z (or allowance) bit-equal to LandingZ",
     "sphere_tangent": "a sphere test's squared distance bit-equal to the squared radius sum",
     "cylsphere_tangent": "a cylsphere test's squared horizontal distance bit-equal to the squared radius sum",
+    "bsp_split_walkable": "a BSP node's two sides both gave a walkable polygon (the visiting order decides)",
     "cell_border": "the transition ended exactly on a cell border (x or y a multiple of 24 m)",
     "landblock_border": "the transition ended exactly on a landblock border (x or y a multiple of 192 m)",
 }

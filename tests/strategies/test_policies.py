@@ -104,11 +104,14 @@ def test_back_probe_ledges_walk_off_at_rest_with_edge_slide_and_a_step_down_shor
         assert len(s.objects) == 1 and top.state == BSP_STATE
 
 
-def test_back_probe_ledges_reach_the_back_probe_precipice_slide(bsp_scenes):
-    run = pytest.importorskip("acconform.port.run")
+def test_back_probe_ledges_reach_the_back_probe_precipice_slide():
     from collections import Counter
 
-    probes = [s for s in bsp_scenes if s.name.startswith("bsp:ledge-back-probe")]
+    from acconform.port import run
+
+    # over four seeds: one seed's few dozen back-probe ledges are mostly mutations of each other
+    probes = [s for seed in (21, 22, 23, 24) for s in sample_scenes(("bsp",), 200, seed)
+              if s.name.startswith("bsp:ledge-back-probe")]
     fired = 0
     for s in probes:
         trace: Counter = Counter()

@@ -121,7 +121,7 @@ def test_a_mover_near_a_border_has_the_neighbouring_landblock():
 
 
 def test_bsp_shapes_have_outward_planes_and_covering_bounding_spheres():
-    from acconform.scene import BSPLeaf
+    from acconform.scene import BSPLeaf, BSPNode
 
     seen = 0
     for scene in sample_scenes(("bsp",), 30, 2):
@@ -133,6 +133,17 @@ def test_bsp_shapes_have_outward_planes_and_covering_bounding_spheres():
             c, r = s.sphere.center, s.sphere.radius
             assert all(math.dist(c, p) <= r for p in pts)
             node = s.root
+
+            def side(leaf):
+                return [p for i in leaf.polygons for p in s.polygons[i].vertices]
+
+            if isinstance(node, BSPNode) and isinstance(node.front, BSPLeaf) and node.front.polygons:
+                # a split floor (shapes.split_floor): each leaf's polygons on its own side of the split
+                n, d = node.plane.normal, node.plane.d
+                assert all(n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + d >= -1e-3 for p in side(node.front))
+                assert all(n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + d <= 1e-3 for p in side(node.back))
+                seen += 1
+                continue
             while not isinstance(node, BSPLeaf):
                 n, d = node.plane.normal, node.plane.d
                 assert all(n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + d <= 1e-3 for p in pts)
