@@ -111,6 +111,7 @@ class Plan:
         self.velocity = None  # None: drawn from VELOCITIES
         self.plane_dz = None  # the start's height over its contact plane; None: drawn from PLANE_DZ
         self.stand_normal = None  # the contact plane's global normal where the mover stands; None: (0, 0, 1)
+        self.stand_lift = 0.0  # the origin's height over the contact plane beneath it (a sphere on a slope)
 
 
 # what a ledge scene is for (the first is the plainest, where shrinking goes):
@@ -341,7 +342,8 @@ def slope(draw, gx: float, gy: float, r: float) -> Plan:
     else:
         u = sx * draw(SLOPE_ALONG)  # over the middle part of the slope
         rise = (u + sx / 2) * sz / sx
-        p.stand_on = to_f32(rise + r / nz - r) if variant == "on_slope" else to_f32(rise)
+        p.stand_lift = r / nz - r if variant == "on_slope" else 0.0
+        p.stand_on = to_f32(rise + p.stand_lift)
         c, s_ = math.cos(math.radians(yaw)), math.sin(math.radians(yaw))
         p.stand_normal = (to_f32(nx * c), to_f32(nx * s_), nz)
         p.heading = yaw + draw(SLOPE_HEADINGS)

@@ -351,7 +351,7 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
         z0, n0, d0 = to_f32(pz + plan.stand_on), (0.0, 0.0, 1.0), to_f32(-to_f32(pz + plan.stand_on))
         if plan.stand_normal is not None:
             n0 = plan.stand_normal
-            d0 = to_f32(-(n0[0] * lx + n0[1] * ly + n0[2] * z0))
+            d0 = to_f32(-(n0[0] * lx + n0[1] * ly + n0[2] * (z0 - plan.stand_lift)))
     contact = None
     if plan.airborne:
         bz = to_f32(z0 + plan.airborne)
