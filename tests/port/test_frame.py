@@ -353,3 +353,24 @@ if __name__ == "__main__":
     numerics_replay.main(sys.argv[1:], _data, OPS, _inputs, _net_op,
                          "{runtime} System.Numerics answers (float32 bit patterns, 8 hex digits each) for the "
                          "calls port/frame.py makes; written by tests/port/test_frame.py --record --runtime {runtime}")
+
+
+# ---------------------------------------------------------------- the runtime reaches the physics
+
+
+@pytest.mark.anchor("AFrame::global_to_local_vec")
+def test_a_run_rotates_frames_as_its_runtime_does_which_moves_a_rotated_bsp_contact_plane():
+    """A recorded mono scene (a BSP ledge turned 4.6 degrees about z): mono arithmetic reproduces
+    ACE-on-mono's contact plane bit for bit; .NET 10 arithmetic rotates the ledge's plane into the
+    world by other roundings (its normal's z is 0.99999994, not 1.0)."""
+    from acconform.compare import compare
+    from acconform.oracle.recorded import RecordedOracle, scene_key
+    from acconform.port.run import run_scene
+
+    corpus = RecordedOracle(Path(__file__).resolve().parents[1] / "data" / "corpus")
+    key = "7f82e643db112ee02b109c06ac4bf0c874269bf93297db42c47deb6c40b336fc"  # bsp-0000, line 17
+    rec = next(r for r in corpus.records() if r.scene.name == "bsp:ledge" and scene_key(r.scene) == key)
+    assert compare(run_scene(rec.scene, runtime="mono"), rec.outcome, "exact") == []
+    net10 = run_scene(rec.scene, runtime="coreclr")
+    assert bits([rec.outcome.contact_plane.normal[2]]) == [0x3F800000]
+    assert bits([net10.contact_plane.normal[2]]) == [0x3F7FFFFF]
