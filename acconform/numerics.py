@@ -121,7 +121,9 @@ class Vector3:
         return r
 
     def __neg__(self) -> "Vector3":
-        # System.Numerics: operator -(Vector3 value) => Zero - value (so -(0) is +0, not -0)
+        # mono's System.Numerics: operator -(Vector3 value) => Zero - value (so -(0) is +0, not
+        # -0); .NET 10 flips the sign bits (`net10_negate`). Port code negates through
+        # `runtime.negate`, never with a bare `-v`.
         r = _new(Vector3)
         r.x = 0.0 - self.x
         r.y = 0.0 - self.y
@@ -594,6 +596,16 @@ def net10_transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
     return out
 
 
+def net10_negate(v: Vector3) -> Vector3:
+    """Vector3 unary minus on .NET 10: Vector128 negation flips each sign bit, so -(+0) is -0
+    (mono computes Zero - v, which gives +0)."""
+    r = _new(Vector3)
+    r.x = -v.x
+    r.y = -v.y
+    r.z = -v.z
+    return r
+
+
 def net10_lerp(a: Vector3, b: Vector3, t) -> Vector3:
     """Vector3.Lerp on .NET 10: ``MultiplyAddEstimate(a, 1 - t, b * t)`` per lane (mono: a + (b - a) * t)."""
     t1 = 1.0 - t
@@ -742,6 +754,7 @@ class Runtime:
 
     name: str
     quaternion: type = _fn()  # the Quaternion class this runtime's operations return
+    negate: object = _fn()  # Vector3 unary minus
     transform_by_quaternion: object = _fn()  # Vector3.Transform(Vector3, Quaternion)
     transform_by_matrix: object = _fn()  # Vector3.Transform(Vector3, Matrix4x4)
     lerp: object = _fn()  # Vector3.Lerp
@@ -787,11 +800,11 @@ class Runtime:
 
 
 MONO = Runtime(
-    "mono", Quaternion, transform_by_quaternion, transform_by_matrix, lerp, quat_multiply, quat_inverse,
+    "mono", Quaternion, Vector3.__neg__, transform_by_quaternion, transform_by_matrix, lerp, quat_multiply, quat_inverse,
     quat_normalize, quat_lerp, quat_create_from_yaw_pitch_roll,
 )
 NET10 = Runtime(
-    "coreclr", Net10Quaternion, net10_transform_by_quaternion, net10_transform_by_matrix, net10_lerp,
+    "coreclr", Net10Quaternion, net10_negate, net10_transform_by_quaternion, net10_transform_by_matrix, net10_lerp,
     net10_quat_multiply, net10_quat_inverse, net10_quat_normalize, net10_quat_lerp,
     net10_quat_create_from_yaw_pitch_roll,
 )

@@ -64,6 +64,10 @@ def _port_equals(m, a):
     return [F(1.0) if m.vec(*a[0:3]) == m.vec(*a[3:6]) else F(0.0)]
 
 
+def _port_negate(m, a):
+    return list(m.runtime.negate(m.vec(*a[0:3])))
+
+
 def _port_to_int32(m, a):
     return [m.runtime.to_int32(F(a[0]))]
 
@@ -83,6 +87,7 @@ OPS = {
     "Vector3.Divide(v,s)": (4, _port_divide),  # IntersectsSphere disp / radsum, CylSphere
     "Vector2.Length": (3, _port_vector2_length),  # Vector3Extensions.Length2D
     "Vector3.Equals": (6, _port_equals),  # Sphere.SlideSphere collisionNormal.Equals(Vector3.Zero)
+    "Vector3.Negate": (3, _port_negate),  # operator -: SlideSphere, CliffSlide, SetNegPolyHit
     "(int)float": (1, _port_to_int32),  # LandDefs.lcoord_to_gid, Landblock, Transition step counts
     "(uint)float": (1, _port_to_uint32),  # Position.GetOutdoorCell, LandCell
 }
@@ -112,6 +117,8 @@ def _inputs(name: str, n: int, seed: int) -> list[list[float]]:
                 a[3:6] = [0.0, 0.0, 0.0]
         if name.startswith("Vector3.Divide") and a[3] == 0:
             a[3] = 1.5
+        if name == "Vector3.Negate":  # zeros of both signs, as collision normals carry them
+            a[0:3] = [x if rng.random() < 0.6 else [0.0, -0.0][rng.integers(0, 2)] for x in a[0:3]]
         if name.startswith("("):  # casts: in range, around the int32/uint32 limits, beyond, not finite
             a[0] = [a[0], a[0] * 1e3, rng.uniform(-1, 1) * 2.0 ** rng.integers(30, 34), rng.choice(_CAST_EDGES)][rng.integers(0, 4)]
         cases.append([float(np.float32(x)) for x in a[: OPS[name][0]]])
@@ -158,6 +165,9 @@ def _net_op(sn, name, a):
         return [sn.Vector2(a[0], a[1]).Length()]
     if name == "Vector3.Equals":
         return [1.0 if V(*a[0:3]).Equals(V(*a[3:6])) else 0.0]
+    if name == "Vector3.Negate":
+        o = V.op_UnaryNegation(V(*a[0:3]))
+        return [o.X, o.Y, o.Z]
     if name.startswith("("):
         return [int(_cast(name)(F(a[0]).item()))]
     raise KeyError(name)
