@@ -13,7 +13,7 @@ is C#'s ``(float)x`` in the mode of ``like``.
 
 The runtime that executes ACE matters where System.Numerics or the JIT differ; `Runtime` holds
 those spots: float->int casts and the System.Numerics operations whose formula differs (quaternion
-rotation and products, lerps, matrix transforms, CreateFromYawPitchRoll). `MONO` is mono 6.8's
+rotation and products, lerps, matrix transforms, CreateFromYawPitchRoll, Vector3 negation). `MONO` is mono 6.8's
 System.Numerics; `NET10` is .NET 10 on CoreCLR (x64 with FMA), measured against both runtimes'
 recorded answers (tests/data/numerics_*.json). A quaternion carries the runtime that made it
 (`Quaternion.runtime`), so frame code asks its orientation which formulas to use; the mode's
