@@ -815,9 +815,12 @@ Net10Quaternion.runtime = NET10
 
 def runtime_named(versions_runtime: str) -> str:
     """The runtime key ("mono" or "coreclr") of a record's or oracle's runtime string, e.g.
-    "mono 6.8.0.105" or "coreclr .NET 10.0.12" (its first word)."""
+    "mono 6.8.0.105" or "coreclr .NET 10.0.12" (its first word). An empty string is "mono":
+    records and cases written without a runtime all came from ACE on mono."""
     from .errors import AcconformError
 
+    if not versions_runtime.strip():
+        return "mono"
     names = {part.strip().split(" ")[0] for part in versions_runtime.split(";") if part.strip()}
     if len(names) != 1 or not names <= set(RUNTIMES):
         raise AcconformError(

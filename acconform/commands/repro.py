@@ -31,8 +31,8 @@ def run(args) -> int:
         from ..oracle.config import resolve
 
         runtime = resolve(args.ace, args.runtime).runtime
-    else:  # ... as the ACE that answered the case (cases from before runtimes were recorded: mono)
-        runtime = runtime_named(doc.versions.runtime) if doc.versions.runtime else "mono"
+    else:  # ... as the ACE that answered the case
+        runtime = runtime_named(doc.versions.runtime)
     port = guarded(lambda s: run_scene(s, mode=mode, runtime=runtime), doc.scene)
     if live_configured(args.ace):
         from ..oracle import require_live
