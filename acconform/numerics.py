@@ -586,13 +586,19 @@ def net10_quat_lerp(a: Quaternion, b: Quaternion, t) -> Quaternion:
 
 def net10_transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
     """Vector3.Transform(Vector3, Quaternion) on .NET 10: Vector4.Transform of (v, 1), that is
-    ``Concatenate(Concatenate(Conjugate(q), (v, 1)), q)`` = ``q * ((v, 1) * Conjugate(q))``, X Y Z kept."""
-    t = net10_quat_multiply(Quaternion(v.x, v.y, v.z, type(v.x)(1.0)), Quaternion(-q.x, -q.y, -q.z, q.w))
-    r = net10_quat_multiply(q, t)
+    ``Concatenate(Concatenate(Conjugate(q), (v, 1)), q)`` = ``q * ((v, 1) * Conjugate(q))``, X Y Z
+    kept; both products written out as `net10_quat_multiply` computes them (no objects between)."""
+    lx, ly, lz, lw = v.x, v.y, v.z, type(v.x)(1.0)
+    rx, ry, rz, rw = -q.x, -q.y, -q.z, q.w
+    tx = ((rx * lw + rw * lx) + rz * ly) - ry * lz  # t = (v, 1) * Conjugate(q)
+    ty = ((ry * lw - rz * lx) + rw * ly) + rx * lz
+    tz = ((rz * lw + ry * lx) - rx * ly) + rw * lz
+    tw = ((rw * lw - rx * lx) - ry * ly) - rz * lz
+    lx, ly, lz, lw = q.x, q.y, q.z, q.w  # q * t
     out = _new(Vector3)
-    out.x = r.x
-    out.y = r.y
-    out.z = r.z
+    out.x = ((tx * lw + tw * lx) + tz * ly) - ty * lz
+    out.y = ((ty * lw - tz * lx) + tw * ly) + tx * lz
+    out.z = ((tz * lw + ty * lx) - tx * ly) + tw * lz
     return out
 
 
