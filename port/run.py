@@ -109,11 +109,13 @@ def build_static(record: StaticObject, landblock_ids: list[int], lscape: LScape)
 
 
 @anchor(None, "PhysicsObj.cs:transition", "the scene -> outcome driver around PhysicsObj.transition")
-def run_scene(scene: Scene, mode: str = "exact", trace=None) -> Outcome:
-    """Run the scene's transition in the port; `trace` (a Counter) is incremented in place."""
+def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mono") -> Outcome:
+    """Run the scene's transition in the port, computing as ACE on `runtime` ("mono" or "coreclr",
+    .NET 10) does; `trace` (a Counter) is incremented in place."""
+    numerics = get_mode(mode, runtime)  # an unknown mode or runtime is misuse, not a verdict
     try:
         with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
-            return _run(scene, get_mode(mode), trace)
+            return _run(scene, numerics, trace)
     except AceException as e:  # where ACE throws: its .NET type, as the oracle reports ACE's
         return Outcome(error=e.verdict())
     except Exception as e:  # any other port exception is a verdict too (a port bug or gap)

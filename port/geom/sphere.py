@@ -121,11 +121,11 @@ class Sphere:
 
         if dot(collision_normal, contact_plane.normal) >= 0.0:
             diff = dot(collision_normal, g_delta)
-            offset = -collision_normal * diff
+            offset = path.mode.runtime.negate(collision_normal) * diff
             path.add_offset_to_check_pos(offset, self.radius)
             return TransitionState.Slid, collision_normal
 
-        collision_normal = -g_delta
+        collision_normal = path.mode.runtime.negate(g_delta)
         small, collision_normal = normalize_check_small(collision_normal)
         if not small:
             collisions.set_collision_normal(collision_normal)
