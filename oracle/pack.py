@@ -181,7 +181,7 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
     cp = _cps(kc, *v[11:18])
     lk = cp if kl == kc else _cps(kl, *v[18:25])
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
-                          bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None),
+                          bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None, None),
             v[42], v[43], (v[44], v[45], v[46], v[47]))
 
 
