@@ -17,7 +17,6 @@ from acconform.numerics import to_f32
 from acconform.scene import (IDENTITY, ContactPlane, Frame, Mover, PlaneRec, Position, Scene, SphereRec,
                              StaticObject)
 
-from acconform import staging
 
 from . import draws as dr
 from . import objects as ob
@@ -388,7 +387,7 @@ def _blocks_in_reach(bx, by, p0, p1, reach, objects) -> set[tuple[int, int]]:
     boxes = [(min(p0[0], p1[0]) - margin, min(p0[1], p1[1]) - margin,
               max(p0[0], p1[0]) + margin, max(p0[1], p1[1]) + margin)]
     for o in objects:
-        (cx, cy, _), rad = staging.bounding_sphere(o)
+        (cx, cy, _), rad = sh.object_reach(o)
         ox = (o.position.cell >> 24) * BLOCK + cx
         oy = ((o.position.cell >> 16) & 0xFF) * BLOCK + cy
         m = rad + REACH_SLACK

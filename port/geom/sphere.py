@@ -21,7 +21,7 @@ from __future__ import annotations
 from acconform.flags import ObjectInfoState, TransitionState
 from acconform.numerics import D, Mode, Plane, Vector3, cast_float, cross, dot
 
-from ..anchors import anchor
+from ..anchors import anchor, harness
 from ..constants import EPSILON, LANDING_Z, STEP_INTERP_LIMIT
 from ..land.land_defs import get_block_offset
 from ..vec import cs_sqrt, normalize_check_small, zero_like
@@ -45,9 +45,14 @@ class Sphere:
         return Sphere(self.center, self.radius)
 
     @classmethod
-    @anchor(None, "Sphere.cs:Sphere(DatLoader.Entity.Sphere)", "the DAT constructor, from a scene sphere record")
+    @anchor(None, "Sphere.cs:Sphere(DatLoader.Entity.Sphere)", "the DAT constructor")
+    def from_dat(cls, sphere) -> "Sphere":
+        """``new Sphere(DatLoader.Entity.Sphere)``: Center = Origin, Radius."""
+        return cls(sphere.origin, sphere.radius)
+
+    @classmethod
+    @harness("a sphere from a scene SphereRec (the mover's Setup spheres, as the oracle packs them)")
     def from_rec(cls, rec, mode: Mode) -> "Sphere":
-        """A sphere from a scene SphereRec, as ACE's DAT constructor (Origin, Radius)."""
         return cls(mode.vec(*rec.center), mode.scalar(rec.radius))
 
     def __eq__(self, o) -> bool:
