@@ -143,7 +143,8 @@ QUARTERS = dr.ints(0, 3)
 OBJECT_COUNTS = dr.ints(1, 3)
 
 
-BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter"))
+BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter",
+                                "straddle", "straddle"))
 # terrain: a free path, or "border_slope": grounded on tilted terrain, a few metres from a block
 # border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
 TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope"))
@@ -332,6 +333,9 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
     reach = max(s.center[2] + s.radius for s in spheres)
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     plan = draw(ob.POLICIES[policy](gx0, gy0, r))
+    if plan.moved_begin is not None:  # the policy moved the start (straddle: beside a landblock border)
+        bx, by, lx, ly = split_global(*plan.moved_begin)
+        gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     placed = []
     for shape, ox, oy, angle, st_ in plan.objects:
         _, (gz, _, _) = world.ground(ox, oy)

@@ -197,6 +197,20 @@ def cylsphere_shapes():
 OBSTACLE_SHAPES = dr.OneOf(dr.eager(spheres_shapes()), dr.eager(cylsphere_shapes()))
 
 
+def leaf_root(shape: BSPShape) -> BSPShape:
+    """The same polygons under a tree that is one solid leaf (ACE makes its root a childless node)."""
+    return BSPShape(shape.polygons, BSPLeaf(tuple(range(len(shape.polygons))), True, shape.sphere), shape.sphere)
+
+
+def zero_radius_empty_leaves(shape: BSPShape) -> BSPShape:
+    """The same tree with every empty leaf's bounding sphere shrunk to radius 0 (at the origin)."""
+    def walk(node):
+        if isinstance(node, BSPLeaf):
+            return node if node.polygons else BSPLeaf((), node.solid, SphereRec((0.0, 0.0, 0.0), 0.0))
+        return BSPNode(node.plane, node.sphere, walk(node.front), walk(node.back))
+    return BSPShape(shape.polygons, walk(shape.root), shape.sphere)
+
+
 def _rotate(q, v):
     w, x, y, z = q
     n = math.sqrt(w * w + x * x + y * y + z * z) or 1.0

@@ -1,11 +1,12 @@
-"""tests/port: makes the shared helpers here (numerics_replay) importable from every subdirectory."""
+"""tests/port: makes the shared helpers here (numerics_replay, dat_shapes) and the scene data in objects/ importable from every subdirectory."""
 
 import sys
 from pathlib import Path
 
 _HERE = str(Path(__file__).resolve().parent)
-if _HERE not in sys.path:
-    sys.path.insert(0, _HERE)
+for _p in (_HERE, str(Path(_HERE) / "objects")):
+    if _p not in sys.path:
+        sys.path.insert(0, _p)
 
 
 import pytest  # noqa: E402

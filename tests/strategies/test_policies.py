@@ -29,7 +29,7 @@ IGNORE = int(PhysicsState.IgnoreCollisions)
 
 @pytest.fixture(scope="module")
 def bsp_scenes():
-    return list(sample_scenes(("bsp",), 200, 21))
+    return list(sample_scenes(("bsp",), 200, 5))
 
 
 @pytest.fixture(scope="module")
