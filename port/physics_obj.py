@@ -1,13 +1,15 @@
-"""PhysicsObj: transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, add_shadows_to_cell, IsPlayer, Equals.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
-The part of ACE's PhysicsObj.cs a transition uses: the set-up PhysicsObj.transition does before
-FindValidPosition, the members the transition reads back (walkable checks, StopVelocity's
-set_velocity), and a static object's side: FindObjCollisions (BSP through the PartArray, or the
-Setup's spheres / cylspheres) and its registration as a shadow object in the cells it overlaps.
-Both the mover and the static objects carry a PartArray over a Setup (port/part_array.py,
-port/setup.py), built as the oracle builds them (see run.py). The WeenieObj is ACE's
-WeenieObject.DummyObject (no player, creature or PK flags), which is what a PhysicsObj made
-without a WorldObject carries; DatObject stays false (the oracle does not set it).
+The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
+record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
+calc_cross_cells_static: find_bbox_cell_list over the parts' boxes, or find_cell_list for a
+cylsphere without a physics BSP -> add_shadows_to_cell, in the CellArray's .NET order); the
+set-up PhysicsObj.transition does before FindValidPosition, the members the transition reads
+back (walkable checks, StopVelocity's set_velocity), and a static's FindObjCollisions (BSP
+through the PartArray, or the Setup's spheres / cylspheres). The mover's PartArray is the
+harness's (run.py, as the oracle builds it). The WeenieObj is ACE's WeenieObject.DummyObject (no
+player, creature or PK flags), which is what a PhysicsObj made without a WorldObject carries;
+a static's DatObject is true (as Landblock.init_static_objs sets it), the mover's false.
 """
 
 from __future__ import annotations

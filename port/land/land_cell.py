@@ -1,4 +1,4 @@
-"""LandCell: find_terrain_poly, point_in_cell, FindCollisions, FindEnvCollisions, find_transit_cells, handle_move_restriction, add_all_outside_cells, add_outside_cell, check_add_cell_boundary, add_cell_block.
+"""LandCell: find_terrain_poly, point_in_cell, FindCollisions, FindEnvCollisions, find_transit_cells (the sphere and parts overloads), handle_move_restriction, add_all_outside_cells (the sphere and parts overloads), add_outside_cell, check_add_cell_boundary, add_cell_block.
 
 ACE's Common/LandCell.cs. ACE's LandCell derives from SortCell -> ObjCell -> PartCell; here it
 derives from ObjCell (obj_cell.py, which holds SortCell's two overrides too) and carries the

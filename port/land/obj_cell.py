@@ -1,4 +1,4 @@
-"""ObjCell and SortCell: AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells, point_in_cell, Equals, find_cell_list (the sphere overloads), GetVisible.
+"""ObjCell and SortCell: AddObject, AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells (the sphere and parts overloads), point_in_cell, Equals, find_cell_list (the sphere and cylsphere overloads), GetVisible.
 
 ACE's Common/ObjCell.cs and Common/SortCell.cs: the base behaviour every cell has. LandCell
 (land_cell.py) derives from ObjCell, carries the fields and overrides what ACE's LandCell

@@ -26,10 +26,6 @@ UNREACHABLE = {
     # the float32 grid of r, and EPSILON's low bits are finer than that grid
     "validate_walkable_contact_test_strict": "boundary (dist == -EPSILON exactly) is unreachable by construction",
     "step_down_interp_floor_raised": "a step-down overshoot in [-0.1, 0) needs gentle slopes and a sliver step",
-    # needs a sloped contact plane kept by AdjustOffset across a landblock border; no policy draws that
-    # state on purpose (a border-slope terrain walk did not reach it in 47 scenes). Before the seed was
-    # made independent of imported modules it was caught once, by luck, in a corner obstacle scene.
-    "adjust_offset_block_offset_dropped": "AdjustOffset with a contact plane across a block border is not drawn on purpose",
 }
 
 
