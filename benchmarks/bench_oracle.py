@@ -1,6 +1,6 @@
 """Oracle cost per case beside ACE's own in-runtime time, per scene kind.
 
-    ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300] [--path facade|direct]
+    ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300]
     ACE_ASSEMBLY=... python benchmarks/bench_oracle.py --against HEAD~1   # before/after in one run
 
 Columns, per case (medians; landblocks cached across scenes, the default):
@@ -51,10 +51,10 @@ def scene_groups(n: int) -> dict:
     return groups
 
 
-def measure(groups: dict, path) -> dict:
+def measure(groups: dict) -> dict:
     from acconform.oracle.live import LiveOracle
 
-    oracle = LiveOracle(path=path)
+    oracle = LiveOracle()
     res = {"oracle": f"{oracle!r}: {oracle.versions.ace} on {oracle.versions.runtime}", "kinds": {}}
     for name, scenes in groups.items():
         if name.startswith(("warm-up: ", "batch: ")):
@@ -101,7 +101,6 @@ def _ratio(a, b) -> str:
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("-n", type=int, default=300)
-    ap.add_argument("--path", default=None)
     ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) first and print before/after")
     ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
     ap.add_argument("--scenes", help=argparse.SUPPRESS)  # the parent's scenes as JSON
@@ -114,7 +113,7 @@ def main() -> int:
         sys.path.insert(0, str(ROOT))
         groups = scene_groups(args.n)
     if args.json:
-        print(json.dumps(measure(groups, args.path)))
+        print(json.dumps(measure(groups)))
         return 0
 
     old = None
@@ -123,14 +122,12 @@ def main() -> int:
             scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "scenes.json"
             scenes.write_text(json.dumps({k: [s.to_json() for s in v] for k, v in groups.items()}))
             cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--scenes", str(scenes)]
-            if args.path:
-                cmd += ["--path", args.path]
             done = subprocess.run(cmd, env=env, capture_output=True, text=True)
             if done.returncode != 0:
                 sys.stderr.write(done.stderr)
                 raise SystemExit(f"bench_oracle: measuring {args.against} failed (its stderr is above)")
             old = json.loads(done.stdout)
-    new = measure(groups, args.path)
+    new = measure(groups)
 
     print(new["oracle"])
     if old:
