@@ -30,6 +30,11 @@ What each shape becomes (`static_records(obj, index)`):
   object's position (`PartArray.UpdateParts`); Height, Radius, step heights 0; sorting and
   selection spheres zero.
 
+The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
+the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
+Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxObj mesh, id
+``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition).
+
 Records are listed parts first; every record of a scene has a distinct id (the index is the
 object's place in the scene's list).
 """
@@ -41,11 +46,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .scene import BSPLeaf, BSPShape, CylSphereShape, PolygonRec, SphereShape, StaticObject
+from .scene import BSPLeaf, BSPShape, CylSphereShape, Mover, PolygonRec, SphereShape, StaticObject
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
 MAX_OBJECTS = 0xFFFFFF  # ids stay inside their DAT type's range
+MOVER_GFX_OBJ_ID = 0x01000000  # the mover's part
+MOVER_SETUP_ID = 0x02000000  # the mover's Setup
 
 # ACE.Entity.Enum.GfxObjFlags, StipplingType, SetupFlags
 GFX_HAS_PHYSICS = 0x1
@@ -74,8 +81,8 @@ class DatRecord:
 
 
 @dataclass(frozen=True, slots=True)
-class StaticRecords:
-    """What one static object is made from: `did` is the id `PhysicsObj.makeObject` takes, and
+class ObjectRecords:
+    """What one object (a static or the mover) is made from: `did` is the id `PhysicsObj.makeObject` takes, and
     `records` every record reachable from it (parts first)."""
 
     did: int
@@ -177,11 +184,11 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
     return b"".join((_u32.pack(gfx_id), _u32.pack(0), compressed_u32(0), vertex_array(vertices), _3f.pack(0.0, 0.0, 0.0)))
 
 
-def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=()) -> bytes:
+def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0) -> bytes:
     """FileTypes/SetupModel: flags 0, the parts, no holding locations, connection points or
     placement frames, the cylspheres ((low point, radius, height)) and spheres ((centre, radius)),
-    Height/Radius/StepUpHeight/StepDownHeight 0, zero sorting and selection spheres, no lights,
-    no default animation/script/motion table/sound table/script table."""
+    Height and Radius 0, the step heights, zero sorting and selection spheres, no lights, no
+    default animation/script/motion table/sound table/script table."""
     out = [_u32.pack(setup_id), _u32.pack(0), _u32.pack(len(parts))]
     out += [_u32.pack(p) for p in parts]
     out.append(_i32.pack(0) * 3)  # HoldingLocations, ConnectionPoints, PlacementFrames
@@ -191,21 +198,21 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=()) -> bytes:
     out.append(_u32.pack(len(spheres)))
     for center, radius in spheres:
         out.append(sphere(center, radius))
-    out.append(_4f.pack(0.0, 0.0, 0.0, 0.0))  # Height, Radius, StepUpHeight, StepDownHeight
+    out.append(_4f.pack(0.0, 0.0, step_up, step_down))  # Height, Radius, StepUpHeight, StepDownHeight
     out.append(sphere((0.0, 0.0, 0.0), 0.0) * 2)  # SortingSphere, SelectionSphere
     out.append(_i32.pack(0))  # Lights
     out.append(_u32.pack(0) * 5)  # DefaultAnimation, Script, MotionTable, SoundTable, ScriptTable
     return b"".join(out)
 
 
-def static_records(obj: StaticObject, index: int) -> StaticRecords:
+def static_records(obj: StaticObject, index: int) -> ObjectRecords:
     """The DAT records static object number `index` (0-based, scene order) is made from."""
     if not 0 <= index < MAX_OBJECTS:
         raise ValueError(f"static object index {index} outside 0..{MAX_OBJECTS - 1}")
     shape = obj.shape
     gfx_id = GFX_OBJ_BASE + index
     if isinstance(shape, BSPShape):
-        return StaticRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, shape)),))
+        return ObjectRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, shape)),))
     setup_id = SETUP_BASE + index
     part = DatRecord(gfx_id, "GfxObj", gfx_obj_mesh(gfx_id, box_corners(*shape_box(shape))))
     if isinstance(shape, SphereShape):
@@ -214,8 +221,16 @@ def static_records(obj: StaticObject, index: int) -> StaticRecords:
         body = setup(setup_id, [gfx_id], cylspheres=[(shape.low_point, shape.radius, shape.height)])
     else:
         raise TypeError(f"static object {obj.id:#010x}: unknown shape {type(shape).__name__}")
-    return StaticRecords(setup_id, (part, DatRecord(setup_id, "Setup", body)))
+    return ObjectRecords(setup_id, (part, DatRecord(setup_id, "Setup", body)))
 
 
-__all__ = ["DatRecord", "StaticRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
+def mover_records(mover: Mover) -> ObjectRecords:
+    """The DAT records the mover is made from: its Setup (did) and the Setup's one part."""
+    part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
+    body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
+                 step_up=mover.step_up_height, step_down=mover.step_down_height)
+    return ObjectRecords(MOVER_SETUP_ID, (part, DatRecord(MOVER_SETUP_ID, "Setup", body)))
+
+
+__all__ = ["mover_records", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF"]

@@ -11,9 +11,9 @@ import struct
 from dataclasses import fields
 
 from ..outcome import ContactPlaneState, NormalState, Outcome
-from ..dat import static_records
+from ..dat import mover_records, static_records
 from ..scene import Landblock, Scene
-from ..staging import MOVER_ID, mover_setup_dims
+from ..staging import MOVER_ID
 
 PACK_VERSION = 4
 
@@ -49,20 +49,26 @@ _POS = "I3f4f"
 _RECORD_KIND = {"GfxObj": 0, "Setup": 1}
 
 
-def _object(o, index: int) -> bytes:
-    """A static object: its scene id, position, state and scale (applied as WorldObject.InitPhysicsObj
-    does), the DAT id `PhysicsObj.makeObject` takes and the DAT records (acconform.dat) the facade
-    unpacks with ACE's own Unpack."""
-    recs = static_records(o, index)
-    out = [struct.pack("<I" + _POS + "IfIi", o.id, *_pos(o.position), o.state, o.scale, recs.did, len(recs.records))]
+def _records(recs) -> list[bytes]:
+    """DAT records (acconform.dat) the facade unpacks with ACE's own Unpack: count, then each one's
+    kind, id, length and bytes."""
+    out = [struct.pack("<i", len(recs.records))]
     for rec in recs.records:
         out.append(struct.pack("<BIi", _RECORD_KIND[rec.kind], rec.id, len(rec.data)))
         out.append(rec.data)
-    return b"".join(out)
+    return out
+
+
+def _object(o, index: int) -> bytes:
+    """A static object: its scene id, position, state and scale (applied as WorldObject.InitPhysicsObj
+    does), the DAT id `PhysicsObj.makeObject` takes and its DAT records."""
+    recs = static_records(o, index)
+    head = struct.pack("<I" + _POS + "IfI", o.id, *_pos(o.position), o.state, o.scale, recs.did)
+    return b"".join([head] + _records(recs))
 
 
 _HEAD = struct.Struct("<iB")
-_MOVER = struct.Struct("<I5fII3fBI4fB3f" + _POS + _POS)
+_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS)
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -76,13 +82,13 @@ def pack_scene(scene: Scene) -> bytes:
     for i, o in enumerate(scene.objects):
         out.append(_object(o, i))
     m = scene.mover
-    out.append(struct.pack(f"<i{4 * len(m.spheres)}f", len(m.spheres), *[x for s in m.spheres for x in (*s.center, s.radius)]))
-    height, radius = mover_setup_dims(scene)
+    recs = mover_records(m)
+    out += _records(recs)
     cp = m.contact_plane
     cpv = (0, 0, 0.0, 0.0, 0.0, 0.0) if cp is None else (1, cp.cell, *cp.plane.normal, cp.plane.d)
     sn = m.sliding_normal
     snv = (0, 0.0, 0.0, 0.0) if sn is None else (1, *sn)
-    out.append(_MOVER.pack(MOVER_ID, height, radius, m.step_up_height, m.step_down_height, m.scale, m.state, m.transient_state,
+    out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end)))
     return b"".join(out)
 

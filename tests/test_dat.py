@@ -210,3 +210,19 @@ def test_record_ids_stay_inside_their_dat_types_range():
     with pytest.raises(ValueError, match="index"):
         dat.static_records(bsp_object(TREE), 0xFFFFFF)
     assert dat.static_records(bsp_object(TREE), 0xFFFFFE).did == 0x01FFFFFF
+
+
+def test_the_mover_is_a_setup_with_its_spheres_and_step_heights_and_one_empty_mesh_part():
+    from acconform.scene import Mover
+
+    spheres = (SphereRec((0.0, 0.0, 0.48), 0.48), SphereRec((0.0, 0.0, f32(1.35)), 0.48))
+    m = Mover(spheres, Position(0xA9B40001, Frame((12.0, 12.0, 20.0))), Position(0xA9B40001, Frame((13.0, 12.0, 20.0))),
+              f32(0.4), f32(1.5))
+    recs = dat.mover_records(m)
+    assert recs.did == 0x02000000 and [(r.id, r.kind) for r in recs.records] == [(0x01000000, "GfxObj"), (0x02000000, "Setup")]
+    s = read_setup(recs.records[1].data)
+    assert s["parts"] == [0x01000000] and s["cylspheres"] == []
+    assert s["spheres"] == [(0.0, 0.0, f32(0.48), f32(0.48)), (0.0, 0.0, f32(1.35), f32(0.48))]
+    assert s["dims"] == (0.0, 0.0, f32(0.4), 1.5)  # Height and Radius 0: ACE's transition never reads them
+    g = read_gfx_obj(recs.records[0].data)
+    assert g["flags"] == 0 and g["vertices"] == {}

@@ -56,7 +56,6 @@ namespace Acconform.Oracle
         static byte[] lastTableBytes;
         static int lastTableId;
         static readonly Dictionary<ulong, TableEntry> tableIds = new Dictionary<ulong, TableEntry>();
-        static readonly Dictionary<ulong, SetupEntry> setupCache = new Dictionary<ulong, SetupEntry>();  // the mover's
 
         static FieldInfo lbmTable;
         static FieldInfo serverLbPhysics;
@@ -64,7 +63,6 @@ namespace Acconform.Oracle
 
         sealed class LandblockEntry { public byte[] Bytes; public int Table; public ACE.Server.Physics.Common.Landblock Landblock; }
         sealed class TableEntry { public byte[] Bytes; public int Id; }
-        sealed class SetupEntry { public byte[] Bytes; public Setup Setup; }
 
         // Counters for the last scene (written after the times in every outcome; see pack.unpack_outcome).
         static int landblocksBuilt, landblocksReused;
@@ -242,7 +240,6 @@ namespace Acconform.Oracle
         {
             serverLandblocks.Clear();
             landblockCache.Clear();
-            setupCache.Clear();
         }
 
         // ------------------------------------------------------------------ content keys
@@ -488,61 +485,6 @@ namespace Acconform.Oracle
         }
 
         static int tableSerial;
-        static readonly MemoryStream setupStream = new MemoryStream(256);
-        static readonly BinaryWriter setupWriter = new BinaryWriter(setupStream);
-
-        static Setup MakeSetup(List<Vector4> spheres, List<Vector3> cylLow, List<Vector2> cylRH, float height, float radius,
-                               float stepUp, float stepDown, Vector4 sorting)
-        {
-            var ms = setupStream;
-            ms.SetLength(0);
-            var w = setupWriter;
-            w.Write(0x02000001u); w.Write(0u); w.Write(0u);       // Id, Flags, NumParts
-            w.Write(0); w.Write(0); w.Write(0);                    // HoldingLocations, ConnectionPoints, PlacementFrames
-            w.Write(cylLow.Count);
-            for (var i = 0; i < cylLow.Count; i++)
-            {
-                w.Write(cylLow[i].X); w.Write(cylLow[i].Y); w.Write(cylLow[i].Z);
-                w.Write(cylRH[i].X); w.Write(cylRH[i].Y);          // Radius, Height (DAT order)
-            }
-            w.Write(spheres.Count);
-            foreach (var s in spheres) { w.Write(s.X); w.Write(s.Y); w.Write(s.Z); w.Write(s.W); }
-            w.Write(height); w.Write(radius); w.Write(stepUp); w.Write(stepDown);
-            for (var k = 0; k < 2; k++) { w.Write(sorting.X); w.Write(sorting.Y); w.Write(sorting.Z); w.Write(sorting.W); }
-            w.Write(0);                                            // Lights
-            for (var k = 0; k < 5; k++) w.Write(0u);               // default anim/script/mtable/stable/phstable
-            w.Flush();
-            var len = (int)ms.Length;
-            var buf = ms.GetBuffer();
-            ulong key = 0;
-            if (CacheLandblocks)
-            {
-                key = Hash(buf, 0, len);
-                SetupEntry e;
-                if (setupCache.TryGetValue(key, out e) && BytesEqual(e.Bytes, buf, 0, len)) return e.Setup;
-            }
-            var bytes = Slice(buf, 0, len);
-            var model = new SetupModel();
-            model.Unpack(new BinaryReader(new MemoryStream(bytes)));
-            var setup = new Setup(model);
-            if (CacheLandblocks)
-            {
-                if (setupCache.Count >= CacheLimit) setupCache.Clear();
-                setupCache[key] = new SetupEntry { Bytes = bytes, Setup = setup };
-            }
-            return setup;
-        }
-
-        static PartArray MakePartArray(PhysicsObj owner, Setup setup)
-        {
-            var pa = new PartArray();
-            pa.Owner = owner;
-            pa.Setup = setup;
-            pa.NumParts = 0;
-            pa.Parts = new List<PhysicsPart>();
-            return pa;
-        }
-
         /// <summary>One DAT record (acconform/dat.py) unpacked by ACE's own Unpack into the portal FileCache.</summary>
         static void ReadRecord(BinaryReader r)
         {
@@ -593,14 +535,10 @@ namespace Acconform.Oracle
 
         static Tuple<PhysicsObj, ACE.Server.Physics.Common.Position, ACE.Server.Physics.Common.Position> BuildMover(BinaryReader r)
         {
-            var n = r.ReadInt32();
-            var spheres = new List<Vector4>(n);
-            for (var k = 0; k < n; k++) { var c = V3(r); spheres.Add(new Vector4(c, r.ReadSingle())); }
+            var nrec = r.ReadInt32();
+            for (var k = 0; k < nrec; k++) ReadRecord(r);
+            var did = r.ReadUInt32();
             var moverId = r.ReadUInt32();  // acconform.staging.MOVER_ID
-            var height = r.ReadSingle();
-            var radius = r.ReadSingle();
-            var stepUp = r.ReadSingle();
-            var stepDown = r.ReadSingle();
             var scale = r.ReadSingle();
             var state = (PhysicsState)r.ReadUInt32();
             var ts = (TransientStateFlags)r.ReadUInt32();
@@ -614,10 +552,8 @@ namespace Acconform.Oracle
             var begin = Pos(r);
             var end = Pos(r);
 
-            var obj = new PhysicsObj();
-            obj.ID = moverId;
-            var setup = MakeSetup(spheres, new List<Vector3>(), new List<Vector2>(), height, radius, stepUp, stepDown, spheres[0]);
-            obj.PartArray = MakePartArray(obj, setup);
+            // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a dynamic object
+            var obj = PhysicsObj.makeObject(did, moverId, true);
             obj.SetScaleStatic(scale);
             obj.State = state;
             obj.TransientState = ts;
