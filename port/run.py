@@ -74,17 +74,21 @@ def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
     return obj
 
 
-@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's static objects")
-def portal_dat_for(scene: Scene, mode) -> PortalDat:
+@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's static objects, and each one's did")
+def portal_dat_for(scene: Scene, mode) -> tuple[PortalDat, list[int]]:
+    """The PortalDat and, per static object in scene order, the id makeObject takes."""
     records = {}
+    dids = []
     for index, record in enumerate(scene.objects):
-        for dat_record in static_records(record, index).records:
+        written = static_records(record, index)
+        dids.append(written.did)
+        for dat_record in written.records:
             records[dat_record.id] = dat_record.data
-    return PortalDat(records, mode, scene.engine_mode == "server")
+    return PortalDat(records, mode, scene.engine_mode == "server"), dids
 
 
 @harness("builds and places a static object from its DAT records, as the oracle's facade does (init_static_objs)")
-def build_static(record: StaticObject, index: int, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj | None:
+def build_static(record: StaticObject, did: int, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj | None:
     """The static as the oracle builds it (docs/oracle.md's audit): ``makeObject(did, scene id,
     false)`` over the records dat.py wrote; SetScaleStatic(scene scale); State = the scene's
     flags (as WorldObject.InitPhysicsObj overwrites it); DatObject = true; then
@@ -92,7 +96,6 @@ def build_static(record: StaticObject, index: int, portal_dat: PortalDat, lscape
     scene's frame, LandDefs.AdjustToOutside, the landblock's get_landcell, and add_obj_to_cell.
     None when the landblock has no such cell (ACE drops the object)."""
     mode = lscape.mode
-    did = static_records(record, index).did
     obj = PhysicsObj.make_object(did, record.id, False, portal_dat)
     obj.set_scale_static(mode.scalar(record.scale))
     obj.state = record.state
@@ -132,8 +135,8 @@ def _run(scene: Scene, mode, trace) -> Outcome:
 
 
 def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
-    portal_dat = portal_dat_for(scene, mode)
-    statics = [build_static(record, index, portal_dat, lscape) for index, record in enumerate(scene.objects)]
+    portal_dat, dids = portal_dat_for(scene, mode)
+    statics = [build_static(record, did, portal_dat, lscape) for record, did in zip(scene.objects, dids)]
     mover = build_mover(scene, lscape)
     old_pos = mover.position.copy()
     new_pos = Position.from_record(scene.mover.end, mode)

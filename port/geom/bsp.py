@@ -53,17 +53,6 @@ class BSPNode:
 
     __slots__ = ("sphere", "splitting_plane", "type", "num_polys", "polygons", "pos_node", "neg_node")
 
-    def __init__(self, sphere: Sphere | None, splitting_plane: Plane | None, polygons: list[Polygon],
-                 pos_node: "BSPNode | None" = None, neg_node: "BSPNode | None" = None,
-                 type: BSPTreeType = BSPTreeType.Physics):
-        self.sphere = sphere
-        self.splitting_plane = splitting_plane
-        self.type = type
-        self.num_polys = len(polygons)
-        self.polygons = polygons
-        self.pos_node = pos_node
-        self.neg_node = neg_node
-
     @classmethod
     @anchor("BSPNODE::UnPackChild", "BSPNode.cs:BSPNode(DatLoader.Entity.BSPNode, Dictionary<ushort, Polygon>, CVertexArray)",
             "the DAT constructor")
@@ -259,11 +248,6 @@ class BSPLeaf(BSPNode):
     """BSPLeaf.cs: a node with polygons, a Solid flag and a leaf index; no splitting plane."""
 
     __slots__ = ("leaf_idx", "solid")
-
-    def __init__(self, sphere: Sphere, polygons: list[Polygon], solid: bool, leaf_idx: int = -1):
-        super().__init__(sphere, None, polygons)
-        self.leaf_idx = leaf_idx
-        self.solid = solid
 
     @classmethod
     @anchor(None, "BSPLeaf.cs:BSPLeaf(DatLoader.Entity.BSPLeaf, Dictionary<ushort, Polygon>, CVertexArray)", "the DAT constructor")
