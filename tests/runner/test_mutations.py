@@ -17,7 +17,10 @@ import pytest
 from mutants import MUTATIONS, hunt
 
 MAX_LANDBLOCKS = 9  # a path crossing a block corner: 3 x 3 with the block ahead on each axis
-MAX_OBJECTS = 2
+# the scatter policy draws up to 3 objects, their shapes in one loop and their placements in a later
+# one, so Hypothesis cannot always delete a middle object: at seed 0 step_down_one_sphere_halved_differently
+# shrinks to 3 objects of which the first two are each removable (checked by hand)
+MAX_OBJECTS = 3
 # path length is reported (mutation_report.py), not bounded: Hypothesis' float shrinking leaves some
 # paths long (a 96 m walk for cliff_slide_sign_flipped at seed 0) where the difference survives it
 
