@@ -5,7 +5,7 @@ PhysicsObj.makeObject from its DAT record: CreateMesh for a GfxObj id (one part 
 Setup), CreateSetup for a Setup id (a part per GfxObj the Setup names; a Setup with no parts
 makes no PartArray at all). With no placement frame, UpdateParts makes a single part's Pos the
 owner's Position object itself (not a copy), so the part moves with the object. The mover's
-PartArray is the harness's (port/run.py: a Setup and no parts, as the oracle builds it).
+PartArray is made the same way, from its own Setup record (CreateSetup).
 """
 
 from __future__ import annotations

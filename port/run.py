@@ -6,7 +6,8 @@ becomes ``Outcome(error=...)``: a verdict, not a crash. An AceException (port/er
 ACE itself throws) reads ``"<.NET type>: <message>"``, as the oracle formats ACE's exceptions.
 Static objects are built from the DAT records acconform/dat.py writes (read by port/dat/) with
 ACE's constructors and placed by ACE's placement chain (add_obj_to_cell), as the oracle does with
-ACE's own code; the mover follows acconform.staging (mover_setup_dims, MOVER_ID). Pass a ``collections.Counter`` as
+ACE's own code; the mover is made by ACE's makeObject from its own records (dat.mover_records)
+with the id acconform.staging.MOVER_ID. Pass a ``collections.Counter`` as
 `trace` to count the branches the run took (names in acconform.port.transition.branches).
 """
 
@@ -16,20 +17,18 @@ import numpy as np
 
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome
+from acconform import dat
 from acconform.dat import static_records
-from acconform.staging import MOVER_ID, mover_setup_dims
+from acconform.staging import MOVER_ID
 from acconform.scene import Scene, StaticObject
 
 from .anchors import anchor, harness
 from .errors import AceException, NullReferenceException
 from .dat.portal_dat import PortalDat
 from .frame import AFrame, Position
-from .geom.sphere import Sphere
 from .land import land_defs
 from .land.lscape import LScape
-from .part_array import PartArray
 from .physics_obj import PhysicsObj
-from .setup import Setup
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 
 # the mover's PhysicsObj.ID, as the oracle's: player range, so PhysicsObj.IsPlayer is true
@@ -43,41 +42,35 @@ def _plane_state(valid: bool, cell: int, is_water: bool, plane: Plane) -> Contac
     return ContactPlaneState(bool(valid), int(cell), bool(is_water), _vec(plane.normal), float(plane.d))
 
 
-@harness("builds the mover's PhysicsObj from the scene, as the oracle builds ACE's")
-def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
-    """The mover as the oracle builds it: a PhysicsObj with a PartArray over a Setup of its spheres,
-    Height/Radius (staging.mover_setup_dims) and step heights; SetScaleStatic; flags, velocity,
-    contact plane, sliding normal, position and cell."""
+@harness("builds the mover from its DAT records and the scene, as the oracle's facade does")
+def build_mover(scene: Scene, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj:
+    """The mover as the oracle builds it (docs/oracle.md's audit): ``makeObject(mover Setup,
+    MOVER_ID, dynamic)`` over dat.mover_records (its spheres and step heights, one empty mesh
+    part), then SetScaleStatic(scale), State, TransientState, Velocity, the contact plane (and its
+    cell) and the sliding normal as the scene gives them, Position = begin, CurCell = the begin
+    cell. It is not entered in any cell."""
     mode = lscape.mode
     m = scene.mover
     s = mode.scalar
-    if m.contact_plane is not None:
-        contact_plane = Plane(mode.vec(*m.contact_plane.plane.normal), s(m.contact_plane.plane.d))
-        contact_cell = m.contact_plane.cell
-    else:
-        contact_plane = Plane(mode.vec(0, 0, 0), s(0.0))
-        contact_cell = 0
-    height, radius = mover_setup_dims(scene)
-    obj = PhysicsObj(id=MOVER_ID, state=0, position=None)
-    setup = Setup.create([Sphere(mode.vec(*sp.center), s(sp.radius)) for sp in m.spheres], [], s(height), s(radius),
-                         s(m.step_up_height), s(m.step_down_height))
-    obj.part_array = PartArray(owner=obj, setup=setup, num_parts=0, parts=[], scale=mode.vec(1, 1, 1))
+    obj = PhysicsObj.make_object(dat.MOVER_SETUP_ID, MOVER_ID, True, portal_dat)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
     obj.transient_state = m.transient_state
     obj.velocity = mode.vec(*m.velocity)
-    obj.contact_plane = contact_plane
-    obj.contact_plane_cell_id = contact_cell
-    obj.sliding_normal = mode.vec(*(m.sliding_normal or (0.0, 0.0, 0.0)))
+    if m.contact_plane is not None:
+        obj.contact_plane = Plane(mode.vec(*m.contact_plane.plane.normal), s(m.contact_plane.plane.d))
+        obj.contact_plane_cell_id = m.contact_plane.cell
+    if m.sliding_normal is not None:
+        obj.sliding_normal = mode.vec(*m.sliding_normal)
     obj.position = Position.from_record(m.begin, mode)
     obj.cur_cell = lscape.get_landcell(m.begin.cell)
     return obj
 
 
-@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's static objects, and each one's did")
+@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects and mover, and each static's did")
 def portal_dat_for(scene: Scene, mode) -> tuple[PortalDat, list[int]]:
     """The PortalDat and, per static object in scene order, the id makeObject takes."""
-    records = {}
+    records = {r.id: r.data for r in dat.mover_records(scene.mover).records}
     dids = []
     for index, record in enumerate(scene.objects):
         written = static_records(record, index)
@@ -137,7 +130,7 @@ def _run(scene: Scene, mode, trace) -> Outcome:
 def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
     portal_dat, dids = portal_dat_for(scene, mode)
     statics = [build_static(record, did, portal_dat, lscape) for record, did in zip(scene.objects, dids)]
-    mover = build_mover(scene, lscape)
+    mover = build_mover(scene, portal_dat, lscape)
     old_pos = mover.position.copy()
     new_pos = Position.from_record(scene.mover.end, mode)
     trans, ok = mover.transition(old_pos, new_pos, False, lscape, trace)

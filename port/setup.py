@@ -3,8 +3,8 @@
 ACE's Physics/Setup.cs over DatLoader's SetupModel (``_dat``). A static object's Setup comes from
 its DAT record (`get`, or `make_simple_setup` for a bare GfxObj); the fields the physics reads
 from ``_dat`` (step heights, Height, Radius, AllowFreeHeading, DefaultScale, the placement
-frames, Id) are copied beside the lists the constructor builds. The mover's Setup is the
-harness's (`create`, as the oracle packs it: no parts).
+frames, Id) are copied beside the lists the constructor builds. The mover's Setup comes from its
+own record (acconform/dat.py mover_records) the same way.
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from . import gfx_obj_cache
-from .anchors import anchor, harness
+from .anchors import anchor
 from .dat.setup_model import SetupModel
 from .db_obj import get_setup
 from .geom.cyl_sphere import CylSphere
@@ -41,15 +41,6 @@ class Setup:
     default_animation: int = 0
     default_script: int = 0
     default_motion_table: int = 0
-
-    @staticmethod
-    @harness("the mover's Setup as the oracle packs it: spheres, Height, Radius, step heights; no parts")
-    def create(spheres: list, cyl_spheres: list, height, radius, step_up_height, step_down_height) -> "Setup":
-        setup = Setup(cyl_sphere=list(cyl_spheres), sphere=list(spheres), step_up_height=step_up_height,
-                      step_down_height=step_down_height, height=height, radius=radius)
-        setup.num_cylsphere = len(setup.cyl_sphere)
-        setup.num_sphere = len(setup.sphere)
-        return setup
 
     def _copy_dat(self, dat: SetupModel) -> None:
         """``_dat = setupModel``: the SetupModel fields the physics reads."""

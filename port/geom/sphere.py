@@ -19,9 +19,9 @@ SphereIntersectsRay's time is double.
 from __future__ import annotations
 
 from acconform.flags import ObjectInfoState, TransitionState
-from acconform.numerics import D, Mode, Plane, Vector3, cast_float, cross, dot
+from acconform.numerics import D, Plane, Vector3, cast_float, cross, dot
 
-from ..anchors import anchor, harness
+from ..anchors import anchor
 from ..constants import EPSILON, LANDING_Z, STEP_INTERP_LIMIT
 from ..land.land_defs import get_block_offset
 from ..vec import cs_sqrt, normalize_check_small, zero_like
@@ -49,11 +49,6 @@ class Sphere:
     def from_dat(cls, sphere) -> "Sphere":
         """``new Sphere(DatLoader.Entity.Sphere)``: Center = Origin, Radius."""
         return cls(sphere.origin, sphere.radius)
-
-    @classmethod
-    @harness("a sphere from a scene SphereRec (the mover's Setup spheres, as the oracle packs them)")
-    def from_rec(cls, rec, mode: Mode) -> "Sphere":
-        return cls(mode.vec(*rec.center), mode.scalar(rec.radius))
 
     def __eq__(self, o) -> bool:
         return isinstance(o, Sphere) and self.center == o.center and self.radius == o.radius
