@@ -100,10 +100,6 @@ def compressed_u32(n: int) -> bytes:
     return bytes((0xC0 | (n >> 24), (n >> 16) & 0xFF)) + _u16.pack(n & 0xFFFF)
 
 
-def _f32(x: float) -> int:
-    return int(np.float32(x).view(np.uint32))
-
-
 def vertex_array(vertices) -> bytes:
     """CVertexArray: VertexType 1, count, then per vertex its ushort id and an SWVertex
     (numUVs 0, origin, normal (0, 0, 0))."""
@@ -111,6 +107,14 @@ def vertex_array(vertices) -> bytes:
     for i, v in enumerate(vertices):
         out.append(_u16.pack(i) + _u16.pack(0) + _3f.pack(*v) + _3f.pack(0.0, 0.0, 0.0))
     return b"".join(out)
+
+
+def _vertex_array_packed(origins: list[bytes]) -> bytes:
+    """`vertex_array` for origins already packed as three float32s."""
+    tail = _u16.pack(0)
+    zero = _3f.pack(0.0, 0.0, 0.0)
+    return b"".join([_i32.pack(VERTEX_TYPE), _u32.pack(len(origins))]
+                    + [_u16.pack(i) + tail + o + zero for i, o in enumerate(origins)])
 
 
 def polygon(poly: PolygonRec, ids: list[int]) -> bytes:
@@ -141,20 +145,21 @@ def bsp_node(node, out: list, leaves: list) -> None:
 
 def gfx_obj_physics(gfx_id: int, shape: BSPShape) -> bytes:
     """FileTypes/GfxObj: a physics-only GfxObj from a scene BSP shape."""
-    index: dict[tuple[int, int, int], int] = {}
+    index: dict[bytes, int] = {}  # a vertex's float32 bytes (exact bits: -0.0 and 0.0 differ) -> its id
     vertices = []
     poly_ids = []
+    pack3 = _3f.pack
     for p in shape.polygons:
         ids = []
         for v in p.vertices:
-            key = (_f32(v[0]), _f32(v[1]), _f32(v[2]))
+            key = pack3(*v)
             i = index.get(key)
             if i is None:
                 i = index[key] = len(vertices)
-                vertices.append(v)
+                vertices.append(key)
             ids.append(i)
         poly_ids.append(ids)
-    out = [_u32.pack(gfx_id), _u32.pack(GFX_HAS_PHYSICS), compressed_u32(0), vertex_array(vertices),
+    out = [_u32.pack(gfx_id), _u32.pack(GFX_HAS_PHYSICS), compressed_u32(0), _vertex_array_packed(vertices),
            compressed_u32(len(shape.polygons))]
     for k, (p, ids) in enumerate(zip(shape.polygons, poly_ids)):
         out.append(_u16.pack(k) + polygon(p, ids))
