@@ -1,6 +1,6 @@
 """Oracle cost per case beside ACE's own in-runtime time, per scene kind.
 
-    ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300] [--path facade|direct]
+    ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300]
     ACE_ASSEMBLY=... python benchmarks/bench_oracle.py --against HEAD~1   # before/after in one run
     python benchmarks/bench_oracle.py --ace mono/ACE.Server.dll --ace net10/ACE.Server.dll   # runtimes side by side
 
@@ -58,10 +58,10 @@ def scene_groups(n: int) -> dict:
     return groups
 
 
-def measure(groups: dict, path) -> dict:
+def measure(groups: dict) -> dict:
     from acconform.oracle.live import LiveOracle
 
-    oracle = LiveOracle(path=path)
+    oracle = LiveOracle()
     res = {"oracle": f"{oracle!r}: {oracle.versions.ace} on {oracle.versions.runtime}", "kinds": {}}
     for name, scenes in groups.items():
         if name.startswith(("warm-up: ", "batch: ")):
@@ -108,7 +108,6 @@ def _ratio(a, b) -> str:
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("-n", type=int, default=300)
-    ap.add_argument("--path", default=None)
     ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) first and print before/after")
     ap.add_argument("--ace", action="append", metavar="PATH",
                     help="an ACE build to measure (else ACE_ASSEMBLY); give several to print them side by side")
@@ -123,7 +122,7 @@ def main() -> int:
         sys.path.insert(0, str(ROOT))
         groups = scene_groups(args.n)
     if args.json:
-        print(json.dumps(measure(groups, args.path)))
+        print(json.dumps(measure(groups)))
         return 0
     if args.ace and len(args.ace) > 1:
         if args.against:
@@ -138,7 +137,7 @@ def main() -> int:
             scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "scenes.json"
             scenes.write_text(json.dumps({k: [s.to_json() for s in v] for k, v in groups.items()}))
             old = _measure_in_subprocess(args, groups, env, args.against)
-    new = measure(groups, args.path)
+    new = measure(groups)
 
     print(new["oracle"])
     if old:
@@ -168,8 +167,6 @@ def _measure_in_subprocess(args, groups: dict, env: dict, what: str) -> dict:
     scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "scenes.json"
     scenes.write_text(json.dumps({k: [s.to_json() for s in v] for k, v in groups.items()}))
     cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--scenes", str(scenes)]
-    if args.path:
-        cmd += ["--path", args.path]
     done = subprocess.run(cmd, env=env, capture_output=True, text=True)
     if done.returncode != 0:
         sys.stderr.write(done.stderr)

@@ -7,7 +7,7 @@ runtime. mono: ``mcs`` (Debian: mono-mcs). CoreCLR: the SDK of the .NET installa
 builds a throw-away class library referencing the ACE assemblies, for the target framework of
 their runtimeconfig, offline (its project names no package source).
 When no compiler is present, or compiling fails, `build` returns None and the reason, and the
-oracle falls back to the pure-pythonnet path (oracle/direct.py).
+live oracle refuses to start with that reason (the facade is the one scene builder).
 """
 
 from __future__ import annotations

@@ -54,6 +54,12 @@ class AFrame:
         w, x, y, z = frame.orientation
         return AFrame(mode.vec(*frame.origin), mode.quat(x, y, z, w))
 
+    @staticmethod
+    @anchor(None, "AFrame.cs:AFrame(DatLoader.Entity.Frame)", "the DAT constructor")
+    def from_dat(frame) -> "AFrame":
+        q = frame.orientation
+        return AFrame(frame.origin, Quaternion(q.x, q.y, q.z, q.w))
+
     @anchor(None, "AFrame.cs:AFrame(AFrame)", "the copy constructor")
     def copy(self) -> "AFrame":
         """``new AFrame(frame)``."""
