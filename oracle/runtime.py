@@ -1,6 +1,6 @@
 """Loading a .NET runtime and ACE's assemblies through pythonnet, once per process.
 
-This module (and oracle/functions.py, for the per-function lane) imports pythonnet (`clr`). Every
+This module, oracle/live.py and oracle/functions.py are the places that import pythonnet (`clr`). Every
 failure here becomes one OracleUnavailable naming what was looked for, where, and what to set.
 """
 
