@@ -38,13 +38,14 @@ def run(args) -> int:
     from ..port.run import run_scene
 
     mode = args.mode
+    runtime = _port_runtime(args, oracle)
 
     def port(scene):
-        return run_scene(scene, mode=mode)
+        return run_scene(scene, mode=mode, runtime=runtime)
 
     database = None if args.no_database else (args.database or DEFAULT_DATABASE)
     source = f"recorded corpus ({len(replay)} scenes)" if replay is not None else f"{getattr(oracle, 'name', 'oracle')} oracle"
-    print(f"acconform check: port vs {source}, mode {mode}, "
+    print(f"acconform check: port vs {source}, mode {mode}, {runtime} arithmetic, "
           + (f"kinds {','.join(kinds)}, {args.cases} cases, seed {args.seed}, " if replay is None else "")
           + f"{workers} worker{'s' if workers != 1 else ''}", file=sys.stderr)
     result = run_campaign(port, oracle.run, kinds=kinds, n=args.cases, seed=args.seed, mode=mode,
@@ -59,6 +60,18 @@ def run(args) -> int:
         for line in f.case.differences:
             print(f"    {line}")
     return 1 if result.found else 0
+
+
+def _port_runtime(args, oracle) -> str:
+    """The runtime whose arithmetic the port computes: the live oracle's (from the build, or
+    --runtime), else the one the corpus was recorded on."""
+    from ..numerics import runtime_named
+
+    if getattr(oracle, "name", "") == "live":
+        from ..oracle.config import resolve
+
+        return resolve(args.ace, args.runtime).runtime
+    return runtime_named(oracle.versions.runtime)
 
 
 def _oracle(args, workers: int):

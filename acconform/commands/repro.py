@@ -18,6 +18,7 @@ def run(args) -> int:
     from ..case import Case, load_document
     from ..compare import compare, render
     from ..errors import InvalidScene
+    from ..numerics import runtime_named
     from ..oracle import live_configured
     from ..port.run import run_scene
     from ..runner import guarded
@@ -26,7 +27,13 @@ def run(args) -> int:
     if not isinstance(doc, Case):
         raise InvalidScene("format", "expected a case file (\"acconform.case/1\"); use `acconform show` for other files", args.file)
     mode = args.mode or doc.mode
-    port = guarded(lambda s: run_scene(s, mode=mode), doc.scene)
+    if live_configured(args.ace):  # the port computes as the ACE it is compared with
+        from ..oracle.config import resolve
+
+        runtime = resolve(args.ace, args.runtime).runtime
+    else:  # ... as the ACE that answered the case
+        runtime = runtime_named(doc.versions.runtime)
+    port = guarded(lambda s: run_scene(s, mode=mode, runtime=runtime), doc.scene)
     if live_configured(args.ace):
         from ..oracle import require_live
 
@@ -36,7 +43,7 @@ def run(args) -> int:
         oracle = doc.oracle
         source = "the oracle outcome recorded in the case (no ACE configured)"
     diffs = compare(port, oracle, mode)
-    print(f"{args.file}: port (mode {mode}) vs {source}")
+    print(f"{args.file}: port (mode {mode}, {runtime} arithmetic) vs {source}")
     if not diffs:
         print("no longer fails: every field agrees")
         return 0
