@@ -405,8 +405,10 @@ def seam(draw, gx: float, gy: float, r: float) -> Plan:
 STRADDLE_BORDERS = st.sampled_from(("cell", "block", "block", "corner", "corner"))
 # within this of a landblock border the start counts as beside it (scenes.NEAR_BORDER draws 3 m)
 NEAR_BLOCK = 6.0
-STRADDLE_KINDS = st.sampled_from(("bsp", "sphere", "cylsphere", "leaf_root", "zero_radius_leaves", "bsp", "sphere",
-                                  "cylsphere", "zero_radius_leaves", "bsp"))
+# what straddles: BSP shapes in a bsp campaign, spheres and cylspheres in an obstacles one (a
+# campaign's kinds say which objects it draws)
+STRADDLE_KINDS = {"bsp": st.sampled_from(("bsp", "leaf_root", "zero_radius_leaves", "bsp", "zero_radius_leaves", "bsp")),
+                  "obstacles": st.sampled_from(("sphere", "cylsphere"))}
 SMALL_SIDES, LARGE_SIDES = dr.f32(0.3, 1.5), dr.f32(3.0, 12.0)
 SMALL_RADII, LARGE_RADII = dr.f32(0.2, 0.8), dr.f32(2.0, 6.0)
 STRADDLE_HEIGHTS = dr.f32(0.3, 4.0)
@@ -418,9 +420,9 @@ THROUGH = st.sampled_from((1.0, 2.0, 2.0, 0.5))  # path length in units of the s
 START_OFF_BORDER = dr.f32(0.5, 5.0)  # where a start far from a landblock border moves to, from the border
 
 
-def _straddle_shape(draw) -> tuple:
+def _straddle_shape(draw, scene_kind: str) -> tuple:
     """(shape, state, half size across the border) for one straddling object."""
-    kind = draw(STRADDLE_KINDS)
+    kind = draw(STRADDLE_KINDS[scene_kind])
     large = draw(SIZES) == "large"
     if kind in ("bsp", "leaf_root", "zero_radius_leaves"):
         sides = LARGE_SIDES if large else SMALL_SIDES
@@ -438,7 +440,7 @@ def _straddle_shape(draw) -> tuple:
 
 
 @st.composite
-def straddle(draw, gx: float, gy: float, r: float) -> Plan:
+def straddle(draw, gx: float, gy: float, r: float, scene_kind: str = "bsp") -> Plan:
     border = draw(STRADDLE_BORDERS)
     bxl, byl = round(gx / 192.0) * 192.0, round(gy / 192.0) * 192.0
     near_x, near_y = abs(gx - bxl) < NEAR_BLOCK, abs(gy - byl) < NEAR_BLOCK
@@ -450,7 +452,7 @@ def straddle(draw, gx: float, gy: float, r: float) -> Plan:
         if border == "corner" or not near_x:
             gy, near_y = byl + draw(SIGNS) * draw(START_OFF_BORDER), True
         moved = (gx, gy)
-    kind, shape, state, half = _straddle_shape(draw)
+    kind, shape, state, half = _straddle_shape(draw, scene_kind)
     past = half * dr.take(draw, PAST_BORDER)
     sx, sy = draw(SIGNS), draw(SIGNS)  # which side of each border the origin (the owner) is on
     if border == "corner" and near_x and near_y:
@@ -481,7 +483,8 @@ def straddle(draw, gx: float, gy: float, r: float) -> Plan:
 
 # a policy: (global x, global y, mover radius) -> a strategy of Plans (built per scene: a policy
 # depends on the mover; it costs little next to the span of its own it gives the shrinker)
-POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall, "straddle": straddle, "slope": slope, "seam": seam}
+POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall, "straddle": straddle, "slope": slope, "seam": seam,
+            "straddle_round": lambda gx, gy, r: straddle(gx, gy, r, "obstacles")}
 
 
 def mover_flags(plan: Plan) -> tuple[int, int]:

@@ -146,8 +146,9 @@ OBJECT_COUNTS = dr.ints(1, 3)
 
 BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter",
                                 "straddle", "straddle", "slope", "slope", "seam"))
-# obstacles: scattered along a free path, or "tangent": one exactly tangent to the mover's end
-OBSTACLE_POLICIES = st.sampled_from(("scatter", "scatter", "scatter", "tangent"))
+# obstacles: scattered along a free path, one across a cell or landblock border or corner
+# ("straddle_round"), or "tangent": one exactly tangent to the mover's end
+OBSTACLE_POLICIES = st.sampled_from(("scatter", "scatter", "scatter", "straddle_round", "tangent"))
 # terrain: a free path, or "border_slope": grounded on tilted terrain, a few metres from a block
 # border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
 TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope"))

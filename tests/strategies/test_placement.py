@@ -27,11 +27,23 @@ def test_straddling_statics_are_drawn_often_across_every_kind_of_border(bsp_scen
     assert table["across a landblock border: turned"] >= 20
 
 
-def test_the_straddle_policy_draws_boxes_spheres_cylspheres_and_the_odd_bsp_trees(bsp_scenes):
-    labels = Counter(s.name.split(":")[1] for s in bsp_scenes if s.name.startswith("bsp:straddle"))
+def _straddle_labels(scenes, kind):
+    return Counter(s.name.split(":")[1] for s in scenes if s.name.startswith(f"{kind}:straddle"))
+
+
+def test_the_straddle_policy_draws_boxes_and_the_odd_bsp_trees_in_bsp_campaigns(bsp_scenes):
+    labels = _straddle_labels(bsp_scenes, "bsp")
     kinds = {label.rsplit("-", 1)[1] for label in labels}
-    assert {"bsp", "sphere", "cylsphere", "leaf_root", "zero_radius_leaves"} <= kinds, labels
+    assert kinds == {"bsp", "leaf_root", "zero_radius_leaves"}, labels
     assert sum(labels.values()) >= len(bsp_scenes) // 10
+
+
+def test_the_straddle_policy_draws_spheres_and_cylspheres_in_obstacle_campaigns():
+    scenes = list(sample_scenes(("obstacles",), 300, 31))
+    labels = _straddle_labels(scenes, "obstacles")
+    kinds = {label.rsplit("-", 1)[1] for label in labels}
+    assert kinds == {"sphere", "cylsphere"}, labels
+    assert sum(labels.values()) >= len(scenes) // 10
 
 
 def test_leaf_root_and_zero_radius_leaf_shapes_are_valid_scenes(bsp_scenes):
