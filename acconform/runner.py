@@ -157,6 +157,17 @@ def check_writable(directory: str | Path, what: str = "--failures") -> Path:
     return d
 
 
+def check_output_file(path: str | Path, option: str) -> Path:
+    """A file a job will write when it ends, checked before it starts: not a directory, in a writable one."""
+    p = Path(path)
+    if p.is_dir():
+        raise AcconformError(f"{option} {p}: is a directory; give a file name")
+    if not p.parent.is_dir():
+        raise AcconformError(f"{option} {p}: no directory {p.parent}")
+    check_writable(p.parent, f"{option} {p}:")
+    return p
+
+
 def save_cases(result: "Result", failures_dir: str | Path) -> None:
     """Write every found case; if `failures_dir` fails, fall back to a temporary directory (never lose one)."""
     target = Path(failures_dir)

@@ -19,10 +19,9 @@ import hashlib
 import json
 import random
 import re
-import zlib
 from pathlib import Path
 
-from ..case import RECORD_FORMAT, Record, Versions
+from ..case import RECORD_FORMAT, Record, Versions, jsonl_lines
 from ..codec import dumps_compact
 from ..errors import AcconformError, InvalidScene
 from ..outcome import Outcome
@@ -67,19 +66,12 @@ def shards(corpus_dir: Path) -> list[Path]:
 
 
 def shard_lines(shard: Path):
-    """(line number, line) for each non-empty line of a gzip'd JSON-lines file.
-
-    CorpusCorrupt names the shard and the last line read when the gzip stream is truncated or corrupt.
-    """
-    lineno = 0
+    """(line number, line) for each non-empty line of a shard; CorpusCorrupt names the shard and the
+    last line read when the gzip stream is truncated or corrupt."""
     try:
-        with gzip.open(shard, "rt", encoding="utf-8") as f:
-            for lineno, line in enumerate(f, 1):
-                if line.strip():
-                    yield lineno, line
-    except (OSError, EOFError, zlib.error, UnicodeDecodeError) as e:
-        why = "truncated" if isinstance(e, EOFError) else f"corrupt ({e})"
-        raise CorpusCorrupt(f"{shard}: {why} after line {lineno}; the rest of the shard cannot be read") from None
+        yield from jsonl_lines(shard)
+    except InvalidScene as e:
+        raise CorpusCorrupt(str(e)) from None
 
 
 def record_doc(line: str, where: str) -> dict:

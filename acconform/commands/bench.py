@@ -236,6 +236,10 @@ def run(args) -> int:
     kinds = check_kinds(args.kinds or DEFAULT_KINDS)
     if args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
+    if args.json:
+        from ..runner import check_output_file
+
+        check_output_file(args.json, "--json")  # before the run, not after it
     by_kind, oracle = _scenes(args, kinds)
     note = None
     if args.no_oracle:

@@ -46,20 +46,10 @@ def _say(msg: str) -> None:
     print(f"acconform check: {msg}", file=sys.stderr, flush=True)
 
 
-def _check_output_file(path: str, option: str) -> None:
-    from ..errors import AcconformError
-    from ..runner import check_writable
-
-    p = Path(path)
-    if p.is_dir():
-        raise AcconformError(f"{option} {p}: is a directory; give a file name")
-    check_writable(p.parent if str(p.parent) else Path("."), f"{option} {p}:")
-
-
 def run(args) -> int:
     from ..errors import AcconformError
     from ..impl import make_backend
-    from ..runner import check_writable, default_workers
+    from ..runner import check_output_file, check_writable, default_workers
     from ..strategies import check_kinds
 
     kinds = check_kinds(args.kinds)
@@ -71,7 +61,7 @@ def run(args) -> int:
     check_writable(args.failures)
     for path, option in ((args.json, "--json"), (args.junit, "--junit")):
         if path is not None:
-            _check_output_file(path, option)
+            check_output_file(path, option)
     workers = args.workers or default_workers()
     port = make_backend(args.impl, args.mode, args.timeout)
     try:

@@ -62,6 +62,10 @@ def run(args) -> int:
     from ..strategies import check_kinds
 
     kinds = check_kinds(args.kinds)
+    if args.cases < 1:
+        from ..errors import AcconformError
+
+        raise AcconformError(f"--cases must be at least 1, got {args.cases}")
     warnings.simplefilter("ignore", RuntimeWarning)
     from contextlib import nullcontext
 
