@@ -438,15 +438,17 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
         try:
             with ctx.Pool(workers, initializer=_ignore_sigint) as pool:
                 pending = pool.map_async(_worker, range(workers))
-                while not pending.ready():
+                while True:
                     try:
-                        pending.wait(0.2)
+                        while not pending.ready():
+                            pending.wait(0.2)
+                            bar.update(counter.value, 0)
+                        outs = pending.get()
+                        break
                     except KeyboardInterrupt:
-                        # tell the workers to stop; they return what they have (a second Ctrl-C aborts)
+                        # tell the workers to stop; they return what they have so far
                         result.interrupted = True
                         stop.set()
-                    bar.update(counter.value, 0)
-                outs = pending.get()
         finally:
             _SHARED.clear()
         for done, cases, timings, shrunk, skipped in outs:

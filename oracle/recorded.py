@@ -141,7 +141,7 @@ class RecordedOracle:
     def select(self, *, n: int | None = None, seed: int = 0, kinds=None, runtime: str | None = None) -> list[str]:
         """Record keys in corpus order: of `kinds`, recorded on `runtime` (its name, e.g. "mono", or
         a full runtime string), and when `n` is given a sample of n stratified by kind (each kind
-        gets its share of n, at least one), drawn with `seed`."""
+        gets its share of n, at least one when n allows), drawn with `seed`."""
         keys = [k for k, (_, kind, rt) in self._where.items()
                 if (kinds is None or kind in kinds)
                 and (runtime is None or rt == runtime or rt.split(" ", 1)[0] == runtime)]
@@ -151,17 +151,15 @@ class RecordedOracle:
         for k in keys:
             by_kind.setdefault(self._where[k][1], []).append(k)
         shares = {kind: n * len(ks) / len(keys) for kind, ks in by_kind.items()}
-        take = {kind: max(1, int(x)) for kind, x in shares.items()}
-        # largest remainders get the cases left (or give back what the at-least-one rule took)
-        order = sorted(by_kind, key=lambda kind: (-(shares[kind] - int(shares[kind])), kind))
-        i = 0
-        while sum(take.values()) != n and i < 4 * len(order):
-            kind = order[i % len(order)]
-            if sum(take.values()) < n and take[kind] < len(by_kind[kind]):
-                take[kind] += 1
-            elif sum(take.values()) > n and take[kind] > 1:
-                take[kind] -= 1
-            i += 1
+        take = {kind: int(x) for kind, x in shares.items()}
+        # the cases left go to the largest remainders; then every kind gets one if n allows
+        for kind in sorted(by_kind, key=lambda kind: (int(shares[kind]) - shares[kind], kind))[:n - sum(take.values())]:
+            take[kind] += 1
+        if n >= len(by_kind):
+            for kind in by_kind:
+                if take[kind] == 0:
+                    take[max(take, key=take.get)] -= 1
+                    take[kind] = 1
         rng = random.Random(seed)
         chosen = set()
         for kind in sorted(by_kind):
