@@ -30,6 +30,7 @@ from __future__ import annotations
 import json
 import os
 import selectors
+from collections import deque
 import shlex
 import subprocess
 import sys
@@ -142,6 +143,9 @@ class Implementation:
         self._pid = None
         self._buf = bytearray()
         self._next_id = 0
+        self._inflight: deque[tuple[int, Scene]] = deque()  # requests sent, answers not yet read, in order
+        self._answers: dict[int, Outcome] = {}
+        self._sel = None
         self.hello = self._start()
         if mode not in self.hello["modes"]:
             self.close()
@@ -175,6 +179,9 @@ class Implementation:
             raise ImplementationError(f"cannot start implementation {self.command!r}: {e.strerror or e}") from None
         self._pid = os.getpid()
         self._buf = bytearray()
+        self._sel = selectors.DefaultSelector()
+        self._sel.register(self._proc.stdout.fileno(), selectors.EVENT_READ)
+        os.set_blocking(self._proc.stdin.fileno(), False)
         try:
             line = self._readline(self.start_timeout)
         except _Failed as e:
@@ -205,27 +212,28 @@ class Implementation:
     def _readline(self, timeout: float) -> str:
         deadline = time.monotonic() + timeout
         fd = self._proc.stdout.fileno()
-        with selectors.DefaultSelector() as sel:
-            sel.register(fd, selectors.EVENT_READ)
-            while True:
-                nl = self._buf.find(b"\n")
-                if nl >= 0:
-                    line = bytes(self._buf[:nl])
-                    del self._buf[:nl + 1]
-                    return line.decode("utf-8", "replace")
-                left = deadline - time.monotonic()
-                if left <= 0 or not sel.select(left):
-                    raise _Failed(f"{TIMEOUT}: no answer within {timeout:g} s; the process was killed and restarted")
-                data = os.read(fd, 1 << 16)
-                if not data:
-                    code = self._proc.wait()
-                    raise _Failed(f"{CRASH}: the process exited with code {code}{self._stderr_tail()}")
-                self._buf += data
+        while True:
+            nl = self._buf.find(b"\n")
+            if nl >= 0:
+                line = bytes(self._buf[:nl])
+                del self._buf[:nl + 1]
+                return line.decode("utf-8", "replace")
+            left = deadline - time.monotonic()
+            if left <= 0 or not self._sel.select(left):
+                raise _Failed(f"{TIMEOUT}: no answer within {timeout:g} s; the process was killed and restarted")
+            data = os.read(fd, 1 << 16)
+            if not data:
+                code = self._proc.wait()
+                raise _Failed(f"{CRASH}: the process exited with code {code}{self._stderr_tail()}")
+            self._buf += data
 
     def _kill(self) -> None:
         p, self._proc = self._proc, None
         if p is None:
             return
+        if self._sel is not None:
+            self._sel.close()
+            self._sel = None
         if self._pid == os.getpid():
             for f in (p.stdin, p.stdout):
                 try:
@@ -269,24 +277,73 @@ class Implementation:
         return self.run(scene)
 
     def run(self, scene: Scene) -> Outcome:
+        """The implementation's outcome for `scene` (sent now, unless `prefetch` sent it already)."""
+        why = self._ensure()
+        if why is not None:
+            return self._verdict(why)
+        rid = next((r for r, s in self._inflight if s is scene), None)
+        if rid is None:
+            rid = self._send(scene)
+        while rid not in self._answers:
+            self._read_answer()
+        for old in [r for r in self._answers if r < rid]:  # answers to prefetched scenes never asked for
+            del self._answers[old]
+        return self._answers.pop(rid)
+
+    def prefetch(self, scene: Scene) -> None:
+        """Send `scene` ahead, so the implementation works on it while the harness compares the
+        previous answer (a replay knows its next scene). At most two requests are in flight."""
+        if len(self._inflight) < 2 and self.unsupported(scene) is None and self._ensure() is None:
+            self._send(scene)
+
+    def _ensure(self) -> str | None:
+        """A process for this process id (forked workers start their own); a verdict text if none starts."""
         if self._proc is None or self._pid != os.getpid():
-            if self._proc is not None:
-                self._kill()  # inherited from the parent by fork
+            if self._pid != os.getpid():  # a forked worker: the parent's process and requests are not ours
+                self._kill()
+                self._inflight.clear()
+                self._answers.clear()
             try:
                 self._start()
             except ImplementationError as e:
-                return self._verdict(f"{CRASH}: could not restart: {e}")
-        self._next_id += 1
-        rid = self._next_id
+                return f"{CRASH}: could not restart: {e}"
+        return None
+
+    def _send(self, scene: Scene, rid: int | None = None) -> int:
+        if rid is None:
+            self._next_id += 1
+            rid = self._next_id
+            self._inflight.append((rid, scene))
         request = dumps_compact({"id": rid, "mode": self.mode, "scene": scene.to_json()}) + "\n"
+        self._write(request.encode("utf-8"))
+        return rid
+
+    def _write(self, data: bytes) -> None:
+        """Write without ever blocking for longer than the time limit: a process that stops reading
+        (a hang) would otherwise hold the harness on a full pipe. Whatever goes wrong here shows up
+        when the answer is read (an exit code, or no answer in time)."""
+        fd = self._proc.stdin.fileno()
+        view = memoryview(data)
+        deadline = time.monotonic() + self.timeout
+        with selectors.DefaultSelector() as sel:
+            sel.register(fd, selectors.EVENT_WRITE)
+            while view:
+                try:
+                    view = view[os.write(fd, view):]
+                except BlockingIOError:
+                    left = deadline - time.monotonic()
+                    if left <= 0 or not sel.select(left):
+                        return
+                except (BrokenPipeError, ConnectionResetError):
+                    return
+
+    def _read_answer(self) -> None:
+        """Read the answer to the oldest request in flight, or give it a verdict and restart."""
+        rid = self._inflight[0][0]
         try:
-            self._proc.stdin.write(request.encode("utf-8"))
             line = self._readline(self.timeout)
-        except (BrokenPipeError, ConnectionResetError):
-            code = self._proc.wait()
-            return self._restart(f"{CRASH}: the process exited with code {code}{self._stderr_tail()}")
         except _Failed as e:
-            return self._restart(e.args[0])
+            return self._fail_head(e.args[0])
         try:
             doc = json.loads(line)
             if not isinstance(doc, dict):
@@ -295,19 +352,32 @@ class Implementation:
                 raise ValueError(f"answer id {doc.get('id')!r}, expected {rid}")
             if "outcome" not in doc:
                 raise ValueError("no \"outcome\" field")
-            return Outcome.from_json(doc["outcome"], "outcome")
+            outcome = Outcome.from_json(doc["outcome"], "outcome")
         except (ValueError, InvalidScene) as e:
-            return self._restart(f"{PROTOCOL_ERROR}: malformed answer ({e}): {line[:120]!r}")
+            return self._fail_head(f"{PROTOCOL_ERROR}: malformed answer ({e}): {line[:120]!r}")
+        self._inflight.popleft()
+        self._answers[rid] = outcome
+
+    def _fail_head(self, text: str) -> None:
+        """The oldest request's verdict; a fresh process gets the requests still in flight."""
+        rid, _ = self._inflight.popleft()
+        self._answers[rid] = self._verdict(text)
+        rest = list(self._inflight)
+        self._inflight.clear()
+        self._kill()
+        self.restarts += 1
+        why = self._ensure()
+        for r, scene in rest:
+            if why is not None:
+                self._answers[r] = self._verdict(why)
+            else:
+                self._inflight.append((r, scene))
+                self._send(scene, r)
 
     def _verdict(self, text: str) -> Outcome:
         kind = text.split(":", 1)[0]
         self.failures[kind] = self.failures.get(kind, 0) + 1
         return Outcome(error=text)
-
-    def _restart(self, text: str) -> Outcome:
-        self._kill()
-        self.restarts += 1
-        return self._verdict(text)
 
 
 # ---------------------------------------------------------------- the implementation side

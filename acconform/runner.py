@@ -321,13 +321,23 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
 
 def _replay(port: Backend, oracle: Backend, scenes: Iterable[Scene], *, mode: str, keep_going: bool, tick,
             should_stop, timings: Counter, skipped: Counter, versions: Versions, seed, found: list[Found]) -> int:
-    """Replay `scenes` as they are; append each difference (unshrunk) to `found`; return scenes run."""
+    """Replay `scenes` as they are; append each difference (unshrunk) to `found`; return scenes run.
+
+    A port that can take a scene ahead (`port.prefetch`, an implementation process) is sent the
+    next scene before the current answer is read, so it computes while this process compares.
+    """
     done = 0
-    for scene in scenes:
+    scenes = list(scenes)
+    prefetch = getattr(port, "prefetch", None)
+    if prefetch is not None and scenes:
+        prefetch(scenes[0])
+    for i, scene in enumerate(scenes):
         if should_stop():
             break
         done += 1
         tick(1)
+        if prefetch is not None and i + 1 < len(scenes):
+            prefetch(scenes[i + 1])
         ran_case = run_case(port, oracle, scene, mode, timings, skipped)
         if ran_case is None:
             continue

@@ -15,5 +15,7 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     from ..port.run import run_scene
     from ..protocol import serve
+    from ..runner import campaign_gc
 
-    return serve(lambda scene, mode: run_scene(scene, mode=mode))
+    with campaign_gc():  # the collector tuned as for an in-process campaign (runner.GC_THRESHOLDS)
+        return serve(lambda scene, mode: run_scene(scene, mode=mode))

@@ -157,3 +157,15 @@ def test_run_prints_one_scene_outcome_from_the_port_or_an_implementation(tmp_pat
         assert r.returncode == 0, r.stderr
         outs.append(json.loads(r.stdout))
     assert outs[0] == outs[1] and outs[0]["format"] == "acconform.outcome/1"
+
+
+def test_a_scene_sent_ahead_of_a_crash_is_sent_again_to_the_restarted_process(corpus_scenes):
+    impl = Implementation(planted("none", "--crash-on", "bsp"))
+    try:
+        impl.prefetch(corpus_scenes["bsp"])
+        impl.prefetch(corpus_scenes["terrain"])  # in the pipe behind the scene that crashes the process
+        assert impl(corpus_scenes["bsp"]).error.startswith(CRASH)
+        assert impl(corpus_scenes["terrain"]) == BuiltinPort()(corpus_scenes["terrain"])
+        assert impl.restarts == 1
+    finally:
+        impl.close()
