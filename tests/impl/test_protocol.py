@@ -148,6 +148,14 @@ def test_an_implementation_that_sends_no_handshake_is_one_line_and_exit_2(tmp_pa
         Implementation("/nonexistent/port --serve")
 
 
+def test_bench_measures_an_implementation_in_both_modes(tmp_path):
+    r = subprocess.run([sys.executable, "-m", "acconform.cli", "bench", "-n", "3", "--kinds", "terrain", "--impl",
+                        planted("none"), "--json", str(tmp_path / "b.json")], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    doc = json.loads((tmp_path / "b.json").read_text())
+    assert doc["implementation"] == planted("none") and doc["kinds"]["terrain"]["scenes"] == 3
+
+
 def test_run_prints_one_scene_outcome_from_the_port_or_an_implementation(tmp_path):
     scene = ROOT / "examples" / "flat_walk.json"
     outs = []
