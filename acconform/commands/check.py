@@ -113,8 +113,9 @@ def _campaign(args, port, kinds, workers) -> int:
         print(f"  {f.path} ({how}; {f.case.scene.name or 'scene'})")
         for line in f.case.differences:
             print(f"    {line}")
-    campaign = Campaign("recorded" if replay is not None else "live", args.mode, seed, run_kinds, impl_info,
-                        str(args.failures), bad)
+    sampled = replay is None or args.cases is not None  # replaying the whole corpus draws nothing
+    campaign = Campaign("recorded" if replay is not None else "live", args.mode, seed if sampled else None, run_kinds,
+                        impl_info, str(args.failures), bad)
     if args.json:
         write_json(args.json, summary(result, campaign))
     if args.junit:
