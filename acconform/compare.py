@@ -11,6 +11,10 @@ SpherePath bits, error presence) must be equal in every mode. Floats:
   ``FAST_ABS`` absolute (for values near zero, where ULPs are tiny); NaN matches NaN of any
   payload, infinities only themselves.
 
+`static_cells` (the cells each static is registered in, in order) must be equal in every mode,
+unless either side has None ("not recorded": an ``acconform.outcome/1`` record); then it is
+not compared.
+
 Errors: their presence must match in every mode, and in exact mode also the exception type
 (the text before the first colon); the messages are free text (ACE's come from .NET, the
 port's name the missing piece) and are shown but never compared.
@@ -62,6 +66,8 @@ def _show(path: str, v) -> str:
         return repr(v)
     if isinstance(v, int) and leaf in _ID_FIELDS:
         return f"0x{v:08X}"
+    if isinstance(v, tuple) and leaf == "static_cells":
+        return "[" + ", ".join("[" + ", ".join(f"0x{c:08X}" for c in cells) + "]" for cells in v) + "]"
     if isinstance(v, int) and leaf in _FLAG_FIELDS:
         return "|".join(flag_names(_FLAG_FIELDS[leaf], v)) or "0"
     if isinstance(v, float):
@@ -112,6 +118,9 @@ def _compare_record(a, b, prefix: str, mode: str, out: list) -> None:
         va, vb = getattr(a, name), getattr(b, name)
         if isinstance(va, (ContactPlaneState, NormalState)):
             _compare_record(va, vb, path + ".", mode, out)
+        elif name == "static_cells":
+            if va is not None and vb is not None and va != vb:
+                out.append(Difference(path, va, vb))
         elif name == "error":
             if (va is None) != (vb is None) or (mode == "exact" and va is not None and _etype(va) != _etype(vb)):
                 out.append(Difference(path, va, vb))

@@ -22,19 +22,21 @@ def add_arguments(p) -> None:
 
 
 class BuiltinPort:
-    """The built-in port in this process (acconform.port.run.run_scene) in one mode."""
+    """The built-in port in this process (acconform.port.run.run_scene) in one mode, computing as
+    ACE on `runtime` does ("mono" or "coreclr"; set it to the runtime of the ACE compared with)."""
 
     name = "acconform port"
     hello = None
 
-    def __init__(self, mode: str = "exact"):
+    def __init__(self, mode: str = "exact", runtime: str = "mono"):
         from .port.run import run_scene
 
         self.mode = mode
+        self.runtime = runtime
         self._run = run_scene
 
     def __call__(self, scene: Scene) -> Outcome:
-        return self._run(scene, mode=self.mode)
+        return self._run(scene, mode=self.mode, runtime=self.runtime)
 
     def unsupported(self, scene: Scene) -> None:
         return None

@@ -12,8 +12,12 @@ the port writes it out: ``D(x)`` makes a double (``np.float64``) in both modes, 
 is C#'s ``(float)x`` in the mode of ``like``.
 
 The runtime that executes ACE matters where System.Numerics or the JIT differ; `Runtime` holds
-those spots (float->int casts today) so another runtime's arithmetic can be added without touching
-physics code. Only mono's is implemented and checked here (see tests/numerics).
+those spots: float->int casts and the System.Numerics operations whose formula differs (quaternion
+rotation and products, lerps, matrix transforms, CreateFromYawPitchRoll, Vector3 negation). `MONO` is mono 6.8's
+System.Numerics; `NET10` is .NET 10 on CoreCLR (x64 with FMA), measured against both runtimes'
+recorded answers (tests/data/numerics_*.json). A quaternion carries the runtime that made it
+(`Quaternion.runtime`), so frame code asks its orientation which formulas to use; the mode's
+`quat` makes quaternions of the mode's runtime.
 """
 
 from __future__ import annotations
@@ -21,7 +25,8 @@ from __future__ import annotations
 import ctypes
 import ctypes.util
 import math
-from dataclasses import dataclass
+import struct
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -84,89 +89,6 @@ def wrap_u32(n: int) -> int:
     return n & 0xFFFFFFFF
 
 
-@dataclass(frozen=True, slots=True)
-class Runtime:
-    """The .NET runtime ACE runs on: where its arithmetic differs, the difference lives here."""
-
-    name: str
-
-    def to_int32(self, x) -> int:
-        """C# ``(int)x`` for a float or double x."""
-        x = float(x)
-        if self.name == "mono":
-            # x86-64 cvttsd2si: NaN and out-of-range give int.MinValue (checked on mono 6.8).
-            # (NaN and +-inf fail the range test.)
-            if -2147483649.0 < x < 2147483648.0:
-                return int(x)
-            return -2147483648
-        # .NET 9+ (CoreCLR): conversions saturate and NaN gives 0.
-        if math.isnan(x):
-            return 0
-        if x >= 2147483647.0:
-            return 2147483647
-        if x <= -2147483648.0:
-            return -2147483648
-        return int(x)
-
-    def to_uint32(self, x) -> int:
-        """C# ``(uint)x`` for a float or double x."""
-        x = float(x)
-        if self.name == "mono":
-            # mono converts through a 64-bit cvtt and keeps the low 32 bits (NaN, +-inf and
-            # out-of-range fail the range test and give 0).
-            if -9.223372036854775808e18 <= x < 9.223372036854775808e18:
-                return int(x) & 0xFFFFFFFF
-            return 0
-        if math.isnan(x) or x <= 0.0:
-            return 0
-        if x >= 4294967295.0:
-            return 4294967295
-        return int(x)
-
-
-MONO = Runtime("mono")
-CORECLR = Runtime("coreclr")
-RUNTIMES = {"mono": MONO, "coreclr": CORECLR}
-
-
-@dataclass(frozen=True, slots=True)
-class Mode:
-    """How a run computes: `scalar` is the component type every value is made of."""
-
-    name: str
-    scalar: type
-    runtime: Runtime = MONO
-
-    def vec(self, x, y, z) -> "Vector3":
-        s = self.scalar
-        return Vector3(s(x), s(y), s(z))
-
-    def quat(self, x, y, z, w) -> "Quaternion":
-        s = self.scalar
-        return Quaternion(s(x), s(y), s(z), s(w))
-
-
-EXACT = Mode("exact", np.float32)
-FAST = Mode("fast", np.float64)
-MODES = {"exact": EXACT, "fast": FAST}
-
-
-def get_mode(name: str, runtime: str = "mono") -> Mode:
-    from .errors import AcconformError
-
-    if name not in MODES:
-        raise AcconformError(f"unknown numerics mode {name!r}: choose one of {sorted(MODES)}")
-    if runtime not in RUNTIMES:
-        raise AcconformError(f"unknown runtime {runtime!r}: choose one of {sorted(RUNTIMES)}")
-    if runtime != "mono":
-        raise AcconformError(
-            "only the mono runtime's System.Numerics arithmetic is ported so far; "
-            "CoreCLR (.NET 10) rotates by quaternions through another formula and fuses "
-            "multiply-adds -- run the oracle on mono or compare with --mode fast"
-        )
-    return MODES[name]
-
-
 # ---------------------------------------------------------------- System.Numerics types
 # Immutable value types: C# assigns structs by copy, so Python must never alias a mutable one.
 
@@ -199,7 +121,9 @@ class Vector3:
         return r
 
     def __neg__(self) -> "Vector3":
-        # System.Numerics: operator -(Vector3 value) => Zero - value (so -(0) is +0, not -0)
+        # mono's System.Numerics: operator -(Vector3 value) => Zero - value (so -(0) is +0, not
+        # -0); .NET 10 flips the sign bits (`net10_negate`). Port code negates through
+        # `runtime.negate`, never with a bare `-v`.
         r = _new(Vector3)
         r.x = 0.0 - self.x
         r.y = 0.0 - self.y
@@ -323,7 +247,10 @@ def lerp(a: Vector3, b: Vector3, t) -> Vector3:
 
 
 class Quaternion:
-    """System.Numerics.Quaternion (X, Y, Z, W) -- note AC files write (W, X, Y, Z)."""
+    """System.Numerics.Quaternion (X, Y, Z, W) -- note AC files write (W, X, Y, Z).
+
+    ``runtime`` (a class attribute, set below) is the runtime whose arithmetic made the value: this
+    class is mono's, `Net10Quaternion` .NET 10's; each runtime's operations return its own class."""
 
     __slots__ = ("x", "y", "z", "w")
 
@@ -335,7 +262,7 @@ class Quaternion:
 
     def __eq__(self, o) -> bool:
         return (
-            type(o) is Quaternion and self.x == o.x and self.y == o.y and self.z == o.z and self.w == o.w
+            isinstance(o, Quaternion) and self.x == o.x and self.y == o.y and self.z == o.z and self.w == o.w
         )
 
     __hash__ = None
@@ -395,7 +322,7 @@ def quat_lerp(a: Quaternion, b: Quaternion, t) -> Quaternion:
 
 
 def transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
-    """Vector3.Transform(Vector3, Quaternion), mono's formula (CoreCLR's differs)."""
+    """Vector3.Transform(Vector3, Quaternion), mono's formula (.NET 10's: `net10_transform_by_quaternion`)."""
     x2 = q.x + q.x
     y2 = q.y + q.y
     z2 = q.z + q.z
@@ -550,3 +477,394 @@ def quat_create_from_yaw_pitch_roll(yaw, pitch, roll) -> Quaternion:
         cy * cp * sr - sy * sp * cr,
         cy * cp * cr + sy * sp * sr,
     )
+
+
+# ---------------------------------------------------------------- .NET 10 (CoreCLR, x64 with FMA)
+# .NET 10 computes System.Numerics through Vector128 helpers: horizontal sums pair up lanes
+# ((x + y) + (z + w)), quaternion products follow DirectXMath's XMQuaternionMultiply, and every
+# MultiplyAddEstimate is one fused multiply-add on hardware with FMA (all x64 since Haswell; the
+# JIT emits vfmadd at every tier, checked with tiering on and off). Each formula below is checked
+# bit for bit against .NET 10.0's answers (tests/data/numerics_net10*.json).
+
+_DOUBLE = struct.Struct("<d")
+_INT64 = struct.Struct("<q")
+
+
+def fma(a, b, c):
+    """``MultiplyAddEstimate(a, b, c)`` on float32 (fused on FMA hardware): a*b+c rounded once.
+
+    a*b of two float32s is exact in a double; a*b + c in double may round once there and again to
+    float32 (double rounding). TwoSum gives the double sum's error exactly, and rounding that sum
+    to odd (when inexact, the neighbour with an odd last bit) keeps enough of it that the final
+    float32 rounding is the correct one (the double has 53 >= 24 + 2 bits). In fast mode (doubles)
+    it is a*b + c, unfused: fast mode is a tolerance comparison anyway."""
+    if type(a) is not np.float32:
+        return a * b + c
+    p = float(a) * float(b)
+    cc = float(c)
+    s = p + cc
+    if s - s != 0.0:  # inf or NaN: the IEEE result of a*b + c already
+        return np.float32(s)
+    bp = s - p
+    e = (p - (s - bp)) + (cc - bp)  # TwoSum: p + cc == s + e exactly
+    if e != 0.0 and not (_INT64.unpack(_DOUBLE.pack(s))[0] & 1):
+        s = math.nextafter(s, math.inf if e > 0.0 else -math.inf)
+    return np.float32(s)
+
+
+def fma_double(a: float, b: float, c: float) -> float:
+    """``double.MultiplyAddEstimate`` (fused): a*b+c rounded once, in exact integer arithmetic
+    (Python's int true division rounds correctly, subnormals included)."""
+    if a == 0.0 or b == 0.0 or not (math.isfinite(a) and math.isfinite(b) and math.isfinite(c)):
+        return a * b + c  # an exact (signed zero) product, or IEEE's inf/NaN rules: one rounding
+    na, da = a.as_integer_ratio()
+    nb, db = b.as_integer_ratio()
+    nc, dc = c.as_integer_ratio()
+    n, d = na * nb, da * db  # denominators are powers of two
+    if d >= dc:
+        n, d = n + nc * (d // dc), d
+    else:
+        n, d = n * (dc // d) + nc, dc
+    if n == 0:
+        return 0.0  # an exact cancellation is +0 when rounding to nearest
+    try:
+        return n / d
+    except OverflowError:
+        return math.inf if n > 0 else -math.inf
+
+
+class Net10Quaternion(Quaternion):
+    """A quaternion made by .NET 10's arithmetic (see `Quaternion`)."""
+
+    __slots__ = ()
+
+    def __mul__(self, o: "Quaternion") -> "Quaternion":
+        return net10_quat_multiply(self, o)
+
+
+def net10_quat_multiply(value1: Quaternion, value2: Quaternion) -> Quaternion:
+    """Quaternion.Multiply / operator* on .NET 10: DirectXMath's order -- ``value2 * value1.W``,
+    then three multiply-adds of shuffled value2 lanes times value1.X, .Y, .Z by +-1 (a fused
+    multiply by +-1 rounds once, as the plain add or subtract written here does)."""
+    lx, ly, lz, lw = value1.x, value1.y, value1.z, value1.w
+    rx, ry, rz, rw = value2.x, value2.y, value2.z, value2.w
+    return Net10Quaternion(
+        ((rx * lw + rw * lx) + rz * ly) - ry * lz,
+        ((ry * lw - rz * lx) + rw * ly) + rx * lz,
+        ((rz * lw + ry * lx) - rx * ly) + rw * lz,
+        ((rw * lw - rx * lx) - ry * ly) - rz * lz,
+    )
+
+
+def _net10_length_squared(q: Quaternion):
+    """Quaternion.LengthSquared on .NET 10: Vector128.Dot, summed ((x*x + y*y) + (z*z + w*w))."""
+    return (q.x * q.x + q.y * q.y) + (q.z * q.z + q.w * q.w)
+
+
+def net10_quat_normalize(q: Quaternion) -> Quaternion:
+    """Quaternion.Normalize on .NET 10: each lane divided by Length() (mono multiplies by 1/length)."""
+    ls = _net10_length_squared(q)
+    length = type(ls)(math.sqrt(ls))
+    return Net10Quaternion(q.x / length, q.y / length, q.z / length, q.w / length)
+
+
+def net10_quat_inverse(q: Quaternion) -> Quaternion:
+    """Quaternion.Inverse on .NET 10: Conjugate(q) divided lane by lane by LengthSquared()."""
+    ls = _net10_length_squared(q)
+    return Net10Quaternion(-q.x / ls, -q.y / ls, -q.z / ls, q.w / ls)
+
+
+def net10_quat_lerp(a: Quaternion, b: Quaternion, t) -> Quaternion:
+    """Quaternion.Lerp on .NET 10: ``MultiplyAddEstimate(a, 1 - t, b * +-t)`` per lane (the sign
+    of +-t from the pairwise Dot of a and b), then Normalize."""
+    t1 = 1.0 - t
+    d = (a.x * b.x + a.y * b.y) + (a.z * b.z + a.w * b.w)
+    s = t if d >= 0.0 else -t
+    return net10_quat_normalize(Net10Quaternion(
+        fma(a.x, t1, b.x * s), fma(a.y, t1, b.y * s), fma(a.z, t1, b.z * s), fma(a.w, t1, b.w * s)))
+
+
+def net10_transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
+    """Vector3.Transform(Vector3, Quaternion) on .NET 10: Vector4.Transform of (v, 1), that is
+    ``Concatenate(Concatenate(Conjugate(q), (v, 1)), q)`` = ``q * ((v, 1) * Conjugate(q))``, X Y Z
+    kept; both products written out as `net10_quat_multiply` computes them (no objects between)."""
+    lx, ly, lz, lw = v.x, v.y, v.z, type(v.x)(1.0)
+    rx, ry, rz, rw = -q.x, -q.y, -q.z, q.w
+    tx = ((rx * lw + rw * lx) + rz * ly) - ry * lz  # t = (v, 1) * Conjugate(q)
+    ty = ((ry * lw - rz * lx) + rw * ly) + rx * lz
+    tz = ((rz * lw + ry * lx) - rx * ly) + rw * lz
+    tw = ((rw * lw - rx * lx) - ry * ly) - rz * lz
+    lx, ly, lz, lw = q.x, q.y, q.z, q.w  # q * t
+    out = _new(Vector3)
+    out.x = ((tx * lw + tw * lx) + tz * ly) - ty * lz
+    out.y = ((ty * lw - tz * lx) + tw * ly) + tx * lz
+    out.z = ((tz * lw + ty * lx) - tx * ly) + tw * lz
+    return out
+
+
+def net10_negate(v: Vector3) -> Vector3:
+    """Vector3 unary minus on .NET 10: Vector128 negation flips each sign bit, so -(+0) is -0
+    (mono computes Zero - v, which gives +0)."""
+    r = _new(Vector3)
+    r.x = -v.x
+    r.y = -v.y
+    r.z = -v.z
+    return r
+
+
+def net10_lerp(a: Vector3, b: Vector3, t) -> Vector3:
+    """Vector3.Lerp on .NET 10: ``MultiplyAddEstimate(a, 1 - t, b * t)`` per lane (mono: a + (b - a) * t)."""
+    t1 = 1.0 - t
+    r = _new(Vector3)
+    r.x = fma(a.x, t1, b.x * t)
+    r.y = fma(a.y, t1, b.y * t)
+    r.z = fma(a.z, t1, b.z * t)
+    return r
+
+
+def net10_transform_by_matrix(v: Vector3, mat: Matrix4x4) -> Vector3:
+    """Vector3.Transform(Vector3, Matrix4x4) on .NET 10: rows X, Y, Z, W of the matrix,
+    ``MultiplyAddEstimate(Z, v.z, MultiplyAddEstimate(Y, v.y, X * v.x)) + W`` per lane."""
+    m = mat.m
+    x, y, z = v.x, v.y, v.z
+    r = _new(Vector3)
+    r.x = fma(m[8], z, fma(m[4], y, m[0] * x)) + m[12]
+    r.y = fma(m[9], z, fma(m[5], y, m[1] * x)) + m[13]
+    r.z = fma(m[10], z, fma(m[6], y, m[2] * x)) + m[14]
+    return r
+
+
+# Vector128.SinCos(Vector128<float>) on .NET 10 (VectorMath.SinCosSingle, from AMD's aocl-libm
+# sinf/cosf): one branch for all four lanes, chosen by every lane's magnitude.
+_SINCOS_HUGE = 0x4A989680  # 5e6: at or above it (or NaN/inf) in any lane, the scalar sinf/cosf
+_SINCOS_LARGE = 0x3F490FDB  # pi/4: every lane at or below it, no argument reduction
+_SINCOS_SMALL = 0x3C000000  # 2^-7: every lane below it, the float Taylor terms
+_SINCOS_SMALLER = 0x39000000  # 2^-13: a lane below it gives (x, 1)
+_SHIFT = 6755399441055744.0  # 1.5 * 2^52: rounds to an integer in the low mantissa bits
+
+
+def _sin_single_poly(r: float) -> float:
+    r2 = r * r
+    r3 = r2 * r
+    r4 = r2 * r2
+    return fma_double(fma_double(fma_double(2.7557316103728802e-06, r2, -0.00019841269836761127), r4,
+                                 fma_double(0.00833333333333095, r2, -1.0 / 6.0)), r3, r)
+
+
+def _cos_single_poly(r: float) -> float:
+    r2 = r * r
+    r4 = r2 * r2
+    return fma_double(fma_double(-2.755731727234489e-07, r2, 2.4801587298767044e-05), r4,
+                      fma_double(-0.0013888888888887398, r2, 1.0 / 24.0))
+
+
+def _cos_single_small(x: float) -> float:
+    x2 = x * x
+    x4 = x2 * x2
+    half = x2 * 0.5
+    t = 1.0 - half
+    return fma_double(_cos_single_poly(x), x4, t + ((1.0 - t) - half))
+
+
+def _cos_single_large(r: float) -> float:
+    r2 = r * r
+    return fma_double(_cos_single_poly(r), r2 * r2, fma_double(-0.5, r2, 1.0))
+
+
+def _sin_cos_reduce(ax: float) -> tuple[float, int]:
+    """|x| reduced by multiples of pi/2 (three-part pi/2), and the multiple's low bits (the region)."""
+    npi2 = fma_double(2.0 / math.pi, ax, _SHIFT)
+    region = _INT64.unpack(_DOUBLE.pack(npi2))[0]
+    npi2 -= _SHIFT
+    rhead = fma_double(-1.5707963267341256, npi2, ax)
+    rtail = npi2 * 6.077100506303966e-11
+    r = rhead - rtail
+    rtail = fma_double(2.0222662487959506e-21, npi2, -((rhead - r) - rtail))
+    return r - rtail, region
+
+
+def _sin_cos_reduced(x: float) -> tuple[float, float]:
+    r, region = _sin_cos_reduce(abs(x))
+    s, c = _sin_single_poly(r), _cos_single_large(r)
+    if region & 1:
+        s, c = c, s
+    sign = 1 if math.copysign(1.0, x) < 0.0 else 0
+    half = region >> 1
+    if ((sign & half) | (~sign & ~half)) & 1 == 0:
+        s = -s
+    if (region + 1) & 2:
+        c = -c
+    return s, c
+
+
+def net10_sin_cos4(lanes: list) -> tuple[list, list]:
+    """Vector128.SinCos over four float32 lanes: (sines, cosines)."""
+    f = np.float32
+    mags = [int(abs(f(x)).view(np.uint32)) for x in lanes]
+    if all(m <= _SINCOS_LARGE for m in mags):
+        if any(m >= _SINCOS_SMALL for m in mags):
+            sin = [f(_sin_single_poly(float(x))) for x in lanes]
+            cos = [f(_cos_single_small(float(x))) for x in lanes]
+        else:
+            sin = [fma(f(-0.16666667), (x * x) * x, x) for x in lanes]
+            cos = [fma(f(-0.5), x * x, f(1.0)) for x in lanes]
+    elif all(m < _SINCOS_HUGE for m in mags):
+        pairs = [_sin_cos_reduced(float(x)) for x in lanes]
+        sin = [f(s) for s, _ in pairs]
+        cos = [f(c) for _, c in pairs]
+    else:  # float.SinCos on each lane (the C library's sinf/cosf), returned as is
+        return [mathf_sin(x) for x in lanes], [mathf_cos(x) for x in lanes]
+    for i, m in enumerate(mags):
+        if m < _SINCOS_SMALLER:
+            sin[i] = lanes[i]
+            cos[i] = f(1.0)
+    return sin, cos
+
+
+def net10_quat_create_from_yaw_pitch_roll(yaw, pitch, roll) -> Quaternion:
+    """Quaternion.CreateFromYawPitchRoll on .NET 10: the half angles' sines and cosines from one
+    Vector128.SinCos of (roll, pitch, yaw, 0) * 0.5, combined as mono does. Fast mode (doubles)
+    takes Math.Sin/Cos of the half angles."""
+    half_roll = roll * 0.5
+    half_pitch = pitch * 0.5
+    half_yaw = yaw * 0.5
+    if type(half_roll) is np.float32:
+        (sr, sp, sy, _), (cr, cp, cy, _) = net10_sin_cos4([half_roll, half_pitch, half_yaw, np.float32(0.0)])
+    else:
+        sr, sp, sy = (cast_float(a, cs_math(math.sin, float(a))) for a in (half_roll, half_pitch, half_yaw))
+        cr, cp, cy = (cast_float(a, cs_math(math.cos, float(a))) for a in (half_roll, half_pitch, half_yaw))
+    return Net10Quaternion(
+        cy * sp * cr + sy * cp * sr,
+        sy * cp * cr - cy * sp * sr,
+        cy * cp * sr - sy * sp * cr,
+        cy * cp * cr + sy * sp * sr,
+    )
+
+
+# ---------------------------------------------------------------- runtimes and modes
+
+
+def _fn():
+    """A Runtime field holding a function (not part of the runtime's identity)."""
+    return field(compare=False, repr=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Runtime:
+    """The .NET runtime ACE runs on: where its arithmetic differs, the difference lives here.
+
+    The System.Numerics operations are plain functions (call ``runtime.lerp(a, b, t)``); every
+    operation not listed computes the same bits on both runtimes (measured: Vector3 Dot, Cross,
+    Length, LengthSquared, Normalize, scalar multiply and divide, Equals, Vector2.Length,
+    Matrix4x4.CreateFromQuaternion)."""
+
+    name: str
+    quaternion: type = _fn()  # the Quaternion class this runtime's operations return
+    negate: object = _fn()  # Vector3 unary minus
+    transform_by_quaternion: object = _fn()  # Vector3.Transform(Vector3, Quaternion)
+    transform_by_matrix: object = _fn()  # Vector3.Transform(Vector3, Matrix4x4)
+    lerp: object = _fn()  # Vector3.Lerp
+    quat_multiply: object = _fn()  # Quaternion.Multiply, operator *
+    quat_inverse: object = _fn()  # Quaternion.Inverse
+    quat_normalize: object = _fn()  # Quaternion.Normalize
+    quat_lerp: object = _fn()  # Quaternion.Lerp
+    quat_create_from_yaw_pitch_roll: object = _fn()  # Quaternion.CreateFromYawPitchRoll
+
+    def to_int32(self, x) -> int:
+        """C# ``(int)x`` for a float or double x."""
+        x = float(x)
+        if self.name == "mono":
+            # x86-64 cvttsd2si: NaN and out-of-range give int.MinValue (checked on mono 6.8).
+            # (NaN and +-inf fail the range test.)
+            if -2147483649.0 < x < 2147483648.0:
+                return int(x)
+            return -2147483648
+        # .NET 9+ (CoreCLR): conversions saturate and NaN gives 0.
+        if math.isnan(x):
+            return 0
+        if x >= 2147483647.0:
+            return 2147483647
+        if x <= -2147483648.0:
+            return -2147483648
+        return int(x)
+
+    def to_uint32(self, x) -> int:
+        """C# ``(uint)x`` for a float or double x."""
+        x = float(x)
+        if self.name == "mono":
+            # mono converts through a 64-bit cvtt and keeps the low 32 bits (NaN, +-inf and
+            # out-of-range fail the range test and give 0).
+            if -9.223372036854775808e18 <= x < 9.223372036854775808e18:
+                return int(x) & 0xFFFFFFFF
+            return 0
+        # .NET 9+ (CoreCLR): saturate, NaN gives 0.
+        if math.isnan(x) or x <= 0.0:
+            return 0
+        if x >= 4294967295.0:
+            return 4294967295
+        return int(x)
+
+
+MONO = Runtime(
+    "mono", Quaternion, Vector3.__neg__, transform_by_quaternion, transform_by_matrix, lerp, quat_multiply, quat_inverse,
+    quat_normalize, quat_lerp, quat_create_from_yaw_pitch_roll,
+)
+NET10 = Runtime(
+    "coreclr", Net10Quaternion, net10_negate, net10_transform_by_quaternion, net10_transform_by_matrix, net10_lerp,
+    net10_quat_multiply, net10_quat_inverse, net10_quat_normalize, net10_quat_lerp,
+    net10_quat_create_from_yaw_pitch_roll,
+)
+RUNTIMES = {"mono": MONO, "coreclr": NET10}
+Quaternion.runtime = MONO
+Net10Quaternion.runtime = NET10
+
+
+def runtime_named(versions_runtime: str) -> str:
+    """The runtime key ("mono" or "coreclr") of a record's or oracle's runtime string, e.g.
+    "mono 6.8.0.105" or "coreclr .NET 10.0.12" (its first word). An empty string is "mono":
+    records and cases written without a runtime all came from ACE on mono."""
+    from .errors import AcconformError
+
+    if not versions_runtime.strip():
+        return "mono"
+    names = {part.strip().split(" ")[0] for part in versions_runtime.split(";") if part.strip()}
+    if len(names) != 1 or not names <= set(RUNTIMES):
+        raise AcconformError(
+            f"cannot tell which runtime's arithmetic to use from {versions_runtime!r}: expected one of "
+            f"{', '.join(sorted(RUNTIMES))} (a corpus must come from one runtime)")
+    return names.pop()
+
+
+@dataclass(frozen=True, slots=True)
+class Mode:
+    """How a run computes: `scalar` is the component type every value is made of, `runtime` the
+    .NET runtime whose arithmetic it reproduces."""
+
+    name: str
+    scalar: type
+    runtime: Runtime = MONO
+
+    def vec(self, x, y, z) -> "Vector3":
+        s = self.scalar
+        return Vector3(s(x), s(y), s(z))
+
+    def quat(self, x, y, z, w) -> "Quaternion":
+        s = self.scalar
+        return self.runtime.quaternion(s(x), s(y), s(z), s(w))
+
+
+EXACT = Mode("exact", np.float32)
+FAST = Mode("fast", np.float64)
+MODES = {"exact": EXACT, "fast": FAST}
+_MODES = {(m.name, r.name): m if r is MONO else Mode(m.name, m.scalar, r) for m in MODES.values() for r in RUNTIMES.values()}
+
+
+def get_mode(name: str, runtime: str = "mono") -> Mode:
+    """The mode `name` ("exact" or "fast") computing as `runtime` ("mono" or "coreclr") does."""
+    from .errors import AcconformError
+
+    if name not in MODES:
+        raise AcconformError(f"unknown numerics mode {name!r}: choose one of {sorted(MODES)}")
+    if runtime not in RUNTIMES:
+        raise AcconformError(f"unknown runtime {runtime!r}: choose one of {sorted(RUNTIMES)}")
+    return _MODES[name, runtime]

@@ -1,10 +1,17 @@
 """The outcome: what one transition left behind, read the same way from the port and from ACE.
 
-Format ``acconform.outcome/1``. Fields mirror ACE's objects after PhysicsObj.transition's
+Format ``acconform.outcome/2``. Fields mirror ACE's objects after PhysicsObj.transition's
 steps (FindValidPosition and its set-up): SpherePath.CurPos/CurCell, ObjectInfo.State, the
 CollisionInfo fields, the mover's velocity (ObjectInfo.StopVelocity zeroes it), and a few
 SpherePath fields that expose the transition's own state. `error` holds what a side raised
 (ACE exception or port exception) as a verdict; the other fields are then defaults.
+
+`static_cells` shows where the scene's statics were placed: for each static object, in scene
+order, the ids of the cells its PhysicsObj is registered in as a shadow object, in the order of
+`PhysicsObj.ShadowObjects` (a .NET Dictionary keyed by cell id: insertion order, since the
+placement removes nothing). It is required in ``/2`` (``null`` when a side could not read it,
+e.g. an error before placement); ``acconform.outcome/1`` documents still read, with
+``static_cells = None``: "not recorded", which the comparator does not compare.
 """
 
 from __future__ import annotations
@@ -15,7 +22,8 @@ from .codec import Reader, write_f32, write_id, write_vec
 from .flags import ObjectInfoState, flag_names
 from .scene import Frame, IDENTITY, Vec3, check_format
 
-FORMAT = "acconform.outcome/1"
+FORMAT = "acconform.outcome/2"
+FORMAT_V1 = "acconform.outcome/1"  # read (static_cells not recorded), never written
 ZERO: Vec3 = (0.0, 0.0, 0.0)
 
 
@@ -76,6 +84,7 @@ class Outcome:
     step_up: bool = False  # SpherePath.StepUp
     neg_poly_hit: bool = False  # SpherePath.NegPolyHit
     error: str | None = None
+    static_cells: tuple[tuple[int, ...], ...] | None = None  # per static: PhysicsObj.ShadowObjects' cell ids
 
     @property
     def frame(self) -> Frame:
@@ -91,6 +100,8 @@ class Outcome:
                 v = write_vec(v)
             elif f.name == "object_info_state":
                 v = flag_names(ObjectInfoState, v)
+            elif f.name == "static_cells":
+                v = None if v is None else [[write_id(c) for c in cells] for cells in v]
             elif hasattr(v, "to_json"):
                 v = v.to_json()
             d[f.name] = v
@@ -100,13 +111,15 @@ class Outcome:
     def from_json(doc, path: str = "") -> "Outcome":
         r = Reader(doc, path)
         names = {f.name for f in fields(Outcome)}
-        r.obj(names | {"format"})
-        check_format(r, FORMAT)
+        v1 = isinstance(doc, dict) and doc.get("format") == FORMAT_V1
+        r.obj((names - {"static_cells"} if v1 else names) | {"format"})
+        if not v1:
+            check_format(r, FORMAT)
         kw = {}
         for name in names:
             if not r.has(name):
-                if name == "error":
-                    continue
+                if name == "error" or (name == "static_cells" and (v1 or name in r.value)):
+                    continue  # absent error: none; static_cells: /1 never has it, /2 may write null
                 r[name]  # raises InvalidScene: missing required field
             x = r[name]
             if name in ("cell", "check_cell"):
@@ -125,6 +138,8 @@ class Outcome:
                 kw[name] = x.int_(0, 3)
             elif name == "error":
                 kw[name] = x.str_()
+            elif name == "static_cells":
+                kw[name] = tuple(tuple(c.id_() for c in cells.list()) for cells in x.list())
             else:
                 kw[name] = x.bool_()
         return Outcome(**kw)

@@ -41,6 +41,7 @@ from collections.abc import Callable
 from . import __version__
 from .codec import dumps_compact
 from .errors import AcconformError, InvalidScene
+from .numerics import RUNTIMES
 from .oracle.recorded import scene_kind
 from .outcome import Outcome
 from .scene import Scene
@@ -135,6 +136,7 @@ class Implementation:
         if not self.argv:
             raise ImplementationError("--impl needs a command, e.g. --impl 'acconform serve'")
         self.mode = mode
+        self.runtime = "mono"  # the ACE compared with: whose System.Numerics arithmetic to match
         self.timeout = timeout
         self.start_timeout = start_timeout
         self.restarts = 0
@@ -314,7 +316,7 @@ class Implementation:
             self._next_id += 1
             rid = self._next_id
             self._inflight.append((rid, scene))
-        request = dumps_compact({"id": rid, "mode": self.mode, "scene": scene.to_json()}) + "\n"
+        request = dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime, "scene": scene.to_json()}) + "\n"
         self._write(request.encode("utf-8"))
         return rid
 
@@ -383,7 +385,7 @@ class Implementation:
 # ---------------------------------------------------------------- the implementation side
 
 
-def serve(run_scene: Callable[[Scene, str], Outcome], stdin=None, stdout=None, hello: dict | None = None) -> int:
+def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None) -> int:
     """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side).
 
     A request that cannot be read is answered with an outcome whose error says why (the harness
@@ -402,10 +404,12 @@ def serve(run_scene: Callable[[Scene, str], Outcome], stdin=None, stdout=None, h
             rid = req.get("id") if isinstance(req, dict) else None
             if not isinstance(req, dict) or "scene" not in req:
                 raise ValueError("expected {\"id\": ..., \"mode\": ..., \"scene\": {...}}")
-            mode = req.get("mode", "exact")
+            mode, runtime = req.get("mode", "exact"), req.get("runtime", "mono")
             if mode not in MODES:
                 raise ValueError(f"unknown mode {mode!r}")
-            outcome = run_scene(Scene.from_json(req["scene"], "scene"), mode)
+            if runtime not in RUNTIMES:
+                raise ValueError(f"unknown runtime {runtime!r} (known: {', '.join(RUNTIMES)})")
+            outcome = run_scene(Scene.from_json(req["scene"], "scene"), mode, runtime)
         except (ValueError, InvalidScene) as e:
             outcome = Outcome(error=f"InvalidRequest: {e}")
         stdout.write((dumps_compact({"id": rid, "outcome": outcome.to_json()}) + "\n").encode("utf-8"))

@@ -91,10 +91,15 @@ class SphereRec:
         return {"center": write_vec(self.center), "radius": write_f32(self.radius)}
 
     @staticmethod
-    def from_json(r: Reader) -> "SphereRec":
+    def from_json(r: Reader, bounding: bool = False) -> "SphereRec":
+        """`bounding`: a BSP node's or leaf's bounding sphere, whose radius may be 0 (ACE's BSP code
+        reads one: such a sphere only touches what reaches its centre; an empty leaf has one)."""
         r.obj({"center", "radius"})
         s = SphereRec(r["center"].vec3(), r["radius"].f32())
-        if not s.radius > 0:
+        if bounding:
+            if not s.radius >= 0:
+                r["radius"].fail(f"a bounding sphere needs a radius of 0 or more, got {s.radius}")
+        elif not s.radius > 0:
             r["radius"].fail(f"a sphere needs a positive radius, got {s.radius}")
         return s
 
@@ -194,23 +199,29 @@ def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
         r.obj({"type", "polygons", "solid", "sphere"})
         polys = tuple(p.int_(0, npolys - 1) for p in r["polygons"].list())
         solid = r["solid"].bool_() if r.has("solid") else False
-        return BSPLeaf(polys, solid, SphereRec.from_json(r["sphere"]))
+        return BSPLeaf(polys, solid, SphereRec.from_json(r["sphere"], bounding=True))
     if kind == "node":
         r.obj({"type", "plane", "sphere", "front", "back"})
         for side in ("front", "back"):
             if not r.has(side):
                 r.fail(f"an internal BSP node needs both children; {side!r} is missing")
-        return BSPNode(PlaneRec.from_json(r["plane"]), SphereRec.from_json(r["sphere"]),
+        return BSPNode(PlaneRec.from_json(r["plane"]), SphereRec.from_json(r["sphere"], bounding=True),
                        _bsp_from_json(r["front"], npolys), _bsp_from_json(r["back"], npolys))
     r["type"].fail(f"unknown BSP element type {kind!r} (known: node, leaf)")
 
 
 @dataclass(frozen=True, slots=True)
 class BSPShape:
-    """A GfxObj's physics BSP: polygons, a tree whose root is an internal node, a bounding sphere."""
+    """A GfxObj's physics BSP: polygons, a tree (its root a node or a leaf), a bounding sphere.
+
+    ACE's BSPTree constructor makes the root a BSPNode whatever the DAT holds, so a leaf root
+    becomes a childless node: queries that would descend from it meet null (the port and ACE
+    both report NullReferenceException) and the others find nothing. `sphere` is written in the
+    scene but not in the GfxObj record (acconform/dat.py): ACE takes the physics sphere from
+    the root's own sphere."""
 
     polygons: tuple[PolygonRec, ...]
-    root: BSPNode
+    root: "BSPNode | BSPLeaf"
     sphere: SphereRec  # GfxObj.PhysicsSphere
     kind: str = field(default="bsp", init=False)
 
@@ -251,8 +262,6 @@ def _shape_from_json(r: Reader) -> Shape:
         r.obj({"kind", "polygons", "root", "sphere"})
         polys = tuple(PolygonRec.from_json(p) for p in r["polygons"].list(min_count=1))
         root = _bsp_from_json(r["root"], len(polys))
-        if isinstance(root, BSPLeaf):
-            r["root"].fail("the BSP root must be an internal node, not a leaf")
         return BSPShape(polys, root, SphereRec.from_json(r["sphere"]))
     if kind == "sphere":
         r.obj({"kind", "center", "radius"})

@@ -1,7 +1,8 @@
 """Oracle cost per case beside ACE's own in-runtime time, per scene kind.
 
-    ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300] [--path facade|direct]
+    ACE_ASSEMBLY=/path/to/ACE.Server.dll python benchmarks/bench_oracle.py [-n 300]
     ACE_ASSEMBLY=... python benchmarks/bench_oracle.py --against HEAD~1   # before/after in one run
+    python benchmarks/bench_oracle.py --ace mono/ACE.Server.dll --ace net10/ACE.Server.dll   # runtimes side by side
 
 Columns, per case (medians; landblocks cached across scenes, the default):
   run() us    the oracle's wall time from Python for one `run` call (pack, cross, unpack)
@@ -17,6 +18,11 @@ The strategies' kinds are fresh scenes (warm-up on other seeds, so nothing measu
 before) and also get campaign totals: sum of run() over sum of each in-runtime time, which is
 what a campaign pays.
 
+--ace PATH, given more than once, measures each ACE build in its own subprocess (pythonnet loads
+one runtime per process; the runtime is chosen from each build) on the same scenes and prints
+them side by side, e.g. a mono build beside a .NET build on CoreCLR, with whether their outcomes
+are identical.
+
 --against REV checks REV out into a temporary git worktree and runs this script there in a
 subprocess (imports resolve to the worktree through a shim on sys.path), on the same scenes
 (passed as JSON), first; then this tree. It prints both and whether the outcomes are identical.
@@ -27,6 +33,7 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
+import os
 import statistics
 import subprocess
 import sys
@@ -51,10 +58,10 @@ def scene_groups(n: int) -> dict:
     return groups
 
 
-def measure(groups: dict, path) -> dict:
+def measure(groups: dict) -> dict:
     from acconform.oracle.live import LiveOracle
 
-    oracle = LiveOracle(path=path)
+    oracle = LiveOracle()
     res = {"oracle": f"{oracle!r}: {oracle.versions.ace} on {oracle.versions.runtime}", "kinds": {}}
     for name, scenes in groups.items():
         if name.startswith(("warm-up: ", "batch: ")):
@@ -101,8 +108,9 @@ def _ratio(a, b) -> str:
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("-n", type=int, default=300)
-    ap.add_argument("--path", default=None)
     ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) first and print before/after")
+    ap.add_argument("--ace", action="append", metavar="PATH",
+                    help="an ACE build to measure (else ACE_ASSEMBLY); give several to print them side by side")
     ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
     ap.add_argument("--scenes", help=argparse.SUPPRESS)  # the parent's scenes as JSON
     args = ap.parse_args()
@@ -114,23 +122,22 @@ def main() -> int:
         sys.path.insert(0, str(ROOT))
         groups = scene_groups(args.n)
     if args.json:
-        print(json.dumps(measure(groups, args.path)))
+        print(json.dumps(measure(groups)))
         return 0
+    if args.ace and len(args.ace) > 1:
+        if args.against:
+            raise SystemExit("bench_oracle: --against compares revisions on one build; give one --ace with it")
+        return _side_by_side(args, groups)
+    if args.ace:
+        os.environ["ACE_ASSEMBLY"] = args.ace[0]
 
     old = None
     if args.against:
         with revision_env(args.against) as env:
             scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "scenes.json"
             scenes.write_text(json.dumps({k: [s.to_json() for s in v] for k, v in groups.items()}))
-            cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--scenes", str(scenes)]
-            if args.path:
-                cmd += ["--path", args.path]
-            done = subprocess.run(cmd, env=env, capture_output=True, text=True)
-            if done.returncode != 0:
-                sys.stderr.write(done.stderr)
-                raise SystemExit(f"bench_oracle: measuring {args.against} failed (its stderr is above)")
-            old = json.loads(done.stdout)
-    new = measure(groups, args.path)
+            old = _measure_in_subprocess(args, groups, env, args.against)
+    new = measure(groups)
 
     print(new["oracle"])
     if old:
@@ -153,6 +160,44 @@ def main() -> int:
               f"{_ratio(b['run'], b['net'])} {_ratio(b['run'], b['trans'])} {_ratio(b['run'], b['fvp'])} "
               f"{b['built']:5.2f} {b['lb_us']:5.0f}")
     _totals(new, groups)
+    return 0
+
+
+def _measure_in_subprocess(args, groups: dict, env: dict, what: str) -> dict:
+    scenes = Path(tempfile.mkdtemp(prefix="acconform-scenes-")) / "scenes.json"
+    scenes.write_text(json.dumps({k: [s.to_json() for s in v] for k, v in groups.items()}))
+    cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--scenes", str(scenes)]
+    done = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.stderr.write(done.stderr)
+        raise SystemExit(f"bench_oracle: measuring {what} failed (its stderr is above)")
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def _side_by_side(args, groups: dict) -> int:
+    """Each build in its own process (one .NET runtime per process), one after the other, same scenes."""
+    runs = []
+    for ace in args.ace:
+        env = {k: v for k, v in os.environ.items() if k != "ACE_RUNTIME"}
+        env["ACE_ASSEMBLY"] = ace
+        runs.append(_measure_in_subprocess(args, groups, env, ace))
+    for i, r in enumerate(runs):
+        print(f"[{i}] {r['oracle']}")
+    head = "".join(f" | [{i}] {'run()':>6} {'.NET':>6} {'trans':>6} {'FVP':>6} {'/.NET':>5}" for i in range(len(runs)))
+    print(f"{'scene kind (us per case)':28}{head} | outcomes")
+    for name in runs[0]["kinds"]:
+        row = "".join(f" |     {r['kinds'][name]['run']:6.1f} {r['kinds'][name]['net']:6.1f} {r['kinds'][name]['trans']:6.1f} "
+                      f"{r['kinds'][name]['fvp']:6.1f} {_ratio(r['kinds'][name]['run'], r['kinds'][name]['net']):>5}"
+                      for r in runs)
+        same = len({r["kinds"][name]["outcomes"] for r in runs}) == 1
+        print(f"{name:28}{row} | {'identical' if same else 'differ'}")
+    print("campaign totals on fresh scenes (sum of run() / sum of the whole case inside .NET):")
+    for name in runs[0]["kinds"]:
+        if runs[0]["kinds"][name]["fresh"]:
+            cells = "   ".join(f"[{i}] {r['kinds'][name]['sum_run'] / len(groups[name]):6.1f} us a case, "
+                               f"/.NET {r['kinds'][name]['sum_run'] / r['kinds'][name]['sum_net']:4.2f}"
+                               for i, r in enumerate(runs))
+            print(f"  {name:26} {cells}")
     return 0
 
 

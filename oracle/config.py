@@ -5,7 +5,9 @@ variable, then ``ace_assembly`` in the user config file (``$XDG_CONFIG_HOME/acco
 default ``~/.config/acconform/config.toml``). PATH is ACE.Server.dll or the directory holding it.
 The runtime is ``--runtime`` / ``ACE_RUNTIME`` / config ``runtime`` when given, else chosen from
 the build: a .NET build output carries ``ACE.Server.runtimeconfig.json`` beside the assembly and
-needs CoreCLR; anything else is run on mono.
+needs CoreCLR; anything else is run on mono. For CoreCLR the .NET installation is found as the
+dotnet host finds it and checked to have the framework the runtimeconfig asks for
+(oracle/dotnet_host.py).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import OracleUnavailable
+from . import dotnet_host
 
 ENV_VAR = "ACE_ASSEMBLY"
 ENV_RUNTIME = "ACE_RUNTIME"
@@ -43,6 +46,8 @@ class AceLocation:
     source: str  # where the setting came from, e.g. "--ace", "ACE_ASSEMBLY", "/home/u/.config/acconform/config.toml"
     runtime: str  # "mono" or "coreclr"
     runtime_source: str  # "--runtime", "ACE_RUNTIME", the config file, or "detected"
+    dotnet_root: dotnet_host.DotnetRoot | None = None  # CoreCLR: the installation that runs it
+
 
     @property
     def directory(self) -> Path:
@@ -87,7 +92,16 @@ def resolve(ace: str | os.PathLike | None = None, runtime: str | None = None) ->
     value, source = setting
     assembly = _assembly_file(Path(os.path.expanduser(value)), source)
     rt, rt_source = _choose_runtime(assembly, runtime)
-    return AceLocation(assembly, source, rt, rt_source)
+    return AceLocation(assembly, source, rt, rt_source, _coreclr_root(assembly) if rt == "coreclr" else None)
+
+
+def _coreclr_root(assembly: Path) -> dotnet_host.DotnetRoot:
+    """The .NET installation that will run the build, checked to have the framework it asks for."""
+    root = dotnet_host.find_root()
+    problem = dotnet_host.framework_problem(assembly.with_name("ACE.Server.runtimeconfig.json"), root)
+    if problem:
+        raise OracleUnavailable(f"cannot run {assembly} on CoreCLR: {problem}")
+    return root
 
 
 def _assembly_file(path: Path, source: str) -> Path:

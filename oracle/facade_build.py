@@ -3,10 +3,11 @@
 The facade is acconform's own C# (MIT), never ACE's. It is compiled on the user's machine when
 the oracle loads and cached under the user cache directory (``$XDG_CACHE_HOME/acconform/facade``,
 never in the repository), keyed by a hash of the ACE assemblies, the facade source and the
-runtime. mono: ``mcs`` (Debian: mono-mcs). CoreCLR: the ``dotnet`` SDK builds a tiny class library
-that references the ACE assemblies (written for users' .NET builds; not run on our machines).
+runtime. mono: ``mcs`` (Debian: mono-mcs). CoreCLR: the SDK of the .NET installation that runs ACE
+builds a throw-away class library referencing the ACE assemblies, for the target framework of
+their runtimeconfig, offline (its project names no package source).
 When no compiler is present, or compiling fails, `build` returns None and the reason, and the
-oracle falls back to the pure-pythonnet path (oracle/direct.py).
+live oracle refuses to start with that reason (the facade is the one scene builder).
 """
 
 from __future__ import annotations
@@ -17,8 +18,9 @@ import shutil
 import subprocess
 from pathlib import Path
 
+from . import dotnet_host
 from .config import cache_dir
-from .runtime import ACE_ASSEMBLIES, LoadedAce
+from .runtime import ACE_ASSEMBLIES, LoadedAce, dotnet_root
 
 SOURCE_DIR = Path(__file__).with_name("facade")
 DLL_NAME = "Acconform.Oracle.Facade.dll"
@@ -78,9 +80,14 @@ _CSPROJ = """<Project Sdk="Microsoft.NET.Sdk">
   <PropertyGroup>
     <TargetFramework>{tfm}</TargetFramework>
     <AssemblyName>Acconform.Oracle.Facade</AssemblyName>
+    <OutputType>Library</OutputType>
     <Optimize>true</Optimize>
+    <DebugType>none</DebugType>
     <Nullable>disable</Nullable>
+    <ImplicitUsings>disable</ImplicitUsings>
     <EnableDefaultCompileItems>false</EnableDefaultCompileItems>
+    <GenerateDependencyFile>false</GenerateDependencyFile>
+    <NoWarn>$(NoWarn);CS0618;SYSLIB0050</NoWarn>
   </PropertyGroup>
   <ItemGroup>
 {compile}
@@ -91,34 +98,49 @@ _CSPROJ = """<Project Sdk="Microsoft.NET.Sdk">
 </Project>
 """
 
+# No package source: a class library needs no package, and the facade is built offline.
+_NUGET_CONFIG = """<?xml version="1.0" encoding="utf-8"?>
+<configuration>
+  <packageSources>
+    <clear />
+  </packageSources>
+</configuration>
+"""
+
 
 def _build_dotnet(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
-    """CoreCLR route (NOT exercised on our machines): a class library built with the dotnet SDK."""
-    dotnet = shutil.which("dotnet")
-    if dotnet is None:
-        return None, "no dotnet SDK on PATH (install the .NET SDK matching the ACE build to get the fast facade)"
-    import json
-
-    try:
-        rc = json.loads(ace.location.runtime_config.read_text())
-        fw = rc["runtimeOptions"].get("framework") or rc["runtimeOptions"]["frameworks"][0]
-        major_minor = ".".join(fw["version"].split(".")[:2])
-        tfm = f"net{major_minor}"
-    except (OSError, ValueError, KeyError, IndexError) as e:
-        return None, f"cannot read the target framework from {ace.location.runtime_config}: {e}"
-    proj_dir = dll.parent / "project"
-    proj_dir.mkdir(parents=True, exist_ok=True)
+    """A throw-away class library referencing the user's ACE assemblies, built with the SDK of the
+    .NET installation that runs them, for the target framework their runtimeconfig names."""
+    root = dotnet_root()
+    sdks = dotnet_host.sdk_versions(root.path)
+    if not sdks:
+        return None, (f"no .NET SDK in {root.path} (found by {root.found_by}; it has the runtime only): install the "
+                      "SDK there to compile the facade")
+    tfm = dotnet_host.framework_tfm(ace.location.runtime_config)
+    proj_dir = dll.parent / f"project-{os.getpid()}"
+    shutil.rmtree(proj_dir, ignore_errors=True)
+    proj_dir.mkdir(parents=True)
     compile_items = "\n".join(f'    <Compile Include="{s}" />' for s in sources())
     refs = "\n".join(f'    <Reference Include="{a}"><HintPath>{ace.location.directory / (a + ".dll")}</HintPath>'
                      f"<Private>false</Private></Reference>" for a in ACE_ASSEMBLIES)
     (proj_dir / "Acconform.Oracle.Facade.csproj").write_text(_CSPROJ.format(tfm=tfm, compile=compile_items, refs=refs))
+    (proj_dir / "NuGet.Config").write_text(_NUGET_CONFIG)
+    env = dict(os.environ, DOTNET_ROOT=str(root.path), DOTNET_CLI_TELEMETRY_OPTOUT="1", DOTNET_NOLOGO="1",
+               DOTNET_SKIP_FIRST_TIME_EXPERIENCE="1", MSBUILDDISABLENODEREUSE="1", DOTNET_CLI_UI_LANGUAGE="en")
+    # no build servers left running in the user's session: no node reuse, no shared compiler
+    cmd = [str(dotnet_host.dotnet_cli(root.path)), "build", str(proj_dir), "-c", "Release", "-o", str(proj_dir / "out"),
+           "-nologo", "-nodeReuse:false", "-p:UseSharedCompilation=false", "-v:q"]
     try:
-        p = subprocess.run([dotnet, "build", "-c", "Release", "-o", str(proj_dir / "out"), str(proj_dir)],
-                           capture_output=True, text=True, timeout=600)
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=600, env=env, cwd=proj_dir)
     except (OSError, subprocess.TimeoutExpired) as e:
+        shutil.rmtree(proj_dir, ignore_errors=True)
         return None, f"dotnet build failed to run: {e}"
     built = proj_dir / "out" / DLL_NAME
     if p.returncode != 0 or not built.is_file():
-        return None, "dotnet build could not compile the facade: " + (p.stdout + p.stderr).strip()[-600:]
-    shutil.copyfile(built, dll)
-    return dll, f"compiled with dotnet into {dll}"
+        errors = [ln.strip() for ln in (p.stdout + p.stderr).splitlines() if "error" in ln]
+        shutil.rmtree(proj_dir, ignore_errors=True)
+        return None, (f"dotnet build ({tfm}, SDK {', '.join(sdks)}) could not compile the facade: "
+                      + ("; ".join(dict.fromkeys(errors)) or (p.stdout + p.stderr).strip())[:600])
+    built.replace(dll)
+    shutil.rmtree(proj_dir, ignore_errors=True)
+    return dll, f"compiled with the .NET SDK ({tfm}) into {dll}"

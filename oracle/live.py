@@ -2,66 +2,45 @@
 
 `LiveOracle(assembly, runtime=None)` finds and loads ACE (oracle/config.py, oracle/runtime.py),
 then runs each scene in one call into acconform's C# facade (oracle/facade/Facade.cs, compiled
-against the user's ACE on first use), or, when no compiler is available, through the
-pure-pythonnet path (oracle/direct.py), which builds the same objects the same way. Every scene
-starts from fresh ACE global state; an exception ACE raises is the verdict `Outcome(error=...)`.
+against the user's ACE on first use), the one place where a scene becomes ACE's objects. Every
+scene starts from fresh ACE global state; an exception ACE raises is the verdict `Outcome(error=...)`.
 """
 
 from __future__ import annotations
 
 import ctypes
-import os
 import struct
 
 from .. import __version__
 from ..case import Versions
-from ..errors import OracleError
+from ..errors import OracleError, OracleUnavailable
 from ..outcome import Outcome
 from ..scene import Scene
 from . import config
 from . import runtime as _rt
 from .pack import pack_scene, unpack_outcome
 
-PATHS = ("auto", "facade", "direct")
-ENV_PATH = "ACCONFORM_ORACLE_PATH"
-
 
 class LiveOracle:
     name = "live"
 
-    def __init__(self, assembly=None, runtime: str | None = None, path: str | None = None):
+    def __init__(self, assembly=None, runtime: str | None = None):
         location = config.resolve(assembly, runtime)
         if location is None:
-            from ..errors import OracleUnavailable
-
             raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {config.HOW_TO_SET}")
         self.location = location
         self.ace = _load(location)
         label = config.ace_label()
         ace = f"{label} ({self.ace.ace_version})" if label else self.ace.ace_version
         self.versions = Versions(acconform=__version__, ace=ace, runtime=self.ace.runtime_version)
-        want = path or os.environ.get(ENV_PATH) or "auto"
-        if want not in PATHS:
-            raise OracleError(f"unknown oracle path {want!r} (from {'path' if path else ENV_PATH}); known: {', '.join(PATHS)}")
-        self._facade = None
-        self.facade_status = "not tried (direct path requested)"
-        if want in ("auto", "facade"):
-            self._facade, self.facade_status = _load_facade(self.ace)
-            if self._facade is None and want == "facade":
-                from ..errors import OracleUnavailable
-
-                raise OracleUnavailable(f"the C# facade is unavailable: {self.facade_status}")
+        self._facade, self.facade_status = _load_facade(self.ace)
         if self._facade is None:
-            from . import direct
-
-            self._direct = direct.DirectRunner()
-        self.path = "facade" if self._facade is not None else "direct"
-        if self._facade is not None:
-            self._facade.Init()
-            self._buffers()
-            entry = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_int)
-            self._run_pinned = entry(int(self._facade.RunPinnedAddress))
-            self._run_many_pinned = entry(int(self._facade.RunManyPinnedAddress))
+            raise OracleUnavailable(f"the C# facade is unavailable: {self.facade_status}")
+        self._facade.Init()
+        self._buffers()
+        entry = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_int)
+        self._run_pinned = entry(int(self._facade.RunPinnedAddress))
+        self._run_many_pinned = entry(int(self._facade.RunManyPinnedAddress))
         self.last_ace_micros = 0.0  # ACE's in-runtime FindValidPosition time for the last scene
         self.last_case_micros = 0.0  # the whole scene inside .NET (build, transition, read back)
         self.last_landblocks_built = 0  # landblocks the facade built for the last scene
@@ -74,13 +53,9 @@ class LiveOracle:
 
     def run_timed(self, scene: Scene) -> tuple[Outcome, float]:
         """(Outcome, ACE's in-runtime FindValidPosition time in microseconds)."""
-        if self._facade is not None:
-            data = pack_scene(scene)
-            n = self._call(self._run_pinned, data)
-            outcome, us, case_us, counts = unpack_outcome(self._out, 0) if n <= self._out_cap else self._overflow(n)
-        else:
-            outcome, us, case_us = self._direct.run(scene)
-            counts = (0, 0, 0.0, float("nan"))
+        data = pack_scene(scene)
+        n = self._call(self._run_pinned, data)
+        outcome, us, case_us, counts = unpack_outcome(self._out, 0) if n <= self._out_cap else self._overflow(n)
         self.last_ace_micros, self.last_case_micros = us, case_us
         (self.last_landblocks_built, self.last_landblocks_reused, self.last_build_micros,
          self.last_transition_micros) = counts
@@ -115,8 +90,6 @@ class LiveOracle:
         """Several scenes in one crossing of the .NET boundary (the facade's batch call); each scene
         still starts from fresh ACE state. Returns (Outcome, ACE's FindValidPosition microseconds)."""
         scenes = list(scenes)
-        if self._facade is None:
-            return [self.run_timed(s) for s in scenes]
         parts = [struct.pack("<i", len(scenes))]
         for s in scenes:
             d = pack_scene(s)
@@ -135,15 +108,11 @@ class LiveOracle:
 
     def set_landblock_cache(self, enabled: bool) -> None:
         """Reuse built landblocks across scenes (default on); off rebuilds every landblock per scene."""
-        if self._facade is not None:
-            self._facade.CacheLandblocks = bool(enabled)
-            self._facade.ClearCache()
-        else:
-            self._direct.cache_landblocks = bool(enabled)
-            self._direct.cache.clear()
+        self._facade.CacheLandblocks = bool(enabled)
+        self._facade.ClearCache()
 
     def __repr__(self):
-        return f"LiveOracle({str(self.location.assembly)!r}, runtime={self.location.runtime!r}, path={self.path!r})"
+        return f"LiveOracle({str(self.location.assembly)!r}, runtime={self.location.runtime!r})"
 
 
 def _load(location):

@@ -1,7 +1,6 @@
 """Every ACE type and member the oracle touches, in one table, checked when the oracle loads.
 
-The facade (oracle/facade/Facade.cs) and the pure-pythonnet path (oracle/direct.py) use only
-these. `check_members` looks each type up by full name across the loaded assemblies and each
+The facade (oracle/facade/Facade.cs) and oracle/functions.py use only these. `check_members` looks each type up by full name across the loaded assemblies and each
 member by name (public or not, static or instance), so an ACE build that lacks one fails with
 one message naming the type, the member and the assembly directory, instead of a .NET
 traceback half-way through a scene.
@@ -27,6 +26,7 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.Entity.VertexCache", ("Vertices",)),
     ("ACE.Server.Physics.Entity.PolygonCache", ("Polygons",)),
     ("ACE.Server.Physics.Entity.BSPCache", ("BSPTrees",)),
+    ("ACE.Server.Physics.Entity.GfxObjCache", ("GfxObjs",)),
     ("ACE.Server.Physics.Entity.Vertex", (".ctor",)),
     ("ACE.Server.Physics.Managers.ServerObjectManager", ("ServerObjects",)),
     # server mode: ACE's LandblockManager table and the server landblock's auto-property
@@ -36,21 +36,21 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Entity.Enum.PhysicsState", ("Static", "HasPhysicsBSP")),
     ("ACE.Entity.Enum.CullMode", ("Landblock", "Clockwise", "CounterClockwise")),
     ("ACE.DatLoader.FileTypes.CellLandblock", (".ctor", "Unpack", "Id")),
+    # statics and the mover: their DAT records (acconform/dat.py), unpacked by ACE and kept where ACE looks for them
     ("ACE.DatLoader.FileTypes.SetupModel", (".ctor", "Unpack")),
-    ("ACE.Server.Physics.Setup", (".ctor",)),
-    ("ACE.Server.Physics.PartArray", (".ctor", "Owner", "Setup", "NumParts", "Parts", "GetNumSphere", "GetSphere")),
-    ("ACE.Server.Physics.PhysicsPart", (".ctor", "GfxObj", "GfxObjScale", "PhysicsObj", "Pos")),
-    ("ACE.Server.Physics.PhysicsObj", (".ctor", "ID", "PartArray", "State", "TransientState", "Velocity", "ContactPlane",
+    ("ACE.DatLoader.FileTypes.GfxObj", (".ctor", "Unpack")),
+    ("ACE.DatLoader.FileTypes.FileType", ("Unpack",)),
+    ("ACE.DatLoader.DatManager", ("PortalDat", "<PortalDat>k__BackingField")),
+    ("ACE.DatLoader.DatDatabase", ("FileCache", "<FileCache>k__BackingField", "ReadFromDat")),
+    ("ACE.DatLoader.PortalDatDatabase", ()),
+    ("ACE.Server.Physics.PartArray", ("GetNumSphere", "GetSphere")),
+    ("ACE.Server.Physics.PhysicsObj", ("PartArray", "State", "TransientState", "Velocity", "ContactPlane",
                                        "ContactPlaneCellID", "SlidingNormal", "Position", "CurCell", "Scale",
-                                       "SetScaleStatic", "add_shadows_to_cell", "remove_shadows_from_cells",
-                                       "get_object_info")),
+                                       "SetScaleStatic", "remove_shadows_from_cells", "get_object_info",
+                                       "makeObject", "DatObject", "add_obj_to_cell", "leave_cell", "DestroyObject",
+                                       "ShadowObjects")),
     ("ACE.Server.Physics.Polygon", (".ctor", "Vertices", "VertexIDs", "make_plane")),
     ("ACE.Server.Physics.Sphere", (".ctor", "Center", "Radius")),
-    ("ACE.Server.Physics.BSP.BSPNode", (".ctor", "SplittingPlane", "Sphere", "NumPolys", "Polygons", "PosNode", "NegNode")),
-    ("ACE.Server.Physics.BSP.BSPLeaf", (".ctor", "Solid")),
-    ("ACE.Server.Physics.BSP.BSPTree", (".ctor",)),
-    ("ACE.Server.Physics.BSP.BSPTreeType", ("Physics",)),
-    ("ACE.Server.Physics.Collision.GfxObj", (".ctor", "PhysicsBSP", "PhysicsSphere")),
     ("ACE.Server.Physics.Animation.AFrame", (".ctor", "Origin", "Orientation")),
     ("ACE.Server.Physics.Animation.Transition", ("MakeTransition", "InitObject", "InitSphere", "InitPath",
                                                  "FindValidPosition", "CleanupTransition", "SpherePath",
@@ -85,6 +85,25 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
                                              "Combine")),
     ("ACE.Server.Physics.Common.Position", ("GetOffset", "LocalToLocal", "LocalToGlobal")),
 )
+
+
+# ACE's build stamp (ServerBuildInfo_Dynamic.cs, `ServerBuildInfo.Commit`) for the source the oracle runs.
+# ACE's CI commits the stamp after each change: 7b47913 is such a commit and stamps its parent
+# bab7a5c, where the physics is as of 7b47913. A build of 7b47913's tree carries bab7a5c; a build
+# whose stamp was regenerated at build time carries 7b47913 itself.
+ACE_COMMIT = "7b47913"
+ACE_BUILD_COMMITS = ("bab7a5ca8552cb18f63e08b57234bd9137cd0249", "7b47913")
+
+
+def check_build_commit(commit: str | None, where: str) -> None:
+    """Raise OracleUnavailable when the build stamps another ACE commit. A build without the stamp
+    (None) is judged by the member check alone."""
+    if commit is None or any(commit.startswith(c) for c in ACE_BUILD_COMMITS):
+        return
+    raise OracleUnavailable(
+        f"the ACE build at {where} was built from ACE commit {commit[:12] or '(empty)'} (its ServerBuildInfo.Commit); "
+        f"the oracle runs ACE's physics as of commit {ACE_COMMIT} (stamped {ACE_BUILD_COMMITS[0][:7]}): point --ace / "
+        "ACE_ASSEMBLY at a build of that commit (see docs/oracle.md)")
 
 
 def check_members(find_type, has_member, where: str, required=REQUIRED) -> None:

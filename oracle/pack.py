@@ -10,13 +10,12 @@ from __future__ import annotations
 import struct
 from dataclasses import fields
 
-from ..flags import TransientState
 from ..outcome import ContactPlaneState, NormalState, Outcome
-from ..scene import BSPLeaf, CylSphereShape, Landblock, Scene, SphereShape
-from ..staging import MOVER_ID, mover_setup_dims, shadow_cells
+from ..dat import mover_records, static_records
+from ..scene import Landblock, Scene
+from ..staging import MOVER_ID
 
-PACK_VERSION = 3
-SHAPE_KIND = {"sphere": 0, "cylsphere": 1, "bsp": 2}
+PACK_VERSION = 4
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -47,49 +46,29 @@ def _pos(p) -> tuple:
 _POS = "I3f4f"
 
 
-def _node(n, fmt: list, vals: list) -> None:
-    """A BSP tree in pre-order into one format string and one value list (packed by one call)."""
-    if isinstance(n, BSPLeaf):
-        polys = n.polygons
-        fmt.append(f"BB4fi{len(polys)}i")
-        vals += (0, 1 if n.solid else 0, *n.sphere.center, n.sphere.radius, len(polys), *polys)
-    else:
-        fmt.append("B4f4f")
-        vals += (1, *n.plane.normal, n.plane.d, *n.sphere.center, n.sphere.radius)
-        _node(n.front, fmt, vals)
-        _node(n.back, fmt, vals)
+_RECORD_KIND = {"GfxObj": 0, "Setup": 1}
 
 
-def _object(o, ids) -> bytes:
-    s = o.shape
-    fmt, vals = ["<I", _POS, "IfB"], [o.id, *_pos(o.position), o.state, o.scale, SHAPE_KIND[s.kind]]
-    if isinstance(s, SphereShape):
-        fmt.append("4f")
-        vals += (*s.sphere.center, s.sphere.radius)
-    elif isinstance(s, CylSphereShape):
-        fmt.append("5f")
-        vals += (*s.low_point, s.radius, s.height)
-    else:
-        fmt.append("i")
-        vals.append(len(s.polygons))
-        for p in s.polygons:
-            vs = p.vertices
-            fmt.append(f"ii{3 * len(vs)}f")
-            vals += (p.sides_type, len(vs))
-            for v in vs:
-                vals += v
-        _node(s.root, fmt, vals)
-        fmt.append("4f")
-        vals += (*s.sphere.center, s.sphere.radius)
-    cells = shadow_cells(o, ids)
-    fmt.append(f"i{len(cells)}I")
-    vals.append(len(cells))
-    vals += cells
-    return struct.pack("".join(fmt), *vals)
+def _records(recs) -> list[bytes]:
+    """DAT records (acconform.dat) the facade unpacks with ACE's own Unpack: count, then each one's
+    kind, id, length and bytes."""
+    out = [struct.pack("<i", len(recs.records))]
+    for rec in recs.records:
+        out.append(struct.pack("<BIi", _RECORD_KIND[rec.kind], rec.id, len(rec.data)))
+        out.append(rec.data)
+    return out
+
+
+def _object(o, index: int) -> bytes:
+    """A static object: its scene id, position, state and scale (applied as WorldObject.InitPhysicsObj
+    does), the DAT id `PhysicsObj.makeObject` takes and its DAT records."""
+    recs = static_records(o, index)
+    head = struct.pack("<I" + _POS + "IfI", o.id, *_pos(o.position), o.state, o.scale, recs.did)
+    return b"".join([head] + _records(recs))
 
 
 _HEAD = struct.Struct("<iB")
-_MOVER = struct.Struct("<I5fII3fBI4fB3f" + _POS + _POS)
+_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS)
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -99,18 +78,17 @@ def pack_scene(scene: Scene) -> bytes:
     for lb in scene.landblocks:
         out.append(b"\xfc\0\0\0")  # 252: the length of every landblock_bytes
         out.append(landblock_bytes(lb))
-    ids = [lb.id for lb in scene.landblocks]
     out.append(struct.pack("<i", len(scene.objects)))
-    for o in scene.objects:
-        out.append(_object(o, ids))
+    for i, o in enumerate(scene.objects):
+        out.append(_object(o, i))
     m = scene.mover
-    out.append(struct.pack(f"<i{4 * len(m.spheres)}f", len(m.spheres), *[x for s in m.spheres for x in (*s.center, s.radius)]))
-    height, radius = mover_setup_dims(scene)
+    recs = mover_records(m)
+    out += _records(recs)
     cp = m.contact_plane
     cpv = (0, 0, 0.0, 0.0, 0.0, 0.0) if cp is None else (1, cp.cell, *cp.plane.normal, cp.plane.d)
     sn = m.sliding_normal
     snv = (0, 0.0, 0.0, 0.0) if sn is None else (1, *sn)
-    out.append(_MOVER.pack(MOVER_ID, height, radius, m.step_up_height, m.step_down_height, m.scale, m.state, m.transient_state,
+    out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end)))
     return b"".join(out)
 
@@ -137,9 +115,25 @@ _PARTS_LIMIT = 8192
 
 # tag 1, then the outcome fields, ACE's FindValidPosition time and the whole case (doubles), then
 # the facade's counters: landblocks built, landblocks reused (ints), building time, and the time of
-# PhysicsObj.transition's own work, MakeTransition to CleanupTransition (doubles)
+# PhysicsObj.transition's own work, MakeTransition to CleanupTransition (doubles); then the statics'
+# cells (`_static_cells`)
 _OUT = struct.Struct("<BBI3f4fI" + "BIB3ff" * 2 + "B3f" * 2 + "Bi3fIBBBdd" + "iidd")
 _TAIL = struct.Struct("<ddiidd")  # after an error message: FVP time, whole case, counters
+_I32 = struct.Struct("<i")
+
+
+def _static_cells(data, pos: int):
+    """int count (-1: none read), then per static: int n and the n cell ids of its PhysicsObj.ShadowObjects."""
+    (n,) = _I32.unpack_from(data, pos)
+    if n < 0:
+        return None
+    pos += 4
+    cells = []
+    for _ in range(n):
+        (k,) = _I32.unpack_from(data, pos)
+        cells.append(struct.unpack_from(f"<{k}I", data, pos + 4))
+        pos += 4 + 4 * k
+    return tuple(cells)
 
 
 _RAW = struct.Struct("<38x22s22s13s13s")  # the same four records' bytes: exact (bitwise) cache keys
@@ -181,16 +175,6 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
     cp = _cps(kc, *v[11:18])
     lk = cp if kl == kc else _cps(kl, *v[18:25])
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
-                          bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None),
+                          bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None,
+                          _static_cells(data, offset + _OUT.size)),
             v[42], v[43], (v[44], v[45], v[46], v[47]))
-
-
-def frames_stationary_fall(transient_state: int) -> int:
-    """PhysicsObj.transition's seeding of CollisionInfo.FramesStationaryFall."""
-    if transient_state & TransientState.StationaryStuck:
-        return 3
-    if transient_state & TransientState.StationaryStop:
-        return 2
-    if transient_state & TransientState.StationaryFall:
-        return 1
-    return 0

@@ -1,6 +1,6 @@
 """Loading a .NET runtime and ACE's assemblies through pythonnet, once per process.
 
-This module and oracle/direct.py are the only places that import pythonnet (`clr`). Every
+This module, oracle/live.py and oracle/functions.py are the places that import pythonnet (`clr`). Every
 failure here becomes one OracleUnavailable naming what was looked for, where, and what to set.
 """
 
@@ -11,8 +11,9 @@ import sys
 from dataclasses import dataclass
 
 from ..errors import OracleUnavailable
+from . import dotnet_host
 from .config import HOW_TO_SET, AceLocation
-from .members import REQUIRED, check_members
+from .members import REQUIRED, check_build_commit, check_members
 
 ACE_ASSEMBLIES = ("ACE.Common", "ACE.Entity", "ACE.DatLoader", "ACE.Server")
 PIP_HINT = "install the optional extra: pip install 'acconform[oracle]' (pythonnet >= 3.0.3)"
@@ -37,7 +38,8 @@ def _sha256(paths) -> str:
 
 
 def load(location: AceLocation) -> LoadedAce:
-    """Start the runtime (once), reference ACE's assemblies and check every member the oracle uses."""
+    """Start the runtime (once), reference ACE's assemblies and check the build's commit and every
+    member the oracle uses."""
     prev = _state.get("runtime")
     if prev is not None:
         if prev != location.runtime:
@@ -51,9 +53,16 @@ def load(location: AceLocation) -> LoadedAce:
         _reference_assemblies(location)
         _state["runtime"] = location.runtime
         _state["dir"] = location.directory
+        _state["dotnet_root"] = location.dotnet_root
+    check_build_commit(_build_commit(), str(location.directory))
     check_members(find_type, has_member, str(location.directory))
     files = [location.directory / f"{a}.dll" for a in ACE_ASSEMBLIES]
     return LoadedAce(location, _ace_version(location), _runtime_version(location.runtime), _sha256(files))
+
+
+def dotnet_root() -> dotnet_host.DotnetRoot | None:
+    """The .NET installation this process runs ACE on (CoreCLR), or None."""
+    return _state.get("dotnet_root")
 
 
 def _start_runtime(location: AceLocation) -> None:
@@ -63,7 +72,7 @@ def _start_runtime(location: AceLocation) -> None:
         raise OracleUnavailable(f"the live oracle needs pythonnet: {PIP_HINT}") from None
     try:
         if location.runtime == "coreclr":
-            pythonnet.load("coreclr", runtime_config=str(location.runtime_config))
+            pythonnet.load("coreclr", runtime_config=str(location.runtime_config), dotnet_root=str(location.dotnet_root.path))
         else:
             import warnings
 
@@ -101,6 +110,15 @@ def _reference_assemblies(location: AceLocation) -> None:
 def _net_message(e: BaseException) -> str:
     msg = str(e).strip().splitlines()
     return f"{type(e).__name__}: {msg[0] if msg else ''}"
+
+
+def _build_commit() -> str | None:
+    """ACE's ``ServerBuildInfo.Commit`` (the git commit its build stamps), or None when the build lacks it."""
+    from System.Reflection import BindingFlags
+
+    t = find_type("ACE.Server.ServerBuildInfo")
+    f = t.GetField("Commit", BindingFlags.Public | BindingFlags.Static) if t is not None else None
+    return str(f.GetValue(None)) if f is not None else None
 
 
 def find_type(full_name: str):

@@ -41,3 +41,7 @@ WATER_DEPTH_PARTIAL_WATER = f32_from_bits(0x3EE66666)
 WATER_DEPTH_ENTIRELY_WATER = f32_from_bits(0x3F666666)
 # both: 0.1f on dry land
 WATER_DEPTH_DRY = f32_from_bits(0x3DCCCCCD)
+# PhysicsGlobals.DefaultScale = 1.0f
+DEFAULT_SCALE = f32_from_bits(0x3F800000)
+# PhysicsObj.cs InitPartArrayObject: SetTranslucencyInternal(0.25f) for an ethereal anim object
+TRANSLUCENCY_ETHEREAL = f32_from_bits(0x3E800000)

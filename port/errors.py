@@ -23,9 +23,20 @@ class AceException(Exception):
 
 
 class NullReferenceException(AceException):
-    """ACE dereferences null, e.g. a landblock it would have read from the cell DAT."""
+    """ACE dereferences null, e.g. a landblock it would have read from the cell DAT.
+
+    The port also meets C#'s null where ACE does without a test of its own: a ported routine
+    that calls a member of a field ACE leaves null (a BSP node's missing child) reads the member
+    of Python's None. run_scene reports that AttributeError as this exception (`from_none`):
+    .NET throws NullReferenceException for exactly that, and a port bug that reaches None where
+    ACE has an object still differs from ACE's outcome."""
 
     dotnet_type = "NullReferenceException"
+
+    @staticmethod
+    @harness("Python's AttributeError on None as .NET's NullReferenceException")
+    def from_none(e: AttributeError) -> "NullReferenceException":
+        return NullReferenceException(f"Object reference not set to an instance of an object. (port: {e.name} of None)")
 
 
 class InvalidOperationException(AceException):
@@ -35,3 +46,27 @@ class InvalidOperationException(AceException):
 
     def __init__(self, where: str):
         super().__init__(f"Nullable object must have a value. ({where})")
+
+
+class EndOfStreamException(AceException):
+    """BinaryReader reads past the end of a DAT record."""
+
+    dotnet_type = "EndOfStreamException"
+
+
+class KeyNotFoundException(AceException):
+    """A .NET Dictionary indexer misses, e.g. a BSP leaf naming a polygon the GfxObj does not hold."""
+
+    dotnet_type = "KeyNotFoundException"
+
+
+class ArgumentException(AceException):
+    """A .NET Dictionary.Add of a key it already holds, e.g. a DAT record listing a polygon id twice."""
+
+    dotnet_type = "ArgumentException"
+
+
+class NotImplementedException(AceException):
+    """ACE's DatLoader meets a layout it does not read (e.g. a CVertexArray of another vertex type)."""
+
+    dotnet_type = "NotImplementedException"

@@ -3,8 +3,9 @@
 ACE's Animation/AFrame.cs and Common/Position.cs. Both are C# classes (reference types), so
 they are mutable here too; their Vector3/Quaternion fields are immutable values. Copy with
 `copy()` where ACE uses the copy constructor. `ToRadians`/`ToDegrees` (Extensions/FloatExtensions.cs)
-and `Quaternion.CreateFromYawPitchRoll` (mono System.Numerics) are written out here because only
-set_heading needs them; the latter belongs in acconform.numerics (reported to the lead).
+are written out here because only set_heading needs them. The System.Numerics operations whose
+formula differs between mono and .NET 10 are taken from the runtime the orientation was made
+by (`orientation.runtime`, acconform.numerics.Runtime).
 """
 
 from __future__ import annotations
@@ -12,26 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from acconform.numerics import (
-    MONO,
-    Matrix4x4,
-    Mode,
-    Quaternion,
-    Runtime,
-    Vector3,
-    cast_float,
-    cs_fmod,
-    cs_math,
-    lerp,
-    quat_inverse,
-    quat_lerp,
-    quat_multiply,
-    quat_create_from_yaw_pitch_roll,
-    quat_normalize,
-    transform_by_matrix,
-    transform_by_quaternion,
-    wrap_u32,
-)
+from acconform.numerics import MONO, Matrix4x4, Mode, Quaternion, Runtime, Vector3, cast_float, cs_fmod, cs_math, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.constants import CELL_LENGTH, EPSILON
 from acconform.port.land import land_defs
@@ -72,6 +54,12 @@ class AFrame:
         w, x, y, z = frame.orientation
         return AFrame(mode.vec(*frame.origin), mode.quat(x, y, z, w))
 
+    @staticmethod
+    @anchor(None, "AFrame.cs:AFrame(DatLoader.Entity.Frame)", "the DAT constructor")
+    def from_dat(frame) -> "AFrame":
+        q = frame.orientation
+        return AFrame(frame.origin, Quaternion(q.x, q.y, q.z, q.w))
+
     @anchor(None, "AFrame.cs:AFrame(AFrame)", "the copy constructor")
     def copy(self) -> "AFrame":
         """``new AFrame(frame)``."""
@@ -80,12 +68,14 @@ class AFrame:
     @staticmethod
     @anchor("AFrame::combine", "AFrame.cs:Combine")
     def combine(a: "AFrame", b: "AFrame") -> "AFrame":
-        return AFrame(a.origin + transform_by_quaternion(b.origin, a.orientation), quat_multiply(a.orientation, b.orientation))
+        rt = a.orientation.runtime  # System.Numerics as the run's runtime computes it
+        return AFrame(a.origin + rt.transform_by_quaternion(b.origin, a.orientation), rt.quat_multiply(a.orientation, b.orientation))
 
     @anchor("AFrame::combine", "AFrame.cs:Combine(AFrame, AFrame, Vector3)")
     def combine_scaled(self, a: "AFrame", b: "AFrame", scale: Vector3) -> None:
-        self.origin = a.origin + transform_by_quaternion(b.origin * scale, a.orientation)
-        self.orientation = quat_multiply(a.orientation, b.orientation)
+        rt = a.orientation.runtime
+        self.origin = a.origin + rt.transform_by_quaternion(b.origin * scale, a.orientation)
+        self.orientation = rt.quat_multiply(a.orientation, b.orientation)
 
     @anchor("AFrame::global_to_local", "AFrame.cs:GlobalToLocal")
     def global_to_local(self, point: Vector3) -> Vector3:
@@ -95,15 +85,15 @@ class AFrame:
     @anchor("AFrame::global_to_local_vec", "AFrame.cs:GlobalToLocalVec")
     def global_to_local_vec(self, point: Vector3) -> Vector3:
         rotate = Matrix4x4.create_from_quaternion(self.orientation).transpose()
-        return transform_by_matrix(point, rotate)
+        return self.orientation.runtime.transform_by_matrix(point, rotate)
 
     @anchor("AFrame::interpolate_origin", "AFrame.cs:InterpolateOrigin")
     def interpolate_origin(self, from_: "AFrame", to: "AFrame", t) -> None:
-        self.origin = lerp(from_.origin, to.origin, t)
+        self.origin = self.orientation.runtime.lerp(from_.origin, to.origin, t)
 
     @anchor("AFrame::interpolate_rotation", "AFrame.cs:InterpolateRotation")
     def interpolate_rotation(self, from_: "AFrame", to: "AFrame", t) -> None:
-        self.orientation = quat_lerp(from_.orientation, to.orientation, t)
+        self.orientation = self.orientation.runtime.quat_lerp(from_.orientation, to.orientation, t)
 
     @anchor("AFrame::IsQuaternionEqual", "AFrame.cs:IsQuaternionEqual")
     def is_quaternion_equal(self, frame: "AFrame") -> bool:
@@ -115,22 +105,25 @@ class AFrame:
 
     @anchor("AFrame::local_to_global_vec", "AFrame.cs:LocalToGlobalVec")
     def local_to_global_vec(self, point: Vector3) -> Vector3:
-        return transform_by_quaternion(point, self.orientation)
+        return self.orientation.runtime.transform_by_quaternion(point, self.orientation)
 
     @anchor("AFrame::grotate", "AFrame.cs:GRotate")
     def grotate(self, rotation: Vector3) -> None:
-        self.orientation = quat_multiply(self.orientation, quat_create_from_yaw_pitch_roll(rotation.x, rotation.y, rotation.z))
-        self.orientation = quat_normalize(self.orientation)
+        rt = self.orientation.runtime
+        self.orientation = rt.quat_multiply(self.orientation, rt.quat_create_from_yaw_pitch_roll(rotation.x, rotation.y, rotation.z))
+        self.orientation = rt.quat_normalize(self.orientation)
 
     @anchor("AFrame::rotate", "AFrame.cs:Rotate(Quaternion)")
     def rotate(self, rotation: Quaternion) -> None:
-        self.orientation = quat_multiply(rotation, self.orientation)
-        self.orientation = quat_normalize(self.orientation)
+        rt = self.orientation.runtime
+        self.orientation = rt.quat_multiply(rotation, self.orientation)
+        self.orientation = rt.quat_normalize(self.orientation)
 
     @anchor("AFrame::subtract", "AFrame.cs:Subtract")
     def subtract(self, frame: "AFrame") -> None:
-        self.origin = self.origin - transform_by_quaternion(frame.origin, frame.orientation)
-        self.orientation = quat_multiply(self.orientation, quat_inverse(frame.orientation))
+        rt = self.orientation.runtime
+        self.origin = self.origin - rt.transform_by_quaternion(frame.origin, frame.orientation)
+        self.orientation = rt.quat_multiply(self.orientation, rt.quat_inverse(frame.orientation))
 
     @anchor("AFrame::get_heading", "AFrame.cs:get_heading")
     def get_heading(self):
@@ -157,7 +150,7 @@ class AFrame:
 
     @anchor("AFrame::set_rotate", "AFrame.cs:set_rotate")
     def set_rotate(self, orientation: Quaternion) -> None:
-        self.orientation = quat_normalize(orientation)
+        self.orientation = self.orientation.runtime.quat_normalize(orientation)
 
     @anchor("AFrame::set_vector_heading", "AFrame.cs:set_vector_heading")
     def set_vector_heading(self, heading: Vector3) -> None:
@@ -168,7 +161,7 @@ class AFrame:
         z_rot = -to_radians(cs_fmod(z_deg, _F360))
         x_rot = cast_float(normal.z, cs_math(math.asin, float(normal.z)))
         zero = type(x_rot)(0)
-        self.set_rotate(quat_create_from_yaw_pitch_roll(x_rot, zero, z_rot))
+        self.set_rotate(self.orientation.runtime.quat_create_from_yaw_pitch_roll(x_rot, zero, z_rot))
 
     @anchor("AFrame::equals", "AFrame.cs:Equals", note="ACE compares the argument's orientation with itself")
     def equals(self, frame: "AFrame") -> bool:

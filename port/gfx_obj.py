@@ -1,9 +1,10 @@
-"""GfxObj: PhysicsBSP, PhysicsSphere, FindObjCollisions -- the part of a GfxObj the physics reads.
+"""GfxObj: GfxObj(DatLoader GfxObj), Init, FindObjCollisions -- a part's graphics object as the physics builds it from DAT.
 
-ACE's Physics/Common/GfxObj.cs (namespace ACE.Server.Physics.Collision). Scenes carry no DAT:
-`from_shape` builds the GfxObj the oracle builds from a scene BSPShape (a new GfxObj with
-PhysicsBSP = new BSPTree(root) over polygons made with make_plane, and PhysicsSphere = the
-shape's sphere; not PhysicsBSP.GetSphere(), which the DAT constructor would use).
+ACE's Physics/Common/GfxObj.cs (namespace ACE.Server.Physics.Collision). The DAT constructor
+takes the record DatLoader read (port/dat/gfx_obj.py): the physics BSP (BSPCache is off: a new
+BSPTree), the physics sphere from the tree's root, and, in Init, the bounding box over the
+vertices, which find_bbox_cell_list reads to place a static. On a client (PhysicsEngine's
+Server false) ACE also builds every polygon of both polygon lists; the server does not.
 """
 
 from __future__ import annotations
@@ -14,21 +15,75 @@ from acconform.flags import TransitionState
 from acconform.numerics import Mode
 
 from .anchors import anchor
+from .bbox import BBox
 from .constants import EPSILON
 from .geom.bsp import BSPTree
+from .geom.polygon import Polygon
 from .geom.sphere import Sphere
 from .transition.sphere_path import InsertType
 
 
 @dataclass(slots=True, eq=False)
 class GfxObj:
-    physics_bsp: BSPTree | None = None
+    id: int = 0
+    vertex_array: object = None  # dat.cvertex_array.CVertexArray
+    polygons: dict | None = None
+    physics_polygons: dict | None = None
     physics_sphere: Sphere | None = None
+    physics_bsp: BSPTree | None = None
+    sort_center: object = None
+    drawing_sphere: Sphere | None = None
+    drawing_bsp: BSPTree | None = None
+    gfx_bound_box: BBox | None = None
 
     @staticmethod
-    @anchor(None, "GfxObj.cs:GfxObj", "the oracle's GfxObj: new GfxObj(), PhysicsBSP and PhysicsSphere from a scene BSPShape")
-    def from_shape(shape, mode: Mode) -> "GfxObj":
-        return GfxObj(BSPTree.from_shape(shape, mode), Sphere.from_rec(shape.sphere, mode))
+    @anchor("CGfxObj::UnPack", "GfxObj.cs:GfxObj(DatLoader.FileTypes.GfxObj)", "the DAT constructor")
+    def from_dat(gfx_obj, server: bool, mode: Mode) -> "GfxObj":
+        """`server` is PhysicsEngine.Instance.Server (the scene's engine mode)."""
+        g = GfxObj()
+        if gfx_obj is None:
+            return g
+
+        g.id = gfx_obj.id
+        g.vertex_array = gfx_obj.vertex_array
+
+        if not server:
+            g.polygons = {}
+            for key, value in gfx_obj.polygons.items():
+                g.polygons[key] = Polygon.from_dat(value, gfx_obj.vertex_array)  # PolygonCache is off
+
+        if len(gfx_obj.physics_polygons) > 0:
+            if not server:
+                g.physics_polygons = {}
+                for key, value in gfx_obj.physics_polygons.items():
+                    g.physics_polygons[key] = Polygon.from_dat(value, gfx_obj.vertex_array)
+            g.physics_bsp = BSPTree.from_dat(gfx_obj.physics_bsp, gfx_obj.physics_polygons, gfx_obj.vertex_array, mode)
+            g.physics_sphere = g.physics_bsp.get_sphere()
+
+        if not server:
+            g.sort_center = gfx_obj.sort_center
+
+        g.drawing_bsp = BSPTree.from_dat(gfx_obj.drawing_bsp, gfx_obj.polygons, gfx_obj.vertex_array, mode)
+        g.drawing_sphere = g.drawing_bsp.get_sphere()
+
+        g.init(mode)
+        return g
+
+    @anchor("CGfxObj::InitEnd", "GfxObj.cs:Init")
+    def init(self, mode: Mode) -> None:
+        """The bounding box over the vertices (first vertex, then AdjustBBox with each, the first
+        again included); none -> both corners zero (`mode` types the zero)."""
+        self.gfx_bound_box = BBox()
+        vertices = self.vertex_array.vertices
+        if vertices is not None and len(vertices) > 0:
+            v = next(iter(vertices.values()))
+            self.gfx_bound_box.min = v.origin
+            self.gfx_bound_box.max = v.origin
+            for vertex in vertices.values():
+                self.gfx_bound_box.adjust_bbox(vertex.origin)
+        else:
+            self.gfx_bound_box.min = mode.vec(0, 0, 0)
+            self.gfx_bound_box.max = mode.vec(0, 0, 0)
 
     @anchor("CGfxObj::find_obj_collisions", "GfxObj.cs:FindObjCollisions")
     def find_obj_collisions(self, transition, scale_z) -> TransitionState:

@@ -1,10 +1,11 @@
-"""PartArray and PhysicsPart: PartArray (AddPartsShadow, AllowsFreeHeading, CacheHasPhysicsBSP, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, SetScaleInternal), PhysicsPart (FindObjCollisions).
+"""PartArray and PhysicsPart: PartArray (AddPartsShadow, AllowsFreeHeading, CacheHasPhysicsBSP, CreateMesh, CreateSetup, DestroyParts, DestroySetup, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, InitDefaults, InitParts, SetCellID, SetFrame, SetMeshID, SetPlacementFrame, SetScaleInternal, SetSetupID, UpdateParts, calc_cross_cells_static), PhysicsPart (InitEmpty, SetPart, LoadGfxObjArray, MakePhysicsPart, MorphToExistingObject, GetBoundingBox, FindObjCollisions).
 
-ACE's Physics/PartArray.cs and Physics/PhysicsPart.cs, the members a transition reaches. A
-PhysicsPart is here beside its array (it is only ever reached through it). Scenes carry no DAT:
-the run builds the PartArray the oracle builds (Facade.cs MakePartArray: Owner, Setup, no parts;
-a BSP object gets one PhysicsPart whose GfxObj holds the BSP and whose Pos is the object's
-position).
+ACE's Physics/PartArray.cs and Physics/PhysicsPart.cs. A static object's PartArray is made by
+PhysicsObj.makeObject from its DAT record: CreateMesh for a GfxObj id (one part over a simple
+Setup), CreateSetup for a Setup id (a part per GfxObj the Setup names; a Setup with no parts
+makes no PartArray at all). With no placement frame, UpdateParts makes a single part's Pos the
+owner's Position object itself (not a copy), so the part moves with the object. The mover's
+PartArray is made the same way, from its own Setup record (CreateSetup).
 """
 
 from __future__ import annotations
@@ -14,8 +15,14 @@ from dataclasses import dataclass, field
 from acconform.flags import TransitionState
 from acconform.numerics import Vector3
 
+from . import gfx_obj_cache
 from .anchors import anchor
+from .frame import AFrame, Position
+from .sequence import Sequence
 from .setup import Setup
+
+# PhysicsObj passes 0x65 to SetPlacementFrame (Placement.Resting... as ACE writes it)
+PLACEMENT_FRAME_ID = 0x65
 
 
 @dataclass(slots=True, eq=False)
@@ -24,6 +31,57 @@ class PhysicsPart:
     gfx_obj_scale: Vector3 | None = None
     physics_obj: object = None
     pos: object = None  # frame.Position
+    phys_obj_index: int = -1
+
+    @staticmethod
+    @anchor("CPhysicsPart::CPhysicsPart", "PhysicsPart.cs:PhysicsPart()", "the empty constructor: InitEmpty")
+    def create_empty(mode) -> "PhysicsPart":
+        part = PhysicsPart()
+        part.init_empty(mode)
+        return part
+
+    @staticmethod
+    @anchor(None, "PhysicsPart.cs:PhysicsPart(uint)", "InitEmpty, then SetPart(partID)")
+    def create(portal_dat, part_id: int) -> "PhysicsPart":
+        part = PhysicsPart()
+        part.init_empty(portal_dat.mode)
+        part.set_part(portal_dat, part_id)
+        return part
+
+    @anchor("CPhysicsPart::InitEmpty", "PhysicsPart.cs:InitEmpty")
+    def init_empty(self, mode) -> None:
+        self.gfx_obj_scale = mode.vec(1.0, 1.0, 1.0)
+        self.pos = Position(0, AFrame.identity(mode))
+        self.phys_obj_index = -1
+
+    @anchor("CPhysicsPart::SetPart", "PhysicsPart.cs:SetPart")
+    def set_part(self, portal_dat, gfx_obj_id: int) -> bool:
+        return self.load_gfx_obj_array(portal_dat, gfx_obj_id)
+
+    @anchor("CPhysicsPart::LoadGfxObjArray", "PhysicsPart.cs:LoadGfxObjArray")
+    def load_gfx_obj_array(self, portal_dat, root_object_id: int) -> bool:
+        self.gfx_obj = gfx_obj_cache.get(portal_dat, root_object_id)
+        # degrades omitted (ACE)
+        return self.gfx_obj is not None
+
+    @staticmethod
+    @anchor("CPhysicsPart::makePhysicsPart", "PhysicsPart.cs:MakePhysicsPart(PhysicsPart)")
+    def make_physics_part(template: "PhysicsPart", mode) -> "PhysicsPart":
+        part = PhysicsPart.create_empty(mode)
+        part.morph_to_existing_object(template)
+        return part
+
+    @anchor("CPhysicsPart::MorphToExistingObject", "PhysicsPart.cs:MorphToExistingObject")
+    def morph_to_existing_object(self, template: "PhysicsPart") -> bool:
+        """Copies the references: GfxObj, GfxObjScale (a struct: its value) and Pos (the same Position)."""
+        self.gfx_obj = template.gfx_obj
+        self.gfx_obj_scale = template.gfx_obj_scale
+        self.pos = template.pos
+        return True
+
+    @anchor("CPhysicsPart::GetBoundingBox", "PhysicsPart.cs:GetBoundingBox")
+    def get_bounding_box(self):
+        return self.gfx_obj.gfx_bound_box
 
     @anchor("CPhysicsPart::find_obj_collisions", "PhysicsPart.cs:FindObjCollisions")
     def find_obj_collisions(self, transition) -> TransitionState:
@@ -38,8 +96,154 @@ class PartArray:
     owner: object = None  # the PhysicsObj
     setup: Setup | None = None
     num_parts: int = 0
-    parts: list = field(default_factory=list)  # PhysicsPart
+    parts: list | None = None  # PhysicsPart
     scale: Vector3 | None = None  # Vector3.One from the constructor; set by SetScaleInternal
+    state: int = 0
+    sequence: Sequence = field(default_factory=Sequence)
+
+    @staticmethod
+    @anchor("CPartArray::CPartArray", "PartArray.cs:PartArray()")
+    def create(mode) -> "PartArray":
+        return PartArray(scale=mode.vec(1, 1, 1))
+
+    @staticmethod
+    @anchor("CPartArray::CreateMesh", "PartArray.cs:CreateMesh")
+    def create_mesh(owner, setup_did: int, portal_dat) -> "PartArray | None":
+        mesh = PartArray.create(portal_dat.mode)
+        mesh.owner = owner
+        mesh.sequence.set_object(owner)
+        if not mesh.set_mesh_id(setup_did, portal_dat):
+            return None
+        mesh.set_placement_frame(PLACEMENT_FRAME_ID)
+        return mesh
+
+    @staticmethod
+    @anchor("CPartArray::CreateSetup", "PartArray.cs:CreateSetup")
+    def create_setup(owner, setup_did: int, create_parts: bool, portal_dat) -> "PartArray | None":
+        setup = PartArray.create(portal_dat.mode)
+        setup.owner = owner
+        setup.sequence.set_object(owner)
+        if not setup.set_setup_id(setup_did, create_parts, portal_dat):
+            return None
+        setup.set_placement_frame(PLACEMENT_FRAME_ID)
+        return setup
+
+    @anchor("CPartArray::DestroyParts", "PartArray.cs:DestroyParts")
+    def destroy_parts(self) -> None:
+        self.parts = None
+        self.num_parts = 0
+
+    @anchor("CPartArray::DestroySetup", "PartArray.cs:DestroySetup")
+    def destroy_setup(self) -> None:
+        self.setup = None
+
+    @anchor("CPartArray::SetMeshID", "PartArray.cs:SetMeshID")
+    def set_mesh_id(self, mesh_did: int, portal_dat) -> bool:
+        if mesh_did == 0:
+            return False
+        setup = Setup.make_simple_setup(portal_dat, mesh_did)
+        if setup is None:
+            return False
+        self.destroy_parts()
+        self.destroy_setup()
+        self.setup = setup
+        return self.init_parts(portal_dat.mode)
+
+    @anchor("CPartArray::SetSetupID", "PartArray.cs:SetSetupID")
+    def set_setup_id(self, setup_id: int, create_parts: bool, portal_dat) -> bool:
+        if self.setup is not None and self.setup.id == setup_id:
+            return True
+
+        self.setup = Setup.get(portal_dat, setup_id)
+        if self.setup is None:
+            return False
+
+        self.destroy_parts()
+
+        if create_parts and not self.init_parts(portal_dat.mode):
+            return False
+
+        self.init_defaults()
+        return True
+
+    @anchor("CPartArray::InitParts", "PartArray.cs:InitParts")
+    def init_parts(self, mode) -> bool:
+        """A Setup with no parts fails (NumParts 0): CreateSetup then makes no PartArray."""
+        self.num_parts = self.setup.num_parts
+        if self.num_parts == 0:
+            return False
+
+        self.parts = [None] * self.num_parts
+
+        if self.setup.parts is None:
+            return True
+
+        created = 0
+        for i in range(self.num_parts):
+            self.parts[i] = PhysicsPart.make_physics_part(self.setup.parts[i], mode)
+            if self.parts[i] is None:
+                break
+            created += 1
+
+        if created == self.num_parts:
+            for i in range(self.num_parts):
+                self.parts[i].physics_obj = self.owner
+                self.parts[i].phys_obj_index = i
+
+            if self.setup.default_scale is not None and len(self.setup.default_scale) == self.num_parts:
+                for i in range(self.num_parts):
+                    self.parts[i].gfx_obj_scale = self.setup.default_scale[i]
+            return True
+
+        return False
+
+    @anchor("CPartArray::InitDefaults", "PartArray.cs:InitDefaults")
+    def init_defaults(self) -> None:
+        if self.setup.default_animation != 0:
+            raise NotImplementedError("default animations (Sequence.append_animation) are not ported")
+        if self.owner is not None:
+            self.owner.init_defaults(self.setup)
+
+    @anchor("CPartArray::SetPlacementFrame", "PartArray.cs:SetPlacementFrame")
+    def set_placement_frame(self, placement_id: int) -> bool:
+        placement_frame = self.setup.placement_frames.get(placement_id)
+        if placement_frame is not None:
+            self.sequence.set_placement_frame(placement_frame.anim_frame, placement_id)
+            return True
+
+        placement_frame = self.setup.placement_frames.get(0)
+        if placement_frame is not None:
+            self.sequence.set_placement_frame(placement_frame.anim_frame, 0)
+            return True
+
+        self.sequence.set_placement_frame(None, 0)
+        return False
+
+    @anchor("CPartArray::SetFrame", "PartArray.cs:SetFrame")
+    def set_frame(self, frame: AFrame) -> None:
+        self.update_parts(frame)
+
+    @anchor("CPartArray::UpdateParts", "PartArray.cs:UpdateParts")
+    def update_parts(self, frame: AFrame) -> None:
+        cur_frame = self.sequence.get_curr_anim_frame()
+        if cur_frame is None:
+            if len(self.parts) == 1:
+                self.parts[0].pos = self.owner.position  # the owner's Position itself
+            return
+        num_parts = min(self.num_parts, len(cur_frame.frames))
+        for i in range(num_parts):
+            self.parts[i].pos.frame.combine_scaled(frame, AFrame.from_dat(cur_frame.frames[i]), self.scale)
+
+    @anchor("CPartArray::SetCellID", "PartArray.cs:SetCellID")
+    def set_cell_id(self, cell_id: int) -> None:
+        for part in self.parts:
+            if part is not None:
+                part.pos.obj_cell_id = cell_id
+
+    @anchor("CPartArray::calc_cross_cells_static", "PartArray.cs:calc_cross_cells_static")
+    def calc_cross_cells_static(self, cell, cell_array, lscape) -> None:
+        if cell is not None:  # fixme (ACE)
+            cell.find_transit_cells_parts(lscape, self.num_parts, self.parts, cell_array)
 
     @anchor("CPartArray::AddPartsShadow", "PartArray.cs:AddPartsShadow")
     def add_parts_shadow(self, obj_cell, num_shadow_parts: int) -> None:
@@ -53,10 +257,11 @@ class PartArray:
 
     @anchor("CPartArray::CacheHasPhysicsBSP", "PartArray.cs:CacheHasPhysicsBSP")
     def cache_has_physics_bsp(self) -> bool:
-        """The PartArray's own State bits (0x10000) are not read by a transition; only the answer is."""
         for part in self.parts:
             if part.gfx_obj.physics_bsp is not None:
+                self.state |= 0x10000
                 return True
+        self.state &= 0xFFFEFFFF
         return False
 
     @anchor("CPartArray::FindObjCollisions", "PartArray.cs:FindObjCollisions")

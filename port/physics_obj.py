@@ -1,13 +1,15 @@
-"""PhysicsObj: transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, add_shadows_to_cell, IsPlayer, Equals.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
-The part of ACE's PhysicsObj.cs a transition uses: the set-up PhysicsObj.transition does before
-FindValidPosition, the members the transition reads back (walkable checks, StopVelocity's
-set_velocity), and a static object's side: FindObjCollisions (BSP through the PartArray, or the
-Setup's spheres / cylspheres) and its registration as a shadow object in the cells it overlaps.
-Both the mover and the static objects carry a PartArray over a Setup (port/part_array.py,
-port/setup.py), built as the oracle builds them (see run.py). The WeenieObj is ACE's
-WeenieObject.DummyObject (no player, creature or PK flags), which is what a PhysicsObj made
-without a WorldObject carries; DatObject stays false (the oracle does not set it).
+The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
+record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
+calc_cross_cells_static: find_bbox_cell_list over the parts' boxes, or find_cell_list for a
+cylsphere without a physics BSP -> add_shadows_to_cell, in the CellArray's .NET order); the
+set-up PhysicsObj.transition does before FindValidPosition, the members the transition reads
+back (walkable checks, StopVelocity's set_velocity), and a static's FindObjCollisions (BSP
+through the PartArray, or the Setup's spheres / cylspheres). The mover's PartArray is the
+harness's (run.py, as the oracle builds it). The WeenieObj is ACE's WeenieObject.DummyObject (no
+player, creature or PK flags), which is what a PhysicsObj made without a WorldObject carries;
+a static's DatObject is true (as Landblock.init_static_objs sets it), the mover's false.
 """
 
 from __future__ import annotations
@@ -18,13 +20,29 @@ from acconform.flags import ObjectInfoState, PhysicsState, TransientState, Trans
 from acconform.numerics import Plane, Vector3, dot
 
 from .anchors import anchor
-from .constants import DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z
+from .constants import DEFAULT_SCALE, DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z, TRANSLUCENCY_ETHEREAL
+from .frame import AFrame, Position
+from .land import obj_cell
+from .part_array import PLACEMENT_FRAME_ID, PartArray
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
 
 # PhysicsGlobals.MaxVelocity = 50.0f
 MAX_VELOCITY = 50.0
+# PhysicsGlobals.DefaultState
+DEFAULT_STATE = PhysicsState.EdgeSlide | PhysicsState.LightingOn | PhysicsState.Gravity | PhysicsState.ReportCollisions
+
+
+@anchor(None, "MasterDBMap.cs:DivineType")
+def divine_type_of(data_did: int) -> int:
+    """MasterDBMap.DivineType: 6 for a GfxObj (0x01...), 7 for a Setup (0x02...), else 0."""
+    type_ = data_did >> 24
+    if type_ == 0x01:
+        return 6
+    elif type_ == 0x02:
+        return 7
+    return 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -68,6 +86,10 @@ class PhysicsObj:
     jumped_this_frame: bool = False
     shadow_objects: dict = field(default_factory=dict)  # cell id -> ShadowObj (a .NET Dictionary)
     num_shadow_objects: int = 0
+    cell_array: object = None  # transition.cell_array.CellArray (the object's own, for its placement)
+    children: list = field(default_factory=list)  # ChildList.Objects (always empty here)
+    translucency: object = 0.0
+    translucency_original: object = 0.0
 
     @property
     def is_player(self) -> bool:
@@ -106,17 +128,203 @@ class PhysicsObj:
         if self.part_array is not None:
             self.part_array.set_scale_internal(Vector3(scale, scale, scale))
 
-    @anchor("CPhysicsObj::add_shadows_to_cell", "PhysicsObj.cs:add_shadows_to_cell(ObjCell)")
-    def add_shadows_to_cell(self, cell) -> None:
-        shadow_obj = ShadowObj.create(self, cell)
-        # ShadowObjects.Add or overwrite: a .NET Dictionary keeps the key's slot either way
-        self.shadow_objects[cell.id] = shadow_obj
+    @staticmethod
+    @anchor("CPhysicsObj::CPhysicsObj", "PhysicsObj.cs:PhysicsObj()")
+    def create(mode) -> "PhysicsObj":
+        """``new PhysicsObj()``: the fields a static's placement and a transition read, at ACE's
+        defaults (Position cell 0 and identity frame, PhysicsGlobals.DefaultState, scale 1,
+        zero velocity and sliding normal, default(Plane) contact plane, an empty CellArray)."""
+        from .transition.cell_array import CellArray
 
-        if cell is not None:
-            cell.add_shadow_object(shadow_obj)
+        zero = mode.vec(0, 0, 0)
+        return PhysicsObj(id=0, state=int(DEFAULT_STATE), position=Position(0, AFrame.identity(mode)),
+                          velocity=zero, contact_plane=Plane(zero, mode.scalar(0.0)), sliding_normal=zero,
+                          scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray())
 
+    @staticmethod
+    @anchor("CPhysicsObj::makeObject", "PhysicsObj.cs:makeObject(uint, uint, bool, bool)")
+    def make_object(data_did: int, object_iid: int, dynamic: bool, portal_dat, sight_obj: bool = False) -> "PhysicsObj":
+        """`portal_dat` (port/dat/portal_dat.py) stands in for the DAT statics the DAT readers use."""
+        obj = PhysicsObj.create(portal_dat.mode)
+        obj.init_object_begin(object_iid, dynamic)
+        obj.init_part_array_object(data_did, True, portal_dat)
+        obj.init_object_end()
+
+        # for direct visibility testing (ACE)
+        obj.is_sight_obj = sight_obj
+        return obj
+
+    @anchor("CPhysicsObj::InitObjectBegin", "PhysicsObj.cs:InitObjectBegin")
+    def init_object_begin(self, object_iid: int, dynamic: bool) -> bool:
+        self.id = object_iid
+
+        if not dynamic:
+            self.state |= PhysicsState.Static
+        else:
+            self.state &= ~int(PhysicsState.Static)
+
+        self.transient_state &= ~int(TransientState.Active)
+        return True
+
+    @anchor("CPhysicsObj::InitPartArrayObject", "PhysicsObj.cs:InitPartArrayObject")
+    def init_part_array_object(self, data_did: int, create_parts: bool, portal_dat) -> bool:
+        if data_did == 0:
+            return False
+        ethereal = False
+
+        divine_type = divine_type_of(data_did)
+        if divine_type == 6:
+            self.part_array = PartArray.create_mesh(self, data_did, portal_dat)
+        else:
+            if divine_type != 7:
+                if (data_did & 0xFF000000) != 0:
+                    return False
+
+                ethereal = True
+
+                if not self.make_anim_object(data_did | 0x2000000, create_parts, portal_dat):
+                    return False
+
+            if not ethereal:
+                self.part_array = PartArray.create_setup(self, data_did, create_parts, portal_dat)
+
+        if self.part_array is None:
+            return False
+        self.cache_has_physics_bsp()
+        if ethereal:
+            self.state |= PhysicsState.Ethereal
+            self.transient_state &= ~int(TransientState.CheckEthereal)
+            self.set_translucency_internal(TRANSLUCENCY_ETHEREAL)
+            self.state |= PhysicsState.IgnoreCollisions
+        return True
+
+    @anchor("CPhysicsObj::makeAnimObject", "PhysicsObj.cs:makeAnimObject")
+    def make_anim_object(self, setup_id: int, create_parts: bool, portal_dat) -> bool:
+        self.part_array = PartArray.create_setup(self, setup_id, create_parts, portal_dat)
+        return self.part_array is not None
+
+    @anchor("CPhysicsObj::SetTranslucencyInternal", "PhysicsObj.cs:SetTranslucencyInternal")
+    def set_translucency_internal(self, translucency) -> None:
+        """Translucency only (PartArray.SetTranslucencyInternal is empty on the server); the
+        physics never reads it."""
+        self.translucency = translucency if translucency < self.translucency_original else self.translucency_original
+
+    @anchor("CPhysicsObj::InitObjectEnd", "PhysicsObj.cs:InitObjectEnd")
+    def init_object_end(self) -> bool:
         if self.part_array is not None:
-            self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
+            self.part_array.set_placement_frame(PLACEMENT_FRAME_ID)
+
+            if not self.state & PhysicsState.ParticleEmitter:
+                self.part_array.set_frame(self.position.frame)
+        return True
+
+    @anchor("CPhysicsObj::InitDefaults", "PhysicsObj.cs:InitDefaults")
+    def init_defaults(self, setup) -> None:
+        """Scripts and motion tables are not ported: a Setup naming one stops the port (dat.py
+        writes none)."""
+        if setup.default_script != 0 or setup.default_motion_table != 0:
+            raise NotImplementedError("default scripts and motion tables are not ported")
+        if self.state & PhysicsState.Static:
+            if setup.default_animation != 0:
+                self.state |= PhysicsState.HasDefaultAnim
+            if setup.default_script != 0:
+                self.state |= PhysicsState.HasDefaultScript
+
+    @anchor("CPhysicsObj::add_obj_to_cell", "PhysicsObj.cs:add_obj_to_cell")
+    def add_obj_to_cell(self, new_cell, new_frame, lscape) -> None:
+        """The run's world `lscape` stands in for ACE's static LScape."""
+        self.enter_cell(new_cell, lscape)
+
+        self.position.frame = new_frame
+        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+            self.part_array.set_frame(self.position.frame)
+
+        self.update_children_internal()
+        self.calc_cross_cells_static(lscape)
+
+    @anchor("CPhysicsObj::enter_cell", "PhysicsObj.cs:enter_cell")
+    def enter_cell(self, new_cell, lscape) -> None:
+        if self.part_array is None:
+            return
+        new_cell.add_object(self)
+        for child in self.children:
+            child.enter_cell(new_cell, lscape)
+
+        self.cur_cell = new_cell
+        self.position.obj_cell_id = new_cell.id  # (ACE) Position inconsistent until set_frame runs
+        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+            self.part_array.set_cell_id(new_cell.id)
+
+        if not self.dat_object and new_cell is not None:
+            raise NotImplementedError("a non-DAT object's landblock server list (Landblock.add_server_object) is not ported")
+
+    @anchor("CPhysicsObj::UpdateChildrenInternal", "PhysicsObj.cs:UpdateChildrenInternal")
+    def update_children_internal(self) -> None:
+        if self.part_array is None or not self.children:
+            return
+        raise NotImplementedError("child objects (UpdateChild) are not ported")
+
+    @anchor("CPhysicsObj::calc_cross_cells_static", "PhysicsObj.cs:calc_cross_cells_static")
+    def calc_cross_cells_static(self, lscape) -> None:
+        self.cell_array.set_static()
+
+        if (self.part_array is not None and self.part_array.get_num_cylsphere() != 0
+                and not self.state & PhysicsState.HasPhysicsBSP):
+            obj_cell.find_cell_list_cyl(lscape, self.position, self.part_array.get_num_cylsphere(),
+                                        self.part_array.get_cyl_sphere(), self.cell_array, None)
+        else:
+            self.find_bbox_cell_list(self.cell_array, lscape)
+
+        self.remove_shadows_from_cells()
+        self.add_shadows_to_cell(self.cell_array)
+
+    @anchor("CPhysicsObj::find_bbox_cell_list", "PhysicsObj.cs:find_bbox_cell_list")
+    def find_bbox_cell_list(self, cell_array, lscape) -> None:
+        if self.part_array is None or self.cur_cell is None:
+            return
+        cell_array.num_cells = 0
+        cell_array.added_outside = False
+        cell_array.add_cell(self.cur_cell.id, self.cur_cell)
+
+        i = 0
+        while i < len(cell_array.cells):  # Count re-read each pass, as ACE's for loop does
+            cell = cell_array.cells.value_at(i)
+            i += 1
+            if cell is None:
+                continue
+            self.part_array.calc_cross_cells_static(cell, cell_array, lscape)
+
+    @anchor("CPhysicsObj::remove_shadows_from_cells", "PhysicsObj.cs:remove_shadows_from_cells")
+    def remove_shadows_from_cells(self) -> None:
+        """A static is placed once: its ShadowObjects are still empty here, as ACE's are. Removing
+        entries from a cell's shadow list is not ported."""
+        for shadow_obj in self.shadow_objects.values():
+            if shadow_obj.cell is None:
+                continue
+            raise NotImplementedError("removing shadow objects (ObjCell.remove_shadow_object) is not ported")
+        self.num_shadow_objects = 0  # should be ShadowObjects.Count (ACE)
+        for child in self.children:
+            child.remove_shadows_from_cells()
+
+    @anchor("CPhysicsObj::add_shadows_to_cell", "PhysicsObj.cs:add_shadows_to_cell(CellArray)")
+    def add_shadows_to_cell(self, cell_array) -> None:
+        if self.state & PhysicsState.ParticleEmitter:
+            raise NotImplementedError("particle emitters (add_particle_shadow_to_cell) are not ported")
+        for cell in cell_array.cells.values():
+            if cell is None:
+                continue  # fixme (ACE)
+
+            shadow_obj = ShadowObj.create(self, cell)
+            # ShadowObjects.Add or overwrite: a .NET Dictionary keeps the key's slot either way
+            self.shadow_objects[cell.id] = shadow_obj
+
+            if cell is not None:
+                cell.add_shadow_object(shadow_obj)
+
+            if self.part_array is not None:
+                self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
+        for child in self.children:
+            child.add_shadows_to_cell(cell_array)
 
     @anchor("CPhysicsObj::check_contact", "PhysicsObj.cs:check_contact")
     def check_contact(self, contact: bool) -> bool:

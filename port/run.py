@@ -4,8 +4,10 @@ The world (LScape) and the mover (PhysicsObj) are built from the scene the way t
 ACE's; the outcome reads the same fields the oracle reads. A Python exception inside the port
 becomes ``Outcome(error=...)``: a verdict, not a crash. An AceException (port/errors.py: where
 ACE itself throws) reads ``"<.NET type>: <message>"``, as the oracle formats ACE's exceptions.
-Static objects are built and registered as the oracle builds them (the conventions are
-acconform.staging: shadow_cells, mover_setup_dims, MOVER_ID). Pass a ``collections.Counter`` as
+Static objects are built from the DAT records acconform/dat.py writes (read by port/dat/) with
+ACE's constructors and placed by ACE's placement chain (add_obj_to_cell), as the oracle does with
+ACE's own code; the mover is made by ACE's makeObject from its own records (dat.mover_records)
+with the id acconform.staging.MOVER_ID. Pass a ``collections.Counter`` as
 `trace` to count the branches the run took (names in acconform.port.transition.branches).
 """
 
@@ -15,19 +17,18 @@ import numpy as np
 
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome
-from acconform.staging import MOVER_ID, mover_setup_dims, shadow_cells
-from acconform.scene import CylSphereShape, Scene, SphereShape, StaticObject
+from acconform import dat
+from acconform.dat import static_records
+from acconform.staging import MOVER_ID
+from acconform.scene import Scene, StaticObject
 
 from .anchors import anchor, harness
-from .errors import AceException
-from .frame import Position
-from .geom.cyl_sphere import CylSphere
-from .geom.sphere import Sphere
-from .gfx_obj import GfxObj
+from .errors import AceException, NullReferenceException
+from .dat.portal_dat import PortalDat
+from .frame import AFrame, Position
+from .land import land_defs
 from .land.lscape import LScape
-from .part_array import PartArray, PhysicsPart
 from .physics_obj import PhysicsObj
-from .setup import Setup
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 
 # the mover's PhysicsObj.ID, as the oracle's: player range, so PhysicsObj.IsPlayer is true
@@ -41,81 +42,81 @@ def _plane_state(valid: bool, cell: int, is_water: bool, plane: Plane) -> Contac
     return ContactPlaneState(bool(valid), int(cell), bool(is_water), _vec(plane.normal), float(plane.d))
 
 
-@harness("builds the mover's PhysicsObj from the scene, as the oracle builds ACE's")
-def build_mover(scene: Scene, lscape: LScape) -> PhysicsObj:
-    """The mover as the oracle builds it: a PhysicsObj with a PartArray over a Setup of its spheres,
-    Height/Radius (staging.mover_setup_dims) and step heights; SetScaleStatic; flags, velocity,
-    contact plane, sliding normal, position and cell."""
+@harness("builds the mover from its DAT records and the scene, as the oracle's facade does")
+def build_mover(scene: Scene, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj:
+    """The mover as the oracle builds it (docs/oracle.md's audit): ``makeObject(mover Setup,
+    MOVER_ID, dynamic)`` over dat.mover_records (its spheres and step heights, one empty mesh
+    part), then SetScaleStatic(scale), State, TransientState, Velocity, the contact plane (and its
+    cell) and the sliding normal as the scene gives them, Position = begin, CurCell = the begin
+    cell. It is not entered in any cell."""
     mode = lscape.mode
     m = scene.mover
     s = mode.scalar
-    if m.contact_plane is not None:
-        contact_plane = Plane(mode.vec(*m.contact_plane.plane.normal), s(m.contact_plane.plane.d))
-        contact_cell = m.contact_plane.cell
-    else:
-        contact_plane = Plane(mode.vec(0, 0, 0), s(0.0))
-        contact_cell = 0
-    height, radius = mover_setup_dims(scene)
-    obj = PhysicsObj(id=MOVER_ID, state=0, position=None)
-    setup = Setup.create([Sphere(mode.vec(*sp.center), s(sp.radius)) for sp in m.spheres], [], s(height), s(radius),
-                         s(m.step_up_height), s(m.step_down_height))
-    obj.part_array = PartArray(owner=obj, setup=setup, num_parts=0, parts=[], scale=mode.vec(1, 1, 1))
+    obj = PhysicsObj.make_object(dat.MOVER_SETUP_ID, MOVER_ID, True, portal_dat)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
     obj.transient_state = m.transient_state
     obj.velocity = mode.vec(*m.velocity)
-    obj.contact_plane = contact_plane
-    obj.contact_plane_cell_id = contact_cell
-    obj.sliding_normal = mode.vec(*(m.sliding_normal or (0.0, 0.0, 0.0)))
+    if m.contact_plane is not None:
+        obj.contact_plane = Plane(mode.vec(*m.contact_plane.plane.normal), s(m.contact_plane.plane.d))
+        obj.contact_plane_cell_id = m.contact_plane.cell
+    if m.sliding_normal is not None:
+        obj.sliding_normal = mode.vec(*m.sliding_normal)
     obj.position = Position.from_record(m.begin, mode)
     obj.cur_cell = lscape.get_landcell(m.begin.cell)
     return obj
 
 
-@harness("builds a static object's PhysicsObj from a scene record, as the oracle's Facade.BuildStatic")
-def build_static(record: StaticObject, landblock_ids: list[int], lscape: LScape) -> PhysicsObj:
-    """A scene StaticObject as the oracle builds it (Facade.cs BuildStatic): a PhysicsObj whose
-    PartArray's Setup holds the sphere or cylsphere; a BSP shape is one PhysicsPart (GfxObj with
-    PhysicsBSP and PhysicsSphere, Pos = the object's position). State is the scene's flags as
-    given (the oracle sets State directly; ACE's makeObject would also CacheHasPhysicsBSP).
-    Registered as a shadow object in `shadow_cells`' cells, in that order."""
+@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects and mover, and each static's did")
+def portal_dat_for(scene: Scene, mode) -> tuple[PortalDat, list[int]]:
+    """The PortalDat and, per static object in scene order, the id makeObject takes."""
+    records = {r.id: r.data for r in dat.mover_records(scene.mover).records}
+    dids = []
+    for index, record in enumerate(scene.objects):
+        written = static_records(record, index)
+        dids.append(written.did)
+        for dat_record in written.records:
+            records[dat_record.id] = dat_record.data
+    return PortalDat(records, mode, scene.engine_mode == "server"), dids
+
+
+@harness("builds and places a static object from its DAT records, as the oracle's facade does (init_static_objs)")
+def build_static(record: StaticObject, did: int, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj | None:
+    """The static as the oracle builds it (docs/oracle.md's audit): ``makeObject(did, scene id,
+    false)`` over the records dat.py wrote; SetScaleStatic(scene scale); State = the scene's
+    flags (as WorldObject.InitPhysicsObj overwrites it); DatObject = true; then
+    Landblock.init_static_objs' placement: a Position in the landblock's 0xXXYYFFFF id with the
+    scene's frame, LandDefs.AdjustToOutside, the landblock's get_landcell, and add_obj_to_cell.
+    None when the landblock has no such cell (ACE drops the object)."""
     mode = lscape.mode
-    s = mode.scalar
-    obj = PhysicsObj(id=record.id, state=0, position=None)
-    shape = record.shape
-    spheres, cyl_spheres, gfx = [], [], None
-    if isinstance(shape, SphereShape):
-        spheres.append(Sphere.from_rec(shape.sphere, mode))
-    elif isinstance(shape, CylSphereShape):
-        cyl_spheres.append(CylSphere.from_rec(shape, mode))
-    else:
-        gfx = GfxObj.from_shape(shape, mode)
-    setup = Setup.create(spheres, cyl_spheres, s(0.0), s(0.0), s(0.0), s(0.0))
-    obj.part_array = PartArray(owner=obj, setup=setup, num_parts=0, parts=[], scale=mode.vec(1, 1, 1))
-    pos = Position.from_record(record.position, mode)
-    if gfx is not None:
-        part = PhysicsPart(gfx_obj=gfx, gfx_obj_scale=mode.vec(1, 1, 1), physics_obj=obj, pos=pos.copy())
-        obj.part_array.parts.append(part)
-        obj.part_array.num_parts = 1
+    obj = PhysicsObj.make_object(did, record.id, False, portal_dat)
+    obj.set_scale_static(mode.scalar(record.scale))
     obj.state = record.state
-    obj.position = pos.copy()
-    obj.set_scale_static(s(record.scale))
-    for k, cell_id in enumerate(shadow_cells(record, landblock_ids)):
-        cell = lscape.get_landcell(cell_id)
-        if k == 0:
-            obj.cur_cell = cell
-        obj.add_shadows_to_cell(cell)
+    obj.dat_object = True
+    landblock = lscape.get_landblock(record.position.cell)
+    position = Position((record.position.cell & 0xFFFF0000) | 0xFFFF, AFrame.from_record(record.position.frame, mode))
+    land_defs.adjust_to_outside_pos(position)
+    cell = landblock.get_landcell(position.obj_cell_id)
+    if cell is None:
+        return None
+    obj.add_obj_to_cell(cell, position.frame, lscape)
     return obj
 
 
 @anchor(None, "PhysicsObj.cs:transition", "the scene -> outcome driver around PhysicsObj.transition")
-def run_scene(scene: Scene, mode: str = "exact", trace=None) -> Outcome:
-    """Run the scene's transition in the port; `trace` (a Counter) is incremented in place."""
+def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mono") -> Outcome:
+    """Run the scene's transition in the port, computing as ACE on `runtime` ("mono" or "coreclr",
+    .NET 10) does; `trace` (a Counter) is incremented in place."""
+    numerics = get_mode(mode, runtime)  # an unknown mode or runtime is misuse, not a verdict
     try:
         with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
-            return _run(scene, get_mode(mode), trace)
+            return _run(scene, numerics, trace)
     except AceException as e:  # where ACE throws: its .NET type, as the oracle reports ACE's
         return Outcome(error=e.verdict())
+    except AttributeError as e:
+        if e.obj is None:  # a member of None: where C# meets null (e.g. a missing BSP child)
+            return Outcome(error=NullReferenceException.from_none(e).verdict())
+        return Outcome(error=f"{type(e).__name__}: {e}")
     except Exception as e:  # any other port exception is a verdict too (a port bug or gap)
         return Outcome(error=f"{type(e).__name__}: {e}")
 
@@ -129,10 +130,9 @@ def _run(scene: Scene, mode, trace) -> Outcome:
 
 
 def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
-    landblock_ids = [lb.id for lb in scene.landblocks]
-    for record in scene.objects:
-        build_static(record, landblock_ids, lscape)
-    mover = build_mover(scene, lscape)
+    portal_dat, dids = portal_dat_for(scene, mode)
+    statics = [build_static(record, did, portal_dat, lscape) for record, did in zip(scene.objects, dids)]
+    mover = build_mover(scene, portal_dat, lscape)
     old_pos = mover.position.copy()
     new_pos = Position.from_record(scene.mover.end, mode)
     trans, ok = mover.transition(old_pos, new_pos, False, lscape, trace)
@@ -159,4 +159,5 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
         walkable=sp.walkable is not None,
         step_up=bool(sp.step_up),
         neg_poly_hit=bool(sp.neg_poly_hit),
+        static_cells=tuple(tuple(obj.shadow_objects) if obj is not None else () for obj in statics),
     )

@@ -4,7 +4,9 @@
     sample_scenes(kinds, n, seed)   n scenes, the same ones for the same seed (used by `record`)
 
 Kinds: "terrain" (a mover over generated terrain), "bsp" (BSP objects on mostly level ground:
-ledges to walk off, stairs to climb, walls and corners to slide along -- strategies/objects.py --
+ledges to walk off, stairs to climb, walls and corners to slide along, statics straddling cell and
+landblock borders and corners (BSP, sphere, cylsphere; leaf-root and radius-0-leaf trees too) --
+strategies/objects.py; strategies/placement.py counts them per 1,000 scenes --
 or walls, floors, ramps, steps, platforms, posts, boxes, convex polygons scattered along a path), "obstacles"
 (spheres and cylspheres). DEFAULT_KINDS is what the port supports today; grow it as the port
 does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.

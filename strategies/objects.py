@@ -12,6 +12,12 @@ the branch it aims at needs (the scatter policy in scenes.py places objects alon
   0.4 and radius 0.48). Reaches StepUp ok/fail and the neg-poly step-up.
 - ``wall``: a wall approached head-on to grazing (89.5 degrees), or the inside corner of two walls;
   sometimes airborne (SetCollide). Reaches slides, the collide paths, AdjustOffset's crease.
+- ``straddle``: one static across a cell border, a landblock border or a landblock corner next to
+  the mover (a BSP box, a sphere or a cylsphere, small or large, often turned; now and then a
+  BSP tree whose root is a leaf or whose empty leaves have radius-0 spheres), owned by the cell
+  on either side, and the mover walking into it: so it comes from the object's own cell or
+  landblock or from the neighbour. Reaches ACE's placement (find_bbox_cell_list's own-landblock
+  skip, find_cell_list for cylspheres) where it decides what the mover meets.
 
 BSP objects get ``Static|HasPhysicsBSP`` (what ACE's makeObject leaves via CacheHasPhysicsBSP),
 now and then with Ethereal (and IgnoreCollisions), or ``Static`` alone (walked through).
@@ -29,6 +35,7 @@ from hypothesis import strategies as st
 
 from acconform.flags import PhysicsState, TransientState
 from acconform.numerics import to_f32
+from acconform.scene import CylSphereShape, SphereRec, SphereShape
 
 from . import draws as dr
 from . import shapes as sh
@@ -101,6 +108,7 @@ class Plan:
         self.steps: list[float] = []
         self.velocity = None  # None: drawn from VELOCITIES
         self.plane_dz = None  # the start's height over its contact plane; None: drawn from PLANE_DZ
+        self.moved_begin = None  # global x, y the policy moved the mover's start to (None: where it was drawn)
 
 
 # what a ledge scene is for (the first is the plainest, where shrinking goes):
@@ -304,9 +312,88 @@ def wall(draw, gx: float, gy: float, r: float) -> Plan:
     return p
 
 
+# straddle: which border, how far the object's origin sits past it (signed: which side owns it),
+# what the object is, and the walk into it (at its origin, or beside it; short of it or through)
+STRADDLE_BORDERS = st.sampled_from(("cell", "block", "block", "corner", "corner"))
+# within this of a landblock border the start counts as beside it (scenes.NEAR_BORDER draws 3 m)
+NEAR_BLOCK = 6.0
+STRADDLE_KINDS = st.sampled_from(("bsp", "sphere", "cylsphere", "leaf_root", "zero_radius_leaves", "bsp", "sphere",
+                                  "cylsphere", "zero_radius_leaves", "bsp"))
+SMALL_SIDES, LARGE_SIDES = dr.f32(0.3, 1.5), dr.f32(3.0, 12.0)
+SMALL_RADII, LARGE_RADII = dr.f32(0.2, 0.8), dr.f32(2.0, 6.0)
+STRADDLE_HEIGHTS = dr.f32(0.3, 4.0)
+SIZES = st.sampled_from(("small", "large"))
+STRADDLE_YAWS = dr.OneOf(st.sampled_from((0.0, 45.0, 90.0, 30.0, 180.0)), dr.floats(0.0, 359.0))
+PAST_BORDER = dr.OneOf(st.sampled_from((0.0, 0.25, 0.5)), dr.floats(0.0, 0.9))  # of the object's half size
+OFF_AXIS = dr.OneOf(st.just(0.0), dr.floats(-0.8, 0.8))  # of the object's half size, beside the walk
+THROUGH = st.sampled_from((1.0, 2.0, 2.0, 0.5))  # path length in units of the start's distance to the object
+START_OFF_BORDER = dr.f32(0.5, 5.0)  # where a start far from a landblock border moves to, from the border
+
+
+def _straddle_shape(draw) -> tuple:
+    """(shape, state, half size across the border) for one straddling object."""
+    kind = draw(STRADDLE_KINDS)
+    large = draw(SIZES) == "large"
+    if kind in ("bsp", "leaf_root", "zero_radius_leaves"):
+        sides = LARGE_SIDES if large else SMALL_SIDES
+        sx, sy = draw(sides), draw(sides)
+        shape = sh.box(sx, sy, draw(STRADDLE_HEIGHTS))
+        if kind == "leaf_root":
+            shape = sh.leaf_root(shape)
+        elif kind == "zero_radius_leaves":
+            shape = sh.zero_radius_empty_leaves(shape)
+        return kind, shape, BSP_STATE, max(sx, sy) / 2
+    r = draw(LARGE_RADII if large else SMALL_RADII)
+    if kind == "sphere":
+        return kind, SphereShape(SphereRec((0.0, 0.0, to_f32(r / 2)), r)), int(PhysicsState.Static), r
+    return kind, CylSphereShape((0.0, 0.0, 0.0), r, draw(STRADDLE_HEIGHTS)), int(PhysicsState.Static), r
+
+
+@st.composite
+def straddle(draw, gx: float, gy: float, r: float) -> Plan:
+    border = draw(STRADDLE_BORDERS)
+    bxl, byl = round(gx / 192.0) * 192.0, round(gy / 192.0) * 192.0
+    near_x, near_y = abs(gx - bxl) < NEAR_BLOCK, abs(gy - byl) < NEAR_BLOCK
+    moved = None
+    if border != "cell" and not (near_x or near_y) or border == "corner" and not (near_x and near_y):
+        # move the start beside the nearest landblock border (both, for a corner), on either side
+        if border == "corner" or abs(gx - bxl) <= abs(gy - byl):
+            gx, near_x = bxl + draw(SIGNS) * draw(START_OFF_BORDER), True
+        if border == "corner" or not near_x:
+            gy, near_y = byl + draw(SIGNS) * draw(START_OFF_BORDER), True
+        moved = (gx, gy)
+    kind, shape, state, half = _straddle_shape(draw)
+    past = half * dr.take(draw, PAST_BORDER)
+    sx, sy = draw(SIGNS), draw(SIGNS)  # which side of each border the origin (the owner) is on
+    if border == "corner" and near_x and near_y:
+        ox, oy, where = bxl + sx * past, byl + sy * past, "corner"
+    elif border != "cell" and (near_x or near_y):
+        if near_x:
+            ox, oy, where = bxl + sx * past, gy + half * dr.take(draw, OFF_AXIS), "block"
+        else:
+            ox, oy, where = gx + half * dr.take(draw, OFF_AXIS), byl + sy * past, "block"
+    else:  # the nearer cell border line
+        cxl, cyl = round(gx / 24.0) * 24.0, round(gy / 24.0) * 24.0
+        if abs(gx - cxl) <= abs(gy - cyl):
+            ox, oy = cxl + sx * past, gy + half * dr.take(draw, OFF_AXIS)
+        else:
+            ox, oy = gx + half * dr.take(draw, OFF_AXIS), cyl + sy * past
+        where = "cell"
+    p = Plan()
+    p.objects.append((shape, ox, oy, dr.take(draw, STRADDLE_YAWS), state))
+    dist = math.hypot(ox - gx, oy - gy)
+    p.heading = math.degrees(math.atan2(oy - gy, ox - gx)) if dist > 0 else 0.0
+    p.begin = (gx, gy)
+    p.moved_begin = moved
+    p.length = to_f32(min(max(dist, r) * draw(THROUGH), 40 * r))
+    p.edge_slide = draw(EDGE_SLIDE)
+    p.label = f"straddle-{where}-{kind}"
+    return p
+
+
 # a policy: (global x, global y, mover radius) -> a strategy of Plans (built per scene: a policy
 # depends on the mover; it costs little next to the span of its own it gives the shrinker)
-POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall}
+POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall, "straddle": straddle}
 
 
 def mover_flags(plan: Plan) -> tuple[int, int]:

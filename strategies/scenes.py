@@ -17,7 +17,6 @@ from acconform.numerics import to_f32
 from acconform.scene import (IDENTITY, ContactPlane, Frame, Mover, PlaneRec, Position, Scene, SphereRec,
                              StaticObject)
 
-from acconform import staging
 
 from . import draws as dr
 from . import objects as ob
@@ -144,7 +143,8 @@ QUARTERS = dr.ints(0, 3)
 OBJECT_COUNTS = dr.ints(1, 3)
 
 
-BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter"))
+BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter",
+                                "straddle", "straddle"))
 # terrain: a free path, or "border_slope": grounded on tilted terrain, a few metres from a block
 # border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
 TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope"))
@@ -333,6 +333,9 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
     reach = max(s.center[2] + s.radius for s in spheres)
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     plan = draw(ob.POLICIES[policy](gx0, gy0, r))
+    if plan.moved_begin is not None:  # the policy moved the start (straddle: beside a landblock border)
+        bx, by, lx, ly = split_global(*plan.moved_begin)
+        gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     placed = []
     for shape, ox, oy, angle, st_ in plan.objects:
         _, (gz, _, _) = world.ground(ox, oy)
@@ -388,7 +391,7 @@ def _blocks_in_reach(bx, by, p0, p1, reach, objects) -> set[tuple[int, int]]:
     boxes = [(min(p0[0], p1[0]) - margin, min(p0[1], p1[1]) - margin,
               max(p0[0], p1[0]) + margin, max(p0[1], p1[1]) + margin)]
     for o in objects:
-        (cx, cy, _), rad = staging.bounding_sphere(o)
+        (cx, cy, _), rad = sh.object_reach(o)
         ox = (o.position.cell >> 24) * BLOCK + cx
         oy = ((o.position.cell >> 16) & 0xFF) * BLOCK + cy
         m = rad + REACH_SLACK

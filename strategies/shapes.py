@@ -195,3 +195,46 @@ def cylsphere_shapes():
 
 
 OBSTACLE_SHAPES = dr.OneOf(dr.eager(spheres_shapes()), dr.eager(cylsphere_shapes()))
+
+
+def leaf_root(shape: BSPShape) -> BSPShape:
+    """The same polygons under a tree that is one solid leaf (ACE makes its root a childless node)."""
+    return BSPShape(shape.polygons, BSPLeaf(tuple(range(len(shape.polygons))), True, shape.sphere), shape.sphere)
+
+
+def zero_radius_empty_leaves(shape: BSPShape) -> BSPShape:
+    """The same tree with every empty leaf's bounding sphere shrunk to radius 0 (at the origin)."""
+    def walk(node):
+        if isinstance(node, BSPLeaf):
+            return node if node.polygons else BSPLeaf((), node.solid, SphereRec((0.0, 0.0, 0.0), 0.0))
+        return BSPNode(node.plane, node.sphere, walk(node.front), walk(node.back))
+    return BSPShape(shape.polygons, walk(shape.root), shape.sphere)
+
+
+def _rotate(q, v):
+    w, x, y, z = q
+    n = math.sqrt(w * w + x * x + y * y + z * z) or 1.0
+    w, x, y, z = w / n, x / n, y / n, z / n
+    vx, vy, vz = v
+    # v + 2w(q x v) + 2 q x (q x v)
+    cx, cy, cz = y * vz - z * vy, z * vx - x * vz, x * vy - y * vx
+    cx2, cy2, cz2 = y * cz - z * cy, z * cx - x * cz, x * cy - y * cx
+    return (vx + 2 * (w * cx + cx2), vy + 2 * (w * cy + cy2), vz + 2 * (w * cz + cz2))
+
+
+def object_reach(obj) -> tuple[tuple[float, float, float], float]:
+    """A sphere (centre in the object's landblock, radius) holding all of a static object: what the
+    strategies use to pick the landblocks a scene lists. Only the drawing uses it; where ACE
+    registers the object is ACE's own placement code, run on each side."""
+    shape = obj.shape
+    if isinstance(shape, SphereShape):
+        c, r = shape.sphere.center, shape.sphere.radius
+    elif isinstance(shape, CylSphereShape):
+        lx, ly, lz = shape.low_point
+        c, r = (lx, ly, lz + shape.height / 2), shape.radius + shape.height / 2
+    else:  # the shape's bounding sphere, which the strategies draw to cover every vertex
+        c, r = shape.sphere.center, shape.sphere.radius
+    s = obj.scale
+    rc = _rotate(obj.position.frame.orientation, (c[0] * s, c[1] * s, c[2] * s))
+    o = obj.position.frame.origin
+    return (o[0] + rc[0], o[1] + rc[1], o[2] + rc[2]), r * s

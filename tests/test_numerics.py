@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from acconform import numerics as nx
-from acconform.numerics import EXACT, FAST, MONO, CORECLR, cs_ceiling, cs_floor, cs_fmod, f32_bits
+from acconform.numerics import EXACT, FAST, MONO, NET10, cs_ceiling, cs_floor, cs_fmod, f32_bits
 from acconform.port import constants as k
 
 _P = struct.Struct("<f")
@@ -153,8 +153,8 @@ def test_float_to_int_casts_follow_the_runtime():
     assert MONO.to_uint32(-3e9) == 1294967296 and MONO.to_uint32(-2.5) == 4294967294
     assert MONO.to_uint32(math.inf) == 0
     # .NET 9+ CoreCLR saturates and maps NaN to 0.
-    assert CORECLR.to_int32(3e9) == 2147483647 and CORECLR.to_int32(math.nan) == 0
-    assert CORECLR.to_uint32(-2.5) == 0
+    assert NET10.to_int32(3e9) == 2147483647 and NET10.to_int32(math.nan) == 0
+    assert NET10.to_uint32(-2.5) == 0
 
 
 def test_quaternion_identity_rotation_leaves_vectors_bit_identical():
@@ -187,5 +187,141 @@ def test_unknown_modes_and_runtimes_are_refused_with_a_clear_message():
 
     with pytest.raises(AcconformError, match="unknown numerics mode"):
         nx.get_mode("quad")
-    with pytest.raises(AcconformError, match="only the mono runtime"):
-        nx.get_mode("exact", "coreclr")
+    with pytest.raises(AcconformError, match="unknown runtime"):
+        nx.get_mode("exact", "net48")
+
+
+def test_a_mode_computes_as_the_runtime_it_names_and_keeps_its_scalar_type():
+    for name, scalar in (("exact", np.float32), ("fast", np.float64)):
+        for runtime, rt in (("mono", MONO), ("coreclr", NET10)):
+            m = nx.get_mode(name, runtime)
+            assert m.scalar is scalar and m.runtime is rt and m.quat(0, 0, 0, 1).runtime is rt
+    assert nx.get_mode("exact") is EXACT and nx.get_mode("fast") is FAST
+
+
+def test_each_runtimes_quaternion_operations_return_that_runtimes_quaternions():
+    for rt in (MONO, NET10):
+        a, b = rt.quaternion(*map(np.float32, (0.1, 0.2, 0.3, 0.9))), rt.quaternion(*map(np.float32, (0.5, -0.5, 0.5, 0.5)))
+        made = [rt.quat_multiply(a, b), rt.quat_inverse(a), rt.quat_normalize(a), rt.quat_lerp(a, b, np.float32(0.3)),
+                rt.quat_create_from_yaw_pitch_roll(np.float32(0.1), np.float32(0.2), np.float32(0.3)), a * b]
+        assert all(type(q) is rt.quaternion and q.runtime is rt for q in made)
+
+
+def test_a_record_or_oracle_runtime_string_names_the_arithmetic_to_use():
+    from acconform.errors import AcconformError
+
+    assert nx.runtime_named("mono 6.8.0.105") == "mono"
+    assert nx.runtime_named("coreclr .NET 10.0.12") == "coreclr"
+    assert nx.runtime_named("mono 6.8.0.105; mono 6.8.0.123") == "mono"
+    with pytest.raises(AcconformError, match="one runtime"):
+        nx.runtime_named("coreclr .NET 10.0.12; mono 6.8.0.105")
+    assert nx.runtime_named("") == "mono"  # written before runtimes were recorded: all from mono
+    with pytest.raises(AcconformError, match="cannot tell"):
+        nx.runtime_named("net48 4.8")
+
+
+# ---------------------------------------------------------------- fused multiply-add (.NET 10)
+
+
+def _libm_fma():
+    import ctypes
+    import ctypes.util
+
+    lib = ctypes.CDLL(ctypes.util.find_library("m") or "libm.so.6")
+    lib.fmaf.restype = ctypes.c_float
+    lib.fmaf.argtypes = [ctypes.c_float] * 3
+    lib.fma.restype = ctypes.c_double
+    lib.fma.argtypes = [ctypes.c_double] * 3
+    return lib
+
+
+def _fma_exact(a: float, b: float, c: float) -> float:
+    """a*b + c rounded once to float32 (ties to even), from exact rationals: an independent reference."""
+    from fractions import Fraction
+
+    exact = Fraction(a) * Fraction(b) + Fraction(c)
+    if exact == 0:
+        return -0.0 if math.copysign(1, a) * math.copysign(1, b) < 0 and math.copysign(1, c) < 0 else 0.0
+    mag = abs(exact)
+    e = mag.numerator.bit_length() - mag.denominator.bit_length()  # 2^e <= mag < 2^(e+2)
+    if Fraction(2) ** e > mag:
+        e -= 1
+    ulp = Fraction(2) ** (max(e, -126) - 23)
+    q, rem = divmod(mag, ulp)
+    if rem * 2 > ulp or (rem * 2 == ulp and q % 2 == 1):
+        q += 1
+    out = float(q * ulp)
+    if out > 3.4028234663852886e38:
+        out = math.inf
+    return math.copysign(out, exact)
+
+
+# Hard cases: the double sum lands exactly halfway between two float32s (a tie) although the exact
+# value does not (double rounding would go the wrong way), ties that are exact, subnormal results,
+# cancellation to zero, overflow, infinities and NaN.
+_HARD = [
+    (1.0 + 2.0 ** -23, 1.0 + 2.0 ** -23, -(2.0 ** -46)),  # (1+u)^2 - u^2 = 1 + 2u exactly
+    (1.0 + 2.0 ** -12, 1.0 + 2.0 ** -12, 2.0 ** -70),  # 1 + 2^-11 + 2^-24 + tiny: just above a tie
+    (1.0 + 2.0 ** -12, 1.0 + 2.0 ** -12, -(2.0 ** -70)),  # just below a tie
+    (1.0 + 2.0 ** -12, 1.0 - 2.0 ** -12, 2.0 ** -24),  # 1 - 2^-24 + 2^-24 = 1 exactly
+    (3.0, 2.0 ** -25, 1.0),  # 1 + 3*2^-25: not a tie, rounds up
+    (1.0, 2.0 ** -24, 1.0),  # exactly halfway: to even (1.0)
+    (1.0, 3.0 * 2.0 ** -24, 1.0),  # exactly halfway: to even (1 + 2^-22)
+    (2.0 ** -75, 2.0 ** -75, 2.0 ** -149),  # subnormal addend, tiny product
+    (2.0 ** -70, 2.0 ** -70, -(2.0 ** -140)),  # subnormal result
+    (1.5 * 2.0 ** -75, 2.0 ** -75, 2.0 ** -149),  # subnormal tie
+    (2.0, 3.0, -6.0),  # exact cancellation: +0
+    (-0.0, 1.0, -0.0),  # -0 * 1 + -0 = -0
+    (0.0, -1.0, 0.0),  # -0 + +0 = +0
+    (3.0e38, 10.0, -3.0e38),  # the product overflows float32 but the sum does not
+    (3.0e38, 2.0, 1.0),  # overflow to inf
+    (math.inf, 0.0, 1.0),  # inf * 0 = NaN
+    (math.inf, 1.0, -math.inf),  # inf - inf = NaN
+    (math.inf, 2.0, 1.0),
+    (math.nan, 1.0, 1.0),
+    (1.0, 1.0, math.nan),
+]
+
+
+@pytest.mark.parametrize("a, b, c", _HARD)
+def test_float32_fma_rounds_once_on_hard_cases(a, b, c):
+    lib = _libm_fma()
+    with np.errstate(all="ignore"):  # overflow to inf is one of the cases
+        got = nx.fma(np.float32(a), np.float32(b), np.float32(c))
+    assert type(got) is np.float32
+    want = lib.fmaf(r32(a), r32(b), r32(c))
+    assert f32_bits(got) == f32_bits(want) or (math.isnan(got) and math.isnan(want))
+    if all(math.isfinite(x) for x in (a, b, c)) and math.isfinite(want):
+        assert f32_bits(got) == f32_bits(_fma_exact(r32(a), r32(b), r32(c)))
+
+
+def test_the_double_rounding_case_is_one_that_a_plain_double_sum_gets_wrong():
+    x, y, z = (np.float32(v) for v in _HARD[1])
+    fused = nx.fma(x, y, z)
+    naive = np.float32(float(x) * float(y) + float(z))
+    assert f32_bits(fused) != f32_bits(naive)
+    assert f32_bits(fused) == f32_bits(_fma_exact(float(x), float(y), float(z)))
+
+
+@settings(max_examples=3000)
+@given(f32s, f32s, f32s)
+def test_float32_fma_equals_the_c_librarys_fmaf(a, b, c):
+    with np.errstate(all="ignore"):
+        got = nx.fma(np.float32(a), np.float32(b), np.float32(c))
+    want = _libm_fma().fmaf(a, b, c)
+    assert f32_bits(got) == f32_bits(want) or (math.isnan(got) and math.isnan(want))
+
+
+@settings(max_examples=2000)
+@given(st.floats(allow_nan=False, allow_infinity=False), st.floats(allow_nan=False, allow_infinity=False),
+       st.floats(allow_nan=False, allow_infinity=False))
+def test_double_fma_equals_the_c_librarys_fma(a, b, c):
+    got = nx.fma_double(a, b, c)
+    want = _libm_fma().fma(a, b, c)
+    assert got == want or (math.isnan(got) and math.isnan(want)) or (math.isinf(want) and got == want)
+    assert math.copysign(1.0, got) == math.copysign(1.0, want) or math.isnan(want)
+
+
+def test_fma_in_fast_mode_is_the_plain_double_expression():
+    a, b, c = np.float64(0.1), np.float64(0.2), np.float64(0.3)
+    assert nx.fma(a, b, c) == a * b + c and type(nx.fma(a, b, c)) is np.float64

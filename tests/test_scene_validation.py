@@ -106,9 +106,28 @@ def test_a_degenerate_polygon_is_refused():
     assert "objects[0].shape.polygons[0].vertices: degenerate polygon: its vertices span no area" in msg
 
 
-def test_a_bsp_whose_root_is_a_leaf_is_refused():
-    msg = refused(scene_with(with_wall(lambda w: w.__setitem__("root", w["root"]["front"]))))
-    assert "objects[0].shape.root: the BSP root must be an internal node, not a leaf" in msg
+def test_a_bsp_whose_root_is_a_leaf_is_accepted_because_ace_makes_it_a_childless_node():
+    s = Scene.from_json(scene_with(with_wall(lambda w: w.__setitem__("root", w["root"]["front"]))))
+    assert s.objects[0].shape.root.polygons == (0,)
+    assert validate_scene(s) == s
+
+
+def test_an_empty_leaf_whose_bounding_sphere_has_radius_zero_is_accepted():
+    s = Scene.from_json(scene_with(with_wall(lambda w: w["root"]["back"]["sphere"].__setitem__("radius", 0))))
+    assert s.objects[0].shape.root.back.sphere.radius == 0.0
+
+
+def test_a_bsp_node_whose_bounding_sphere_has_radius_zero_is_accepted():
+    s = Scene.from_json(scene_with(with_wall(lambda w: w["root"]["sphere"].__setitem__("radius", 0))))
+    assert s.objects[0].shape.root.sphere.radius == 0.0
+
+
+@pytest.mark.parametrize("where", ["root", "front"])
+def test_a_bsp_bounding_sphere_with_a_negative_radius_is_refused_naming_it(where):
+    node = (lambda w: w["root"]) if where == "root" else (lambda w: w["root"]["front"])
+    msg = refused(scene_with(with_wall(lambda w: node(w)["sphere"].__setitem__("radius", -0.5))))
+    path = "root" if where == "root" else "root.front"
+    assert f"objects[0].shape.{path}.sphere.radius: a bounding sphere needs a radius of 0 or more, got -0.5" in msg
 
 
 def test_an_internal_bsp_node_without_both_children_is_refused():

@@ -150,19 +150,23 @@ def measure_kind(scenes, oracle=None, run_scene=None) -> dict:
     """
     import time
 
+    from ..numerics import runtime_named
+
     if run_scene is None:
         from ..port.run import run_scene
 
+    # the port computes as the ACE it is compared with (mono's arithmetic without an oracle)
+    rt = runtime_named(oracle.versions.runtime) if oracle is not None else "mono"
     t_exact = t_fast = 0.0
     fast_exact, fast_oracle, exact_oracle = ErrorStats(), ErrorStats(), ErrorStats()
     errors = {"exact": 0, "fast": 0, "oracle": 0}
-    run_scene(scenes[0], mode="exact"), run_scene(scenes[0], mode="fast")  # warm caches and imports
+    run_scene(scenes[0], mode="exact", runtime=rt), run_scene(scenes[0], mode="fast", runtime=rt)  # warm caches and imports
     exact, fast = [], []
     for s in scenes:  # modes alternate scene by scene, so drift in machine load hits both alike
         t0 = time.perf_counter()
-        e = run_scene(s, mode="exact")
+        e = run_scene(s, mode="exact", runtime=rt)
         t1 = time.perf_counter()
-        f = run_scene(s, mode="fast")
+        f = run_scene(s, mode="fast", runtime=rt)
         t2 = time.perf_counter()
         t_exact += t1 - t0
         t_fast += t2 - t1
@@ -274,7 +278,8 @@ def _implementation(args, kinds):
             impl.close()
         raise
 
-    def run(scene, mode="exact"):
+    def run(scene, mode="exact", runtime="mono"):
+        impls[mode].runtime = runtime
         return impls[mode](scene)
 
     return run, impls

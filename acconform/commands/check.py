@@ -83,14 +83,16 @@ def _campaign(args, port, kinds, workers) -> int:
             raise AcconformError(f"implementation {port.name!r} supports none of the kinds asked for "
                                  f"({','.join(kinds)}); its handshake lists {','.join(port.kinds)}")
     oracle, replay, bad = _oracle(args, workers, kinds)
+    port.runtime = runtime = _port_runtime(args, oracle)
     database = None if args.no_database else (args.database or DEFAULT_DATABASE)
     seed = args.seed if args.seed is not None else 0
     who = f"implementation {port.name!r} ({args.impl})" if args.impl else "port"
     if replay is not None:
         source = f"recorded corpus ({len(replay)} scenes" + (f", a sample by kind, seed {seed}" if args.cases else "") + ")"
-        _say(f"{who} vs {source}, mode {args.mode}, {workers} worker{'s' if workers != 1 else ''}")
+        _say(f"{who} vs {source}, mode {args.mode}, {runtime} arithmetic, {workers} worker{'s' if workers != 1 else ''}")
     else:
-        _say(f"{who} vs {getattr(oracle, 'name', 'oracle')} oracle, mode {args.mode}, kinds {','.join(run_kinds)}, "
+        _say(f"{who} vs {getattr(oracle, 'name', 'oracle')} oracle, mode {args.mode}, {runtime} arithmetic, "
+             f"kinds {','.join(run_kinds)}, "
              f"{args.cases or GENERATIVE_CASES} cases, seed {seed}, {workers} worker{'s' if workers != 1 else ''}")
     if unsupported_kinds and replay is None:
         _say(f"skipping kinds {','.join(unsupported_kinds)}: the implementation's handshake does not list them")
@@ -123,6 +125,18 @@ def _campaign(args, port, kinds, workers) -> int:
     if result.interrupted:
         return 130
     return 1 if result.found else 0
+
+
+def _port_runtime(args, oracle) -> str:
+    """The runtime whose arithmetic the port computes: the live oracle's (from the build, or
+    --runtime), else the one the replayed records come from (--runtime picks them)."""
+    from ..numerics import runtime_named
+
+    if getattr(oracle, "name", "") == "live":
+        from ..oracle.config import resolve
+
+        return resolve(args.ace, args.runtime).runtime
+    return runtime_named(args.runtime or oracle.versions.runtime)
 
 
 def _oracle(args, workers: int, kinds):

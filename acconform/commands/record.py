@@ -88,5 +88,5 @@ def run(args) -> int:
     dt = time.perf_counter() - t0
     kinds = ", ".join(f"{k} {n}" for k, n in sorted(writer.written.items())) or "none"
     print(f"recorded {done} scenes ({kinds}; {errors} ACE exceptions as verdicts), skipped {skipped} already "
-          f"recorded, into {out} in {dt:.1f}s with {oracle.versions.ace} on {oracle.versions.runtime} ({oracle.path} path)")
+          f"recorded, into {out} in {dt:.1f}s with {oracle.versions.ace} on {oracle.versions.runtime}")
     return 0

@@ -21,6 +21,7 @@ def run(args) -> int:
     from ..case import Case, load_document
     from ..compare import compare, render
     from ..errors import InvalidScene
+    from ..numerics import runtime_named
     from ..oracle import live_configured
     from ..impl import make_backend
     from ..runner import guarded
@@ -29,7 +30,14 @@ def run(args) -> int:
     if not isinstance(doc, Case):
         raise InvalidScene("format", "expected a case file (\"acconform.case/1\"); use `acconform show` for other files", args.file)
     mode = args.mode or doc.mode
+    if live_configured(args.ace):  # the port computes as the ACE it is compared with
+        from ..oracle.config import resolve
+
+        runtime = resolve(args.ace, args.runtime).runtime
+    else:  # ... as the ACE that answered the case
+        runtime = runtime_named(doc.versions.runtime)
     backend = make_backend(args.impl, mode, args.timeout)
+    backend.runtime = runtime
     try:
         port = guarded(backend, doc.scene)
     finally:
@@ -44,7 +52,7 @@ def run(args) -> int:
         source = "the oracle outcome recorded in the case (no ACE configured)"
     diffs = compare(port, oracle, mode)
     who = f"implementation {backend.name!r}" if args.impl else "port"
-    print(f"{args.file}: {who} (mode {mode}) vs {source}")
+    print(f"{args.file}: {who} (mode {mode}, {runtime} arithmetic) vs {source}")
     if not diffs:
         print("no longer fails: every field agrees")
         return 0

@@ -18,4 +18,4 @@ def run(args) -> int:
     from ..runner import campaign_gc
 
     with campaign_gc():  # the collector tuned as for an in-process campaign (runner.GC_THRESHOLDS)
-        return serve(lambda scene, mode: run_scene(scene, mode=mode))
+        return serve(lambda scene, mode, runtime: run_scene(scene, mode=mode, runtime=runtime))

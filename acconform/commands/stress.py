@@ -407,11 +407,15 @@ def run(args) -> int:
             print("oracle half skipped: no ACE is configured (pass --ace or set ACE_ASSEMBLY); the recorded corpus "
                   "cannot answer stressed scenes. Port-only figures follow.")
 
+    from ..numerics import runtime_named
+
+    rt = runtime_named(oracle.versions.runtime) if oracle is not None else "mono"  # as the ACE compared with
+
     def exact(s):
-        return run_scene(s, mode="exact")
+        return run_scene(s, mode="exact", runtime=rt)
 
     def fast(s):
-        return run_scene(s, mode="fast")
+        return run_scene(s, mode="fast", runtime=rt)
 
     found: list[str] = []
 

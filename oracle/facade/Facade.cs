@@ -7,22 +7,21 @@
 // cached outside the repository. It touches only members listed in oracle/members.py, which the
 // oracle checks exist before compiling this file.
 using System;
+using System.Collections.Concurrent;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
 using System.Numerics;
 using System.Reflection;
+using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Serialization;
 using System.Text;
 
+using ACE.DatLoader;
 using ACE.DatLoader.FileTypes;
 using LandblockId = ACE.Entity.LandblockId;
-using GfxObj = ACE.Server.Physics.Collision.GfxObj;
-using Polygon = ACE.Server.Physics.Polygon;
-using Sphere = ACE.Server.Physics.Sphere;
-using BSPNode = ACE.Server.Physics.BSP.BSPNode;
-using BSPLeaf = ACE.Server.Physics.BSP.BSPLeaf;
+using DatGfxObj = ACE.DatLoader.FileTypes.GfxObj;
 using ACE.Entity.Enum;
 using ACE.Server.Physics;
 using ACE.Server.Physics.Animation;
@@ -37,21 +36,26 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 3;
+        public const int PackVersion = 4;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
-        /// A landblock's cells get the scene's shadow objects, which are removed after each scene.</summary>
+        /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
         public static bool CacheLandblocks = true;
         public const int CacheLimit = 2048;
         static readonly Dictionary<ulong, LandblockEntry> landblockCache = new Dictionary<ulong, LandblockEntry>();
         static readonly List<PhysicsObj> sceneStatics = new List<PhysicsObj>();
+        static readonly Dictionary<uint, ACE.Server.Physics.Common.Landblock> sceneLandblocks =
+            new Dictionary<uint, ACE.Server.Physics.Common.Landblock>();
+        static readonly List<uint> sceneRecords = new List<uint>();  // DAT ids this scene put in the portal FileCache
+        static ConcurrentDictionary<uint, FileType> portalFiles;  // DatManager.PortalDat.FileCache
+        // for each static, in scene order: the ids of PhysicsObj.ShadowObjects (null until every static is placed)
+        static List<List<uint>> staticCells;
 
         static readonly List<Tuple<int, int>> tableUsed = new List<Tuple<int, int>>();
         static bool tableCleared;
         static byte[] lastTableBytes;
         static int lastTableId;
         static readonly Dictionary<ulong, TableEntry> tableIds = new Dictionary<ulong, TableEntry>();
-        static readonly Dictionary<ulong, SetupEntry> setupCache = new Dictionary<ulong, SetupEntry>();
 
         static FieldInfo lbmTable;
         static FieldInfo serverLbPhysics;
@@ -59,7 +63,6 @@ namespace Acconform.Oracle
 
         sealed class LandblockEntry { public byte[] Bytes; public int Table; public ACE.Server.Physics.Common.Landblock Landblock; }
         sealed class TableEntry { public byte[] Bytes; public int Id; }
-        sealed class SetupEntry { public byte[] Bytes; public Setup Setup; }
 
         // Counters for the last scene (written after the times in every outcome; see pack.unpack_outcome).
         static int landblocksBuilt, landblocksReused;
@@ -106,6 +109,7 @@ namespace Acconform.Oracle
         /// when the oracle loads).</summary>
         public static void Init()
         {
+            InstallPortalDat();
             EnsureInput(1 << 16);
             EnsureOutput(1 << 12);
             runEntry = RunPinnedNative;
@@ -188,6 +192,7 @@ namespace Acconform.Oracle
             double fvpMicros = 0;
             landblocksBuilt = landblocksReused = 0;
             buildMicros = transitionMicros = 0;
+            staticCells = null;
             var total = Stopwatch.StartNew();
             try
             {
@@ -200,6 +205,7 @@ namespace Acconform.Oracle
             catch (Exception e)
             {
                 while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
+                staticCells = null;  // an error outcome carries no registration
                 outcome.Position = start;
                 outcome.SetLength(start);
                 w.Write((byte)0xEE);
@@ -215,13 +221,25 @@ namespace Acconform.Oracle
             w.Write(landblocksReused);
             w.Write(buildMicros);
             w.Write(transitionMicros);
+            WriteStaticCells(w, staticCells);
+        }
+
+        /// <summary>int count (-1: not read, e.g. an error outcome), then per static: int n, n cell ids.</summary>
+        static void WriteStaticCells(BinaryWriter w, List<List<uint>> cells)
+        {
+            if (cells == null) { w.Write(-1); return; }
+            w.Write(cells.Count);
+            foreach (var ids in cells)
+            {
+                w.Write(ids.Count);
+                foreach (var id in ids) w.Write(id);
+            }
         }
 
         public static void ClearCache()
         {
             serverLandblocks.Clear();
             landblockCache.Clear();
-            setupCache.Clear();
         }
 
         // ------------------------------------------------------------------ content keys
@@ -254,10 +272,33 @@ namespace Acconform.Oracle
 
         static void RemoveStatics()
         {
-            // leave cached landblocks as they were built: take this scene's shadow objects out again
+            // leave cached landblocks as they were built: this scene's statics leave their cells again
             foreach (var obj in sceneStatics)
+            {
                 obj.remove_shadows_from_cells();
+                obj.leave_cell(false);
+            }
             sceneStatics.Clear();
+        }
+
+        // ------------------------------------------------------------------ the portal DAT
+        /// <summary>Make DatManager.PortalDat exist with no DAT file: a PortalDatDatabase made without its
+        /// file-reading constructor whose FileCache (the auto-property's backing field) is a fresh dictionary.
+        /// ACE's DatDatabase.ReadFromDat looks there first, so records the facade puts there are what
+        /// DBObj.GetGfxObj / GetSetup read. LandDefs' static constructor reads the region's height table from
+        /// PortalDat when one exists; it runs first, with none (the scene brings its own table).</summary>
+        static void InstallPortalDat()
+        {
+            RuntimeHelpers.RunClassConstructor(typeof(LandDefs).TypeHandle);
+            if (DatManager.PortalDat == null)
+            {
+                var db = (PortalDatDatabase)FormatterServices.GetUninitializedObject(typeof(PortalDatDatabase));
+                typeof(DatDatabase).GetField("<FileCache>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance)
+                    .SetValue(db, new ConcurrentDictionary<uint, FileType>());
+                typeof(DatManager).GetField("<PortalDat>k__BackingField", BindingFlags.NonPublic | BindingFlags.Static)
+                    .SetValue(null, db);
+            }
+            portalFiles = DatManager.PortalDat.FileCache;
         }
 
         // ------------------------------------------------------------------ global state
@@ -270,6 +311,10 @@ namespace Acconform.Oracle
             if (VertexCache.Vertices.Count > 0) VertexCache.Vertices.Clear();
             if (PolygonCache.Polygons.Count > 0) PolygonCache.Polygons.Clear();
             if (BSPCache.BSPTrees.Count > 0) BSPCache.BSPTrees.Clear();
+            if (!GfxObjCache.GfxObjs.IsEmpty) GfxObjCache.GfxObjs.Clear();  // keyed by DAT id: ids repeat across scenes
+            foreach (var id in sceneRecords) portalFiles.TryRemove(id, out _);
+            sceneRecords.Clear();
+            sceneLandblocks.Clear();
             if (!ServerObjectManager.ServerObjects.IsEmpty) ServerObjectManager.ServerObjects.Clear();
             var t = LandblockTable();
             if (!tableCleared)
@@ -390,6 +435,7 @@ namespace Acconform.Oracle
                 else landblocksReused++;
                 var id = lb.ID | 0xFFFF;
                 LScape.Landblocks[id] = lb;  // registered before PostInit, as LScape.get_landblock does
+                sceneLandblocks[id] = lb;
                 if (server) RegisterServerLandblock(id, lb);
             }
             foreach (var lb in built) lb.PostInit();
@@ -401,6 +447,9 @@ namespace Acconform.Oracle
             var nobj = r.ReadInt32();
             for (var i = 0; i < nobj; i++)
                 BuildStatic(r);
+            staticCells = new List<List<uint>>(nobj);
+            foreach (var obj in sceneStatics)
+                staticCells.Add(new List<uint>(obj.ShadowObjects.Keys));
 
             return BuildMover(r);
         }
@@ -436,99 +485,22 @@ namespace Acconform.Oracle
         }
 
         static int tableSerial;
-        static readonly MemoryStream setupStream = new MemoryStream(256);
-        static readonly BinaryWriter setupWriter = new BinaryWriter(setupStream);
-
-        static Setup MakeSetup(List<Vector4> spheres, List<Vector3> cylLow, List<Vector2> cylRH, float height, float radius,
-                               float stepUp, float stepDown, Vector4 sorting)
-        {
-            var ms = setupStream;
-            ms.SetLength(0);
-            var w = setupWriter;
-            w.Write(0x02000001u); w.Write(0u); w.Write(0u);       // Id, Flags, NumParts
-            w.Write(0); w.Write(0); w.Write(0);                    // HoldingLocations, ConnectionPoints, PlacementFrames
-            w.Write(cylLow.Count);
-            for (var i = 0; i < cylLow.Count; i++)
-            {
-                w.Write(cylLow[i].X); w.Write(cylLow[i].Y); w.Write(cylLow[i].Z);
-                w.Write(cylRH[i].X); w.Write(cylRH[i].Y);          // Radius, Height (DAT order)
-            }
-            w.Write(spheres.Count);
-            foreach (var s in spheres) { w.Write(s.X); w.Write(s.Y); w.Write(s.Z); w.Write(s.W); }
-            w.Write(height); w.Write(radius); w.Write(stepUp); w.Write(stepDown);
-            for (var k = 0; k < 2; k++) { w.Write(sorting.X); w.Write(sorting.Y); w.Write(sorting.Z); w.Write(sorting.W); }
-            w.Write(0);                                            // Lights
-            for (var k = 0; k < 5; k++) w.Write(0u);               // default anim/script/mtable/stable/phstable
-            w.Flush();
-            var len = (int)ms.Length;
-            var buf = ms.GetBuffer();
-            ulong key = 0;
-            if (CacheLandblocks)
-            {
-                key = Hash(buf, 0, len);
-                SetupEntry e;
-                if (setupCache.TryGetValue(key, out e) && BytesEqual(e.Bytes, buf, 0, len)) return e.Setup;
-            }
-            var bytes = Slice(buf, 0, len);
-            var model = new SetupModel();
-            model.Unpack(new BinaryReader(new MemoryStream(bytes)));
-            var setup = new Setup(model);
-            if (CacheLandblocks)
-            {
-                if (setupCache.Count >= CacheLimit) setupCache.Clear();
-                setupCache[key] = new SetupEntry { Bytes = bytes, Setup = setup };
-            }
-            return setup;
-        }
-
-        static PartArray MakePartArray(PhysicsObj owner, Setup setup)
-        {
-            var pa = new PartArray();
-            pa.Owner = owner;
-            pa.Setup = setup;
-            pa.NumParts = 0;
-            pa.Parts = new List<PhysicsPart>();
-            return pa;
-        }
-
-        static Polygon ReadPolygon(BinaryReader r, int idx)
-        {
-            var sides = (CullMode)r.ReadInt32();
-            var n = r.ReadInt32();
-            var poly = new Polygon(idx, n, sides);
-            for (var k = 0; k < n; k++)
-            {
-                poly.Vertices[k] = new Vertex(V3(r));
-                poly.VertexIDs[k] = (short)k;
-            }
-            poly.make_plane();
-            return poly;
-        }
-
-        static Sphere ReadSphere(BinaryReader r) { var c = V3(r); return new Sphere(c, r.ReadSingle()); }
-
-        static BSPNode ReadNode(BinaryReader r, List<Polygon> polys)
+        /// <summary>One DAT record (acconform/dat.py) unpacked by ACE's own Unpack into the portal FileCache.</summary>
+        static void ReadRecord(BinaryReader r)
         {
             var kind = r.ReadByte();
-            if (kind == 0)
-            {
-                var leaf = new BSPLeaf(BSPTreeType.Physics);
-                leaf.Solid = r.ReadByte() != 0;
-                leaf.Sphere = ReadSphere(r);
-                var n = r.ReadInt32();
-                leaf.NumPolys = n;
-                leaf.Polygons = new List<Polygon>(n);
-                for (var k = 0; k < n; k++) leaf.Polygons.Add(polys[r.ReadInt32()]);
-                return leaf;
-            }
-            var node = new BSPNode(BSPTreeType.Physics);
-            var normal = V3(r);
-            node.SplittingPlane = new Plane(normal, r.ReadSingle());
-            node.Sphere = ReadSphere(r);
-            node.Polygons = new List<Polygon>();
-            node.PosNode = ReadNode(r, polys);
-            node.NegNode = ReadNode(r, polys);
-            return node;
+            var id = r.ReadUInt32();
+            var len = r.ReadInt32();
+            var ms = (MemoryStream)r.BaseStream;
+            var off = (int)ms.Position;
+            ms.Position = off + len;
+            FileType file;
+            if (kind == 0) file = new DatGfxObj();
+            else if (kind == 1) file = new SetupModel();
+            else throw new InvalidDataException("acconform facade: unknown DAT record kind " + kind);
+            file.Unpack(new BinaryReader(new MemoryStream(ms.GetBuffer(), off, len, false)));
+            portalFiles[id] = file;
+            sceneRecords.Add(id);
         }
 
         static void BuildStatic(BinaryReader r)
@@ -537,77 +509,36 @@ namespace Acconform.Oracle
             var pos = Pos(r);
             var state = (PhysicsState)r.ReadUInt32();
             var scale = r.ReadSingle();
-            var kind = r.ReadByte();
+            var did = r.ReadUInt32();
+            var nrec = r.ReadInt32();
+            for (var k = 0; k < nrec; k++) ReadRecord(r);
 
-            var obj = new PhysicsObj();
-            obj.ID = id;
-            var spheres = new List<Vector4>();
-            var cylLow = new List<Vector3>();
-            var cylRH = new List<Vector2>();
-            GfxObj gfx = null;
-            Vector4 bound;
-            if (kind == 0)
-            {
-                var c = V3(r); var rad = r.ReadSingle();
-                spheres.Add(new Vector4(c, rad));
-                bound = new Vector4(c, rad);
-            }
-            else if (kind == 1)
-            {
-                var low = V3(r); var rad = r.ReadSingle(); var h = r.ReadSingle();
-                cylLow.Add(low); cylRH.Add(new Vector2(rad, h));
-                bound = new Vector4(low + new Vector3(0, 0, h / 2), rad + h / 2);
-            }
-            else
-            {
-                var npoly = r.ReadInt32();
-                var polys = new List<Polygon>(npoly);
-                for (var k = 0; k < npoly; k++) polys.Add(ReadPolygon(r, k));
-                var root = ReadNode(r, polys);
-                var sphere = ReadSphere(r);
-                gfx = new GfxObj();
-                gfx.PhysicsBSP = new BSPTree(root);
-                gfx.PhysicsSphere = sphere;
-                bound = new Vector4(sphere.Center, sphere.Radius);
-            }
-            var setup = MakeSetup(spheres, cylLow, cylRH, 0, 0, 0, 0, bound);
-            var pa = MakePartArray(obj, setup);
-            obj.PartArray = pa;
-            if (gfx != null)
-            {
-                var part = new PhysicsPart();
-                part.GfxObj = gfx;
-                part.GfxObjScale = Vector3.One;
-                part.PhysicsObj = obj;
-                part.Pos = new ACE.Server.Physics.Common.Position(pos);
-                pa.Parts.Add(part);
-                pa.NumParts = 1;
-            }
-            obj.State = state;
-            obj.Position = new ACE.Server.Physics.Common.Position(pos);
+            // WorldObject.InitPhysicsObj's steps: the object from its DAT id, then the scene's scale and state
+            var obj = PhysicsObj.makeObject(did, id, false);
             obj.SetScaleStatic(scale);
+            obj.State = state;
             sceneStatics.Add(obj);
 
-            // registered as a shadow object in each cell listed by the scene packer
-            var ncells = r.ReadInt32();
-            for (var k = 0; k < ncells; k++)
+            // Landblock.init_static_objs' steps, on the landblock of the scene's cell
+            obj.DatObject = true;
+            var lb = sceneLandblocks[pos.ObjCellID | 0xFFFF];
+            var position = new ACE.Server.Physics.Common.Position(lb.ID, pos.Frame);
+            LandDefs.AdjustToOutside(position);
+            var cell = lb.get_landcell(position.ObjCellID);
+            if (cell == null)
             {
-                var cell = LScape.get_landcell(r.ReadUInt32());
-                if (k == 0) obj.CurCell = cell;
-                obj.add_shadows_to_cell(cell);
+                obj.DestroyObject();
+                return;
             }
+            obj.add_obj_to_cell(cell, position.Frame);
         }
 
         static Tuple<PhysicsObj, ACE.Server.Physics.Common.Position, ACE.Server.Physics.Common.Position> BuildMover(BinaryReader r)
         {
-            var n = r.ReadInt32();
-            var spheres = new List<Vector4>(n);
-            for (var k = 0; k < n; k++) { var c = V3(r); spheres.Add(new Vector4(c, r.ReadSingle())); }
+            var nrec = r.ReadInt32();
+            for (var k = 0; k < nrec; k++) ReadRecord(r);
+            var did = r.ReadUInt32();
             var moverId = r.ReadUInt32();  // acconform.staging.MOVER_ID
-            var height = r.ReadSingle();
-            var radius = r.ReadSingle();
-            var stepUp = r.ReadSingle();
-            var stepDown = r.ReadSingle();
             var scale = r.ReadSingle();
             var state = (PhysicsState)r.ReadUInt32();
             var ts = (TransientStateFlags)r.ReadUInt32();
@@ -621,10 +552,8 @@ namespace Acconform.Oracle
             var begin = Pos(r);
             var end = Pos(r);
 
-            var obj = new PhysicsObj();
-            obj.ID = moverId;
-            var setup = MakeSetup(spheres, new List<Vector3>(), new List<Vector2>(), height, radius, stepUp, stepDown, spheres[0]);
-            obj.PartArray = MakePartArray(obj, setup);
+            // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a dynamic object
+            var obj = PhysicsObj.makeObject(did, moverId, true);
             obj.SetScaleStatic(scale);
             obj.State = state;
             obj.TransientState = ts;

@@ -1,8 +1,11 @@
 """BSPTREE/BSPNODE/BSPLEAF: BSPTree (adjust_to_plane, check_walkable, collide_with_pt, find_collisions, NegPolyHit, placement_insert, placement_insert_inner, point_inside_cell_bsp, slide_sphere, sphere_intersects_cell_bsp, step_sphere_down, step_sphere_up), BSPNode and BSPLeaf (find_walkable, hits_walkable, point_inside_cell_bsp, point_intersects_solid, sphere_intersects_cell_bsp, sphere_intersects_poly, sphere_intersects_solid, sphere_intersects_solid_poly).
 
-Ports ACE BSP/BSPTree.cs, BSPNode.cs and BSPLeaf.cs. The tree is built from a scene `BSPShape`:
-its polygons are made once (`Polygon.from_rec`) and shared by every leaf that lists them, as
-ACE's PolygonCache shares them; a scene node's ``front``/``back`` are ACE's PosNode/NegNode.
+Ports ACE BSP/BSPTree.cs, BSPNode.cs and BSPLeaf.cs. The tree is built by ACE's DAT constructors
+(`from_dat`) from the GfxObj record DatLoader read (port/dat/): every node that names a polygon
+gets its own Polygon (ACE's PolygonCache is off), and the root is always a BSPNode, so a DAT
+leaf at the root becomes a childless node. Where ACE then calls a method on a missing child
+(e.g. find_walkable on such a root), Python meets None as .NET meets null: run_scene reports it
+as NullReferenceException (port/errors.py).
 
 ACE's ``ref`` parameters are returned, in order after the result:
 ``find_walkable -> (polygon, changed)``, ``sphere_intersects_poly -> (hit, polygon, contact_point)``,
@@ -17,6 +20,8 @@ from acconform.flags import ObjectInfoState, TransitionState
 from acconform.numerics import D, Mode, Plane, Vector3, cast_float, dot
 
 from ..anchors import anchor
+from ..dat import bsp_leaf as dat_bsp_leaf
+from ..errors import KeyNotFoundException
 from ..constants import CELL_BSP_SLACK, EPSILON, LANDING_Z
 from ..vec import Side, get_side, plane_local_to_global, zero_like
 from .polygon import Polygon
@@ -48,32 +53,48 @@ class BSPNode:
 
     __slots__ = ("sphere", "splitting_plane", "type", "num_polys", "polygons", "pos_node", "neg_node")
 
-    def __init__(self, sphere: Sphere | None, splitting_plane: Plane | None, polygons: list[Polygon],
-                 pos_node: "BSPNode | None" = None, neg_node: "BSPNode | None" = None,
-                 type: BSPTreeType = BSPTreeType.Physics):
-        self.sphere = sphere
-        self.splitting_plane = splitting_plane
-        self.type = type
-        self.num_polys = len(polygons)
-        self.polygons = polygons
-        self.pos_node = pos_node
-        self.neg_node = neg_node
+    @classmethod
+    @anchor("BSPNODE::UnPackChild", "BSPNode.cs:BSPNode(DatLoader.Entity.BSPNode, Dictionary<ushort, Polygon>, CVertexArray)",
+            "the DAT constructor")
+    def from_dat(cls, node, polys: dict, vertex_array, mode: Mode) -> "BSPNode":
+        """``new BSPNode(node, polys, vertexArray)``: a node of any DAT kind (a DAT leaf too, when it
+        is the tree's root) becomes a BSPNode. `mode` types the default splitting plane."""
+        n = cls.__new__(cls)
+        n._init_from_dat(node, polys, vertex_array, mode)
+        return n
 
-    @staticmethod
-    @anchor("BSPNODE::UnPackChild", "BSPNode.cs:BSPNode", "the DAT constructor, from a scene BSPNode/BSPLeaf")
-    def from_rec(rec, polygons: list[Polygon], mode: Mode, leaf_counter: list[int] | None = None) -> "BSPNode":
-        """Builds the subtree for a scene record; `polygons` are the shape's (shared) Polygons."""
-        if leaf_counter is None:
-            leaf_counter = [0]
-        sphere = Sphere.from_rec(rec.sphere, mode)
-        if hasattr(rec, "solid"):  # acconform.scene.BSPLeaf
-            leaf = BSPLeaf(sphere, [polygons[i] for i in rec.polygons], bool(rec.solid), leaf_counter[0])
-            leaf_counter[0] += 1
-            return leaf
-        plane = Plane(mode.vec(*rec.plane.normal), mode.scalar(rec.plane.d))
-        pos = BSPNode.from_rec(rec.front, polygons, mode, leaf_counter)
-        neg = BSPNode.from_rec(rec.back, polygons, mode, leaf_counter)
-        return BSPNode(sphere, plane, [], pos, neg)
+    def _init_from_dat(self, node, polys: dict, vertex_array, mode: Mode) -> None:
+        """BSPNode(DatLoader.Entity.BSPNode, ...)'s body (BSPLeaf's DAT constructor runs it as base)."""
+        self.sphere = None
+        if node.sphere is not None:
+            self.sphere = Sphere.from_dat(node.sphere)
+        # SplittingPlane is a struct: a DAT leaf has none, so it stays default(Plane) (0, 0, 0), 0
+        self.splitting_plane = Plane(mode.vec(0, 0, 0), mode.scalar(0.0))
+        if node.splitting_plane is not None:
+            self.splitting_plane = node.splitting_plane.to_numerics()
+        self.type = BSPTreeType.Drawing  # Type is never set: default(BSPTreeType)
+        self.num_polys = 0
+        self.polygons = None
+        if node.in_polys is not None:
+            self.num_polys = len(node.in_polys)
+            self.polygons = []
+            for poly in node.in_polys:
+                dat_poly = polys.get(poly)
+                if dat_poly is None:
+                    raise KeyNotFoundException(f"The given key '{poly}' was not present in the dictionary.")
+                self.polygons.append(Polygon.from_dat(dat_poly, vertex_array))  # PolygonCache is off
+        self.pos_node = None
+        if node.pos_node is not None:
+            if not isinstance(node.pos_node, dat_bsp_leaf.BSPLeaf):
+                self.pos_node = BSPNode.from_dat(node.pos_node, polys, vertex_array, mode)
+            else:
+                self.pos_node = BSPLeaf.from_dat(node.pos_node, polys, vertex_array, mode)
+        self.neg_node = None
+        if node.neg_node is not None:
+            if not isinstance(node.neg_node, dat_bsp_leaf.BSPLeaf):
+                self.neg_node = BSPNode.from_dat(node.neg_node, polys, vertex_array, mode)
+            else:
+                self.neg_node = BSPLeaf.from_dat(node.neg_node, polys, vertex_array, mode)
 
     def __repr__(self) -> str:
         return f"BSPNode(plane={self.splitting_plane!r}, sphere={self.sphere!r})"
@@ -228,10 +249,14 @@ class BSPLeaf(BSPNode):
 
     __slots__ = ("leaf_idx", "solid")
 
-    def __init__(self, sphere: Sphere, polygons: list[Polygon], solid: bool, leaf_idx: int = -1):
-        super().__init__(sphere, None, polygons)
-        self.leaf_idx = leaf_idx
-        self.solid = solid
+    @classmethod
+    @anchor(None, "BSPLeaf.cs:BSPLeaf(DatLoader.Entity.BSPLeaf, Dictionary<ushort, Polygon>, CVertexArray)", "the DAT constructor")
+    def from_dat(cls, node, polys: dict, vertex_array, mode: Mode) -> "BSPLeaf":
+        leaf = cls.__new__(cls)
+        leaf._init_from_dat(node, polys, vertex_array, mode)  # : base(node, polys, vertexArray)
+        leaf.leaf_idx = node.leaf_index
+        leaf.solid = node.solid == 1
+        return leaf
 
     def __repr__(self) -> str:
         return f"BSPLeaf({self.leaf_idx}, polys={self.num_polys}, solid={self.solid})"
@@ -309,19 +334,20 @@ class BSPLeaf(BSPNode):
 
 
 class BSPTree:
-    """BSPTree.cs: root_node, plus the polygons it was built from (for inspection)."""
+    """BSPTree.cs: root_node."""
 
-    __slots__ = ("root_node", "polygons")
+    __slots__ = ("root_node",)
 
-    def __init__(self, root_node: BSPNode, polygons: list[Polygon] | None = None):
+    def __init__(self, root_node: BSPNode):
         self.root_node = root_node
-        self.polygons = polygons if polygons is not None else []
 
     @classmethod
-    @anchor("BSPTREE::UnPack", "BSPTree.cs:BSPTree", "the DAT constructor, from a scene BSPShape")
-    def from_shape(cls, shape, mode: Mode) -> "BSPTree":
-        polygons = [Polygon.from_rec(p, mode) for p in shape.polygons]
-        return cls(BSPNode.from_rec(shape.root, polygons, mode), polygons)
+    @anchor("BSPTREE::UnPack", "BSPTree.cs:BSPTree(DatLoader.Entity.BSPTree, Dictionary<ushort, Polygon>, CVertexArray)",
+            "the DAT constructor")
+    def from_dat(cls, bsp, polys: dict, vertex_array, mode: Mode) -> "BSPTree":
+        """``RootNode = new BSPNode(bsp.RootNode, polys, vertexArray)``: the root is a BSPNode even
+        when the DAT root is a leaf (then no query descends from it: a childless node)."""
+        return cls(BSPNode.from_dat(bsp.root_node, polys, vertex_array, mode))
 
     @anchor(None, "BSPTree.cs:GetSphere")
     def get_sphere(self) -> Sphere:

@@ -37,10 +37,10 @@ class CylSphere:
             self.radius = radius * scale
 
     @classmethod
-    @anchor(None, "CylSphere.cs:CylSphere(DatLoader.Entity.CylSphere)", "the DAT constructor, from a scene cylsphere record")
-    def from_rec(cls, rec, mode: Mode) -> "CylSphere":
-        """From a scene CylSphereShape (as ACE's DAT constructor: Origin, Height, Radius)."""
-        return cls(mode.vec(*rec.low_point), mode.scalar(rec.height), mode.scalar(rec.radius))
+    @anchor(None, "CylSphere.cs:CylSphere(DatLoader.Entity.CylSphere)", "the DAT constructor")
+    def from_dat(cls, cyl_sphere) -> "CylSphere":
+        """``new CylSphere(DatLoader.Entity.CylSphere)``: LowPoint = Origin, Height, Radius."""
+        return cls(cyl_sphere.origin, cyl_sphere.height, cyl_sphere.radius)
 
     def __eq__(self, o) -> bool:
         return isinstance(o, CylSphere) and self.height == o.height and self.radius == o.radius and self.low_point == o.low_point

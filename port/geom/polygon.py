@@ -16,7 +16,8 @@ from enum import IntEnum
 from acconform.flags import CullMode
 from acconform.numerics import D, Mode, Plane, Vector3, cross, dot, normalize
 
-from ..anchors import anchor
+from ..anchors import anchor, harness
+from ..errors import KeyNotFoundException
 from ..constants import ADJUST_TO_PLANE_INTERP_LIMIT, EPSILON
 from ..vec import Ray, compute_time_of_intersection, zero_like
 
@@ -39,6 +40,12 @@ class Vertex:
         self.index = index
         self.origin = origin
         self.normal = normal
+
+    @staticmethod
+    @anchor(None, "Vertex.cs:Vertex(DatLoader.Entity.SWVertex)", "the DAT constructor")
+    def from_dat(v) -> "Vertex":
+        """``new Vertex(SWVertex)``: Origin and Normal; Index keeps its default 0."""
+        return Vertex(v.origin, 0, v.normal)
 
     def __add__(self, o: "Vertex") -> Vector3:
         return self.origin + o.origin
@@ -79,10 +86,32 @@ class Polygon:
         self.plane: Plane | None = None
 
     @classmethod
-    @anchor("CPolygon::UnPack", "Polygon.cs:Polygon", "the DAT constructor: vertices given, then make_plane")
+    @anchor("CPolygon::UnPack", "Polygon.cs:Polygon(DatLoader.Entity.Polygon, CVertexArray)", "the DAT constructor")
+    def from_dat(cls, polygon, vertex_array) -> "Polygon":
+        """``new Polygon(DatLoader.Entity.Polygon, CVertexArray)``: no Init (PolyID stays 0), the
+        DAT vertices by id (VertexCache is off: a new Vertex each), then make_plane."""
+        p = cls.__new__(cls)
+        p.poly_id = 0
+        p.neg_surface = polygon.neg_surface
+        p.num_points = polygon.num_pts
+        p.pos_surface = polygon.pos_surface
+        p.sides_type = polygon.sides_type
+        p.vertex_ids = polygon.vertex_ids
+        p.vertices = []
+        vertices = vertex_array.vertices
+        for vertex_idx in p.vertex_ids:
+            sw_vertex = vertices.get(vertex_idx & 0xFFFF)  # (ushort)vertexIdx
+            if sw_vertex is None:
+                raise KeyNotFoundException(f"The given key '{vertex_idx & 0xFFFF}' was not present in the dictionary.")
+            p.vertices.append(Vertex.from_dat(sw_vertex))
+        p.plane = None
+        p.make_plane()
+        return p
+
+    @classmethod
+    @harness("a polygon from a scene PolygonRec (tests and benchmarks build polygons this way)")
     def from_rec(cls, rec, mode: Mode) -> "Polygon":
-        """A GfxObj polygon from a scene PolygonRec. As ACE's DAT constructor, it does not call
-        Init (PolyID and the surfaces stay 0); vertex_ids are the positions in the record."""
+        """As the DAT constructor would build it from the record's vertices (ids 0..n-1)."""
         p = cls.__new__(cls)
         p.poly_id = 0
         p.pos_surface = 0

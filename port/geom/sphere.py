@@ -19,7 +19,7 @@ SphereIntersectsRay's time is double.
 from __future__ import annotations
 
 from acconform.flags import ObjectInfoState, TransitionState
-from acconform.numerics import D, Mode, Plane, Vector3, cast_float, cross, dot
+from acconform.numerics import D, Plane, Vector3, cast_float, cross, dot
 
 from ..anchors import anchor
 from ..constants import EPSILON, LANDING_Z, STEP_INTERP_LIMIT
@@ -45,10 +45,10 @@ class Sphere:
         return Sphere(self.center, self.radius)
 
     @classmethod
-    @anchor(None, "Sphere.cs:Sphere(DatLoader.Entity.Sphere)", "the DAT constructor, from a scene sphere record")
-    def from_rec(cls, rec, mode: Mode) -> "Sphere":
-        """A sphere from a scene SphereRec, as ACE's DAT constructor (Origin, Radius)."""
-        return cls(mode.vec(*rec.center), mode.scalar(rec.radius))
+    @anchor(None, "Sphere.cs:Sphere(DatLoader.Entity.Sphere)", "the DAT constructor")
+    def from_dat(cls, sphere) -> "Sphere":
+        """``new Sphere(DatLoader.Entity.Sphere)``: Center = Origin, Radius."""
+        return cls(sphere.origin, sphere.radius)
 
     def __eq__(self, o) -> bool:
         return isinstance(o, Sphere) and self.center == o.center and self.radius == o.radius
@@ -121,11 +121,11 @@ class Sphere:
 
         if dot(collision_normal, contact_plane.normal) >= 0.0:
             diff = dot(collision_normal, g_delta)
-            offset = -collision_normal * diff
+            offset = path.mode.runtime.negate(collision_normal) * diff
             path.add_offset_to_check_pos(offset, self.radius)
             return TransitionState.Slid, collision_normal
 
-        collision_normal = -g_delta
+        collision_normal = path.mode.runtime.negate(g_delta)
         small, collision_normal = normalize_check_small(collision_normal)
         if not small:
             collisions.set_collision_normal(collision_normal)

@@ -1,11 +1,11 @@
-"""LandCell: find_terrain_poly, point_in_cell, FindCollisions, FindEnvCollisions, find_transit_cells, handle_move_restriction, add_all_outside_cells, add_outside_cell, check_add_cell_boundary, add_cell_block.
+"""LandCell: find_terrain_poly, point_in_cell, FindCollisions, FindEnvCollisions, find_transit_cells (the sphere and parts overloads), handle_move_restriction, add_all_outside_cells (the sphere and parts overloads), add_outside_cell, check_add_cell_boundary, add_cell_block.
 
 ACE's Common/LandCell.cs. ACE's LandCell derives from SortCell -> ObjCell -> PartCell; here it
 derives from ObjCell (obj_cell.py, which holds SortCell's two overrides too) and carries the
 fields of those classes that LandCell uses. FindEnvCollisions tests sphere 0 only (its low point
 picks the triangle) against the terrain. The static helpers take the run's LScape as their first
 argument where ACE reaches the static LScape. add_all_outside_cells(numParts, parts, ...) (the
-static-object overload, which needs BBox and PhysicsPart) is not ported.
+static-object overload, a static's placement) reads the parts' bounding boxes (port/bbox.py).
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ from __future__ import annotations
 from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
 from acconform.port.anchors import anchor, harness
+from acconform.port.bbox import BBox
 from acconform.port.constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom.polygon import Polygon, Sidedness
@@ -135,6 +136,13 @@ class LandCell(ObjCell):
         self.sort_cell_find_transit_cells(lscape, position, num_sphere, spheres, cell_array, path)
 
 
+    @anchor("CLandCell::find_transit_cells", "LandCell.cs:find_transit_cells(int, List<PhysicsPart>, CellArray)",
+            "the parts overload (a static's placement)")
+    def find_transit_cells_parts(self, lscape, num_parts: int, parts, cell_array) -> None:
+        """The run's world `lscape` comes first, standing in for ACE's static LScape."""
+        add_all_outside_cells_parts(lscape, num_parts, parts, cell_array, self.id)
+        self.sort_cell_find_transit_cells_parts(lscape, num_parts, parts, cell_array)
+
     @anchor("CLandCell::handle_move_restriction", "LandCell.cs:handle_move_restriction")
     def handle_move_restriction(self, transition) -> bool:
         offset = self.pos.get_offset(transition.sphere_path.cur_pos)
@@ -254,6 +262,75 @@ def add_all_outside_cells(lscape, position: Position, num_sphere: int, spheres, 
         lcoord = land_defs.gid_to_lcoord(position.obj_cell_id)
         if lcoord is not None:
             add_outside_cell_lcoord(lscape, cell_array, lcoord)
+
+
+@anchor("CLandCell::add_all_outside_cells", "LandCell.cs:add_all_outside_cells(int, List<PhysicsPart>, CellArray, uint)",
+        "the parts overload (a static's placement)")
+def add_all_outside_cells_parts(lscape, num_parts: int, parts, cell_array, id: int) -> None:
+    """The cells of `id`'s landblock that the parts' bounding boxes reach (add_cell_block).
+
+    Each part's box (GfxObj.Init, over its vertices; Scale is not applied) is carried into the
+    placing part's cell landblock by BBox.LocalToGlobal, and the block of cells from the lowest
+    to the highest box corner (relative to the part's own cell, always including it) is added.
+    Sets AddedOutside, so only the first cell of find_bbox_cell_list's walk adds anything.
+    """
+    if cell_array.added_outside:
+        return
+
+    cell_array.added_outside = True
+
+    if num_parts == 0:
+        return
+
+    runtime = lscape.mode.runtime
+    min_x = 0
+    min_y = 0
+    max_x = 0
+    max_y = 0
+
+    for i in range(num_parts):
+        cur_part = parts[i]
+
+        loc = cur_part.pos.copy()  # new Position(curPart.Pos)
+
+        if not land_defs.adjust_to_outside_pos(loc):
+            continue
+
+        _lcoord = land_defs.gid_to_lcoord(loc.obj_cell_id)
+
+        if _lcoord is None:
+            continue
+
+        lcoord = _lcoord
+
+        lx = ((loc.obj_cell_id & 0xFFFF) - 1) // 8  # uint arithmetic: low word >= 1 here
+        ly = ((loc.obj_cell_id & 0xFFFF) - 1) % 8
+
+        for j in range(num_parts):
+            other_part = parts[j]
+
+            if other_part is None:
+                continue
+
+            # add if missing: otherPart.Always2D, checks degrades.degradeMode != 1 (ACE)
+
+            bbox = BBox()
+            bbox.local_to_global(other_part.get_bounding_box(), other_part.pos, loc)
+
+            min_cx = runtime.to_int32(cs_floor(bbox.min.x / 24.0))
+            min_cy = runtime.to_int32(cs_floor(bbox.min.y / 24.0))
+
+            max_cx = runtime.to_int32(cs_floor(bbox.max.x / 24.0))
+            max_cy = runtime.to_int32(cs_floor(bbox.max.y / 24.0))
+
+            min_x = min(min_cx - lx, min_x)
+            min_y = min(min_cy - ly, min_y)
+
+            max_x = max(max_cx - lx, max_x)
+            max_y = max(max_cy - ly, max_y)
+
+        add_cell_block(lscape, min_x + int(lcoord[0]), min_y + int(lcoord[1]), max_x + int(lcoord[0]),
+                       max_y + int(lcoord[1]), cell_array, id)
 
 
 @anchor("CLandCell::add_cell_block", "LandCell.cs:add_cell_block")

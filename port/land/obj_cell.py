@@ -1,4 +1,4 @@
-"""ObjCell and SortCell: AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells, point_in_cell, Equals, find_cell_list (the sphere overloads), GetVisible.
+"""ObjCell and SortCell: AddObject, AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells (the sphere and parts overloads), point_in_cell, Equals, find_cell_list (the sphere and cylsphere overloads), GetVisible.
 
 ACE's Common/ObjCell.cs and Common/SortCell.cs: the base behaviour every cell has. LandCell
 (land_cell.py) derives from ObjCell, carries the fields and overrides what ACE's LandCell
@@ -40,6 +40,16 @@ class ObjCell:
         self.shadow_object_list.append(shadow_obj)
         shadow_obj.cell = self
 
+    @anchor("CObjCell::add_object", "ObjCell.cs:AddObject")
+    def add_object(self, obj) -> None:
+        """Appends to ObjectList (NumObjects, which nothing here reads, is not kept). An object
+        with an id would then be announced to the cell's voyeurs; none are ever registered here."""
+        self.object_list.append(obj)
+        if obj.id == 0 or obj.parent is not None or obj.state & PhysicsState.Hidden or self.voyeur_table is None:
+            return
+        if self.voyeur_table:
+            raise NotImplementedError("voyeurs (ObjCell.VoyeurTable) are not ported")
+
     @anchor("CObjCell::find_collisions", "ObjCell.cs:FindCollisions")
     def find_collisions(self, transition) -> TransitionState:
         return TransitionState.Invalid
@@ -56,6 +66,12 @@ class ObjCell:
 
     @anchor("CSortCell::find_transit_cells", "SortCell.cs:find_transit_cells")
     def sort_cell_find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
+        if self.building is not None:
+            raise NotImplementedError("buildings (BuildingObj.find_building_transit_cells) are not ported")
+
+    @anchor("CSortCell::find_transit_cells", "SortCell.cs:find_transit_cells(int, List<PhysicsPart>, CellArray)",
+            "the parts overload")
+    def sort_cell_find_transit_cells_parts(self, lscape, num_parts, parts, cell_array) -> None:
         if self.building is not None:
             raise NotImplementedError("buildings (BuildingObj.find_building_transit_cells) are not ported")
 
@@ -103,6 +119,11 @@ class ObjCell:
 
     @anchor("CObjCell::find_transit_cells", "ObjCell.cs:find_transit_cells")
     def find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
+        pass
+
+    @anchor("CObjCell::find_transit_cells", "ObjCell.cs:find_transit_cells(int, List<PhysicsPart>, CellArray)",
+            "the parts overload: empty base")
+    def find_transit_cells_parts(self, lscape, num_parts, parts, cell_array) -> None:
         pass
 
     @anchor("CObjCell::point_in_cell", "ObjCell.cs:point_in_cell")
@@ -160,6 +181,27 @@ def find_cell_list(lscape, position, num_sphere: int, spheres: list, cell_array,
                         return curr_cell
     # (the !LoadCells indoor pruning does not apply outdoors)
     return curr_cell
+
+
+@anchor("CObjCell::find_cell_list", "ObjCell.cs:find_cell_list(Position, int, List<CylSphere>, CellArray, SpherePath)",
+        "the cylsphere overload (a cylsphere static's placement)")
+def find_cell_list_cyl(lscape, position, num_cyl_sphere: int, cyl_sphere: list, cell_array, path) -> None:
+    """A sphere per cylsphere (at most 10): centre its low point in `position`'s frame (no scale),
+    radius its radius; then the sphere overload with no current cell asked for."""
+    from ..geom.sphere import Sphere
+
+    if num_cyl_sphere > 10:
+        num_cyl_sphere = 10
+
+    spheres = []
+
+    for i in range(num_cyl_sphere):
+        sphere = Sphere()
+        sphere.center = position.local_to_global(cyl_sphere[i].low_point)
+        sphere.radius = cyl_sphere[i].radius
+        spheres.append(sphere)
+
+    find_cell_list(lscape, position, num_cyl_sphere, spheres, cell_array, None, path)
 
 
 @anchor("CObjCell::find_cell_list", "ObjCell.cs:find_cell_list(CellArray, ref ObjCell, SpherePath)")

@@ -254,7 +254,7 @@ class SpherePath:
     def set_neg_poly_hit(self, step_up: bool, collision_normal: Vector3) -> None:
         self.neg_step_up = step_up
         self.neg_poly_hit = True
-        self.neg_collision_normal = -collision_normal
+        self.neg_collision_normal = self.mode.runtime.negate(collision_normal)
 
     @anchor("SPHEREPATH::set_walkable", "SpherePath.cs:SetWalkable")
     def set_walkable(self, sphere, poly, z_axis: Vector3, local_pos: Position, scale) -> None:

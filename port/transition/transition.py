@@ -257,7 +257,7 @@ class Transition:
         else:
             self._hit("cliff_slide:normal_flipped")
             sp.add_offset_to_check_pos(collide_normal * -angle)
-            ci.set_collision_normal(-collide_normal)
+            ci.set_collision_normal(self.mode.runtime.negate(collide_normal))
         return TransitionState.Adjusted
 
     @anchor("CTransition::edge_slide", "Transition.cs:EdgeSlide")

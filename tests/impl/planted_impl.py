@@ -44,7 +44,7 @@ def main() -> int:
 
         run = load_mutant([m.name for m in MUTATIONS].index(args.mutation))
 
-    def answer(scene, mode):
+    def answer(scene, mode, runtime):
         kind = scene_kind(scene)
         if kind == args.crash_on:
             os._exit(3)
@@ -52,7 +52,7 @@ def main() -> int:
             time.sleep(3600)
         if kind == args.garble_on:
             sys.stdout.buffer.write(b"this is not JSON\n")
-        return run(scene, mode=mode)
+        return run(scene, mode=mode, runtime=runtime)
 
     hello = handshake("planted", f"0.0+{args.mutation}")
     hello["kinds"] = args.kinds.split(",")

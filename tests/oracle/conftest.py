@@ -18,13 +18,6 @@ def live():
         pytest.fail(f"ACE is configured but the live oracle cannot load: {e}")
 
 
-@pytest.fixture(scope="session")
-def live_direct(live):
-    from acconform.oracle.live import LiveOracle
-
-    return LiveOracle(path="direct")
-
-
 @pytest.fixture
 def isolated_config(no_ace, tmp_path):
     """No ACE setting from the environment or the user's config file (tests/conftest.py no_ace)."""

@@ -78,7 +78,10 @@ def test_a_file_that_is_not_dotnet_is_refused(isolated_config, tmp_path):
         config.resolve(native)
 
 
-def test_runtime_is_chosen_from_the_build_or_forced(isolated_config, tmp_path):
+def test_runtime_is_chosen_from_the_build_or_forced(isolated_config, tmp_path, monkeypatch):
+    from .test_dotnet_host import _fake_root
+
+    monkeypatch.setenv("DOTNET_ROOT", str(_fake_root(tmp_path / "dotnet")))
     dll = _fake_dll(tmp_path / "ACE.Server.dll")
     assert config.resolve(dll).runtime == "mono"
     (tmp_path / "ACE.Server.runtimeconfig.json").write_text('{"runtimeOptions": {"framework": {"name": "Microsoft.NETCore.App", "version": "10.0.0"}}}')

@@ -9,13 +9,19 @@ from acconform.oracle.pack import _OUT, _frozen_maker, pack_scene, unpack_outcom
 from .scenes import PROBE
 
 
-def _packed(cp_normal=(0.0, 0.0, 1.0), sliding=(0.0, 0.0, 0.0), neg=0):
+def _cells(cells):
+    if cells is None:
+        return struct.pack("<i", -1)
+    return struct.pack("<i", len(cells)) + b"".join(struct.pack(f"<i{len(c)}I", len(c), *c) for c in cells)
+
+
+def _packed(cp_normal=(0.0, 0.0, 1.0), sliding=(0.0, 0.0, 0.0), neg=0, cells=()):
     vals = (1, 1, 0xA9B40001, 12.5, 12.0, 20.0, 1.0, 0.0, 0.0, 0.0, 0x103,
             1, 0xA9B40001, 0, *cp_normal, -20.0,
             1, 0xA9B40001, 0, 0.0, 0.0, 1.0, -20.0,
             0, 0.0, 0.0, 0.0, 1, *sliding,
             1, 0, 0.0, 0.0, 0.0, 0xA9B40001, 1, 0, neg, 1.5, 12.0, 2, 1, 30.0, 4.5)
-    return _OUT.pack(*vals)
+    return _OUT.pack(*vals) + _cells(cells)
 
 
 def test_the_fast_record_maker_gives_records_equal_to_the_dataclass_constructor():
@@ -31,8 +37,14 @@ def test_unpacking_reads_every_field_and_the_facade_counters():
                         contact_plane=ContactPlaneState(True, 0xA9B40001, False, (0.0, 0.0, 1.0), -20.0),
                         last_known_contact_plane=ContactPlaneState(True, 0xA9B40001, False, (0.0, 0.0, 1.0), -20.0),
                         collision_normal=NormalState(), sliding_normal=NormalState(True, (0.0, 0.0, 0.0)),
-                        collided_with_environment=True, check_cell=0xA9B40001, walkable=True)
+                        collided_with_environment=True, check_cell=0xA9B40001, walkable=True, static_cells=())
     assert (fvp, case, counts) == (1.5, 12.0, (2, 1, 30.0, 4.5))
+
+
+def test_unpacking_reads_each_statics_cells_in_order():
+    cells = ((0xA9B40009, 0xA9B40001, 0xA9B40011), (), (0xA9B3003F,))
+    assert unpack_outcome(_packed(cells=cells))[0].static_cells == cells
+    assert unpack_outcome(_packed(cells=None))[0].static_cells is None
 
 
 def test_shared_records_are_keyed_by_bits_so_negative_zero_stays_negative():
@@ -47,7 +59,7 @@ def test_shared_records_are_keyed_by_bits_so_negative_zero_stays_negative():
 
 def test_an_error_outcome_carries_the_message_and_the_counters():
     msg = "NullReferenceException: boom".encode()
-    data = b"\xee" + struct.pack("<i", len(msg)) + msg + struct.pack("<ddiidd", 0.0, 9.0, 1, 0, 5.0, 2.5)
+    data = b"\xee" + struct.pack("<i", len(msg)) + msg + struct.pack("<ddiidd", 0.0, 9.0, 1, 0, 5.0, 2.5) + _cells(None)
     o, fvp, case, counts = unpack_outcome(data)
     assert o == Outcome(error="NullReferenceException: boom") and (case, counts) == (9.0, (1, 0, 5.0, 2.5))
 

@@ -13,7 +13,9 @@ import pytest
 
 from acconform.port.anchors import HARNESS, REGISTRY, load_all
 
-ACE_PHYSICS = Path(os.environ.get("ACE_SOURCE", "/work/ace")) / "Source/ACE.Server/Physics"
+ACE_SOURCE = Path(os.environ.get("ACE_SOURCE", "/work/ace")) / "Source"
+ACE_PHYSICS = ACE_SOURCE / "ACE.Server/Physics"
+DATLOADER = "ACE.DatLoader/"  # DatLoader anchors name their file by its path under Source/
 # the registry itself is not port code
 NOT_PORT = {"acconform.port.anchors"}
 
@@ -83,8 +85,9 @@ def test_harness_glue_says_what_it_does():
 
 
 @pytest.mark.skipif(not ACE_PHYSICS.is_dir(), reason=f"ACE's source tree is not at {ACE_PHYSICS} (set ACE_SOURCE)")
-def test_every_ace_anchor_names_a_file_in_aces_physics_tree():
+def test_every_ace_anchor_names_a_file_in_aces_physics_tree_or_datloader():
     files = {p.name for p in ACE_PHYSICS.rglob("*.cs")}
+    files |= {DATLOADER + str(p.relative_to(ACE_SOURCE / DATLOADER)) for p in (ACE_SOURCE / DATLOADER).rglob("*.cs")}
     load_all()
     unknown = sorted(f"{key}: {a.ace}" for key, a in REGISTRY.items() if a.ace.split(":", 1)[0] not in files)
     assert unknown == []

@@ -1,8 +1,10 @@
 """AFrame and Position (port/frame.py): hand-checked frames, and the System.Numerics calls they
-make checked bit for bit against mono (live) and against mono's recorded answers
-(tests/data/numerics_mono.json, replayed without mono).
+make checked bit for bit, under each runtime's arithmetic, against mono and .NET 10 live and
+against their recorded answers (tests/data/numerics_mono.json, numerics_net10.json, replayed
+without either runtime).
 
-Re-record after changing the inputs: ``python tests/port/test_frame.py --record`` (needs pythonnet + mono).
+Re-record after changing the inputs: ``python tests/port/test_frame.py --record --runtime mono``
+and ``--runtime coreclr`` (needs pythonnet with that runtime).
 """
 
 from __future__ import annotations
@@ -14,15 +16,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from acconform.numerics import EXACT, FAST
-from acconform.numerics import quat_create_from_yaw_pitch_roll
+from acconform.numerics import EXACT, FAST, Matrix4x4
 from acconform.port.frame import AFrame, Position
 from acconform.port.land.land_defs import InvalidOperation
 
 import numerics_replay
-from numerics_replay import assert_matches_live_mono, assert_matches_recorded_mono, bits, load_recorded
+from numerics_replay import assert_matches_answers, assert_matches_live_mono, assert_matches_recorded, bits, load_recorded
 
-DATA = Path(__file__).resolve().parent.parent / "data" / "numerics_mono.json"
 F = np.float32
 
 
@@ -154,51 +154,65 @@ def test_frame_math_keeps_the_run_mode_scalar_type():
 
 
 # ---------------------------------------------------------------- System.Numerics, bit for bit
-# Each op: (number of float32 inputs, port function from input floats to output floats).
+# Each op: (number of float32 inputs, port function from (mode, input floats) to output floats).
+# The mode carries the runtime: the same port code computes mono's or .NET 10's arithmetic.
 
 
-def _frame(qx, qy, qz, qw):
-    return AFrame(v(0, 0, 0), q(qx, qy, qz, qw))
+def _frame(m, qx, qy, qz, qw):
+    return AFrame(m.vec(0, 0, 0), m.quat(qx, qy, qz, qw))
 
 
-def _port_quat_lerp(a):
-    f = AFrame.identity(EXACT)
-    f.interpolate_rotation(_frame(*a[0:4]), _frame(*a[4:8]), F(a[8]))
+def _port_quat_lerp(m, a):
+    f = AFrame.identity(m)
+    f.interpolate_rotation(_frame(m, *a[0:4]), _frame(m, *a[4:8]), F(a[8]))
     o = f.orientation
     return [o.x, o.y, o.z, o.w]
 
 
-def _port_global_to_local_vec(a):
-    out = _frame(*a[0:4]).global_to_local_vec(v(*a[4:7]))
-    return list(out)
+def _port_global_to_local_vec(m, a):
+    return list(_frame(m, *a[0:4]).global_to_local_vec(m.vec(*a[4:7])))
 
 
-def _port_local_to_global_vec(a):
-    return list(_frame(*a[0:4]).local_to_global_vec(v(*a[4:7])))
+def _port_local_to_global_vec(m, a):
+    return list(_frame(m, *a[0:4]).local_to_global_vec(m.vec(*a[4:7])))
 
 
-def _port_vector3_lerp(a):
-    f = AFrame.identity(EXACT)
-    f.interpolate_origin(AFrame(v(*a[0:3]), q(0, 0, 0, 1)), AFrame(v(*a[3:6]), q(0, 0, 0, 1)), F(a[6]))
+def _port_vector3_lerp(m, a):
+    f = AFrame.identity(m)
+    f.interpolate_origin(AFrame(m.vec(*a[0:3]), m.quat(0, 0, 0, 1)), AFrame(m.vec(*a[3:6]), m.quat(0, 0, 0, 1)), F(a[6]))
     return list(f.origin)
 
 
-def _port_create_from_quaternion(a):
-    from acconform.numerics import Matrix4x4
-
-    return list(Matrix4x4.create_from_quaternion(q(*a)).m)
+def _port_create_from_quaternion(m, a):
+    return list(Matrix4x4.create_from_quaternion(m.quat(*a)).m)
 
 
-def _port_yaw_pitch_roll(a):
-    o = quat_create_from_yaw_pitch_roll(F(a[0]), F(a[1]), F(a[2]))
+def _port_yaw_pitch_roll(m, a):
+    o = m.runtime.quat_create_from_yaw_pitch_roll(F(a[0]), F(a[1]), F(a[2]))
     return [o.x, o.y, o.z, o.w]
 
 
-def _port_set_rotate(a):
-    f = AFrame.identity(EXACT)
-    f.set_rotate(q(*a))
+def _port_set_rotate(m, a):
+    f = AFrame.identity(m)
+    f.set_rotate(m.quat(*a))
     o = f.orientation
     return [o.x, o.y, o.z, o.w]
+
+
+def _port_quat_multiply(m, a):
+    o = AFrame.combine(_frame(m, *a[0:4]), _frame(m, *a[4:8])).orientation
+    return [o.x, o.y, o.z, o.w]
+
+
+def _port_quat_inverse(m, a):
+    o = m.runtime.quat_inverse(m.quat(*a))
+    return [o.x, o.y, o.z, o.w]
+
+
+def _port_transform_by_matrix(m, a):
+    rot = Matrix4x4.create_from_quaternion(m.quat(*a[0:4])).m
+    mat = Matrix4x4((*rot[0:12], F(a[4]), F(a[5]), F(a[6]), rot[15]))
+    return list(m.runtime.transform_by_matrix(m.vec(*a[7:10]), mat))
 
 
 OPS = {
@@ -207,10 +221,30 @@ OPS = {
     "Matrix4x4.CreateFromQuaternion": (4, _port_create_from_quaternion),
     "GlobalToLocalVec": (7, _port_global_to_local_vec),  # Transform(v, Transpose(CreateFromQuaternion(q)))
     "Vector3.Transform(v,q)": (7, _port_local_to_global_vec),  # AFrame.LocalToGlobalVec
+    "Vector3.Transform(v,m)": (10, _port_transform_by_matrix),  # a rotation with a translation row (BBox, Environment)
     "Vector3.Lerp": (7, _port_vector3_lerp),  # AFrame.InterpolateOrigin
     "Quaternion.CreateFromYawPitchRoll": (3, _port_yaw_pitch_roll),  # set_vector_heading, GRotate
     "Quaternion.Normalize": (4, _port_set_rotate),  # AFrame.set_rotate
+    "Quaternion.Multiply": (8, _port_quat_multiply),  # AFrame.Combine, Rotate, GRotate, Subtract
+    "Quaternion.Inverse": (4, _port_quat_inverse),  # AFrame.Subtract
 }
+
+
+def _yaw_pitch_roll(rng) -> list[float]:
+    """Angles for every branch of .NET 10's Vector128.SinCos, which picks one branch for all
+    three half angles: all within pi/4 (polynomial), all below 2^-7 (Taylor terms; below 2^-13
+    the angle itself), any at or above 5e6 or not finite (the C library's sinf/cosf), otherwise
+    reduced by multiples of pi/2 -- mostly the last, as ACE's headings are."""
+    r = rng.random()
+    if r < 0.15:
+        return list(rng.uniform(-math.pi / 2, math.pi / 2, size=3))
+    if r < 0.25:
+        return list(rng.uniform(-1, 1, size=3) * 2.0 ** rng.integers(-30, -6, size=3))
+    if r < 0.3:
+        a = list(rng.uniform(-2 * math.pi, 2 * math.pi, size=3))
+        a[rng.integers(0, 3)] = [1e7, -3e9, math.inf, -math.inf, math.nan][rng.integers(0, 5)]
+        return a
+    return list(rng.uniform(-2 * math.pi, 2 * math.pi, size=3) * (10.0 if rng.random() < 0.1 else 1.0))
 
 
 def _inputs(name: str, n: int, seed: int) -> list[list[float]]:
@@ -224,21 +258,24 @@ def _inputs(name: str, n: int, seed: int) -> list[list[float]]:
         qs[4:8] /= np.linalg.norm(qs[4:8]) if rng.random() < 0.8 else 1.0
         vec = rng.uniform(-1, 1, size=6) * 10.0 ** rng.integers(-2, 4)
         t = rng.random() if rng.random() < 0.9 else rng.uniform(-1, 2)
-        if name == "Quaternion.Lerp":
-            a = [*qs[0:8], t]
+        if name in ("Quaternion.Lerp", "Quaternion.Multiply"):
+            a = [*qs[0:8], t][: OPS[name][0]]
         elif name in ("GlobalToLocalVec", "Vector3.Transform(v,q)"):
             a = [*qs[0:4], *vec[0:3]]
+        elif name == "Vector3.Transform(v,m)":
+            a = [*qs[0:4], *vec[0:6]]
         elif name == "Vector3.Lerp":
             a = [*vec, t]
         elif name == "Quaternion.CreateFromYawPitchRoll":
-            a = list(rng.uniform(-2 * math.pi, 2 * math.pi, size=3) * (10.0 if rng.random() < 0.1 else 1.0))
+            a = _yaw_pitch_roll(rng)
         else:
             a = list(qs[0:4])
         cases.append([float(np.float32(x)) for x in a])
     return cases
 
 
-def _mono_op(sn, name, a):
+def _net_op(sn, name, a):
+    """The same question asked of System.Numerics (mono's or .NET 10's, whichever is loaded)."""
     Q, V, M = sn.Quaternion, sn.Vector3, sn.Matrix4x4
     if name == "Quaternion.Lerp":
         o = Q.Lerp(Q(*a[0:4]), Q(*a[4:8]), a[8])
@@ -253,6 +290,12 @@ def _mono_op(sn, name, a):
     if name == "Vector3.Transform(v,q)":
         o = V.Transform(V(*a[4:7]), Q(*a[0:4]))
         return [o.X, o.Y, o.Z]
+    if name == "Vector3.Transform(v,m)":
+        r = M.CreateFromQuaternion(Q(*a[0:4]))
+        mat = M(r.M11, r.M12, r.M13, r.M14, r.M21, r.M22, r.M23, r.M24, r.M31, r.M32, r.M33, r.M34,
+                a[4], a[5], a[6], r.M44)
+        o = V.Transform(V(*a[7:10]), mat)
+        return [o.X, o.Y, o.Z]
     if name == "Vector3.Lerp":
         o = V.Lerp(V(*a[0:3]), V(*a[3:6]), a[6])
         return [o.X, o.Y, o.Z]
@@ -262,36 +305,72 @@ def _mono_op(sn, name, a):
     if name == "Quaternion.Normalize":
         o = Q.Normalize(Q(*a))
         return [o.X, o.Y, o.Z, o.W]
+    if name == "Quaternion.Multiply":
+        o = Q.Multiply(Q(*a[0:4]), Q(*a[4:8]))
+        return [o.X, o.Y, o.Z, o.W]
+    if name == "Quaternion.Inverse":
+        o = Q.Inverse(Q(*a))
+        return [o.X, o.Y, o.Z, o.W]
     raise KeyError(name)
+
+
+def _data(runtime: str) -> Path:
+    return numerics_replay.data_path(runtime)
 
 
 @pytest.mark.live_runtime
 @pytest.mark.anchor("AFrame::global_to_local_vec")
 @pytest.mark.parametrize("name", sorted(OPS))
 def test_frame_numerics_match_mono_system_numerics_bit_for_bit(name):
-    assert_matches_live_mono(OPS, name, _inputs, _mono_op)
+    assert_matches_live_mono(OPS, name, _inputs, _net_op)
 
 
-def _load_recorded():
-    return load_recorded(DATA, Path(__file__).name)
+@pytest.fixture(scope="module")
+def live_net10():
+    return numerics_replay.live_coreclr_answers(Path(__file__))
+
+
+@pytest.mark.live_runtime
+@pytest.mark.anchor("AFrame::global_to_local_vec")
+@pytest.mark.parametrize("name", sorted(OPS))
+def test_frame_numerics_match_dotnet10_system_numerics_bit_for_bit(name, live_net10):
+    assert_matches_answers(OPS, name, live_net10, "coreclr", "live .NET 10 answers")
 
 
 @pytest.mark.anchor("AFrame::global_to_local_vec")
+@pytest.mark.parametrize("runtime", sorted(numerics_replay.DATA_NAMES))
 @pytest.mark.parametrize("name", sorted(OPS))
-def test_frame_numerics_match_recorded_mono_answers(name):
-    assert_matches_recorded_mono(OPS, name, DATA, Path(__file__).name)
+def test_frame_numerics_match_each_runtimes_recorded_answers(name, runtime):
+    assert_matches_recorded(OPS, name, _data(runtime), Path(__file__).name, runtime)
 
 
-def test_recorded_mono_answers_cover_every_frame_op():
-    assert sorted(_load_recorded()["ops"]) == sorted(OPS)
-
-
-def record(n: int = 600) -> None:
-    numerics_replay.record(DATA, OPS, _inputs, _mono_op,
-                           "mono System.Numerics answers (float32 bit patterns, 8 hex digits each) for the "
-                           "calls port/frame.py makes; written by tests/port/test_frame.py --record", n)
+@pytest.mark.parametrize("runtime", sorted(numerics_replay.DATA_NAMES))
+def test_recorded_answers_cover_every_frame_op(runtime):
+    assert sorted(load_recorded(_data(runtime), Path(__file__).name, runtime)["ops"]) == sorted(OPS)
 
 
 if __name__ == "__main__":
-    if "--record" in sys.argv:
-        record()
+    numerics_replay.main(sys.argv[1:], _data, OPS, _inputs, _net_op,
+                         "{runtime} System.Numerics answers (float32 bit patterns, 8 hex digits each) for the "
+                         "calls port/frame.py makes; written by tests/port/test_frame.py --record --runtime {runtime}")
+
+
+# ---------------------------------------------------------------- the runtime reaches the physics
+
+
+@pytest.mark.anchor("AFrame::global_to_local_vec")
+def test_a_run_rotates_frames_as_its_runtime_does_which_moves_a_rotated_bsp_contact_plane():
+    """A recorded mono scene (a BSP ledge turned 30 degrees about z): mono arithmetic reproduces
+    ACE-on-mono's contact plane bit for bit; .NET 10 arithmetic rotates the ledge's plane into the
+    world by other roundings (its normal's z is 0.99999994, not 1.0)."""
+    from acconform.compare import compare
+    from acconform.oracle.recorded import RecordedOracle, scene_key
+    from acconform.port.run import run_scene
+
+    corpus = RecordedOracle(Path(__file__).resolve().parents[1] / "data" / "corpus")
+    key = "e42adc88320d7aaff503ee9c19d28006a007898ce1f063f6341a174550ba19c9"
+    rec = next(r for r in corpus.records() if r.scene.name == "bsp:ledge" and scene_key(r.scene) == key)
+    assert compare(run_scene(rec.scene, runtime="mono"), rec.outcome, "exact") == []
+    net10 = run_scene(rec.scene, runtime="coreclr")
+    assert bits([rec.outcome.contact_plane.normal[2]]) == [0x3F800000]
+    assert bits([net10.contact_plane.normal[2]]) == [0x3F7FFFFF]

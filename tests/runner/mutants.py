@@ -85,6 +85,28 @@ MUTATIONS: tuple[Mutation, ...] = (
              "offset_per_step = offset * (s(1.0) / s(num_steps))",
              "offset_per_step = offset / s(num_steps)",
              "CalcNumSteps divides by the step count instead of multiplying by its reciprocal"),
+    # registration: where a static is placed (PhysicsObj.add_obj_to_cell's chain)
+    Mutation("add_cell_block_own_landblock_skip_dropped", "land/land_cell.py",
+             "            if id >> 16 != cell_id >> 16:\n                continue\n",
+             "",
+             "add_cell_block registers a bbox-placed static in the neighbouring landblock's cells too (its FIXME skip dropped)"),
+    Mutation("part_bbox_taken_from_the_sphere", "part_array.py",
+             "        return self.gfx_obj.gfx_bound_box",
+             "        s = self.gfx_obj.physics_sphere\n"
+             "        if s is None:\n"
+             "            return self.gfx_obj.gfx_bound_box\n"
+             "        from .bbox import BBox\n"
+             "        r = Vector3(s.radius, s.radius, s.radius)\n"
+             "        return BBox(s.center - r, s.center + r)",
+             "a BSP part's bounding box is its physics sphere's box, not the box over its vertices (GfxObj.Init)"),
+    Mutation("shadow_cells_in_reverse_cell_array_order", "physics_obj.py",
+             "        for cell in cell_array.cells.values():",
+             "        for cell in reversed(cell_array.cells.values()):",
+             "add_shadows_to_cell walks the CellArray backwards: shadow lists and ShadowObjects in reverse order"),
+    Mutation("cylsphere_placed_by_its_bbox", "physics_obj.py",
+             "        if (self.part_array is not None and self.part_array.get_num_cylsphere() != 0",
+             "        if (False and self.part_array is not None and self.part_array.get_num_cylsphere() != 0",
+             "a cylsphere static is placed by its part's bbox (find_bbox_cell_list), not by find_cell_list"),
 )
 
 

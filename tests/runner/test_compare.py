@@ -9,14 +9,15 @@ import numpy as np
 import pytest
 
 from acconform.compare import FAST_ABS, FAST_ULPS, Difference, compare, float_equal, ulp_distance
-from acconform.errors import AcconformError
+from acconform.case import parse_document
+from acconform.errors import AcconformError, InvalidScene
 from acconform.numerics import f32_from_bits
 from acconform.outcome import ContactPlaneState, NormalState, Outcome
 
 BASE = Outcome(ok=True, cell=0xA9B40021, origin=(10.0, 20.0, 30.5), object_info_state=3,
                contact_plane=ContactPlaneState(True, 0xA9B40021, False, (0.0, 0.0, 1.0), -30.0),
                last_known_contact_plane=ContactPlaneState(True, 0xA9B40021, False, (0.0, 0.0, 1.0), -30.0),
-               check_cell=0xA9B40021, walkable=True)
+               check_cell=0xA9B40021, walkable=True, static_cells=((0xA9B40021, 0xA9B40022), (0xA9B40009,)))
 
 
 def nudge(x: float, ulps: int = 1) -> float:
@@ -115,6 +116,8 @@ def test_every_outcome_field_is_covered_by_a_field_test():
             new = not v
         elif isinstance(v, int):
             new = v + 1
+        elif f.name == "static_cells":
+            new = v[:1]
         elif isinstance(v, tuple):
             new = tuple(c + 1.0 for c in v)
         elif isinstance(v, ContactPlaneState):
@@ -124,3 +127,47 @@ def test_every_outcome_field_is_covered_by_a_field_test():
         else:
             new = "error"
         assert compare(BASE, dataclasses.replace(BASE, **{f.name: new})), f.name
+
+
+@pytest.mark.parametrize("other", [
+    ((0xA9B40022, 0xA9B40021), (0xA9B40009,)),  # same cells, another registration order
+    ((0xA9B40021, 0xA9B40022, 0xA9B40029), (0xA9B40009,)),  # one more cell
+    ((0xA9B40021, 0xA9B40022),),  # one static fewer
+    ((0xA9B40021, 0xA9B40022), ()),  # a static registered nowhere
+])
+def test_compare_reports_static_cells_that_differ_in_order_or_content_in_every_mode(other):
+    changed = dataclasses.replace(BASE, static_cells=other)
+    for mode in ("exact", "fast"):
+        assert compare(BASE, changed, mode) == [Difference("static_cells", BASE.static_cells, other)]
+    assert compare(BASE, changed)[0].render() == (
+        "static_cells: port=[[0xA9B40021, 0xA9B40022], [0xA9B40009]] oracle=" + "["
+        + ", ".join("[" + ", ".join(f"0x{c:08X}" for c in cells) + "]" for cells in other) + "]")
+
+
+def test_compare_skips_static_cells_that_one_side_did_not_record():
+    unrecorded = dataclasses.replace(BASE, static_cells=None)
+    assert compare(BASE, unrecorded) == [] and compare(unrecorded, BASE) == []
+    assert compare(dataclasses.replace(unrecorded, ok=False), BASE) == [Difference("ok", False, True)]
+
+
+def test_outcome_json_carries_static_cells_as_hex_ids_and_reads_them_back():
+    doc = BASE.to_json()
+    assert doc["format"] == "acconform.outcome/2"
+    assert doc["static_cells"] == [["0xA9B40021", "0xA9B40022"], ["0xA9B40009"]]
+    assert Outcome.from_json(doc) == BASE
+    none = dataclasses.replace(BASE, static_cells=None)
+    assert none.to_json()["static_cells"] is None and Outcome.from_json(none.to_json()) == none
+
+
+def test_outcome_format_2_requires_static_cells_and_format_1_reads_as_not_recorded():
+    doc = BASE.to_json()
+    del doc["static_cells"]
+    with pytest.raises(InvalidScene, match="static_cells.*missing required field"):
+        Outcome.from_json(doc)
+    v1 = dict(doc, format="acconform.outcome/1")
+    old = parse_document(v1)
+    assert old == dataclasses.replace(BASE, static_cells=None)
+    with pytest.raises(InvalidScene, match="unknown field 'static_cells'"):
+        Outcome.from_json(dict(v1, static_cells=[]))
+    with pytest.raises(InvalidScene, match=r"static_cells\[0\]\[1\].*expected an id"):
+        Outcome.from_json(dict(doc, static_cells=[["0xA9B40021", "wall"]]))

@@ -17,7 +17,10 @@ import pytest
 from mutants import MUTATIONS, hunt
 
 MAX_LANDBLOCKS = 9  # a path crossing a block corner: 3 x 3 with the block ahead on each axis
-MAX_OBJECTS = 2
+# the scatter policy draws up to 3 objects, their shapes in one loop and their placements in a later
+# one, so Hypothesis cannot always delete a middle object: at seed 0 step_down_one_sphere_halved_differently
+# shrinks to 3 objects of which the first two are each removable (checked by hand)
+MAX_OBJECTS = 3
 # path length is reported (mutation_report.py), not bounded: Hypothesis' float shrinking leaves some
 # paths long (a 96 m walk for cliff_slide_sign_flipped at seed 0) where the difference survives it
 
@@ -26,10 +29,6 @@ UNREACHABLE = {
     # the float32 grid of r, and EPSILON's low bits are finer than that grid
     "validate_walkable_contact_test_strict": "boundary (dist == -EPSILON exactly) is unreachable by construction",
     "step_down_interp_floor_raised": "a step-down overshoot in [-0.1, 0) needs gentle slopes and a sliver step",
-    # needs a sloped contact plane kept by AdjustOffset across a landblock border; no policy draws that
-    # state on purpose (a border-slope terrain walk did not reach it in 47 scenes). Before the seed was
-    # made independent of imported modules it was caught once, by luck, in a corner obstacle scene.
-    "adjust_offset_block_offset_dropped": "AdjustOffset with a contact plane across a block border is not drawn on purpose",
 }
 
 

@@ -13,11 +13,11 @@ import warnings
 import numpy as np
 import pytest
 
-from acconform import staging
 from acconform.flags import PhysicsState, TransientState
 from acconform.strategies import sample_scenes
 from acconform.strategies.objects import BSP_STATE, EPS
 from acconform.strategies.scenes import BLOCK, CELL, REACH_SLACK
+from acconform.strategies.shapes import object_reach
 from strategy_records import floats_in
 
 warnings.simplefilter("ignore", RuntimeWarning)
@@ -29,7 +29,7 @@ IGNORE = int(PhysicsState.IgnoreCollisions)
 
 @pytest.fixture(scope="module")
 def bsp_scenes():
-    return list(sample_scenes(("bsp",), 200, 21))
+    return list(sample_scenes(("bsp",), 200, 5))
 
 
 @pytest.fixture(scope="module")
@@ -134,7 +134,7 @@ def test_every_landblock_within_reach_of_the_path_and_the_objects_is_present(def
         for k in range(steps + 1):
             need |= _blocks_touched(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps, reach)
         for o in s.objects:
-            (cx, cy, _), rad = staging.bounding_sphere(o)
+            (cx, cy, _), rad = object_reach(o)
             need |= _blocks_touched((o.position.cell >> 24) * BLOCK + cx, ((o.position.cell >> 16) & 0xFF) * BLOCK + cy,
                                     rad)
         assert need <= have, f"{s.name}: missing {sorted(need - have)}"
@@ -148,8 +148,8 @@ def test_the_landblock_set_is_no_larger_than_reach_needs(default_scenes):
         reach = max(sp.center[2] + sp.radius for sp in m.spheres) + REACH_SLACK
         pts = [m.begin.frame.origin, m.end.frame.origin]
         inner = all(reach + 0.01 < c < BLOCK - reach - 0.01 for p in pts for c in p[:2])
-        far = all(staging.bounding_sphere(o)[1] + REACH_SLACK + 0.01 < min(
-            c, BLOCK - c) for o in s.objects for c in staging.bounding_sphere(o)[0][:2])
+        far = all(object_reach(o)[1] + REACH_SLACK + 0.01 < min(
+            c, BLOCK - c) for o in s.objects for c in object_reach(o)[0][:2])
         if inner and far and m.begin.cell >> 16 == m.end.cell >> 16 and all(
                 o.position.cell >> 16 == m.begin.cell >> 16 for o in s.objects):
             assert len(s.landblocks) == 1, s.name

@@ -32,10 +32,12 @@ from acconform.port.land import land_defs
 from acconform.port.vec import Ray
 
 from acconform.codec import write_f32
-from acconform.numerics import EXACT, Plane, Quaternion, Vector3, f32_from_bits
+from acconform.numerics import EXACT, Mode, Plane, Quaternion, Vector3, f32_from_bits, get_mode
 from acconform.scene import DEFAULT_LAND_HEIGHT_TABLE
 
-DATA = Path(__file__).resolve().parent / "data" / "ace_functions.json.gz"
+# ACE's recorded answers per runtime ACE ran on: mono 6.8, and .NET 10 (CoreCLR)
+DATA = {"mono": Path(__file__).resolve().parent / "data" / "ace_functions.json.gz",
+        "coreclr": Path(__file__).resolve().parent / "data" / "ace_functions_net10.json.gz"}
 F = np.float32
 
 
@@ -132,13 +134,13 @@ def dec(x):
     return x
 
 
-def save(doc: dict, path: Path = DATA) -> None:
+def save(doc: dict, path: Path) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     raw = json.dumps(enc(doc), separators=(",", ":"), allow_nan=False).encode()
     path.write_bytes(gzip.compress(raw, 9, mtime=0))
 
 
-def load(path: Path = DATA) -> dict:
+def load(path: Path) -> dict:
     doc = json.loads(gzip.decompress(path.read_bytes()))
     return {"versions": doc["versions"], "functions": {name: dec(entry) for name, entry in doc["functions"].items()}}
 
@@ -164,13 +166,14 @@ def port_polygon(vertices, sides_type: int = 0) -> Polygon:
     return p
 
 
-def frame(f) -> AFrame:
+def frame(f, m: Mode = EXACT) -> AFrame:
+    """An AFrame whose quaternion computes as `m`'s runtime does."""
     w, x, y, z = f[1]
-    return AFrame(vec(f[0]), EXACT.quat(x, y, z, w))
+    return AFrame(vec(f[0]), m.quat(x, y, z, w))
 
 
-def position(p) -> Position:
-    return Position(int(p[0]), frame(p[1]))
+def position(p, m: Mode = EXACT) -> Position:
+    return Position(int(p[0]), frame(p[1], m))
 
 
 def ace_error(fn):
@@ -693,10 +696,10 @@ class _PortLandblocks:
     def __init__(self):
         self.cache: dict = {}
 
-    def get(self, ctx, i):
+    def get(self, ctx, i, m: Mode):
         lb_id, heights, terrain, t = ctx["landblocks"][i]
         table = ctx["tables"][t]
-        key = (lb_id, tuple(heights), tuple(terrain), tuple(table))
+        key = (lb_id, tuple(heights), tuple(terrain), tuple(table), m)
         if key not in self.cache:
             if len(self.cache) > 64:
                 self.cache.clear()
@@ -709,7 +712,7 @@ class _PortLandblocks:
             rec = LbRec(lb_id, tuple(heights), tuple(terrain))
             pos = PosRec((lb_id & 0xFFFF0000) | 1, Frame((12.0, 12.0, 0.0)))
             scene = Scene((rec,), Mover((SphereRec((0.0, 0.0, 0.5), 0.5),), pos, pos, 0.5, 0.5), land_height_table=tuple(table))
-            lscape = LScape(scene, EXACT)
+            lscape = LScape(scene, m)
             self.cache[key] = (lscape.get_landblock(lb_id), lscape)
         return self.cache[key]
 
@@ -722,8 +725,8 @@ def _ace_lb(ctx, i):
     return (lb_id, heights, terrain, ctx["tables"][t])
 
 
-def port_landblock_struct(ctx, args):
-    lb, _ = PORT_LB.get(ctx, args[0])
+def port_landblock_struct(ctx, args, m):
+    lb, _ = PORT_LB.get(ctx, args[0], m)
     return {
         "vertices": [v.origin for v in lb.vertex_array],
         "polygons": [(tuple(p.vertex_ids), p.plane, p.pos_surface) for p in lb.polygons],
@@ -733,13 +736,13 @@ def port_landblock_struct(ctx, args):
     }
 
 
-def port_get_z(ctx, args):
-    lb, lscape = PORT_LB.get(ctx, args[0])
+def port_get_z(ctx, args, m):
+    lb, lscape = PORT_LB.get(ctx, args[0], m)
     return lb.get_z(lscape, vec(args[1]))
 
 
-def port_get_landcell(ctx, args):
-    lb, _ = PORT_LB.get(ctx, args[0])
+def port_get_landcell(ctx, args, m):
+    lb, _ = PORT_LB.get(ctx, args[0], m)
     low, same_block = args[1], args[2]
     cid = (lb.id & 0xFFFF0000 if same_block else (lb.id + 0x01000000) & 0xFFFF0000) | low
 
@@ -756,8 +759,8 @@ def ace_get_landcell(fns, ctx, args):
     return fns.get_landcell(_ace_lb(ctx, args[0]), [cid])[0]
 
 
-def port_calc_water_depth(ctx, args):
-    lb, _ = PORT_LB.get(ctx, args[0])
+def port_calc_water_depth(ctx, args, m):
+    lb, _ = PORT_LB.get(ctx, args[0], m)
     return ace_error(lambda: lb.calc_water_depth((lb.id & 0xFFFF0000) | args[1], vec(args[2])))
 
 
@@ -766,19 +769,19 @@ def ace_calc_water_depth(fns, ctx, args):
     return fns.calc_water_depth(_ace_lb(ctx, args[0]), (lb_id & 0xFFFF0000) | args[1], args[2])
 
 
-def _pos_hits(a):
+def _pos_hits(a, m):
     vs, s, mv, c = a
     p = port_polygon(vs)
     ok, cp, hp = p.pos_hits_sphere(sph(s), vec(mv), vec(c), None)
     return (ok, cp, hp is p)
 
 
-def _walkable_hits(a):
+def _walkable_hits(a, m):
     vs, allowance, s, up = a
     return port_polygon(vs).walkable_hits_sphere(SimpleNamespace(walkable_allowance=F(allowance)), sph(s), vec(up))
 
 
-def _adjust_to_plane(a):
+def _adjust_to_plane(a, m):
     vs, wi, s, mv = a
     path = SimpleNamespace(walk_interp=F(wi))
     valid = sph(s)
@@ -786,7 +789,7 @@ def _adjust_to_plane(a):
     return (ok, path.walk_interp, valid.center)
 
 
-def _placement(a):
+def _placement(a, m):
     vs, hit, other, r, center_solid, solid_check = a
     h = sph(hit)
     o = sph(other) if other is not None else None
@@ -811,7 +814,7 @@ class Spec:
     name: str
     anchor: str  # the retail (or ACE) anchor the function is registered under
     generate: Callable  # (rng, n) -> (context, inputs)
-    port: Callable  # (context, args) -> plain-able answer
+    port: Callable  # (context, args, mode) -> plain-able answer; the mode carries the runtime
     ace: Callable  # (AceFunctions, context, args) -> plain answer
     live_n: int = 2000
     record_n: int = 600
@@ -819,56 +822,56 @@ class Spec:
 
 def _simple(name, anchor, gen, port, ace_name=None, **kw):
     ace_name = ace_name or name
-    return Spec(name, anchor, _n_times(gen), lambda ctx, a: port(a), lambda fns, ctx, a: getattr(fns, ace_name)(*a), **kw)
+    return Spec(name, anchor, _n_times(gen), lambda ctx, a, m: port(a, m), lambda fns, ctx, a: getattr(fns, ace_name)(*a), **kw)
 
 
 SPECS: dict[str, Spec] = {s.name: s for s in [
     # Polygon
-    _simple("make_plane", "CPolygon::make_plane", g_make_plane, lambda a: port_polygon(a[0]).plane),
+    _simple("make_plane", "CPolygon::make_plane", g_make_plane, lambda a, m: port_polygon(a[0]).plane),
     _simple("point_in_poly2D", "CPolygon::point_in_poly2D", g_point_in_poly2d,
-            lambda a: port_polygon(a[0]).point_in_poly2D(vec(a[1]), Sidedness(a[2]))),
+            lambda a, m: port_polygon(a[0]).point_in_poly2D(vec(a[1]), Sidedness(a[2]))),
     _simple("point_in_polygon", "CPolygon::point_in_polygon", g_point_in_polygon,
-            lambda a: port_polygon(a[0]).point_in_polygon(vec(a[1]))),
+            lambda a, m: port_polygon(a[0]).point_in_polygon(vec(a[1]))),
     _simple("find_crossed_edge", "CPolygon::find_crossed_edge", g_find_crossed_edge,
-            lambda a: port_polygon(a[0]).find_crossed_edge(sph(a[1]), vec(a[2]), vec(a[3]))),
+            lambda a, m: port_polygon(a[0]).find_crossed_edge(sph(a[1]), vec(a[2]), vec(a[3]))),
     _simple("polygon_hits_sphere", "CPolygon::polygon_hits_sphere", g_sphere_contact,
-            lambda a: port_polygon(a[0]).polygon_hits_sphere(sph(a[1]), vec(a[2]))),
+            lambda a, m: port_polygon(a[0]).polygon_hits_sphere(sph(a[1]), vec(a[2]))),
     _simple("polygon_hits_sphere_precise", "CPolygon::polygon_hits_sphere_precise", g_sphere_contact,
-            lambda a: port_polygon(a[0]).polygon_hits_sphere_precise(sph(a[1]), vec(a[2]))),
-    _simple("hits_sphere", "CPolygon::hits_sphere", g_hits_sphere, lambda a: port_polygon(a[0]).hits_sphere(sph(a[1]))),
+            lambda a, m: port_polygon(a[0]).polygon_hits_sphere_precise(sph(a[1]), vec(a[2]))),
+    _simple("hits_sphere", "CPolygon::hits_sphere", g_hits_sphere, lambda a, m: port_polygon(a[0]).hits_sphere(sph(a[1]))),
     _simple("pos_hits_sphere", "CPolygon::pos_hits_sphere", g_pos_hits_sphere, _pos_hits),
     _simple("walkable_hits_sphere", "CPolygon::walkable_hits_sphere", g_walkable_hits_sphere, _walkable_hits),
     _simple("check_walkable", "CPolygon::check_walkable", g_check_walkable,
-            lambda a: port_polygon(a[0]).check_walkable(sph(a[1]), vec(a[2]), a[3])),
+            lambda a, m: port_polygon(a[0]).check_walkable(sph(a[1]), vec(a[2]), a[3])),
     _simple("check_small_walkable", "CPolygon::check_small_walkable", g_check_small_walkable,
-            lambda a: port_polygon(a[0]).check_small_walkable(sph(a[1]), vec(a[2]))),
+            lambda a, m: port_polygon(a[0]).check_small_walkable(sph(a[1]), vec(a[2]))),
     _simple("adjust_sphere_to_plane", "CPolygon::adjust_sphere_to_plane", g_adjust_sphere_to_plane, _adjust_to_plane),
     _simple("adjust_sphere_to_poly", "CPolygon::adjust_sphere_to_poly", g_adjust_sphere_to_poly,
-            lambda a: port_polygon(a[0]).adjust_sphere_to_poly(sph(a[1]), vec(a[2]), vec(a[3]))),
+            lambda a, m: port_polygon(a[0]).adjust_sphere_to_poly(sph(a[1]), vec(a[2]), vec(a[3]))),
     _simple("adjust_to_placement_poly", "CPolygon::adjust_to_placement_poly", g_adjust_to_placement_poly, _placement),
     _simple("polygon_hits_ray", "CPolygon::polygon_hits_ray", g_polygon_hits_ray,
-            lambda a: port_polygon(a[0], a[1]).polygon_hits_ray(_ray(a[2]), F(a[3]))),
+            lambda a, m: port_polygon(a[0], a[1]).polygon_hits_ray(_ray(a[2]), F(a[3]))),
     # Sphere
     _simple("find_time_of_collision", "CSphere::find_time_of_collision", g_find_time_of_collision,
-            lambda a: port_sphere.find_time_of_collision(vec(a[0]), vec(a[1]), F(a[2]))),
+            lambda a, m: port_sphere.find_time_of_collision(vec(a[0]), vec(a[1]), F(a[2]))),
     _simple("collides_with_sphere", "CSphere::collides_with_sphere", g_collides_with_sphere,
-            lambda a: port_sphere.collides_with_sphere(vec(a[0]), F(a[1]))),
-    _simple("sphere_intersects", "CSphere::intersects", g_sphere_intersects, lambda a: sph(a[0]).intersects(sph(a[1]))),
+            lambda a, m: port_sphere.collides_with_sphere(vec(a[0]), F(a[1]))),
+    _simple("sphere_intersects", "CSphere::intersects", g_sphere_intersects, lambda a, m: sph(a[0]).intersects(sph(a[1]))),
     _simple("sphere_intersects_ray", "CSphere::sphere_intersects_ray", g_sphere_intersects_ray,
-            lambda a: sph(a[0]).sphere_intersects_ray(_ray(a[1]))),
+            lambda a, m: sph(a[0]).sphere_intersects_ray(_ray(a[1]))),
     # LandDefs
     _simple("get_block_offset", "LandDefs::get_block_offset", g_block_offset,
-            lambda a: ace_error(lambda: land_defs.get_block_offset(a[0], a[1]))),
+            lambda a, m: ace_error(lambda: land_defs.get_block_offset(a[0], a[1]))),
     _simple("adjust_to_outside", "LandDefs::adjust_to_outside", g_adjust_to_outside,
-            lambda a: land_defs.adjust_to_outside(a[0], vec(a[1]))),
-    _simple("blockid_to_lcoord", "LandDefs::blockid_to_lcoord", g_cell, lambda a: _lcoord(land_defs.blockid_to_lcoord(a[0]))),
-    _simple("gid_to_lcoord", "LandDefs::gid_to_lcoord", g_gid_to_lcoord, lambda a: _lcoord(land_defs.gid_to_lcoord(a[0], a[1]))),
+            lambda a, m: land_defs.adjust_to_outside(a[0], vec(a[1]))),
+    _simple("blockid_to_lcoord", "LandDefs::blockid_to_lcoord", g_cell, lambda a, m: _lcoord(land_defs.blockid_to_lcoord(a[0]))),
+    _simple("gid_to_lcoord", "LandDefs::gid_to_lcoord", g_gid_to_lcoord, lambda a, m: _lcoord(land_defs.gid_to_lcoord(a[0], a[1]))),
     _simple("get_outside_lcoord", "LandDefs::get_outside_lcoord", g_get_outside_lcoord,
-            lambda a: _lcoord(land_defs.get_outside_lcoord(a[0], F(a[1]), F(a[2])))),
-    _simple("lcoord_to_gid", "LandDefs::lcoord_to_gid", g_lcoord_to_gid, lambda a: land_defs.lcoord_to_gid(F(a[0]), F(a[1]))),
-    _simple("inbound_valid_cellid", "LandDefs::inbound_valid_cellid", g_cell, lambda a: land_defs.inbound_valid_cellid(a[0])),
-    _simple("cell_in_range", "LandDefs::cell_in_range", g_cell_low, lambda a: land_defs.cell_in_range(a[0])),
-    _simple("in_block", "LandDefs::in_block", g_in_block, lambda a: land_defs.in_block(vec(a[0]), F(a[1]))),
+            lambda a, m: _lcoord(land_defs.get_outside_lcoord(a[0], F(a[1]), F(a[2])))),
+    _simple("lcoord_to_gid", "LandDefs::lcoord_to_gid", g_lcoord_to_gid, lambda a, m: land_defs.lcoord_to_gid(F(a[0]), F(a[1]), m.runtime)),
+    _simple("inbound_valid_cellid", "LandDefs::inbound_valid_cellid", g_cell, lambda a, m: land_defs.inbound_valid_cellid(a[0])),
+    _simple("cell_in_range", "LandDefs::cell_in_range", g_cell_low, lambda a, m: land_defs.cell_in_range(a[0])),
+    _simple("in_block", "LandDefs::in_block", g_in_block, lambda a, m: land_defs.in_block(vec(a[0]), F(a[1]))),
     # LandblockStruct / Landblock
     Spec("landblock_struct", "CLandBlockStruct::ConstructPolygons", gen_landblock_struct, port_landblock_struct,
          lambda fns, ctx, a: fns.landblock_struct(*_ace_lb(ctx, a[0])), live_n=48, record_n=12),
@@ -878,20 +881,20 @@ SPECS: dict[str, Spec] = {s.name: s for s in [
          lambda fns, ctx, a: fns.get_z(_ace_lb(ctx, a[0]), [a[1]])[0]),
     Spec("get_landcell", "CLandBlock::get_landcell", _lb_inputs(_landcell_args), port_get_landcell, ace_get_landcell),
     # AFrame / Position
-    _simple("frame_local_to_global", "AFrame::local_to_global", g_frame_point, lambda a: frame(a[0]).local_to_global(vec(a[1]))),
-    _simple("frame_global_to_local", "AFrame::global_to_local", g_frame_point, lambda a: frame(a[0]).global_to_local(vec(a[1]))),
+    _simple("frame_local_to_global", "AFrame::local_to_global", g_frame_point, lambda a, m: frame(a[0], m).local_to_global(vec(a[1]))),
+    _simple("frame_global_to_local", "AFrame::global_to_local", g_frame_point, lambda a, m: frame(a[0], m).global_to_local(vec(a[1]))),
     _simple("frame_local_to_global_vec", "AFrame::local_to_global_vec", g_frame_point,
-            lambda a: frame(a[0]).local_to_global_vec(vec(a[1]))),
+            lambda a, m: frame(a[0], m).local_to_global_vec(vec(a[1]))),
     _simple("frame_global_to_local_vec", "AFrame::global_to_local_vec", g_frame_point,
-            lambda a: frame(a[0]).global_to_local_vec(vec(a[1]))),
+            lambda a, m: frame(a[0], m).global_to_local_vec(vec(a[1]))),
     _simple("frame_combine", "AFrame::combine", g_frame_combine,
-            lambda a: _combined(AFrame.combine(frame(a[0]), frame(a[1])))),
+            lambda a, m: _combined(AFrame.combine(frame(a[0], m), frame(a[1], m)))),
     _simple("position_get_offset", "Position::get_offset", g_position_pair,
-            lambda a: ace_error(lambda: position(a[0]).get_offset(position(a[1])))),
+            lambda a, m: ace_error(lambda: position(a[0], m).get_offset(position(a[1], m)))),
     _simple("position_local_to_local", "Position::local_to_local", g_position_pair_point,
-            lambda a: ace_error(lambda: position(a[0]).local_to_local(position(a[1]), vec(a[2])))),
+            lambda a, m: ace_error(lambda: position(a[0], m).local_to_local(position(a[1], m), vec(a[2])))),
     _simple("position_local_to_global_from", "Position::local_to_global", g_position_pair_point,
-            lambda a: ace_error(lambda: position(a[0]).local_to_global_from(position(a[1]), vec(a[2])))),
+            lambda a, m: ace_error(lambda: position(a[0], m).local_to_global_from(position(a[1], m), vec(a[2])))),
 ]}
 
 
@@ -905,16 +908,18 @@ def generate(spec: Spec, seed: str, n: int):
     return dec(enc(ctx)), [dec(enc(list(a))) for a in inputs]
 
 
-def port_answer(spec: Spec, ctx, args):
-    return plain(spec.port(ctx, args))
+def port_answer(spec: Spec, ctx, args, runtime: str = "mono"):
+    """The port's answer computing as ACE on `runtime` ("mono" or "coreclr") does."""
+    return plain(spec.port(ctx, args, get_mode("exact", runtime)))
 
 
-def differences(spec: Spec, ctx, inputs, answers, limit: int = 5) -> tuple[int, list[str]]:
-    """(how many inputs differ, the first `limit` described: input, port, ACE)."""
+def differences(spec: Spec, ctx, inputs, answers, limit: int = 5, runtime: str = "mono") -> tuple[int, list[str]]:
+    """(how many inputs differ, the first `limit` described: input, port, ACE), the port computing
+    as ACE on `runtime` does."""
     count, shown = 0, []
     for args, want in zip(inputs, answers):
         try:
-            got = port_answer(spec, ctx, args)
+            got = port_answer(spec, ctx, args, runtime)
         except Exception as e:  # noqa: BLE001 -- the port crashed where ACE answered: a difference too
             got = ("port raised", f"{type(e).__name__}: {e}")
         if not same(got, want):

@@ -1,11 +1,14 @@
-"""Record ACE's answers for every per-function spec into data/ace_functions.json.gz.
+"""Record ACE's answers for every per-function spec into data/ace_functions.json.gz (an ACE on
+mono) or data/ace_functions_net10.json.gz (an ACE on .NET 10, CoreCLR).
 
     ACE_ASSEMBLY=/path/to/ACE.Server.dll python tests/port/functions/record_ace_functions.py
 
-Inputs come from each spec's generator with the seed "recorded" (deterministic), answers from
-real ACE through acconform.oracle.functions. The replay test (test_ace_functions.py) runs the
-port on the same inputs on every push, with no ACE. The port's answers are compared as the
-data is written and every difference is printed (the data records ACE, whatever the port says).
+The runtime is the configured build's (a .NET build output runs on CoreCLR; --runtime/ACE_RUNTIME
+force it). Inputs come from each spec's generator with the seed "recorded" (deterministic), answers
+from real ACE through acconform.oracle.functions. The replay test (test_ace_functions.py) runs the
+port, computing as that runtime does, on the same inputs on every push, with no ACE. The port's
+answers are compared as the data is written and every difference is printed (the data records
+ACE, whatever the port says).
 """
 
 from __future__ import annotations
@@ -24,6 +27,9 @@ def record(fns, specs=None) -> dict:
     import numpy as np
 
     from acconform import __version__
+    from acconform.numerics import runtime_named
+
+    runtime = runtime_named(fns.runtime_version)
 
     doc = {"versions": {"acconform": __version__, "ace": fns.ace_version, "runtime": fns.runtime_version},
            "functions": {}}
@@ -33,7 +39,7 @@ def record(fns, specs=None) -> dict:
         answers = [fn_specs.plain(spec.ace(fns, ctx, a)) for a in inputs]
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore")
-            count, shown = fn_specs.differences(spec, ctx, inputs, answers)
+            count, shown = fn_specs.differences(spec, ctx, inputs, answers, runtime=runtime)
         print(f"{name}: {len(inputs)} inputs, port differs on {count} ({time.perf_counter() - t0:.1f} s)")
         for line in shown:
             print("   ", line)
@@ -44,10 +50,13 @@ def record(fns, specs=None) -> dict:
 def main() -> int:
     from acconform.oracle.functions import AceFunctions
 
+    from acconform.numerics import runtime_named
+
     fns = AceFunctions()
     doc = record(fns)
-    fn_specs.save(doc)
-    print(f"wrote {fn_specs.DATA} ({fn_specs.DATA.stat().st_size:,} bytes) from {fns.ace_version} on {fns.runtime_version}")
+    path = fn_specs.DATA[runtime_named(fns.runtime_version)]
+    fn_specs.save(doc, path)
+    print(f"wrote {path} ({path.stat().st_size:,} bytes) from {fns.ace_version} on {fns.runtime_version}")
     return 0
 
 

@@ -5,9 +5,10 @@ Landblock, AFrame, Position):
 
 * live (``live_oracle``): fresh inputs (seed "live", about 2,000 per function) through the
   configured ACE and through the port; skipped with a reason when no ACE is configured.
-* replay (every push): the inputs and ACE's answers recorded in data/ace_functions.json.gz
-  (by record_ace_functions.py) through the port. Missing data fails: this lane never passes
-  vacuously.
+* replay (every push): the inputs and ACE's answers recorded (by record_ace_functions.py) from
+  ACE on mono (data/ace_functions.json.gz) and on .NET 10 (data/ace_functions_net10.json.gz),
+  each through the port computing as that runtime does. Missing data fails: this lane never
+  passes vacuously.
 """
 
 from __future__ import annotations
@@ -23,6 +24,10 @@ import pytest
 from fn_specs import SPECS, differences, generate, plain, same
 
 from acconform.errors import OracleUnavailable
+from acconform.numerics import runtime_named
+
+
+RUNTIMES = sorted(fn_specs.DATA)
 
 
 def _params():
@@ -51,12 +56,14 @@ def ace_functions():
         pytest.fail(f"ACE is configured but the function oracle cannot load: {e}")
 
 
-@functools.lru_cache(maxsize=1)
-def recorded() -> dict:
-    if not fn_specs.DATA.is_file():
-        pytest.fail(f"{fn_specs.DATA} is missing: record it with ACE_ASSEMBLY=/path/to/ACE.Server.dll "
+@functools.lru_cache(maxsize=2)
+def recorded(runtime: str) -> dict:
+    """ACE's recorded answers from an ACE on `runtime` ("mono" or "coreclr")."""
+    path = fn_specs.DATA[runtime]
+    if not path.is_file():
+        pytest.fail(f"{path} is missing: record it with ACE_ASSEMBLY=/path/to/ACE.Server.dll (a {runtime} build) "
                     "python tests/port/functions/record_ace_functions.py")
-    return fn_specs.load()
+    return fn_specs.load(path)
 
 
 # ---------------------------------------------------------------- live lane
@@ -68,7 +75,7 @@ def test_port_matches_live_ace_bit_for_bit_on_generated_inputs(name, ace_functio
     spec = SPECS[name]
     ctx, inputs = generate(spec, "live", spec.live_n)
     answers = [plain(spec.ace(ace_functions, ctx, a)) for a in inputs]
-    count, shown = differences(spec, ctx, inputs, answers)
+    count, shown = differences(spec, ctx, inputs, answers, runtime=runtime_named(ace_functions.runtime_version))
     assert count == 0, f"{count} of {len(inputs)} inputs differ:\n" + "\n".join(shown)
 
 
@@ -77,7 +84,7 @@ def test_port_matches_live_ace_bit_for_bit_on_generated_inputs(name, ace_functio
 def test_recorded_answers_are_what_the_configured_ace_answers(ace_functions):
     """Every third recorded input through this ACE: recorded data from another build shows up here."""
     stale = []
-    for name, entry in sorted(recorded()["functions"].items()):
+    for name, entry in sorted(recorded(runtime_named(ace_functions.runtime_version))["functions"].items()):
         spec = SPECS[name]
         for args, want in list(zip(entry["inputs"], entry["answers"]))[::3]:
             got = plain(spec.ace(ace_functions, entry["context"], args))
@@ -90,18 +97,20 @@ def test_recorded_answers_are_what_the_configured_ace_answers(ace_functions):
 # ---------------------------------------------------------------- replay lane (no ACE)
 
 
-def test_recorded_data_has_ace_answers_for_every_function():
-    doc = recorded()
+@pytest.mark.parametrize("runtime", RUNTIMES)
+def test_recorded_data_has_ace_answers_for_every_function(runtime):
+    doc = recorded(runtime)
     assert set(doc["functions"]) == set(SPECS)
-    assert doc["versions"]["ace"] and doc["versions"]["runtime"]
+    assert doc["versions"]["ace"] and runtime_named(doc["versions"]["runtime"]) == runtime
     for name, entry in doc["functions"].items():
         assert len(entry["inputs"]) == len(entry["answers"]) >= SPECS[name].record_n, name
 
 
+@pytest.mark.parametrize("runtime", RUNTIMES)
 @pytest.mark.parametrize("name", _params())
-def test_port_matches_recorded_ace_answers_bit_for_bit(name):
-    entry = recorded()["functions"][name]
-    count, shown = differences(SPECS[name], entry["context"], entry["inputs"], entry["answers"])
+def test_port_matches_recorded_ace_answers_bit_for_bit(name, runtime):
+    entry = recorded(runtime)["functions"][name]
+    count, shown = differences(SPECS[name], entry["context"], entry["inputs"], entry["answers"], runtime=runtime)
     assert count == 0, f"{count} of {len(entry['inputs'])} recorded inputs differ:\n" + "\n".join(shown)
 
 
@@ -109,14 +118,14 @@ def test_port_matches_recorded_ace_answers_bit_for_bit(name):
 def test_recorded_inputs_reach_more_than_one_answer(name):
     """A generator that only ever reaches one outcome would check nothing: each function's
     recorded answers take at least two distinct values (both results of a predicate)."""
-    answers = recorded()["functions"][name]["answers"]
+    answers = recorded("mono")["functions"][name]["answers"]
     assert len({repr(fn_specs._key(a)) for a in answers}) >= 2
 
 
 @pytest.mark.parametrize("name", ["point_in_poly2D", "polygon_hits_sphere_precise", "check_walkable",
                                   "adjust_sphere_to_plane", "walkable_hits_sphere", "pos_hits_sphere"])
 def test_recorded_predicates_answer_both_ways_often(name):
-    answers = recorded()["functions"][name]["answers"]
+    answers = recorded("mono")["functions"][name]["answers"]
     firsts = [a[0] if isinstance(a, tuple) else a for a in answers]
     assert min(firsts.count(True), firsts.count(False)) >= len(firsts) // 20, name
 

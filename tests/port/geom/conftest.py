@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 import pytest
 
-from acconform.numerics import EXACT, Plane, Vector3
+from acconform.numerics import EXACT, Mode, Plane, Vector3
 from acconform.port.constants import FLOOR_Z
 
 
@@ -33,6 +33,7 @@ class FakeCollisions:
 
 @dataclass
 class FakePath:
+    mode: Mode = EXACT  # the run's numerics (its runtime negates vectors)
     num_sphere: int = 1
     global_sphere: list = field(default_factory=list)
     global_curr_center: list = field(default_factory=list)

@@ -1,5 +1,5 @@
-"""BSP (port/geom/bsp.py) built from a scene BSPShape: a floor square split by its own plane,
-exercised through find_collisions' branches on a stand-in transition."""
+"""BSP (port/geom/bsp.py) built from a scene BSPShape's DAT record (as a run builds it): a floor square
+split by its own plane, exercised through find_collisions' branches on a stand-in transition."""
 
 from __future__ import annotations
 
@@ -13,6 +13,8 @@ from acconform.port.geom.sphere import Sphere
 from acconform.numerics import f32_bits
 from acconform.scene import BSPLeaf as LeafRec, BSPNode as NodeRec, BSPShape, PlaneRec, PolygonRec, SphereRec
 
+from dat_shapes import bsp_tree
+
 F = np.float32
 FLOOR = PolygonRec(((-1.0, -1.0, 0.0), (1.0, -1.0, 0.0), (1.0, 1.0, 0.0), (-1.0, 1.0, 0.0)))
 BIG = SphereRec((0.0, 0.0, 0.0), 3.0)
@@ -24,7 +26,12 @@ def v(x, y, z):
 
 def floor_tree():
     root = NodeRec(PlaneRec((0.0, 0.0, 1.0), 0.0), BIG, LeafRec((0,), False, BIG), LeafRec((), True, BIG))
-    return BSPTree.from_shape(BSPShape((FLOOR,), root, BIG), EXACT)
+    return bsp_tree(BSPShape((FLOOR,), root, BIG), EXACT)
+
+
+def floor_polygon(tree):
+    """The floor polygon as the front leaf holds it (each node that names a polygon has its own)."""
+    return tree.root_node.pos_node.polygons[0]
 
 
 def transition_at(make_transition, z, curr_z=None, **fields):
@@ -36,9 +43,10 @@ def transition_at(make_transition, z, curr_z=None, **fields):
 
 
 @pytest.mark.anchor("BSPTREE::UnPack")
-def test_tree_from_a_scene_shares_polygons_and_maps_front_back_to_pos_neg():
+def test_tree_from_a_dat_record_maps_front_back_to_pos_neg_with_the_roots_sphere():
     tree = floor_tree()
-    assert isinstance(tree.root_node.pos_node, BSPLeaf) and tree.root_node.pos_node.polygons[0] is tree.polygons[0]
+    assert isinstance(tree.root_node.pos_node, BSPLeaf) and tree.root_node.pos_node.num_polys == 1
+    assert not isinstance(tree.root_node, BSPLeaf) and tree.get_sphere() == Sphere(v(0, 0, 0), F(3))
     assert tree.root_node.neg_node.solid and tree.root_node.neg_node.num_polys == 0
     assert tree.root_node.splitting_plane == Plane(v(0, 0, 1), F(0))
     assert f32_bits(CELL_BSP_SLACK) == 0x3C23D70A
@@ -79,7 +87,7 @@ def test_step_down_rests_a_sinking_sphere_on_the_floor(make_transition):
     assert t.sphere_path.walk_interp == F(1) - i_dist
     assert t.sphere_path.check_pos.frame.origin == v(0, 0, F(-0.5) * i_dist * F(-1))
     assert t.collision_info.contact_plane_valid and t.collision_info.contact_plane.normal == v(0, 0, 1)
-    assert t.sphere_path.walkable[1] is tree.polygons[0]
+    assert t.sphere_path.walkable[1] is floor_polygon(tree)
 
 
 @pytest.mark.anchor("BSPTREE::check_walkable")
@@ -108,7 +116,7 @@ def test_placement_insert_accepts_a_sphere_through_the_front_when_its_center_is_
     assert tree.placement_insert(transition_at(make_transition, 0.2)) == TransitionState.OK
     hit, center_solid, hit_poly = tree.root_node.sphere_intersects_solid_poly(
         Sphere(v(0, 0, 0.2), F(0.5)), F(0.5), False, None, True)
-    assert (hit, center_solid, hit_poly) == (False, False, tree.polygons[0])
+    assert (hit, center_solid, hit_poly) == (False, False, floor_polygon(tree))
 
 
 @pytest.mark.anchor("BSPTREE::adjust_to_plane")

@@ -7,9 +7,10 @@ because they reach a branch no hand-made scene does). ACE's answers for all of t
 data/ace_object_outcomes.json (real ACE on mono through the live oracle); test_object_walks.py
 checks the port against them bit for bit and that together they reach every branch.
 
-The oracle sets a static object's State to the scene's flags as given (it does not call
-CacheHasPhysicsBSP), so a BSP object collides only with HasPhysicsBSP in its state: BSP here
-is always `BSP_STATE` except in the scene that pins the pass-through.
+Both sides make a static with ACE's makeObject (which sets HasPhysicsBSP through
+CacheHasPhysicsBSP) and then overwrite State with the scene's flags, as WorldObject.InitPhysicsObj
+does, so a BSP object collides only with HasPhysicsBSP in its scene state: BSP here is always
+`BSP_STATE` except in the scene that pins the pass-through.
 """
 
 from __future__ import annotations

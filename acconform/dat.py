@@ -1,0 +1,241 @@
+"""The DAT records a scene's static objects are made from: scene object -> DatLoader-layout bytes.
+
+ACE builds a static object from portal DAT records: `PhysicsObj.makeObject(did, ...)` reads a
+`GfxObj` (0x01xxxxxx) or a `Setup` (0x02xxxxxx) through `DatManager.PortalDat.ReadFromDat`, and
+ACE's constructors (`GfxObj(DatLoader GfxObj)`, `BSPTree(DatLoader BSPTree, polys, vertices)`,
+`Setup(SetupModel)`, `PartArray.CreateMesh/CreateSetup`) turn them into physics objects. A scene
+carries no DAT, so this module writes, for each static, the records ACE would read, in the exact
+byte layout of ACE.DatLoader's `Unpack` (FileTypes/GfxObj.cs, FileTypes/SetupModel.cs,
+Entity/CVertexArray.cs, SWVertex.cs, Polygon.cs, BSPTree.cs, BSPNode.cs, BSPLeaf.cs, Sphere.cs,
+CylSphere.cs, Plane.cs). The oracle unpacks them with ACE's own `Unpack`; the port reads them with
+its port of DatLoader (port/dat/). This is data encoding only: no physics, no rule.
+
+What each shape becomes (`static_records(obj, index)`):
+
+- **BSP**: one GfxObj, id ``0x01000001 + index``; `makeObject` takes that id (DivineType 6 ->
+  `PartArray.CreateMesh` -> `Setup.MakeSimpleSetup`). Flags `HasPhysics`; no surfaces; vertex array
+  type 1 holding every polygon's vertices in scene order, deduplicated by exact float32 bits (first
+  appearance), ids 0..n-1, no UVs, zero normals; physics polygons keyed by their scene index
+  (Stippling ``NoPos|NoNeg``: no UV indices; surfaces 0); the physics BSP tree in pre-order, an
+  internal node tagged ``BPIN`` (front = PosNode, then back = NegNode), a leaf ``LEAF`` with its
+  pre-order leaf ordinal as LeafIndex. The shape's own `sphere` is not written: ACE takes
+  GfxObj.PhysicsSphere from the tree's root. SortCenter (0, 0, 0).
+- **sphere / cylsphere**: a Setup, id ``0x02000001 + index``, with the shape's sphere or cylsphere
+  and one part (a Setup with no part gets no PartArray in ACE: `PartArray.InitParts` fails). The
+  part is a GfxObj, id ``0x01000001 + index``, with no physics and no drawing whose vertices are the
+  8 corners of the shape's axis-aligned box in object space (what `GfxObj.Init` bounds and
+  `find_bbox_cell_list` reads for a sphere): corner k = (k&1 ? hi.x : lo.x, k&2 ? hi.y : lo.y,
+  k&4 ? hi.z : lo.z), sphere lo/hi = centre -/+ radius, cylsphere x, y = low point -/+ radius and
+  z = low point z .. + height (float32 arithmetic). No placement frames, so the part sits at the
+  object's position (`PartArray.UpdateParts`); Height, Radius, step heights 0; sorting and
+  selection spheres zero.
+
+The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
+the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
+Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxObj mesh, id
+``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition).
+
+Records are listed parts first; every record of a scene has a distinct id (the index is the
+object's place in the scene's list).
+"""
+
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass
+
+import numpy as np
+
+from .scene import BSPLeaf, BSPShape, CylSphereShape, Mover, PolygonRec, SphereShape, StaticObject
+
+GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
+SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
+MAX_OBJECTS = 0xFFFFFF  # ids stay inside their DAT type's range
+MOVER_GFX_OBJ_ID = 0x01000000  # the mover's part
+MOVER_SETUP_ID = 0x02000000  # the mover's Setup
+
+# ACE.Entity.Enum.GfxObjFlags, StipplingType, SetupFlags
+GFX_HAS_PHYSICS = 0x1
+STIPPLING_NO_POS = 0x4
+STIPPLING_NO_NEG = 0x8
+VERTEX_TYPE = 1  # CVertexArray.Unpack reads only type 1
+
+# BSPNode.cs: node type tags, read as 4 ASCII bytes then reversed (so written as these little-endian uint32s)
+TAG_BPIN = 0x4250494E  # "BPIN": PosNode then NegNode
+TAG_LEAF = 0x4C454146  # "LEAF"
+
+_u16 = struct.Struct("<H")
+_u32 = struct.Struct("<I")
+_i32 = struct.Struct("<i")
+_3f = struct.Struct("<3f")
+_4f = struct.Struct("<4f")
+
+
+@dataclass(frozen=True, slots=True)
+class DatRecord:
+    """One portal DAT file: its id and the bytes `DatDatabase.ReadFromDat` would unpack."""
+
+    id: int
+    kind: str  # "GfxObj" or "Setup" (the DatLoader FileType)
+    data: bytes
+
+
+@dataclass(frozen=True, slots=True)
+class ObjectRecords:
+    """What one object (a static or the mover) is made from: `did` is the id `PhysicsObj.makeObject` takes, and
+    `records` every record reachable from it (parts first)."""
+
+    did: int
+    records: tuple[DatRecord, ...]
+
+
+def compressed_u32(n: int) -> bytes:
+    """BinaryReaderExtensions.ReadCompressedUInt32's layout: 1, 2 or 4 bytes."""
+    if n < 0 or n > 0x3FFFFFFF:
+        raise ValueError(f"{n} does not fit a compressed uint32")
+    if n < 0x80:
+        return bytes((n,))
+    if n < 0x4000:
+        return bytes((0x80 | (n >> 8), n & 0xFF))
+    return bytes((0xC0 | (n >> 24), (n >> 16) & 0xFF)) + _u16.pack(n & 0xFFFF)
+
+
+def vertex_array(vertices) -> bytes:
+    """CVertexArray: VertexType 1, count, then per vertex its ushort id and an SWVertex
+    (numUVs 0, origin, normal (0, 0, 0))."""
+    out = [_i32.pack(VERTEX_TYPE), _u32.pack(len(vertices))]
+    for i, v in enumerate(vertices):
+        out.append(_u16.pack(i) + _u16.pack(0) + _3f.pack(*v) + _3f.pack(0.0, 0.0, 0.0))
+    return b"".join(out)
+
+
+def _vertex_array_packed(origins: list[bytes]) -> bytes:
+    """`vertex_array` for origins already packed as three float32s."""
+    tail = _u16.pack(0)
+    zero = _3f.pack(0.0, 0.0, 0.0)
+    return b"".join([_i32.pack(VERTEX_TYPE), _u32.pack(len(origins))]
+                    + [_u16.pack(i) + tail + o + zero for i, o in enumerate(origins)])
+
+
+def polygon(poly: PolygonRec, ids: list[int]) -> bytes:
+    """DatLoader Polygon: NumPts, Stippling (NoPos|NoNeg: no UV indices), SidesType, PosSurface,
+    NegSurface, vertex ids."""
+    n = len(ids)
+    return struct.pack(f"<BBihh{n}h", n, STIPPLING_NO_POS | STIPPLING_NO_NEG, int(poly.sides_type), 0, 0, *ids)
+
+
+def sphere(center, radius) -> bytes:
+    return _4f.pack(*center, radius)
+
+
+def bsp_node(node, out: list, leaves: list) -> None:
+    """The physics BSP tree in DatLoader's layout, pre-order (BSPNode.Unpack / BSPLeaf.Unpack with
+    BSPType.Physics: internal nodes carry no polygon ids). `leaves` counts leaves for LeafIndex."""
+    if isinstance(node, BSPLeaf):
+        polys = node.polygons
+        out.append(struct.pack(f"<Iii4fI{len(polys)}H", TAG_LEAF, len(leaves), 1 if node.solid else 0,
+                               *node.sphere.center, node.sphere.radius, len(polys), *polys))
+        leaves.append(node)
+        return
+    out.append(_u32.pack(TAG_BPIN) + _4f.pack(*node.plane.normal, node.plane.d))
+    bsp_node(node.front, out, leaves)
+    bsp_node(node.back, out, leaves)
+    out.append(sphere(node.sphere.center, node.sphere.radius))
+
+
+def gfx_obj_physics(gfx_id: int, shape: BSPShape) -> bytes:
+    """FileTypes/GfxObj: a physics-only GfxObj from a scene BSP shape."""
+    index: dict[bytes, int] = {}  # a vertex's float32 bytes (exact bits: -0.0 and 0.0 differ) -> its id
+    vertices = []
+    poly_ids = []
+    pack3 = _3f.pack
+    for p in shape.polygons:
+        ids = []
+        for v in p.vertices:
+            key = pack3(*v)
+            i = index.get(key)
+            if i is None:
+                i = index[key] = len(vertices)
+                vertices.append(key)
+            ids.append(i)
+        poly_ids.append(ids)
+    out = [_u32.pack(gfx_id), _u32.pack(GFX_HAS_PHYSICS), compressed_u32(0), _vertex_array_packed(vertices),
+           compressed_u32(len(shape.polygons))]
+    for k, (p, ids) in enumerate(zip(shape.polygons, poly_ids)):
+        out.append(_u16.pack(k) + polygon(p, ids))
+    bsp_node(shape.root, out, [])
+    out.append(_3f.pack(0.0, 0.0, 0.0))  # SortCenter
+    return b"".join(out)
+
+
+def box_corners(lo, hi) -> list[tuple[float, float, float]]:
+    """The 8 corners of an axis-aligned box, corner k = (k&1 ? hi.x : lo.x, k&2 ? hi.y : lo.y, k&4 ? hi.z : lo.z)."""
+    return [(hi[0] if k & 1 else lo[0], hi[1] if k & 2 else lo[1], hi[2] if k & 4 else lo[2]) for k in range(8)]
+
+
+def shape_box(shape) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+    """(lo, hi) of a sphere's or cylsphere's axis-aligned box in object space, in float32."""
+    f = np.float32
+    if isinstance(shape, SphereShape):
+        c, r = shape.sphere.center, f(shape.sphere.radius)
+        return tuple(float(f(x) - r) for x in c), tuple(float(f(x) + r) for x in c)
+    lx, ly, lz = (f(x) for x in shape.low_point)
+    r, h = f(shape.radius), f(shape.height)
+    return (float(lx - r), float(ly - r), float(lz)), (float(lx + r), float(ly + r), float(lz + h))
+
+
+def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
+    """FileTypes/GfxObj with no physics and no drawing: only its vertex array (GfxObj.Init bounds it)."""
+    return b"".join((_u32.pack(gfx_id), _u32.pack(0), compressed_u32(0), vertex_array(vertices), _3f.pack(0.0, 0.0, 0.0)))
+
+
+def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0) -> bytes:
+    """FileTypes/SetupModel: flags 0, the parts, no holding locations, connection points or
+    placement frames, the cylspheres ((low point, radius, height)) and spheres ((centre, radius)),
+    Height and Radius 0, the step heights, zero sorting and selection spheres, no lights, no
+    default animation/script/motion table/sound table/script table."""
+    out = [_u32.pack(setup_id), _u32.pack(0), _u32.pack(len(parts))]
+    out += [_u32.pack(p) for p in parts]
+    out.append(_i32.pack(0) * 3)  # HoldingLocations, ConnectionPoints, PlacementFrames
+    out.append(_u32.pack(len(cylspheres)))
+    for low, radius, height in cylspheres:
+        out.append(_3f.pack(*low) + struct.pack("<2f", radius, height))
+    out.append(_u32.pack(len(spheres)))
+    for center, radius in spheres:
+        out.append(sphere(center, radius))
+    out.append(_4f.pack(0.0, 0.0, step_up, step_down))  # Height, Radius, StepUpHeight, StepDownHeight
+    out.append(sphere((0.0, 0.0, 0.0), 0.0) * 2)  # SortingSphere, SelectionSphere
+    out.append(_i32.pack(0))  # Lights
+    out.append(_u32.pack(0) * 5)  # DefaultAnimation, Script, MotionTable, SoundTable, ScriptTable
+    return b"".join(out)
+
+
+def static_records(obj: StaticObject, index: int) -> ObjectRecords:
+    """The DAT records static object number `index` (0-based, scene order) is made from."""
+    if not 0 <= index < MAX_OBJECTS:
+        raise ValueError(f"static object index {index} outside 0..{MAX_OBJECTS - 1}")
+    shape = obj.shape
+    gfx_id = GFX_OBJ_BASE + index
+    if isinstance(shape, BSPShape):
+        return ObjectRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, shape)),))
+    setup_id = SETUP_BASE + index
+    part = DatRecord(gfx_id, "GfxObj", gfx_obj_mesh(gfx_id, box_corners(*shape_box(shape))))
+    if isinstance(shape, SphereShape):
+        body = setup(setup_id, [gfx_id], spheres=[(shape.sphere.center, shape.sphere.radius)])
+    elif isinstance(shape, CylSphereShape):
+        body = setup(setup_id, [gfx_id], cylspheres=[(shape.low_point, shape.radius, shape.height)])
+    else:
+        raise TypeError(f"static object {obj.id:#010x}: unknown shape {type(shape).__name__}")
+    return ObjectRecords(setup_id, (part, DatRecord(setup_id, "Setup", body)))
+
+
+def mover_records(mover: Mover) -> ObjectRecords:
+    """The DAT records the mover is made from: its Setup (did) and the Setup's one part."""
+    part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
+    body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
+                 step_up=mover.step_up_height, step_down=mover.step_down_height)
+    return ObjectRecords(MOVER_SETUP_ID, (part, DatRecord(MOVER_SETUP_ID, "Setup", body)))
+
+
+__all__ = ["mover_records", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
+           "TAG_BPIN", "TAG_LEAF"]

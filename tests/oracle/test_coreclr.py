@@ -1,0 +1,52 @@
+"""The oracle on CoreCLR (lane `live_oracle`, with ACE_ASSEMBLY at a .NET build of ACE).
+
+pythonnet loads one runtime per process, so the CoreCLR lane is its own pytest invocation:
+`ACE_ASSEMBLY=/path/to/net10/ACE.Server.dll pytest tests/oracle`. Every other live test in this
+folder runs there too; these check what only CoreCLR has.
+"""
+
+import pytest
+
+from acconform.oracle import dotnet_host, facade_build, runtime
+
+from .scenes import PROBE
+
+pytestmark = pytest.mark.live_oracle
+
+
+@pytest.fixture(scope="session")
+def coreclr(live):
+    if live.location.runtime != "coreclr":
+        pytest.skip("the configured ACE is a mono build; run this lane with ACE_ASSEMBLY at a .NET build "
+                    "(its ACE.Server.runtimeconfig.json selects CoreCLR)")
+    return live
+
+
+def test_coreclr_runs_ace_on_the_installation_found_with_the_framework_the_build_asks_for(coreclr):
+    root = runtime.dotnet_root()
+    assert root is not None and root == coreclr.location.dotnet_root
+    (name, asked), = dotnet_host.required_frameworks(coreclr.location.runtime_config)[0]
+    running = coreclr.versions.runtime.removeprefix("coreclr .NET ")
+    assert running in dotnet_host.installed_frameworks(root.path, name)
+    assert running.split(".")[0] == asked.split(".")[0]
+
+
+def test_on_coreclr_the_facade_is_compiled_offline_with_the_sdk_and_cached(coreclr, monkeypatch, tmp_path):
+    cache, packages = tmp_path / "cache", tmp_path / "no-packages"
+    monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
+    monkeypatch.setenv("NUGET_PACKAGES", str(packages))  # an empty package folder and no package source
+    dll, how = facade_build.build(coreclr.ace)
+    tfm = dotnet_host.framework_tfm(coreclr.location.runtime_config)
+    assert dll is not None, how
+    assert dll.is_file() and dll.is_relative_to(cache) and how.startswith(f"compiled with the .NET SDK ({tfm})")
+    assert not packages.exists() or not any(packages.iterdir())
+    assert [p.name for p in dll.parent.iterdir()] == [dll.name]  # the throw-away project is gone
+    again, how = facade_build.build(coreclr.ace)
+    assert again == dll and how.startswith("cached")
+
+
+def test_on_coreclr_scenes_cross_into_net_through_native_entry_points(coreclr):
+    assert coreclr.path == "facade"
+    o = coreclr.run(PROBE["flat 1-step walk"])
+    assert o.error is None and o.ok and o.cell == 0xA9B40001
+    assert coreclr.last_case_micros > 0 and coreclr.last_transition_micros > 0

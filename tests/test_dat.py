@@ -1,0 +1,228 @@
+"""acconform/dat.py writes ACE.DatLoader's layouts: each record read back field by field.
+
+The reader here follows ACE.DatLoader's Unpack methods (FileTypes/GfxObj.cs, SetupModel.cs,
+Entity/CVertexArray.cs, SWVertex.cs, Polygon.cs, BSPNode.cs, BSPLeaf.cs) step by step, to the last
+byte: a record it cannot read to its end exactly fails. The live lane unpacks the same bytes with
+ACE's own Unpack (tests/oracle/test_live.py).
+"""
+
+from __future__ import annotations
+
+import struct
+
+import numpy as np
+import pytest
+
+from acconform import dat
+from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, Frame, PlaneRec, PolygonRec, Position,
+                             SphereRec, SphereShape, StaticObject)
+
+
+class DatReader:
+    def __init__(self, data: bytes):
+        self.data, self.pos = data, 0
+
+    def take(self, fmt: str):
+        vals = struct.unpack_from("<" + fmt, self.data, self.pos)
+        self.pos += struct.calcsize("<" + fmt)
+        return vals if len(vals) > 1 else vals[0]
+
+    def compressed_u32(self) -> int:  # BinaryReaderExtensions.ReadCompressedUInt32
+        b0 = self.take("B")
+        if not b0 & 0x80:
+            return b0
+        b1 = self.take("B")
+        if not b0 & 0x40:
+            return ((b0 & 0x7F) << 8) | b1
+        return ((((b0 & 0x3F) << 8) | b1) << 16) | self.take("H")
+
+    def tag(self) -> str:  # 4 ASCII bytes, reversed
+        return self.data[self.pos:self.pos + 4].decode("ascii")[::-1]
+
+    def end(self):
+        assert self.pos == len(self.data), f"{len(self.data) - self.pos} bytes left unread"
+
+
+def read_node(r: DatReader):
+    """BSPNode.ReadNode with BSPType.Physics: ("leaf", index, solid, sphere, polys) or
+    ("node", type, plane, pos, neg, sphere)."""
+    t = r.tag()
+    r.take("I")
+    if t == "LEAF":
+        index, solid = r.take("ii")
+        sph = r.take("4f")
+        n = r.take("I")
+        polys = r.take(f"{n}H") if n else ()
+        return ("leaf", index, solid, sph, tuple(polys) if n > 1 else ((polys,) if n else ()))
+    plane = r.take("4f")
+    pos = read_node(r) if t in ("BPnn", "BPIn", "BPIN", "BPnN") else None
+    neg = read_node(r) if t in ("BpIN", "BpnN", "BPIN", "BPnN") else None
+    return ("node", t, plane, pos, neg, r.take("4f"))
+
+
+def read_gfx_obj(data: bytes) -> dict:
+    r = DatReader(data)
+    out = {"id": r.take("I"), "flags": r.take("I")}
+    out["surfaces"] = [r.take("I") for _ in range(r.compressed_u32())]
+    vtype, n = r.take("iI")
+    assert vtype == 1
+    verts = {}
+    for _ in range(n):
+        key, nuv = r.take("HH")
+        origin, normal = r.take("3f"), r.take("3f")
+        uvs = [r.take("2f") for _ in range(nuv)]
+        verts[key] = (origin, normal, uvs)
+    out["vertices"] = verts
+    if out["flags"] & 1:
+        polys = {}
+        for _ in range(r.compressed_u32()):
+            key = r.take("H")
+            npts, stip, sides, pos_s, neg_s = r.take("BBihh")
+            ids = [r.take("h") for _ in range(npts)]
+            if not stip & 4:
+                r.take(f"{npts}B")
+            if sides == 2 and not stip & 8:  # CullMode.Clockwise
+                r.take(f"{npts}B")
+            polys[key] = (stip, sides, pos_s, neg_s, ids)
+        out["polygons"] = polys
+        out["tree"] = read_node(r)
+    out["sort_center"] = r.take("3f")
+    assert not out["flags"] & 2 and not out["flags"] & 8
+    r.end()
+    return out
+
+
+def read_setup(data: bytes) -> dict:
+    r = DatReader(data)
+    out = {"id": r.take("I"), "flags": r.take("I")}
+    n = r.take("I")
+    out["parts"] = [r.take("I") for _ in range(n)]
+    assert out["flags"] & 3 == 0  # no ParentIndex, no DefaultScale
+    assert r.take("iii") == (0, 0, 0)  # HoldingLocations, ConnectionPoints, PlacementFrames
+    out["cylspheres"] = [r.take("5f") for _ in range(r.take("I"))]
+    out["spheres"] = [r.take("4f") for _ in range(r.take("I"))]
+    out["dims"] = r.take("4f")
+    out["sorting"], out["selection"] = r.take("4f"), r.take("4f")
+    assert r.take("i") == 0  # Lights
+    out["dids"] = r.take("5I")
+    r.end()
+    return out
+
+
+def f32(x):
+    return float(np.float32(x))
+
+
+SQUARE = ((0.0, 0.0, 1.0), (2.0, 0.0, 1.0), (2.0, 2.0, 1.0), (0.0, 2.0, 1.0))
+WALL = ((0.0, 0.0, 0.0), (0.0, 2.0, 0.0), (0.0, 2.0, f32(2.3)), (0.0, 0.0, f32(2.3)))
+
+
+def bsp_object(root, polygons=(PolygonRec(SQUARE, 1), PolygonRec(WALL, 2))):
+    return StaticObject(0x70000010, Position(0xA9B40001, Frame((10.0, 12.0, 20.0))),
+                        BSPShape(polygons, root, SphereRec((1.0, 1.0, 1.0), 2.0)))
+
+
+LEAF_A = BSPLeaf((0,), True, SphereRec((1.0, 1.0, 1.0), f32(1.5)))
+LEAF_B = BSPLeaf((0, 1), False, SphereRec((0.5, 1.0, 1.0), 1.0))
+LEAF_EMPTY = BSPLeaf((), False, SphereRec((0.0, 0.0, 0.0), 0.0))
+TREE = BSPNode(PlaneRec((1.0, 0.0, 0.0), -1.0), SphereRec((1.0, 1.0, 1.0), 2.0), LEAF_A,
+               BSPNode(PlaneRec((0.0, 0.0, 1.0), f32(-0.7)), SphereRec((0.5, 1.0, 1.0), f32(1.25)), LEAF_B, LEAF_EMPTY))
+
+
+def test_a_bsp_object_is_one_physics_gfx_obj_whose_id_makeobject_takes():
+    recs = dat.static_records(bsp_object(TREE), 4)
+    assert recs.did == 0x01000005 and [(r.id, r.kind) for r in recs.records] == [(0x01000005, "GfxObj")]
+    g = read_gfx_obj(recs.records[0].data)
+    assert g["id"] == 0x01000005 and g["flags"] == 1 and g["surfaces"] == [] and g["sort_center"] == (0.0, 0.0, 0.0)
+
+
+def test_gfx_obj_vertices_are_shared_by_exact_bits_in_first_appearance_order():
+    g = read_gfx_obj(dat.static_records(bsp_object(TREE), 0).records[0].data)
+    want = [SQUARE[0], SQUARE[1], SQUARE[2], SQUARE[3], WALL[0], WALL[1], WALL[2], WALL[3]]
+    # WALL[0] = (0,0,0) differs from SQUARE[0] = (0,0,1): nothing shared here; -0.0 and 0.0 stay apart too
+    assert [g["vertices"][k][0] for k in range(8)] == [tuple(map(f32, v)) for v in want]
+    assert all(n == (0.0, 0.0, 0.0) and uv == [] for _, n, uv in g["vertices"].values())
+    shared = PolygonRec((SQUARE[0], SQUARE[1], (-0.0, 0.0, 1.0)), 0)
+    g2 = read_gfx_obj(dat.static_records(bsp_object(LEAF_A, (PolygonRec(SQUARE, 0), shared)), 0).records[0].data)
+    assert len(g2["vertices"]) == 5 and g2["polygons"][1][4] == [0, 1, 4]
+
+
+def test_gfx_obj_polygons_keep_scene_index_winding_and_sides_without_uv_indices():
+    g = read_gfx_obj(dat.static_records(bsp_object(TREE), 0).records[0].data)
+    assert g["polygons"] == {0: (0x0C, 1, 0, 0, [0, 1, 2, 3]), 1: (0x0C, 2, 0, 0, [4, 5, 6, 7])}  # None, Clockwise
+
+
+def test_the_physics_tree_is_written_pre_order_with_node_spheres_leaf_ordinals_and_polygon_ids():
+    tree = read_gfx_obj(dat.static_records(bsp_object(TREE), 0).records[0].data)["tree"]
+    a = ("leaf", 0, 1, (1.0, 1.0, 1.0, f32(1.5)), (0,))
+    b = ("leaf", 1, 0, (0.5, 1.0, 1.0, 1.0), (0, 1))
+    empty = ("leaf", 2, 0, (0.0, 0.0, 0.0, 0.0), ())
+    inner = ("node", "BPIN", (0.0, 0.0, 1.0, f32(-0.7)), b, empty, (0.5, 1.0, 1.0, f32(1.25)))
+    assert tree == ("node", "BPIN", (1.0, 0.0, 0.0, -1.0), a, inner, (1.0, 1.0, 1.0, 2.0))
+
+
+def test_a_tree_whose_root_is_a_leaf_is_written_as_a_leaf():
+    tree = read_gfx_obj(dat.static_records(bsp_object(LEAF_B), 0).records[0].data)["tree"]
+    assert tree == ("leaf", 0, 0, (0.5, 1.0, 1.0, 1.0), (0, 1))
+
+
+def test_a_sphere_is_a_setup_with_one_part_whose_mesh_is_the_spheres_box():
+    obj = StaticObject(0x70000002, Position(0xA9B40001, Frame((15.0, 12.0, 20.0))),
+                       SphereShape(SphereRec((0.0, 0.0, 0.5), f32(1.1))))
+    recs = dat.static_records(obj, 2)
+    assert recs.did == 0x02000003 and [(r.id, r.kind) for r in recs.records] == [(0x01000003, "GfxObj"), (0x02000003, "Setup")]
+    s = read_setup(recs.records[1].data)
+    assert s["parts"] == [0x01000003] and s["flags"] == 0 and s["cylspheres"] == []
+    assert s["spheres"] == [(0.0, 0.0, 0.5, f32(1.1))]
+    assert s["dims"] == (0.0,) * 4 and s["sorting"] == s["selection"] == (0.0,) * 4 and s["dids"] == (0,) * 5
+    g = read_gfx_obj(recs.records[0].data)
+    assert g["flags"] == 0 and "polygons" not in g
+    r = np.float32(1.1)
+    lo = (float(-r), float(-r), float(np.float32(0.5) - r))
+    hi = (float(r), float(r), float(np.float32(0.5) + r))
+    corners = [g["vertices"][k][0] for k in range(8)]
+    assert corners[0] == lo and corners[7] == hi and corners[1] == (hi[0], lo[1], lo[2]) and corners[6] == (lo[0], hi[1], hi[2])
+
+
+def test_a_cylsphere_is_a_setup_whose_part_mesh_spans_its_radius_and_height():
+    obj = StaticObject(0x70000001, Position(0xA9B40001, Frame((15.0, 12.0, 20.0))), CylSphereShape((1.0, 0.0, 0.25), 0.5, 2.0))
+    recs = dat.static_records(obj, 0)
+    s = read_setup(recs.records[1].data)
+    assert s["cylspheres"] == [(1.0, 0.0, 0.25, 0.5, 2.0)] and s["spheres"] == [] and s["parts"] == [0x01000001]
+    corners = [v[0] for v in read_gfx_obj(recs.records[0].data)["vertices"].values()]
+    assert corners[0] == (0.5, -0.5, 0.25) and corners[7] == (1.5, 0.5, 2.25)
+
+
+@pytest.mark.parametrize("n,size", [(0, 1), (0x7F, 1), (0x80, 2), (0x3FFF, 2), (0x4000, 4), (0x3FFFFFFF, 4)])
+def test_compressed_counts_read_back_at_every_width(n, size):
+    b = dat.compressed_u32(n)
+    assert len(b) == size and DatReader(b).compressed_u32() == n
+
+
+def test_a_many_polygon_gfx_obj_counts_its_polygons_in_two_bytes():
+    polys = tuple(PolygonRec(((float(i), 0.0, 0.0), (float(i), 1.0, 0.0), (float(i), 1.0, 1.0)), 0) for i in range(200))
+    leaf = BSPLeaf(tuple(range(200)), True, SphereRec((100.0, 0.5, 0.5), 120.0))
+    g = read_gfx_obj(dat.static_records(bsp_object(leaf, polys), 0).records[0].data)
+    assert len(g["polygons"]) == 200 and g["tree"][4] == tuple(range(200))
+
+
+def test_record_ids_stay_inside_their_dat_types_range():
+    with pytest.raises(ValueError, match="index"):
+        dat.static_records(bsp_object(TREE), 0xFFFFFF)
+    assert dat.static_records(bsp_object(TREE), 0xFFFFFE).did == 0x01FFFFFF
+
+
+def test_the_mover_is_a_setup_with_its_spheres_and_step_heights_and_one_empty_mesh_part():
+    from acconform.scene import Mover
+
+    spheres = (SphereRec((0.0, 0.0, 0.48), 0.48), SphereRec((0.0, 0.0, f32(1.35)), 0.48))
+    m = Mover(spheres, Position(0xA9B40001, Frame((12.0, 12.0, 20.0))), Position(0xA9B40001, Frame((13.0, 12.0, 20.0))),
+              f32(0.4), f32(1.5))
+    recs = dat.mover_records(m)
+    assert recs.did == 0x02000000 and [(r.id, r.kind) for r in recs.records] == [(0x01000000, "GfxObj"), (0x02000000, "Setup")]
+    s = read_setup(recs.records[1].data)
+    assert s["parts"] == [0x01000000] and s["cylspheres"] == []
+    assert s["spheres"] == [(0.0, 0.0, f32(0.48), f32(0.48)), (0.0, 0.0, f32(1.35), f32(0.48))]
+    assert s["dims"] == (0.0, 0.0, f32(0.4), 1.5)  # Height and Radius 0: ACE's transition never reads them
+    g = read_gfx_obj(recs.records[0].data)
+    assert g["flags"] == 0 and g["vertices"] == {}
