@@ -129,19 +129,38 @@ def harness_rows(calls: Counter):
     return [(h, calls.get(key, 0)) for key, h in HARNESS.items()]
 
 
+def anchor_labels(anchors) -> dict[str, str]:
+    """qualname -> a name for each anchor that no other anchor shares: the retail name (else the
+    ACE method), with the port routine's Class.method added where overloads share it."""
+    def base(a):
+        return a.retail or a.ace
+
+    seen = Counter(base(a) for a in anchors)
+    labels = {}
+    for a in anchors:
+        label = base(a)
+        if seen[label] > 1:
+            label = f"{label} [{'.'.join(a.qualname.split('.')[-2:])}]"
+        labels[a.qualname] = label
+    counts = Counter(labels.values())
+    return {q: (f"{lab} [{q}]" if counts[lab] > 1 else lab) for q, lab in labels.items()}
+
+
 def render_table(calls: Counter, unwrapped=()) -> list[str]:
-    """The `coverage --anchors` table: retail name, ACE File.cs:Method, calls; then the summary."""
+    """The `coverage --anchors` table: one row per anchor (a name no other row shares), its ACE
+    File.cs:Method and calls; then the summary, naming the anchors never reached the same way."""
     rows = anchor_rows(calls)
-    width = max([len(a.retail or "-") for a, _ in rows] + [len("retail anchor")])
+    labels = anchor_labels([a for a, _ in rows])
+    width = max([len(labels[a.qualname]) for a, _ in rows] + [len("retail anchor")])
     ace_w = max([len(a.ace) for a, _ in rows] + [len("ACE")])
     out = [f"{'retail anchor':{width}}  {'ACE':{ace_w}}  {'calls':>9}"]
     for a, n in rows:
-        out.append(f"{a.retail or '-':{width}}  {a.ace:{ace_w}}  {n:9d}")
+        out.append(f"{labels[a.qualname]:{width}}  {a.ace:{ace_w}}  {n:9d}")
     reached = sum(1 for _, n in rows if n)
     never = [a for a, n in rows if not n]
     out.append(f"{reached} of {len(rows)} anchors reached")
     if never:
-        out.append(f"never reached ({len(never)}): " + ", ".join(a.retail or a.ace for a in never))
+        out.append(f"never reached ({len(never)}): " + ", ".join(labels[a.qualname] for a in never))
     glue = harness_rows(calls)
     if glue:
         name_w = max(len(h.qualname) for h, _ in glue)

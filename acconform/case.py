@@ -121,6 +121,51 @@ def load_document(path: str | Path):
     return parse_document(parse_json_text(text, str(path)), str(path))
 
 
+def is_lines_file(path: str | Path) -> bool:
+    """A JSON-lines file (a corpus shard, ``.jsonl.gz``, or plain ``.jsonl``): one document per line."""
+    return str(path).endswith((".jsonl.gz", ".jsonl"))
+
+
+def jsonl_lines(path: str | Path):
+    """(line number, line) for each non-empty line of a JSON-lines file, gzip'd when it ends in .gz.
+
+    InvalidScene names the file and the last line read when it is missing, truncated or corrupt.
+    """
+    import gzip
+    import zlib
+
+    path = Path(path)
+    lineno = 0
+    try:
+        opener = gzip.open if path.name.endswith(".gz") else open
+        with opener(path, "rt", encoding="utf-8") as f:
+            for lineno, line in enumerate(f, 1):
+                if line.strip():
+                    yield lineno, line
+    except FileNotFoundError:
+        raise InvalidScene("", "no such file", str(path)) from None
+    except (OSError, EOFError, zlib.error, UnicodeDecodeError) as e:
+        why = "truncated" if isinstance(e, EOFError) else f"corrupt ({e})"
+        raise InvalidScene("", f"{why} after line {lineno}; the rest cannot be read", str(path)) from None
+
+
+def iter_documents(path: str | Path):
+    """(where, document) for each document in `path`: one for a JSON file, one per line for a
+    JSON-lines shard (where = "FILE line N"). A bad line raises InvalidScene naming it."""
+    import json
+
+    if not is_lines_file(path):
+        yield str(path), load_document(path)
+        return
+    for lineno, line in jsonl_lines(path):
+        where = f"{path} line {lineno}"
+        try:
+            doc = json.loads(line)
+        except ValueError as e:
+            raise InvalidScene("", f"not JSON ({e})", where) from None
+        yield where, parse_document(doc, where)
+
+
 def write_document(path: str | Path, doc) -> Path:
     """Write a record's JSON atomically (temp file then rename): a crash never leaves half a file."""
     path = Path(path)

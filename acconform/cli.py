@@ -27,6 +27,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "coverage": ("acconform.commands.coverage", "how often each port branch fires per 1,000 generated scenes"),
     "bench": ("acconform.commands.bench", "run time against error: the port in exact and fast mode (and the oracle), per kind"),
     "stress": ("acconform.commands.stress", "numerical stability: ULP nudges, borders, FloorZ, world edges; port vs live ACE"),
+    "run": ("acconform.commands.run", "run one scene through the port (or --impl) and print its outcome"),
+    "serve": ("acconform.commands.serve", "the built-in port as an implementation speaking acconform.protocol/1 on stdin/stdout"),
+    "schema": ("acconform.commands.schema", "print the JSON Schema of scenes or outcomes, generated from the records"),
 }
 
 
@@ -59,6 +62,21 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print(f"acconform {args.command}: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # the reader went away (`acconform show FILE | head`): stop quietly, as other tools do
+        _silence_stdout()
+        return 0
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null so Python's exit-time flush does not raise on the closed pipe again."""
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
 
 
 if __name__ == "__main__":  # pragma: no cover

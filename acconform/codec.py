@@ -42,14 +42,27 @@ def dumps_compact(obj: Any) -> str:
     return json.dumps(obj, separators=(",", ":"), allow_nan=False)
 
 
+F32_MAX = float(np.finfo(np.float32).max)
+
+
 class Reader:
     """Walks a parsed JSON document, checking types and naming the field path in every error."""
 
-    __slots__ = ("value", "path")
+    __slots__ = ("value", "_path", "_parent", "_key")
 
-    def __init__(self, value: Any, path: str = ""):
+    def __init__(self, value: Any, path: str = "", parent: "Reader | None" = None, key=None):
         self.value = value
-        self.path = path
+        # a child's path string is built only when asked for (an error message): reading a scene
+        # makes a Reader per number, and formatting every path was a third of the reading time
+        self._path = path if parent is None else None
+        self._parent = parent
+        self._key = key
+
+    @property
+    def path(self) -> str:
+        if self._path is None:
+            self._path = self._parent._child_path(self._key)
+        return self._path
 
     def fail(self, problem: str):
         raise InvalidScene(self.path, problem)
@@ -74,13 +87,12 @@ class Reader:
         if isinstance(key, str):
             if key not in self.value:
                 raise InvalidScene(self._child_path(key), "missing required field")
-            return Reader(self.value[key], self._child_path(key))
-        return Reader(self.value[key], self._child_path(key))
+        return Reader(self.value[key], "", self, key)
 
     def get(self, key: str) -> "Reader | None":
         if key not in self.value or self.value[key] is None:
             return None
-        return Reader(self.value[key], self._child_path(key))
+        return Reader(self.value[key], "", self, key)
 
     def list(self, count: int | None = None, min_count: int | None = None, max_count: int | None = None) -> list["Reader"]:
         if not isinstance(self.value, list):
@@ -92,10 +104,12 @@ class Reader:
             self.fail(f"expected at least {min_count} values, got {n}")
         if max_count is not None and n > max_count:
             self.fail(f"expected at most {max_count} values, got {n}")
-        return [Reader(v, f"{self.path}[{i}]") for i, v in enumerate(self.value)]
+        return [Reader(v, "", self, i) for i, v in enumerate(self.value)]
 
     def f32(self, allow_nonfinite: bool = False) -> float:
         v = self.value
+        if type(v) is float and -F32_MAX < v < F32_MAX:  # the common case: rounds to a finite float32
+            return float(np.float32(v))
         if isinstance(v, str) and allow_nonfinite and v.lower().startswith("0x"):
             try:
                 bits = int(v, 16)
@@ -118,7 +132,7 @@ class Reader:
 
     def int_(self, lo: int | None = None, hi: int | None = None) -> int:
         v = self.value
-        if isinstance(v, bool) or not isinstance(v, int):
+        if type(v) is not int:  # bool is a subclass of int, not int itself
             self.fail(f"expected an integer, got {_kind(v)}")
         if (lo is not None and v < lo) or (hi is not None and v > hi):
             self.fail(f"expected an integer in [{lo}, {hi}], got {v}")

@@ -16,6 +16,11 @@ Two kinds of campaign:
 Deterministic for a seed (and a worker count): worker w draws with seed (seed, w). With
 ``keep_going`` a campaign goes on after a difference, ignoring differences with the same
 *signature* (the set of differing field paths) so each shrink finds a new kind of failure.
+
+A port backend may name scenes it cannot run (``port.unsupported(scene) -> reason or None``, as
+an implementation under test does from its handshake): those are skipped and counted by reason
+in `Result.skipped`, never compared. Ctrl-C ends a campaign early with what it has found so far
+(`Result.interrupted`); worker processes ignore SIGINT and stop when the parent tells them to.
 """
 
 from __future__ import annotations
@@ -25,7 +30,9 @@ import gc
 import hashlib
 import multiprocessing
 import os
+import signal
 import sys
+import tempfile
 import time
 from collections import Counter
 from dataclasses import dataclass, field
@@ -61,10 +68,18 @@ class Result:
     elapsed: float = 0.0
     source: str = "generative"
     timings: Counter = field(default_factory=Counter)  # seconds in "port", "oracle", "compare"
+    skipped: Counter = field(default_factory=Counter)  # scenes the port cannot run, by reason
+    interrupted: bool = False  # Ctrl-C ended the campaign early
+    failures_fallback: str | None = None  # why case files went to a temporary directory instead
+    versions: Versions | None = None  # of the oracle (None: per-process oracle, not asked in this process)
 
     @property
     def ok(self) -> bool:
         return not self.found
+
+    @property
+    def compared(self) -> int:
+        return self.cases - sum(self.skipped.values())
 
 
 def scene_hash(scene: Scene) -> str:
@@ -96,8 +111,18 @@ def versions_of(port: Backend, oracle: Backend) -> Versions:
     return Versions(__version__, str(getattr(owner, "name", "") or ""), "")
 
 
-def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: Counter):
-    """One scene through both backends and the comparator, adding each step's time to `timings`."""
+def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: Counter,
+             skipped: Counter | None = None):
+    """One scene through both backends and the comparator, adding each step's time to `timings`.
+
+    None (and the reason counted in `skipped`) when the port says it cannot run the scene.
+    """
+    unsupported = getattr(port, "unsupported", None)
+    if unsupported is not None and skipped is not None:
+        why = unsupported(scene)
+        if why:
+            skipped[why] += 1
+            return None
     t0 = time.perf_counter()
     a = guarded(port, scene)
     t1 = time.perf_counter()
@@ -118,6 +143,44 @@ def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions) -> Cas
 def write_case(case: Case, failures_dir: str | Path) -> Path:
     path = Path(failures_dir) / f"case-{scene_hash(case.scene)[:12]}.json"
     return write_document(path, case)
+
+
+def check_writable(directory: str | Path, what: str = "--failures") -> Path:
+    """`directory`, created if need be, after writing and removing a probe file in it; else exit 2."""
+    d = Path(directory)
+    try:
+        d.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=d, prefix=".acconform-probe-"):
+            pass
+    except OSError as e:
+        raise AcconformError(f"{what} {d}: cannot write there ({e.strerror or e}); choose a writable directory") from None
+    return d
+
+
+def check_output_file(path: str | Path, option: str) -> Path:
+    """A file a job will write when it ends, checked before it starts: not a directory, in a writable one."""
+    p = Path(path)
+    if p.is_dir():
+        raise AcconformError(f"{option} {p}: is a directory; give a file name")
+    if not p.parent.is_dir():
+        raise AcconformError(f"{option} {p}: no directory {p.parent}")
+    check_writable(p.parent, f"{option} {p}:")
+    return p
+
+
+def save_cases(result: "Result", failures_dir: str | Path) -> None:
+    """Write every found case; if `failures_dir` fails, fall back to a temporary directory (never lose one)."""
+    target = Path(failures_dir)
+    for f in result.found:
+        try:
+            f.path = write_case(f.case, target)
+        except OSError as e:
+            if result.failures_fallback is not None:
+                raise
+            fallback = Path(tempfile.mkdtemp(prefix="acconform-failures-"))
+            result.failures_fallback = f"could not write to {target} ({e.strerror or e}); case files are in {fallback}"
+            target = fallback
+            f.path = write_case(f.case, target)
 
 
 class _Stop(BaseException):
@@ -193,7 +256,9 @@ def campaign_gc():
 
 
 def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mode: str, keep_going: bool,
-                database, tick, should_stop, timings: Counter, versions: Versions) -> tuple[int, list[Found]]:
+                database, tick, should_stop, timings: Counter, skipped: Counter, versions: Versions,
+                found: list[Found]) -> int:
+    """Draw up to `n` scenes; append each new kind of difference (shrunk) to `found`; return scenes run."""
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
     from hypothesis import seed as hseed
     from hypothesis.database import DirectoryBasedExampleDatabase
@@ -203,7 +268,6 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
 
     kinds = check_kinds(kinds)
     db = DirectoryBasedExampleDatabase(str(database)) if database else None
-    found: list[Found] = []
     known: set[tuple[str, ...]] = set()
     done = 0
     round_ = 0
@@ -222,7 +286,10 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
                 raise _Stop
             ran[0] += 1
             tick(1)
-            a, b, diffs = run_case(port, oracle, scene, mode, timings)
+            ran_case = run_case(port, oracle, scene, mode, timings, skipped)
+            if ran_case is None:
+                return
+            a, b, diffs = ran_case
             if diffs:
                 sig = signature(diffs)
                 if sig not in known:
@@ -242,31 +309,44 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
             found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions), None, sig, True))
             new = True
         except _Stop:
-            return done + ran[0], found
+            return done + ran[0]
         done += ran[0]
         round_ += 1
         # stop: first difference and not keep_going; or a clean round (the budget is spent or
         # Hypothesis ran out of scenes); or a round that ran nothing
         if (new and not keep_going) or not new or ran[0] == 0:
             break
-    return done, found
+    return done
 
 
 def _replay(port: Backend, oracle: Backend, scenes: Iterable[Scene], *, mode: str, keep_going: bool, tick,
-            should_stop, timings: Counter, versions: Versions, seed) -> tuple[int, list[Found]]:
-    found: list[Found] = []
+            should_stop, timings: Counter, skipped: Counter, versions: Versions, seed, found: list[Found]) -> int:
+    """Replay `scenes` as they are; append each difference (unshrunk) to `found`; return scenes run.
+
+    A port that can take a scene ahead (`port.prefetch`, an implementation process) is sent the
+    next scene before the current answer is read, so it computes while this process compares.
+    """
     done = 0
-    for scene in scenes:
+    scenes = list(scenes)
+    prefetch = getattr(port, "prefetch", None)
+    if prefetch is not None and scenes:
+        prefetch(scenes[0])
+    for i, scene in enumerate(scenes):
         if should_stop():
             break
         done += 1
         tick(1)
-        a, b, diffs = run_case(port, oracle, scene, mode, timings)
+        if prefetch is not None and i + 1 < len(scenes):
+            prefetch(scenes[i + 1])
+        ran_case = run_case(port, oracle, scene, mode, timings, skipped)
+        if ran_case is None:
+            continue
+        a, b, diffs = ran_case
         if diffs:
             found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions), None, signature(diffs), False))
             if not keep_going:
                 break
-    return done, found
+    return done
 
 
 # ---------------------------------------------------------------- workers
@@ -274,7 +354,12 @@ def _replay(port: Backend, oracle: Backend, scenes: Iterable[Scene], *, mode: st
 _SHARED: dict = {}
 
 
-def _worker(w: int) -> tuple[int, list[dict], dict, list[bool]]:
+def _ignore_sigint() -> None:
+    """Pool initializer: Ctrl-C is the parent's to handle (it tells the workers to stop)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _worker(w: int) -> tuple[int, list[dict], dict, list[bool], dict]:
     s = _SHARED
     counter, stop = s["counter"], s["stop"]
 
@@ -283,28 +368,32 @@ def _worker(w: int) -> tuple[int, list[dict], dict, list[bool]]:
             counter.value += k
 
     timings: Counter = Counter()
+    skipped: Counter = Counter()
+    found: list[Found] = []
     if s["versions"] is None:  # a per-process oracle: this worker loads its own runtime
         s["versions"] = versions_of(s["port"], s["oracle"])
     with campaign_gc():
-        done, found = _worker_campaign(w, s, tick, timings)
+        done = _worker_campaign(w, s, tick, timings, skipped, found)
     if found and not s["keep_going"]:
         stop.set()
-    return done, [f.case.to_json() for f in found], dict(timings), [f.shrunk for f in found]
+    close = getattr(s["port"], "close", None)
+    if close is not None:
+        close()  # this worker's implementation process
+    return done, [f.case.to_json() for f in found], dict(timings), [f.shrunk for f in found], dict(skipped)
 
 
-def _worker_campaign(w: int, s: dict, tick, timings: Counter):
+def _worker_campaign(w: int, s: dict, tick, timings: Counter, skipped: Counter, found: list[Found]) -> int:
     stop = s["stop"]
     if s["replay"] is not None:
         mine = [sc for i, sc in enumerate(s["replay"]) if i % s["workers"] == w]
-        done, found = _replay(s["port"], s["oracle"], mine, mode=s["mode"], keep_going=s["keep_going"], tick=tick,
-                              should_stop=lambda: stop.is_set(), timings=timings, versions=s["versions"],
-                              seed=s["seed"])
-    else:
-        n = s["n"] // s["workers"] + (1 if w < s["n"] % s["workers"] else 0)
-        done, found = _generative(s["port"], s["oracle"], kinds=s["kinds"], n=n, seed=s["seed"] * 1000 + w,
-                                  mode=s["mode"], keep_going=s["keep_going"], database=s["database"], tick=tick,
-                                  should_stop=lambda: stop.is_set(), timings=timings, versions=s["versions"])
-    return done, found
+        return _replay(s["port"], s["oracle"], mine, mode=s["mode"], keep_going=s["keep_going"], tick=tick,
+                       should_stop=lambda: stop.is_set(), timings=timings, skipped=skipped, versions=s["versions"],
+                       seed=s["seed"], found=found)
+    n = s["n"] // s["workers"] + (1 if w < s["n"] % s["workers"] else 0)
+    return _generative(s["port"], s["oracle"], kinds=s["kinds"], n=n, seed=s["seed"] * 1000 + w,
+                       mode=s["mode"], keep_going=s["keep_going"], database=s["database"], tick=tick,
+                       should_stop=lambda: stop.is_set(), timings=timings, skipped=skipped, versions=s["versions"],
+                       found=found)
 
 
 def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, seed: int = 0, mode: str = "exact",
@@ -326,25 +415,29 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
     bar = Progress(total, progress)
     start = time.monotonic()
     workers = max(1, min(workers, total or 1))
-    result = Result(source="replay" if replay_list is not None else "generative")
+    result = Result(source="replay" if replay_list is not None else "generative", versions=versions)
 
     if workers == 1:
         count = [0]
 
         def tick(k):
             count[0] += k
-            bar.update(count[0], 0)
+            bar.update(count[0], len(result.found))
 
-        timings: Counter = Counter()
-        with campaign_gc():
-            if replay_list is not None:
-                done, found = _replay(port, oracle, replay_list, mode=mode, keep_going=keep_going, tick=tick,
-                                      should_stop=lambda: False, timings=timings, versions=versions, seed=seed)
-            else:
-                done, found = _generative(port, oracle, kinds=kinds, n=n, seed=seed, mode=mode,
-                                          keep_going=keep_going, database=database, tick=tick,
-                                          should_stop=lambda: False, timings=timings, versions=versions)
-        result.cases, result.found, result.timings = done, found, timings
+        try:
+            with campaign_gc():
+                if replay_list is not None:
+                    result.cases = _replay(port, oracle, replay_list, mode=mode, keep_going=keep_going, tick=tick,
+                                           should_stop=lambda: False, timings=result.timings, skipped=result.skipped,
+                                           versions=versions, seed=seed, found=result.found)
+                else:
+                    result.cases = _generative(port, oracle, kinds=kinds, n=n, seed=seed, mode=mode,
+                                               keep_going=keep_going, database=database, tick=tick,
+                                               should_stop=lambda: False, timings=result.timings,
+                                               skipped=result.skipped, versions=versions, found=result.found)
+        except KeyboardInterrupt:
+            result.interrupted = True
+            result.cases = max(count[0] - 1, 0)  # the case Ctrl-C cut short was not compared
     else:
         ctx = multiprocessing.get_context("fork")
         counter = ctx.Value("q", 0)
@@ -353,17 +446,25 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                        database=database, versions=versions, replay=replay_list, workers=workers, counter=counter,
                        stop=stop)
         try:
-            with ctx.Pool(workers) as pool:
+            with ctx.Pool(workers, initializer=_ignore_sigint) as pool:
                 pending = pool.map_async(_worker, range(workers))
-                while not pending.ready():
-                    pending.wait(0.2)
-                    bar.update(counter.value, 0)
-                outs = pending.get()
+                while True:
+                    try:
+                        while not pending.ready():
+                            pending.wait(0.2)
+                            bar.update(counter.value, 0)
+                        outs = pending.get()
+                        break
+                    except KeyboardInterrupt:
+                        # tell the workers to stop; they return what they have so far
+                        result.interrupted = True
+                        stop.set()
         finally:
             _SHARED.clear()
-        for done, cases, timings, shrunk in outs:
+        for done, cases, timings, shrunk, skipped in outs:
             result.cases += done
             result.timings.update(timings)
+            result.skipped.update(skipped)
             for doc, sh in zip(cases, shrunk):
                 case = Case.from_json(doc)
                 diffs = compare(case.port, case.oracle, mode)
@@ -371,8 +472,7 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
         if not keep_going:
             result.found = result.found[:1]
     if failures_dir is not None:
-        for f in result.found:
-            f.path = write_case(f.case, failures_dir)
+        save_cases(result, failures_dir)
     result.elapsed = time.monotonic() - start
     bar.close(result.cases, len(result.found))
     return result

@@ -36,9 +36,10 @@ CLOCK = time.process_time
 
 def load_corpus(kind: str, n: int):
     from acconform.case import parse_document
+    from acconform.oracle import DEFAULT_CORPUS
 
     out = []
-    for path in sorted((ROOT / "tests/data/corpus").glob(f"{kind}-*.jsonl.gz")):
+    for path in sorted(DEFAULT_CORPUS.glob(f"{kind}-*.jsonl.gz")):
         with gzip.open(path, "rt", encoding="utf-8") as f:
             for line in f:
                 rec = parse_document(json.loads(line))

@@ -2,7 +2,7 @@
 
 `get_oracle(ace=None, runtime=None, corpus=None)` returns the live oracle when an ACE assembly
 is configured (``--ace``, ``ACE_ASSEMBLY``, or the user config file; see oracle/config.py) and
-otherwise the recorded oracle replaying `corpus` (default: the repository's tests/data/corpus).
+otherwise the recorded oracle replaying `corpus` (default: DEFAULT_CORPUS, the committed corpus).
 This package is the only one that imports pythonnet, and only when the live oracle is made.
 """
 
@@ -16,7 +16,12 @@ from ..errors import OracleUnavailable
 from ..outcome import Outcome
 from ..scene import Scene
 
-DEFAULT_CORPUS = Path(__file__).resolve().parent.parent / "tests" / "data" / "corpus"
+_ROOT = Path(__file__).resolve().parent.parent  # a checkout's root, or the installed acconform package
+# The recorded corpus: tests/data/corpus in a checkout (and an editable install); an installed
+# acconform carries the same files as package data, acconform/corpus (pyproject.toml). The one
+# definition: every command, test and script that needs the default corpus imports this.
+DEFAULT_CORPUS = next((p for p in (_ROOT / "tests" / "data" / "corpus", _ROOT / "corpus") if p.is_dir()),
+                      _ROOT / "corpus")
 
 
 @runtime_checkable

@@ -30,6 +30,9 @@ def add_arguments(p) -> None:
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
     p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
     p.add_argument("--json", default=None, metavar="FILE", help="also write the figures as JSON")
+    from ..impl import add_arguments as impl_arguments
+
+    impl_arguments(p)
 
 
 # ---------------------------------------------------------------- outcome leaves (shared with stress)
@@ -140,12 +143,17 @@ def _scenes(args, kinds):
     return out, oracle
 
 
-def measure_kind(scenes, oracle=None) -> dict:
-    """Every figure for one kind's scenes: timings and the three comparisons."""
+def measure_kind(scenes, oracle=None, run_scene=None) -> dict:
+    """Every figure for one kind's scenes: timings and the three comparisons.
+
+    `run_scene(scene, mode=...)` is the implementation measured (default: the built-in port).
+    """
     import time
 
     from ..numerics import runtime_named
-    from ..port.run import run_scene
+
+    if run_scene is None:
+        from ..port.run import run_scene
 
     # the port computes as the ACE it is compared with (mono's arithmetic without an oracle)
     rt = runtime_named(oracle.versions.runtime) if oracle is not None else "mono"
@@ -239,6 +247,45 @@ def run(args) -> int:
     kinds = check_kinds(args.kinds or DEFAULT_KINDS)
     if args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
+    if args.json:
+        from ..runner import check_output_file
+
+        check_output_file(args.json, "--json")  # before the run, not after it
+    run, impls = _implementation(args, kinds)
+    if impls:
+        kinds = tuple(k for k in kinds if k in impls["exact"].kinds)
+        if not kinds:
+            raise AcconformError(f"implementation {impls['exact'].name!r} supports none of the kinds asked for")
+    try:
+        return _bench(args, kinds, run, json, AcconformError)
+    finally:
+        for impl in impls.values():
+            impl.close()
+
+
+def _implementation(args, kinds):
+    """(run_scene for the scenes measured, {mode: Implementation} to close): the port, or --impl in both modes."""
+    if args.impl is None:
+        return None, {}
+    from ..impl import make_backend
+
+    impls = {}
+    try:
+        for mode in ("exact", "fast"):  # bench sets the modes side by side: the implementation needs both
+            impls[mode] = make_backend(args.impl, mode, args.timeout)
+    except Exception:
+        for impl in impls.values():
+            impl.close()
+        raise
+
+    def run(scene, mode="exact", runtime="mono"):
+        impls[mode].runtime = runtime
+        return impls[mode](scene)
+
+    return run, impls
+
+
+def _bench(args, kinds, run, json, AcconformError) -> int:
     by_kind, oracle = _scenes(args, kinds)
     note = None
     if args.no_oracle:
@@ -253,17 +300,18 @@ def run(args) -> int:
                     "for recorded scenes); fast-vs-oracle columns left out")
     oracle_name = getattr(oracle, "name", None)
     source = "recorded corpus" if args.corpus is not None else f"sample_scenes seed {args.seed}"
-    print(f"acconform bench: {', '.join(kinds)}; up to {args.cases} scenes per kind from {source}; oracle "
+    who = f"implementation {args.impl!r}" if args.impl else "the port"
+    print(f"acconform bench: {who}; {', '.join(kinds)}; up to {args.cases} scenes per kind from {source}; oracle "
           + (f"{oracle_name} ({oracle.versions.ace} on {oracle.versions.runtime})" if oracle is not None else "none"))
     if note:
         print(note)
     results = {}
     for k in kinds:
-        results[k] = measure_kind(by_kind[k], oracle)
+        results[k] = measure_kind(by_kind[k], oracle, run)
         print()
         print("\n".join(render_kind(k, results[k], oracle_name)))
     if args.json:
-        doc = {"format": "acconform.bench/1", "source": source, "seed": args.seed,
+        doc = {"format": "acconform.bench/1", "source": source, "seed": args.seed, "implementation": args.impl or "",
                "oracle": None if oracle is None else {"name": oracle_name, "ace": oracle.versions.ace,
                                                       "runtime": oracle.versions.runtime},
                "kinds": results}

@@ -1,115 +1,180 @@
-"""acconform check: a differential campaign, port against ACE (live, or the recorded corpus).
+"""acconform check: a differential campaign, the port (or --impl) against ACE (live, or the recorded corpus).
 
 Exit 0 when no difference was found, 1 when one was (each written as a case file under
---failures), 2 when there is nothing to check against (no ACE configured and no corpus).
+--failures), 2 for bad input or when there is nothing to check against (no ACE configured and
+no corpus), 130 when interrupted (after printing what the campaign found so far).
+
+Replaying the corpus: ``-n`` replays a sample stratified by kind, drawn with ``--seed``;
+``--runtime`` replays only the records of that runtime; ``--database`` (Hypothesis' example
+database) has no use there and is refused.
 """
 
 from __future__ import annotations
 
 import sys
+from pathlib import Path
+
+GENERATIVE_CASES = 1000
 
 
 def add_arguments(p) -> None:
-    p.add_argument("-n", "--cases", type=int, default=1000, help="scenes to draw (generative campaigns; default 1000)")
-    p.add_argument("--seed", type=int, default=0, help="campaign seed: the same seed draws the same scenes (default 0)")
+    from ..impl import add_arguments as impl_arguments
+
+    p.add_argument("-n", "--cases", type=int, default=None,
+                   help=f"scenes to draw (live; default {GENERATIVE_CASES}), or to sample from the corpus (default: all of it)")
+    p.add_argument("--seed", type=int, default=None, help="campaign seed: the same seed draws the same scenes "
+                   "(or the same corpus sample); default 0")
     p.add_argument("--kinds", default=None, help="comma-separated scene kinds: terrain, bsp, obstacles (default: what the port supports)")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact", help="exact: float32 bit for bit; fast: port in doubles, ULP tolerance")
-    p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is shrunk and saved)")
+    p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
+                   "shrunk and saved); skip and count unreadable corpus records")
     p.add_argument("--failures", default="failures", metavar="DIR", help="where case files go (default ./failures)")
-    p.add_argument("--database", default=None, metavar="DIR", help="Hypothesis example database (default .hypothesis/acconform)")
+    p.add_argument("--database", default=None, metavar="DIR", help="Hypothesis example database (default .hypothesis/acconform; live only)")
     p.add_argument("--no-database", action="store_true", help="do not read or write the example database")
     p.add_argument("-j", "--workers", type=int, default=0, help="worker processes (default: all cores)")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
-    p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
+    p.add_argument("--runtime", default=None, help="runtime of the live oracle (mono or coreclr); replaying the "
+                   "corpus: only records of that runtime")
     p.add_argument("--corpus", default=None, metavar="DIR", help="recorded corpus to replay when no ACE is configured")
+    impl_arguments(p)
+    p.add_argument("--json", default=None, metavar="FILE", help="write a JSON summary (cases, differences by field and kind, seed, versions, timings)")
+    p.add_argument("--junit", default=None, metavar="FILE", help="write JUnit XML: one testcase per class of difference")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
+
+
+def _say(msg: str) -> None:
+    print(f"acconform check: {msg}", file=sys.stderr, flush=True)
 
 
 def run(args) -> int:
     from ..errors import AcconformError
-    from ..runner import DEFAULT_DATABASE, default_workers, run_campaign
+    from ..impl import make_backend
+    from ..runner import check_output_file, check_writable, default_workers
     from ..strategies import check_kinds
 
     kinds = check_kinds(args.kinds)
-    if args.cases < 1:
+    if args.cases is not None and args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
+    if args.workers < 0:
+        raise AcconformError(f"--workers must be 0 (all cores) or more, got {args.workers}")
+    # everything that could stop a finished campaign from being saved is checked before it starts
+    check_writable(args.failures)
+    for path, option in ((args.json, "--json"), (args.junit, "--junit")):
+        if path is not None:
+            check_output_file(path, option)
     workers = args.workers or default_workers()
-    oracle, replay = _oracle(args, workers)
-    from ..port.run import run_scene
+    port = make_backend(args.impl, args.mode, args.timeout)
+    try:
+        return _campaign(args, port, kinds, workers)
+    finally:
+        getattr(port, "close", lambda: None)()
 
-    mode = args.mode
-    runtime = _port_runtime(args, oracle)
 
-    def port(scene):
-        return run_scene(scene, mode=mode, runtime=runtime)
+def _campaign(args, port, kinds, workers) -> int:
+    from ..errors import AcconformError
+    from ..report import Campaign, junit, summary, write_json, write_junit
+    from ..runner import DEFAULT_DATABASE, run_campaign
 
+    impl_info = {"name": port.name, "version": (port.hello or {}).get("version", ""), "command": args.impl or ""}
+    unsupported_kinds = [k for k in kinds if k not in getattr(port, "kinds", kinds)]
+    run_kinds = tuple(k for k in kinds if k not in unsupported_kinds)
+    if unsupported_kinds:
+        if not run_kinds:
+            raise AcconformError(f"implementation {port.name!r} supports none of the kinds asked for "
+                                 f"({','.join(kinds)}); its handshake lists {','.join(port.kinds)}")
+    oracle, replay, bad = _oracle(args, workers, kinds)
+    port.runtime = runtime = _port_runtime(args, oracle)
     database = None if args.no_database else (args.database or DEFAULT_DATABASE)
-    source = f"recorded corpus ({len(replay)} scenes)" if replay is not None else f"{getattr(oracle, 'name', 'oracle')} oracle"
-    print(f"acconform check: port vs {source}, mode {mode}, {runtime} arithmetic, "
-          + (f"kinds {','.join(kinds)}, {args.cases} cases, seed {args.seed}, " if replay is None else "")
-          + f"{workers} worker{'s' if workers != 1 else ''}", file=sys.stderr)
-    result = run_campaign(port, oracle.run, kinds=kinds, n=args.cases, seed=args.seed, mode=mode,
-                          keep_going=args.keep_going, failures_dir=args.failures, database=database,
-                          workers=workers, progress=not args.no_progress, replay=replay)
+    seed = args.seed if args.seed is not None else 0
+    who = f"implementation {port.name!r} ({args.impl})" if args.impl else "port"
+    if replay is not None:
+        source = f"recorded corpus ({len(replay)} scenes" + (f", a sample by kind, seed {seed}" if args.cases else "") + ")"
+        _say(f"{who} vs {source}, mode {args.mode}, {runtime} arithmetic, {workers} worker{'s' if workers != 1 else ''}")
+    else:
+        _say(f"{who} vs {getattr(oracle, 'name', 'oracle')} oracle, mode {args.mode}, {runtime} arithmetic, "
+             f"kinds {','.join(run_kinds)}, "
+             f"{args.cases or GENERATIVE_CASES} cases, seed {seed}, {workers} worker{'s' if workers != 1 else ''}")
+    if unsupported_kinds and replay is None:
+        _say(f"skipping kinds {','.join(unsupported_kinds)}: the implementation's handshake does not list them")
+    result = run_campaign(port, oracle.run, kinds=run_kinds, n=args.cases or GENERATIVE_CASES, seed=seed,
+                          mode=args.mode, keep_going=args.keep_going, failures_dir=args.failures,
+                          database=database, workers=workers, progress=not args.no_progress, replay=replay)
     rate = result.cases / max(result.elapsed, 1e-9)
-    print(f"{result.cases} cases in {result.elapsed:.1f} s ({rate:.0f} cases/s): "
-          f"{len(result.found)} difference{'s' if len(result.found) != 1 else ''}")
+    head = "interrupted: " if result.interrupted else ""
+    print(f"{head}{result.cases} cases in {result.elapsed:.1f} s ({rate:.0f} cases/s): "
+          f"{len(result.found)} difference{'s' if len(result.found) != 1 else ''}", flush=True)
+    if result.skipped:
+        print(f"skipped {sum(result.skipped.values())} scenes the implementation cannot run: "
+              + ", ".join(f"{why} x{n}" for why, n in result.skipped.most_common()))
+    if bad:
+        print(f"skipped {len(bad)} unreadable corpus record{'s' if len(bad) != 1 else ''} (--keep-going); first: {bad[0]}")
+    if result.failures_fallback:
+        print(f"warning: {result.failures_fallback}")
     for f in result.found:
         how = "shrunk" if f.shrunk else "as recorded, not shrunk"
         print(f"  {f.path} ({how}; {f.case.scene.name or 'scene'})")
         for line in f.case.differences:
             print(f"    {line}")
+    sampled = replay is None or args.cases is not None  # replaying the whole corpus draws nothing
+    campaign = Campaign("recorded" if replay is not None else "live", args.mode, seed if sampled else None, run_kinds,
+                        impl_info, str(args.failures), bad)
+    if args.json:
+        write_json(args.json, summary(result, campaign))
+    if args.junit:
+        write_junit(args.junit, junit(result, campaign))
+    if result.interrupted:
+        return 130
     return 1 if result.found else 0
 
 
 def _port_runtime(args, oracle) -> str:
     """The runtime whose arithmetic the port computes: the live oracle's (from the build, or
-    --runtime), else the one the corpus was recorded on."""
+    --runtime), else the one the replayed records come from (--runtime picks them)."""
     from ..numerics import runtime_named
 
     if getattr(oracle, "name", "") == "live":
         from ..oracle.config import resolve
 
         return resolve(args.ace, args.runtime).runtime
-    return runtime_named(oracle.versions.runtime)
+    return runtime_named(args.runtime or oracle.versions.runtime)
 
 
-def _oracle(args, workers: int):
-    """(oracle, scenes to replay or None). Exit-2 errors when there is nothing to compare against."""
+def _oracle(args, workers: int, kinds):
+    """(oracle, scenes to replay or None, unreadable records skipped). Exit 2 when there is nothing to compare against."""
     from ..errors import AcconformError, OracleUnavailable
-    from ..oracle import PerProcessOracle, get_oracle, live_configured
+    from ..oracle import DEFAULT_CORPUS, PerProcessOracle, get_oracle, live_configured
+    from ..oracle.recorded import CorpusMissing, RecordedOracle
 
-    live = live_configured(args.ace)
-    if live and workers > 1:
-        return PerProcessOracle(args.ace, args.runtime), None
+    if live_configured(args.ace):
+        if workers > 1:
+            return PerProcessOracle(args.ace, args.runtime), None, []
+        return get_oracle(args.ace, args.runtime), None, []
+    # replaying: options that only a generative campaign uses are refused, not ignored
+    if args.database is not None:
+        raise AcconformError("--database is Hypothesis' example database for live campaigns; replaying the "
+                             "recorded corpus uses none (no ACE is configured)")
+    if args.seed is not None and args.cases is None:
+        raise AcconformError("--seed draws the corpus sample of -n; replaying the whole corpus uses no seed "
+                             "(add -n N, or drop --seed)")
+    corpus = Path(args.corpus) if args.corpus is not None else DEFAULT_CORPUS
     try:
-        oracle = get_oracle(args.ace, args.runtime, args.corpus)
-        if getattr(oracle, "name", "") == "live":
-            return oracle, None
-        scenes = list(oracle.scenes()) if hasattr(oracle, "scenes") else []
-    except AcconformError as e:
-        if live:
-            raise
+        oracle = RecordedOracle(corpus, keep_going=args.keep_going,
+                                progress=None if args.no_progress else (lambda m: _say(f"recorded corpus: {m}")))
+    except CorpusMissing as e:
         raise OracleUnavailable(f"nothing to check against: no ACE assembly is configured (pass --ace, set "
                                 f"ACE_ASSEMBLY or the config file) and {e}") from None
-    if args.kinds is not None:
-        scenes = [s for s in scenes if _kind(s) in set(args.kinds.split(","))]
-    if not scenes:
-        raise OracleUnavailable(
-            "nothing to check against: no ACE assembly is configured (pass --ace, set ACE_ASSEMBLY or the "
-            "config file) and the recorded corpus" + (f" {args.corpus}" if args.corpus else "")
-            + " holds no scenes" + (f" of kinds {args.kinds}" if args.kinds else "")
-            + " (record one with `acconform record` where ACE is available)")
-    return oracle, scenes
+    if args.runtime is not None and not oracle.select(runtime=args.runtime):
+        raise AcconformError(f"--runtime {args.runtime}: the recorded corpus {corpus} holds no records of that "
+                             f"runtime (it holds {', '.join(oracle.runtimes()) or 'none'})")
+    keys = oracle.select(n=args.cases, seed=args.seed or 0, kinds=set(kinds), runtime=args.runtime)
+    if not keys:
+        raise OracleUnavailable(f"nothing to check against: no ACE assembly is configured and the recorded corpus "
+                                f"{corpus} holds no scenes of kinds {','.join(kinds)} (record some with `acconform "
+                                f"record` where ACE is available)")
 
+    def reading(done, total):
+        if not args.no_progress and total > 1000:
+            _say(f"reading scenes: {done}/{total}")
 
-def _kind(scene) -> str:
-    try:
-        from ..oracle.recorded import scene_kind
-
-        return scene_kind(scene)
-    except ImportError:
-        pass
-    if not scene.objects:
-        return "terrain"
-    return "bsp" if any(o.shape.kind == "bsp" for o in scene.objects) else "obstacles"
+    scenes = list(oracle.scenes(keys, progress=reading))
+    return oracle, scenes, oracle.bad

@@ -4,6 +4,9 @@ Draws scenes with acconform.strategies.sample_scenes, runs each through the port
 counter, and prints per branch: scenes (per 1,000) in which it fired at least once, and total
 fires per 1,000 scenes. Key branches (EdgeSlide, CliffSlide, PrecipiceSlide, StepUp, StepDown)
 are marked; one that never fired is listed with 0 so a silent skip cannot pass for coverage.
+
+It takes no --impl: branches and anchors are counted inside the built-in port, in process; an
+implementation behind the protocol is a black box (its own tools must count its branches).
 """
 
 from __future__ import annotations
@@ -62,6 +65,10 @@ def run(args) -> int:
     from ..strategies import check_kinds
 
     kinds = check_kinds(args.kinds)
+    if args.cases < 1:
+        from ..errors import AcconformError
+
+        raise AcconformError(f"--cases must be at least 1, got {args.cases}")
     warnings.simplefilter("ignore", RuntimeWarning)
     from contextlib import nullcontext
 

@@ -1,4 +1,4 @@
-"""acconform repro FILE: replay a case on the port (and the live oracle where configured).
+"""acconform repro FILE: replay a case on the port or --impl (and the live oracle where configured).
 
 Prints the field-by-field difference. Exit 0 when the case no longer fails, 1 when it still
 does, 2 for a bad file. Without a live ACE the oracle's side is the outcome stored in the case.
@@ -12,6 +12,9 @@ def add_arguments(p) -> None:
     p.add_argument("--mode", choices=("exact", "fast"), default=None, help="override the case's mode")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle")
     p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
+    from ..impl import add_arguments as impl_arguments
+
+    impl_arguments(p)
 
 
 def run(args) -> int:
@@ -20,7 +23,7 @@ def run(args) -> int:
     from ..errors import InvalidScene
     from ..numerics import runtime_named
     from ..oracle import live_configured
-    from ..port.run import run_scene
+    from ..impl import make_backend
     from ..runner import guarded
 
     doc = load_document(args.file)
@@ -33,7 +36,12 @@ def run(args) -> int:
         runtime = resolve(args.ace, args.runtime).runtime
     else:  # ... as the ACE that answered the case
         runtime = runtime_named(doc.versions.runtime)
-    port = guarded(lambda s: run_scene(s, mode=mode, runtime=runtime), doc.scene)
+    backend = make_backend(args.impl, mode, args.timeout)
+    backend.runtime = runtime
+    try:
+        port = guarded(backend, doc.scene)
+    finally:
+        getattr(backend, "close", lambda: None)()
     if live_configured(args.ace):
         from ..oracle import require_live
 
@@ -43,7 +51,8 @@ def run(args) -> int:
         oracle = doc.oracle
         source = "the oracle outcome recorded in the case (no ACE configured)"
     diffs = compare(port, oracle, mode)
-    print(f"{args.file}: port (mode {mode}, {runtime} arithmetic) vs {source}")
+    who = f"implementation {backend.name!r}" if args.impl else "port"
+    print(f"{args.file}: {who} (mode {mode}, {runtime} arithmetic) vs {source}")
     if not diffs:
         print("no longer fails: every field agrees")
         return 0

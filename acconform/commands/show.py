@@ -1,18 +1,20 @@
-"""acconform show FILE: a scene, case, record or outcome, printed for a person to read."""
+"""acconform show FILE: a scene, case, record or outcome (or each record of a corpus shard), printed for a person to read."""
 
 from __future__ import annotations
 
 
 def add_arguments(p) -> None:
-    p.add_argument("file", metavar="FILE", help="a scene, case, record or outcome file")
+    p.add_argument("file", metavar="FILE", help="a scene, case, record or outcome file, or a corpus shard (.jsonl.gz)")
 
 
 def run(args) -> int:
-    from ..case import load_document
+    from ..case import is_lines_file, iter_documents
 
-    doc = load_document(args.file)
-    for line in describe(doc):
-        print(line)
+    for i, (where, doc) in enumerate(iter_documents(args.file)):
+        if is_lines_file(args.file):
+            print(("\n" if i else "") + f"# {where}")
+        for line in describe(doc):
+            print(line)
     return 0
 
 

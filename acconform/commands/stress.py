@@ -372,7 +372,8 @@ def render(stats: dict[str, KindStats], with_oracle: bool) -> list[str]:
         if s.not_applicable:
             out.append(f"  {name}: not applicable to {s.not_applicable} base scene{'s' if s.not_applicable != 1 else ''}")
         if s.raised_alone:
-            out.append(f"  {name}: port raised where ACE did not: "
+            what = "port raised where ACE did not" if with_oracle else "port raised (no ACE to compare with)"
+            out.append(f"  {name}: {what}: "
                        + ", ".join(f"{t} x{n}" for t, n in sorted(s.raised_alone.items())))
         for msg in s.invalid[:3]:
             out.append(f"  {name}: INVALID derived scene (a stress bug): {msg}")

@@ -1,4 +1,8 @@
-"""acconform validate FILE...: read each scene, case, record or outcome file and report it."""
+"""acconform validate FILE...: read each scene, case, record or outcome file (or corpus shard) and report it.
+
+A JSON-lines shard (``.jsonl.gz``, as the corpus stores records) is checked line by line; each
+bad line is reported naming the shard and the line.
+"""
 
 from __future__ import annotations
 
@@ -6,26 +10,57 @@ import sys
 
 
 def add_arguments(p) -> None:
-    p.add_argument("files", nargs="+", metavar="FILE", help="acconform JSON files (scene, case, record, outcome)")
+    p.add_argument("files", nargs="+", metavar="FILE", help="acconform JSON files (scene, case, record, outcome) "
+                   "or corpus shards (.jsonl.gz)")
     p.add_argument("-q", "--quiet", action="store_true", help="print only problems")
 
 
-def run(args) -> int:
-    from ..case import Case, Record, load_document
-    from ..errors import InvalidScene
+def _kind(doc) -> str:
+    from ..case import Case, Record
     from ..scene import Scene
+
+    return {Scene: "scene", Case: "case", Record: "record"}.get(type(doc), "outcome")
+
+
+def run(args) -> int:
+    from ..case import is_lines_file, jsonl_lines, load_document, parse_document
+    from ..errors import InvalidScene
 
     bad = 0
     for f in args.files:
-        try:
-            doc = load_document(f)
-        except InvalidScene as e:
-            bad += 1
-            print(f"acconform validate: error: {e}", file=sys.stderr)
+        if not is_lines_file(f):
+            try:
+                doc = load_document(f)
+            except InvalidScene as e:
+                bad += 1
+                print(f"acconform validate: error: {e}", file=sys.stderr)
+                continue
+            if not args.quiet:
+                scene = getattr(doc, "scene", doc if _kind(doc) == "scene" else None)
+                label = f" {scene.name!r}" if scene is not None and scene.name else ""
+                print(f"ok {f}: {_kind(doc)}{label}")
             continue
-        if not args.quiet:
-            kind = {Scene: "scene", Case: "case", Record: "record"}.get(type(doc), "outcome")
-            scene = getattr(doc, "scene", doc if isinstance(doc, Scene) else None)
-            label = f" {scene.name!r}" if scene is not None and scene.name else ""
-            print(f"ok {f}: {kind}{label}")
+        # a shard: every line, going on past a bad one
+        import json
+
+        good, kinds, bad_here = 0, set(), 0
+        try:
+            for lineno, line in jsonl_lines(f):
+                where = f"{f} line {lineno}"
+                try:
+                    try:
+                        raw = json.loads(line)
+                    except ValueError as e:
+                        raise InvalidScene("", f"not JSON ({e})", where) from None
+                    kinds.add(_kind(parse_document(raw, where)))
+                    good += 1
+                except InvalidScene as e:
+                    bad_here += 1
+                    print(f"acconform validate: error: {e}", file=sys.stderr)
+        except InvalidScene as e:  # the gzip stream itself
+            bad_here += 1
+            print(f"acconform validate: error: {e}", file=sys.stderr)
+        bad += bad_here
+        if not args.quiet and not bad_here:
+            print(f"ok {f}: {good} {'/'.join(sorted(kinds)) or 'document'}s")
     return 2 if bad else 0

@@ -4,20 +4,18 @@ from __future__ import annotations
 
 import gzip
 import json
-from pathlib import Path
 
 import pytest
 
 from acconform.case import parse_document
 from acconform.numerics import EXACT
+from acconform.oracle import DEFAULT_CORPUS
 from acconform.port.land.lscape import POOL, LScape, clear_landblock_cache
 from acconform.port.run import run_scene
 
-CORPUS = Path(__file__).resolve().parents[2] / "data" / "corpus"
-
 
 def _scenes_with_objects(n: int):
-    paths = sorted(CORPUS.glob("obstacles-*.jsonl.gz"))
+    paths = sorted(DEFAULT_CORPUS.glob("obstacles-*.jsonl.gz"))
     if not paths:
         pytest.skip("no recorded obstacles corpus in tests/data/corpus")
     out = []

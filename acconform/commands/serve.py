@@ -1,0 +1,21 @@
+"""acconform serve: the built-in port as an implementation speaking acconform.protocol/1.
+
+Reads requests on stdin and answers on stdout until stdin closes (docs/protocol.md). What a
+port in another language implements; `acconform check --impl 'acconform serve'` runs the
+differential campaign through it as a separate process.
+"""
+
+from __future__ import annotations
+
+
+def add_arguments(p) -> None:
+    pass
+
+
+def run(args) -> int:
+    from ..port.run import run_scene
+    from ..protocol import serve
+    from ..runner import campaign_gc
+
+    with campaign_gc():  # the collector tuned as for an in-process campaign (runner.GC_THRESHOLDS)
+        return serve(lambda scene, mode, runtime: run_scene(scene, mode=mode, runtime=runtime))

@@ -1,0 +1,54 @@
+"""The implementation under test: the built-in port in process, or an external one (--impl CMD).
+
+`make_backend(impl, mode, timeout)` is what every command that runs scenes on "the port" calls,
+so `check`, `run`, `repro` and `bench` choose it one way. `add_arguments` adds the shared
+``--impl CMD`` and ``--timeout S`` options.
+"""
+
+from __future__ import annotations
+
+from .outcome import Outcome
+from .scene import Scene
+
+DEFAULT_TIMEOUT = 10.0
+
+
+def add_arguments(p) -> None:
+    p.add_argument("--impl", default=None, metavar="CMD",
+                   help="the implementation under test: a command speaking acconform.protocol/1 "
+                        "(docs/protocol.md); default: the built-in port, in process")
+    p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, metavar="S",
+                   help=f"seconds --impl may take for one scene before it is a hang verdict (default {DEFAULT_TIMEOUT:g})")
+
+
+class BuiltinPort:
+    """The built-in port in this process (acconform.port.run.run_scene) in one mode, computing as
+    ACE on `runtime` does ("mono" or "coreclr"; set it to the runtime of the ACE compared with)."""
+
+    name = "acconform port"
+    hello = None
+
+    def __init__(self, mode: str = "exact", runtime: str = "mono"):
+        from .port.run import run_scene
+
+        self.mode = mode
+        self.runtime = runtime
+        self._run = run_scene
+
+    def __call__(self, scene: Scene) -> Outcome:
+        return self._run(scene, mode=self.mode, runtime=self.runtime)
+
+    def unsupported(self, scene: Scene) -> None:
+        return None
+
+
+def make_backend(impl: str | None, mode: str = "exact", timeout: float = DEFAULT_TIMEOUT):
+    """The built-in port, or `impl` started as an acconform.protocol/1 process (handshake checked)."""
+    if impl is None:
+        return BuiltinPort(mode)
+    from .errors import AcconformError
+    from .protocol import Implementation
+
+    if not timeout > 0:
+        raise AcconformError(f"--timeout must be positive, got {timeout:g}")
+    return Implementation(impl, mode=mode, timeout=timeout)

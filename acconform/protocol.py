@@ -1,0 +1,417 @@
+"""The implementation protocol: any port, in any language, run by the harness as a process.
+
+``acconform.protocol/1`` is JSON lines over the stdin/stdout of one long-running process
+(docs/protocol.md is the reference a porter reads):
+
+1. The implementation starts and writes one handshake line::
+
+       {"protocol": "acconform.protocol/1", "name": "my-port", "version": "1.2",
+        "kinds": ["terrain", "bsp", "obstacles"], "features": ["engine.client", ...],
+        "modes": ["exact"]}
+
+2. For each scene the harness writes one request line and the implementation answers with one
+   response line carrying the same id::
+
+       {"id": 7, "mode": "exact", "scene": {... acconform.scene/1 ...}}
+       {"id": 7, "outcome": {... acconform.outcome/1 ...}}
+
+   A physics exception is an outcome with ``error`` set (``"NullReferenceException: ..."``).
+3. The harness closes stdin when it is done; the implementation exits.
+
+`Implementation` is the harness side: a backend (``scene -> Outcome``) that starts the process,
+checks its handshake, and turns a crash, a hang past `timeout`, or a malformed answer into an
+outcome whose ``error`` names what happened -- a verdict for that case, never a harness crash --
+and starts a fresh process for the next scene. `serve` is the implementation side for the
+built-in port (``acconform serve``).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import selectors
+from collections import deque
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Callable
+
+from . import __version__
+from .codec import dumps_compact
+from .errors import AcconformError, InvalidScene
+from .numerics import RUNTIMES
+from .oracle.recorded import scene_kind
+from .outcome import Outcome
+from .scene import Scene
+
+PROTOCOL = "acconform.protocol/1"
+KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
+MODES: tuple[str, ...] = ("exact", "fast")
+
+# Verdict prefixes: the `error` of the outcome the harness records when the implementation fails.
+CRASH = "ImplementationCrash"
+TIMEOUT = "ImplementationTimeout"
+PROTOCOL_ERROR = "ImplementationProtocolError"
+
+
+def _water(scene: Scene) -> bool:
+    from .strategies.terrain import is_water_word
+
+    return any(is_water_word(t) for lb in scene.landblocks for t in lb.terrain)
+
+
+# Scene features an implementation may leave out (it lists the ones it supports in its
+# handshake); a scene needing one it did not list is skipped and counted, never run.
+FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
+    "engine.client": (lambda s: s.engine_mode == "client", "the client engine mode (default: server)"),
+    "mover.two_spheres": (lambda s: len(s.mover.spheres) == 2, "a mover with two Setup spheres"),
+    "mover.scaled": (lambda s: s.mover.scale != 1.0, "a mover whose scale is not 1"),
+    "object.scaled": (lambda s: any(o.scale != 1.0 for o in s.objects), "a static object whose scale is not 1"),
+    "water": (_water, "terrain with water vertices"),
+}
+
+
+def scene_features(scene: Scene) -> list[str]:
+    return [name for name, (needs, _) in FEATURES.items() if needs(scene)]
+
+
+class ImplementationError(AcconformError):
+    """The implementation cannot be used at all (it does not start, or its handshake is wrong)."""
+
+
+def handshake(name: str = "acconform", version: str = __version__) -> dict:
+    """The built-in port's handshake: every kind, every feature, both modes."""
+    return {"protocol": PROTOCOL, "name": name, "version": version, "kinds": list(KINDS),
+            "features": list(FEATURES), "modes": list(MODES)}
+
+
+def check_handshake(doc, command: str) -> dict:
+    """The handshake, checked; ImplementationError naming the field otherwise."""
+    def bad(problem):
+        return ImplementationError(f"implementation {command!r}: bad handshake: {problem} "
+                                   f"(docs/protocol.md describes it)")
+
+    if not isinstance(doc, dict):
+        raise bad("expected a JSON object")
+    if doc.get("protocol") != PROTOCOL:
+        raise bad(f"protocol {doc.get('protocol')!r}; this acconform speaks {PROTOCOL!r}")
+    for key, known in (("kinds", KINDS), ("features", tuple(FEATURES)), ("modes", MODES)):
+        v = doc.get(key)
+        if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
+            raise bad(f"{key!r} must be a list of strings")
+        unknown = [x for x in v if x not in known]
+        if unknown:
+            raise bad(f"unknown {key} {', '.join(map(repr, unknown))} (known: {', '.join(known)})")
+    if not doc["kinds"]:
+        raise bad("'kinds' is empty: the implementation supports no scene kind")
+    if not doc["modes"]:
+        raise bad("'modes' is empty")
+    return {"protocol": PROTOCOL, "name": str(doc.get("name", "")), "version": str(doc.get("version", "")),
+            "kinds": doc["kinds"], "features": doc["features"], "modes": doc["modes"]}
+
+
+class _Failed(Exception):
+    """The process failed on this scene; args[0] is the verdict text."""
+
+
+class Implementation:
+    """An implementation under test, run as a process speaking acconform.protocol/1.
+
+    A backend: ``impl(scene) -> Outcome`` (also ``impl.run``). `unsupported(scene)` names why a
+    scene cannot be run (its kind or a feature missing from the handshake), or returns None.
+    The handshake is read at construction, so a command that does not start fails at once
+    (ImplementationError, exit 2). Each process id gets its own child process: forked campaign
+    workers start their own on first use. `restarts` counts the processes started after a failure.
+    """
+
+    per_process = True
+
+    def __init__(self, command: str, *, mode: str = "exact", timeout: float = 10.0, start_timeout: float = 60.0):
+        if mode not in MODES:
+            raise AcconformError(f"unknown mode {mode!r}: choose exact or fast")
+        self.command = command
+        self.argv = shlex.split(command)
+        if not self.argv:
+            raise ImplementationError("--impl needs a command, e.g. --impl 'acconform serve'")
+        self.mode = mode
+        self.runtime = "mono"  # the ACE compared with: whose System.Numerics arithmetic to match
+        self.timeout = timeout
+        self.start_timeout = start_timeout
+        self.restarts = 0
+        self.failures: dict[str, int] = {}
+        self._proc = None
+        self._pid = None
+        self._buf = bytearray()
+        self._next_id = 0
+        self._inflight: deque[tuple[int, Scene]] = deque()  # requests sent, answers not yet read, in order
+        self._answers: dict[int, Outcome] = {}
+        self._sel = None
+        self.hello = self._start()
+        if mode not in self.hello["modes"]:
+            self.close()
+            raise ImplementationError(f"implementation {command!r} does not support mode {mode!r} "
+                                      f"(its handshake lists {', '.join(self.hello['modes'])})")
+
+    @property
+    def name(self) -> str:
+        return self.hello["name"] or self.argv[0]
+
+    @property
+    def kinds(self) -> tuple[str, ...]:
+        return tuple(self.hello["kinds"])
+
+    def unsupported(self, scene: Scene) -> str | None:
+        kind = scene_kind(scene)
+        if kind not in self.hello["kinds"]:
+            return f"kind {kind}"
+        missing = [f for f in scene_features(scene) if f not in self.hello["features"]]
+        return f"feature {missing[0]}" if missing else None
+
+    # ------------------------------------------------------------ process
+
+    def _start(self) -> dict:
+        self._stderr = tempfile.TemporaryFile()
+        try:
+            self._proc = subprocess.Popen(self.argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                          stderr=self._stderr, bufsize=0,
+                                          start_new_session=True)  # Ctrl-C in the terminal is the harness's
+        except OSError as e:
+            raise ImplementationError(f"cannot start implementation {self.command!r}: {e.strerror or e}") from None
+        self._pid = os.getpid()
+        self._buf = bytearray()
+        self._sel = selectors.DefaultSelector()
+        self._sel.register(self._proc.stdout.fileno(), selectors.EVENT_READ)
+        os.set_blocking(self._proc.stdin.fileno(), False)
+        try:
+            line = self._readline(self.start_timeout)
+        except _Failed as e:
+            self._kill()
+            raise ImplementationError(f"implementation {self.command!r} sent no handshake: {e.args[0]}") from None
+        try:
+            doc = json.loads(line)
+        except ValueError:
+            self._kill()
+            raise ImplementationError(f"implementation {self.command!r}: bad handshake: not JSON: "
+                                      f"{line[:120]!r}") from None
+        try:
+            return check_handshake(doc, self.command)
+        except ImplementationError:
+            self._kill()
+            raise
+
+    def _stderr_tail(self) -> str:
+        try:
+            self._stderr.seek(0, os.SEEK_END)
+            size = self._stderr.tell()
+            self._stderr.seek(max(0, size - 400))
+            lines = self._stderr.read().decode("utf-8", "replace").strip().splitlines()
+        except (OSError, ValueError):
+            return ""
+        return f"; stderr: {lines[-1][:200]}" if lines else ""
+
+    def _readline(self, timeout: float) -> str:
+        deadline = time.monotonic() + timeout
+        fd = self._proc.stdout.fileno()
+        while True:
+            nl = self._buf.find(b"\n")
+            if nl >= 0:
+                line = bytes(self._buf[:nl])
+                del self._buf[:nl + 1]
+                return line.decode("utf-8", "replace")
+            left = deadline - time.monotonic()
+            if left <= 0 or not self._sel.select(left):
+                raise _Failed(f"{TIMEOUT}: no answer within {timeout:g} s; the process was killed and restarted")
+            data = os.read(fd, 1 << 16)
+            if not data:
+                code = self._proc.wait()
+                raise _Failed(f"{CRASH}: the process exited with code {code}{self._stderr_tail()}")
+            self._buf += data
+
+    def _kill(self) -> None:
+        p, self._proc = self._proc, None
+        if p is None:
+            return
+        if self._sel is not None:
+            self._sel.close()
+            self._sel = None
+        if self._pid == os.getpid():
+            for f in (p.stdin, p.stdout):
+                try:
+                    f.close()
+                except OSError:
+                    pass
+            if p.poll() is None:
+                p.kill()
+            p.wait()
+        else:  # a forked worker: the process belongs to the parent; drop our copies of its pipes
+            for f in (p.stdin, p.stdout):
+                try:
+                    os.close(f.fileno())
+                except (OSError, ValueError):
+                    pass
+        try:
+            self._stderr.close()
+        except OSError:
+            pass
+
+    def close(self) -> None:
+        """End the process: close its stdin (it exits), kill it if it lingers."""
+        p = self._proc
+        if p is not None and self._pid == os.getpid():
+            try:
+                p.stdin.close()
+                p.wait(timeout=2)
+            except (OSError, subprocess.TimeoutExpired):
+                pass
+        self._kill()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # noqa: BLE001 - interpreter shutdown
+            pass
+
+    # ------------------------------------------------------------ one scene
+
+    def __call__(self, scene: Scene) -> Outcome:
+        return self.run(scene)
+
+    def run(self, scene: Scene) -> Outcome:
+        """The implementation's outcome for `scene` (sent now, unless `prefetch` sent it already)."""
+        why = self._ensure()
+        if why is not None:
+            return self._verdict(why)
+        rid = next((r for r, s in self._inflight if s is scene), None)
+        if rid is None:
+            rid = self._send(scene)
+        while rid not in self._answers:
+            self._read_answer()
+        for old in [r for r in self._answers if r < rid]:  # answers to prefetched scenes never asked for
+            del self._answers[old]
+        return self._answers.pop(rid)
+
+    def prefetch(self, scene: Scene) -> None:
+        """Send `scene` ahead, so the implementation works on it while the harness compares the
+        previous answer (a replay knows its next scene). At most two requests are in flight."""
+        if len(self._inflight) < 2 and self.unsupported(scene) is None and self._ensure() is None:
+            self._send(scene)
+
+    def _ensure(self) -> str | None:
+        """A process for this process id (forked workers start their own); a verdict text if none starts."""
+        if self._proc is None or self._pid != os.getpid():
+            if self._pid != os.getpid():  # a forked worker: the parent's process and requests are not ours
+                self._kill()
+                self._inflight.clear()
+                self._answers.clear()
+            try:
+                self._start()
+            except ImplementationError as e:
+                return f"{CRASH}: could not restart: {e}"
+        return None
+
+    def _send(self, scene: Scene, rid: int | None = None) -> int:
+        if rid is None:
+            self._next_id += 1
+            rid = self._next_id
+            self._inflight.append((rid, scene))
+        request = dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime, "scene": scene.to_json()}) + "\n"
+        self._write(request.encode("utf-8"))
+        return rid
+
+    def _write(self, data: bytes) -> None:
+        """Write without ever blocking for longer than the time limit: a process that stops reading
+        (a hang) would otherwise hold the harness on a full pipe. Whatever goes wrong here shows up
+        when the answer is read (an exit code, or no answer in time)."""
+        fd = self._proc.stdin.fileno()
+        view = memoryview(data)
+        deadline = time.monotonic() + self.timeout
+        with selectors.DefaultSelector() as sel:
+            sel.register(fd, selectors.EVENT_WRITE)
+            while view:
+                try:
+                    view = view[os.write(fd, view):]
+                except BlockingIOError:
+                    left = deadline - time.monotonic()
+                    if left <= 0 or not sel.select(left):
+                        return
+                except (BrokenPipeError, ConnectionResetError):
+                    return
+
+    def _read_answer(self) -> None:
+        """Read the answer to the oldest request in flight, or give it a verdict and restart."""
+        rid = self._inflight[0][0]
+        try:
+            line = self._readline(self.timeout)
+        except _Failed as e:
+            return self._fail_head(e.args[0])
+        try:
+            doc = json.loads(line)
+            if not isinstance(doc, dict):
+                raise ValueError("not a JSON object")
+            if doc.get("id") != rid:
+                raise ValueError(f"answer id {doc.get('id')!r}, expected {rid}")
+            if "outcome" not in doc:
+                raise ValueError("no \"outcome\" field")
+            outcome = Outcome.from_json(doc["outcome"], "outcome")
+        except (ValueError, InvalidScene) as e:
+            return self._fail_head(f"{PROTOCOL_ERROR}: malformed answer ({e}): {line[:120]!r}")
+        self._inflight.popleft()
+        self._answers[rid] = outcome
+
+    def _fail_head(self, text: str) -> None:
+        """The oldest request's verdict; a fresh process gets the requests still in flight."""
+        rid, _ = self._inflight.popleft()
+        self._answers[rid] = self._verdict(text)
+        rest = list(self._inflight)
+        self._inflight.clear()
+        self._kill()
+        self.restarts += 1
+        why = self._ensure()
+        for r, scene in rest:
+            if why is not None:
+                self._answers[r] = self._verdict(why)
+            else:
+                self._inflight.append((r, scene))
+                self._send(scene, r)
+
+    def _verdict(self, text: str) -> Outcome:
+        kind = text.split(":", 1)[0]
+        self.failures[kind] = self.failures.get(kind, 0) + 1
+        return Outcome(error=text)
+
+
+# ---------------------------------------------------------------- the implementation side
+
+
+def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None) -> int:
+    """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side).
+
+    A request that cannot be read is answered with an outcome whose error says why (the harness
+    counts it as the implementation's verdict); the loop goes on.
+    """
+    stdin = stdin or sys.stdin.buffer
+    stdout = stdout or sys.stdout.buffer
+    stdout.write((dumps_compact(hello or handshake()) + "\n").encode("utf-8"))
+    stdout.flush()
+    for raw in stdin:
+        if not raw.strip():
+            continue
+        rid = None
+        try:
+            req = json.loads(raw)
+            rid = req.get("id") if isinstance(req, dict) else None
+            if not isinstance(req, dict) or "scene" not in req:
+                raise ValueError("expected {\"id\": ..., \"mode\": ..., \"scene\": {...}}")
+            mode, runtime = req.get("mode", "exact"), req.get("runtime", "mono")
+            if mode not in MODES:
+                raise ValueError(f"unknown mode {mode!r}")
+            if runtime not in RUNTIMES:
+                raise ValueError(f"unknown runtime {runtime!r} (known: {', '.join(RUNTIMES)})")
+            outcome = run_scene(Scene.from_json(req["scene"], "scene"), mode, runtime)
+        except (ValueError, InvalidScene) as e:
+            outcome = Outcome(error=f"InvalidRequest: {e}")
+        stdout.write((dumps_compact({"id": rid, "outcome": outcome.to_json()}) + "\n").encode("utf-8"))
+        stdout.flush()
+    return 0

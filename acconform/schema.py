@@ -1,0 +1,167 @@
+"""JSON Schemas for scenes and outcomes, generated from the records, never kept by hand.
+
+`scene_schema()` and `outcome_schema()` infer a JSON Schema (draft 2020-12) from the JSON the
+records themselves write (`Scene.to_json`, `Outcome.to_json`) for a fixed, seeded sample of
+generated scenes of every kind and their outcomes on the port, so a field added to a record
+appears in the schema with no edit here. The rules, from the codec (acconform/codec.py):
+objects keep every key seen (required: those in every sample); an object with a ``kind`` or
+``type`` string is one of a set of named definitions (so the BSP tree is recursive); a list of
+numbers of one length everywhere is a fixed-length vector; ``0x`` + 8 hex digits is an id; an
+outcome's floats may be a non-finite float32 written as its bit pattern (``"0x7fc00000"``).
+`acconform schema scene|outcome` prints them; docs/protocol.md says how they are used.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import defaultdict
+
+DRAFT = "https://json-schema.org/draft/2020-12/schema"
+SAMPLE_SEED = 0
+SAMPLE_PER_KIND = 40
+HEX_ID = re.compile(r"^0x[0-9A-F]{8}$")
+NONFINITE = {"type": "string", "pattern": "^0x[0-9a-f]{8}$", "description": "a non-finite float32's bit pattern"}
+DISCRIMINATORS = ("kind", "type")
+
+
+class _Inferrer:
+    def __init__(self, nonfinite_floats: bool):
+        self.nonfinite = nonfinite_floats
+        self.defs: dict[str, list[dict]] = defaultdict(list)
+
+    def infer(self, values: list) -> dict:
+        groups: dict[str, list] = defaultdict(list)
+        for v in values:
+            kind = ("null" if v is None else "boolean" if isinstance(v, bool) else "integer" if isinstance(v, int)
+                    else "number" if isinstance(v, float) else "string" if isinstance(v, str)
+                    else "array" if isinstance(v, list) else "object")
+            groups[kind].append(v)
+        if "integer" in groups and "number" in groups:
+            groups["number"] += groups.pop("integer")
+        schemas = [self._one(kind, vs) for kind, vs in groups.items()]
+        if self.nonfinite and "number" in groups and "string" not in groups:
+            schemas.append(dict(NONFINITE))
+        return schemas[0] if len(schemas) == 1 else {"anyOf": schemas}
+
+    def _one(self, kind: str, vs: list) -> dict:
+        if kind == "object":
+            return self._object(vs)
+        if kind == "array":
+            items = [x for v in vs for x in v]
+            s: dict = {"type": "array"}
+            if items:
+                s["items"] = self.infer(items)
+            lengths = {len(v) for v in vs}
+            if len(lengths) == 1 and items and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in items):
+                s["minItems"] = s["maxItems"] = lengths.pop()
+            return s
+        if kind == "string":
+            if all(HEX_ID.match(v) for v in vs):
+                return {"type": "string", "pattern": "^0x[0-9A-Fa-f]{8}$", "description": "a uint32 id in hex"}
+            return {"type": "string"}
+        return {"type": kind}
+
+    def _object(self, vs: list[dict]) -> dict:
+        for key in DISCRIMINATORS:
+            if all(isinstance(v.get(key), str) for v in vs):
+                names = []
+                for value in sorted({v[key] for v in vs}):
+                    name = f"{key}:{value}"
+                    self.defs[name] += [v for v in vs if v[key] == value]
+                    names.append(name)
+                refs = [{"$ref": f"#/$defs/{n}"} for n in names]
+                return refs[0] if len(refs) == 1 else {"oneOf": refs}
+        return self._plain(vs)
+
+    def _plain(self, vs: list[dict], discriminator: str | None = None) -> dict:
+        keys: list[str] = []
+        for v in vs:
+            keys += [k for k in v if k not in keys]
+        props = {}
+        for k in keys:
+            if k == discriminator:
+                props[k] = {"const": vs[0][k]}
+            else:
+                props[k] = self.infer([v[k] for v in vs if k in v])
+        return {"type": "object", "properties": props, "required": [k for k in keys if all(k in v for v in vs)],
+                "additionalProperties": False}
+
+    def _widen(self, node, families) -> None:
+        if isinstance(node, list):
+            for x in node:
+                self._widen(x, families)
+        elif isinstance(node, dict):
+            refs = [node["$ref"]] if "$ref" in node else [r.get("$ref") for r in node.get("oneOf", [])]
+            if refs and all(isinstance(r, str) for r in refs):
+                family = refs[0].rsplit("/", 1)[1].split(":", 1)[0]
+                node.clear()
+                node["oneOf"] = [{"$ref": f"#/$defs/{n}"} for n in families[family]]
+                if len(node["oneOf"]) == 1:
+                    node.update(node.pop("oneOf")[0])
+                return
+            for v in node.values():
+                self._widen(v, families)
+
+    def finish(self, root: dict, title: str, fmt: str) -> dict:
+        out_defs: dict[str, dict] = {}
+        while len(out_defs) < len(self.defs):  # a definition's own samples may add definitions
+            for name in list(self.defs):
+                if name not in out_defs:
+                    out_defs[name] = {}
+                    out_defs[name] = self._plain(self.defs[name], name.split(":", 1)[0])
+        # a position that holds one member of a family (type: leaf) may hold any member (type: node)
+        families: dict[str, list[str]] = defaultdict(list)
+        for name in sorted(self.defs):
+            families[name.split(":", 1)[0]].append(name)
+        self._widen(root, families)
+        for d in out_defs.values():
+            self._widen(d, families)
+        # samples gathered after a definition was built (deeper BSP levels) are merged in
+        changed = True
+        while changed:
+            changed = False
+            for name, samples in list(self.defs.items()):
+                s = self._plain(samples, name.split(":", 1)[0])
+                if s != out_defs.get(name):
+                    out_defs[name] = s
+                    changed = True
+        for d in out_defs.values():
+            self._widen(d, families)
+        root["properties"]["format"] = {"const": fmt}
+        return {"$schema": DRAFT, "title": title, **root, "$defs": dict(sorted(out_defs.items()))}
+
+
+def _sample():
+    from .port.run import run_scene
+    from .strategies import ALL_KINDS, sample_scenes
+
+    scenes = []
+    for kind in ALL_KINDS:
+        scenes += list(sample_scenes((kind,), SAMPLE_PER_KIND, SAMPLE_SEED))
+    scenes += _every_optional_field(scenes[0])
+    return scenes, [run_scene(s) for s in scenes]
+
+
+def _every_optional_field(scene):
+    """Variants of a sampled scene that write the fields samples may leave out (name, a height
+    table, a sliding normal, a velocity) or omit ones they always write."""
+    from dataclasses import replace
+
+    m = scene.mover
+    return [replace(scene, name="every optional field", land_height_table=tuple(1.0 * i for i in range(256)),
+                    mover=replace(m, sliding_normal=(0.0, 0.0, 1.0), velocity=(0.0, 0.0, -1.0))),
+            replace(scene, name="")]
+
+
+def schemas() -> tuple[dict, dict]:
+    """(scene schema, outcome schema), inferred from the records' JSON for the fixed sample."""
+    from .outcome import FORMAT as OUTCOME_FORMAT, Outcome
+    from .scene import FORMAT as SCENE_FORMAT
+
+    scenes, outcomes = _sample()
+    s = _Inferrer(nonfinite_floats=False)
+    scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene", SCENE_FORMAT)
+    o = _Inferrer(nonfinite_floats=True)
+    docs = [x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
+    outcome = o.finish(o._plain(docs), "acconform outcome", OUTCOME_FORMAT)
+    return scene, outcome

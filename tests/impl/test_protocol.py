@@ -1,0 +1,181 @@
+"""A second implementation, caught through the protocol: the port with a planted bug as a process.
+
+tests/impl/planted_impl.py speaks acconform.protocol/1; the harness sees it only through the
+protocol. It must be found wrong, shrunk and reported (JSON and JUnit written); a crash, a hang
+and a malformed answer each come out as a verdict for that case, and the process is restarted.
+The built-in port runs the differential suite through `acconform serve` the same way.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from acconform.impl import BuiltinPort
+from acconform.oracle.recorded import scene_kind
+from acconform.protocol import CRASH, PROTOCOL_ERROR, TIMEOUT, Implementation, ImplementationError
+from acconform.report import Campaign, junit, summary, write_json, write_junit
+from acconform.runner import run_campaign
+
+ROOT = Path(__file__).resolve().parents[2]
+PLANTED = Path(__file__).with_name("planted_impl.py")
+BUG = "step_down_two_halves_made_thirds"  # tests/runner/mutants.py: the two half step-downs are thirds
+
+
+def planted(*args: str) -> str:
+    return " ".join([sys.executable, str(PLANTED), *args])
+
+
+def check(*args, cwd):
+    return subprocess.run([sys.executable, "-m", "acconform.cli", "check", "--no-progress", *args],
+                          capture_output=True, text=True, cwd=cwd)
+
+
+@pytest.fixture(scope="module")
+def corpus_scenes():
+    from acconform.oracle import DEFAULT_CORPUS
+    from acconform.oracle.recorded import RecordedOracle
+
+    oracle = RecordedOracle(DEFAULT_CORPUS)
+    keys = oracle.select(n=30, seed=5)
+    return {scene_kind(s): s for s in oracle.scenes(keys)}
+
+
+def test_the_builtin_port_runs_the_differential_suite_through_serve_as_a_process(tmp_path, no_ace):
+    r = check("--impl", f"{sys.executable} -m acconform.cli serve", "-n", "150", "--seed", "2", "-j", "2",
+              "--failures", str(tmp_path / "f"), "--json", str(tmp_path / "s.json"), cwd=tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    s = json.loads((tmp_path / "s.json").read_text())
+    assert s["cases"]["compared"] == 150 and s["differences"]["total"] == 0
+    assert s["implementation"]["name"] == "acconform"
+
+
+def test_a_planted_bug_is_found_in_the_corpus_and_reported_as_json_and_junit(tmp_path, no_ace):
+    r = check("--impl", planted(BUG), "-n", "300", "--seed", "1", "--keep-going", "--failures", str(tmp_path / "f"),
+              "--json", str(tmp_path / "s.json"), "--junit", str(tmp_path / "j.xml"), cwd=tmp_path)
+    assert r.returncode == 1, r.stdout + r.stderr
+    s = json.loads((tmp_path / "s.json").read_text())
+    assert not s["ok"] and s["differences"]["total"] >= 1 and s["seed"] == 1
+    assert s["implementation"]["version"] == f"0.0+{BUG}"
+    assert s["differences"]["by_field"] and sum(s["differences"]["by_kind"].values()) == s["differences"]["total"]
+    files = [c["file"] for c in s["differences"]["cases"]]
+    assert all(Path(f).is_file() for f in files)
+    suite = ET.parse(tmp_path / "j.xml").getroot().find("testsuite")
+    failures = suite.findall("testcase/failure")
+    assert len(failures) == len({tuple(c["fields"]) for c in s["differences"]["cases"]}) >= 1
+    assert set(files) <= {f for fl in failures for f in fl.get("message").split(": ", 1)[1].split(", ")}
+
+
+def test_a_planted_bug_is_found_and_shrunk_in_a_generative_campaign(tmp_path):
+    impl = Implementation(planted(BUG))
+    try:
+        r = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=0, failures_dir=tmp_path, database=None)
+    finally:
+        impl.close()
+    assert r.found and r.found[0].shrunk and r.found[0].path.is_file()
+    assert r.found[0].case.differences
+    c = Campaign("live", "exact", 0, ("terrain",), {"name": "planted", "version": "", "command": impl.command}, str(tmp_path))
+    write_json(tmp_path / "s.json", summary(r, c))
+    write_junit(tmp_path / "j.xml", junit(r, c))
+    s = json.loads((tmp_path / "s.json").read_text())
+    assert s["differences"]["cases"][0]["shrunk"] and s["differences"]["cases"][0]["file"] == str(r.found[0].path)
+    assert str(r.found[0].path) in (tmp_path / "j.xml").read_text()
+
+
+def test_a_crash_is_a_verdict_and_the_process_is_restarted(corpus_scenes):
+    impl = Implementation(planted("none", "--crash-on", "bsp"))
+    try:
+        crashed = impl(corpus_scenes["bsp"])
+        assert crashed.error.startswith(f"{CRASH}: the process exited with code 3")
+        after = impl(corpus_scenes["terrain"])
+        assert after.error is None and impl.restarts == 1
+        assert after == BuiltinPort()(corpus_scenes["terrain"])
+    finally:
+        impl.close()
+
+
+def test_a_hang_past_the_time_limit_is_a_verdict_and_the_process_is_restarted(corpus_scenes):
+    impl = Implementation(planted("none", "--hang-on", "obstacles"), timeout=1.0)
+    try:
+        hung = impl(corpus_scenes["obstacles"])
+        assert hung.error.startswith(f"{TIMEOUT}: no answer within 1 s")
+        assert impl(corpus_scenes["terrain"]).error is None and impl.restarts == 1
+    finally:
+        impl.close()
+
+
+def test_a_malformed_answer_is_a_verdict_and_the_process_is_restarted(corpus_scenes):
+    impl = Implementation(planted("none", "--garble-on", "terrain"))
+    try:
+        bad = impl(corpus_scenes["terrain"])
+        assert bad.error.startswith(PROTOCOL_ERROR) and "this is not JSON" in bad.error
+        assert impl(corpus_scenes["bsp"]).error is None and impl.restarts == 1
+    finally:
+        impl.close()
+
+
+def test_crashes_and_hangs_in_a_campaign_come_out_as_differences_never_a_harness_crash(tmp_path, no_ace):
+    r = check("--impl", planted("none", "--crash-on", "bsp", "--hang-on", "obstacles"), "--timeout", "1",
+              "-n", "6", "--seed", "3", "-j", "1", "--keep-going", "--failures", str(tmp_path / "f"),
+              "--json", str(tmp_path / "s.json"), cwd=tmp_path)
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert "Traceback" not in r.stderr
+    errors = [d for c in json.loads((tmp_path / "s.json").read_text())["differences"]["cases"] for d in c["differences"]]
+    assert any(CRASH in d for d in errors) and any(TIMEOUT in d for d in errors)
+
+
+def test_kinds_missing_from_the_handshake_are_skipped_and_counted(tmp_path, no_ace):
+    r = check("--impl", planted("none", "--kinds", "terrain"), "-n", "30", "--seed", "1",
+              "--failures", str(tmp_path / "f"), "--json", str(tmp_path / "s.json"), cwd=tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    s = json.loads((tmp_path / "s.json").read_text())
+    assert s["cases"]["skipped"].get("kind bsp", 0) > 0 and s["cases"]["skipped"].get("kind obstacles", 0) > 0
+    assert s["cases"]["compared"] + sum(s["cases"]["skipped"].values()) == 30
+    assert "skipped" in r.stdout
+
+
+def test_an_implementation_that_sends_no_handshake_is_one_line_and_exit_2(tmp_path, no_ace):
+    r = check("--impl", f"{sys.executable} -c pass", "-n", "5", "--seed", "1", cwd=tmp_path)
+    assert r.returncode == 2
+    assert r.stderr.strip().splitlines()[-1].startswith("acconform check: error: implementation")
+    assert "sent no handshake" in r.stderr and "Traceback" not in r.stderr
+    with pytest.raises(ImplementationError, match="cannot start"):
+        Implementation("/nonexistent/port --serve")
+
+
+def test_bench_measures_an_implementation_in_both_modes(tmp_path):
+    r = subprocess.run([sys.executable, "-m", "acconform.cli", "bench", "-n", "3", "--kinds", "terrain", "--impl",
+                        planted("none"), "--json", str(tmp_path / "b.json")], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    doc = json.loads((tmp_path / "b.json").read_text())
+    assert doc["implementation"] == planted("none") and doc["kinds"]["terrain"]["scenes"] == 3
+
+
+def test_run_prints_one_scene_outcome_from_the_port_or_an_implementation(tmp_path):
+    scene = ROOT / "examples" / "flat_walk.json"
+    outs = []
+    for extra in ([], ["--impl", planted("none")]):
+        r = subprocess.run([sys.executable, "-m", "acconform.cli", "run", str(scene), *extra],
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        outs.append(json.loads(r.stdout))
+    from acconform.outcome import FORMAT
+
+    assert outs[0] == outs[1] and outs[0]["format"] == FORMAT
+
+
+def test_a_scene_sent_ahead_of_a_crash_is_sent_again_to_the_restarted_process(corpus_scenes):
+    impl = Implementation(planted("none", "--crash-on", "bsp"))
+    try:
+        impl.prefetch(corpus_scenes["bsp"])
+        impl.prefetch(corpus_scenes["terrain"])  # in the pipe behind the scene that crashes the process
+        assert impl(corpus_scenes["bsp"]).error.startswith(CRASH)
+        assert impl(corpus_scenes["terrain"]) == BuiltinPort()(corpus_scenes["terrain"])
+        assert impl.restarts == 1
+    finally:
+        impl.close()
