@@ -34,9 +34,18 @@ class BuiltinPort:
         self.mode = mode
         self.runtime = runtime
         self._run = run_scene
+        # a generative campaign sets this: each run then keeps its boundaries (a branches.Trace)
+        # in last_trace, for Hypothesis' target() and event()
+        self.trace_boundaries = False
+        self.last_trace = None
 
     def __call__(self, scene: Scene) -> Outcome:
-        return self._run(scene, mode=self.mode, runtime=self.runtime)
+        if not self.trace_boundaries:
+            return self._run(scene, mode=self.mode, runtime=self.runtime)
+        from .port.transition.branches import Trace
+
+        self.last_trace = Trace()
+        return self._run(scene, mode=self.mode, runtime=self.runtime, trace=self.last_trace)
 
     def unsupported(self, scene: Scene) -> None:
         return None

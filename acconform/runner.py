@@ -28,6 +28,7 @@ from __future__ import annotations
 import contextlib
 import gc
 import hashlib
+import math
 import multiprocessing
 import os
 import signal
@@ -255,6 +256,20 @@ def campaign_gc():
         gc.unfreeze()
 
 
+def aim_at_boundaries(trace) -> None:
+    """Hypothesis target() on how close the run came to each exact boundary (in ulps, log-scaled
+    so the last few ulps weigh as much as the first thousands) and event() per boundary hit."""
+    if trace is None:
+        return
+    from hypothesis import event, target
+
+    for name, ulps in trace.closest.items():
+        target(-math.log2(1 + ulps), label=f"closeness to {name}")
+    for key in trace:
+        if key.startswith("boundary:"):
+            event(key)
+
+
 def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mode: str, keep_going: bool,
                 database, tick, should_stop, timings: Counter, skipped: Counter, versions: Versions,
                 found: list[Found]) -> int:
@@ -269,6 +284,8 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
     kinds = check_kinds(kinds)
     db = DirectoryBasedExampleDatabase(str(database)) if database else None
     known: set[tuple[str, ...]] = set()
+    if hasattr(port, "trace_boundaries"):  # the built-in port: aim the search at exact boundaries
+        port.trace_boundaries = True
     done = 0
     round_ = 0
     while done < n:
@@ -278,7 +295,7 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
         # settings outside seed: @seed alone switches the example database off
         @settings(max_examples=n - done, database=db, deadline=None, verbosity=Verbosity.quiet,
                   suppress_health_check=list(HealthCheck), report_multiple_bugs=False,
-                  phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink])
+                  phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.target, Phase.shrink])
         @hseed(seed * 7919 + round_)
         @given(scenes(kinds))
         def differential(scene):
@@ -289,6 +306,7 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
             ran_case = run_case(port, oracle, scene, mode, timings, skipped)
             if ran_case is None:
                 return
+            aim_at_boundaries(getattr(port, "last_trace", None))
             a, b, diffs = ran_case
             if diffs:
                 sig = signature(diffs)

@@ -5,6 +5,11 @@ counter, and prints per branch: scenes (per 1,000) in which it fired at least on
 fires per 1,000 scenes. Key branches (EdgeSlide, CliffSlide, PrecipiceSlide, StepUp, StepDown)
 are marked; one that never fired is listed with 0 so a silent skip cannot pass for coverage.
 
+Beside it, the boundary table: per exact boundary (port/transition/branches.py BOUNDARIES: a
+normal.z bit-equal to FloorZ or LandingZ, exact sphere and cylsphere tangency, walkable polygons on
+both sides of a BSP split, moves ending on a cell or landblock border), the scenes per 1,000 that
+hit it exactly, and those that came within 4 ulps of it.
+
 It takes no --impl: branches and anchors are counted inside the built-in port, in process; an
 implementation behind the protocol is a black box (its own tools must count its branches).
 """
@@ -16,6 +21,7 @@ import time
 from collections import Counter
 
 KEY_PREFIXES = ("edge_slide", "cliff_slide", "precipice_slide", "step_up", "step_down")
+NEAR_ULPS = 4
 
 
 def add_arguments(p) -> None:
@@ -29,17 +35,16 @@ def add_arguments(p) -> None:
 
 
 def known_branches() -> list[str]:
-    try:
-        from ..port.transition import branches as b
-    except ImportError:
-        return []
-    names = getattr(b, "BRANCHES", None) or getattr(b, "ALL", None) or []
-    return sorted(names)
+    from ..port.transition.branches import BRANCHES
+
+    return sorted(BRANCHES)
 
 
 def measure(kinds, n: int, seed: int, mode: str = "exact"):
-    """(per-scene branch presence Counter, total fires Counter, generation s, port s, errors Counter)."""
+    """(per-scene branch presence Counter, total fires Counter, generation s, port s, errors Counter).
+    A boundary hit counts as "boundary:<name>"; one within NEAR_ULPS of it as "near:<name>"."""
     from ..port.run import run_scene
+    from ..port.transition.branches import Trace
     from ..strategies import check_kinds, sample_scenes
 
     t0 = time.perf_counter()
@@ -50,12 +55,13 @@ def measure(kinds, n: int, seed: int, mode: str = "exact"):
     errors: Counter = Counter()
     t1 = time.perf_counter()
     for s in scenes:
-        trace: Counter = Counter()
+        trace = Trace()
         o = run_scene(s, mode=mode, trace=trace)
         if o.error:
             errors[o.error.split(":", 1)[0]] += 1
         total.update(trace)
         present.update(trace.keys())
+        present.update(f"near:{b}" for b, ulps in trace.closest.items() if ulps <= NEAR_ULPS)
     return present, total, gen, time.perf_counter() - t1, errors
 
 
@@ -81,7 +87,7 @@ def run(args) -> int:
         print("\n".join(render_table(counted.calls, counted.unwrapped)))
         return 0
     n = args.cases
-    names = sorted(set(known_branches()) | set(total))
+    names = sorted((set(known_branches()) | set(total)) - {k for k in total if k.startswith("boundary:")})
     print(f"kinds {','.join(kinds)}, {n} scenes, seed {args.seed}: generation {n / gen:.0f} scenes/s, "
           f"port {n / port:.0f} scenes/s")
     print(f"{'branch':48} {'scenes/1000':>12} {'fires/1000':>11}")
@@ -89,8 +95,21 @@ def run(args) -> int:
         key = "*" if name.startswith(KEY_PREFIXES) or name.endswith(KEY_PREFIXES) or ":" + name.split(":")[-1] in (
             ":cliff_slide", ":precipice_slide") else " "
         print(f"{key}{name:47} {present[name] * 1000 / n:12.1f} {total[name] * 1000 / n:11.1f}")
+    from ..port.transition.branches import MEASURED_IN_ULPS
+
+    print(f"\n{'boundary (hit exactly)':48} {'scenes/1000':>12} {'within ' + str(NEAR_ULPS) + ' ulps':>14}")
+    for name in boundary_names():
+        near = f"{present['near:' + name] * 1000 / n:14.1f}" if name in MEASURED_IN_ULPS else f"{'-':>14}"
+        print(f" {name:47} {present['boundary:' + name] * 1000 / n:12.1f} {near}")
     if args.anchors:
         print("\n".join(render_table(counted.calls, counted.unwrapped)))
     if errors:
         print("port errors: " + ", ".join(f"{k} x{v}" for k, v in errors.most_common()), file=sys.stderr)
     return 0
+
+
+def boundary_names() -> list[str]:
+    """Every exact boundary the port counts (a boundary never hit is printed with 0)."""
+    from ..port.transition.branches import BOUNDARIES
+
+    return list(BOUNDARIES)

@@ -117,6 +117,10 @@ BOUNDARIES: dict[str, str] = {
 }
 
 
+# the boundaries a Trace measures in ulps (the others are counted only when hit)
+MEASURED_IN_ULPS = ("floor_z", "landing_z", "sphere_tangent", "cylsphere_tangent")
+
+
 def _ordered(bits: int) -> int:
     # float32 bit patterns as integers that order like the floats (-0 and +0 meet at 0)
     return bits if bits < 0x80000000 else 0x80000000 - bits

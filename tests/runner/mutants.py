@@ -229,10 +229,20 @@ def hunt(index: int, budget: int = BUDGET, seed: int = SEED, failures_dir=None, 
     warnings.simplefilter("ignore", RuntimeWarning)
     mutant = load_mutant(index)
     calls = {"n": 0, "first": None, "last": None}
+    trace_type = importlib.import_module(mutant.__module__.rsplit(".", 1)[0] + ".transition.branches").Trace
 
-    def port(scene):
-        calls["last"] = guarded(mutant, scene)
-        return calls["last"]
+    class Port:
+        """The mutant as `acconform check` runs the built-in port: boundaries traced for target()."""
+
+        trace_boundaries = False
+        last_trace = None
+
+        def __call__(self, scene):
+            self.last_trace = trace_type() if self.trace_boundaries else None
+            calls["last"] = guarded(lambda s: mutant(s, trace=self.last_trace), scene)
+            return calls["last"]
+
+    port = Port()
 
     def oracle(scene):
         calls["n"] += 1
