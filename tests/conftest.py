@@ -10,3 +10,18 @@ def no_ace(monkeypatch, tmp_path):
     monkeypatch.delenv("ACE_RUNTIME", raising=False)
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
     monkeypatch.setenv("HOME", str(tmp_path / "home"))
+
+
+@pytest.fixture(scope="session")
+def live():
+    """The live oracle on the configured ACE (ACE_ASSEMBLY / --ace / config), or a visible skip."""
+    from acconform.errors import OracleUnavailable
+    from acconform.oracle import live_configured
+    from acconform.oracle.live import LiveOracle
+
+    if not live_configured():
+        pytest.skip("no ACE configured: set ACE_ASSEMBLY=/path/to/ACE.Server.dll to run the live-oracle lane")
+    try:
+        return LiveOracle()
+    except OracleUnavailable as e:
+        pytest.fail(f"ACE is configured but the live oracle cannot load: {e}")
