@@ -26,6 +26,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "record": ("acconform.commands.record", "run scenes through live ACE and append the records to the recorded-oracle corpus"),
     "coverage": ("acconform.commands.coverage", "how often each port branch fires per 1,000 generated scenes"),
     "bench": ("acconform.commands.bench", "run time against error: the port in exact and fast mode (and the oracle), per kind"),
+    "runtime-diff": ("acconform.commands.runtime_diff", "which outcome fields ACE on mono and ACE on .NET 10 answer differently "
+                     "(the two corpora, by scene), and which System.Numerics operation causes it"),
     "stress": ("acconform.commands.stress", "numerical stability: ULP nudges, borders, FloorZ, world edges; port vs live ACE"),
     "run": ("acconform.commands.run", "run one scene through the port (or --impl) and print its outcome"),
     "serve": ("acconform.commands.serve", "the built-in port as an implementation speaking acconform.protocol/1 on stdin/stdout"),

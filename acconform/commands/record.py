@@ -1,10 +1,12 @@
 """acconform record: run scenes through the live oracle (ACE) and append records to a corpus.
 
     acconform record SCENE.json ...                 scenes from files (scene, case or record files)
+    acconform record tests/data/corpus/mono/*.jsonl.gz   the scenes of another corpus's shards
     acconform record -n 1000 --kinds terrain,bsp    scenes drawn from the strategies (sample_scenes)
 
-Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: the repo's
-tests/data/corpus). Scenes already in the corpus are skipped. Needs a live ACE: without one it
+Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: the committed
+corpus of the runtime ACE ran on, tests/data/corpus/<mono|coreclr>). Scenes already in the
+corpus are skipped. Needs a live ACE: without one it
 exits 2 saying how to configure it.
 """
 
@@ -15,11 +17,12 @@ import time
 
 
 def add_arguments(p) -> None:
-    p.add_argument("files", nargs="*", metavar="FILE", help="scene, case or record files whose scenes to record")
+    p.add_argument("files", nargs="*", metavar="FILE", help="scene, case or record files, or corpus shards (.jsonl.gz), whose scenes to record")
     p.add_argument("-n", type=int, default=0, help="also record N scenes drawn from the strategies")
     p.add_argument("--kinds", default=None, help="scene kinds to draw, comma-separated (default: the strategies' defaults)")
     p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
-    p.add_argument("--out", default=None, metavar="DIR", help="corpus directory (default: tests/data/corpus)")
+    p.add_argument("--out", default=None, metavar="DIR", help="corpus directory (default: the committed "
+                   "corpus of the runtime ACE runs on, tests/data/corpus/<runtime>)")
     p.add_argument("--ace", default=None, metavar="PATH", help="ACE.Server.dll or its directory (else ACE_ASSEMBLY, else the config file)")
     p.add_argument("--runtime", choices=("mono", "coreclr"), default=None, help="force the .NET runtime (default: from the build)")
     p.add_argument("--batch", type=int, default=256, help="scenes per call into ACE (default 256)")
@@ -27,17 +30,17 @@ def add_arguments(p) -> None:
 
 
 def _scenes(args):
-    from ..case import load_document
+    from ..case import iter_documents
     from ..scene import Scene
 
-    for f in args.files:
-        doc = load_document(f)
-        scene = doc if isinstance(doc, Scene) else getattr(doc, "scene", None)
-        if scene is None:
-            from ..errors import InvalidScene
+    for path in args.files:
+        for where, doc in iter_documents(path):
+            scene = doc if isinstance(doc, Scene) else getattr(doc, "scene", None)
+            if scene is None:
+                from ..errors import InvalidScene
 
-            raise InvalidScene("", "an outcome file holds no scene to record", f)
-        yield scene
+                raise InvalidScene("", "an outcome file holds no scene to record", where)
+            yield scene
     if args.n > 0:
         from acconform.strategies import sample_scenes
 
@@ -48,13 +51,14 @@ def _scenes(args):
 def run(args) -> int:
     from ..case import Record
     from ..errors import AcconformError
-    from ..oracle import DEFAULT_CORPUS, require_live
+    from ..numerics import runtime_named
+    from ..oracle import default_corpus, require_live
     from ..oracle.recorded import CorpusWriter, RecordedOracle, scene_key
 
     if not args.files and args.n <= 0:
         raise AcconformError("nothing to record: give scene files and/or -n N")
     oracle = require_live(args.ace, args.runtime)
-    out = args.out or DEFAULT_CORPUS
+    out = args.out or default_corpus(runtime_named(oracle.versions.runtime))
     try:
         known = set(RecordedOracle(out)._lines)
     except AcconformError:

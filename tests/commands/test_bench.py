@@ -12,12 +12,12 @@ from acconform.outcome import Outcome
 
 def test_bench_on_five_scenes_prints_timings_and_the_field_table_and_writes_json(no_ace, tmp_path, capsys):
     out_file = tmp_path / "bench.json"
-    assert main(["bench", "-n", "5", "--kinds", "terrain", "--json", str(out_file)]) == 0
+    assert main(["bench", "-n", "5", "--kinds", "terrain", "--no-oracle", "--json", str(out_file)]) == 0
     out = capsys.readouterr().out
     assert "terrain: 5 scenes; ms/scene exact" in out and "exact/fast" in out
     assert "discrete outcome differs: fast vs exact" in out
     assert "origin[2]" in out and "ulp max" in out
-    assert "no oracle" in out  # no ACE configured: said, not silently dropped
+    assert "fast mode's disagreement with ACE is not measured" in out  # said, not silently dropped
     doc = json.loads(out_file.read_text())
     t = doc["kinds"]["terrain"]
     assert t["scenes"] == 5 and t["ms_exact"] > 0 and t["ms_fast"] > 0
@@ -36,6 +36,17 @@ def test_bench_against_a_recorded_corpus_adds_the_oracle_columns(no_ace, tmp_pat
     assert main(["bench", "-n", "3", "--kinds", "terrain", "--corpus", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     assert "fast vs oracle" in out and "exact vs oracle 0/3" in out
+    assert "differences from ACE as check counts them: fast mode (ULP tolerance) " in out
+    assert "exact mode (bits) 0/3" in out and "exact mode on 0." in out
+
+
+def test_bench_without_ace_measures_fast_mode_against_the_recorded_answers_of_the_runtime_asked_for(no_ace, capsys):
+    from acconform.oracle import default_corpus
+
+    assert main(["bench", "-n", "4", "--kinds", "bsp", "--runtime", "mono"]) == 0
+    out = capsys.readouterr().out
+    assert f"recorded corpus {default_corpus('mono')}" in out and "on mono 6.8" in out
+    assert "fast mode disagrees with ACE (mono 6.8.0.105) on " in out and "exact mode on 0." in out
 
 
 def test_error_stats_count_a_discrete_flip_once_and_keep_it_out_of_the_float_columns():
