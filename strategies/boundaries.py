@@ -138,3 +138,43 @@ def tangent_radius(kind: str, mover_r: float, want: float) -> tuple[float, float
 def grid_floor(x: float) -> float:
     """The multiple of GRID at or below x."""
     return math.floor(x / GRID) * GRID
+
+
+# ---------------------------------------------------------------- terrain slopes
+# A land cell whose two west (or south) corners sit at height index 0 and whose two east (north)
+# corners at index 1 is one plane rising by table[1] - table[0] over 24 m, and both its
+# triangles compute the same normal (each cross product is (-+24 dz, 0, 576) or its y twin,
+# whatever the cut). With table[0] = 0 the rise is table[1] itself, so the scene's land height
+# table (scene data: both sides build the landblock from it) is solved instead of a vertex.
+TERRAIN_RUN = 24.0
+
+
+def terrain_polygon(rise: float) -> PolygonRec:
+    """A land triangle of a cell rising by `rise` along +x: (00, 10, 11) as LandblockStruct links it."""
+    return PolygonRec(((0.0, 0.0, 0.0), (TERRAIN_RUN, 0.0, rise), (TERRAIN_RUN, TERRAIN_RUN, rise)))
+
+
+@lru_cache(maxsize=None)
+def terrain_rise_for(target_bits: int, mode: Mode = EXACT) -> float | None:
+    """A float32 table[1] (with table[0] = 0) whose one-index rise over a land cell gives normal.z
+    == target_bits exactly through make_plane, or None within SEARCH_ULPS of the analytic rise."""
+    z = f32_from_bits(target_bits)
+    base = f32_bits(to_f32(TERRAIN_RUN * math.sqrt(1.0 / (z * z) - 1.0)))
+    for k in sorted(range(-SEARCH_ULPS, SEARCH_ULPS + 1), key=abs):
+        rise = f32_from_bits(base + k)
+        if plane_normal_z_bits(terrain_polygon(rise), mode) == target_bits:
+            return rise
+    return None
+
+
+def exact_terrain_targets(mode: Mode = EXACT) -> tuple[tuple[str, float], ...]:
+    """(boundary name, table[1]) for every Z_BOUNDARIES entry a one-cell terrain rise reaches."""
+    return tuple((name, rise) for name, bits in Z_BOUNDARIES.items()
+                 if (rise := terrain_rise_for(bits, mode)) is not None)
+
+
+def exact_slope_table(rise: float) -> tuple[float, ...]:
+    """The default land height table with table[0] = 0 (already) and table[1] = rise."""
+    from acconform.scene import DEFAULT_LAND_HEIGHT_TABLE
+
+    return (DEFAULT_LAND_HEIGHT_TABLE[0], float(rise)) + DEFAULT_LAND_HEIGHT_TABLE[2:]
