@@ -1,9 +1,12 @@
 """Print the mutation check's figures: per planted bug, caught or not, scenes to find it, shrunk size.
 
     python tests/runner/mutation_report.py [-j 2] [--budget 1500] [--seed 0] [--only NAME,...] [--json FILE]
+    python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [-j 2] [--only ...]
 
 Runs the same hunt as test_mutations.py (mutants.hunt: one worker per mutant, no example
-database), mutants spread over -j processes.
+database), mutants spread over -j processes. With --corpus, generates nothing: replays the
+recorded corpus through each mutant against ACE's recorded answers (mutants.corpus_kill) and
+says which mutants the corpus alone kills.
 """
 
 from __future__ import annotations
@@ -16,12 +19,17 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from mutants import BUDGET, MUTATIONS, SEED, hunt  # noqa: E402
+from mutants import BUDGET, MUTATIONS, SEED, corpus_kill, hunt  # noqa: E402
 
 
 def _one(args):
     i, budget, seed = args
     return hunt(i, budget, seed)
+
+
+def _replay(args):
+    i, corpus, runtime, seed = args
+    return corpus_kill(i, corpus, runtime, seed)
 
 
 def main(argv=None) -> int:
@@ -31,9 +39,20 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=SEED)
     p.add_argument("--only", default="")
     p.add_argument("--json", default=None)
+    p.add_argument("--corpus", default=None, metavar="DIR", help="replay this recorded corpus instead of hunting")
+    p.add_argument("--runtime", default="mono", help="with --corpus: the records' runtime (mono or coreclr)")
     a = p.parse_args(argv)
     names = [m.name for m in MUTATIONS]
+    unknown = [n for n in a.only.split(",") if n and n not in names]
+    if unknown:
+        print(f"mutation_report: unknown mutant {unknown[0]!r}", file=sys.stderr)
+        return 2
     picked = [names.index(n) for n in a.only.split(",") if n] or list(range(len(MUTATIONS)))
+    if a.corpus is not None:
+        if not Path(a.corpus).is_dir():
+            print(f"mutation_report: no corpus directory at {a.corpus}", file=sys.stderr)
+            return 2
+        return _corpus_report(picked, a)
     with multiprocessing.get_context("fork").Pool(a.j) as pool:
         rows = []
         for row in pool.imap(_one, [(i, a.budget, a.seed) for i in picked]):
@@ -45,6 +64,21 @@ def main(argv=None) -> int:
     for r in rows:
         print(f"{r['name']:42} {'yes' if r['caught'] else 'no':>6} {r['scenes_to_find'] or '-':>6} "
               f"{r.get('landblocks', '-'):>4} {r.get('objects', '-'):>4} {r.get('path', '-'):>7}")
+    if a.json:
+        Path(a.json).write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+def _corpus_report(picked, a) -> int:
+    with multiprocessing.get_context("fork").Pool(a.j) as pool:
+        rows = []
+        for row in pool.imap(_replay, [(i, a.corpus, a.runtime, a.seed) for i in picked]):
+            rows.append(row)
+            print(json.dumps(row), flush=True)
+    print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by the corpus replay alone ({a.corpus}, {a.runtime})")
+    print(f"{'mutant':42} {'killed':>6} {'after':>6}")
+    for r in rows:
+        print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r['records_to_kill'] or '-':>6}")
     if a.json:
         Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0
