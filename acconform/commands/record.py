@@ -2,16 +2,30 @@
 
     acconform record SCENE.json ...                 scenes from files (scene, case or record files)
     acconform record -n 1000 --kinds terrain,bsp    scenes drawn from the strategies (sample_scenes)
+    acconform record -n 500 --boundaries            keep only scenes whose port run hits an exact boundary
+    acconform record other/corpus/bsp-0000.jsonl.gz the scenes of another corpus's shard (another runtime's)
 
 Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: the repo's
 tests/data/corpus). Scenes already in the corpus are skipped. Needs a live ACE: without one it
 exits 2 saying how to configure it.
+
+--boundaries keeps only scenes where the built-in port, traced (port/transition/branches.py),
+compares two bit-equal values at an exact boundary other than a cell or landblock border (those
+a plain campaign already ends on): a walkable or landing test at FloorZ/LandingZ, a tangency, a
+BSP split with walkable polygons on both sides. With -n it draws until N such scenes are kept
+(at most BOUNDARY_DRAWS_PER_SCENE draws each), so a corpus grows where bugs hide.
 """
 
 from __future__ import annotations
 
 import sys
 import time
+
+# the draws --boundaries may spend per kept scene before it gives up (about 1 in 8 drawn scenes
+# hits a boundary with the default kinds)
+BOUNDARY_DRAWS_PER_SCENE = 50
+# boundaries a scene must hit for --boundaries: every one but the borders
+BORDERS = ("cell_border", "landblock_border")
 
 
 def add_arguments(p) -> None:
@@ -23,31 +37,69 @@ def add_arguments(p) -> None:
     p.add_argument("--ace", default=None, metavar="PATH", help="ACE.Server.dll or its directory (else ACE_ASSEMBLY, else the config file)")
     p.add_argument("--runtime", choices=("mono", "coreclr"), default=None, help="force the .NET runtime (default: from the build)")
     p.add_argument("--batch", type=int, default=256, help="scenes per call into ACE (default 256)")
+    p.add_argument("--boundaries", action="store_true",
+                   help="keep only scenes whose port run hits an exact boundary (not a cell/landblock border)")
     p.add_argument("-q", "--quiet", action="store_true", help="print only the summary")
 
 
-def _scenes(args):
-    from ..case import load_document
+def hits_boundary(scene, runtime: str = "mono") -> bool:
+    """Whether the built-in port's run of `scene` compares bit-equal values at a boundary other
+    than a cell or landblock border (branches.BOUNDARIES)."""
+    import warnings
+
+    from acconform.port.run import run_scene
+    from acconform.port.transition.branches import BOUNDARIES, Trace
+
+    trace = Trace()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        run_scene(scene, trace=trace, runtime=runtime)
+    return any(trace["boundary:" + b] for b in BOUNDARIES if b not in BORDERS)
+
+
+def _scenes(args, runtime: str):
+    from ..case import is_lines_file, jsonl_lines, load_document, parse_document
+    from ..codec import parse_json_text
     from ..scene import Scene
 
-    for f in args.files:
-        doc = load_document(f)
-        scene = doc if isinstance(doc, Scene) else getattr(doc, "scene", None)
-        if scene is None:
-            from ..errors import InvalidScene
+    def documents(f):
+        if not is_lines_file(f):
+            yield load_document(f)
+            return
+        for lineno, line in jsonl_lines(f):  # a corpus shard: its records
+            yield parse_document(parse_json_text(line, f"{f} line {lineno}"), f"{f} line {lineno}")
 
-            raise InvalidScene("", "an outcome file holds no scene to record", f)
-        yield scene
+    for f in args.files:
+        for doc in documents(f):
+            scene = doc if isinstance(doc, Scene) else getattr(doc, "scene", None)
+            if scene is None:
+                from ..errors import InvalidScene
+
+                raise InvalidScene("", "an outcome file holds no scene to record", f)
+            if not args.boundaries or hits_boundary(scene, runtime):
+                yield scene
     if args.n > 0:
         from acconform.strategies import sample_scenes
 
         kinds = tuple(k for k in args.kinds.split(",") if k) if args.kinds else None
-        yield from sample_scenes(kinds, args.n, args.seed)
+        if not args.boundaries:
+            yield from sample_scenes(kinds, args.n, args.seed)
+            return
+        kept = 0
+        for round_ in range(BOUNDARY_DRAWS_PER_SCENE):
+            # rounds of N draws, each seeded apart, until N boundary scenes are kept
+            for scene in sample_scenes(kinds, args.n, args.seed * 1009 + round_):
+                if hits_boundary(scene, runtime):
+                    yield scene
+                    kept += 1
+                    if kept >= args.n:
+                        return
 
 
 def run(args) -> int:
     from ..case import Record
     from ..errors import AcconformError
+    from ..numerics import runtime_named
     from ..oracle import DEFAULT_CORPUS, require_live
     from ..oracle.recorded import CorpusWriter, RecordedOracle, scene_key
 
@@ -72,7 +124,7 @@ def run(args) -> int:
                 errors += outcome.error is not None
             batch.clear()
 
-        for scene in _scenes(args):
+        for scene in _scenes(args, runtime_named(oracle.versions.runtime)):
             key = scene_key(scene)
             if key in known:
                 skipped += 1
