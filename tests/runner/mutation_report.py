@@ -2,11 +2,14 @@
 
     python tests/runner/mutation_report.py [-j 2] [--budget 1500] [--seed 0] [--only NAME,...] [--json FILE]
     python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [-j 2] [--only ...]
+    ACE_ASSEMBLY=... python tests/runner/mutation_report.py --live 4000 [--only ...]
 
 Runs the same hunt as test_mutations.py (mutants.hunt: one worker per mutant, no example
 database), mutants spread over -j processes. With --corpus, generates nothing: replays the
 recorded corpus through each mutant against ACE's recorded answers (mutants.corpus_kill) and
-says which mutants the corpus alone kills.
+says which mutants the corpus alone kills. With --live N, each mutant is the implementation
+under test (tests/impl/planted_impl.py, --impl) in `acconform check -n N` against live ACE (the
+configured ACE_ASSEMBLY), one worker, no example database, stopping at its first difference.
 """
 
 from __future__ import annotations
@@ -40,6 +43,7 @@ def main(argv=None) -> int:
     p.add_argument("--only", default="")
     p.add_argument("--json", default=None)
     p.add_argument("--corpus", default=None, metavar="DIR", help="replay this recorded corpus instead of hunting")
+    p.add_argument("--live", type=int, default=0, metavar="N", help="a live campaign of N cases per mutant instead")
     p.add_argument("--runtime", default="mono", help="with --corpus: the records' runtime (mono or coreclr)")
     a = p.parse_args(argv)
     names = [m.name for m in MUTATIONS]
@@ -48,6 +52,8 @@ def main(argv=None) -> int:
         print(f"mutation_report: unknown mutant {unknown[0]!r}", file=sys.stderr)
         return 2
     picked = [names.index(n) for n in a.only.split(",") if n] or list(range(len(MUTATIONS)))
+    if a.live:
+        return _live_report(picked, a)
     if a.corpus is not None:
         if not Path(a.corpus).is_dir():
             print(f"mutation_report: no corpus directory at {a.corpus}", file=sys.stderr)
@@ -64,6 +70,45 @@ def main(argv=None) -> int:
     for r in rows:
         print(f"{r['name']:42} {'yes' if r['caught'] else 'no':>6} {r['scenes_to_find'] or '-':>6} "
               f"{r.get('landblocks', '-'):>4} {r.get('objects', '-'):>4} {r.get('path', '-'):>7}")
+    if a.json:
+        Path(a.json).write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+def _live(args):
+    import shlex
+    import subprocess
+    import tempfile
+    import time
+
+    i, n, seed = args
+    name = MUTATIONS[i].name
+    impl = f"{shlex.quote(sys.executable)} {shlex.quote(str(Path(__file__).resolve().parents[1] / 'impl' / 'planted_impl.py'))} {name}"
+    with tempfile.TemporaryDirectory(prefix="acconform-live-") as tmp:
+        summary = Path(tmp) / "summary.json"
+        t0 = time.monotonic()
+        r = subprocess.run([str(Path(sys.executable).parent / "acconform"), "check", "--impl", impl, "-n", str(n), "--seed", str(seed),
+                            "-j", "1", "--no-database", "--no-progress", "--failures", str(Path(tmp) / "failures"),
+                            "--json", str(summary)], capture_output=True, text=True)
+        out = {"name": name, "exit": r.returncode, "seconds": round(time.monotonic() - t0, 1)}
+        if summary.exists():
+            doc = json.loads(summary.read_text())
+            out["cases"] = (doc.get("cases") or {}).get("run")  # generated plus shrinking runs
+        out["killed"] = r.returncode == 1
+        if r.returncode not in (0, 1):
+            out["stderr"] = r.stderr[-400:]
+    return out
+
+
+def _live_report(picked, a) -> int:
+    with multiprocessing.get_context("fork").Pool(a.j) as pool:
+        rows = []
+        for row in pool.imap(_live, [(i, a.live, a.seed) for i in picked]):
+            rows.append(row)
+            print(json.dumps(row), flush=True)
+    print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by a live campaign of at most {a.live} cases")
+    for r in rows:
+        print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r.get('cases')}")
     if a.json:
         Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0
