@@ -178,3 +178,55 @@ def exact_slope_table(rise: float) -> tuple[float, ...]:
     from acconform.scene import DEFAULT_LAND_HEIGHT_TABLE
 
     return (DEFAULT_LAND_HEIGHT_TABLE[0], float(rise)) + DEFAULT_LAND_HEIGHT_TABLE[2:]
+
+
+# ---------------------------------------------------------------- a sphere's contact normal at a threshold
+# Two tests compare the z of a unit contact normal on a sphere obstacle with the walkable allowance:
+# Sphere.StepSphereDown's `disp.Z <= WalkableAllowance` (a walkable mover stepping up onto the
+# sphere: the allowance is FloorZ) and SpherePath.IsWalkableAllowable's `zval > WalkableAllowance`
+# (an airborne mover landing on the sphere's side: LandingZ). That z comes out of a double sqrt and
+# a normalisation, so no closed form lands on the bits; these geometries were searched through the
+# port (the horizontal offset on GRID near r_sum * sqrt(1 - z^2), then the obstacle radius ulp by
+# ulp, `solve_sphere_contact`) and each hits its boundary exactly. On GRID every difference is
+# exact, so a translation within GRID_LO..GRID_HI or a turn to another axis keeps the hit
+# (tests/strategies/test_boundaries.py runs each through the port, moved and turned).
+SPHERE_CONTACT_GROUND_INDEX = 50  # flat ground at table[50] = 100 m, inside GRID_LO..GRID_HI
+SPHERE_CONTACT_GROUND_Z = 100.0
+SPHERE_CONTACT_STEP_UP = 1.0
+
+# (how, mover radius, obstacle radius, horizontal offset): "walk" steps up onto the sphere
+# (StepSphereDown at FloorZ), "fall" drops past its side (IsWalkableAllowable at LandingZ)
+SPHERE_CONTACTS: tuple[tuple[str, float, float, float], ...] = (
+    ("walk", 0.25, 0.5000010132789612, 0.5606842041015625),
+    ("walk", 0.5, 1.0000020265579224, 1.121368408203125),
+    ("walk", 0.5, 0.5000048279762268, 0.7475814819335938),
+    ("walk", 0.25, 0.9999983906745911, 0.9344711303710938),
+    ("fall", 0.5, 0.500182032585144, 0.9963760375976562),
+    ("fall", 0.5, 1.000177264213562, 1.4944686889648438),
+)
+
+
+def sphere_contact_layout(how: str, r: float, radius: float, dx: float, x0: float, y0: float, ax: int, ay: int):
+    """Where everything goes for a SPHERE_CONTACTS entry, moved to block-local (x0, y0) on GRID and
+    along axis (ax, ay): (begin (x, y, z), end (x, y, z), obstacle centre (x, y, z)); z values are
+    the mover's origin (its sphere's centre is r above) over SPHERE_CONTACT_GROUND_Z."""
+    gz = SPHERE_CONTACT_GROUND_Z
+    radsum = float(np.float32(r) + np.float32(radius))
+    rise = math.sqrt(max(radsum * radsum - dx * dx, 0.0))
+    if how == "fall":
+        oz = grid_round(gz + 0.5 * radsum)
+        top = oz + rise  # the sphere centre's height where the two touch
+        zb, ze = grid_round(top + 0.1 * r - r), grid_round(top - 0.1 * r - r)
+        x1, y1 = x0, y0
+    else:
+        h = 0.1 * SPHERE_CONTACT_STEP_UP
+        step = grid_round(0.5 * r)
+        x1, y1 = x0 + ax * step, y0 + ay * step
+        oz = grid_round(gz + r + h - rise)
+        zb = ze = gz
+    return (x0, y0, zb), (x1, y1, ze), (x1 + ax * dx, y1 + ay * dx, oz)
+
+
+def grid_round(x: float) -> float:
+    """The multiple of GRID nearest x."""
+    return round(x / GRID) * GRID

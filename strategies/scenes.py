@@ -148,7 +148,9 @@ BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "
                                 "straddle", "straddle", "slope", "slope", "seam"))
 # obstacles: scattered along a free path, one across a cell or landblock border or corner
 # ("straddle_round"), or "tangent": one exactly tangent to the mover's end
-OBSTACLE_POLICIES = st.sampled_from(("scatter", "scatter", "scatter", "straddle_round", "tangent"))
+# or "sphere_contact": stepping up onto, or falling past, a sphere whose contact normal's z is
+# FloorZ or LandingZ exactly (boundaries.SPHERE_CONTACTS)
+OBSTACLE_POLICIES = st.sampled_from(("scatter", "scatter", "scatter", "straddle_round", "tangent", "sphere_contact"))
 # terrain: a free path, or "border_slope": grounded on tilted terrain, a few metres from a block
 # border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
 # "exact_slope": a one-cell rise whose normal.z is a walkable/landing threshold exactly (the land
@@ -199,6 +201,8 @@ def draw_scene(draw, kind: str) -> Scene:
     reach = max(s.center[2] + s.radius for s in spheres)
     if policy == "tangent":
         return _tangent_scene(draw, world, bx, by, spheres)
+    if policy == "sphere_contact":
+        return _sphere_contact_scene(draw, bx, by)
     if policy != "scatter":
         return _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres)
 
@@ -481,6 +485,34 @@ def _exact_slope_scene(draw, bx, by, spheres) -> Scene:
     reach = max(s.center[2] + s.radius for s in spheres)
     scene = _scene(world, bx, by, (gx, gy), (gx1, gy1), reach, [], mover, f"terrain:exact-slope-{name}")
     return Scene(scene.landblocks, scene.mover, scene.objects, land_height_table=table, name=scene.name)
+
+
+SPHERE_CONTACTS = st.sampled_from(bd.SPHERE_CONTACTS)
+
+
+def _sphere_contact_scene(draw, bx, by) -> Scene:
+    """A solved geometry of boundaries.SPHERE_CONTACTS over flat ground, moved on GRID and turned
+    to an axis: a walkable mover stepping up onto a sphere (StepSphereDown compares FloorZ bit
+    for bit) or an airborne one dropping past its side (IsWalkableAllowable compares LandingZ)."""
+    how, r, radius, dx = draw(SPHERE_CONTACTS)
+    x0, y0 = draw(TANGENT_STARTS), draw(TANGENT_STARTS)
+    ax, ay = draw(AXES)
+    (x0, y0, zb), (x1, y1, ze), (ox, oy, oz) = bd.sphere_contact_layout(how, r, radius, dx, x0, y0, ax, ay)
+    world = _World(tr.Field(bd.SPHERE_CONTACT_GROUND_INDEX, (), 0, 0, draw(tr.LAND)))
+    cell = cell_of(bx, by, x0, y0)
+    gz = bd.SPHERE_CONTACT_GROUND_Z
+    walk = how == "walk"
+    up = bd.SPHERE_CONTACT_STEP_UP
+    mover = Mover(spheres=(SphereRec((0.0, 0.0, r), r),), begin=Position(cell, Frame((x0, y0, zb))),
+                  end=Position(cell_of(bx, by, x1, y1), Frame((x1, y1, ze))), step_up_height=up, step_down_height=up,
+                  state=int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if draw(dr.BOOLEANS) else 0),
+                  transient_state=int(TransientState.Contact | TransientState.OnWalkable) if walk else 0,
+                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -gz)) if walk else None,
+                  velocity=(0.0, 0.0, 0.0))
+    gx0, gy0, gx1, gy1 = bx * BLOCK + x0, by * BLOCK + y0, bx * BLOCK + x1, by * BLOCK + y1
+    placed = [(SphereShape(SphereRec((0.0, 0.0, 0.0), radius)), bx * BLOCK + ox, by * BLOCK + oy, oz, IDENTITY,
+               int(PhysicsState.Static))]
+    return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), r, placed, mover, f"obstacles:sphere-contact-{how}")
 
 
 def _scene(world, bx, by, p0, p1, reach, placed, mover, name) -> Scene:

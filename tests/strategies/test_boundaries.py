@@ -102,3 +102,33 @@ def test_a_level_walk_hits_no_boundary_for_record_boundaries():
                   transient_state=0x3, contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -20.0)))
     scene = Scene((Landblock(0x6464FFFF, (10,) * 81, (4,) * 81),), mover)
     assert not hits_boundary(scene)
+
+
+@pytest.mark.anchor("CSphere::step_sphere_down")
+@pytest.mark.anchor("SPHEREPATH::is_walkable_allowable")
+@pytest.mark.parametrize("entry", bd.SPHERE_CONTACTS, ids=lambda e: f"{e[0]}-r{e[1]}-R{e[2]:.4f}")
+def test_every_solved_sphere_contact_hits_its_threshold_exactly_wherever_it_is_moved_on_the_grid(entry, monkeypatch):
+    import importlib
+
+    from hypothesis import HealthCheck, given, settings
+    from hypothesis import strategies as st
+
+    from acconform.port.run import run_scene
+    from acconform.port.transition.branches import Trace
+
+    scenes = importlib.import_module("acconform.strategies.scenes")
+    boundary = "floor_z" if entry[0] == "walk" else "landing_z"
+
+    @st.composite
+    def moved(draw):
+        return scenes._sphere_contact_scene(draw, 100, 100)
+
+    @settings(max_examples=12, database=None, deadline=None, derandomize=True, suppress_health_check=list(HealthCheck))
+    @given(moved())
+    def check(scene):
+        trace = Trace()
+        run_scene(scene, trace=trace)
+        assert trace["boundary:" + boundary] >= 1, scene.name
+
+    monkeypatch.setattr(scenes, "SPHERE_CONTACTS", st.just(entry))
+    check()
