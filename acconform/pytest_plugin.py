@@ -47,6 +47,7 @@ class CampaignResult:
 @pytest.fixture
 def acconform_campaign(request, tmp_path):
     from .impl import make_backend
+    from .numerics import runtime_named
     from .oracle import get_oracle, live_configured
     from .report import Campaign, summary
     from .runner import run_campaign
@@ -60,6 +61,7 @@ def acconform_campaign(request, tmp_path):
         started.append(port)
         kinds = tuple(k for k in check_kinds(kinds) if k in getattr(port, "kinds", check_kinds(kinds)))
         oracle = get_oracle()
+        port.runtime = runtime_named(oracle.versions.runtime)  # the port computes as the ACE it is compared with
         replay = None
         if not live_configured():
             replay = list(oracle.scenes(oracle.select(n=n, seed=seed, kinds=set(kinds))))

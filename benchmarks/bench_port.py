@@ -3,7 +3,7 @@
     python benchmarks/bench_port.py [--n 60] [--generated 40] [--repeat 3]
     python benchmarks/bench_port.py --against HEAD~3      # old/new ratio, measured in one run
 
-Scenes: the recorded corpus (tests/data/corpus/{terrain,bsp,obstacles}-*.jsonl.gz, the first
+Scenes: the recorded corpus (tests/data/corpus/coreclr/{terrain,bsp,obstacles}-*.jsonl.gz, the first
 --n of each kind) and --generated scenes from acconform.strategies.sample_scenes (seed 1).
 Each scene set runs --repeat times through run_scene in exact and fast mode; the best pass is
 reported as ms/scene (process CPU time, see CLOCK). "build%" is the share of that pass spent constructing landblocks
@@ -36,10 +36,10 @@ CLOCK = time.process_time
 
 def load_corpus(kind: str, n: int):
     from acconform.case import parse_document
-    from acconform.oracle import DEFAULT_CORPUS
+    from acconform.oracle import default_corpus
 
     out = []
-    for path in sorted(DEFAULT_CORPUS.glob(f"{kind}-*.jsonl.gz")):
+    for path in sorted(default_corpus().glob(f"{kind}-*.jsonl.gz")):
         with gzip.open(path, "rt", encoding="utf-8") as f:
             for line in f:
                 rec = parse_document(json.loads(line))

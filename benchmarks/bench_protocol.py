@@ -35,12 +35,14 @@ def main() -> int:
     args = p.parse_args()
 
     from acconform.impl import BuiltinPort
-    from acconform.oracle import DEFAULT_CORPUS
+    from acconform.numerics import runtime_named
+    from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle
     from acconform.protocol import Implementation
     from acconform.runner import run_campaign
 
-    oracle = RecordedOracle(DEFAULT_CORPUS)
+    oracle = RecordedOracle(default_corpus())
+    runtime = runtime_named(oracle.versions.runtime)
     scenes = list(oracle.scenes(oracle.select(n=args.n, seed=args.seed)))
     serve = Implementation(f"{sys.executable} -m acconform.cli serve")
     rates: dict[str, list[float]] = {"in-process port": [], "acconform serve": []}
@@ -48,6 +50,7 @@ def main() -> int:
     try:
         for round_ in range(args.rounds):  # alternated, so a change in the machine's load hits both
             for name, port in (("in-process port", BuiltinPort()), ("acconform serve", serve)):
+                port.runtime = runtime  # the port computes as the ACE whose answers it is compared with
                 t0, c0, s0 = time.perf_counter(), time.process_time(), _cpu_of(serve)
                 r = run_campaign(port, oracle.run, replay=scenes, failures_dir=None, workers=1, keep_going=True)
                 rates[name].append(r.cases / (time.perf_counter() - t0))

@@ -2,7 +2,8 @@
 
 `get_oracle(ace=None, runtime=None, corpus=None)` returns the live oracle when an ACE assembly
 is configured (``--ace``, ``ACE_ASSEMBLY``, or the user config file; see oracle/config.py) and
-otherwise the recorded oracle replaying `corpus` (default: DEFAULT_CORPUS, the committed corpus).
+otherwise the recorded oracle replaying `corpus` (default: `default_corpus(runtime)`, the committed
+corpus of that runtime; DEFAULT_RUNTIME, .NET 10 on CoreCLR, when none is asked for).
 This package is the only one that imports pythonnet, and only when the live oracle is made.
 """
 
@@ -17,11 +18,25 @@ from ..outcome import Outcome
 from ..scene import Scene
 
 _ROOT = Path(__file__).resolve().parent.parent  # a checkout's root, or the installed acconform package
-# The recorded corpus: tests/data/corpus in a checkout (and an editable install); an installed
-# acconform carries the same files as package data, acconform/corpus (pyproject.toml). The one
-# definition: every command, test and script that needs the default corpus imports this.
-DEFAULT_CORPUS = next((p for p in (_ROOT / "tests" / "data" / "corpus", _ROOT / "corpus") if p.is_dir()),
-                      _ROOT / "corpus")
+# The recorded corpora: tests/data/corpus in a checkout (and an editable install); an installed
+# acconform carries the same files as package data, acconform/corpus (pyproject.toml). One
+# directory per runtime ACE ran on, named by its runtime key: CORPUS_ROOT/mono, CORPUS_ROOT/coreclr.
+# The one definition: every command, test and script that needs a default corpus calls default_corpus.
+CORPUS_ROOT = next((p for p in (_ROOT / "tests" / "data" / "corpus", _ROOT / "corpus") if p.is_dir()),
+                   _ROOT / "corpus")
+# What users run: ACE ships for .NET 10 (ACE.Server.csproj targets net10.0), so on CoreCLR.
+DEFAULT_RUNTIME = "coreclr"
+
+
+def default_corpus(runtime: str | None = None) -> Path:
+    """The committed corpus of `runtime` ("mono" or "coreclr"; None: DEFAULT_RUNTIME)."""
+    from ..errors import AcconformError
+    from ..numerics import RUNTIMES
+
+    runtime = runtime or DEFAULT_RUNTIME
+    if runtime not in RUNTIMES:
+        raise AcconformError(f"unknown runtime {runtime!r}: choose one of {', '.join(sorted(RUNTIMES))}")
+    return CORPUS_ROOT / runtime
 
 
 @runtime_checkable
@@ -46,7 +61,7 @@ def get_oracle(ace=None, runtime: str | None = None, corpus=None) -> Oracle:
         return LiveOracle(ace, runtime)
     from .recorded import RecordedOracle
 
-    path = Path(corpus) if corpus is not None else DEFAULT_CORPUS
+    path = Path(corpus) if corpus is not None else default_corpus(runtime)
     return RecordedOracle(path)
 
 
@@ -101,4 +116,5 @@ def require_live(ace=None, runtime: str | None = None):
     return LiveOracle(ace, runtime)
 
 
-__all__ = ["Oracle", "PerProcessOracle", "get_oracle", "require_live", "live_configured", "DEFAULT_CORPUS"]
+__all__ = ["Oracle", "PerProcessOracle", "get_oracle", "require_live", "live_configured", "CORPUS_ROOT",
+           "DEFAULT_RUNTIME", "default_corpus"]

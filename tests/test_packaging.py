@@ -45,7 +45,8 @@ def test_a_wheel_installed_acconform_runs_check_on_the_corpus_it_carries(tmp_pat
     wheel = next(out.glob("acconform-*.whl"))
     names = zipfile.ZipFile(wheel).namelist()
     assert "acconform/oracle/facade/Facade.cs" in names
-    assert sum(n.startswith("acconform/corpus/") and n.endswith(".jsonl.gz") for n in names) >= 3
+    for runtime in ("mono", "coreclr"):  # both runtimes' corpora
+        assert sum(n.startswith(f"acconform/corpus/{runtime}/") and n.endswith(".jsonl.gz") for n in names) >= 3
     venv = tmp_path / "venv"
     subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
     subprocess.run([str(venv / "bin" / "pip"), "install", "-q", "--no-index", "--find-links", wheels, str(wheel)],
@@ -55,7 +56,11 @@ def test_a_wheel_installed_acconform_runs_check_on_the_corpus_it_carries(tmp_pat
     r = subprocess.run([str(venv / "bin" / "acconform"), "check", "-n", "30", "--seed", "1", "--no-progress",
                         "--failures", str(tmp_path / "f")], capture_output=True, text=True, cwd=tmp_path, env=env)
     assert r.returncode == 0, r.stdout + r.stderr
-    assert "30 cases" in r.stdout
-    where = subprocess.run([str(venv / "bin" / "python"), "-c", "from acconform.oracle import DEFAULT_CORPUS; "
-                            "print(DEFAULT_CORPUS)"], capture_output=True, text=True, cwd=tmp_path, env=env)
-    assert where.stdout.strip().endswith("acconform/corpus") and str(ROOT) not in where.stdout, where
+    assert "30 cases" in r.stdout and "coreclr arithmetic" in r.stderr
+    r = subprocess.run([str(venv / "bin" / "acconform"), "check", "-n", "30", "--seed", "1", "--no-progress",
+                        "--runtime", "mono", "--failures", str(tmp_path / "f")], capture_output=True, text=True,
+                       cwd=tmp_path, env=env)
+    assert r.returncode == 0 and "mono arithmetic" in r.stderr, r.stdout + r.stderr
+    where = subprocess.run([str(venv / "bin" / "python"), "-c", "from acconform.oracle import default_corpus; "
+                            "print(default_corpus())"], capture_output=True, text=True, cwd=tmp_path, env=env)
+    assert where.stdout.strip().endswith("acconform/corpus/coreclr") and str(ROOT) not in where.stdout, where

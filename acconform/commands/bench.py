@@ -25,10 +25,12 @@ def add_arguments(p) -> None:
     p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
     p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default terrain,bsp,obstacles)")
     p.add_argument("--corpus", nargs="?", const="", default=None, metavar="DIR",
-                   help="take the scenes (and the oracle's answers) from a recorded corpus (default: the repository's)")
+                   help="take the scenes (and the oracle's answers) from a recorded corpus (default: the committed "
+                   "corpus of --runtime)")
     p.add_argument("--no-oracle", action="store_true", help="do not compare against an oracle even when ACE is configured")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
-    p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
+    p.add_argument("--runtime", default=None, help="runtime of the live oracle (mono or coreclr; "
+                   "default: from the build), or of the committed corpus --corpus takes (default coreclr)")
     p.add_argument("--json", default=None, metavar="FILE", help="also write the figures as JSON")
     from ..impl import add_arguments as impl_arguments
 
@@ -125,10 +127,10 @@ def _scenes(args, kinds):
     if args.corpus is None:
         return {k: list(sample_scenes((k,), args.cases, args.seed)) for k in kinds}, None
     from ..errors import AcconformError
-    from ..oracle import DEFAULT_CORPUS
+    from ..oracle import default_corpus
     from ..oracle.recorded import RecordedOracle, scene_kind
 
-    oracle = RecordedOracle(args.corpus or DEFAULT_CORPUS)
+    oracle = RecordedOracle(args.corpus or default_corpus(args.runtime))
     out: dict[str, list] = {k: [] for k in kinds}
     for s in oracle.scenes():
         k = scene_kind(s)

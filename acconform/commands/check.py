@@ -4,9 +4,10 @@ Exit 0 when no difference was found, 1 when one was (each written as a case file
 --failures), 2 for bad input or when there is nothing to check against (no ACE configured and
 no corpus), 130 when interrupted (after printing what the campaign found so far).
 
-Replaying the corpus: ``-n`` replays a sample stratified by kind, drawn with ``--seed``;
-``--runtime`` replays only the records of that runtime; ``--database`` (Hypothesis' example
-database) has no use there and is refused.
+Replaying the corpus: ``--runtime`` picks the committed corpus of that runtime (default coreclr,
+.NET 10, what users run; ``--runtime mono`` replays mono's), or with ``--corpus DIR`` only the
+records of that runtime; ``-n`` replays a sample stratified by kind, drawn with ``--seed``;
+``--database`` (Hypothesis' example database) has no use there and is refused.
 """
 
 from __future__ import annotations
@@ -33,9 +34,10 @@ def add_arguments(p) -> None:
     p.add_argument("--no-database", action="store_true", help="do not read or write the example database")
     p.add_argument("-j", "--workers", type=int, default=0, help="worker processes (default: all cores)")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
-    p.add_argument("--runtime", default=None, help="runtime of the live oracle (mono or coreclr); replaying the "
-                   "corpus: only records of that runtime")
-    p.add_argument("--corpus", default=None, metavar="DIR", help="recorded corpus to replay when no ACE is configured")
+    p.add_argument("--runtime", default=None, help="runtime of the live oracle (mono or coreclr; default: from the "
+                   "build); replaying: the corpus of that runtime (default coreclr, .NET 10)")
+    p.add_argument("--corpus", default=None, metavar="DIR", help="recorded corpus to replay when no ACE is configured "
+                   "(default: the committed corpus of --runtime)")
     impl_arguments(p)
     p.add_argument("--json", default=None, metavar="FILE", help="write a JSON summary (cases, differences by field and kind, seed, versions, timings)")
     p.add_argument("--junit", default=None, metavar="FILE", help="write JUnit XML: one testcase per class of difference")
@@ -142,7 +144,7 @@ def _port_runtime(args, oracle) -> str:
 def _oracle(args, workers: int, kinds):
     """(oracle, scenes to replay or None, unreadable records skipped). Exit 2 when there is nothing to compare against."""
     from ..errors import AcconformError, OracleUnavailable
-    from ..oracle import DEFAULT_CORPUS, PerProcessOracle, get_oracle, live_configured
+    from ..oracle import PerProcessOracle, default_corpus, get_oracle, live_configured
     from ..oracle.recorded import CorpusMissing, RecordedOracle
 
     if live_configured(args.ace):
@@ -156,7 +158,7 @@ def _oracle(args, workers: int, kinds):
     if args.seed is not None and args.cases is None:
         raise AcconformError("--seed draws the corpus sample of -n; replaying the whole corpus uses no seed "
                              "(add -n N, or drop --seed)")
-    corpus = Path(args.corpus) if args.corpus is not None else DEFAULT_CORPUS
+    corpus = Path(args.corpus) if args.corpus is not None else default_corpus(args.runtime)
     try:
         oracle = RecordedOracle(corpus, keep_going=args.keep_going,
                                 progress=None if args.no_progress else (lambda m: _say(f"recorded corpus: {m}")))

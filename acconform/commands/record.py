@@ -1,19 +1,20 @@
 """acconform record: run scenes through the live oracle (ACE) and append records to a corpus.
 
     acconform record SCENE.json ...                 scenes from files (scene, case or record files)
+    acconform record tests/data/corpus/mono/*.jsonl.gz   the scenes of another corpus's shards
     acconform record -n 1000 --kinds terrain,bsp    scenes drawn from the strategies (sample_scenes)
     acconform record -n 500 --boundaries            keep only scenes whose port run hits an exact boundary
-    acconform record other/corpus/bsp-0000.jsonl.gz the scenes of another corpus's shard (another runtime's)
 
-Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: the repo's
-tests/data/corpus). Scenes already in the corpus are skipped. Needs a live ACE: without one it
+Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: the committed
+corpus of the runtime ACE ran on, tests/data/corpus/<mono|coreclr>). Scenes already in the
+corpus are skipped. Needs a live ACE: without one it
 exits 2 saying how to configure it.
 
 --boundaries keeps only scenes where the built-in port, traced (port/transition/branches.py),
 compares two bit-equal values at an exact boundary other than a cell or landblock border (those
 a plain campaign already ends on): a walkable or landing test at FloorZ/LandingZ, a tangency, a
 BSP split with walkable polygons on both sides. With -n it draws until N such scenes are kept
-(at most BOUNDARY_DRAWS_PER_SCENE draws each), so a corpus grows where bugs hide.
+(rounds of N draws, at most BOUNDARY_ROUNDS), so a corpus grows where bugs hide.
 """
 
 from __future__ import annotations
@@ -21,19 +22,20 @@ from __future__ import annotations
 import sys
 import time
 
-# the draws --boundaries may spend per kept scene before it gives up (about 1 in 8 drawn scenes
-# hits a boundary with the default kinds)
-BOUNDARY_DRAWS_PER_SCENE = 50
+# rounds of N draws --boundaries may spend to keep N scenes (about 1 in 8 drawn scenes hits a
+# boundary with the default kinds)
+BOUNDARY_ROUNDS = 50
 # boundaries a scene must hit for --boundaries: every one but the borders
 BORDERS = ("cell_border", "landblock_border")
 
 
 def add_arguments(p) -> None:
-    p.add_argument("files", nargs="*", metavar="FILE", help="scene, case or record files whose scenes to record")
+    p.add_argument("files", nargs="*", metavar="FILE", help="scene, case or record files, or corpus shards (.jsonl.gz), whose scenes to record")
     p.add_argument("-n", type=int, default=0, help="also record N scenes drawn from the strategies")
     p.add_argument("--kinds", default=None, help="scene kinds to draw, comma-separated (default: the strategies' defaults)")
     p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
-    p.add_argument("--out", default=None, metavar="DIR", help="corpus directory (default: tests/data/corpus)")
+    p.add_argument("--out", default=None, metavar="DIR", help="corpus directory (default: the committed "
+                   "corpus of the runtime ACE runs on, tests/data/corpus/<runtime>)")
     p.add_argument("--ace", default=None, metavar="PATH", help="ACE.Server.dll or its directory (else ACE_ASSEMBLY, else the config file)")
     p.add_argument("--runtime", choices=("mono", "coreclr"), default=None, help="force the .NET runtime (default: from the build)")
     p.add_argument("--batch", type=int, default=256, help="scenes per call into ACE (default 256)")
@@ -58,24 +60,16 @@ def hits_boundary(scene, runtime: str = "mono") -> bool:
 
 
 def _scenes(args, runtime: str):
-    from ..case import is_lines_file, jsonl_lines, load_document, parse_document
-    from ..codec import parse_json_text
+    from ..case import iter_documents
     from ..scene import Scene
 
-    def documents(f):
-        if not is_lines_file(f):
-            yield load_document(f)
-            return
-        for lineno, line in jsonl_lines(f):  # a corpus shard: its records
-            yield parse_document(parse_json_text(line, f"{f} line {lineno}"), f"{f} line {lineno}")
-
-    for f in args.files:
-        for doc in documents(f):
+    for path in args.files:
+        for where, doc in iter_documents(path):
             scene = doc if isinstance(doc, Scene) else getattr(doc, "scene", None)
             if scene is None:
                 from ..errors import InvalidScene
 
-                raise InvalidScene("", "an outcome file holds no scene to record", f)
+                raise InvalidScene("", "an outcome file holds no scene to record", where)
             if not args.boundaries or hits_boundary(scene, runtime):
                 yield scene
     if args.n > 0:
@@ -86,7 +80,7 @@ def _scenes(args, runtime: str):
             yield from sample_scenes(kinds, args.n, args.seed)
             return
         kept = 0
-        for round_ in range(BOUNDARY_DRAWS_PER_SCENE):
+        for round_ in range(BOUNDARY_ROUNDS):
             # rounds of N draws, each seeded apart, until N boundary scenes are kept
             for scene in sample_scenes(kinds, args.n, args.seed * 1009 + round_):
                 if hits_boundary(scene, runtime):
@@ -100,13 +94,13 @@ def run(args) -> int:
     from ..case import Record
     from ..errors import AcconformError
     from ..numerics import runtime_named
-    from ..oracle import DEFAULT_CORPUS, require_live
+    from ..oracle import default_corpus, require_live
     from ..oracle.recorded import CorpusWriter, RecordedOracle, scene_key
 
     if not args.files and args.n <= 0:
         raise AcconformError("nothing to record: give scene files and/or -n N")
     oracle = require_live(args.ace, args.runtime)
-    out = args.out or DEFAULT_CORPUS
+    out = args.out or default_corpus(runtime_named(oracle.versions.runtime))
     try:
         known = set(RecordedOracle(out)._lines)
     except AcconformError:

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from acconform.oracle import DEFAULT_CORPUS
+from acconform.oracle import default_corpus
 from acconform.oracle.recorded import RecordedOracle, shards
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -40,10 +40,10 @@ def small_corpus(tmp_path):
     """Two shards: 40 good terrain records, and a bsp shard whose 3rd line is broken."""
     d = tmp_path / "corpus"
     d.mkdir()
-    terrain = [line for _, line in zip(range(40), gzip.open(next(s for s in shards(DEFAULT_CORPUS) if s.name.startswith("terrain")), "rt"))]
+    terrain = [line for _, line in zip(range(40), gzip.open(next(s for s in shards(default_corpus()) if s.name.startswith("terrain")), "rt"))]
     with gzip.open(d / "terrain-0000.jsonl.gz", "wt") as f:
         f.writelines(terrain)
-    bsp = [line for _, line in zip(range(5), gzip.open(shards(DEFAULT_CORPUS)[0], "rt"))]
+    bsp = [line for _, line in zip(range(5), gzip.open(shards(default_corpus())[0], "rt"))]
     bsp[2] = '{"format": "acconform.record/1", "scene": \n'
     with gzip.open(d / "bsp-0000.jsonl.gz", "wt") as f:
         f.writelines(bsp)
@@ -70,7 +70,7 @@ def test_a_truncated_shard_is_named_with_the_last_line_read(small_corpus, tmp_pa
 
 
 def test_validate_and_show_read_corpus_shards():
-    shard = shards(DEFAULT_CORPUS)[0]
+    shard = shards(default_corpus())[0]
     r = cli("validate", str(shard))
     assert r.returncode == 0 and r.stdout.startswith(f"ok {shard}: ") and "records" in r.stdout
     r = cli("show", str(shard))
@@ -78,7 +78,7 @@ def test_validate_and_show_read_corpus_shards():
 
 
 def test_show_into_a_closed_pipe_stops_quietly():
-    shard = shards(DEFAULT_CORPUS)[0]
+    shard = shards(default_corpus())[0]
     p = subprocess.run(f"{sys.executable} -m acconform.cli show {shard} | head -1", shell=True, capture_output=True,
                        text=True, cwd=ROOT)
     assert p.stdout.startswith("# ") and p.stderr == ""
@@ -125,11 +125,13 @@ def test_negative_worker_counts_are_refused(no_ace):
 def test_replay_refuses_options_it_would_ignore(no_ace):
     one_line_exit_2(cli("check", "--database", "db"), "--database", "replaying")
     one_line_exit_2(cli("check", "--seed", "4"), "--seed", "-n")
-    one_line_exit_2(cli("check", "--runtime", "coreclr", "--no-progress"), "--runtime coreclr", "mono 6.8.0.105")
+    one_line_exit_2(cli("check", "--runtime", "mono", "--corpus", str(default_corpus("coreclr")), "--no-progress"),
+                    "--runtime mono", "coreclr .NET 10")
+    one_line_exit_2(cli("check", "--runtime", "wasm", "--no-progress"), "unknown runtime 'wasm'", "coreclr, mono")
 
 
 def test_replay_samples_n_cases_stratified_by_kind_with_the_seed():
-    oracle = RecordedOracle(DEFAULT_CORPUS)
+    oracle = RecordedOracle(default_corpus())
     every = Counter(oracle._where[k][1] for k in oracle.select())
     a = oracle.select(n=300, seed=1)
     assert len(a) == 300 and a == oracle.select(n=300, seed=1) and a != oracle.select(n=300, seed=2)
@@ -137,7 +139,7 @@ def test_replay_samples_n_cases_stratified_by_kind_with_the_seed():
     for kind, n in every.items():
         assert abs(got[kind] - 300 * n / len(oracle)) <= 1, (got, every)
     assert Counter(oracle._where[k][1] for k in oracle.select(n=2, seed=0)).total() == 2
-    assert set(oracle.select(runtime="mono")) == set(oracle.select()) and not oracle.select(runtime="coreclr")
+    assert set(oracle.select(runtime="coreclr")) == set(oracle.select()) and not oracle.select(runtime="mono")
 
 
 def test_progress_is_printed_while_the_corpus_loads(tmp_path, no_ace):

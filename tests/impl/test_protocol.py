@@ -38,10 +38,10 @@ def check(*args, cwd):
 
 @pytest.fixture(scope="module")
 def corpus_scenes():
-    from acconform.oracle import DEFAULT_CORPUS
+    from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle
 
-    oracle = RecordedOracle(DEFAULT_CORPUS)
+    oracle = RecordedOracle(default_corpus())
     keys = oracle.select(n=30, seed=5)
     return {scene_kind(s): s for s in oracle.scenes(keys)}
 

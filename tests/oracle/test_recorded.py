@@ -7,7 +7,8 @@ import pytest
 
 from acconform.case import Record, Versions
 from acconform.outcome import Outcome
-from acconform.oracle import DEFAULT_CORPUS, get_oracle
+from acconform.numerics import RUNTIMES, runtime_named
+from acconform.oracle import CORPUS_ROOT, DEFAULT_RUNTIME, default_corpus, get_oracle
 from acconform.oracle.recorded import CorpusMissing, CorpusWriter, RecordedOracle, UnrecordedScene, scene_key, shards
 
 from .scenes import PROBE, off_the_map
@@ -15,20 +16,34 @@ from .scenes import PROBE, off_the_map
 MIN_CORPUS = 10_000
 
 
-def test_committed_corpus_exists_and_is_large():
-    """Fails (never skips) when the corpus is missing or small: CI's differential lane depends on it."""
-    oracle = RecordedOracle(DEFAULT_CORPUS)
-    assert len(oracle) >= MIN_CORPUS, f"{DEFAULT_CORPUS} holds {len(oracle)} records, fewer than {MIN_CORPUS}"
+@pytest.mark.parametrize("runtime", sorted(RUNTIMES))
+def test_committed_corpus_of_each_runtime_exists_and_is_large(runtime):
+    """Fails (never skips) when a corpus is missing or small: CI's differential lane depends on it."""
+    oracle = RecordedOracle(default_corpus(runtime))
+    assert len(oracle) >= MIN_CORPUS, f"{default_corpus(runtime)} holds {len(oracle)} records, fewer than {MIN_CORPUS}"
 
 
-def test_committed_corpus_spans_every_scene_kind():
-    kinds = {p.name.split("-")[0] for p in shards(DEFAULT_CORPUS)}
+def test_the_corpus_root_holds_one_corpus_per_runtime_and_the_default_is_coreclr():
+    assert sorted(p.name for p in CORPUS_ROOT.iterdir() if p.is_dir()) == sorted(RUNTIMES)
+    assert DEFAULT_RUNTIME == "coreclr" and default_corpus() == CORPUS_ROOT / "coreclr"
+
+
+def test_the_coreclr_corpus_records_the_same_scenes_as_the_mono_corpus():
+    """The two corpora pair up by scene key (the runtime difference table compares them)."""
+    mono, coreclr = RecordedOracle(default_corpus("mono")), RecordedOracle(default_corpus("coreclr"))
+    assert set(coreclr._lines) >= set(mono._lines)
+
+
+@pytest.mark.parametrize("runtime", sorted(RUNTIMES))
+def test_committed_corpus_spans_every_scene_kind(runtime):
+    kinds = {p.name.split("-")[0] for p in shards(default_corpus(runtime))}
     assert {"terrain", "bsp", "obstacles"} <= kinds
 
 
-def test_committed_corpus_replays_its_own_scenes_and_names_its_ace():
-    oracle = RecordedOracle(DEFAULT_CORPUS)
-    assert oracle.versions.ace and oracle.versions.runtime
+@pytest.mark.parametrize("runtime", sorted(RUNTIMES))
+def test_committed_corpus_replays_its_own_scenes_and_names_its_ace_and_runtime(runtime):
+    oracle = RecordedOracle(default_corpus(runtime))
+    assert oracle.versions.ace and runtime_named(oracle.versions.runtime) == runtime
     seen = 0
     for i, rec in enumerate(oracle.records()):
         if i % 97:

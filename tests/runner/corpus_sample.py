@@ -1,8 +1,10 @@
 """The fast lane's fixed, stratified sample of the recorded corpus.
 
-    python tests/runner/corpus_sample.py [--size 1500]     rebuild tests/data/corpus/fast-sample.json
+    python tests/runner/corpus_sample.py [--size 1500] [--runtime mono|coreclr]
+        rebuild tests/data/corpus/<runtime>/fast-sample.json (default: both runtimes' samples)
 
-Runs every corpus record through the port with a branch trace, then picks, deterministically
+Runs every record of a runtime's corpus through the port (computing as that runtime does) with a
+branch trace, then picks, deterministically
 (by scene key): for each branch, rarest first, up to PER_BRANCH records that fire it; then
 records spread evenly over the kinds until SIZE. The file lists each picked record's key, kind
 and the branches it fires, plus how many corpus records fire each branch, so a test can check
@@ -19,27 +21,35 @@ import warnings
 from collections import Counter, defaultdict
 from pathlib import Path
 
-SAMPLE_FILE = Path(__file__).resolve().parents[1] / "data" / "corpus" / "fast-sample.json"
+SAMPLE_NAME = "fast-sample.json"  # beside the corpus it samples: tests/data/corpus/<runtime>/fast-sample.json
 SIZE = 1500
 PER_BRANCH = 25
 
 
-def load_sample(path: Path = SAMPLE_FILE) -> dict:
-    return json.loads(path.read_text())
+def sample_file(runtime: str) -> Path:
+    from acconform.oracle import default_corpus
+
+    return default_corpus(runtime) / SAMPLE_NAME
+
+
+def load_sample(runtime: str) -> dict:
+    return json.loads(sample_file(runtime).read_text())
 
 
 def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
+    from acconform.numerics import runtime_named
     from acconform.oracle.recorded import RecordedOracle, scene_kind
     from acconform.port.run import run_scene
     from acconform.scene import Scene
 
     warnings.simplefilter("ignore", RuntimeWarning)
     oracle = RecordedOracle(corpus_dir)
+    runtime = runtime_named(oracle.versions.runtime)
     fires: dict[str, tuple[str, frozenset]] = {}
     for key in sorted(oracle._lines):
         scene = Scene.from_json(json.loads(oracle._lines[key])["scene"])
         trace: Counter = Counter()
-        run_scene(scene, trace=trace)
+        run_scene(scene, trace=trace, runtime=runtime)
         fires[key] = (scene_kind(scene), frozenset(trace))
     by_branch: dict[str, list[str]] = defaultdict(list)
     for key, (_, branches) in fires.items():
@@ -73,15 +83,17 @@ def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--size", type=int, default=SIZE)
-    p.add_argument("--corpus", default=None)
+    p.add_argument("--runtime", choices=("mono", "coreclr"), action="append",
+                   help="the runtime whose corpus to sample (repeatable; default both)")
     args = p.parse_args(argv)
-    from acconform.oracle import DEFAULT_CORPUS
+    from acconform.oracle import default_corpus
 
-    doc = build(args.corpus or DEFAULT_CORPUS, args.size)
-    SAMPLE_FILE.write_text(json.dumps(doc, separators=(",", ":")) + "\n")
-    kinds = Counter(r[1] for r in doc["records"])
-    print(f"{len(doc['records'])} of {doc['corpus_records']} records ({dict(kinds)}), "
-          f"{len(doc['branches'])} branches -> {SAMPLE_FILE}", file=sys.stderr)
+    for runtime in args.runtime or ("coreclr", "mono"):
+        doc = build(default_corpus(runtime), args.size)
+        sample_file(runtime).write_text(json.dumps(doc, separators=(",", ":")) + "\n")
+        kinds = Counter(r[1] for r in doc["records"])
+        print(f"{len(doc['records'])} of {doc['corpus_records']} records ({dict(kinds)}), "
+              f"{len(doc['branches'])} branches -> {sample_file(runtime)}", file=sys.stderr)
     return 0
 
 

@@ -1,9 +1,10 @@
 """The differential lane: the port against ACE, driven by the same runner as `acconform check`.
 
-Live ACE when configured (a generative, shrinking campaign); otherwise the recorded corpus is
-replayed. The fast lane replays a fixed, stratified sample of the corpus
-(tests/data/corpus/fast-sample.json, built by corpus_sample.py: every kind, every branch the
-corpus reaches, ~1,500 records); the whole corpus is the slow lane (and CI's `acconform check`).
+Live ACE when configured (a generative, shrinking campaign, on the runtime the build runs on);
+otherwise each runtime's recorded corpus is replayed, the port computing as that runtime does.
+The fast lane replays a fixed, stratified sample of each corpus
+(tests/data/corpus/<runtime>/fast-sample.json, built by corpus_sample.py: every kind, every branch
+the corpus reaches, ~1,500 records); the whole corpora are the slow lane (and CI's `acconform check`).
 Shards are separate tests so `pytest -n auto` (pytest-xdist) spreads them over all cores. A
 differential lane with neither an oracle nor recorded data fails: it must not pass by checking
 nothing.
@@ -15,10 +16,14 @@ import json
 import os
 import warnings
 from collections import Counter
+from functools import partial
 
 import pytest
 
-from corpus_sample import SAMPLE_FILE, load_sample
+from acconform.numerics import RUNTIMES, runtime_named
+from acconform.oracle import get_oracle, live_configured
+from acconform.port.run import run_scene
+from corpus_sample import SAMPLE_NAME, load_sample
 
 SHARDS = 4
 CASES = int(os.environ.get("ACCONFORM_CASES", "200"))  # generative scenes per shard (live oracle)
@@ -27,30 +32,33 @@ SEED = int(os.environ.get("ACCONFORM_SEED", "0"))
 warnings.simplefilter("ignore", RuntimeWarning)
 
 
-@pytest.fixture(scope="module")
-def backends():
-    port = pytest.importorskip("acconform.port.run", reason="the port has not landed")
-    oracle_pkg = pytest.importorskip("acconform.oracle")
-    if not hasattr(oracle_pkg, "get_oracle"):
-        pytest.skip("the oracle package has not landed get_oracle yet")
-    oracle = oracle_pkg.get_oracle()  # an empty corpus raises: the lane fails, as it must
-    return port.run_scene, oracle
+@pytest.fixture(scope="module", params=sorted(RUNTIMES))
+def backends(request):
+    """(the port computing as `runtime`, ACE on it, runtime): live ACE when configured, else the runtime's corpus."""
+    runtime = request.param
+    if live_configured():
+        oracle = get_oracle()
+        if runtime_named(oracle.versions.runtime) != runtime:
+            pytest.skip(f"live ACE runs on {oracle.versions.runtime}; the {runtime} corpus replays without a live ACE")
+    else:
+        oracle = get_oracle(runtime=runtime)  # a missing or empty corpus raises: the lane fails, as it must
+    return partial(run_scene, runtime=runtime), oracle, runtime
 
 
 def _live(oracle) -> bool:
     return getattr(oracle, "name", "") == "live"
 
 
-def _sample_scenes(oracle, shard):
+def _sample_scenes(oracle, runtime, shard):
     """This shard's sample records as (scene, branches it fires), from the recorded oracle."""
     from acconform.scene import Scene
 
-    doc = load_sample()
+    doc = load_sample(runtime)
     names = doc["branches"]
     out = []
     for key, _kind, branches in doc["records"][shard::SHARDS]:
         line = oracle._lines.get(key)
-        assert line is not None, f"{SAMPLE_FILE.name} names record {key[:16]}, which the corpus lacks: rebuild it"
+        assert line is not None, f"{runtime}/{SAMPLE_NAME} names record {key[:16]}, which the corpus lacks: rebuild it"
         out.append((Scene.from_json(json.loads(line)["scene"]), {names[i] for i in branches}))
     return out
 
@@ -67,11 +75,11 @@ def _run(run_scene, oracle, tmp_path, shard, replay):
 
 @pytest.mark.parametrize("shard", range(SHARDS))
 def test_port_agrees_with_ace_on_the_stratified_sample(shard, backends, tmp_path):
-    run_scene, oracle = backends
+    run_scene, oracle, runtime = backends
     if _live(oracle):
         _run(run_scene, oracle, tmp_path, shard, None)
         return
-    sample = _sample_scenes(oracle, shard)
+    sample = _sample_scenes(oracle, runtime, shard)
     traces = []
 
     def traced(scene):
@@ -82,13 +90,14 @@ def test_port_agrees_with_ace_on_the_stratified_sample(shard, backends, tmp_path
     _run(traced, oracle, tmp_path, shard, [s for s, _ in sample])
     # the sample file's branch lists are what the port really fires (so its coverage claim holds)
     wrong = [s.name for (s, want), got in zip(sample, traces) if set(got) != want]
-    assert not wrong, f"{len(wrong)} sample records fire other branches than {SAMPLE_FILE.name} says: rebuild it"
+    assert not wrong, f"{len(wrong)} sample records fire other branches than {runtime}/{SAMPLE_NAME} says: rebuild it"
 
 
-def test_the_sample_spans_every_kind_and_every_branch_the_corpus_reaches():
+@pytest.mark.parametrize("runtime", sorted(RUNTIMES))
+def test_the_sample_spans_every_kind_and_every_branch_the_corpus_reaches(runtime):
     from acconform.port.transition.branches import BRANCHES, NOT_YET_REACHED
 
-    doc = load_sample()
+    doc = load_sample(runtime)
     assert 1000 <= len(doc["records"]) <= 2500
     assert {r[1] for r in doc["records"]} >= {"terrain", "bsp", "obstacles"}
     reached = {doc["branches"][i] for r in doc["records"] for i in r[2]}
@@ -111,7 +120,7 @@ CORPUS_MISSES = {
 @pytest.mark.slow
 @pytest.mark.parametrize("shard", range(SHARDS))
 def test_port_agrees_with_ace_on_the_whole_corpus(shard, backends, tmp_path):
-    run_scene, oracle = backends
+    run_scene, oracle, _ = backends
     if _live(oracle):
         pytest.skip("live ACE: the fast lane's generative campaign is the live check")
     scenes = list(oracle.scenes())

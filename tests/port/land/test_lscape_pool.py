@@ -9,15 +9,15 @@ import pytest
 
 from acconform.case import parse_document
 from acconform.numerics import EXACT
-from acconform.oracle import DEFAULT_CORPUS
+from acconform.oracle import default_corpus
 from acconform.port.land.lscape import POOL, LScape, clear_landblock_cache
 from acconform.port.run import run_scene
 
 
 def _scenes_with_objects(n: int):
-    paths = sorted(DEFAULT_CORPUS.glob("obstacles-*.jsonl.gz"))
+    paths = sorted(default_corpus().glob("obstacles-*.jsonl.gz"))
     if not paths:
-        pytest.skip("no recorded obstacles corpus in tests/data/corpus")
+        pytest.skip("no recorded obstacles in the default corpus")
     out = []
     with gzip.open(paths[0], "rt", encoding="utf-8") as f:
         for line in f:
