@@ -3,6 +3,7 @@
     python tests/runner/mutation_report.py [-j 2] [--budget 1500] [--seed 0] [--only NAME,...] [--json FILE]
     python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [-j 2] [--only ...]
     ACE_ASSEMBLY=... python tests/runner/mutation_report.py --live 4000 [--only ...]
+    python tests/runner/mutation_report.py --fast-lane 600 [--only ...]
 
 Runs the same hunt as test_mutations.py (mutants.hunt: one worker per mutant, no example
 database), mutants spread over -j processes. With --corpus, generates nothing: replays the
@@ -10,6 +11,9 @@ recorded corpus through each mutant against ACE's recorded answers (mutants.corp
 says which mutants the corpus alone kills. With --live N, each mutant is the implementation
 under test (tests/impl/planted_impl.py, --impl) in `acconform check -n N` against live ACE (the
 configured ACE_ASSEMBLY), one worker, no example database, stopping at its first difference.
+With --fast-lane S, each mutant is applied to a checkout of HEAD (benchmarks/revision.py's
+shim puts it on PYTHONPATH) whose every-push lane (`pytest -x -m "not slow"`) runs for at most S
+seconds: a failing test kills the mutant; running out of time says nothing either way.
 """
 
 from __future__ import annotations
@@ -43,6 +47,8 @@ def main(argv=None) -> int:
     p.add_argument("--only", default="")
     p.add_argument("--json", default=None)
     p.add_argument("--corpus", default=None, metavar="DIR", help="replay this recorded corpus instead of hunting")
+    p.add_argument("--fast-lane", type=int, default=0, metavar="S",
+                   help="run the fast test lane (at most S seconds) on a checkout with each mutant applied instead")
     p.add_argument("--live", type=int, default=0, metavar="N", help="a live campaign of N cases per mutant instead")
     p.add_argument("--runtime", default="mono", help="with --corpus: the records' runtime (mono or coreclr)")
     a = p.parse_args(argv)
@@ -54,6 +60,8 @@ def main(argv=None) -> int:
     picked = [names.index(n) for n in a.only.split(",") if n] or list(range(len(MUTATIONS)))
     if a.live:
         return _live_report(picked, a)
+    if a.fast_lane:
+        return _fast_lane_report(picked, a)
     if a.corpus is not None:
         if not Path(a.corpus).is_dir():
             print(f"mutation_report: no corpus directory at {a.corpus}", file=sys.stderr)
@@ -98,6 +106,46 @@ def _live(args):
         if r.returncode not in (0, 1):
             out["stderr"] = r.stderr[-400:]
     return out
+
+
+def _fast_lane(args):
+    import subprocess
+    import time
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
+    from revision import revision_env
+
+    i, limit = args
+    m = MUTATIONS[i]
+    with revision_env("HEAD") as env:
+        tree = Path(env["PYTHONPATH"]) / "acconform" / "port"
+        target = tree.resolve() / m.file
+        text = target.read_text()
+        target.write_text(text.replace(m.old, m.new))
+        root = tree.resolve().parent
+        t0 = time.monotonic()
+        try:
+            r = subprocess.run([sys.executable, "-m", "pytest", "-x", "-q", "-m", "not slow", "-p", "no:cacheprovider",
+                                "-n", "2", "tests"], cwd=root, env=env, capture_output=True, text=True, timeout=limit)
+            verdict = {0: "survived", 1: "killed"}.get(r.returncode, f"exit {r.returncode}")
+            failed = [ln for ln in r.stdout.splitlines() if ln.startswith("FAILED")][:1]
+        except subprocess.TimeoutExpired:
+            verdict, failed = "timed out", []
+    return {"name": m.name, "fast_lane": verdict, "seconds": round(time.monotonic() - t0, 1),
+            "first_failure": failed[0][7:] if failed else None}
+
+
+def _fast_lane_report(picked, a) -> int:
+    rows = []
+    for i in picked:  # one at a time: the lane itself runs two workers
+        row = _fast_lane((i, a.fast_lane))
+        rows.append(row)
+        print(json.dumps(row), flush=True)
+    print(f"{sum(r['fast_lane'] == 'killed' for r in rows)}/{len(rows)} killed by the fast lane "
+          f"({sum(r['fast_lane'] == 'timed out' for r in rows)} ran out of its {a.fast_lane} s)")
+    if a.json:
+        Path(a.json).write_text(json.dumps(rows, indent=1))
+    return 0
 
 
 def _live_report(picked, a) -> int:
