@@ -127,8 +127,9 @@ def _fast_lane(args):
         try:
             r = subprocess.run([sys.executable, "-m", "pytest", "-x", "-q", "-m", "not slow", "-p", "no:cacheprovider",
                                 "-n", "2", "tests"], cwd=root, env=env, capture_output=True, text=True, timeout=limit)
-            verdict = {0: "survived", 1: "killed"}.get(r.returncode, f"exit {r.returncode}")
-            failed = [ln for ln in r.stdout.splitlines() if ln.startswith("FAILED")][:1]
+            failed = [ln for ln in r.stdout.splitlines() if ln.startswith(("FAILED", "ERROR"))][:1]
+            # -x under xdist ends a failing lane as interrupted (exit 2): a FAILED line decides
+            verdict = "killed" if failed else {0: "survived"}.get(r.returncode, f"exit {r.returncode}")
         except subprocess.TimeoutExpired:
             verdict, failed = "timed out", []
     return {"name": m.name, "fast_lane": verdict, "seconds": round(time.monotonic() - t0, 1),
