@@ -367,7 +367,7 @@ def test_a_run_rotates_frames_as_its_runtime_does_which_moves_a_rotated_bsp_cont
     from acconform.oracle.recorded import RecordedOracle, scene_key
     from acconform.port.run import run_scene
 
-    corpus = RecordedOracle(Path(__file__).resolve().parents[1] / "data" / "corpus")
+    corpus = RecordedOracle(Path(__file__).resolve().parents[1] / "data" / "corpus" / "mono")
     key = "e42adc88320d7aaff503ee9c19d28006a007898ce1f063f6341a174550ba19c9"
     rec = next(r for r in corpus.records() if r.scene.name == "bsp:ledge" and scene_key(r.scene) == key)
     assert compare(run_scene(rec.scene, runtime="mono"), rec.outcome, "exact") == []
