@@ -138,3 +138,95 @@ def tangent_radius(kind: str, mover_r: float, want: float) -> tuple[float, float
 def grid_floor(x: float) -> float:
     """The multiple of GRID at or below x."""
     return math.floor(x / GRID) * GRID
+
+
+# ---------------------------------------------------------------- terrain slopes
+# A land cell whose two west (or south) corners sit at height index 0 and whose two east (north)
+# corners at index 1 is one plane rising by table[1] - table[0] over 24 m, and both its
+# triangles compute the same normal (each cross product is (-+24 dz, 0, 576) or its y twin,
+# whatever the cut). With table[0] = 0 the rise is table[1] itself, so the scene's land height
+# table (scene data: both sides build the landblock from it) is solved instead of a vertex.
+TERRAIN_RUN = 24.0
+
+
+def terrain_polygon(rise: float) -> PolygonRec:
+    """A land triangle of a cell rising by `rise` along +x: (00, 10, 11) as LandblockStruct links it."""
+    return PolygonRec(((0.0, 0.0, 0.0), (TERRAIN_RUN, 0.0, rise), (TERRAIN_RUN, TERRAIN_RUN, rise)))
+
+
+@lru_cache(maxsize=None)
+def terrain_rise_for(target_bits: int, mode: Mode = EXACT) -> float | None:
+    """A float32 table[1] (with table[0] = 0) whose one-index rise over a land cell gives normal.z
+    == target_bits exactly through make_plane, or None within SEARCH_ULPS of the analytic rise."""
+    z = f32_from_bits(target_bits)
+    base = f32_bits(to_f32(TERRAIN_RUN * math.sqrt(1.0 / (z * z) - 1.0)))
+    for k in sorted(range(-SEARCH_ULPS, SEARCH_ULPS + 1), key=abs):
+        rise = f32_from_bits(base + k)
+        if plane_normal_z_bits(terrain_polygon(rise), mode) == target_bits:
+            return rise
+    return None
+
+
+def exact_terrain_targets(mode: Mode = EXACT) -> tuple[tuple[str, float], ...]:
+    """(boundary name, table[1]) for every Z_BOUNDARIES entry a one-cell terrain rise reaches."""
+    return tuple((name, rise) for name, bits in Z_BOUNDARIES.items()
+                 if (rise := terrain_rise_for(bits, mode)) is not None)
+
+
+def exact_slope_table(rise: float) -> tuple[float, ...]:
+    """The default land height table with table[0] = 0 (already) and table[1] = rise."""
+    from acconform.scene import DEFAULT_LAND_HEIGHT_TABLE
+
+    return (DEFAULT_LAND_HEIGHT_TABLE[0], float(rise)) + DEFAULT_LAND_HEIGHT_TABLE[2:]
+
+
+# ---------------------------------------------------------------- a sphere's contact normal at a threshold
+# Two tests compare the z of a unit contact normal on a sphere obstacle with the walkable allowance:
+# Sphere.StepSphereDown's `disp.Z <= WalkableAllowance` (a walkable mover stepping up onto the
+# sphere: the allowance is FloorZ) and SpherePath.IsWalkableAllowable's `zval > WalkableAllowance`
+# (an airborne mover landing on the sphere's side: LandingZ). That z comes out of a double sqrt and
+# a normalisation, so no closed form lands on the bits; these geometries were searched through the
+# port (the horizontal offset on GRID near r_sum * sqrt(1 - z^2), then the obstacle radius ulp by
+# ulp, `solve_sphere_contact`) and each hits its boundary exactly. On GRID every difference is
+# exact, so a translation within GRID_LO..GRID_HI or a turn to another axis keeps the hit
+# (tests/strategies/test_boundaries.py runs each through the port, moved and turned).
+SPHERE_CONTACT_GROUND_INDEX = 50  # flat ground at table[50] = 100 m, inside GRID_LO..GRID_HI
+SPHERE_CONTACT_GROUND_Z = 100.0
+SPHERE_CONTACT_STEP_UP = 1.0
+
+# (how, mover radius, obstacle radius, horizontal offset): "walk" steps up onto the sphere
+# (StepSphereDown at FloorZ), "fall" drops past its side (IsWalkableAllowable at LandingZ)
+SPHERE_CONTACTS: tuple[tuple[str, float, float, float], ...] = (
+    ("walk", 0.25, 0.5000010132789612, 0.5606842041015625),
+    ("walk", 0.5, 1.0000020265579224, 1.121368408203125),
+    ("walk", 0.5, 0.5000048279762268, 0.7475814819335938),
+    ("walk", 0.25, 0.9999983906745911, 0.9344711303710938),
+    ("fall", 0.5, 0.500182032585144, 0.9963760375976562),
+    ("fall", 0.5, 1.000177264213562, 1.4944686889648438),
+)
+
+
+def sphere_contact_layout(how: str, r: float, radius: float, dx: float, x0: float, y0: float, ax: int, ay: int):
+    """Where everything goes for a SPHERE_CONTACTS entry, moved to block-local (x0, y0) on GRID and
+    along axis (ax, ay): (begin (x, y, z), end (x, y, z), obstacle centre (x, y, z)); z values are
+    the mover's origin (its sphere's centre is r above) over SPHERE_CONTACT_GROUND_Z."""
+    gz = SPHERE_CONTACT_GROUND_Z
+    radsum = float(np.float32(r) + np.float32(radius))
+    rise = math.sqrt(max(radsum * radsum - dx * dx, 0.0))
+    if how == "fall":
+        oz = grid_round(gz + 0.5 * radsum)
+        top = oz + rise  # the sphere centre's height where the two touch
+        zb, ze = grid_round(top + 0.1 * r - r), grid_round(top - 0.1 * r - r)
+        x1, y1 = x0, y0
+    else:
+        h = 0.1 * SPHERE_CONTACT_STEP_UP
+        step = grid_round(0.5 * r)
+        x1, y1 = x0 + ax * step, y0 + ay * step
+        oz = grid_round(gz + r + h - rise)
+        zb = ze = gz
+    return (x0, y0, zb), (x1, y1, ze), (x1 + ax * dx, y1 + ay * dx, oz)
+
+
+def grid_round(x: float) -> float:
+    """The multiple of GRID nearest x."""
+    return round(x / GRID) * GRID

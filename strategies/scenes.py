@@ -148,10 +148,14 @@ BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "
                                 "straddle", "straddle", "slope", "slope", "seam"))
 # obstacles: scattered along a free path, one across a cell or landblock border or corner
 # ("straddle_round"), or "tangent": one exactly tangent to the mover's end
-OBSTACLE_POLICIES = st.sampled_from(("scatter", "scatter", "scatter", "straddle_round", "tangent"))
+# or "sphere_contact": stepping up onto, or falling past, a sphere whose contact normal's z is
+# FloorZ or LandingZ exactly (boundaries.SPHERE_CONTACTS)
+OBSTACLE_POLICIES = st.sampled_from(("scatter", "scatter", "scatter", "straddle_round", "tangent", "sphere_contact"))
 # terrain: a free path, or "border_slope": grounded on tilted terrain, a few metres from a block
 # border, walking across it (AdjustOffset keeps the old block's sloped contact plane a step)
-TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope"))
+# "exact_slope": a one-cell rise whose normal.z is a walkable/landing threshold exactly (the land
+# height table solved, strategies/boundaries.py), walked off from the flat top onto the slope
+TERRAIN_POLICIES = st.sampled_from(("free", "free", "free", "border_slope", "exact_slope"))
 SNAP_END = st.sampled_from((None, None, None, None, "cell", "block"))
 STARTS = st.sampled_from(("ground", "ground", "ground", "air"))
 PLATFORM_OFFSETS = dr.f32(-3.0, 3.0)
@@ -172,7 +176,10 @@ def scenes_of(draw, kind: str):
 
 def draw_scene(draw, kind: str) -> Scene:
     bx, by = draw(HOME)
-    crossing = kind == "terrain" and draw(TERRAIN_POLICIES) == "border_slope"
+    terrain_policy = draw(TERRAIN_POLICIES) if kind == "terrain" else "free"
+    if terrain_policy == "exact_slope":
+        return _exact_slope_scene(draw, bx, by, draw(MOVER_SPHERES))
+    crossing = terrain_policy == "border_slope"
     # start: anywhere in the block, or hugging a border (the neighbour must be defined)
     where = draw(CROSSING_WHERE) if crossing else draw(WHERE)
     if where == "any":
@@ -194,6 +201,8 @@ def draw_scene(draw, kind: str) -> Scene:
     reach = max(s.center[2] + s.radius for s in spheres)
     if policy == "tangent":
         return _tangent_scene(draw, world, bx, by, spheres)
+    if policy == "sphere_contact":
+        return _sphere_contact_scene(draw, bx, by)
     if policy != "scatter":
         return _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres)
 
@@ -415,6 +424,95 @@ def _tangent_scene(draw, world, bx, by, spheres) -> Scene:
     reach = max(s.center[2] + s.radius for s in spheres)
     placed = [(shape, ox, oy, oz, IDENTITY, int(PhysicsState.Static))]
     return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, f"obstacles:tangent-{kind}")
+
+
+EXACT_SLOPE_TARGETS = st.sampled_from(bd.exact_terrain_targets())
+SLOPE_GAPS = dr.OneOf(st.sampled_from((0.0, 0.5, 1.0)), dr.f32(0.0, 2.0))  # of r, the start behind the top edge
+SLOPE_JITTER = st.sampled_from((0.0, 0.0, 10.0, -10.0, 30.0, -30.0, 60.0))
+SLOPE_PAST = dr.OneOf(st.sampled_from((0.5, 1.0, 2.0)), dr.f32(0.05, 3.0))  # of r, how far past the edge
+SLOPE_STARTS = st.sampled_from(("top", "top", "top", "air"))
+# a LandingZ slope is 85 degrees: a 0.04 m step-down probe meets it only within 3.5 mm of the top
+# edge, so that walk starts on the edge and stops a sliver past it (metres; above EPSILON)
+SLOPE_SLIVERS = dr.f32(0.0005, 0.0035)
+
+
+def _exact_slope_scene(draw, bx, by, spheres) -> Scene:
+    """Terrain with one cell-wide rise whose make_plane normal.z is exactly FloorZ or LandingZ or an
+    ulp off (the land height table's entry 1 solved, entry 0 = 0: boundaries.terrain_rise_for); the
+    mover starts on the flat top a little behind the edge and walks (or falls) off it toward the
+    slope, so StepDown and the landing tests meet the slope's plane. A FloorZ-side target walks
+    on walkable ground (StepDown compares with FloorZ), a LandingZ one with Contact only
+    (StepDown compares with LandingZ)."""
+    name, rise = draw(EXACT_SLOPE_TARGETS)
+    table = bd.exact_slope_table(rise)
+    r = spheres[0].radius
+    lx, ly = draw(TANGENT_STARTS), draw(TANGENT_STARTS)
+    gx, gy = bx * BLOCK + lx, by * BLOCK + ly
+    ax, ay = draw(AXES)  # the slope descends toward (ax, ay): heights index 1 behind the edge, 0 past it
+    vx, vy = round(gx / CELL), round(gy / CELL)
+    # the top is a*gx' + b*gy' >= c with (a, b) = -(ax, ay); its edge at vertex line vx (or vy)
+    edge = vx if ax else vy
+    c = -(ax * vx + ay * vy)
+    world = _World(tr.Field(0, (tr.Feature("step", a=-ax, b=-ay, c=c, k=1),), 0, 0, draw(tr.LAND)))
+    walkable_side = name.startswith("floor_z")
+    gap = dr.take(draw, SLOPE_GAPS) * r if walkable_side else 0.0
+    if ax:
+        gx = edge * CELL - ax * gap
+    else:
+        gy = edge * CELL - ay * gap
+    bx, by, lx, ly = split_global(gx, gy)
+    gx, gy = bx * BLOCK + lx, by * BLOCK + ly
+    heading = math.degrees(math.atan2(ay, ax)) + draw(SLOPE_JITTER)
+    length = to_f32(gap + (r * dr.take(draw, SLOPE_PAST) if walkable_side else draw(SLOPE_SLIVERS)))
+    rad = math.radians(heading)
+    gx1, gy1 = _snap(draw, gx + length * math.cos(rad), gy + length * math.sin(rad))
+    top = to_f32(rise)
+    begin_cell = cell_of(bx, by, lx, ly)
+    state = int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if draw(QUARTERS) > 0 else 0)
+    if draw(SLOPE_STARTS) == "air":
+        bz, contact, transient = to_f32(top + dr.take(draw, AIR_HEIGHTS)), None, 0
+        ez = to_f32(bz - draw(FALLS))
+    else:
+        bz = to_f32(top + dr.take(draw, ob.PLANE_DZ))
+        contact = ContactPlane(begin_cell, PlaneRec((0.0, 0.0, 1.0), to_f32(-top)))
+        transient = int(TransientState.Contact) | (int(TransientState.OnWalkable) if walkable_side else 0)
+        ez = bz
+    steps = step_heights([r * t for t in (0.5, 1.0, 1.5)])
+    mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, bz))), end=position(gx1, gy1, ez),
+                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps),
+                  step_down_height=dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps),
+                  state=state, transient_state=transient, contact_plane=contact, velocity=draw(ob.VELOCITIES))
+    reach = max(s.center[2] + s.radius for s in spheres)
+    scene = _scene(world, bx, by, (gx, gy), (gx1, gy1), reach, [], mover, f"terrain:exact-slope-{name}")
+    return Scene(scene.landblocks, scene.mover, scene.objects, land_height_table=table, name=scene.name)
+
+
+SPHERE_CONTACTS = st.sampled_from(bd.SPHERE_CONTACTS)
+
+
+def _sphere_contact_scene(draw, bx, by) -> Scene:
+    """A solved geometry of boundaries.SPHERE_CONTACTS over flat ground, moved on GRID and turned
+    to an axis: a walkable mover stepping up onto a sphere (StepSphereDown compares FloorZ bit
+    for bit) or an airborne one dropping past its side (IsWalkableAllowable compares LandingZ)."""
+    how, r, radius, dx = draw(SPHERE_CONTACTS)
+    x0, y0 = draw(TANGENT_STARTS), draw(TANGENT_STARTS)
+    ax, ay = draw(AXES)
+    (x0, y0, zb), (x1, y1, ze), (ox, oy, oz) = bd.sphere_contact_layout(how, r, radius, dx, x0, y0, ax, ay)
+    world = _World(tr.Field(bd.SPHERE_CONTACT_GROUND_INDEX, (), 0, 0, draw(tr.LAND)))
+    cell = cell_of(bx, by, x0, y0)
+    gz = bd.SPHERE_CONTACT_GROUND_Z
+    walk = how == "walk"
+    up = bd.SPHERE_CONTACT_STEP_UP
+    mover = Mover(spheres=(SphereRec((0.0, 0.0, r), r),), begin=Position(cell, Frame((x0, y0, zb))),
+                  end=Position(cell_of(bx, by, x1, y1), Frame((x1, y1, ze))), step_up_height=up, step_down_height=up,
+                  state=int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if draw(dr.BOOLEANS) else 0),
+                  transient_state=int(TransientState.Contact | TransientState.OnWalkable) if walk else 0,
+                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -gz)) if walk else None,
+                  velocity=(0.0, 0.0, 0.0))
+    gx0, gy0, gx1, gy1 = bx * BLOCK + x0, by * BLOCK + y0, bx * BLOCK + x1, by * BLOCK + y1
+    placed = [(SphereShape(SphereRec((0.0, 0.0, 0.0), radius)), bx * BLOCK + ox, by * BLOCK + oy, oz, IDENTITY,
+               int(PhysicsState.Static))]
+    return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), r, placed, mover, f"obstacles:sphere-contact-{how}")
 
 
 def _scene(world, bx, by, p0, p1, reach, placed, mover, name) -> Scene:

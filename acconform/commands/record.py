@@ -3,17 +3,30 @@
     acconform record SCENE.json ...                 scenes from files (scene, case or record files)
     acconform record tests/data/corpus/mono/*.jsonl.gz   the scenes of another corpus's shards
     acconform record -n 1000 --kinds terrain,bsp    scenes drawn from the strategies (sample_scenes)
+    acconform record -n 500 --boundaries            keep only scenes whose port run hits an exact boundary
 
 Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: the committed
 corpus of the runtime ACE ran on, tests/data/corpus/<mono|coreclr>). Scenes already in the
 corpus are skipped. Needs a live ACE: without one it
 exits 2 saying how to configure it.
+
+--boundaries keeps only scenes where the built-in port, traced (port/transition/branches.py),
+compares two bit-equal values at an exact boundary other than a cell or landblock border (those
+a plain campaign already ends on): a walkable or landing test at FloorZ/LandingZ, a tangency, a
+BSP split with walkable polygons on both sides. With -n it draws until N such scenes are kept
+(rounds of N draws, at most BOUNDARY_ROUNDS), so a corpus grows where bugs hide.
 """
 
 from __future__ import annotations
 
 import sys
 import time
+
+# rounds of N draws --boundaries may spend to keep N scenes (about 1 in 8 drawn scenes hits a
+# boundary with the default kinds)
+BOUNDARY_ROUNDS = 50
+# boundaries a scene must hit for --boundaries: every one but the borders
+BORDERS = ("cell_border", "landblock_border")
 
 
 def add_arguments(p) -> None:
@@ -26,10 +39,27 @@ def add_arguments(p) -> None:
     p.add_argument("--ace", default=None, metavar="PATH", help="ACE.Server.dll or its directory (else ACE_ASSEMBLY, else the config file)")
     p.add_argument("--runtime", choices=("mono", "coreclr"), default=None, help="force the .NET runtime (default: from the build)")
     p.add_argument("--batch", type=int, default=256, help="scenes per call into ACE (default 256)")
+    p.add_argument("--boundaries", action="store_true",
+                   help="keep only scenes whose port run hits an exact boundary (not a cell/landblock border)")
     p.add_argument("-q", "--quiet", action="store_true", help="print only the summary")
 
 
-def _scenes(args):
+def hits_boundary(scene, runtime: str = "mono") -> bool:
+    """Whether the built-in port's run of `scene` compares bit-equal values at a boundary other
+    than a cell or landblock border (branches.BOUNDARIES)."""
+    import warnings
+
+    from acconform.port.run import run_scene
+    from acconform.port.transition.branches import BOUNDARIES, Trace
+
+    trace = Trace()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        run_scene(scene, trace=trace, runtime=runtime)
+    return any(trace["boundary:" + b] for b in BOUNDARIES if b not in BORDERS)
+
+
+def _scenes(args, runtime: str):
     from ..case import iter_documents
     from ..scene import Scene
 
@@ -40,12 +70,24 @@ def _scenes(args):
                 from ..errors import InvalidScene
 
                 raise InvalidScene("", "an outcome file holds no scene to record", where)
-            yield scene
+            if not args.boundaries or hits_boundary(scene, runtime):
+                yield scene
     if args.n > 0:
         from acconform.strategies import sample_scenes
 
         kinds = tuple(k for k in args.kinds.split(",") if k) if args.kinds else None
-        yield from sample_scenes(kinds, args.n, args.seed)
+        if not args.boundaries:
+            yield from sample_scenes(kinds, args.n, args.seed)
+            return
+        kept = 0
+        for round_ in range(BOUNDARY_ROUNDS):
+            # rounds of N draws, each seeded apart, until N boundary scenes are kept
+            for scene in sample_scenes(kinds, args.n, args.seed * 1009 + round_):
+                if hits_boundary(scene, runtime):
+                    yield scene
+                    kept += 1
+                    if kept >= args.n:
+                        return
 
 
 def run(args) -> int:
@@ -76,7 +118,7 @@ def run(args) -> int:
                 errors += outcome.error is not None
             batch.clear()
 
-        for scene in _scenes(args):
+        for scene in _scenes(args, runtime_named(oracle.versions.runtime)):
             key = scene_key(scene)
             if key in known:
                 skipped += 1

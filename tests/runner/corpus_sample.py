@@ -71,9 +71,14 @@ def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
             picked[by_kind[k].pop(0)] = None
         i += 1
     names = sorted(by_branch)
+    borders = {"boundary:cell_border", "boundary:landblock_border"}
     return {
         "made_by": "python tests/runner/corpus_sample.py",
         "corpus_records": len(fires),
+        # records whose port run hits an exact boundary other than a cell or landblock border
+        # (branches.BOUNDARIES; `acconform record --boundaries` keeps only those)
+        "boundary_records": sum(any(b.startswith("boundary:") and b not in borders for b in branches)
+                                for _, branches in fires.values()),
         "corpus_branches": {b: len(by_branch[b]) for b in names},
         "branches": names,
         "records": [[key, fires[key][0], sorted(names.index(b) for b in fires[key][1])] for key in picked],
@@ -92,7 +97,8 @@ def main(argv=None) -> int:
         doc = build(default_corpus(runtime), args.size)
         sample_file(runtime).write_text(json.dumps(doc, separators=(",", ":")) + "\n")
         kinds = Counter(r[1] for r in doc["records"])
-        print(f"{len(doc['records'])} of {doc['corpus_records']} records ({dict(kinds)}), "
+        print(f"{len(doc['records'])} of {doc['corpus_records']} records ({dict(kinds)}; "
+              f"{doc['boundary_records']} corpus records hit an exact boundary), "
               f"{len(doc['branches'])} branches -> {sample_file(runtime)}", file=sys.stderr)
     return 0
 

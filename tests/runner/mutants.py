@@ -261,3 +261,37 @@ def hunt(index: int, budget: int = BUDGET, seed: int = SEED, failures_dir=None, 
         out.update(scene_size(f.case.scene), shrunk=f.shrunk, scene_name=f.case.scene.name,
                    differences=len(f.case.differences), path_file=str(f.path) if f.path else None)
     return out
+
+
+# ---------------------------------------------------------------- the corpus replay (no generation)
+
+def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED) -> dict:
+    """Replay the recorded corpus (records of `runtime`, in a seeded shuffle) through the mutant
+    against ACE's recorded answer, until a record where the mutant differs from ACE and the real
+    port does not (a record the real port already gets wrong kills nothing). Says whether the
+    corpus kills the mutant and after how many records."""
+    import random
+    import time
+    import warnings
+
+    from acconform.compare import compare
+    from acconform.oracle.recorded import RecordedOracle
+    from acconform.port.run import run_scene
+    from acconform.runner import guarded
+
+    warnings.simplefilter("ignore", RuntimeWarning)
+    mutant = load_mutant(index)
+    oracle = RecordedOracle(corpus_dir)
+    keys = oracle.select(runtime=runtime)
+    random.Random(seed).shuffle(keys)
+    t0 = time.monotonic()
+    out = {"name": MUTATIONS[index].name, "killed": False, "records": len(keys), "records_to_kill": None}
+    for n, key in enumerate(keys, 1):
+        rec = oracle._record(key)
+        got = guarded(lambda s: mutant(s, runtime=runtime), rec.scene)
+        if compare(got, rec.outcome, "exact") and not compare(run_scene(rec.scene, runtime=runtime), rec.outcome,
+                                                              "exact"):
+            out.update(killed=True, records_to_kill=n, scene_name=rec.scene.name)
+            break
+    out["seconds"] = round(time.monotonic() - t0, 1)
+    return out

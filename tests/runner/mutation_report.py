@@ -1,9 +1,19 @@
 """Print the mutation check's figures: per planted bug, caught or not, scenes to find it, shrunk size.
 
     python tests/runner/mutation_report.py [-j 2] [--budget 1500] [--seed 0] [--only NAME,...] [--json FILE]
+    python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [-j 2] [--only ...]
+    ACE_ASSEMBLY=... python tests/runner/mutation_report.py --live 4000 [--only ...]
+    python tests/runner/mutation_report.py --fast-lane 600 [--only ...]
 
 Runs the same hunt as test_mutations.py (mutants.hunt: one worker per mutant, no example
-database), mutants spread over -j processes.
+database), mutants spread over -j processes. With --corpus, generates nothing: replays the
+recorded corpus through each mutant against ACE's recorded answers (mutants.corpus_kill) and
+says which mutants the corpus alone kills. With --live N, each mutant is the implementation
+under test (tests/impl/planted_impl.py, --impl) in `acconform check -n N` against live ACE (the
+configured ACE_ASSEMBLY), one worker, no example database, stopping at its first difference.
+With --fast-lane S, each mutant is applied to a checkout of HEAD (benchmarks/revision.py's
+shim puts it on PYTHONPATH) whose every-push lane (`pytest -x -m "not slow"`) runs for at most S
+seconds: a failing test kills the mutant; running out of time says nothing either way.
 """
 
 from __future__ import annotations
@@ -16,12 +26,17 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from mutants import BUDGET, MUTATIONS, SEED, hunt  # noqa: E402
+from mutants import BUDGET, MUTATIONS, SEED, corpus_kill, hunt  # noqa: E402
 
 
 def _one(args):
     i, budget, seed = args
     return hunt(i, budget, seed)
+
+
+def _replay(args):
+    i, corpus, runtime, seed = args
+    return corpus_kill(i, corpus, runtime, seed)
 
 
 def main(argv=None) -> int:
@@ -31,9 +46,27 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=SEED)
     p.add_argument("--only", default="")
     p.add_argument("--json", default=None)
+    p.add_argument("--corpus", default=None, metavar="DIR", help="replay this recorded corpus instead of hunting")
+    p.add_argument("--fast-lane", type=int, default=0, metavar="S",
+                   help="run the fast test lane (at most S seconds) on a checkout with each mutant applied instead")
+    p.add_argument("--live", type=int, default=0, metavar="N", help="a live campaign of N cases per mutant instead")
+    p.add_argument("--runtime", default="mono", help="with --corpus: the records' runtime (mono or coreclr)")
     a = p.parse_args(argv)
     names = [m.name for m in MUTATIONS]
+    unknown = [n for n in a.only.split(",") if n and n not in names]
+    if unknown:
+        print(f"mutation_report: unknown mutant {unknown[0]!r}", file=sys.stderr)
+        return 2
     picked = [names.index(n) for n in a.only.split(",") if n] or list(range(len(MUTATIONS)))
+    if a.live:
+        return _live_report(picked, a)
+    if a.fast_lane:
+        return _fast_lane_report(picked, a)
+    if a.corpus is not None:
+        if not Path(a.corpus).is_dir():
+            print(f"mutation_report: no corpus directory at {a.corpus}", file=sys.stderr)
+            return 2
+        return _corpus_report(picked, a)
     with multiprocessing.get_context("fork").Pool(a.j) as pool:
         rows = []
         for row in pool.imap(_one, [(i, a.budget, a.seed) for i in picked]):
@@ -45,6 +78,101 @@ def main(argv=None) -> int:
     for r in rows:
         print(f"{r['name']:42} {'yes' if r['caught'] else 'no':>6} {r['scenes_to_find'] or '-':>6} "
               f"{r.get('landblocks', '-'):>4} {r.get('objects', '-'):>4} {r.get('path', '-'):>7}")
+    if a.json:
+        Path(a.json).write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+def _live(args):
+    import shlex
+    import subprocess
+    import tempfile
+    import time
+
+    i, n, seed = args
+    name = MUTATIONS[i].name
+    impl = f"{shlex.quote(sys.executable)} {shlex.quote(str(Path(__file__).resolve().parents[1] / 'impl' / 'planted_impl.py'))} {name}"
+    with tempfile.TemporaryDirectory(prefix="acconform-live-") as tmp:
+        summary = Path(tmp) / "summary.json"
+        t0 = time.monotonic()
+        r = subprocess.run([str(Path(sys.executable).parent / "acconform"), "check", "--impl", impl, "-n", str(n), "--seed", str(seed),
+                            "-j", "1", "--no-database", "--no-progress", "--failures", str(Path(tmp) / "failures"),
+                            "--json", str(summary)], capture_output=True, text=True)
+        out = {"name": name, "exit": r.returncode, "seconds": round(time.monotonic() - t0, 1)}
+        if summary.exists():
+            doc = json.loads(summary.read_text())
+            out["cases"] = (doc.get("cases") or {}).get("run")  # generated plus shrinking runs
+        out["killed"] = r.returncode == 1
+        if r.returncode not in (0, 1):
+            out["stderr"] = r.stderr[-400:]
+    return out
+
+
+def _fast_lane(args):
+    import subprocess
+    import time
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
+    from revision import revision_env
+
+    i, limit = args
+    m = MUTATIONS[i]
+    with revision_env("HEAD") as env:
+        tree = Path(env["PYTHONPATH"]) / "acconform" / "port"
+        target = tree.resolve() / m.file
+        text = target.read_text()
+        target.write_text(text.replace(m.old, m.new))
+        root = tree.resolve().parent
+        t0 = time.monotonic()
+        try:
+            r = subprocess.run([sys.executable, "-m", "pytest", "-x", "-q", "-m", "not slow", "-p", "no:cacheprovider",
+                                "-n", "2", "tests"], cwd=root, env=env, capture_output=True, text=True, timeout=limit)
+            failed = [ln for ln in r.stdout.splitlines() if ln.startswith(("FAILED", "ERROR"))][:1]
+            # -x under xdist ends a failing lane as interrupted (exit 2): a FAILED line decides
+            verdict = "killed" if failed else {0: "survived"}.get(r.returncode, f"exit {r.returncode}")
+        except subprocess.TimeoutExpired:
+            verdict, failed = "timed out", []
+    return {"name": m.name, "fast_lane": verdict, "seconds": round(time.monotonic() - t0, 1),
+            "first_failure": failed[0][7:] if failed else None}
+
+
+def _fast_lane_report(picked, a) -> int:
+    rows = []
+    for i in picked:  # one at a time: the lane itself runs two workers
+        row = _fast_lane((i, a.fast_lane))
+        rows.append(row)
+        print(json.dumps(row), flush=True)
+    print(f"{sum(r['fast_lane'] == 'killed' for r in rows)}/{len(rows)} killed by the fast lane "
+          f"({sum(r['fast_lane'] == 'timed out' for r in rows)} ran out of its {a.fast_lane} s)")
+    if a.json:
+        Path(a.json).write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+def _live_report(picked, a) -> int:
+    with multiprocessing.get_context("fork").Pool(a.j) as pool:
+        rows = []
+        for row in pool.imap(_live, [(i, a.live, a.seed) for i in picked]):
+            rows.append(row)
+            print(json.dumps(row), flush=True)
+    print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by a live campaign of at most {a.live} cases")
+    for r in rows:
+        print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r.get('cases')}")
+    if a.json:
+        Path(a.json).write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+def _corpus_report(picked, a) -> int:
+    with multiprocessing.get_context("fork").Pool(a.j) as pool:
+        rows = []
+        for row in pool.imap(_replay, [(i, a.corpus, a.runtime, a.seed) for i in picked]):
+            rows.append(row)
+            print(json.dumps(row), flush=True)
+    print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by the corpus replay alone ({a.corpus}, {a.runtime})")
+    print(f"{'mutant':42} {'killed':>6} {'after':>6}")
+    for r in rows:
+        print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r['records_to_kill'] or '-':>6}")
     if a.json:
         Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0

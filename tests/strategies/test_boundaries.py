@@ -37,3 +37,98 @@ def test_a_rise_one_ulp_off_the_solution_misses_the_floor_z_target():
     misses = [bd.plane_normal_z_bits(bd.slope_polygon(sx, sy, f32_from_bits(f32_bits(sz) + k))) != bd.Z_BOUNDARIES["floor_z"]
               for k in (-8, 8)]
     assert all(misses)
+
+
+@pytest.mark.anchor("CLandBlockStruct::ConstructPolygons")
+@pytest.mark.parametrize("axis", [(1, 0), (-1, 0), (0, 1), (0, -1)])
+def test_a_solved_land_height_table_gives_every_triangle_of_the_rise_the_target_normal_z(axis):
+    # checked through the port's own landblock construction (both diagonal cuts occur along the rise)
+    from acconform.numerics import EXACT
+    from acconform.port.land.landblock import Landblock
+    from acconform.strategies import terrain as tr
+
+    ax, ay = axis
+    targets = bd.exact_terrain_targets()
+    assert {name for name, _ in targets} >= {"landing_z", "floor_z-1ulp", "floor_z+1ulp"}
+    for name, rise in targets:
+        field = tr.Field(0, (tr.Feature("step", a=-ax, b=-ay, c=-(ax * 4 + ay * 4), k=1),))
+        rec = field.landblock(0, 0)
+        lb = Landblock(rec, bd.exact_slope_table(rise), EXACT)
+        sloped = [p for p in lb.polygons if len({float(v.origin.z) for v in p.vertices}) > 1]
+        assert len(sloped) == 2 * 8, (name, len(sloped))  # one row of 8 cells, two triangles each
+        assert {f32_bits(p.plane.normal.z) for p in sloped} == {bd.Z_BOUNDARIES[name]}, name
+
+
+def test_floor_z_itself_is_out_of_reach_of_a_one_cell_terrain_rise():
+    # normalize skips it: the rises one ulp apart give FloorZ - 1 ulp and FloorZ + 1 ulp
+    assert "floor_z" not in dict(bd.exact_terrain_targets())
+
+
+@pytest.mark.anchor("CTransition::step_down")
+def test_an_exact_slope_scene_makes_step_down_compare_landing_z_bit_for_bit():
+    import importlib
+
+    from hypothesis import HealthCheck, find, settings
+    from hypothesis import strategies as st
+
+    from acconform.commands.record import hits_boundary
+    from acconform.port.run import run_scene
+    from acconform.port.transition.branches import Trace
+
+    scenes = importlib.import_module("acconform.strategies.scenes")
+
+    @st.composite
+    def landing_slopes(draw):
+        return scenes._exact_slope_scene(draw, 100, 100, draw(scenes.MOVER_SPHERES))
+
+    def hits(scene):
+        trace = Trace()
+        run_scene(scene, trace=trace)
+        return scene.name.endswith("landing_z") and trace["boundary:landing_z"] > 0
+
+    scene = find(landing_slopes(), hits, settings=settings(database=None, max_examples=400, derandomize=True,
+                                                           suppress_health_check=list(HealthCheck)))
+    assert scene.land_height_table[1] == dict(bd.exact_terrain_targets())["landing_z"]
+    assert hits_boundary(scene)
+
+
+def test_a_level_walk_hits_no_boundary_for_record_boundaries():
+    from acconform.commands.record import hits_boundary
+    from acconform.scene import ContactPlane, Frame, Landblock, Mover, PlaneRec, Position, Scene, SphereRec
+
+    cell = 0x64640000 | 1 + 3 * 8 + 3
+    mover = Mover(spheres=(SphereRec((0.0, 0.0, 0.5), 0.5),), begin=Position(cell, Frame((80.0, 80.0, 20.0))),
+                  end=Position(cell, Frame((81.0, 80.0, 20.0))), step_up_height=0.4, step_down_height=0.4, state=0x400,
+                  transient_state=0x3, contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -20.0)))
+    scene = Scene((Landblock(0x6464FFFF, (10,) * 81, (4,) * 81),), mover)
+    assert not hits_boundary(scene)
+
+
+@pytest.mark.anchor("CSphere::step_sphere_down")
+@pytest.mark.anchor("SPHEREPATH::is_walkable_allowable")
+@pytest.mark.parametrize("entry", bd.SPHERE_CONTACTS, ids=lambda e: f"{e[0]}-r{e[1]}-R{e[2]:.4f}")
+def test_every_solved_sphere_contact_hits_its_threshold_exactly_wherever_it_is_moved_on_the_grid(entry, monkeypatch):
+    import importlib
+
+    from hypothesis import HealthCheck, given, settings
+    from hypothesis import strategies as st
+
+    from acconform.port.run import run_scene
+    from acconform.port.transition.branches import Trace
+
+    scenes = importlib.import_module("acconform.strategies.scenes")
+    boundary = "floor_z" if entry[0] == "walk" else "landing_z"
+
+    @st.composite
+    def moved(draw):
+        return scenes._sphere_contact_scene(draw, 100, 100)
+
+    @settings(max_examples=12, database=None, deadline=None, derandomize=True, suppress_health_check=list(HealthCheck))
+    @given(moved())
+    def check(scene):
+        trace = Trace()
+        run_scene(scene, trace=trace)
+        assert trace["boundary:" + boundary] >= 1, scene.name
+
+    monkeypatch.setattr(scenes, "SPHERE_CONTACTS", st.just(entry))
+    check()
