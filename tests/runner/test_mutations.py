@@ -23,8 +23,10 @@ Kill rates of the 31 planted bugs (issue 14; `python tests/runner/mutation_repor
   landblock (the terrain border_slope policy); the corpus kills it at its 311th record, but seed 0's
   4,000 live cases (and this test's 1,500-scene hunt, on main at 7d450b9 too) draw none that do.
 - the fast lane (--fast-lane: the every-push lane with -x on a checkout with the mutant applied,
-  about 200 s a mutant on this machine): measured for the three boundary mutants the hunt used
-  to miss only, see the issue-14 report.
+  one to three minutes a mutant on this shared machine): measured for step_down_walkable_strict
+  only, killed in 87 s by test_protocol's differential suite through serve (the fast sample now
+  holds boundary records; the same test passes on the unmutated checkout). The other 30 are not
+  measured yet.
 - this hunt (BUDGET 1,500, seed 0): all 13 boundary mutants, the three it used to miss included
   (step_down_walkable_strict by the terrain exact_slope policy, step_sphere_down_allowance_strict
   and walkable_allowable_inclusive by the obstacle sphere_contact policy).
