@@ -22,6 +22,7 @@ import argparse
 import json
 import multiprocessing
 import sys
+from contextlib import nullcontext
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -37,6 +38,19 @@ def _one(args):
 def _replay(args):
     i, corpus, runtime, seed = args
     return corpus_kill(i, corpus, runtime, seed)
+
+
+def _rows(fn, jobs, a, pooled: bool = True) -> list[dict]:
+    """Each job's row (printed as a JSON line as it comes, and written to --json at the end);
+    pooled over -j processes, or one at a time (a job that runs workers of its own)."""
+    rows = []
+    with multiprocessing.get_context("fork").Pool(a.j) if pooled else nullcontext() as pool:
+        for row in pool.imap(fn, jobs) if pooled else map(fn, jobs):
+            rows.append(row)
+            print(json.dumps(row), flush=True)
+    if a.json:
+        Path(a.json).write_text(json.dumps(rows, indent=1))
+    return rows
 
 
 def main(argv=None) -> int:
@@ -67,19 +81,13 @@ def main(argv=None) -> int:
             print(f"mutation_report: no corpus directory at {a.corpus}", file=sys.stderr)
             return 2
         return _corpus_report(picked, a)
-    with multiprocessing.get_context("fork").Pool(a.j) as pool:
-        rows = []
-        for row in pool.imap(_one, [(i, a.budget, a.seed) for i in picked]):
-            rows.append(row)
-            print(json.dumps(row), flush=True)
+    rows = _rows(_one, [(i, a.budget, a.seed) for i in picked], a)
     caught = [r for r in rows if r["caught"]]
     print(f"{len(caught)}/{len(rows)} caught")
     print(f"{'mutant':42} {'caught':>6} {'scenes':>6} {'lbs':>4} {'objs':>4} {'path m':>7}")
     for r in rows:
         print(f"{r['name']:42} {'yes' if r['caught'] else 'no':>6} {r['scenes_to_find'] or '-':>6} "
               f"{r.get('landblocks', '-'):>4} {r.get('objects', '-'):>4} {r.get('path', '-'):>7}")
-    if a.json:
-        Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0
 
 
@@ -137,44 +145,27 @@ def _fast_lane(args):
 
 
 def _fast_lane_report(picked, a) -> int:
-    rows = []
-    for i in picked:  # one at a time: the lane itself runs two workers
-        row = _fast_lane((i, a.fast_lane))
-        rows.append(row)
-        print(json.dumps(row), flush=True)
+    # one at a time: the lane itself runs two workers
+    rows = _rows(_fast_lane, [(i, a.fast_lane) for i in picked], a, pooled=False)
     print(f"{sum(r['fast_lane'] == 'killed' for r in rows)}/{len(rows)} killed by the fast lane "
           f"({sum(r['fast_lane'] == 'timed out' for r in rows)} ran out of its {a.fast_lane} s)")
-    if a.json:
-        Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0
 
 
 def _live_report(picked, a) -> int:
-    with multiprocessing.get_context("fork").Pool(a.j) as pool:
-        rows = []
-        for row in pool.imap(_live, [(i, a.live, a.seed) for i in picked]):
-            rows.append(row)
-            print(json.dumps(row), flush=True)
+    rows = _rows(_live, [(i, a.live, a.seed) for i in picked], a)
     print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by a live campaign of at most {a.live} cases")
     for r in rows:
         print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r.get('cases')}")
-    if a.json:
-        Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0
 
 
 def _corpus_report(picked, a) -> int:
-    with multiprocessing.get_context("fork").Pool(a.j) as pool:
-        rows = []
-        for row in pool.imap(_replay, [(i, a.corpus, a.runtime, a.seed) for i in picked]):
-            rows.append(row)
-            print(json.dumps(row), flush=True)
+    rows = _rows(_replay, [(i, a.corpus, a.runtime, a.seed) for i in picked], a)
     print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by the corpus replay alone ({a.corpus}, {a.runtime})")
     print(f"{'mutant':42} {'killed':>6} {'after':>6}")
     for r in rows:
         print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r['records_to_kill'] or '-':>6}")
-    if a.json:
-        Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0
 
 
