@@ -129,6 +129,13 @@ class TransitionState(IntEnum):
     Slid = 4
 
 
+class InsertType(IntEnum):
+    """SpherePath.InsertType: how a sphere path enters the world (SpherePath.cs)."""
+    Transition = 0x0
+    Placement = 0x1
+    InitialPlacement = 0x2
+
+
 def flag_names(enum: FlagSet, value: int) -> list[str]:
     """The member names set in `value`, in value order (the JSON form of a flag set)."""
     return [m.name for m in enum if m.value & value and m.value.bit_count() == 1]

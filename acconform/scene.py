@@ -278,6 +278,101 @@ def _shape_from_json(r: Reader) -> Shape:
 
 
 @dataclass(frozen=True, slots=True)
+class CellBSPLeaf:
+    """A cell BSP's leaf. The DAT holds only its LeafIndex (assigned in writing order); a cell
+    BSP's queries never read a leaf's contents."""
+
+    def to_json(self):
+        return {"type": "leaf"}
+
+
+@dataclass(frozen=True, slots=True)
+class CellBSPNode:
+    """A cell BSP's node: a splitting plane and up to two children (None where the DAT has none:
+    point_in_cell and sphere_intersects_cell walk the front children and stop at None)."""
+
+    plane: PlaneRec
+    front: "CellBSPNode | CellBSPLeaf | None"
+    back: "CellBSPNode | CellBSPLeaf | None"
+
+    def to_json(self):
+        return {"type": "node", "plane": self.plane.to_json(),
+                "front": None if self.front is None else self.front.to_json(),
+                "back": None if self.back is None else self.back.to_json()}
+
+
+@dataclass(frozen=True, slots=True)
+class CellStructRec:
+    """One of an Environment's cell structures (DatLoader CellStruct), in the cell's own frame.
+
+    Polygons are keyed by their index (the DAT's ushort poly id). `portals` lists the indices of
+    `polygons` that are portals (CellStruct.Portals). `physics_bsp` indexes `physics_polygons`.
+    """
+
+    polygons: tuple[PolygonRec, ...]
+    portals: tuple[int, ...]
+    physics_polygons: tuple[PolygonRec, ...]
+    physics_bsp: "BSPNode | BSPLeaf | None"
+    cell_bsp: "CellBSPNode | CellBSPLeaf | None"
+
+    def to_json(self):
+        return {"polygons": [p.to_json() for p in self.polygons], "portals": list(self.portals),
+                "physics_polygons": [p.to_json() for p in self.physics_polygons],
+                "physics_bsp": None if self.physics_bsp is None else self.physics_bsp.to_json(),
+                "cell_bsp": None if self.cell_bsp is None else self.cell_bsp.to_json()}
+
+
+@dataclass(frozen=True, slots=True)
+class Environment:
+    """A DatLoader Environment (portal DAT id 0x0D00XXXX): cell structures keyed by index."""
+
+    id: int
+    cell_structs: tuple[CellStructRec, ...]
+
+    def to_json(self):
+        return {"id": write_id(self.id), "cell_structs": [c.to_json() for c in self.cell_structs]}
+
+
+# DatLoader CellPortal.Flags: PortalSide is true when bit 2 is CLEAR (CellPortal.cs)
+PORTAL_EXACT_MATCH = 0x1
+PORTAL_SIDE_BIT = 0x2
+OUTSIDE_CELL = 0xFFFF  # a portal's OtherCellId that leads outdoors
+
+
+@dataclass(frozen=True, slots=True)
+class CellPortalRec:
+    """DatLoader CellPortal: which polygon of the cell structure is the portal, and where it leads."""
+
+    polygon: int       # PolygonId: an index into the cell structure's polygons
+    other_cell: int    # OtherCellId: the neighbour's low word (0x0100..), or 0xFFFF for outdoors
+    other_portal: int  # OtherPortalId
+    flags: int = 0     # PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT
+
+    def to_json(self):
+        return {"polygon": self.polygon, "other_cell": f"0x{self.other_cell:04X}",
+                "other_portal": self.other_portal, "flags": self.flags}
+
+
+@dataclass(frozen=True, slots=True)
+class EnvCell:
+    """An indoor cell (DatLoader EnvCell, cell DAT id 0xXXYY0100 and up): a cell structure of an
+    Environment placed at `frame` in its landblock, its portals and visible cells."""
+
+    id: int
+    frame: Frame
+    environment: int      # the Environment's id (0x0D00XXXX)
+    cell_structure: int   # index into that Environment's cell_structs
+    portals: tuple[CellPortalRec, ...] = ()
+    visible_cells: tuple[int, ...] = ()  # low words of the cells seen from this one
+    seen_outside: bool = False
+
+    def to_json(self):
+        return {"id": write_id(self.id), **self.frame.to_json(), "environment": write_id(self.environment),
+                "cell_structure": self.cell_structure, "portals": [p.to_json() for p in self.portals],
+                "visible_cells": [f"0x{c:04X}" for c in self.visible_cells], "seen_outside": self.seen_outside}
+
+
+@dataclass(frozen=True, slots=True)
 class StaticObject:
     id: int
     position: Position
@@ -388,6 +483,8 @@ class Scene:
     land_height_table: tuple[float, ...] = DEFAULT_LAND_HEIGHT_TABLE
     engine_mode: str = "server"  # PhysicsEngine.Instance.Server: ACE's server default
     name: str = ""
+    environments: tuple[Environment, ...] = ()
+    env_cells: tuple[EnvCell, ...] = ()
 
     def to_json(self):
         d = {"format": FORMAT}
@@ -399,6 +496,10 @@ class Scene:
         d["landblocks"] = [lb.to_json() for lb in self.landblocks]
         if self.objects:
             d["objects"] = [o.to_json() for o in self.objects]
+        if self.environments:
+            d["environments"] = [e.to_json() for e in self.environments]
+        if self.env_cells:
+            d["env_cells"] = [c.to_json() for c in self.env_cells]
         d["mover"] = self.mover.to_json()
         return d
 

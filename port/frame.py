@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from acconform.numerics import MONO, Matrix4x4, Mode, Quaternion, Runtime, Vector3, cast_float, cs_fmod, cs_math, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.constants import CELL_LENGTH, EPSILON
-from acconform.port.land import land_defs
+from acconform.port import land_defs
 from acconform.port.vec import normalize_check_small
 
 # C# literals used by the heading code, exact in float32

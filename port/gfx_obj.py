@@ -20,7 +20,7 @@ from .constants import EPSILON
 from .geom.bsp import BSPTree
 from .geom.polygon import Polygon
 from .geom.sphere import Sphere
-from .transition.sphere_path import InsertType
+from acconform.flags import InsertType
 
 
 @dataclass(slots=True, eq=False)

@@ -22,7 +22,7 @@ from acconform.numerics import Plane, Vector3, dot
 from .anchors import anchor
 from .constants import DEFAULT_SCALE, DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z, TRANSLUCENCY_ETHEREAL
 from .frame import AFrame, Position
-from .land import obj_cell
+from .cell import obj_cell
 from .part_array import PLACEMENT_FRAME_ID, PartArray
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo

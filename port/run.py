@@ -27,7 +27,7 @@ from .constants import BLOCK_LENGTH, CELL_LENGTH
 from .errors import AceException, NullReferenceException
 from .dat.portal_dat import PortalDat
 from .frame import AFrame, Position
-from .land import land_defs
+from . import land_defs
 from .land.lscape import LScape
 from .physics_obj import PhysicsObj
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)

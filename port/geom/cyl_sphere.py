@@ -13,7 +13,7 @@ from acconform.numerics import Mode, Plane, Vector3, cast_float, dot
 
 from ..anchors import anchor
 from ..constants import EPSILON, LANDING_Z, STEP_INTERP_LIMIT
-from ..land.land_defs import get_block_offset
+from ..land_defs import get_block_offset
 from ..vec import cs_sqrt, dot2d, length_squared_2d, normalize_check_small, unit_z_like, zero_like
 
 # SpherePath.cs InsertType.Placement

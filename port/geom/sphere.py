@@ -23,7 +23,7 @@ from acconform.numerics import D, Plane, Vector3, cast_float, cross, dot
 
 from ..anchors import anchor
 from ..constants import EPSILON, LANDING_Z, STEP_INTERP_LIMIT
-from ..land.land_defs import get_block_offset
+from ..land_defs import get_block_offset
 from ..vec import cs_sqrt, normalize_check_small, zero_like
 
 # SpherePath.cs InsertType.Placement (InsertType is Transition 0, Placement 1, InitialPlacement 2)

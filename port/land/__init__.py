@@ -1,5 +1,5 @@
-"""acconform.port.land: the outdoor world ACE builds from CellLandblock data (LandDefs, LandblockStruct, Landblock, LandCell, LScape).
+"""acconform.port.land: the outdoor world ACE builds from CellLandblock data (LandblockStruct, Landblock, LScape).
 
-Submodules are imported by name (no re-exports here), so frame.py can import land_defs
-without pulling in the landblock code.
+The cells themselves are in port/cell/ and LandDefs in port/land_defs.py. Submodules are
+imported by name (no re-exports here).
 """

@@ -15,9 +15,9 @@ from __future__ import annotations
 from acconform.numerics import Mode, Vector3, wrap_i32, wrap_u32
 from acconform.port.anchors import anchor
 from acconform.port.constants import EPSILON
-from acconform.port.land import land_defs
-from acconform.port.land.land_cell import LandCell
-from acconform.port.land.land_defs import Direction
+from acconform.port import land_defs
+from acconform.port.cell.land_cell import LandCell
+from acconform.port.land_defs import Direction
 from acconform.port.land.landblock_struct import LandblockStruct
 from acconform.port.vec import dot2d
 

@@ -19,9 +19,9 @@ from acconform.numerics import Mode, Vector3, cs_fmod, wrap_i32, wrap_u32
 from ..constants import WATER_DEPTH_PARTIAL_WATER, WATER_DEPTH_DRY
 from acconform.port.anchors import anchor
 from acconform.port.geom.polygon import Polygon, Vertex
-from acconform.port.land import land_defs
-from acconform.port.land.land_cell import LandCell
-from acconform.port.land.land_defs import Direction, WaterType
+from acconform.port import land_defs
+from acconform.port.cell.land_cell import LandCell
+from acconform.port.land_defs import Direction, WaterType
 
 # SurfChar: 1 for the five water terrain types (0x10..0x14), indexed by (terrain >> 2) & 0x1F
 SURF_CHAR = (0,) * 16 + (1,) * 5 + (0,) * 11

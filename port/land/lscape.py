@@ -25,8 +25,8 @@ from collections import OrderedDict
 from acconform.numerics import Mode
 from acconform.port.anchors import anchor, harness
 from acconform.port.errors import NullReferenceException
-from acconform.port.land import land_defs
-from acconform.port.land.land_cell import LandCell
+from acconform.port import land_defs
+from acconform.port.cell.land_cell import LandCell
 from acconform.port.land.landblock import Landblock
 
 
@@ -36,7 +36,7 @@ class LandblockPool:
     A landblock is in the pool only while no LScape holds it: `checkout` takes it out (or
     builds one), `release` puts it back. What a run may change in a landblock is the ObjCell
     state of its cells (objects and shadow objects registered in them); checkout resets
-    those to what LandCell's constructor leaves, so a pooled landblock reads as a new one.
+    those (LandCell.reset_for_pool), so a pooled landblock reads as a new one.
     Terrain (vertices, polygons and planes, cell ids and frames, water) is never changed
     after construction.
     """
@@ -57,15 +57,8 @@ class LandblockPool:
             landblock = Landblock(record, land_height_table, mode)
             landblock.post_init()
             return landblock
-        for cell in landblock.land_cells.values():  # LandCell(uint)'s ObjCell state
-            cell.object_list = []
-            cell.shadow_object_list = []
-            cell.restriction_obj = 0
-            cell.seen_outside = False
-            cell.voyeur_table = []
-            cell.building = None
-            cell.in_view = False
-            cell.terrain_polys = {}  # the port's memory (LandCell.find_terrain_poly), kept per run
+        for cell in landblock.land_cells.values():
+            cell.reset_for_pool()
         return landblock
 
     @harness("hands a landblock back to the pool")

@@ -9,21 +9,14 @@ Sphere method on ``global_sphere[0]`` sees the offsets it adds.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from enum import IntEnum
 
-from acconform.flags import TransitionState
+from acconform.flags import InsertType, TransitionState
 from acconform.numerics import Mode, Vector3, dot
 
 from ..anchors import anchor
 from ..frame import Position
-from ..land import land_defs
+from .. import land_defs
 from ..vec import unit_z_like, zero_like
-
-
-class InsertType(IntEnum):
-    Transition = 0x0
-    Placement = 0x1
-    InitialPlacement = 0x2
 
 
 def _sphere(center, radius):

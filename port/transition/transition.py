@@ -11,18 +11,18 @@ and `trace` (a collections.Counter or None) counts the branches named in branche
 from __future__ import annotations
 
 
-from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
+from acconform.flags import InsertType, ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Mode, Plane, Vector3, cs_ceiling, cs_floor, cross, dot
 
 from ..anchors import anchor
 from ..constants import EPSILON, EPSILON_SQ, FLOOR_Z, LANDING_Z, STEP_DOWN_PROBE
-from ..land import land_defs
-from ..land.obj_cell import EMPTY_CELL, find_cell_list_path
+from .. import land_defs
+from ..cell.obj_cell import EMPTY_CELL, find_cell_list_path
 from ..vec import normalize_check_small, snap_to_plane, unit_z_like
 from .cell_array import CellArray
 from .collision_info import CollisionInfo
 from .object_info import ObjectInfo
-from .sphere_path import InsertType, SpherePath
+from .sphere_path import SpherePath
 
 # Transition.FindTransitionalPosition: `var maxSteps = 1000;`
 MAX_STEPS = 1000

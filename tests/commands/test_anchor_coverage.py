@@ -42,8 +42,8 @@ def test_unreached_anchors_are_listed_with_zero_calls_and_a_summary(terrain_scen
 
 
 def test_counting_restores_every_wrapped_function_afterwards(terrain_scene):
-    from acconform.port.land import land_cell, obj_cell
-    from acconform.port.land.land_cell import LandCell
+    from acconform.port.cell import land_cell, obj_cell
+    from acconform.port.cell.land_cell import LandCell
     from acconform.port.transition.transition import Transition
 
     before = (Transition.__dict__["find_valid_position"], LandCell.__dict__["find_collisions"],

@@ -55,10 +55,10 @@ def public_port_functions() -> dict[str, object]:
 
 def test_the_audit_sees_module_functions_methods_and_setattr_attached_methods():
     keys = public_port_functions()
-    assert "acconform.port.land.land_defs.gid_to_lcoord" in keys
+    assert "acconform.port.land_defs.gid_to_lcoord" in keys
     assert "acconform.port.transition.transition.Transition.edge_slide" in keys
-    assert "acconform.port.land.obj_cell.ObjCell.equals" in keys  # also LandCell.equals (setattr)
-    assert "acconform.port.land.land_cell.LandCell.find_collisions" in keys
+    assert "acconform.port.cell.obj_cell.ObjCell.equals" in keys  # also LandCell.equals (setattr)
+    assert "acconform.port.cell.land_cell.LandCell.find_collisions" in keys
     assert len(keys) > 250
 
 

@@ -18,7 +18,7 @@ import pytest
 
 from acconform.numerics import EXACT, FAST, Matrix4x4
 from acconform.port.frame import AFrame, Position
-from acconform.port.land.land_defs import InvalidOperation
+from acconform.port.land_defs import InvalidOperation
 
 import numerics_replay
 from numerics_replay import assert_matches_answers, assert_matches_live_mono, assert_matches_recorded, bits, load_recorded

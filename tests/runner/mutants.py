@@ -69,7 +69,7 @@ MUTATIONS: tuple[Mutation, ...] = (
              "if ci.contact_plane_valid and ci.contact_plane.normal.z < zval:",
              "if ci.contact_plane_valid and ci.contact_plane.normal.z < zval * 0.9:",
              "EdgeSlide takes slopes just past FloorZ for precipices, not cliffs"),
-    Mutation("block_offset_x_sign_flipped", "land/land_defs.py",
+    Mutation("block_offset_x_sign_flipped", "land_defs.py",
              "(local_to[0] - local_from[0]) * SQUARE_LENGTH",
              "(local_from[0] - local_to[0]) * SQUARE_LENGTH",
              "GetBlockOffset's x offset has the wrong sign"),
@@ -136,12 +136,12 @@ MUTATIONS: tuple[Mutation, ...] = (
              "        found, changed = self.neg_node.find_walkable(path, valid_pos, polygon, movement, up, changed)\n"
              "        last, changed = self.pos_node.find_walkable(path, valid_pos, found, movement, up, changed)",
              "BSPNode.find_walkable visits the back side first when the sphere straddles the split"),
-    Mutation("outside_cell_border_belongs_below", "land/land_defs.py",
+    Mutation("outside_cell_border_belongs_below", "land_defs.py",
              "        x = offset[0] + cast_float(_x, cs_floor(_x / CELL_LENGTH))",
              "        x = offset[0] + cast_float(_x, -cs_floor(-_x / CELL_LENGTH) - 1)",
              "get_outside_lcoord puts a point exactly on a cell border (x) in the cell below it"),
     # registration: where a static is placed (PhysicsObj.add_obj_to_cell's chain)
-    Mutation("add_cell_block_own_landblock_skip_dropped", "land/land_cell.py",
+    Mutation("add_cell_block_own_landblock_skip_dropped", "cell/land_cell.py",
              "            if id >> 16 != cell_id >> 16:\n                continue\n",
              "",
              "add_cell_block registers a bbox-placed static in the neighbouring landblock's cells too (its FIXME skip dropped)"),

@@ -28,7 +28,7 @@ from acconform.port.errors import AceException
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom import sphere as port_sphere
 from acconform.port.geom.polygon import Polygon, Sidedness, Vertex
-from acconform.port.land import land_defs
+from acconform.port import land_defs
 from acconform.port.vec import Ray
 
 from acconform.codec import write_f32

@@ -7,9 +7,9 @@ import pytest
 
 from acconform.numerics import EXACT, FAST, f32_bits
 from acconform.port.frame import AFrame, Position
-from acconform.port.land import land_cell as lc
+from acconform.port.cell import land_cell as lc
 from acconform.port.errors import NullReferenceException
-from acconform.port.land.land_defs import InvalidOperation, WaterType
+from acconform.port.land_defs import InvalidOperation, WaterType
 
 from land_helpers import WATER, CellArrayStub, SphereStub, landblock, world
 

@@ -11,7 +11,7 @@ import pytest
 
 from acconform.numerics import EXACT, FAST, f32_bits
 from acconform.port.land import landblock_struct as lbs
-from acconform.port.land.land_defs import WaterType
+from acconform.port.land_defs import WaterType
 from acconform.port.land.landblock import Landblock
 
 from land_helpers import WATER, landblock

@@ -1,8 +1,7 @@
 """LandCell: find_terrain_poly, point_in_cell, FindCollisions, FindEnvCollisions, find_transit_cells (the sphere and parts overloads), handle_move_restriction, add_all_outside_cells (the sphere and parts overloads), add_outside_cell, check_add_cell_boundary, add_cell_block.
 
-ACE's Common/LandCell.cs. ACE's LandCell derives from SortCell -> ObjCell -> PartCell; here it
-derives from ObjCell (obj_cell.py, which holds SortCell's two overrides too) and carries the
-fields of those classes that LandCell uses. FindEnvCollisions tests sphere 0 only (its low point
+ACE's Common/LandCell.cs. LandCell derives from SortCell (sort_cell.py) -> ObjCell (obj_cell.py),
+as in ACE (PartCell, which holds nothing the physics reads, is left out). FindEnvCollisions tests sphere 0 only (its low point
 picks the triangle) against the terrain. The static helpers take the run's LScape as their first
 argument where ACE reaches the static LScape. add_all_outside_cells(numParts, parts, ...) (the
 static-object overload, a static's placement) reads the parts' bounding boxes (port/bbox.py).
@@ -14,44 +13,39 @@ from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.bbox import BBox
-from acconform.port.constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
-from acconform.port.frame import AFrame, Position
+from acconform.port.frame import Position
 from acconform.port.geom.polygon import Polygon, Sidedness
 from acconform.port.geom.sphere import Sphere
-from acconform.port.land import land_defs
-from acconform.port.land.land_defs import WaterType
-from acconform.port.land.obj_cell import ObjCell
+from acconform.port import land_defs
+from acconform.port.land_defs import WaterType
+from acconform.port.cell.sort_cell import SortCell
 
 
 TERRAIN_POLYS_LIMIT = 256  # remembered points per cell before the cell forgets them all
 
 
-class LandCell(ObjCell):
-    """One 24 m outdoor cell: two terrain triangles and the ObjCell state the physics reads."""
+class LandCell(SortCell):
+    """One 24 m outdoor cell: two terrain triangles over the ObjCell state the physics reads."""
 
-    __slots__ = (
-        "terrain_polys", "water_type", "pos", "object_list", "shadow_object_list", "restriction_obj",
-        "cur_landblock", "building", "polygons", "in_view", "seen_outside", "voyeur_table",
-    )
+    __slots__ = ("polygons", "in_view", "terrain_polys")
 
     @anchor("CLandCell::CLandCell", "LandCell.cs:LandCell(uint)")
     def __init__(self, cell_id: int, mode: Mode):
-        # ObjCell(cellID): ID, then ObjCell.Init (Pos = new Position(): cell 0, identity frame)
-        self.id = cell_id
-        self.water_type = WaterType.NotWater
-        self.pos = Position(0, AFrame.identity(mode))
-        self.object_list: list = []
-        self.shadow_object_list: list = []
-        self.restriction_obj = 0
-        self.seen_outside = False
-        self.voyeur_table: list[int] = []
-        self.cur_landblock = None  # set by Landblock.init_landcell (PostInit)
-        # SortCell
-        self.building = None
+        super().__init__(cell_id, mode)
         # LandCell.Init: always 2 polygons
         self.polygons: list[Polygon | None] = [None, None]
         self.in_view = False
         self.terrain_polys: dict = {}  # find_terrain_poly's answers (the port's, not ACE's: see there)
+
+    @harness("a pooled LandCell back to what its constructor left (its terrain kept)")
+    def reset_for_pool(self) -> None:
+        """What a run may change in a built cell is its ObjCell/SortCell state (objects and
+        shadow objects registered in it) and the port's terrain-poly memory; the terrain, id,
+        frame and water type are fixed after construction."""
+        self.init_obj_cell_state()
+        self.building = None
+        self.in_view = False
+        self.terrain_polys = {}
 
     def __repr__(self) -> str:
         return f"LandCell(0x{self.id:08X}, water={self.water_type.name})"
@@ -93,7 +87,7 @@ class LandCell(ObjCell):
     def find_collisions(self, transition) -> TransitionState:
         transit_state = self.find_env_collisions(transition)
         if transit_state == TransitionState.OK:
-            transit_state = self.sort_cell_find_collisions(transition)  # base.FindCollisions (SortCell)
+            transit_state = SortCell.find_collisions(self, transition)  # base.FindCollisions
             if transit_state == TransitionState.OK:
                 transit_state = self.find_obj_collisions(transition)
         return transit_state
@@ -133,7 +127,7 @@ class LandCell(ObjCell):
     def find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
         """The run's world `lscape` comes first, standing in for ACE's static LScape."""
         add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
-        self.sort_cell_find_transit_cells(lscape, position, num_sphere, spheres, cell_array, path)
+        SortCell.find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path)
 
 
     @anchor("CLandCell::find_transit_cells", "LandCell.cs:find_transit_cells(int, List<PhysicsPart>, CellArray)",
@@ -141,7 +135,7 @@ class LandCell(ObjCell):
     def find_transit_cells_parts(self, lscape, num_parts: int, parts, cell_array) -> None:
         """The run's world `lscape` comes first, standing in for ACE's static LScape."""
         add_all_outside_cells_parts(lscape, num_parts, parts, cell_array, self.id)
-        self.sort_cell_find_transit_cells_parts(lscape, num_parts, parts, cell_array)
+        SortCell.find_transit_cells_parts(self, lscape, num_parts, parts, cell_array)
 
     @anchor("CLandCell::handle_move_restriction", "LandCell.cs:handle_move_restriction")
     def handle_move_restriction(self, transition) -> bool:
@@ -159,23 +153,6 @@ class LandCell(ObjCell):
         normal = Vector3(offset.x, offset.y, s(0.0))
         transition.collision_info.set_collision_normal(normal)
         return True
-
-    @anchor("CObjCell::get_block_water_type", "ObjCell.cs:get_block_water_type")
-    def get_block_water_type(self) -> WaterType:
-        if self.cur_landblock is not None:
-            return self.cur_landblock.water_type
-        return WaterType.NotWater
-
-    @anchor("CObjCell::get_water_depth", "ObjCell.cs:get_water_depth")
-    def get_water_depth(self, point: Vector3):
-        s = type(point.x)
-        if self.water_type == WaterType.NotWater:
-            return s(0.0)
-        if self.water_type == WaterType.EntirelyWater:
-            return s(WATER_DEPTH_ENTIRELY_WATER)
-        if self.cur_landblock is not None:
-            return self.cur_landblock.calc_water_depth(self.id, point)
-        return s(WATER_DEPTH_DRY)
 
 
 # ---------------------------------------------------------------- static helpers

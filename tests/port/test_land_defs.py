@@ -9,7 +9,7 @@ import pytest
 
 from acconform.numerics import EXACT, FAST
 from acconform.port.constants import EPSILON
-from acconform.port.land import land_defs as ld
+from acconform.port import land_defs as ld
 
 F = np.float32
 

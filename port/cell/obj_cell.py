@@ -1,8 +1,7 @@
-"""ObjCell and SortCell: AddObject, AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells (the sphere and parts overloads), point_in_cell, Equals, find_cell_list (the sphere and cylsphere overloads), GetVisible.
+"""ObjCell: Init, AddObject, AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells (the sphere and parts overloads), point_in_cell, get_block_water_type, get_water_depth, Equals, find_cell_list (the sphere and cylsphere overloads), GetVisible.
 
-ACE's Common/ObjCell.cs and Common/SortCell.cs: the base behaviour every cell has. LandCell
-(land_cell.py) derives from ObjCell, carries the fields and overrides what ACE's LandCell
-overrides. `EMPTY_CELL` is ACE's ObjCell.EmptyCell (id 0, FindCollisions -> Invalid), which
+ACE's Common/ObjCell.cs: the fields and base behaviour every cell has. SortCell (sort_cell.py)
+derives from it, and LandCell (land_cell.py) from SortCell, as in ACE. `EMPTY_CELL` is ACE's ObjCell.EmptyCell (id 0, FindCollisions -> Invalid), which
 CheckOtherCells passes in as the "find me a current cell" marker.
 
 find_cell_list outdoors: every cell the spheres touch is added to the CellArray (which is never
@@ -12,20 +11,43 @@ sphere 0's center -- on a shared edge both cells hold it and the later one wins.
 
 from __future__ import annotations
 
-from acconform.flags import PhysicsState, TransitionState
+from acconform.flags import InsertType, PhysicsState, TransitionState
+from acconform.numerics import Mode, Vector3
+
+# The package, not its modules: find_cell_list reaches LandCell's static helpers, and LandCell
+# derives from this module's ObjCell, so land_cell is looked up in the package when called
+# (port/cell/__init__.py imports obj_cell, sort_cell, land_cell in that order).
+from acconform.port import cell as _cells
 
 from ..anchors import anchor
-from ..transition.sphere_path import InsertType
-from . import land_defs
+from ..constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
+from ..frame import AFrame, Position
+from .. import land_defs
+from ..land_defs import WaterType
 
 
 class ObjCell:
-    """CObjCell's behaviour (and SortCell's overrides; a LandCell never holds a building here)."""
+    """CObjCell: its id, frame, water type and the objects registered in it."""
 
-    __slots__ = ("id",)
+    __slots__ = ("id", "water_type", "pos", "object_list", "shadow_object_list", "restriction_obj",
+                 "seen_outside", "voyeur_table", "cur_landblock")
 
-    def __init__(self, cell_id: int = 0):
+    @anchor("CObjCell::CObjCell", "ObjCell.cs:ObjCell(uint)")
+    def __init__(self, cell_id: int = 0, mode: Mode | None = None):
         self.id = cell_id
+        self.water_type = WaterType.NotWater
+        self.restriction_obj = 0
+        self.seen_outside = False
+        self.cur_landblock = None  # set by Landblock.init_landcell (PostInit)
+        # EmptyCell is built before any run has a mode; nothing reads its Pos
+        self.pos = Position(0, AFrame.identity(mode)) if mode is not None else None
+        self.init_obj_cell_state()
+
+    @anchor("CObjCell::init", "ObjCell.cs:Init", "the lists; Pos is set by the constructor")
+    def init_obj_cell_state(self) -> None:
+        self.object_list: list = []
+        self.shadow_object_list: list = []
+        self.voyeur_table: list[int] = []
 
     @anchor(None, "ObjCell.cs:Equals")
     def equals(self, obj_cell) -> bool:
@@ -57,23 +79,6 @@ class ObjCell:
     @anchor("CObjCell::find_env_collisions", "ObjCell.cs:FindEnvCollisions")
     def find_env_collisions(self, transition) -> TransitionState:
         return TransitionState.Invalid
-
-    @anchor("CSortCell::find_collisions", "SortCell.cs:FindCollisions")
-    def sort_cell_find_collisions(self, transition) -> TransitionState:
-        if self.building is not None:
-            raise NotImplementedError("buildings (BuildingObj.find_building_collisions) are not ported")
-        return TransitionState.OK
-
-    @anchor("CSortCell::find_transit_cells", "SortCell.cs:find_transit_cells")
-    def sort_cell_find_transit_cells(self, lscape, position, num_sphere, spheres, cell_array, path) -> None:
-        if self.building is not None:
-            raise NotImplementedError("buildings (BuildingObj.find_building_transit_cells) are not ported")
-
-    @anchor("CSortCell::find_transit_cells", "SortCell.cs:find_transit_cells(int, List<PhysicsPart>, CellArray)",
-            "the parts overload")
-    def sort_cell_find_transit_cells_parts(self, lscape, num_parts, parts, cell_array) -> None:
-        if self.building is not None:
-            raise NotImplementedError("buildings (BuildingObj.find_building_transit_cells) are not ported")
 
     @anchor("CObjCell::find_obj_collisions", "ObjCell.cs:FindObjCollisions")
     def find_obj_collisions(self, transition) -> TransitionState:
@@ -130,13 +135,26 @@ class ObjCell:
     def point_in_cell(self, point) -> bool:
         return False
 
+    @anchor("CObjCell::get_block_water_type", "ObjCell.cs:get_block_water_type")
+    def get_block_water_type(self) -> WaterType:
+        if self.cur_landblock is not None:
+            return self.cur_landblock.water_type
+        return WaterType.NotWater
+
+    @anchor("CObjCell::get_water_depth", "ObjCell.cs:get_water_depth")
+    def get_water_depth(self, point: Vector3):
+        s = type(point.x)
+        if self.water_type == WaterType.NotWater:
+            return s(0.0)
+        if self.water_type == WaterType.EntirelyWater:
+            return s(WATER_DEPTH_ENTIRELY_WATER)
+        if self.cur_landblock is not None:
+            return self.cur_landblock.calc_water_depth(self.id, point)
+        return s(WATER_DEPTH_DRY)
+
 
 # ObjCell.EmptyCell
 EMPTY_CELL = ObjCell()
-
-# land_cell's LandCell derives from ObjCell, so land_cell is imported once ObjCell exists
-from . import land_cell  # noqa: E402
-
 
 @anchor("CObjCell::GetVisible", "ObjCell.cs:GetVisible")
 def get_visible(lscape, cell_id: int):
@@ -155,7 +173,7 @@ def find_cell_list(lscape, position, num_sphere: int, spheres: list, cell_array,
 
     if (position.obj_cell_id & 0xFFFF) >= 0x100:
         raise NotImplementedError("indoor cells (EnvCells) are not supported")
-    land_cell.add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
+    _cells.land_cell.add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
 
     if visible_cell is not None and num_sphere != 0:
         i = 0
