@@ -58,7 +58,7 @@ class AFrame:
     @anchor(None, "AFrame.cs:AFrame(DatLoader.Entity.Frame)", "the DAT constructor")
     def from_dat(frame) -> "AFrame":
         q = frame.orientation
-        return AFrame(frame.origin, Quaternion(q.x, q.y, q.z, q.w))
+        return AFrame(frame.origin, q.runtime.quaternion(q.x, q.y, q.z, q.w))
 
     @anchor(None, "AFrame.cs:AFrame(AFrame)", "the copy constructor")
     def copy(self) -> "AFrame":

@@ -1,4 +1,4 @@
-"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), is_completely_visible, transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
 The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
 record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
@@ -325,6 +325,16 @@ class PhysicsObj:
                 self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
         for child in self.children:
             child.add_shadows_to_cell(cell_array)
+
+    @anchor("CPhysicsObj::is_completely_visible", "PhysicsObj.cs:is_completely_visible")
+    def is_completely_visible(self) -> bool:
+        if self.cur_cell is None or self.num_shadow_objects == 0:
+            return False
+
+        for shadow_obj in self.shadow_objects.values():
+            if shadow_obj.cell is None:
+                return False
+        return True
 
     @anchor("CPhysicsObj::check_contact", "PhysicsObj.cs:check_contact")
     def check_contact(self, contact: bool) -> bool:

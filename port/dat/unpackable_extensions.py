@@ -66,3 +66,14 @@ def unpack_int_dict(reader, make) -> dict:
         item = make(reader)
         dictionary_add(value, key, item)
     return value
+
+
+@anchor(None, "ACE.DatLoader/UnpackableExtensions.cs:Unpack(Dictionary<uint, T>)")
+def unpack_uint_dict(reader, make) -> dict:
+    value: dict = {}
+    total = reader.read_uint32()
+    for _ in range(total):
+        key = reader.read_uint32()
+        item = make(reader)
+        dictionary_add(value, key, item)
+    return value
