@@ -99,6 +99,7 @@ class LScape:
         self.outside_cells: dict[tuple, list] = {}  # land_cell.add_all_outside_cells_replayed's memory
         self.cell_dat = None  # DatManager.CellDat: the run's cell DAT (port/run.py sets it)
         self.portal_dat = None  # DatManager.PortalDat: the run's portal DAT (port/run.py sets it)
+        self.adjust_cells: dict = {}  # AdjustCell.AdjustCells (port/adjust_cell.py), per run
         self.records = {record.id | 0xFFFF: record for record in scene.landblocks}
         for landblock_id, record in self.records.items():
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
@@ -119,6 +120,7 @@ class LScape:
         self.landblocks = {}
         self.landcells = {}
         self.outside_cells = {}
+        self.adjust_cells = {}
         self.records = {}
 
     @anchor("LScape::get_landblock", "LScape.cs:get_landblock")

@@ -184,6 +184,11 @@ def indoor_scene(env: Environment, cells, start, end, *, state: int, transient: 
     return Scene((Landblock(LB | 0xFFFF, (0,) * 81, (0,) * 81),), mover, environments=(env,), env_cells=tuple(cells))
 
 
+def landblock_info_bytes(block_id: int, num_cells: int) -> bytes:
+    """DatLoader LandblockInfo (0xXXYYFFFE): NumCells, no objects, no buildings, PackMask 0."""
+    return _u32.pack(block_id | 0xFFFE) + _u32.pack(num_cells) + _u32.pack(0) + _u16.pack(0) + _u16.pack(0)
+
+
 def world(scene: Scene, mode, stabs: dict | None = None):
     """The run's LScape with its cell DAT (the scene's EnvCells) and portal DAT (the mover's records,
     the Environments, and `extra` records), as port/run.py builds a run's world; returns
@@ -193,6 +198,8 @@ def world(scene: Scene, mode, stabs: dict | None = None):
         portal_dat.records[e.id] = environment_bytes(e)
     stabs = stabs or {}
     cell_records = {c.id: env_cell_bytes(c, stabs.get(c.id, ())) for c in scene.env_cells}
+    for block in {c.id & 0xFFFF0000 for c in scene.env_cells}:
+        cell_records[block | 0xFFFE] = landblock_info_bytes(block, sum(1 for c in scene.env_cells if c.id & 0xFFFF0000 == block))
     lscape = LScape(scene, mode)
     lscape.cell_dat = PortalDat(cell_records, mode, scene.engine_mode == "server")
     lscape.portal_dat = portal_dat

@@ -132,3 +132,51 @@ def test_a_released_landblock_keeps_no_env_cell_for_the_next_run():
     assert again.get_landcell(A) is not None
     again.release()
     POOL.clear()
+
+
+@pytest.mark.anchor("ACE.DatLoader/FileTypes/LandblockInfo.cs:Unpack")
+def test_a_landblock_info_reads_its_cell_count_objects_buildings_and_restriction_table():
+    import struct
+    stab = struct.pack("<I7f", 0x01000001, 1, 2, 3, 1, 0, 0, 0)
+    portal = struct.pack("<4H", 2, 0x0101, 0, 1) + struct.pack("<H", 0x0102) + b"\0\0"  # aligned to 4
+    building = struct.pack("<I7fI", 0x02000001, 5, 6, 7, 1, 0, 0, 0, 3) + struct.pack("<I", 1) + portal
+    data = (struct.pack("<II", 0xA9B4FFFE, 3) + struct.pack("<I", 1) + stab + struct.pack("<HH", 1, 1) + building
+            + struct.pack("<HH", 1, 0) + struct.pack("<II", 0xA9B40100, 0x7000000A))
+    from acconform.port.dat.landblock_info import LandblockInfo
+    reader = BinaryReader(data, EXACT)
+    info = LandblockInfo.unpack(reader)
+    assert (info.id, info.num_cells, [s.id for s in info.objects]) == (0xA9B4FFFE, 3, [0x01000001])
+    (b,) = info.buildings
+    assert b.model_id == 0x02000001 and b.num_leaves == 3
+    assert [(p.other_cell_id, p.stab_list) for p in b.portals] == [(0x0101, [0x0102])]
+    assert info.restriction_tables == {0xA9B40100: 0x7000000A} and reader.position == len(data)
+
+
+@pytest.mark.anchor("Position::get_indoor_cell")
+def test_get_cell_of_an_indoor_position_is_the_dungeon_cell_holding_its_origin_else_its_own_id():
+    lscape, _ = _world()
+    inside_b = Position(A, AFrame(v(71, 60, 21), EXACT.quat(0, 0, 0, 1)))
+    assert inside_b.get_cell(A, lscape=lscape) == B
+    nowhere = Position(A, AFrame(v(120, 60, 21), EXACT.quat(0, 0, 0, 1)))
+    assert nowhere.get_cell(A, lscape=lscape) == A
+    assert list(lscape.adjust_cells) == [LB >> 16]
+
+
+@pytest.mark.anchor("CPhysicsObj::AdjustPosition")
+def test_adjust_position_moves_an_indoor_position_into_the_visible_child_cell_or_outside_when_seen_outside():
+    from acconform.port.physics_obj import PhysicsObj
+
+    env, (a, b) = two_rooms()
+    a = room(0x0100, 60.0, portals=a.portals, visible=a.visible_cells, seen_outside=True)
+    lscape, _ = _world(cells=(a, b))
+    obj = PhysicsObj.create(EXACT)
+    low = v(0, 0, 0.5)
+    pos = Position(A, AFrame(v(71, 60, 20), EXACT.quat(0, 0, 0, 1)))
+    assert obj.adjust_position(pos, low, False, True, lscape).id == B and pos.obj_cell_id == B
+    out = Position(A, AFrame(v(100, 60, 20), EXACT.quat(0, 0, 0, 1)))
+    cell = obj.adjust_position(out, low, False, True, lscape)
+    assert cell.id == out.obj_cell_id == LB | (4 * 8 + 2 + 1)  # adjusted to the outdoor cell at (100, 60)
+    shut = Position(B, AFrame(v(100, 60, 20), EXACT.quat(0, 0, 0, 1)))
+    assert obj.adjust_position(shut, low, False, True, lscape) is None  # B is not seen from outside
+    assert obj.adjust_position(Position(LB | 0x0050, AFrame(v(1, 1, 1), EXACT.quat(0, 0, 0, 1))), low, False, True,
+                               lscape) is None
