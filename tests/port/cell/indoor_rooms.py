@@ -1,7 +1,5 @@
-"""Small indoor worlds for the cell tests: DatLoader bytes for EnvCells and Environments (a test-side
-byte builder in ACE.DatLoader's layout: FileTypes/EnvCell.cs, FileTypes/Environment.cs,
-Entity/CellStruct.cs, Entity/CellPortal.cs, Entity/Stab.cs, Entity/BSPNode.cs with BSPType.Cell), and
-the run's LScape and DATs over them, as a run builds them.
+"""Small indoor worlds for the cell tests: rooms as scene records, and the run's LScape and DATs over
+them (acconform/dat.py's records, read by port/dat/), as a run builds them.
 
 Rooms are boxes in their own frame: x and y in [-5, 5], floor z = 0, ceiling z = 4. The cell
 BSP is a chain of front nodes on the six inward planes; the physics BSP holds the floor (and,
@@ -13,13 +11,11 @@ from __future__ import annotations
 
 import struct
 
-from acconform import dat
 from acconform.flags import CullMode
 from acconform.numerics import to_f32
 from acconform.scene import (BSPLeaf, BSPNode, CellBSPLeaf, CellBSPNode, CellPortalRec, CellStructRec, ContactPlane,
                              Environment, EnvCell, Frame, Landblock, Mover, PlaneRec, PolygonRec, Position, Scene,
                              SphereRec)
-from acconform.port.dat.portal_dat import PortalDat
 from acconform.port.land.lscape import LScape
 from acconform.port import run
 
@@ -29,92 +25,12 @@ HALF = 5.0
 HEIGHT = 4.0
 ROOM_Z = 20.0  # room floors sit at this z in the landblock (the terrain below is at 0)
 
-_u16, _u32, _i32 = struct.Struct("<H"), struct.Struct("<I"), struct.Struct("<i")
-_4f = struct.Struct("<4f")
+_u16 = struct.Struct("<H")
 
 
 def tag(name: str) -> bytes:
     """A node tag as the DAT holds it: ReadNode reverses the four ASCII bytes it reads."""
     return name[::-1].encode("ascii")
-
-
-def cell_bsp(node, out: list, leaves: list) -> None:
-    """A cell BSP in DatLoader's BSPType.Cell layout: a node is its tag (which children follow),
-    its plane and its children; a leaf its tag and LeafIndex."""
-    if isinstance(node, CellBSPLeaf):
-        out.append(tag("LEAF") + _i32.pack(len(leaves)))
-        leaves.append(node)
-        return
-    name = {(True, True): "BPIN", (True, False): "BPIn", (False, True): "BpIN", (False, False): "BpIn"}[
-        (node.front is not None, node.back is not None)]
-    out.append(tag(name) + _4f.pack(*node.plane.normal, node.plane.d))
-    if node.front is not None:
-        cell_bsp(node.front, out, leaves)
-    if node.back is not None:
-        cell_bsp(node.back, out, leaves)
-
-
-def _align(out: list) -> None:
-    n = sum(len(b) for b in out) % 4
-    if n:
-        out.append(b"\0" * (4 - n))
-
-
-def cell_struct_bytes(c: CellStructRec, base: int) -> bytes:
-    """DatLoader CellStruct; `base` is the stream position it starts at (AlignBoundary counts from the record's start)."""
-    index: dict[tuple, int] = {}
-    vertices = []
-
-    def ids(poly):
-        out = []
-        for v in poly.vertices:
-            if v not in index:
-                index[v] = len(vertices)
-                vertices.append(v)
-            out.append(index[v])
-        return out
-
-    poly_ids = [ids(p) for p in c.polygons]
-    phys_ids = [ids(p) for p in c.physics_polygons]
-    out = [b"\0" * base, _u32.pack(len(c.polygons)), _u32.pack(len(c.physics_polygons)), _u32.pack(len(c.portals)),
-           dat.vertex_array(vertices)]
-    for k, (p, i) in enumerate(zip(c.polygons, poly_ids)):
-        out.append(_u16.pack(k) + dat.polygon(p, i))
-    for portal in c.portals:
-        out.append(_u16.pack(portal))
-    _align(out)
-    cell_bsp(c.cell_bsp, out, [])
-    for k, (p, i) in enumerate(zip(c.physics_polygons, phys_ids)):
-        out.append(_u16.pack(k) + dat.polygon(p, i))
-    dat.bsp_node(c.physics_bsp, out, [])
-    out.append(_u32.pack(0))  # no drawing BSP
-    _align(out)
-    return b"".join(out)[base:]
-
-
-def environment_bytes(e: Environment) -> bytes:
-    out = _u32.pack(e.id) + _u32.pack(len(e.cell_structs))
-    for k, c in enumerate(e.cell_structs):
-        out += _u32.pack(k)
-        out += cell_struct_bytes(c, len(out))
-    return out
-
-
-def env_cell_bytes(c: EnvCell, stabs=(), flags_extra: int = 0) -> bytes:
-    """DatLoader EnvCell; `stabs` are (did, ((x, y, z), (w, x, y, z))) pairs."""
-    flags = (0x1 if c.seen_outside else 0) | (0x2 if stabs else 0) | flags_extra
-    out = [_u32.pack(c.id), _u32.pack(flags), _u32.pack(c.id), bytes((0, len(c.portals))), _u16.pack(len(c.visible_cells)),
-           _u16.pack(c.environment & 0xFFFF), _u16.pack(c.cell_structure),
-           struct.pack("<7f", *c.frame.origin, *c.frame.orientation)]
-    for p in c.portals:
-        out.append(struct.pack("<4H", p.flags, p.polygon, p.other_cell, p.other_portal))
-    for v in c.visible_cells:
-        out.append(_u16.pack(v))
-    if stabs:
-        out.append(_u32.pack(len(stabs)))
-        for did, (origin, q) in stabs:
-            out.append(_u32.pack(did) + struct.pack("<7f", *origin, *q))
-    return b"".join(out)
 
 
 # ---------------------------------------------------------------- rooms
@@ -175,44 +91,21 @@ ONE_SPHERE = (SphereRec((0.0, 0.0, 0.48), 0.48),)
 
 
 def indoor_scene(env: Environment, cells, start, end, *, state: int, transient: int, begin_cell: int,
-                 end_cell: int, step_down: float = 0.4, floor_z: float = ROOM_Z) -> Scene:
+                 end_cell: int, step_down: float = 0.4, floor_z: float = ROOM_Z, objects=()) -> Scene:
     start = tuple(to_f32(c) for c in start)
     end = tuple(to_f32(c) for c in end)
     cp = ContactPlane(begin_cell, PlaneRec((0.0, 0.0, 1.0), to_f32(-floor_z)))
     mover = Mover(ONE_SPHERE, Position(begin_cell, Frame(start)), Position(end_cell, Frame(end)), to_f32(0.4),
                   to_f32(step_down), state=state, transient_state=transient, contact_plane=cp)
-    return Scene((Landblock(LB | 0xFFFF, (0,) * 81, (0,) * 81),), mover, environments=(env,), env_cells=tuple(cells))
+    return Scene((Landblock(LB | 0xFFFF, (0,) * 81, (0,) * 81),), mover, tuple(objects), environments=(env,),
+                 env_cells=tuple(cells))
 
 
-def landblock_info_bytes(block_id: int, num_cells: int) -> bytes:
-    """DatLoader LandblockInfo (0xXXYYFFFE): NumCells, no objects, no buildings, PackMask 0."""
-    return _u32.pack(block_id | 0xFFFE) + _u32.pack(num_cells) + _u32.pack(0) + _u16.pack(0) + _u16.pack(0)
-
-
-def world(scene: Scene, mode, stabs: dict | None = None):
-    """The run's LScape with its cell DAT (the scene's EnvCells) and portal DAT (the mover's records,
-    the Environments, and `extra` records), as port/run.py builds a run's world; returns
-    (lscape, portal_dat)."""
+def world(scene: Scene, mode):
+    """The run's LScape with its portal and cell DATs (acconform/dat.py's records), as port/run.py
+    builds a run's world; returns (lscape, portal_dat)."""
     portal_dat, _dids = run.portal_dat_for(scene, mode)
-    for e in scene.environments:
-        portal_dat.records[e.id] = environment_bytes(e)
-    stabs = stabs or {}
-    cell_records = {c.id: env_cell_bytes(c, stabs.get(c.id, ())) for c in scene.env_cells}
-    for block in {c.id & 0xFFFF0000 for c in scene.env_cells}:
-        cell_records[block | 0xFFFE] = landblock_info_bytes(block, sum(1 for c in scene.env_cells if c.id & 0xFFFF0000 == block))
     lscape = LScape(scene, mode)
-    lscape.cell_dat = PortalDat(cell_records, mode, scene.engine_mode == "server")
     lscape.portal_dat = portal_dat
+    lscape.cell_dat = run.cell_dat_for(scene, mode)
     return lscape, portal_dat
-
-
-def walk(scene: Scene, mode, trace=None):
-    """The mover's transition from begin to end, as run_scene makes it; returns (transition, ok, lscape)."""
-    from acconform.port.frame import Position as PortPosition
-
-    lscape, portal_dat = world(scene, mode)
-    mover = run.build_mover(scene, portal_dat, lscape)
-    old_pos = mover.position.copy()
-    new_pos = PortPosition.from_record(scene.mover.end, mode)
-    trans, ok = mover.transition(old_pos, new_pos, False, lscape, trace)
-    return trans, ok, lscape
