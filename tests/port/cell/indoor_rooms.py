@@ -109,3 +109,47 @@ def world(scene: Scene, mode):
     lscape.portal_dat = portal_dat
     lscape.cell_dat = run.cell_dat_for(scene, mode)
     return lscape, portal_dat
+
+
+# ---------------------------------------------------------------- named scenes (ACE's answers in data/)
+
+
+def _named() -> dict[str, tuple[Scene, str]]:
+    from acconform.flags import PhysicsState, TransientState
+    from acconform.scene import StaticObject, validate_scene
+    from object_scenes import box
+
+    walk_state = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
+    no_edge_slide = int(PhysicsState.Gravity)
+    grounded = int(TransientState.Contact | TransientState.OnWalkable)
+    a_id = LB | 0x0100
+
+    def scene(env, cells, start, end, state=walk_state, objects=()):
+        return validate_scene(indoor_scene(env, cells, start, end, state=state, transient=grounded, begin_cell=a_id,
+                                           end_cell=a_id, objects=objects))
+
+    env, cells = two_rooms()
+    low_env, low_cells = two_rooms(z_b=19.8)
+    cliff_env, cliff_cells = two_rooms(z_b=17.0)
+    outside = (room(0x0100, 60.0, portals=(portal(0, 0xFFFF),), seen_outside=True), cells[1])
+    unloaded = (room(0x0100, 60.0, portals=(portal(0, 0x0105),)), cells[1])
+    boulder = StaticObject(0x70000000, Position(a_id, Frame((64.5, 60.0, 20.0))), box(2.0, 2.0, 2.0))
+    return {
+        "across-portal": (scene(env, cells, (63, 60, 20), (67, 60, 20)), "walk from room A through its east portal into B"),
+        "portal-diagonal": (scene(env, cells, (63, 58, 20), (67.5, 61.3, 20)), "cross the portal at an angle"),
+        "back-wall": (scene(env, cells, (57, 60, 20), (53, 60, 20)), "walk into room A's back wall (physics BSP)"),
+        "small-ledge": (scene(low_env, low_cells, (63, 60, 20), (67, 60, 20)), "step down 0.2 m onto B's floor"),
+        "tall-ledge-edge-slide": (scene(cliff_env, cliff_cells, (63, 60, 20), (67, 60, 20)),
+                                  "a 3 m drop with EdgeSlide: precipice slide off A's floor"),
+        "tall-ledge-no-edge-slide": (scene(cliff_env, cliff_cells, (63, 60, 20), (67, 60, 20), state=no_edge_slide),
+                                     "a 3 m drop without EdgeSlide: walk off and lose contact"),
+        "tall-ledge-angle": (scene(cliff_env, cliff_cells, (63, 58, 20), (67, 62, 20)), "the drop at an angle, with EdgeSlide"),
+        "outside-portal": (scene(env, outside, (63, 60, 20), (66, 60, 20)), "out through a portal to 0xFFFF onto terrain cells"),
+        "unloaded-neighbour": (scene(env, unloaded, (63, 60, 20), (66, 60, 20)),
+                               "toward a portal whose cell is not visible: its short id, no cell"),
+        "static-straddling": (scene(env, cells, (61, 60, 20), (66, 60, 20), objects=(boulder,)),
+                              "a static in A straddling the portal, registered in A and B; walk into it"),
+    }
+
+
+SCENES = _named()
