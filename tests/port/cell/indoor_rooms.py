@@ -54,11 +54,12 @@ def room_cell_bsp(floor: float = 0.0) -> CellBSPNode:
     return node
 
 
-def room_struct(floor: float = 0.0, back_wall: bool = False) -> CellStructRec:
+def room_struct(floor: float = 0.0, back_wall: bool = False, rise: float = 0.0) -> CellStructRec:
+    """`rise`: the floor climbs that much from x = -5 to x = +5 (a ramp)."""
     h, z = HALF, floor
     portal_east = _quad((h, -h, 0.0), (h, h, 0.0), (h, h, HEIGHT), (h, -h, HEIGHT))
     portal_west = _quad((-h, h, 0.0), (-h, -h, 0.0), (-h, -h, HEIGHT), (-h, h, HEIGHT))
-    floor_poly = _quad((-h, -h, z), (h, -h, z), (h, h, z), (-h, h, z))  # CCW from above: normal +z
+    floor_poly = _quad((-h, -h, z), (h, -h, z + rise), (h, h, z + rise), (-h, h, z))  # CCW from above: normal up
     physics = [floor_poly]
     if back_wall:
         physics.append(_quad((-h, -h, z), (-h, h, z), (-h, h, HEIGHT), (-h, -h, HEIGHT)))  # normal +x
@@ -116,7 +117,7 @@ def world(scene: Scene, mode):
 
 def _named() -> dict[str, tuple[Scene, str]]:
     from acconform.flags import PhysicsState, TransientState
-    from acconform.scene import StaticObject, validate_scene
+    from acconform.scene import CylSphereShape, SphereShape, StaticObject, validate_scene
     from object_scenes import box
 
     walk_state = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
@@ -130,10 +131,15 @@ def _named() -> dict[str, tuple[Scene, str]]:
 
     env, cells = two_rooms()
     low_env, low_cells = two_rooms(z_b=19.8)
+    step_env, step_cells = two_rooms(z_b=20.3)
+    ramp_env, ramp_cells = two_rooms(struct_b=room_struct(rise=2.0))
     cliff_env, cliff_cells = two_rooms(z_b=17.0)
     outside = (room(0x0100, 60.0, portals=(portal(0, 0xFFFF),), seen_outside=True), cells[1])
     unloaded = (room(0x0100, 60.0, portals=(portal(0, 0x0105),)), cells[1])
     boulder = StaticObject(0x70000000, Position(a_id, Frame((64.5, 60.0, 20.0))), box(2.0, 2.0, 2.0))
+    pillar = StaticObject(0x70000001, Position(a_id, Frame((64.8, 60.0, 20.0))),
+                          CylSphereShape((0.0, 0.0, 0.0), to_f32(0.5), to_f32(2.0)))
+    ball = StaticObject(0x70000002, Position(a_id, Frame((62.0, 60.2, 20.5))), SphereShape(SphereRec((0.0, 0.0, 0.0), 0.5)))
     return {
         "across-portal": (scene(env, cells, (63, 60, 20), (67, 60, 20)), "walk from room A through its east portal into B"),
         "portal-diagonal": (scene(env, cells, (63, 58, 20), (67.5, 61.3, 20)), "cross the portal at an angle"),
@@ -149,6 +155,11 @@ def _named() -> dict[str, tuple[Scene, str]]:
                                "toward a portal whose cell is not visible: its short id, no cell"),
         "static-straddling": (scene(env, cells, (61, 60, 20), (66, 60, 20), objects=(boulder,)),
                               "a static in A straddling the portal, registered in A and B; walk into it"),
+        "step-up": (scene(step_env, step_cells, (63, 60, 20), (67, 60, 20.3)), "step up 0.3 m onto B's floor"),
+        "ramp-up": (scene(ramp_env, ramp_cells, (63, 60, 20), (68, 60, 21)), "walk from A onto a ramp rising 2 m in B"),
+        "cylsphere-and-sphere-statics": (scene(env, cells, (61, 60, 20), (67, 60, 20), objects=(pillar, ball)),
+                                         "a cylsphere static on the portal (find_cell_list's indoor branch places it) "
+                                         "and a sphere static in A; walk past them"),
     }
 
 
