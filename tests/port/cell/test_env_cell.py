@@ -68,6 +68,8 @@ def test_an_env_cell_record_reads_back_its_portals_visible_cells_stabs_and_widen
 
 
 @pytest.mark.anchor("ACE.DatLoader/Entity/CellStruct.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/FileTypes/Environment.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/UnpackableExtensions.cs:Unpack(Dictionary<uint, T>)")
 def test_a_cell_struct_reads_its_cell_tree_as_planes_and_children_only_after_the_dword_alignment():
     env, _ = two_rooms()
     e = DatEnvironment.unpack(BinaryReader(dat.environment_record(env).data, EXACT))
@@ -95,6 +97,7 @@ def test_a_cell_tree_node_reads_the_children_its_tag_names(name, front, back):
 
 
 @pytest.mark.anchor("ACE.DatLoader/Entity/BSPPortal.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/Entity/PortalPoly.cs:Unpack")
 def test_a_drawing_trees_portal_node_reads_both_children_its_sphere_polygons_and_portal_polygons():
     import struct
     leaf = tag("LEAF") + (0).to_bytes(4, "little")
@@ -111,6 +114,9 @@ def test_a_drawing_trees_portal_node_reads_both_children_its_sphere_polygons_and
 
 
 @pytest.mark.anchor("CEnvCell::point_in_cell")
+@pytest.mark.anchor("CCellStruct::point_in_cell")
+@pytest.mark.anchor("BSPTREE::point_inside_cell_bsp")
+@pytest.mark.anchor("BSPNODE::point_inside_cell_bsp")
 def test_point_in_cell_holds_points_inside_the_rooms_cell_tree_in_its_frame_and_not_beyond_its_walls():
     a = rooms_world().get_landcell(A)
     assert a.point_in_cell(v(61, 60, 21)) and a.point_in_cell(v(65, 60, 20))  # on the wall plane: Close counts
@@ -118,6 +124,8 @@ def test_point_in_cell_holds_points_inside_the_rooms_cell_tree_in_its_frame_and_
 
 
 @pytest.mark.anchor("CCellStruct::sphere_intersects_cell")
+@pytest.mark.anchor("BSPTREE::sphere_intersects_cell_bsp")
+@pytest.mark.anchor("BSPNODE::sphere_intersects_cell_bsp")
 def test_sphere_intersects_cell_tells_entirely_inside_from_straddling_a_wall_and_outside():
     s = rooms_world().get_landcell(A).cell_structure
     assert s.sphere_intersects_cell(Sphere(v(0, 0, 2), EXACT.scalar(1))) == BoundingType.EntirelyInside
@@ -126,6 +134,10 @@ def test_sphere_intersects_cell_tells_entirely_inside_from_straddling_a_wall_and
 
 
 @pytest.mark.anchor("CCellStruct::box_intersects_cell")
+@pytest.mark.anchor("BSPTREE::box_intersects_cell_bsp")
+@pytest.mark.anchor("BSPNODE::box_intersects_cell_bsp")
+@pytest.mark.anchor("BSPNode.cs:box_intersects_cell_bsp_inner")
+@pytest.mark.anchor("BBox.cs:GetCorners")
 def test_box_intersects_cell_is_false_only_for_a_box_wholly_behind_one_wall():
     s = rooms_world().get_landcell(A).cell_structure
     assert s.box_intersects_cell(BBox(v(-1, -1, 1), v(1, 1, 2)))
@@ -141,6 +153,10 @@ def test_get_portal_throws_on_its_first_portal_as_ace_reads_the_portal_before_as
 
 
 @pytest.mark.anchor("CEnvCell::build_visible_cells")
+@pytest.mark.anchor("CCellStruct::UnPack")
+@pytest.mark.anchor("EnvCell.cs:PostInit")
+@pytest.mark.anchor("DBObj.cs:GetEnvCell")
+@pytest.mark.anchor("DBObj.cs:GetEnvironment")
 def test_building_a_cell_builds_every_cell_it_sees_keyed_by_short_id_and_caches_them_in_the_landblock():
     lscape = rooms_world()
     a = lscape.get_landcell(A)
