@@ -102,3 +102,12 @@ def test_a_missing_env_cell_throws_as_a_missing_landblock_does(live):
     a = two_rooms()
     lone = a.replace(env_cells=(a.env_cells[0],))  # the portal and the visible cell name 0x0101, never defined
     assert live.run(lone).error.startswith("NullReferenceException")
+
+
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_the_port_matches_ace_on_the_small_indoor_scenes(live, name):
+    from acconform.numerics import runtime_named
+    from acconform.port.run import run_scene
+
+    scene = SCENES[name]
+    assert run_scene(scene, runtime=runtime_named(live.versions.runtime)) == live.run(scene)

@@ -174,3 +174,16 @@ def test_a_landblock_without_terrain_builds_it_when_first_read_and_builds_the_sa
     assert lazy.side_cell_count == 8 and lazy.terrain_built()
     assert list(lazy.land_cells)[-1] == 0x100 and lazy.land_cells.pop(0x100) is marker
     assert _terrain(lazy) == _terrain(eager) and len(lazy.land_cells) == 64
+
+
+@pytest.mark.anchor("LandblockStruct.cs:Generate")
+def test_indoor_scenes_build_no_terrain():
+    from acconform.port.land import lscape
+    from acconform.port.run import run_scene
+    from oracle.indoor_scenes import SCENES
+
+    lscape.clear_landblock_cache()
+    for scene in SCENES.values():
+        assert run_scene(scene).error is None
+    (landblock,) = lscape.POOL.idle.values()
+    assert not landblock.terrain_built() and landblock.land_cells == {}
