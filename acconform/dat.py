@@ -37,6 +37,27 @@ Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxOb
 
 Records are listed parts first; every record of a scene has a distinct id (the index is the
 object's place in the scene's list).
+
+**Indoors** (`environment_record`, `env_cell_record`, `landblock_info_record`; `cell_dat_records`
+and `portal_dat_records` gather a scene's): an `Environment` (portal DAT, its scene id
+``0x0D00XXXX``) holds its cell structures keyed by index (FileTypes/Environment.cs,
+Entity/CellStruct.cs): per structure one vertex array holding its polygons' and then its physics
+polygons' vertices, deduplicated by exact float32 bits as above; polygons and physics polygons keyed
+by their scene index (Stippling ``NoPos|NoNeg``, surfaces 0); the portal polygon ids; the cell BSP
+in BSPType.Cell's layout (a node: its tag and splitting plane, then its children, no sphere; the tag
+says which children follow: ``BPIN`` both, ``BPIn`` the front only, ``BpIN`` the back only, and
+``Bpnn`` none -- a tag DatLoader's switch does not list, so it reads no child (``BPnn`` would read a
+front child); a leaf ``LEAF`` and its pre-order LeafIndex); the physics BSP as a GfxObj's; no
+drawing BSP. An `EnvCell` (cell DAT, id = the cell's id; FileTypes/EnvCell.cs): flags SeenOutside
+(0x1) and HasStaticObjs (0x2, when it has stabs), no surfaces, the environment's low word, the
+structure index, the frame, the portals (flags, polygon, other cell, other portal), the visible
+cells, and its stabs: the scene's static objects whose position.cell is this cell, in scene order,
+each the id `static_records` gives it and the object's frame (Entity/Stab.cs); no restriction
+object. A `LandblockInfo` (cell DAT, ``0xXXYYFFFE``; FileTypes/LandblockInfo.cs) is written for
+each landblock that has EnvCells: NumCells = their number (ACE's AdjustCell loads 0x0100 ..
+0x0100 + NumCells - 1 to find the cell holding a point), no objects, no buildings, PackMask 0.
+The landblock's CellLandblock keeps HasObjects 0 (oracle/pack.landblock_bytes), so ACE's Landblock
+constructor reads no Info: with no stabs and no buildings an Info would add nothing to PostInit.
 """
 
 from __future__ import annotations
@@ -46,7 +67,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .scene import BSPLeaf, BSPShape, CylSphereShape, Mover, PolygonRec, SphereShape, StaticObject
+from .scene import (BSPLeaf, BSPShape, CellBSPLeaf, CellStructRec, CylSphereShape, EnvCell, Environment, Mover,
+                    PolygonRec, Scene, SphereShape, StaticObject, ENV_CELL_FIRST)
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
@@ -63,6 +85,14 @@ VERTEX_TYPE = 1  # CVertexArray.Unpack reads only type 1
 # BSPNode.cs: node type tags, read as 4 ASCII bytes then reversed (so written as these little-endian uint32s)
 TAG_BPIN = 0x4250494E  # "BPIN": PosNode then NegNode
 TAG_LEAF = 0x4C454146  # "LEAF"
+TAG_BPIn = 0x4250496E  # "BPIn": PosNode only
+TAG_BpIN = 0x4270494E  # "BpIN": NegNode only
+TAG_Bpnn = 0x42706E6E  # "Bpnn": not in DatLoader's switch, so no child is read
+
+# ACE.Entity.Enum.EnvCellFlags
+ENV_CELL_SEEN_OUTSIDE = 0x1
+ENV_CELL_HAS_STATIC_OBJS = 0x2
+LANDBLOCK_INFO = 0xFFFE  # a landblock's LandblockInfo is 0xXXYYFFFE in the cell DAT
 
 _u16 = struct.Struct("<H")
 _u32 = struct.Struct("<I")
@@ -76,7 +106,7 @@ class DatRecord:
     """One portal DAT file: its id and the bytes `DatDatabase.ReadFromDat` would unpack."""
 
     id: int
-    kind: str  # "GfxObj" or "Setup" (the DatLoader FileType)
+    kind: str  # the DatLoader FileType: "GfxObj", "Setup", "Environment" (portal DAT); "EnvCell", "LandblockInfo" (cell DAT)
     data: bytes
 
 
@@ -143,13 +173,14 @@ def bsp_node(node, out: list, leaves: list) -> None:
     out.append(sphere(node.sphere.center, node.sphere.radius))
 
 
-def gfx_obj_physics(gfx_id: int, shape: BSPShape) -> bytes:
-    """FileTypes/GfxObj: a physics-only GfxObj from a scene BSP shape."""
-    index: dict[bytes, int] = {}  # a vertex's float32 bytes (exact bits: -0.0 and 0.0 differ) -> its id
+def _shared_vertices(polygons) -> tuple[list[bytes], list[list[int]]]:
+    """The polygons' vertices deduplicated by exact float32 bits (-0.0 and 0.0 differ), ids in order
+    of first appearance: (packed origins, each polygon's vertex ids)."""
+    index: dict[bytes, int] = {}
     vertices = []
     poly_ids = []
     pack3 = _3f.pack
-    for p in shape.polygons:
+    for p in polygons:
         ids = []
         for v in p.vertices:
             key = pack3(*v)
@@ -159,6 +190,12 @@ def gfx_obj_physics(gfx_id: int, shape: BSPShape) -> bytes:
                 vertices.append(key)
             ids.append(i)
         poly_ids.append(ids)
+    return vertices, poly_ids
+
+
+def gfx_obj_physics(gfx_id: int, shape: BSPShape) -> bytes:
+    """FileTypes/GfxObj: a physics-only GfxObj from a scene BSP shape."""
+    vertices, poly_ids = _shared_vertices(shape.polygons)
     out = [_u32.pack(gfx_id), _u32.pack(GFX_HAS_PHYSICS), compressed_u32(0), _vertex_array_packed(vertices),
            compressed_u32(len(shape.polygons))]
     for k, (p, ids) in enumerate(zip(shape.polygons, poly_ids)):
@@ -237,5 +274,112 @@ def mover_records(mover: Mover) -> ObjectRecords:
     return ObjectRecords(MOVER_SETUP_ID, (part, DatRecord(MOVER_SETUP_ID, "Setup", body)))
 
 
-__all__ = ["mover_records", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
+def cell_bsp_node(node, out: list, leaves: list) -> None:
+    """A cell BSP tree in DatLoader's BSPType.Cell layout, pre-order: a node's tag (which children
+    follow) and splitting plane, then its children; a leaf's tag and LeafIndex (pre-order ordinal)."""
+    if isinstance(node, CellBSPLeaf):
+        out.append(struct.pack("<Ii", TAG_LEAF, len(leaves)))
+        leaves.append(node)
+        return
+    front, back = node.front is not None, node.back is not None
+    tag = TAG_BPIN if front and back else TAG_BPIn if front else TAG_BpIN if back else TAG_Bpnn
+    out.append(_u32.pack(tag) + _4f.pack(*node.plane.normal, node.plane.d))
+    if front:
+        cell_bsp_node(node.front, out, leaves)
+    if back:
+        cell_bsp_node(node.back, out, leaves)
+
+
+def _align(out: list, length: int) -> int:
+    """BinaryReader.AlignBoundary: pad to the next multiple of 4 from the record's start; the new length."""
+    pad = -length % 4
+    if pad:
+        out.append(bytes(pad))
+    return length + pad
+
+
+def cell_struct(rec: CellStructRec, out: list, length: int) -> int:
+    """Entity/CellStruct: appends the structure to `out` (the record so far is `length` bytes, for
+    AlignBoundary) and returns the record's new length."""
+    vertices, poly_ids = _shared_vertices(rec.polygons + rec.physics_polygons)
+    parts = [_u32.pack(len(rec.polygons)) + _u32.pack(len(rec.physics_polygons)) + _u32.pack(len(rec.portals)),
+             _vertex_array_packed(vertices)]
+    parts += [_u16.pack(k) + polygon(p, ids) for k, (p, ids) in enumerate(zip(rec.polygons, poly_ids))]
+    parts += [_u16.pack(p) for p in rec.portals]
+    length += sum(map(len, parts))
+    out += parts
+    length = _align(out, length)
+    tail = []
+    cell_bsp_node(rec.cell_bsp, tail, [])
+    n = len(rec.polygons)
+    tail += [_u16.pack(k) + polygon(p, ids) for k, (p, ids) in enumerate(zip(rec.physics_polygons, poly_ids[n:]))]
+    bsp_node(rec.physics_bsp, tail, [])
+    tail.append(_u32.pack(0))  # no DrawingBSP
+    length += sum(map(len, tail))
+    out += tail
+    return _align(out, length)
+
+
+def environment_record(env: Environment) -> DatRecord:
+    """FileTypes/Environment: its id, then its cell structures keyed by index."""
+    out = [_u32.pack(env.id), _u32.pack(len(env.cell_structs))]
+    length = 8
+    for k, rec in enumerate(env.cell_structs):
+        out.append(_u32.pack(k))
+        length = cell_struct(rec, out, length + 4)
+    return DatRecord(env.id, "Environment", b"".join(out))
+
+
+def frame(f) -> bytes:
+    """Entity/Frame: origin, then the quaternion as w, x, y, z."""
+    return _3f.pack(*f.origin) + _4f.pack(*f.orientation)
+
+
+def env_cell_record(cell: EnvCell, stabs) -> DatRecord:
+    """FileTypes/EnvCell; `stabs` are (id, scene Frame) pairs, the cell's static objects."""
+    flags = (ENV_CELL_SEEN_OUTSIDE if cell.seen_outside else 0) | (ENV_CELL_HAS_STATIC_OBJS if stabs else 0)
+    out = [struct.pack("<IIIBBHHH", cell.id, flags, cell.id, 0, len(cell.portals), len(cell.visible_cells),
+                       cell.environment & 0xFFFF, cell.cell_structure), frame(cell.frame)]
+    out += [struct.pack("<4H", p.flags, p.polygon, p.other_cell, p.other_portal) for p in cell.portals]
+    out += [_u16.pack(v) for v in cell.visible_cells]
+    if stabs:
+        out.append(_u32.pack(len(stabs)))
+        out += [_u32.pack(did) + frame(f) for did, f in stabs]
+    return DatRecord(cell.id, "EnvCell", b"".join(out))
+
+
+def landblock_info_record(block: int, num_cells: int) -> DatRecord:
+    """FileTypes/LandblockInfo for landblock `block` (its high word): NumCells, no objects, no buildings, PackMask 0."""
+    info_id = (block << 16) | LANDBLOCK_INFO
+    return DatRecord(info_id, "LandblockInfo", struct.pack("<IIIHH", info_id, num_cells, 0, 0, 0))
+
+
+def env_cell_stabs(scene: Scene) -> dict[int, list]:
+    """Per EnvCell id, its stabs: (did, frame) of each static object whose position.cell is it, in scene order."""
+    stabs: dict[int, list] = {}
+    for index, obj in enumerate(scene.objects):
+        if obj.position.cell & 0xFFFF >= ENV_CELL_FIRST:
+            stabs.setdefault(obj.position.cell, []).append((static_records(obj, index).did, obj.position.frame))
+    return stabs
+
+
+def cell_dat_records(scene: Scene) -> tuple[DatRecord, ...]:
+    """The scene's cell DAT records beside its CellLandblocks: each EnvCell, then each of their
+    landblocks' LandblockInfo."""
+    stabs = env_cell_stabs(scene)
+    records = [env_cell_record(c, stabs.get(c.id, ())) for c in scene.env_cells]
+    counts: dict[int, int] = {}
+    for c in scene.env_cells:
+        counts[c.id >> 16] = counts.get(c.id >> 16, 0) + 1
+    records += [landblock_info_record(block, n) for block, n in counts.items()]
+    return tuple(records)
+
+
+def environment_records(scene: Scene) -> tuple[DatRecord, ...]:
+    """The scene's Environment records (portal DAT)."""
+    return tuple(environment_record(e) for e in scene.environments)
+
+
+__all__ = ["cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
+           "env_cell_stabs", "mover_records", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF"]

@@ -1,7 +1,8 @@
 """The scene: everything one transition needs, as immutable records with a versioned JSON form.
 
-A scene is what both the port and the oracle take. Format ``acconform.scene/1`` (README's
-"Scene format" section documents every field). All floats are float32 values held as Python
+A scene is what both the port and the oracle take. Format ``acconform.scene/2`` (README's
+"Scene format" section documents every field); ``acconform.scene/1`` files still read (a /1 scene
+is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with terrain). All floats are float32 values held as Python
 floats; ids are uint32. Construction from JSON validates and names the bad field; records built
 in code (e.g. by the strategies) are checked the same way by `validate_scene`.
 """
@@ -16,7 +17,8 @@ from .codec import Reader, dumps, parse_json_text, write_f32, write_id, write_ve
 from .errors import InvalidScene
 from .flags import CullMode, PhysicsState, TransientState, flag_names
 
-FORMAT = "acconform.scene/1"
+FORMAT = "acconform.scene/2"
+FORMAT_V1 = "acconform.scene/1"  # read (outdoor only), never written
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]  # (w, x, y, z), as AC's own files write frames
@@ -104,23 +106,41 @@ class SphereRec:
         return s
 
 
+NO_TERRAIN: tuple[int, ...] = (0,) * 81
+
+
 @dataclass(frozen=True, slots=True)
 class Landblock:
-    """One outdoor landblock as CellLandblock stores it: id 0xXXYYFFFF, 9x9 heights x-major."""
+    """One landblock as CellLandblock stores it: id 0xXXYYFFFF, 9x9 heights x-major.
+
+    `has_terrain` False is a landblock written without heights and terrain (a dungeon's: indoor
+    scenes build no terrain): its CellLandblock holds 81 zero heights and 81 zero terrain words,
+    as a retail dungeon landblock's does (ACE's Landblock constructor builds a LandblockStruct
+    from whatever CellLandblock it reads); `heights` and `terrain` are then NO_TERRAIN."""
 
     id: int
-    heights: tuple[int, ...]  # 81 indices into the land height table, [x * 9 + y]
-    terrain: tuple[int, ...]  # 81 terrain words (road, type, scenery bits); water type comes from them
+    heights: tuple[int, ...] = NO_TERRAIN  # 81 indices into the land height table, [x * 9 + y]
+    terrain: tuple[int, ...] = NO_TERRAIN  # 81 terrain words (road, type, scenery bits); water type comes from them
+    has_terrain: bool = True
 
     def to_json(self):
+        if not self.has_terrain:
+            return {"id": write_id(self.id)}
         return {"id": write_id(self.id), "heights": list(self.heights), "terrain": list(self.terrain)}
 
     @staticmethod
-    def from_json(r: Reader) -> "Landblock":
+    def from_json(r: Reader, indoor: bool = True) -> "Landblock":
+        """`indoor`: the format may omit heights and terrain (scene/2)."""
         r.obj({"id", "heights", "terrain"})
         lb_id = r["id"].id_()
         if lb_id & 0xFFFF != 0xFFFF:
             r["id"].fail(f"a landblock id ends in FFFF (e.g. 0x{lb_id >> 16:04X}FFFF), got {write_id(lb_id)}")
+        if indoor and not r.has("heights") and not r.has("terrain"):
+            return Landblock(lb_id, has_terrain=False)
+        if indoor and r.has("heights") != r.has("terrain"):
+            missing = "terrain" if r.has("heights") else "heights"
+            raise InvalidScene(f"{r.path}.{missing}", "missing: a landblock gives both heights and terrain, or "
+                                                      "neither (a landblock without terrain, e.g. a dungeon's)")
         heights = tuple(h.int_(0, 255) for h in r["heights"].list(count=81))
         terrain = tuple(t.int_(0, 0xFFFF) for t in r["terrain"].list(count=81))
         return Landblock(lb_id, heights, terrain)
@@ -296,9 +316,27 @@ class CellBSPNode:
     back: "CellBSPNode | CellBSPLeaf | None"
 
     def to_json(self):
-        return {"type": "node", "plane": self.plane.to_json(),
-                "front": None if self.front is None else self.front.to_json(),
-                "back": None if self.back is None else self.back.to_json()}
+        d = {"type": "node", "plane": self.plane.to_json()}
+        if self.front is not None:
+            d["front"] = self.front.to_json()
+        if self.back is not None:
+            d["back"] = self.back.to_json()
+        return d
+
+
+def _cell_bsp_from_json(r: Reader) -> "CellBSPNode | CellBSPLeaf":
+    if not isinstance(r.value, dict):
+        r.fail("expected a cell BSP node or leaf object")
+    kind = r["type"].str_()
+    if kind == "leaf":
+        r.obj({"type"})
+        return CellBSPLeaf()
+    if kind == "node":
+        r.obj({"type", "plane", "front", "back"})
+        return CellBSPNode(PlaneRec.from_json(r["plane"]),
+                           _cell_bsp_from_json(r["front"]) if r.has("front") else None,
+                           _cell_bsp_from_json(r["back"]) if r.has("back") else None)
+    r["type"].fail(f"unknown cell BSP element type {kind!r} (known: node, leaf)")
 
 
 @dataclass(frozen=True, slots=True)
@@ -321,6 +359,16 @@ class CellStructRec:
                 "physics_bsp": None if self.physics_bsp is None else self.physics_bsp.to_json(),
                 "cell_bsp": None if self.cell_bsp is None else self.cell_bsp.to_json()}
 
+    @staticmethod
+    def from_json(r: Reader) -> "CellStructRec":
+        """Both trees are required: a DAT CellStruct always holds a cell BSP and a physics BSP."""
+        r.obj({"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"})
+        polys = tuple(PolygonRec.from_json(p) for p in r["polygons"].list(max_count=0xFFFF))
+        portals = tuple(p.int_(0, len(polys) - 1) for p in r["portals"].list()) if r.has("portals") else ()
+        physics = tuple(PolygonRec.from_json(p) for p in r["physics_polygons"].list(max_count=0xFFFF))
+        return CellStructRec(polys, portals, physics, _bsp_from_json(r["physics_bsp"], len(physics)),
+                             _cell_bsp_from_json(r["cell_bsp"]))
+
 
 @dataclass(frozen=True, slots=True)
 class Environment:
@@ -332,11 +380,23 @@ class Environment:
     def to_json(self):
         return {"id": write_id(self.id), "cell_structs": [c.to_json() for c in self.cell_structs]}
 
+    @staticmethod
+    def from_json(r: Reader) -> "Environment":
+        r.obj({"id", "cell_structs"})
+        env_id = r["id"].id_()
+        if env_id >> 16 != 0x0D00:
+            r["id"].fail(f"an Environment id is 0x0D00XXXX (an EnvCell stores its low word), got {write_id(env_id)}")
+        return Environment(env_id, tuple(CellStructRec.from_json(c) for c in r["cell_structs"].list(min_count=1)))
+
 
 # DatLoader CellPortal.Flags: PortalSide is true when bit 2 is CLEAR (CellPortal.cs)
 PORTAL_EXACT_MATCH = 0x1
 PORTAL_SIDE_BIT = 0x2
 OUTSIDE_CELL = 0xFFFF  # a portal's OtherCellId that leads outdoors
+# EnvCell low words: LScape.get_landcell loads 0x0100 and up from the cell DAT; 0xFFFE and 0xFFFF are
+# the landblock's LandblockInfo and CellLandblock
+ENV_CELL_FIRST = 0x0100
+ENV_CELL_LAST = 0xFFFD
 
 
 @dataclass(frozen=True, slots=True)
@@ -351,6 +411,16 @@ class CellPortalRec:
     def to_json(self):
         return {"polygon": self.polygon, "other_cell": f"0x{self.other_cell:04X}",
                 "other_portal": self.other_portal, "flags": self.flags}
+
+    @staticmethod
+    def from_json(r: Reader) -> "CellPortalRec":
+        r.obj({"polygon", "other_cell", "other_portal", "flags"})
+        other = _low_word(r["other_cell"])
+        if other != OUTSIDE_CELL and not ENV_CELL_FIRST <= other <= ENV_CELL_LAST:
+            r["other_cell"].fail(f"a portal leads to an EnvCell (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}) "
+                                 f"or outside (0xFFFF), got 0x{other:04X}")
+        flags = r["flags"].int_(0, PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT) if r.has("flags") else 0
+        return CellPortalRec(r["polygon"].int_(0, 0xFFFF), other, r["other_portal"].int_(0, 0xFFFF), flags)
 
 
 @dataclass(frozen=True, slots=True)
@@ -370,6 +440,33 @@ class EnvCell:
         return {"id": write_id(self.id), **self.frame.to_json(), "environment": write_id(self.environment),
                 "cell_structure": self.cell_structure, "portals": [p.to_json() for p in self.portals],
                 "visible_cells": [f"0x{c:04X}" for c in self.visible_cells], "seen_outside": self.seen_outside}
+
+    @staticmethod
+    def from_json(r: Reader) -> "EnvCell":
+        r.obj({"id", "origin", "orientation", "environment", "cell_structure", "portals", "visible_cells",
+               "seen_outside"})
+        cell_id = r["id"].id_()
+        if not ENV_CELL_FIRST <= cell_id & 0xFFFF <= ENV_CELL_LAST:
+            r["id"].fail(f"an EnvCell id is 0xXXYY{ENV_CELL_FIRST:04X} to 0xXXYY{ENV_CELL_LAST:04X}, got {write_id(cell_id)}")
+        frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
+        portals = tuple(CellPortalRec.from_json(p) for p in r["portals"].list(max_count=0xFF)) if r.has("portals") else ()
+        visible = ()
+        if r.has("visible_cells"):
+            visible = tuple(_low_word(v) for v in r["visible_cells"].list(max_count=0xFFFF))
+            for i, v in enumerate(visible):
+                if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
+                    r["visible_cells"][i].fail(f"a visible cell is an EnvCell's low word "
+                                               f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
+        return EnvCell(cell_id, frame, r["environment"].id_(), r["cell_structure"].int_(0, 0xFFFF), portals, visible,
+                       r["seen_outside"].bool_() if r.has("seen_outside") else False)
+
+
+def _low_word(r: Reader) -> int:
+    """A cell's low word, written "0x0101" (or any id whose value fits 16 bits)."""
+    v = r.id_()
+    if v > 0xFFFF:
+        r.fail(f"expected a cell's low word like '0x0101', got {r.value!r}")
+    return v
 
 
 @dataclass(frozen=True, slots=True)
@@ -512,8 +609,11 @@ class Scene:
     @staticmethod
     def from_json(doc, path: str = "") -> "Scene":
         r = Reader(doc, path)
-        r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover"})
-        check_format(r, FORMAT)
+        v1 = isinstance(doc, dict) and doc.get("format") == FORMAT_V1
+        indoor = () if v1 else ("environments", "env_cells")
+        r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor})
+        if not v1:
+            check_format(r, FORMAT)
         name = r["name"].str_() if r.has("name") else ""
         mode = "server"
         if r.has("engine"):
@@ -525,9 +625,14 @@ class Scene:
         table = DEFAULT_LAND_HEIGHT_TABLE
         if r.has("land_height_table"):
             table = tuple(h.f32() for h in r["land_height_table"].list(count=256))
-        landblocks = tuple(Landblock.from_json(lb) for lb in r["landblocks"].list(min_count=1))
+        landblocks = tuple(Landblock.from_json(lb, not v1) for lb in r["landblocks"].list(min_count=1))
         objects = tuple(StaticObject.from_json(o) for o in r["objects"].list()) if r.has("objects") else ()
-        scene = Scene(landblocks, Mover.from_json(r["mover"]), objects, table, mode, name)
+        environments = env_cells = ()
+        if r.has("environments"):
+            environments = tuple(Environment.from_json(e) for e in r["environments"].list())
+        if r.has("env_cells"):
+            env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
+        scene = Scene(landblocks, Mover.from_json(r["mover"]), objects, table, mode, name, environments, env_cells)
         check_consistency(scene, path)
         return scene
 
@@ -561,32 +666,96 @@ def check_consistency(scene: Scene, path: str = "") -> None:
             raise InvalidScene(_p(path, f"landblocks[{i}].id"), f"landblock {lb.id:08X} is defined twice (also landblocks[{seen[lb.id]}])")
         seen[lb.id] = i
     defined = {lb.id >> 16 for lb in scene.landblocks}
-    for where, pos in (("mover.begin", scene.mover.begin), ("mover.contact_plane", scene.mover.contact_plane)):
-        if pos is None:
-            continue
-        cell = pos.cell
-        _check_outdoor_cell(_p(path, f"{where}.cell"), cell)
+    env_cells = _check_indoor(scene, path, defined)
+
+    def check_landblock(where: str, cell: int) -> None:
         if cell >> 16 not in defined:
-            raise InvalidScene(_p(path, f"{where}.cell"),
-                               f"landblock {cell >> 16:04X} of cell {cell:08X} is not defined in landblocks "
-                               f"(defined: {', '.join(f'{b:04X}' for b in sorted(defined))})")
-    _check_outdoor_cell(_p(path, "mover.end.cell"), scene.mover.end.cell)
+            raise InvalidScene(where, f"landblock {cell >> 16:04X} of cell {cell:08X} is not defined in landblocks "
+                                      f"(defined: {', '.join(f'{b:04X}' for b in sorted(defined))})")
+
+    begin = _p(path, "mover.begin.cell")
+    _check_cell_id(begin, scene.mover.begin.cell)
+    check_landblock(begin, scene.mover.begin.cell)
+    _check_defined(begin, scene.mover.begin.cell, env_cells, "the mover starts in it (CurCell = LScape.get_landcell)")
+    if scene.mover.contact_plane is not None:
+        where = _p(path, "mover.contact_plane.cell")
+        _check_cell_id(where, scene.mover.contact_plane.cell)
+        check_landblock(where, scene.mover.contact_plane.cell)
+    _check_cell_id(_p(path, "mover.end.cell"), scene.mover.end.cell)
     ids = set()
     for i, o in enumerate(scene.objects):
         where = _p(path, f"objects[{i}]")
         if o.id in ids:
             raise InvalidScene(f"{where}.id", f"object id {o.id:08X} is used twice")
         ids.add(o.id)
-        _check_outdoor_cell(f"{where}.position.cell", o.position.cell)
-        if o.position.cell >> 16 not in defined:
-            raise InvalidScene(f"{where}.position.cell", f"landblock {o.position.cell >> 16:04X} is not defined in landblocks")
+        cell = o.position.cell
+        _check_cell_id(f"{where}.position.cell", cell)
+        check_landblock(f"{where}.position.cell", cell)
+        if cell & 0xFFFF >= ENV_CELL_FIRST:
+            _check_defined(f"{where}.position.cell", cell, env_cells, "its stab is in that EnvCell's DAT record")
+            if o.state != int(PhysicsState.Static):
+                raise InvalidScene(f"{where}.state", "a static in an EnvCell is a DAT stab: ACE's "
+                                   "EnvCell.init_static_objects sets no state (omit it, or give [\"Static\"])")
+            if o.scale != 1.0:
+                raise InvalidScene(f"{where}.scale", f"a static in an EnvCell is a DAT stab: ACE's "
+                                   f"EnvCell.init_static_objects sets no scale (omit it, or give 1), got {o.scale}")
 
 
-def _check_outdoor_cell(path: str, cell: int) -> None:
+def _check_indoor(scene: Scene, path: str, defined: set[int]) -> dict[int, EnvCell]:
+    """Environments and EnvCells: ids, the structure each cell names, portals; per landblock the
+    EnvCells are numbered from 0x0100 without gaps (LandblockInfo.NumCells counts them, and ACE's
+    AdjustCell loads 0x0100 .. 0x0100 + NumCells - 1). Returns the EnvCells by id."""
+    envs: dict[int, Environment] = {}
+    for i, env in enumerate(scene.environments):
+        if env.id in envs:
+            raise InvalidScene(_p(path, f"environments[{i}].id"), f"Environment {env.id:08X} is defined twice")
+        envs[env.id] = env
+    cells: dict[int, EnvCell] = {}
+    for i, c in enumerate(scene.env_cells):
+        where = _p(path, f"env_cells[{i}]")
+        if c.id in cells:
+            raise InvalidScene(f"{where}.id", f"EnvCell {c.id:08X} is defined twice")
+        cells[c.id] = c
+        if c.id >> 16 not in defined:
+            raise InvalidScene(f"{where}.id", f"landblock {c.id >> 16:04X} of EnvCell {c.id:08X} is not defined in landblocks")
+        env = envs.get(c.environment)
+        if env is None:
+            raise InvalidScene(f"{where}.environment", f"Environment {c.environment:08X} is not defined in environments")
+        if c.cell_structure >= len(env.cell_structs):
+            raise InvalidScene(f"{where}.cell_structure", f"Environment {env.id:08X} has {len(env.cell_structs)} "
+                                                          f"cell structures (0..{len(env.cell_structs) - 1}), got {c.cell_structure}")
+        struct = env.cell_structs[c.cell_structure]
+        for k, portal in enumerate(c.portals):
+            if portal.polygon >= len(struct.polygons):
+                raise InvalidScene(f"{where}.portals[{k}].polygon", f"the cell structure has {len(struct.polygons)} "
+                                                                    f"polygons, got {portal.polygon}")
+            if portal.polygon not in struct.portals:
+                raise InvalidScene(f"{where}.portals[{k}].polygon", f"polygon {portal.polygon} is not one of the cell "
+                                                                    f"structure's portals {list(struct.portals)}")
+    by_block: dict[int, list[int]] = {}
+    for c in scene.env_cells:
+        by_block.setdefault(c.id >> 16, []).append(c.id & 0xFFFF)
+    for block, lows in by_block.items():
+        want = set(range(ENV_CELL_FIRST, ENV_CELL_FIRST + len(lows)))
+        if set(lows) != want:
+            gap = min(want - set(lows))
+            i = next(i for i, c in enumerate(scene.env_cells) if c.id >> 16 == block and c.id & 0xFFFF not in want)
+            raise InvalidScene(_p(path, f"env_cells[{i}].id"),
+                               f"landblock {block:04X}'s EnvCells are numbered from 0x{ENV_CELL_FIRST:04X} without gaps "
+                               f"(LandblockInfo.NumCells counts them): 0x{gap:04X} is missing")
+    return cells
+
+
+def _check_defined(path: str, cell: int, env_cells: dict, why: str) -> None:
+    if cell & 0xFFFF >= ENV_CELL_FIRST and cell not in env_cells:
+        raise InvalidScene(path, f"EnvCell {cell:08X} is not defined in env_cells ({why})")
+
+
+def _check_cell_id(path: str, cell: int) -> None:
     low = cell & 0xFFFF
-    if not 1 <= low <= 64:
-        raise InvalidScene(path, f"cell {cell:08X} is not an outdoor land cell (low word 0x0001..0x0040); "
-                                 "indoor cells (EnvCells) are not supported in scenes")
+    if not (1 <= low <= 64 or ENV_CELL_FIRST <= low <= ENV_CELL_LAST):
+        raise InvalidScene(path, f"cell {cell:08X} is neither an outdoor land cell (low word 0x0001..0x0040) nor an "
+                                 f"EnvCell (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X})")
 
 
 def validate_scene(scene: Scene) -> Scene:

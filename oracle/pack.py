@@ -11,11 +11,11 @@ import struct
 from dataclasses import fields
 
 from ..outcome import ContactPlaneState, NormalState, Outcome
-from ..dat import mover_records, static_records
+from ..dat import cell_dat_records, environment_records, mover_records, static_records
 from ..scene import Landblock, Scene
 from ..staging import MOVER_ID
 
-PACK_VERSION = 4
+PACK_VERSION = 5
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -46,17 +46,22 @@ def _pos(p) -> tuple:
 _POS = "I3f4f"
 
 
-_RECORD_KIND = {"GfxObj": 0, "Setup": 1}
+# the DatLoader FileType the facade unpacks each record as; 0-2 go to the portal DAT, 3-4 to the cell DAT
+_RECORD_KIND = {"GfxObj": 0, "Setup": 1, "Environment": 2, "EnvCell": 3, "LandblockInfo": 4}
 
 
-def _records(recs) -> list[bytes]:
+def _record_list(records) -> list[bytes]:
     """DAT records (acconform.dat) the facade unpacks with ACE's own Unpack: count, then each one's
     kind, id, length and bytes."""
-    out = [struct.pack("<i", len(recs.records))]
-    for rec in recs.records:
+    out = [struct.pack("<i", len(records))]
+    for rec in records:
         out.append(struct.pack("<BIi", _RECORD_KIND[rec.kind], rec.id, len(rec.data)))
         out.append(rec.data)
     return out
+
+
+def _records(recs) -> list[bytes]:
+    return _record_list(recs.records)
 
 
 def _object(o, index: int) -> bytes:
@@ -78,6 +83,7 @@ def pack_scene(scene: Scene) -> bytes:
     for lb in scene.landblocks:
         out.append(b"\xfc\0\0\0")  # 252: the length of every landblock_bytes
         out.append(landblock_bytes(lb))
+    out += _record_list(environment_records(scene) + cell_dat_records(scene))
     out.append(struct.pack("<i", len(scene.objects)))
     for i, o in enumerate(scene.objects):
         out.append(_object(o, i))

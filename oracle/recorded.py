@@ -49,6 +49,7 @@ class CorpusCorrupt(AcconformError):
 def scene_key(scene: Scene) -> str:
     doc = scene.to_json()
     doc.pop("name", None)  # a scene's name is a label, not part of the physics
+    doc.pop("format", None)  # a /1 scene and the /2 scene it reads as are the same scene
     return hashlib.sha256(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
 
@@ -211,6 +212,7 @@ class RecordedOracle:
 def _doc_key(doc) -> str:
     scene = dict(doc["scene"])
     scene.pop("name", None)
+    scene.pop("format", None)
     # the same canonical form scene_key hashes: the stored scene JSON is what Scene.to_json wrote
     return hashlib.sha256(json.dumps(scene, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 

@@ -1,4 +1,4 @@
-"""BBox: AdjustBBox, LocalToGlobal -- the axis-aligned box a GfxObj's vertices span (ACE's Physics/Collision/BBox.cs).
+"""BBox: AdjustBBox, GetCorners, LocalToGlobal, LocalToLocal -- the axis-aligned box a GfxObj's vertices span (ACE's Physics/Collision/BBox.cs).
 
 GfxObj.Init builds a part's box from its vertices; LandCell.add_all_outside_cells (the parts
 overload) carries it into the placing cell's landblock with LocalToGlobal, which starts from the
@@ -37,6 +37,20 @@ class BBox:
             mx = mx.with_z(v.z)
         self.min, self.max = mn, mx
 
+    @anchor(None, "BBox.cs:GetCorners")
+    def get_corners(self) -> list[Vector3]:
+        mn, mx = self.min, self.max
+        return [
+            Vector3(mn.x, mn.y, mn.z),
+            Vector3(mn.x, mn.y, mx.z),
+            Vector3(mn.x, mx.y, mn.z),
+            Vector3(mn.x, mx.y, mx.z),
+            Vector3(mx.x, mn.y, mn.z),
+            Vector3(mx.x, mn.y, mx.z),
+            Vector3(mx.x, mx.y, mn.z),
+            Vector3(mx.x, mx.y, mx.z),
+        ]
+
     @anchor(None, "BBox.cs:LocalToGlobal")
     def local_to_global(self, from_box: "BBox", from_pos, to_pos) -> None:
         fmin, fmax = from_box.min, from_box.max
@@ -48,3 +62,16 @@ class BBox:
         self.adjust_bbox(to_pos.local_to_global_from(from_pos, Vector3(fmin.x, fmax.y, fmin.z)))
         self.adjust_bbox(to_pos.local_to_global_from(from_pos, Vector3(fmax.x, fmin.y, fmin.z)))
         self.adjust_bbox(to_pos.local_to_global_from(from_pos, Vector3(fmin.x, fmin.y, fmax.z)))
+
+    @anchor(None, "BBox.cs:LocalToLocal")
+    def local_to_local(self, from_box: "BBox", from_pos, to_pos) -> None:
+        """As LocalToGlobal, into `to_pos`'s local frame (an EnvCell's portals and cell tree)."""
+        fmin, fmax = from_box.min, from_box.max
+        self.min = to_pos.local_to_local(from_pos, fmin)
+        self.max = to_pos.local_to_local(from_pos, fmax)
+        self.adjust_bbox(to_pos.local_to_local(from_pos, Vector3(fmax.x, fmax.y, fmin.z)))
+        self.adjust_bbox(to_pos.local_to_local(from_pos, Vector3(fmax.x, fmin.y, fmax.z)))
+        self.adjust_bbox(to_pos.local_to_local(from_pos, Vector3(fmin.x, fmax.y, fmax.z)))
+        self.adjust_bbox(to_pos.local_to_local(from_pos, Vector3(fmin.x, fmax.y, fmin.z)))
+        self.adjust_bbox(to_pos.local_to_local(from_pos, Vector3(fmax.x, fmin.y, fmin.z)))
+        self.adjust_bbox(to_pos.local_to_local(from_pos, Vector3(fmin.x, fmin.y, fmax.z)))

@@ -70,3 +70,10 @@ class NotImplementedException(AceException):
     """ACE's DatLoader meets a layout it does not read (e.g. a CVertexArray of another vertex type)."""
 
     dotnet_type = "NotImplementedException"
+
+
+class InvalidCastException(AceException):
+    """A C# cast of an object to a class it is not, e.g. ``(EnvCell)`` of an outdoor cell an
+    EnvCell's visible-cell list names."""
+
+    dotnet_type = "InvalidCastException"

@@ -1,4 +1,4 @@
-"""AFrame (Combine, GlobalToLocal, GlobalToLocalVec, LocalToGlobal, LocalToGlobalVec, InterpolateOrigin, InterpolateRotation, Subtract, set_heading, set_vector_heading, get_heading, set_rotate) and Position (GetOffset, LocalToLocal, LocalToGlobal, GlobalToLocalVec, GetCell).
+"""AFrame (Combine, GlobalToLocal, GlobalToLocalVec, LocalToGlobal, LocalToGlobalVec, InterpolateOrigin, InterpolateRotation, Subtract, set_heading, set_vector_heading, get_heading, set_rotate) and Position (GetOffset, LocalToLocal, LocalToGlobal, GlobalToLocalVec, GetCell, GetIndoorCell, GetOutdoorCell).
 
 ACE's Animation/AFrame.cs and Common/Position.cs. Both are C# classes (reference types), so
 they are mutable here too; their Vector3/Quaternion fields are immutable values. Copy with
@@ -58,7 +58,7 @@ class AFrame:
     @anchor(None, "AFrame.cs:AFrame(DatLoader.Entity.Frame)", "the DAT constructor")
     def from_dat(frame) -> "AFrame":
         q = frame.orientation
-        return AFrame(frame.origin, Quaternion(q.x, q.y, q.z, q.w))
+        return AFrame(frame.origin, q.runtime.quaternion(q.x, q.y, q.z, q.w))
 
     @anchor(None, "AFrame.cs:AFrame(AFrame)", "the copy constructor")
     def copy(self) -> "AFrame":
@@ -253,11 +253,13 @@ class Position:
         return self.frame
 
     @anchor("Position::get_cell", "Position.cs:GetCell")
-    def get_cell(self, block_cell_id: int, runtime: Runtime = MONO) -> int:
-        """Indoor cells need ACE's AdjustCell (EnvCell data), which scenes do not carry: not ported."""
+    def get_cell(self, block_cell_id: int, runtime: Runtime = MONO, lscape=None) -> int:
+        """`lscape` (the run's world, for AdjustCell) is needed only for an indoor cell."""
+        # is originating cell indoor or outdoor? (ACE)
         if (block_cell_id & 0xFFFF) >= 0x100:
-            raise NotImplementedError("Position.GetIndoorCell: indoor cells are not supported in scenes")
-        return self.get_outdoor_cell(block_cell_id, runtime)
+            return self.get_indoor_cell(block_cell_id, lscape)
+        else:
+            return self.get_outdoor_cell(block_cell_id, runtime)
 
     @anchor("Position::get_outdoor_cell", "Position.cs:GetOutdoorCell")
     def get_outdoor_cell(self, block_cell_id: int, runtime: Runtime = MONO) -> int:
@@ -265,6 +267,21 @@ class Position:
         cell_y = runtime.to_uint32(self.frame.origin.y / CELL_LENGTH)
         cell_id = wrap_u32(cell_x * land_defs.BLOCK_SIDE + cell_y + 1)
         return (block_cell_id & 0xFFFF0000) | cell_id
+
+    @anchor("Position::get_indoor_cell", "Position.cs:GetIndoorCell")
+    def get_indoor_cell(self, block_cell_id: int, lscape) -> int:
+        """The EnvCell of the dungeon (AdjustCell) holding Frame.Origin, else ObjCellID."""
+        from .adjust_cell import AdjustCell
+
+        dungeon_id = block_cell_id >> 16
+
+        adjust_cell = AdjustCell.get(dungeon_id, lscape)
+        if adjust_cell is None:
+            return self.obj_cell_id
+        new_cell = adjust_cell.get_cell(self.frame.origin)
+        if new_cell is None:
+            return self.obj_cell_id
+        return new_cell
 
 
 __all__ = ["AFrame", "Position", "to_degrees", "to_radians"]

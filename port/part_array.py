@@ -280,6 +280,14 @@ class PartArray:
     def get_num_cylsphere(self) -> int:
         return self.setup.num_cylsphere
 
+    @anchor("CPartArray::GetDataID", "PartArray.cs:GetDataID")
+    def get_data_id(self) -> int:
+        if self.setup.id != 0:
+            return self.setup.id
+        if self.num_parts == 1:
+            return self.parts[0].gfx_obj.id
+        return 0
+
     @anchor("CPartArray::GetNumSphere", "PartArray.cs:GetNumSphere")
     def get_num_sphere(self) -> int:
         return self.setup.num_sphere

@@ -1,4 +1,4 @@
-"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), is_completely_visible, transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
 The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
 record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
@@ -22,6 +22,7 @@ from acconform.numerics import Plane, Vector3, dot
 from .anchors import anchor
 from .constants import DEFAULT_SCALE, DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z, TRANSLUCENCY_ETHEREAL
 from .frame import AFrame, Position
+from . import land_defs
 from .cell import obj_cell
 from .part_array import PLACEMENT_FRAME_ID, PartArray
 from .shadow_obj import ShadowObj
@@ -230,6 +231,41 @@ class PhysicsObj:
             if setup.default_script != 0:
                 self.state |= PhysicsState.HasDefaultScript
 
+    @anchor("CPhysicsObj::AdjustPosition", "PhysicsObj.cs:AdjustPosition")
+    def adjust_position(self, position, low_pt, dont_create_cells: bool, search_cells: bool, lscape):
+        """The cell for `position` (moved to the outside, or into the EnvCell holding its low
+        point, in place); None where ACE finds none. The run's world `lscape` stands in for
+        ACE's static LScape."""
+        from .cell.env_cell import EnvCell
+        from .errors import InvalidCastException
+
+        cell_id = position.obj_cell_id & 0xFFFF
+
+        if (cell_id < 1 or cell_id > 0x40) and (cell_id < 0x100 or cell_id > 0xFFFD) and cell_id != 0xFFFF:
+            return None
+
+        if cell_id < 0x100:
+            land_defs.adjust_to_outside_pos(position)
+            return obj_cell.get_visible(lscape, position.obj_cell_id)
+
+        visible_cell = obj_cell.get_visible(lscape, position.obj_cell_id)
+        if visible_cell is not None and not isinstance(visible_cell, EnvCell):
+            raise InvalidCastException(f"cell {visible_cell.id:08X} is a {type(visible_cell).__name__}, not an EnvCell")
+        if visible_cell is None:
+            return None
+
+        point = position.local_to_global(low_pt)
+        child = visible_cell.find_visible_child_cell(point, search_cells)
+        if child is not None:
+            position.obj_cell_id = child.id
+            return child
+
+        if not visible_cell.seen_outside:
+            return None
+
+        position.adjust_to_outside()
+        return obj_cell.get_visible(lscape, position.obj_cell_id)
+
     @anchor("CPhysicsObj::add_obj_to_cell", "PhysicsObj.cs:add_obj_to_cell")
     def add_obj_to_cell(self, new_cell, new_frame, lscape) -> None:
         """The run's world `lscape` stands in for ACE's static LScape."""
@@ -325,6 +361,16 @@ class PhysicsObj:
                 self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
         for child in self.children:
             child.add_shadows_to_cell(cell_array)
+
+    @anchor("CPhysicsObj::is_completely_visible", "PhysicsObj.cs:is_completely_visible")
+    def is_completely_visible(self) -> bool:
+        if self.cur_cell is None or self.num_shadow_objects == 0:
+            return False
+
+        for shadow_obj in self.shadow_objects.values():
+            if shadow_obj.cell is None:
+                return False
+        return True
 
     @anchor("CPhysicsObj::check_contact", "PhysicsObj.cs:check_contact")
     def check_contact(self, contact: bool) -> bool:

@@ -6,7 +6,11 @@ becomes ``Outcome(error=...)``: a verdict, not a crash. An AceException (port/er
 ACE itself throws) reads ``"<.NET type>: <message>"``, as the oracle formats ACE's exceptions.
 Static objects are built from the DAT records acconform/dat.py writes (read by port/dat/) with
 ACE's constructors and placed by ACE's placement chain (add_obj_to_cell), as the oracle does with
-ACE's own code; the mover is made by ACE's makeObject from its own records (dat.mover_records)
+ACE's own code: an outdoor static by Landblock.init_static_objs' steps here, a static inside an
+EnvCell by ACE's EnvCell.init_static_objects when the cell loads (LScape.get_landcell -> PostInit),
+from the stabs of the cell's DAT record. The run's portal DAT and cell DAT (port/dat/portal_dat.py,
+cell_dat.py) hold the records dat.py writes and are handed to the LScape (`lscape.portal_dat`,
+`lscape.cell_dat`), where DBObj reads them. The mover is made by ACE's makeObject from its own records (dat.mover_records)
 with the id acconform.staging.MOVER_ID. Pass a ``collections.Counter`` as
 `trace` to count the branches the run took (names in acconform.port.transition.branches).
 """
@@ -18,13 +22,14 @@ import numpy as np
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome
 from acconform import dat
-from acconform.dat import static_records
+from acconform.dat import cell_dat_records, environment_records, static_records
 from acconform.staging import MOVER_ID
-from acconform.scene import Scene, StaticObject
+from acconform.scene import ENV_CELL_FIRST, Scene, StaticObject
 
 from .anchors import anchor, harness
 from .constants import BLOCK_LENGTH, CELL_LENGTH
 from .errors import AceException, NullReferenceException
+from .dat.cell_dat import CellDat
 from .dat.portal_dat import PortalDat
 from .frame import AFrame, Position
 from . import land_defs
@@ -69,7 +74,7 @@ def build_mover(scene: Scene, portal_dat: PortalDat, lscape: LScape) -> PhysicsO
     return obj
 
 
-@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects and mover, and each static's did")
+@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects, mover and Environments, and each static's did")
 def portal_dat_for(scene: Scene, mode) -> tuple[PortalDat, list[int]]:
     """The PortalDat and, per static object in scene order, the id makeObject takes."""
     records = {r.id: r.data for r in dat.mover_records(scene.mover).records}
@@ -79,7 +84,30 @@ def portal_dat_for(scene: Scene, mode) -> tuple[PortalDat, list[int]]:
         dids.append(written.did)
         for dat_record in written.records:
             records[dat_record.id] = dat_record.data
+    for dat_record in environment_records(scene):
+        records[dat_record.id] = dat_record.data
     return PortalDat(records, mode, scene.engine_mode == "server"), dids
+
+
+@harness("the run's cell DAT: the EnvCell and LandblockInfo records acconform/dat.py writes for the scene")
+def cell_dat_for(scene: Scene, mode) -> CellDat:
+    return CellDat({r.id: r.data for r in cell_dat_records(scene)}, mode)
+
+
+@harness("reads a static's cells: an outdoor static's ShadowObjects, or, for a static in an EnvCell, those of the object its loaded cell made from the static's did")
+def static_cells(record: StaticObject, did: int, obj: PhysicsObj | None, lscape: LScape) -> tuple[int, ...]:
+    """What the oracle reads: the ShadowObjects keys, in order, of the static's PhysicsObj. A static
+    in an EnvCell is made by ACE when the cell loads (EnvCell.init_static_objects, id 0): it is the
+    object of that cell's StaticObjects whose PartArray.GetDataID is the static's did; () when the
+    cell was never loaded or ACE dropped the object."""
+    if record.position.cell & 0xFFFF < ENV_CELL_FIRST:
+        return tuple(obj.shadow_objects) if obj is not None else ()
+    landblock = lscape.landblocks.get(record.position.cell | 0xFFFF)
+    cell = landblock.land_cells.get(record.position.cell & 0xFFFF) if landblock is not None else None
+    for made in (cell.static_objects or ()) if cell is not None else ():
+        if made.part_array is not None and made.part_array.get_data_id() == did:
+            return tuple(made.shadow_objects)
+    return ()
 
 
 @harness("builds and places a static object from its DAT records, as the oracle's facade does (init_static_objs)")
@@ -151,7 +179,10 @@ def _run(scene: Scene, mode, trace) -> Outcome:
 
 def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
     portal_dat, dids = portal_dat_for(scene, mode)
-    statics = [build_static(record, did, portal_dat, lscape) for record, did in zip(scene.objects, dids)]
+    lscape.portal_dat = portal_dat
+    lscape.cell_dat = cell_dat_for(scene, mode)
+    statics = [build_static(record, did, portal_dat, lscape) if record.position.cell & 0xFFFF < ENV_CELL_FIRST else None
+               for record, did in zip(scene.objects, dids)]
     mover = build_mover(scene, portal_dat, lscape)
     old_pos = mover.position.copy()
     new_pos = Position.from_record(scene.mover.end, mode)
@@ -181,5 +212,6 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
         walkable=sp.walkable is not None,
         step_up=bool(sp.step_up),
         neg_poly_hit=bool(sp.neg_poly_hit),
-        static_cells=tuple(tuple(obj.shadow_objects) if obj is not None else () for obj in statics),
+        static_cells=tuple(static_cells(record, did, obj, lscape)
+                           for record, did, obj in zip(scene.objects, dids, statics)),
     )

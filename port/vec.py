@@ -1,4 +1,4 @@
-"""Vec.NormalizeCheckSmall, Vec.IsZero; Vector3Extensions (Dot2D, IsValid, Length2D, LengthSquared2D, get_heading); PlaneExtensions (LocalToGlobal, GetSide, SnapToPlane, compute_time_of_intersection, set_height, is_equal); Ray.
+"""Vec.NormalizeCheckSmall, Vec.IsZero; Vector3Extensions (Dot2D, IsValid, Length2D, LengthSquared2D, get_heading); PlaneExtensions (LocalToGlobal, GetSide, intersect_box, SnapToPlane, compute_time_of_intersection, set_height, is_equal); Ray.
 
 ACE's static helpers on System.Numerics values (Common/Vector.cs, Extensions/Vector3Extensions.cs,
 Extensions/PlaneExtensions.cs) and the Ray record (Ray.cs) the plane extension takes. C# ``ref``
@@ -132,6 +132,36 @@ def get_side(plane: Plane, p: Vector3, bias=0.0) -> Side:
     if dist <= EPSILON:
         side = Side.Behind if dist < -EPSILON else Side.Close
     return side
+
+
+class Sidedness(IntEnum):
+    """ACE.Entity.Enum.Sidedness: where a box lies against a plane (intersect_box)."""
+
+    Positive = 0x0
+    Negative = 0x1
+    InPlane = 0x2
+    Crossing = 0x3
+
+
+@anchor(None, "PlaneExtensions.cs:intersect_box")
+def intersect_box(p: Plane, box) -> Sidedness:
+    """Note ACE compares each corner's Side cast to Sidedness: a corner Close to the plane
+    (Side 2, InPlane) differs from Positive and Negative, so it makes the box Crossing."""
+    dist = dot(box.min, p.normal) + p.d
+    if dist <= EPSILON:
+        if dist >= -EPSILON:
+            return Sidedness.Crossing
+        else:
+            result = Sidedness.Negative
+    else:
+        result = Sidedness.Positive
+
+    corners = box.get_corners()
+
+    for corner in corners:
+        if result != int(get_side(p, corner, EPSILON)):
+            return Sidedness.Crossing
+    return result
 
 
 @anchor(None, "PlaneExtensions.cs:SnapToPlane")

@@ -36,7 +36,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 4;
+        public const int PackVersion = 5;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -48,7 +48,13 @@ namespace Acconform.Oracle
             new Dictionary<uint, ACE.Server.Physics.Common.Landblock>();
         static readonly List<uint> sceneRecords = new List<uint>();  // DAT ids this scene put in the portal FileCache
         static ConcurrentDictionary<uint, FileType> portalFiles;  // DatManager.PortalDat.FileCache
-        // for each static, in scene order: the ids of PhysicsObj.ShadowObjects (null until every static is placed)
+        static ConcurrentDictionary<uint, FileType> cellFiles;  // DatManager.CellDat.FileCache
+        // per static, in scene order: its cell id and DAT id, and the PhysicsObj placed outdoors (null for a
+        // static in an EnvCell: ACE makes that one when it loads the cell, EnvCell.init_static_objects)
+        static readonly List<uint> staticCellIds = new List<uint>();
+        static readonly List<uint> staticDids = new List<uint>();
+        static readonly List<PhysicsObj> staticObjs = new List<PhysicsObj>();
+        // for each static, in scene order: the ids of PhysicsObj.ShadowObjects (null until read after the transition)
         static List<List<uint>> staticCells;
 
         static readonly List<Tuple<int, int>> tableUsed = new List<Tuple<int, int>>();
@@ -109,7 +115,7 @@ namespace Acconform.Oracle
         /// when the oracle loads).</summary>
         public static void Init()
         {
-            InstallPortalDat();
+            InstallDats();
             EnsureInput(1 << 16);
             EnsureOutput(1 << 12);
             runEntry = RunPinnedNative;
@@ -199,6 +205,7 @@ namespace Acconform.Oracle
                 var mover = BuildScene(r);
                 var ok = RunTransition(mover.Item1, mover.Item2, mover.Item3, out var trans, out fvpMicros);
                 WriteOutcome(w, ok, trans, mover.Item1, fvpMicros);
+                staticCells = ReadStaticCells();
                 RemoveStatics();
                 w.Write(total.Elapsed.TotalMilliseconds * 1000.0);
             }
@@ -272,33 +279,86 @@ namespace Acconform.Oracle
 
         static void RemoveStatics()
         {
-            // leave cached landblocks as they were built: this scene's statics leave their cells again
+            // leave cached landblocks as they were built: this scene's statics leave their cells again, and the
+            // EnvCells ACE loaded into them (Landblock.LandCells, keyed by the cell's low word) go, with the
+            // statics they placed; the next scene's cell DAT loads its own
             foreach (var obj in sceneStatics)
             {
                 obj.remove_shadows_from_cells();
                 obj.leave_cell(false);
             }
             sceneStatics.Clear();
+            foreach (var lb in sceneLandblocks.Values)
+            {
+                if (lb.LandCells.Count <= 64) continue;
+                var indoor = new List<int>();
+                foreach (var key in lb.LandCells.Keys) if (key >= 0x100) indoor.Add(key);
+                foreach (var key in indoor)
+                {
+                    var cell = lb.LandCells[key] as ACE.Server.Physics.Common.EnvCell;
+                    if (cell != null && cell.StaticObjects != null)
+                        foreach (var obj in cell.StaticObjects)
+                        {
+                            obj.remove_shadows_from_cells();
+                            obj.leave_cell(false);
+                        }
+                    lb.LandCells.TryRemove(key, out _);
+                }
+            }
         }
 
-        // ------------------------------------------------------------------ the portal DAT
-        /// <summary>Make DatManager.PortalDat exist with no DAT file: a PortalDatDatabase made without its
-        /// file-reading constructor whose FileCache (the auto-property's backing field) is a fresh dictionary.
-        /// ACE's DatDatabase.ReadFromDat looks there first, so records the facade puts there are what
-        /// DBObj.GetGfxObj / GetSetup read. LandDefs' static constructor reads the region's height table from
-        /// PortalDat when one exists; it runs first, with none (the scene brings its own table).</summary>
-        static void InstallPortalDat()
+        /// <summary>Each static's cells, read after the transition: an outdoor static's ShadowObjects keys; for a
+        /// static in an EnvCell, those of the object of the loaded cell's StaticObjects whose PartArray.GetDataID is
+        /// the static's DAT id (none when the cell was not loaded or ACE dropped the object).</summary>
+        static List<List<uint>> ReadStaticCells()
+        {
+            var cells = new List<List<uint>>(staticDids.Count);
+            for (var i = 0; i < staticDids.Count; i++)
+            {
+                var ids = new List<uint>();
+                var cellId = staticCellIds[i];
+                PhysicsObj obj = staticObjs[i];
+                if ((cellId & 0xFFFF) >= 0x100)
+                {
+                    ACE.Server.Physics.Common.Landblock lb;
+                    ObjCell cell;
+                    if (sceneLandblocks.TryGetValue(cellId | 0xFFFF, out lb) && lb.LandCells.TryGetValue((int)(cellId & 0xFFFF), out cell))
+                    {
+                        var env = cell as ACE.Server.Physics.Common.EnvCell;
+                        if (env != null && env.StaticObjects != null)
+                            foreach (var made in env.StaticObjects)
+                                if (made.PartArray != null && made.PartArray.GetDataID() == staticDids[i]) { obj = made; break; }
+                    }
+                }
+                if (obj != null) ids.AddRange(obj.ShadowObjects.Keys);
+                cells.Add(ids);
+            }
+            return cells;
+        }
+
+        // ------------------------------------------------------------------ the portal and cell DATs
+        /// <summary>Make DatManager.PortalDat and DatManager.CellDat exist with no DAT file: each a PortalDatDatabase /
+        /// CellDatDatabase made without its file-reading constructor whose FileCache (the auto-property's backing
+        /// field) is a fresh dictionary. ACE's DatDatabase.ReadFromDat looks there first, so records the facade puts
+        /// there are what DBObj.GetGfxObj / GetSetup / GetEnvironment (portal) and GetEnvCell and AdjustCell's
+        /// LandblockInfo (cell) read; an id the scene has no record for meets the null file table (AllFiles) and
+        /// throws NullReferenceException. LandDefs' static constructor reads the region's height table from PortalDat
+        /// when one exists; it runs first, with none (the scene brings its own table).</summary>
+        static void InstallDats()
         {
             RuntimeHelpers.RunClassConstructor(typeof(LandDefs).TypeHandle);
-            if (DatManager.PortalDat == null)
-            {
-                var db = (PortalDatDatabase)FormatterServices.GetUninitializedObject(typeof(PortalDatDatabase));
-                typeof(DatDatabase).GetField("<FileCache>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance)
-                    .SetValue(db, new ConcurrentDictionary<uint, FileType>());
-                typeof(DatManager).GetField("<PortalDat>k__BackingField", BindingFlags.NonPublic | BindingFlags.Static)
-                    .SetValue(null, db);
-            }
+            if (DatManager.PortalDat == null) InstallDat(typeof(PortalDatDatabase), "<PortalDat>k__BackingField");
+            if (DatManager.CellDat == null) InstallDat(typeof(CellDatDatabase), "<CellDat>k__BackingField");
             portalFiles = DatManager.PortalDat.FileCache;
+            cellFiles = DatManager.CellDat.FileCache;
+        }
+
+        static void InstallDat(Type type, string backingField)
+        {
+            var db = FormatterServices.GetUninitializedObject(type);
+            typeof(DatDatabase).GetField("<FileCache>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance)
+                .SetValue(db, new ConcurrentDictionary<uint, FileType>());
+            typeof(DatManager).GetField(backingField, BindingFlags.NonPublic | BindingFlags.Static).SetValue(null, db);
         }
 
         // ------------------------------------------------------------------ global state
@@ -314,6 +374,10 @@ namespace Acconform.Oracle
             if (!GfxObjCache.GfxObjs.IsEmpty) GfxObjCache.GfxObjs.Clear();  // keyed by DAT id: ids repeat across scenes
             foreach (var id in sceneRecords) portalFiles.TryRemove(id, out _);
             sceneRecords.Clear();
+            if (!cellFiles.IsEmpty) cellFiles.Clear();  // the scene's records and anything ReadFromDat cached
+            staticCellIds.Clear();
+            staticDids.Clear();
+            staticObjs.Clear();
             sceneLandblocks.Clear();
             if (!ServerObjectManager.ServerObjects.IsEmpty) ServerObjectManager.ServerObjects.Clear();
             var t = LandblockTable();
@@ -444,12 +508,15 @@ namespace Acconform.Oracle
             if (!server)
                 PhysicsEngine.Instance.Server = false;
 
+            // the Environments (portal DAT) and the EnvCells and LandblockInfos (cell DAT): ACE loads each EnvCell
+            // when it first asks for it (LScape.get_landcell -> DBObj.GetEnvCell -> new EnvCell -> PostInit)
+            var ndat = r.ReadInt32();
+            for (var i = 0; i < ndat; i++)
+                ReadRecord(r);
+
             var nobj = r.ReadInt32();
             for (var i = 0; i < nobj; i++)
                 BuildStatic(r);
-            staticCells = new List<List<uint>>(nobj);
-            foreach (var obj in sceneStatics)
-                staticCells.Add(new List<uint>(obj.ShadowObjects.Keys));
 
             return BuildMover(r);
         }
@@ -497,10 +564,18 @@ namespace Acconform.Oracle
             FileType file;
             if (kind == 0) file = new DatGfxObj();
             else if (kind == 1) file = new SetupModel();
+            else if (kind == 2) file = new ACE.DatLoader.FileTypes.Environment();
+            else if (kind == 3) file = new ACE.DatLoader.FileTypes.EnvCell();
+            else if (kind == 4) file = new LandblockInfo();
             else throw new InvalidDataException("acconform facade: unknown DAT record kind " + kind);
             file.Unpack(new BinaryReader(new MemoryStream(ms.GetBuffer(), off, len, false)));
-            portalFiles[id] = file;
-            sceneRecords.Add(id);
+            if (kind >= 3)
+                cellFiles[id] = file;
+            else
+            {
+                portalFiles[id] = file;
+                sceneRecords.Add(id);
+            }
         }
 
         static void BuildStatic(BinaryReader r)
@@ -513,11 +588,21 @@ namespace Acconform.Oracle
             var nrec = r.ReadInt32();
             for (var k = 0; k < nrec; k++) ReadRecord(r);
 
+            staticCellIds.Add(pos.ObjCellID);
+            staticDids.Add(did);
+            if ((pos.ObjCellID & 0xFFFF) >= 0x100)
+            {
+                // a stab of its EnvCell's DAT record: ACE makes and places it when it loads the cell
+                staticObjs.Add(null);
+                return;
+            }
+
             // WorldObject.InitPhysicsObj's steps: the object from its DAT id, then the scene's scale and state
             var obj = PhysicsObj.makeObject(did, id, false);
             obj.SetScaleStatic(scale);
             obj.State = state;
             sceneStatics.Add(obj);
+            staticObjs.Add(obj);
 
             // Landblock.init_static_objs' steps, on the landblock of the scene's cell
             obj.DatObject = true;

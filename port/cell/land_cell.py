@@ -14,7 +14,8 @@ from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.bbox import BBox
 from acconform.port.frame import Position
-from acconform.port.geom.polygon import Polygon, Sidedness
+from acconform.port.geom.polygon import Polygon
+from acconform.port.vec import Sidedness
 from acconform.port.geom.sphere import Sphere
 from acconform.port import land_defs
 from acconform.port.land_defs import WaterType

@@ -6,7 +6,11 @@ CheckOtherCells passes in as the "find me a current cell" marker.
 
 find_cell_list outdoors: every cell the spheres touch is added to the CellArray (which is never
 cleared), then the current cell is the LAST cell in .NET dictionary order whose terrain holds
-sphere 0's center -- on a shared edge both cells hold it and the later one wins.
+sphere 0's center -- on a shared edge both cells hold it and the later one wins. Indoors: the
+position's own EnvCell is added, then each cell's find_transit_cells adds the cells beyond its
+portals (or the outdoor cells, through a portal to 0xFFFF); the first EnvCell holding sphere 0's
+center wins at once. Unless the CellArray loads cells (a static's placement never does), cells
+the position's EnvCell does not list as visible are then dropped.
 """
 
 from __future__ import annotations
@@ -21,6 +25,7 @@ from acconform.port import cell as _cells
 
 from ..anchors import anchor
 from ..constants import WATER_DEPTH_DRY, WATER_DEPTH_ENTIRELY_WATER
+from ..errors import InvalidCastException
 from ..frame import AFrame, Position
 from .. import land_defs
 from ..land_defs import WaterType
@@ -172,8 +177,14 @@ def find_cell_list(lscape, position, num_sphere: int, spheres: list, cell_array,
     visible_cell = get_visible(lscape, position.obj_cell_id)
 
     if (position.obj_cell_id & 0xFFFF) >= 0x100:
-        raise NotImplementedError("indoor cells (EnvCells) are not supported")
-    _cells.land_cell.add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
+        if path is not None:
+            path.hits_interior_cell = True
+            if path.trace is not None:
+                path.trace["find_cell_list:indoor"] += 1
+
+        cell_array.add_cell(position.obj_cell_id, visible_cell)
+    else:
+        _cells.land_cell.add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
 
     if visible_cell is not None and num_sphere != 0:
         i = 0
@@ -197,8 +208,36 @@ def find_cell_list(lscape, position, num_sphere: int, spheres: list, cell_array,
                         if path is not None:
                             path.hits_interior_cell = True
                         return curr_cell
-    # (the !LoadCells indoor pruning does not apply outdoors)
+    if not cell_array.load_cells and (position.obj_cell_id & 0xFFFF) >= 0x100:
+        cells = cell_array.cells.values()  # a copy (ToList), as ACE walks it while removing
+        for cell in cells:
+            if cell is None:
+                continue
+
+            if visible_cell.id == cell.id:
+                continue
+
+            found = False
+
+            for stab in _visible_cells_of(visible_cell).values():
+                if stab is None:
+                    continue
+
+                if cell.id == stab.id:
+                    found = True
+                    break
+            if not found:
+                cell_array.remove_cell(cell)
+                if path is not None and path.trace is not None:
+                    path.trace["find_cell_list:pruned"] += 1
     return curr_cell
+
+
+def _visible_cells_of(visible_cell) -> dict:
+    """``((EnvCell)visibleCell).VisibleCells``: the cast throws for any other cell."""
+    if not isinstance(visible_cell, _cells.env_cell.EnvCell):
+        raise InvalidCastException(f"cell {visible_cell.id:08X} is a {type(visible_cell).__name__}, not an EnvCell")
+    return visible_cell.visible_cells
 
 
 @anchor("CObjCell::find_cell_list", "ObjCell.cs:find_cell_list(Position, int, List<CylSphere>, CellArray, SpherePath)",

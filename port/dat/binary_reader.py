@@ -1,4 +1,4 @@
-"""BinaryReader and BinaryReaderExtensions: ReadCompressedUInt32, ReadVector3 (and the .NET BinaryReader reads they use).
+"""BinaryReader and BinaryReaderExtensions: AlignBoundary, ReadCompressedUInt32, ReadVector3 (and the .NET BinaryReader reads they use).
 
 ACE.DatLoader's BinaryReaderExtensions.cs over System.IO.BinaryReader (little-endian). Floats are
 read as the float32 the DAT holds and handed to the run's mode (exact: float32, fast: float64 of
@@ -69,6 +69,15 @@ class BinaryReader:
     @harness(".NET BinaryReader.ReadSingle, in the run's mode")
     def read_single(self):
         return self.mode.scalar(self._take(_F32)[0])
+
+    @anchor(None, "ACE.DatLoader/BinaryReaderExtensions.cs:AlignBoundary")
+    def align_boundary(self) -> None:
+        """To the next DWORD boundary of the record's stream (a position past the end is allowed:
+        the next read fails)."""
+        align_delta = self.position % 4
+
+        if align_delta != 0:
+            self.position += 4 - align_delta
 
     @anchor(None, "ACE.DatLoader/BinaryReaderExtensions.cs:ReadCompressedUInt32")
     def read_compressed_uint32(self) -> int:

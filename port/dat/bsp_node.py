@@ -2,9 +2,10 @@
 
 The node's type is four ASCII bytes read in reverse ("BPIN" is written N, I, P, B). Which
 children follow depends on it: BPnn/BPIn a front child only, BpIN/BpnN a back child only,
-BPIN/BPnN both, any other tag none. A physics tree's node then holds its bounding sphere and no
-polygon ids. ReadNode peeks at the tag to pick BSPLeaf (LEAF), BSPPortal (PORT, not ported:
-only cell trees hold portals) or BSPNode.
+BPIN/BPnN both, any other tag (BpIn, BPOL, ...) none. A cell tree's node holds nothing more; a
+physics tree's node then holds its bounding sphere and no polygon ids; a drawing tree's node
+its sphere and polygon ids. ReadNode peeks at the tag to pick BSPLeaf (LEAF), BSPPortal (PORT,
+bsp_portal.py: cell structures' drawing trees hold them) or BSPNode.
 """
 
 from __future__ import annotations
@@ -73,8 +74,8 @@ def read_node(reader, tree_type: int) -> BSPNode:
     reader.position -= 4
 
     if type_ == "PORT":
-        raise NotImplementedError("BSPPortal (cell BSP trees) is not ported")
-    if type_ == "LEAF":
+        node = bsp_portal.BSPPortal()
+    elif type_ == "LEAF":
         node = bsp_leaf.BSPLeaf()
     else:
         node = BSPNode()
@@ -82,4 +83,4 @@ def read_node(reader, tree_type: int) -> BSPNode:
     return node
 
 
-from . import bsp_leaf  # noqa: E402  (BSPLeaf derives from BSPNode)
+from . import bsp_leaf, bsp_portal  # noqa: E402  (BSPLeaf and BSPPortal derive from BSPNode)

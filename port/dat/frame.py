@@ -23,5 +23,5 @@ class Frame:
         qx = reader.read_single()
         qy = reader.read_single()
         qz = reader.read_single()
-        f.orientation = Quaternion(qx, qy, qz, qw)
+        f.orientation = reader.mode.quat(qx, qy, qz, qw)  # new Quaternion(qx, qy, qz, qw), in the run's runtime
         return f

@@ -1,4 +1,4 @@
-"""BSPTREE/BSPNODE/BSPLEAF: BSPTree (adjust_to_plane, check_walkable, collide_with_pt, find_collisions, NegPolyHit, placement_insert, placement_insert_inner, point_inside_cell_bsp, slide_sphere, sphere_intersects_cell_bsp, step_sphere_down, step_sphere_up), BSPNode and BSPLeaf (find_walkable, hits_walkable, point_inside_cell_bsp, point_intersects_solid, sphere_intersects_cell_bsp, sphere_intersects_poly, sphere_intersects_solid, sphere_intersects_solid_poly).
+"""BSPTREE/BSPNODE/BSPLEAF: BSPTree (adjust_to_plane, box_intersects_cell_bsp, check_walkable, collide_with_pt, find_collisions, NegPolyHit, placement_insert, placement_insert_inner, point_inside_cell_bsp, slide_sphere, sphere_intersects_cell_bsp, step_sphere_down, step_sphere_up), BSPNode and BSPLeaf (box_intersects_cell_bsp, box_intersects_cell_bsp_inner, find_walkable, hits_walkable, point_inside_cell_bsp, point_intersects_solid, sphere_intersects_cell_bsp, sphere_intersects_poly, sphere_intersects_solid, sphere_intersects_solid_poly).
 
 Ports ACE BSP/BSPTree.cs, BSPNode.cs and BSPLeaf.cs. The tree is built by ACE's DAT constructors
 (`from_dat`) from the GfxObj record DatLoader read (port/dat/): every node that names a polygon
@@ -98,6 +98,30 @@ class BSPNode:
 
     def __repr__(self) -> str:
         return f"BSPNode(plane={self.splitting_plane!r}, sphere={self.sphere!r})"
+
+    @anchor("BSPNODE::box_intersects_cell_bsp", "BSPNode.cs:box_intersects_cell_bsp")
+    def box_intersects_cell_bsp(self, box) -> bool:
+        """Walks the front (PosNode) chain only; false as soon as the box's Min is behind a
+        node's plane and so are all eight corners."""
+        corners = box.get_corners()
+        node = self
+        while node is not None:
+            dist = dot(box.min, node.splitting_plane.normal) + node.splitting_plane.d
+            if dist >= -EPSILON:
+                node = node.pos_node
+                continue
+
+            if self.box_intersects_cell_bsp_inner(node, corners):
+                return False
+            node = node.pos_node
+        return True
+
+    @anchor(None, "BSPNode.cs:box_intersects_cell_bsp_inner")
+    def box_intersects_cell_bsp_inner(self, node: "BSPNode", corners: list) -> bool:
+        for corner in corners:
+            if get_side(node.splitting_plane, corner) != Side.Behind:
+                return False
+        return True
 
     @anchor("BSPNODE::find_walkable", "BSPNode.cs:find_walkable")
     def find_walkable(self, path, valid_pos: Sphere, polygon, movement: Vector3, up: Vector3, changed: bool):
@@ -351,6 +375,10 @@ class BSPTree:
         """``RootNode = new BSPNode(bsp.RootNode, polys, vertexArray)``: the root is a BSPNode even
         when the DAT root is a leaf (then no query descends from it: a childless node)."""
         return cls(BSPNode.from_dat(bsp.root_node, polys, vertex_array, mode))
+
+    @anchor("BSPTREE::box_intersects_cell_bsp", "BSPTree.cs:box_intersects_cell_bsp")
+    def box_intersects_cell_bsp(self, box) -> bool:
+        return self.root_node.box_intersects_cell_bsp(box)
 
     @anchor(None, "BSPTree.cs:GetSphere")
     def get_sphere(self) -> Sphere:

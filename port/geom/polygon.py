@@ -1,4 +1,4 @@
-"""CPolygon: Polygon (ctor x2, make_plane, adjust_sphere_to_plane, adjust_sphere_to_poly, adjust_to_placement_poly, check_small_walkable, check_walkable, find_crossed_edge, hits_sphere, point_in_poly2D, point_in_polygon, polygon_hits_ray, polygon_hits_sphere, polygon_hits_sphere_precise, pos_hits_sphere, walkable_hits_sphere); CVertex: Vertex; Sidedness.
+"""CPolygon: Polygon (ctor x2, make_plane, adjust_sphere_to_plane, adjust_sphere_to_poly, adjust_to_placement_poly, check_small_walkable, check_walkable, find_crossed_edge, hits_sphere, point_in_poly2D, point_in_polygon, polygon_hits_ray, polygon_hits_sphere, polygon_hits_sphere_precise, pos_hits_sphere, walkable_hits_sphere); CVertex: Vertex (Sidedness is in port/vec.py, beside PlaneExtensions.intersect_box).
 
 Ports ACE Polygon.cs and Common/Vertex.cs. A polygon plays two roles: terrain cells build it with
 ``Polygon(poly_id, num_points, sides_type)`` and then fill ``vertices[i]``/``vertex_ids[i]`` and call
@@ -11,7 +11,6 @@ returns ``(hit, contact_point)`` where contact_point is unchanged when ACE leave
 
 from __future__ import annotations
 
-from enum import IntEnum
 
 from acconform.flags import CullMode
 from acconform.numerics import D, Mode, Plane, Vector3, cross, dot, normalize
@@ -19,16 +18,8 @@ from acconform.numerics import D, Mode, Plane, Vector3, cross, dot, normalize
 from ..anchors import anchor, harness
 from ..errors import KeyNotFoundException
 from ..constants import ADJUST_TO_PLANE_INTERP_LIMIT, EPSILON
-from ..vec import Ray, compute_time_of_intersection, zero_like
+from ..vec import Ray, Sidedness, compute_time_of_intersection, zero_like
 
-
-class Sidedness(IntEnum):
-    """ACE.Entity.Enum.Sidedness."""
-
-    Positive = 0x0
-    Negative = 0x1
-    InPlane = 0x2
-    Crossing = 0x3
 
 
 class Vertex:

@@ -14,8 +14,11 @@ its cells' per-run object lists are reset (shadow objects never leak between sce
 `release()` hands it back when the run is over. There is no DAT: where ACE would load a landblock the scene does not
 list, DAT-less ACE throws NullReferenceException (LandblockManager's landblock has no physics
 landblock), and get_landblock raises the port's NullReferenceException (port/errors.py), which
-run_scene reports as the same verdict. Indoor cells (EnvCells) are not supported and
-get_landcell returns None for them.
+run_scene reports as the same verdict. Indoor cells (EnvCells, 0x0100 and up) are built as
+ACE builds them: get_landcell reads the EnvCell record from the run's cell DAT
+(`lscape.cell_dat`, with `lscape.portal_dat` for its Environment: port/run.py sets both), caches
+it in the landblock's cells and then PostInits it. A pooled landblock never keeps EnvCells
+(they come from the run's DATs, which the pool key does not hold): `release` drops them.
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ from collections import OrderedDict
 from acconform.numerics import Mode
 from acconform.port.anchors import anchor, harness
 from acconform.port.errors import NullReferenceException
-from acconform.port import land_defs
+from acconform.port import db_obj, land_defs
 from acconform.port.cell.land_cell import LandCell
 from acconform.port.land.landblock import Landblock
 
@@ -61,8 +64,10 @@ class LandblockPool:
             cell.reset_for_pool()
         return landblock
 
-    @harness("hands a landblock back to the pool")
+    @harness("hands a landblock back to the pool (its EnvCells dropped: they come from the run's DATs)")
     def release(self, key: tuple, landblock: Landblock) -> None:
+        for cell_id in [k for k in landblock.land_cells if k >= 0x100]:
+            del landblock.land_cells[cell_id]
         self.idle.pop(key, None)
         self.idle[key] = landblock
         while len(self.idle) > self.size:
@@ -92,6 +97,9 @@ class LScape:
         self.landblocks: dict[int, Landblock] = {}  # the ones built so far
         self.landcells: dict[int, LandCell | None] = {}  # get_landcell's answers so far (see there)
         self.outside_cells: dict[tuple, list] = {}  # land_cell.add_all_outside_cells_replayed's memory
+        self.cell_dat = None  # DatManager.CellDat: the run's cell DAT (port/run.py sets it)
+        self.portal_dat = None  # DatManager.PortalDat: the run's portal DAT (port/run.py sets it)
+        self.adjust_cells: dict = {}  # AdjustCell.AdjustCells (port/adjust_cell.py), per run
         self.records = {record.id | 0xFFFF: record for record in scene.landblocks}
         for landblock_id, record in self.records.items():
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
@@ -112,6 +120,7 @@ class LScape:
         self.landblocks = {}
         self.landcells = {}
         self.outside_cells = {}
+        self.adjust_cells = {}
         self.records = {}
 
     @anchor("LScape::get_landblock", "LScape.cs:get_landblock")
@@ -126,8 +135,8 @@ class LScape:
         return landblock
 
     @anchor("LScape::get_landcell", "LScape.cs:get_landcell")
-    def get_landcell(self, block_cell_id: int) -> LandCell | None:
-        """The outdoor cell with that id. Unlike Landblock.get_landcell, ACE does not check the
+    def get_landcell(self, block_cell_id: int):
+        """The cell with that id (a LandCell, or an EnvCell built on first use). Unlike Landblock.get_landcell, ACE does not check the
         slot's id here; the slot comes from gid_to_lcoord without the env check.
 
         The answer for an id never changes during a run (a built landblock's cells are fixed),
@@ -139,7 +148,7 @@ class LScape:
         cell = self.landcells[block_cell_id] = self._get_landcell(block_cell_id)
         return cell
 
-    def _get_landcell(self, block_cell_id: int) -> LandCell | None:
+    def _get_landcell(self, block_cell_id: int):
         """LScape.get_landcell as ACE writes it (get_landcell remembers its answers)."""
         landblock = self.get_landblock(block_cell_id)
         cell_id = block_cell_id & 0xFFFF
@@ -149,5 +158,12 @@ class LScape:
                 return None
             land_cell_idx = (int(lcoord[1]) % 8) + (int(lcoord[0]) % 8) * landblock.side_cell_count
             return landblock.land_cells.get(land_cell_idx)
-        # indoor cells: ACE loads the EnvCell from the DAT; scenes have none
-        return None
+        # indoor cells
+        if cell_id in landblock.land_cells:
+            return landblock.land_cells[cell_id]
+
+        cell = db_obj.get_env_cell(self.cell_dat, self.portal_dat, block_cell_id)
+        landblock.land_cells.setdefault(cell_id, cell)  # TryAdd
+        env_cell = cell
+        env_cell.post_init(self)
+        return cell

@@ -74,11 +74,25 @@ BRANCHES: dict[str, str] = {
     # LandCell.FindEnvCollisions, PhysicsObj.get_object_info
     "land_cell:entirely_water_block": "an entirely-water landblock: Collided",
     "get_object_info:leaving_contact": "velocity leaves the contact plane: only a last-known plane",
+    # indoors: EnvCell.FindEnvCollisions, EnvCell.find_transit_cells, ObjCell.find_cell_list
+    "env_cell:physics_bsp": "an EnvCell's physics BSP tested the mover (placement or collision)",
+    "env_cell:outside_portal": "a sphere straddles a portal to 0xFFFF: the outdoor cells added",
+    "env_cell:other_cell": "a sphere reaches the loaded cell beyond a portal: that cell added",
+    "env_cell:unloaded_cell": "a sphere reaches a portal to a cell not visible: its short id added, no cell",
+    "find_cell_list:indoor": "the position is in an EnvCell: that cell added (path hits an interior cell)",
+    "find_cell_list:pruned": "a cell the position's EnvCell does not see dropped from the CellArray",
 }
 
 # Branches no recorded test scene reaches yet, and why.
+_INDOOR = "indoors: reached by tests/port/cell's named tests; no recorded ACE scene yet (issue 12)"
 NOT_YET_REACHED: dict[str, str] = {
     "check_other_cells:no_cell": "needs a sphere center outside every loaded cell; DAT-less ACE crashes there",
+    "env_cell:physics_bsp": _INDOOR,
+    "env_cell:outside_portal": _INDOOR,
+    "env_cell:other_cell": _INDOOR,
+    "env_cell:unloaded_cell": _INDOOR,
+    "find_cell_list:indoor": _INDOOR,
+    "find_cell_list:pruned": _INDOOR,
 }
 
 # Branches only the static-object scenes reach (tests/port/objects: BSP sets SpherePath.Walkable,

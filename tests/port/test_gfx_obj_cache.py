@@ -10,6 +10,7 @@ from acconform import dat
 from acconform.numerics import EXACT, FAST
 from acconform.port import gfx_obj_cache
 from acconform.port.dat.portal_dat import PortalDat
+from acconform.port.errors import NullReferenceException
 from acconform.port.run import run_scene
 from object_scenes import SCENES as OBJECT_SCENES, box
 from straddle_scenes import SCENES as STRADDLE_SCENES
@@ -46,7 +47,8 @@ def test_the_memory_is_keyed_by_the_bytes_the_server_flag_and_the_mode():
 
 
 @pytest.mark.anchor("GfxObjCache.cs:Get")
-def test_a_record_the_run_lacks_is_built_empty_and_not_remembered():
+def test_a_record_the_run_lacks_throws_as_ace_s_file_less_database_does():
     gfx_obj_cache.clear_built()
-    g = gfx_obj_cache.get(PortalDat({}, EXACT, True), dat.GFX_OBJ_BASE)
-    assert g.physics_bsp is None and g.id == 0 and gfx_obj_cache.BUILT == {}
+    with pytest.raises(NullReferenceException):
+        gfx_obj_cache.get(PortalDat({}, EXACT, True), dat.GFX_OBJ_BASE)
+    assert gfx_obj_cache.BUILT == {}

@@ -91,7 +91,6 @@ def test_lscape_finds_cells_of_listed_landblocks_only():
     with pytest.raises(NullReferenceException, match="landblock ABB4FFFF is not in the scene"):
         w.get_landcell(0xABB40005)  # not in the scene: ACE would read the DAT (and DAT-less, throws)
     assert w.get_landcell(0xA9B40041) is None
-    assert w.get_landcell(0xA9B40100) is None  # indoor: unsupported
     assert w.get_landblock(0xA9B40017) is w.get_landblock(0xA9B4FFFF)
 
 
