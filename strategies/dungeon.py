@@ -21,7 +21,7 @@ piece's centre, z = 0 at its entry floor; x along the chain, y across):
   the same plane in the landblock (exactly when the frames' yaws are multiples of 90 degrees).
 
 A portal to 0xFFFF leads outside (the landblock's land cells). The dungeon's landblock is flat
-ground far below the cells (a dungeon landblock without terrain once scenes carry one).
+ground below the cells: a landblock without terrain, as a dungeon's is.
 """
 
 from __future__ import annotations
@@ -122,7 +122,7 @@ class CellGeometry:
     ztop: float = 0.0
 
 
-def _floor_at(p: Piece, x: float) -> float:
+def floor_at(p: Piece, x: float) -> float:
     """The floor's height at local x (entry floor = 0)."""
     x0 = -p.length / 2
     if p.profile == "ramp":
@@ -187,7 +187,7 @@ def cell_geometry(p: Piece, entry: Door | None, exit_: Door | None, side: Door |
         prev = None
         for k in range(p.steps):
             xa, xb = to_f32(x0 + run * k), (to_f32(x0 + run * (k + 1)) if k < p.steps - 1 else x1)
-            z = _floor_at(p, (xa + xb) / 2)
+            z = floor_at(p, (xa + xb) / 2)
             add(quad_z(xa, xb, y0, y1, z, z, 1.0), cull=p.floor_cull, boundary=floor_bounds)
             if prev is not None and z != prev:  # a riser facing the lower step
                 add(rect_x(xa, y0, y1, min(z, prev), max(z, prev), -1.0 if z > prev else 1.0), boundary=False)
@@ -233,6 +233,10 @@ def cell_geometry(p: Piece, entry: Door | None, exit_: Door | None, side: Door |
             add(verts, portal=(which, door) if is_portal else None)
     g.zmin = min(floors)
     g.ztop = top
+    # a wall with a doorway in it bounds nothing: the space beyond its plane is the neighbour's
+    doorways = [plane_of(g.polygons[k].vertices) for k in g.portals]
+    g.physics = [(rec, boundary and not any(_coplanar(plane_of(rec.vertices), d) for d in doorways))
+                 for rec, boundary in g.physics]
     # a portal polygon faces the neighbour when its door says so (PortalSide), else into the cell
     for k, (which, door) in zip(g.portals, g.portal_doors):
         if door.faces_out:
@@ -243,6 +247,12 @@ def cell_geometry(p: Piece, entry: Door | None, exit_: Door | None, side: Door |
 
 def plane_of(verts) -> PlaneRec:
     return sh._plane(verts)
+
+
+def _coplanar(a: PlaneRec, b: PlaneRec) -> bool:
+    """The same plane, facing either way."""
+    dot = sum(x * y for x, y in zip(a.normal, b.normal))
+    return abs(abs(dot) - 1) < 1e-6 and abs(a.d - (b.d if dot > 0 else -b.d)) < 1e-4
 
 
 def _dist(plane: PlaneRec, p) -> float:
@@ -500,9 +510,10 @@ def cell_containing(built: Built, point) -> int | None:
     return None
 
 
-def flat_landblock(block: int) -> Landblock:
-    """The dungeon's landblock: flat ground at height index 0 (z = 0), below every cell."""
-    return Landblock((block << 16) | 0xFFFF, (0,) * 81, (0,) * 81)
+def dungeon_landblock(block: int) -> Landblock:
+    """The dungeon's landblock: no terrain (ACE reads 81 zero heights: flat ground at z = 0, below
+    every cell, reached only through a portal to 0xFFFF)."""
+    return Landblock((block << 16) | 0xFFFF, has_terrain=False)
 
 
 def dungeon_scene(built: Built, spheres, begin, end, begin_cell: int, step_up: float, step_down: float,
@@ -523,7 +534,7 @@ def dungeon_scene(built: Built, spheres, begin, end, begin_cell: int, step_up: f
     mover = Mover(spheres=tuple(spheres), begin=Position(begin_cell, Frame(tuple(begin))),
                   end=Position(end_cell, Frame(tuple(end))), step_up_height=step_up, step_down_height=step_down,
                   state=state, transient_state=transient, contact_plane=contact, velocity=velocity)
-    return Scene((flat_landblock(d.block),), mover, tuple(statics), name=name,
+    return Scene((dungeon_landblock(d.block),), mover, tuple(statics), name=name,
                  environments=(built.environment,), env_cells=built.env_cells)
 
 
@@ -741,7 +752,7 @@ def draw_indoor(draw, spheres, step_heights) -> Scene:
     sy = max(min(lateral - before * math.sin(rad), ps.width / 2 - r - 0.01), -ps.width / 2 + r + 0.01)
     if policy == "seam":
         sx = target_x
-    floor = _floor_at(ps, sx)
+    floor = floor_at(ps, sx)
     if policy in ("ledge", "pit") and sx >= ps.feature_at:
         sx = to_f32(ps.feature_at - 0.01)
         floor = 0.0
