@@ -23,7 +23,7 @@ from acconform.errors import AcconformError
 from .draws import OneOf
 from .scenes import scenes_of
 
-ALL_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
+ALL_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor")
 # The kinds a default campaign draws: what the port supports (all of them since static objects landed).
 DEFAULT_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
 

@@ -20,6 +20,7 @@ from acconform.scene import (IDENTITY, ContactPlane, CylSphereShape, Frame, Move
 
 from . import boundaries as bd
 from . import draws as dr
+from . import dungeon as dg
 from . import objects as ob
 from . import shapes as sh
 from . import terrain as tr
@@ -175,6 +176,8 @@ def scenes_of(draw, kind: str):
 
 
 def draw_scene(draw, kind: str) -> Scene:
+    if kind == "indoor":
+        return dg.draw_indoor(draw, draw(MOVER_SPHERES), step_heights)
     bx, by = draw(HOME)
     terrain_policy = draw(TERRAIN_POLICIES) if kind == "terrain" else "free"
     if terrain_policy == "exact_slope":
