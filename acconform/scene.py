@@ -687,7 +687,10 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         where = _p(path, "mover.contact_plane.cell")
         _check_cell_id(where, scene.mover.contact_plane.cell)
         check_landblock(where, scene.mover.contact_plane.cell)
-    _check_cell_id(_p(path, "mover.end.cell"), scene.mover.end.cell)
+    end = _p(path, "mover.end.cell")
+    _check_cell_id(end, scene.mover.end.cell)
+    if scene.mover.end.cell & 0xFFFF >= ENV_CELL_FIRST:  # an outdoor end may lie in a landblock not listed (ACE's verdict)
+        check_landblock(end, scene.mover.end.cell)
     ids = set()
     for i, o in enumerate(scene.objects):
         where = _p(path, f"objects[{i}]")

@@ -121,6 +121,8 @@ def test_a_cell_bsp_node_may_lack_children_but_a_structure_needs_both_trees():
      "mover.begin.cell: EnvCell 01D90102 is not defined in env_cells (the mover starts in it"),
     (lambda d: d["mover"]["begin"].__setitem__("cell", "0x01DA0100"),
      "mover.begin.cell: landblock 01DA of cell 01DA0100 is not defined in landblocks"),
+    (lambda d: d["mover"]["end"].__setitem__("cell", "0x01DA0100"),
+     "mover.end.cell: landblock 01DA of cell 01DA0100 is not defined in landblocks"),
     (lambda d: d["mover"]["contact_plane"].__setitem__("cell", "0x01DA0100"),
      "mover.contact_plane.cell: landblock 01DA of cell 01DA0100 is not defined in landblocks"),
 ])
@@ -143,8 +145,8 @@ def test_a_static_inside_an_env_cell_is_a_stab_of_a_defined_cell(mutate, message
 def test_what_ace_runs_is_accepted_a_portal_to_an_undefined_cell_and_an_end_in_any_env_cell():
     doc = changed(lambda d: d["env_cells"][0]["portals"][0].__setitem__("other_cell", "0x0150"))
     assert Scene.from_json(doc).env_cells[0].portals[0].other_cell == 0x0150
-    doc = changed(lambda d: d["mover"]["end"].__setitem__("cell", "0x01DA0200"))
-    assert Scene.from_json(doc).mover.end.cell == 0x01DA0200
+    doc = changed(lambda d: d["mover"]["end"].__setitem__("cell", "0x01D90200"))
+    assert Scene.from_json(doc).mover.end.cell == 0x01D90200
 
 
 def test_a_record_built_in_code_with_a_no_terrain_landblock_validates():
