@@ -1,6 +1,12 @@
 """Fixtures shared across the test folders."""
 
 import pytest
+from hypothesis import settings
+
+# Speed is measured by benchmarks that print figures, never by a test: Hypothesis's per-example
+# deadline is a timed test that fails on a loaded machine, so it is off for every suite here.
+settings.register_profile("acconform", deadline=None)
+settings.load_profile("acconform")
 
 
 @pytest.fixture

@@ -46,7 +46,7 @@ def test_on_coreclr_the_facade_is_compiled_offline_with_the_sdk_and_cached(corec
 
 
 def test_on_coreclr_scenes_cross_into_net_through_native_entry_points(coreclr):
-    assert coreclr.path == "facade"
+    assert coreclr.location.runtime == "coreclr" and coreclr._run_pinned is not None
     o = coreclr.run(PROBE["flat 1-step walk"])
     assert o.error is None and o.ok and o.cell == 0xA9B40001
     assert coreclr.last_case_micros > 0 and coreclr.last_transition_micros > 0
