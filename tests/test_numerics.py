@@ -280,6 +280,10 @@ _HARD = [
     (math.inf, 2.0, 1.0),
     (math.nan, 1.0, 1.0),
     (1.0, 1.0, math.nan),
+    (2.0 ** -63, 2.0 ** -63, 0.0),  # exactly 2^-126, the smallest normal: the tie test applies
+    (1.5 * 2.0 ** -64, 2.0 ** -63, -(2.0 ** -149)),  # just below it: float32's subnormal spacing
+    (3.4028234663852886e38, 1.0, 2.0 ** 103),  # FLT_MAX + half an ulp, a tie: to even, inf
+    (3.4028234663852886e38, 1.0 + 2.0 ** -23, -(2.0 ** 104)),  # near FLT_MAX, inexact in double
 ]
 
 
