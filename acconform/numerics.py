@@ -253,7 +253,7 @@ class Quaternion:
     class is mono's, `Net10Quaternion` .NET 10's; each runtime's operations return its own class.
 
     A quaternion is never changed after construction, so what is computed from it alone is kept
-    on it (see `_memo`): ``matrix``, its `Matrix4x4.create_from_quaternion`, and ``rotated``, the
+    on it (see "memos" below): ``matrix``, its `Matrix4x4.create_from_quaternion`, and ``rotated``, the
     vectors `Vector3.Transform` has rotated by it."""
 
     __slots__ = ("x", "y", "z", "w", "matrix", "rotated")
@@ -382,7 +382,7 @@ class Matrix4x4:
     """The parts of System.Numerics.Matrix4x4 ACE's frames use: M11..M44, row-major fields.
 
     Immutable, like `Quaternion`: ``transposed`` keeps its `transpose`, ``transformed`` the vectors
-    `Vector3.Transform` has transformed by it (see `_memo`)."""
+    `Vector3.Transform` has transformed by it (see "memos" below)."""
 
     __slots__ = ("m", "transposed", "transformed")
 
