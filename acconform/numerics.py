@@ -250,15 +250,21 @@ class Quaternion:
     """System.Numerics.Quaternion (X, Y, Z, W) -- note AC files write (W, X, Y, Z).
 
     ``runtime`` (a class attribute, set below) is the runtime whose arithmetic made the value: this
-    class is mono's, `Net10Quaternion` .NET 10's; each runtime's operations return its own class."""
+    class is mono's, `Net10Quaternion` .NET 10's; each runtime's operations return its own class.
 
-    __slots__ = ("x", "y", "z", "w")
+    A quaternion is never changed after construction, so what is computed from it alone is kept
+    on it (see "memos" below): ``matrix``, its `Matrix4x4.create_from_quaternion`, and ``rotated``, the
+    vectors `Vector3.Transform` has rotated by it."""
+
+    __slots__ = ("x", "y", "z", "w", "matrix", "rotated")
 
     def __init__(self, x, y, z, w):
         self.x = x
         self.y = y
         self.z = z
         self.w = w
+        self.matrix = None
+        self.rotated = None
 
     def __eq__(self, o) -> bool:
         return (
@@ -321,8 +327,38 @@ def quat_lerp(a: Quaternion, b: Quaternion, t) -> Quaternion:
     return Quaternion(x * inv, y * inv, z * inv, w * inv)
 
 
+# ---------------------------------------------------------------- memos
+# A run applies the same rotation to the same vector again and again (a sphere's centre placed in
+# every cell it is checked against, GlobalToLocal on one frame for every cell: about 80% of the
+# rotations and 70% of the matrix transforms of a campaign scene repeat one done in that scene).
+# The operand (a quaternion, a matrix) is immutable, so its results are kept on it, keyed by the
+# vector's exact bits: the components packed as doubles (float32 and float64 both convert exactly,
+# -0 and +0 stay apart; a NaN keeps its payload, a signalling NaN reads as the quiet one, which no
+# scene or arithmetic here makes). Each runtime's formula packs with its own key layout, so one
+# operand never answers for the other runtime's formula. A memo holds at most _MEMO_SIZE results
+# and is emptied when full (operands in pooled landblocks live across runs).
+
+_MEMO_SIZE = 64
+_MONO_KEY = struct.Struct("<3d").pack  # 24 bytes
+_NET10_KEY = struct.Struct("<3dx").pack  # 25 bytes: never equal to a mono key
+
+
+def _remember(memo: dict, key: bytes, result: "Vector3") -> "Vector3":
+    if len(memo) >= _MEMO_SIZE:
+        memo.clear()
+    memo[key] = result
+    return result
+
+
 def transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
     """Vector3.Transform(Vector3, Quaternion), mono's formula (.NET 10's: `net10_transform_by_quaternion`)."""
+    memo = q.rotated
+    if memo is None:
+        memo = q.rotated = {}
+    key = _MONO_KEY(v.x, v.y, v.z)
+    r = memo.get(key)
+    if r is not None:
+        return r
     x2 = q.x + q.x
     y2 = q.y + q.y
     z2 = q.z + q.z
@@ -339,19 +375,32 @@ def transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
     r.x = v.x * (1.0 - yy2 - zz2) + v.y * (xy2 - wz2) + v.z * (xz2 + wy2)
     r.y = v.x * (xy2 + wz2) + v.y * (1.0 - xx2 - zz2) + v.z * (yz2 - wx2)
     r.z = v.x * (xz2 - wy2) + v.y * (yz2 + wx2) + v.z * (1.0 - xx2 - yy2)
-    return r
+    return _remember(memo, key, r)
 
 
 class Matrix4x4:
-    """The parts of System.Numerics.Matrix4x4 ACE's frames use: M11..M44, row-major fields."""
+    """The parts of System.Numerics.Matrix4x4 ACE's frames use: M11..M44, row-major fields.
 
-    __slots__ = ("m",)
+    Immutable, like `Quaternion`: ``transposed`` keeps its `transpose`, ``transformed`` the vectors
+    `Vector3.Transform` has transformed by it (see "memos" below)."""
+
+    __slots__ = ("m", "transposed", "transformed")
 
     def __init__(self, m: tuple):
         self.m = m  # (M11, M12, M13, M14, M21, ..., M44)
+        self.transposed = None
+        self.transformed = None
 
     @staticmethod
     def create_from_quaternion(q: Quaternion) -> "Matrix4x4":
+        """Matrix4x4.CreateFromQuaternion (the same bits on both runtimes), computed once per quaternion."""
+        mat = q.matrix
+        if mat is None:
+            mat = q.matrix = Matrix4x4._from_quaternion(q)
+        return mat
+
+    @staticmethod
+    def _from_quaternion(q: Quaternion) -> "Matrix4x4":
         xx = q.x * q.x
         yy = q.y * q.y
         zz = q.z * q.z
@@ -373,20 +422,30 @@ class Matrix4x4:
         )
 
     def transpose(self) -> "Matrix4x4":
-        m = self.m
-        return Matrix4x4(
-            (m[0], m[4], m[8], m[12], m[1], m[5], m[9], m[13], m[2], m[6], m[10], m[14], m[3], m[7], m[11], m[15])
-        )
+        t = self.transposed
+        if t is None:
+            m = self.m
+            t = self.transposed = Matrix4x4(
+                (m[0], m[4], m[8], m[12], m[1], m[5], m[9], m[13], m[2], m[6], m[10], m[14], m[3], m[7], m[11], m[15])
+            )
+        return t
 
 
 def transform_by_matrix(v: Vector3, mat: Matrix4x4) -> Vector3:
     """Vector3.Transform(Vector3, Matrix4x4): the translation row is added (so -0 + 0 = +0)."""
+    memo = mat.transformed
+    if memo is None:
+        memo = mat.transformed = {}
+    key = _MONO_KEY(v.x, v.y, v.z)
+    r = memo.get(key)
+    if r is not None:
+        return r
     m = mat.m
     r = _new(Vector3)
     r.x = v.x * m[0] + v.y * m[4] + v.z * m[8] + m[12]
     r.y = v.x * m[1] + v.y * m[5] + v.z * m[9] + m[13]
     r.z = v.x * m[2] + v.y * m[6] + v.z * m[10] + m[14]
-    return r
+    return _remember(memo, key, r)
 
 
 class Plane:
@@ -490,16 +549,35 @@ _DOUBLE = struct.Struct("<d")
 _INT64 = struct.Struct("<q")
 
 
+_NEG_ZERO = np.float32(-0.0)
+_frexp = math.frexp
+
+
 def fma(a, b, c):
     """``MultiplyAddEstimate(a, b, c)`` on float32 (fused on FMA hardware): a*b+c rounded once.
 
-    a*b of two float32s is exact in a double; a*b + c in double may round once there and again to
-    float32 (double rounding). TwoSum gives the double sum's error exactly, and rounding that sum
-    to odd (when inexact, the neighbour with an odd last bit) keeps enough of it that the final
-    float32 rounding is the correct one (the double has 53 >= 24 + 2 bits). In fast mode (doubles)
-    it is a*b + c, unfused: fast mode is a tolerance comparison anyway."""
+    a*b of two float32s is exact in a double, so s = a*b + c in double is rounded once there, and
+    rounding s to float32 (a second rounding) gives the fused result unless s lands exactly halfway
+    between two float32s: the exact sum is on the same side of every float32 tie as s (ties are
+    doubles, and rounding to double is monotone). So the common case is one test of s's mantissa
+    (a tie has a 1 right after float32's 24 bits and zeros after it: its frexp mantissa times 2^25
+    is an odd integer) and a float32 rounding (``-0 + s``: NumPy rounds the Python float to float32,
+    and adding -0 changes nothing, -0 included). A tie, or a result in float32's subnormal range
+    (where the tie spacing is not the mantissa's), goes to `_fma_rounded_to_odd`. In fast mode
+    (doubles) it is a*b + c, unfused: fast mode is a tolerance comparison anyway."""
     if type(a) is not np.float32:
         return a * b + c
+    s = float(a) * float(b) + float(c)
+    m, e = _frexp(s)  # s = m * 2^e, 0.5 <= |m| < 1 (inf and NaN: e = 0, and not a tie below)
+    if e > -126 and (m * 33554432.0) % 2.0 != 1.0:  # |s| >= 2^-126 and not a tie
+        return _NEG_ZERO + s
+    return _fma_rounded_to_odd(a, b, c)
+
+
+def _fma_rounded_to_odd(a, b, c):
+    """`fma` where s may be a tie: TwoSum gives the double sum's error exactly, and rounding that
+    sum to odd (when inexact, the neighbour with an odd last bit) keeps enough of it that the final
+    float32 rounding is the correct one (the double has 53 >= 24 + 2 bits)."""
     p = float(a) * float(b)
     cc = float(c)
     s = p + cc
@@ -587,19 +665,27 @@ def net10_quat_lerp(a: Quaternion, b: Quaternion, t) -> Quaternion:
 def net10_transform_by_quaternion(v: Vector3, q: Quaternion) -> Vector3:
     """Vector3.Transform(Vector3, Quaternion) on .NET 10: Vector4.Transform of (v, 1), that is
     ``Concatenate(Concatenate(Conjugate(q), (v, 1)), q)`` = ``q * ((v, 1) * Conjugate(q))``, X Y Z
-    kept; both products written out as `net10_quat_multiply` computes them (no objects between)."""
-    lx, ly, lz, lw = v.x, v.y, v.z, type(v.x)(1.0)
+    kept; both products written out as `net10_quat_multiply` computes them (no objects between).
+    The products by the fourth lane's 1 are left out: x * 1 is x, bit for bit (-0, inf and NaN too)."""
+    memo = q.rotated
+    if memo is None:
+        memo = q.rotated = {}
+    key = _NET10_KEY(v.x, v.y, v.z)
+    out = memo.get(key)
+    if out is not None:
+        return out
+    lx, ly, lz = v.x, v.y, v.z  # (v, 1): lw = 1
     rx, ry, rz, rw = -q.x, -q.y, -q.z, q.w
-    tx = ((rx * lw + rw * lx) + rz * ly) - ry * lz  # t = (v, 1) * Conjugate(q)
-    ty = ((ry * lw - rz * lx) + rw * ly) + rx * lz
-    tz = ((rz * lw + ry * lx) - rx * ly) + rw * lz
-    tw = ((rw * lw - rx * lx) - ry * ly) - rz * lz
+    tx = ((rx + rw * lx) + rz * ly) - ry * lz  # t = (v, 1) * Conjugate(q)
+    ty = ((ry - rz * lx) + rw * ly) + rx * lz
+    tz = ((rz + ry * lx) - rx * ly) + rw * lz
+    tw = ((rw - rx * lx) - ry * ly) - rz * lz
     lx, ly, lz, lw = q.x, q.y, q.z, q.w  # q * t
     out = _new(Vector3)
     out.x = ((tx * lw + tw * lx) + tz * ly) - ty * lz
     out.y = ((ty * lw - tz * lx) + tw * ly) + tx * lz
     out.z = ((tz * lw + ty * lx) - tx * ly) + tw * lz
-    return out
+    return _remember(memo, key, out)
 
 
 def net10_negate(v: Vector3) -> Vector3:
@@ -625,13 +711,20 @@ def net10_lerp(a: Vector3, b: Vector3, t) -> Vector3:
 def net10_transform_by_matrix(v: Vector3, mat: Matrix4x4) -> Vector3:
     """Vector3.Transform(Vector3, Matrix4x4) on .NET 10: rows X, Y, Z, W of the matrix,
     ``MultiplyAddEstimate(Z, v.z, MultiplyAddEstimate(Y, v.y, X * v.x)) + W`` per lane."""
+    memo = mat.transformed
+    if memo is None:
+        memo = mat.transformed = {}
+    key = _NET10_KEY(v.x, v.y, v.z)
+    r = memo.get(key)
+    if r is not None:
+        return r
     m = mat.m
     x, y, z = v.x, v.y, v.z
     r = _new(Vector3)
     r.x = fma(m[8], z, fma(m[4], y, m[0] * x)) + m[12]
     r.y = fma(m[9], z, fma(m[5], y, m[1] * x)) + m[13]
     r.z = fma(m[10], z, fma(m[6], y, m[2] * x)) + m[14]
-    return r
+    return _remember(memo, key, r)
 
 
 # Vector128.SinCos(Vector128<float>) on .NET 10 (VectorMath.SinCosSingle, from AMD's aocl-libm
@@ -773,24 +866,21 @@ class Runtime:
     def to_int32(self, x) -> int:
         """C# ``(int)x`` for a float or double x."""
         x = float(x)
+        if -2147483649.0 < x < 2147483648.0:  # truncates into int's range (NaN and +-inf fail the test)
+            return int(x)
         if self.name == "mono":
             # x86-64 cvttsd2si: NaN and out-of-range give int.MinValue (checked on mono 6.8).
-            # (NaN and +-inf fail the range test.)
-            if -2147483649.0 < x < 2147483648.0:
-                return int(x)
             return -2147483648
         # .NET 9+ (CoreCLR): conversions saturate and NaN gives 0.
         if math.isnan(x):
             return 0
-        if x >= 2147483647.0:
-            return 2147483647
-        if x <= -2147483648.0:
-            return -2147483648
-        return int(x)
+        return 2147483647 if x > 0.0 else -2147483648
 
     def to_uint32(self, x) -> int:
         """C# ``(uint)x`` for a float or double x."""
         x = float(x)
+        if 0.0 < x < 4294967296.0:  # truncates into uint's range: the same on both runtimes
+            return int(x)
         if self.name == "mono":
             # mono converts through a 64-bit cvtt and keeps the low 32 bits (NaN, +-inf and
             # out-of-range fail the range test and give 0).
@@ -800,9 +890,7 @@ class Runtime:
         # .NET 9+ (CoreCLR): saturate, NaN gives 0.
         if math.isnan(x) or x <= 0.0:
             return 0
-        if x >= 4294967295.0:
-            return 4294967295
-        return int(x)
+        return 4294967295
 
 
 MONO = Runtime(

@@ -280,6 +280,10 @@ _HARD = [
     (math.inf, 2.0, 1.0),
     (math.nan, 1.0, 1.0),
     (1.0, 1.0, math.nan),
+    (2.0 ** -63, 2.0 ** -63, 0.0),  # exactly 2^-126, the smallest normal: the tie test applies
+    (1.5 * 2.0 ** -64, 2.0 ** -63, -(2.0 ** -149)),  # just below it: float32's subnormal spacing
+    (3.4028234663852886e38, 1.0, 2.0 ** 103),  # FLT_MAX + half an ulp, a tie: to even, inf
+    (3.4028234663852886e38, 1.0 + 2.0 ** -23, -(2.0 ** 104)),  # near FLT_MAX, inexact in double
 ]
 
 
@@ -325,3 +329,41 @@ def test_double_fma_equals_the_c_librarys_fma(a, b, c):
 def test_fma_in_fast_mode_is_the_plain_double_expression():
     a, b, c = np.float64(0.1), np.float64(0.2), np.float64(0.3)
     assert nx.fma(a, b, c) == a * b + c and type(nx.fma(a, b, c)) is np.float64
+
+
+# ---------------------------------------------------------------- results kept on their operand
+
+
+def _bits(v) -> tuple[int, int, int]:
+    return (f32_bits(v.x), f32_bits(v.y), f32_bits(v.z))
+
+
+def _quat(runtime, x, y, z, w):
+    return runtime.quaternion(np.float32(x), np.float32(y), np.float32(z), np.float32(w))
+
+
+def test_a_rotation_asked_again_tells_minus_zero_from_plus_zero():
+    zero, minus = EXACT.vec(0.0, 0.0, 0.0), EXACT.vec(-0.0, -0.0, -0.0)
+    q = _quat(MONO, 0.0, 0.0, 0.0, 1.0)
+    assert _bits(nx.transform_by_quaternion(zero, q)) == (0, 0, 0)
+    # the same quaternion, a vector equal to the first (== is true) but for its zeros' signs
+    assert _bits(nx.transform_by_quaternion(minus, q)) == (0x80000000,) * 3
+    assert _bits(nx.transform_by_quaternion(minus, _quat(MONO, 0.0, 0.0, 0.0, 1.0))) == (0x80000000,) * 3
+
+
+@settings(max_examples=200)
+@given(st.tuples(f32s, f32s, f32s), st.tuples(f32s, f32s, f32s, f32s))
+def test_an_operand_answers_each_runtimes_formula_as_a_fresh_one_does(v, q):
+    """One quaternion (and its matrix) asked by both runtimes' formulas, each twice, in turn:
+    every answer is the one a new operand with the same value gives."""
+    vec = EXACT.vec(*v)
+    with np.errstate(all="ignore"):
+        shared = _quat(NET10, *q)
+        shared_matrix = nx.Matrix4x4.create_from_quaternion(shared).transpose()
+        for _ in range(2):
+            for rt in (MONO, NET10):
+                fresh = _quat(NET10, *q)
+                fresh_matrix = nx.Matrix4x4._from_quaternion(fresh).transpose()
+                got = (rt.transform_by_quaternion(vec, shared), rt.transform_by_matrix(vec, shared_matrix))
+                want = (rt.transform_by_quaternion(vec, fresh), rt.transform_by_matrix(vec, fresh_matrix))
+                assert [_bits(g) for g in got] == [_bits(w) for w in want]
