@@ -8,8 +8,10 @@ ledges to walk off, stairs to climb, walls and corners to slide along, statics s
 landblock borders and corners (BSP, sphere, cylsphere; leaf-root and radius-0-leaf trees too) --
 strategies/objects.py; strategies/placement.py counts them per 1,000 scenes --
 or walls, floors, ramps, steps, platforms, posts, boxes, convex polygons scattered along a path), "obstacles"
-(spheres and cylspheres). DEFAULT_KINDS is what the port supports today; grow it as the port
-does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
+(spheres and cylspheres), "indoor" (dungeons of EnvCells joined by portals -- rooms, corridors,
+T-junctions, ramps at and around FloorZ, stairs, ledges, pits, narrow doorways, seams, turned cell
+frames, statics inside and across cells, portals to outside -- strategies/dungeon.py). DEFAULT_KINDS
+is what the port supports today; grow it as the port does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
 """
 
 from __future__ import annotations

@@ -110,6 +110,8 @@ class Piece:
     pit_depth: float = 0.0
     turn: int = 0            # the cell frame's yaw relative to the dungeon frame: 0, 90, 180 or 270
     floor_cull: int = int(CullMode.Clockwise)
+    seam_dz: float = 0.0     # the entry floor's height over the previous piece's exit floor (a seam's step)
+    lip: float = 0.0         # a flat floor reaching this far back past the entry wall, under the previous cell
 
 
 @dataclass
@@ -210,7 +212,7 @@ def cell_geometry(p: Piece, entry: Door | None, exit_: Door | None, side: Door |
         add(rect_x(xb, y0, y1, zp, 0.0, -1.0), boundary=False)
         strips += [(x0, xa, 0.0, 0.0), (xa, xb, zp, zp), (xb, x1, 0.0, 0.0)]
     else:
-        add(quad_z(x0, x1, y0, y1, 0.0, 0.0, 1.0), cull=p.floor_cull, boundary=floor_bounds)
+        add(quad_z(to_f32(x0 - p.lip), x1, y0, y1, 0.0, 0.0, 1.0), cull=p.floor_cull, boundary=floor_bounds)
         strips.append((x0, x1, 0.0, 0.0))
     add(quad_z(x0, x1, y0, y1, top, top, -1.0))  # ceiling, facing down
 
@@ -480,6 +482,7 @@ def lay_out(block: int, pieces, doors, entry=None, side=(), yaw: float = 0.0,
     starts, bases = [], []
     x, z = 0.0, 0.0
     for p in pieces:
+        z = to_f32(z + p.seam_dz)
         starts.append(x)
         bases.append(z)
         x, z = x + p.length, to_f32(z + exit_floor(p))
@@ -575,6 +578,12 @@ PIT_DEPTHS = dr.f32(0.2, 5.0)
 FLOOR_CULLS = st.sampled_from((int(CullMode.Clockwise), int(CullMode.Clockwise), int(CullMode.None_)))
 VISIBLE = st.sampled_from(("all", "all", "all", "neighbours", "missing"))
 BSP_ORDERS = st.sampled_from(((0, 1, 2, 3, 4, 5), (4, 5, 0, 1, 2, 3), (5, 3, 1, 4, 2, 0), (2, 0, 4, 1, 5, 3)))
+# a seam's step between two cells' floors, and a floor reaching under the previous cell
+SEAM_DZ = st.sampled_from((0.0, 0.0, 0.0, 0.0, 0.001, -0.001, 0.0005, 0.01, -0.01))
+LIPS = st.sampled_from((0.0, 0.0, 0.0, 0.001, 0.01, 0.05))
+# a doorway cell: a frame thinner than the mover, between two cells (its neighbours reached through it)
+FRAME_LENGTHS = dr.OneOf(st.sampled_from((0.05, 0.1, 0.2)), dr.f32(0.02, 1.0))
+OUTSIDE_Z = st.sampled_from((0.0, 0.01, 0.3, 0.02))
 POLICIES = st.sampled_from(("cross", "cross", "doorway", "wall", "ramp", "ramp", "stairs", "ledge", "ledge", "pit",
                             "tee", "static", "straddle", "seam", "outside", "fall"))
 # path lengths in mover radii past the target (a portal, an edge, a wall): within one step, or many
@@ -629,10 +638,11 @@ def _stairs(draw, door: Door, r: float) -> tuple[Piece, list]:
                  to_f32(door.height + 0.5), "stairs", rise, steps=n, turn=draw(TURNS)), [h]
 
 
-def draw_indoor(draw, spheres, step_heights) -> Scene:
-    """An indoor scene: a dungeon chain built for one policy and a mover across its feature.
-    `step_heights(geometry_steps)` gives the one_of branches for step heights (strategies/scenes.py)."""
-    policy = draw(POLICIES)
+def draw_indoor(draw, spheres, step_heights, policy: str | None = None) -> Scene:
+    """An indoor scene: a dungeon chain built for one policy (drawn, or the one given) and a mover
+    across its feature. `step_heights(geometry_steps)` gives the one_of branches for step heights
+    (strategies/scenes.py)."""
+    policy = policy or draw(POLICIES)
     block = draw(DUNGEON_BLOCKS)
     r = spheres[0].radius
     head = max(s.center[2] + s.radius for s in spheres)
@@ -682,7 +692,13 @@ def draw_indoor(draw, spheres, step_heights) -> Scene:
         pieces.append(tee)
         side = (1, sd, Piece("corridor", draw(CORRIDOR_LENGTHS), sd.width, sd.height, turn=draw(TURNS)))
     else:
-        pieces.append(_plain(draw, draw(ROOM_OR_CORRIDOR), d0, r))
+        if draw(QUARTERS) == 0:  # a thin doorway cell first: the next cell is reached through it
+            frame = Piece("frame", min(dr.take(draw, FRAME_LENGTHS), r), d0.width, d0.height, turn=draw(TURNS))
+            pieces.append(frame)
+            doors.append(Door(d0.width, d0.height, 0.0, 2, d0.faces_out))
+        nxt = _plain(draw, draw(ROOM_OR_CORRIDOR), d0, r)
+        pieces.append(Piece(nxt.kind, nxt.length, nxt.width, nxt.height, floor_cull=nxt.floor_cull, turn=nxt.turn,
+                            seam_dz=draw(SEAM_DZ), lip=draw(LIPS)))
     if draw(QUARTERS) == 0:  # a third cell beyond
         d1 = _door(draw, r, head, 2)
         d1 = Door(min(d1.width, pieces[-1].width), min(d1.height, pieces[-1].height), 0.0, 2, d1.faces_out)
@@ -692,7 +708,8 @@ def draw_indoor(draw, spheres, step_heights) -> Scene:
         entry = Door(min(d0.width, pieces[0].width), min(d0.height, pieces[0].height), 0.0, OUTSIDE_CELL,
                      draw(FACES_OUT))
     yaw = dr.take(draw, YAWS)
-    origin = (draw(ORIGIN_XY), draw(ORIGIN_XY), dr.take(draw, ORIGIN_Z))
+    # a dungeon with a way out stands on the ground, or just above it (the land cells matter)
+    origin = (draw(ORIGIN_XY), draw(ORIGIN_XY), draw(OUTSIDE_Z) if entry is not None else dr.take(draw, ORIGIN_Z))
     d = lay_out(block, pieces, doors, entry, side, yaw, origin)
     vis = draw(VISIBLE)
     built = build(d, "all" if vis == "missing" else vis, draw(BSP_ORDERS), draw(dr.BOOLEANS), draw(dr.BOOLEANS),

@@ -26,6 +26,7 @@ class Mutation:
     old: str
     new: str
     what: str
+    kinds: tuple[str, ...] | None = None  # the scene kinds its hunt draws (None: the default kinds)
 
 
 MUTATIONS: tuple[Mutation, ...] = (
@@ -162,6 +163,32 @@ MUTATIONS: tuple[Mutation, ...] = (
              "        if (self.part_array is not None and self.part_array.get_num_cylsphere() != 0",
              "        if (False and self.part_array is not None and self.part_array.get_num_cylsphere() != 0",
              "a cylsphere static is placed by its part's bbox (find_bbox_cell_list), not by find_cell_list"),
+    # ---- indoors (issue 12): hunted on the indoor kind (strategies/dungeon.py)
+    Mutation("portal_side_flipped", "dat/cell_portal.py",
+             "return (self.flags & PORTAL_FLAG_PORTAL_SIDE) == 0",
+             "return (self.flags & PORTAL_FLAG_PORTAL_SIDE) != 0",
+             "CellPortal.PortalSide read from the wrong sense of flag bit 0x2: a portal's far side is its near side",
+             ("indoor",)),
+    Mutation("cell_bsp_slack_dropped", "geom/bsp.py",
+             "check_rad = cur_sphere.radius + CELL_BSP_SLACK",
+             "check_rad = cur_sphere.radius",
+             "sphere_intersects_cell_bsp without its 0.01 m slack: a sphere about to reach a cell is outside it",
+             ("indoor",)),
+    Mutation("point_in_cell_close_is_outside", "geom/bsp.py",
+             "if side == Side.Front or side == Side.Close:",
+             "if side == Side.Front:",
+             "point_inside_cell_bsp drops the EPSILON band (Side.Close): a point on a cell's plane is outside it",
+             ("indoor",)),
+    Mutation("visible_cell_pruning_skipped", "cell/obj_cell.py",
+             "            if not found:\n                cell_array.remove_cell(cell)",
+             "            if False:\n                cell_array.remove_cell(cell)",
+             "find_cell_list keeps the cells the mover's EnvCell does not see",
+             ("indoor",)),
+    Mutation("outside_portal_test_off", "cell/env_cell.py",
+             "            if portal.other_cell_id == OUTSIDE_CELL_ID:\n                for sphere in spheres:",
+             "            if False:\n                for sphere in spheres:",
+             "find_transit_cells treats a portal to 0xFFFF as one to an unloaded cell: the outdoor cells never added",
+             ("indoor",)),
 )
 
 
@@ -252,6 +279,7 @@ def hunt(index: int, budget: int = BUDGET, seed: int = SEED, failures_dir=None, 
         return b
 
     t0 = time.monotonic()
+    kinds = kinds if kinds is not None else MUTATIONS[index].kinds
     r = run_campaign(port, oracle, kinds=kinds, n=budget, seed=seed, failures_dir=failures_dir, database=None,
                      workers=1)
     out = {"name": MUTATIONS[index].name, "caught": bool(r.found), "scenes_to_find": calls["first"],

@@ -9,11 +9,9 @@ portal polygon 1 the wall x = -5.
 
 from __future__ import annotations
 
-import struct
-
 from acconform.flags import CullMode
 from acconform.numerics import to_f32
-from acconform.scene import (BSPLeaf, BSPNode, CellBSPLeaf, CellBSPNode, CellPortalRec, CellStructRec, ContactPlane,
+from acconform.scene import (BSPLeaf, BSPNode, CellBSPNode, CellPortalRec, CellStructRec, ContactPlane,
                              Environment, EnvCell, Frame, Landblock, Mover, PlaneRec, PolygonRec, Position, Scene,
                              SphereRec)
 from acconform.port.land.lscape import LScape
@@ -24,9 +22,6 @@ ENV_ID = 0x0D000001
 HALF = 5.0
 HEIGHT = 4.0
 ROOM_Z = 20.0  # room floors sit at this z in the landblock (the terrain below is at 0)
-
-_u16 = struct.Struct("<H")
-
 
 def tag(name: str) -> bytes:
     """A node tag as the DAT holds it: ReadNode reverses the four ASCII bytes it reads."""

@@ -16,7 +16,7 @@ from acconform.port.dat.bsp_node import BSP_TYPE_CELL, BSP_TYPE_DRAWING, read_no
 from acconform.port.dat.bsp_portal import BSPPortal
 from acconform.port.dat.env_cell import EnvCell as DatEnvCell
 from acconform.port.dat.environment import Environment as DatEnvironment
-from acconform.port.errors import ArgumentException, InvalidCastException, NullReferenceException
+from acconform.port.errors import ArgumentException, InvalidCastException
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom.bsp import BoundingType
 from acconform.port.geom.sphere import Sphere

@@ -14,7 +14,6 @@ from acconform.port.dat.cell_portal import CellPortal
 from acconform.port.dat.stab import Stab
 from acconform.port.frame import AFrame, Position
 from acconform.port.land.lscape import POOL
-from acconform.port.transition.cell_array import CellArray
 from acconform.port.vec import Sidedness, intersect_box
 from acconform.numerics import Plane
 from indoor_rooms import LB, indoor_scene, portal, room, two_rooms, world
