@@ -49,7 +49,6 @@ ENVIRONMENT_ID = 0x0D000100
 # child as well (and the other way round): a sphere the BSP sends one way only (dist >= radius -
 # EPSILON) still reaches polygons that close behind the plane
 SPLIT_TOL = 0.05
-MAX_DEPTH = 8
 
 
 # ---------------------------------------------------------------- geometry in a cell's frame
@@ -262,11 +261,13 @@ def _dist(plane: PlaneRec, p) -> float:
     return n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + plane.d
 
 
-def physics_bsp(physics: list) -> BSPNode | BSPLeaf:
+def physics_bsp(physics: list, max_depth: int = 4) -> BSPNode | BSPLeaf:
     """A physics BSP over the cell's physics polygons: each node splits on one polygon's plane; a
     polygon goes to each side it reaches within SPLIT_TOL, so every sphere the tree sends one way
     finds every polygon it can touch there. A leaf behind a boundary polygon's plane (outside the
-    cell) is solid. Node and leaf spheres bound the polygons below them."""
+    cell) is solid. Node and leaf spheres bound the polygons below them. Below `max_depth` nodes
+    a leaf holds what is left (a deeper tree costs both sides more per scene, and the corpus more
+    bytes, for the same polygons)."""
     polys = [rec for rec, _ in physics]
     planes = [plane_of(rec.vertices) for rec in polys]
     boundary = [b for _, b in physics]
@@ -286,7 +287,7 @@ def physics_bsp(physics: list) -> BSPNode | BSPLeaf:
             size = max(len(front), len(back))
             if (len(front) < len(ids) or len(back) < len(ids)) and (best is None or size < best[0]):
                 best = (size, k, front, back)
-        if best is None or depth == MAX_DEPTH:
+        if best is None or depth == max_depth:
             return BSPLeaf(tuple(ids), solid, sphere_of(ids))
         _, k, front, back = best
         rest = [c for c in candidates if planes[c] != planes[k]]
@@ -398,7 +399,7 @@ class Built:
 
 
 def build(d: Dungeon, visible: str = "all", bsp_order=(0, 1, 2, 3, 4, 5), back_leaves=False, ramp_floor=False,
-          missing_visible: int | None = None) -> Built:
+          missing_visible: int | None = None, bsp_depth: int = 4) -> Built:
     """The Environment and EnvCells of a laid-out dungeon. `visible`: "all" (every cell sees every
     other) or "neighbours" (the portal neighbours only); `missing_visible`: a cell whose portal
     neighbours are left out of its visible list (find_transit_cells then adds the id alone)."""
@@ -424,7 +425,7 @@ def build(d: Dungeon, visible: str = "all", bsp_order=(0, 1, 2, 3, 4, 5), back_l
             bsp = _turn_bsp(bsp, p.turn)
         physics = [r for r, _ in g.physics]
         rec = CellStructRec(tuple(g.polygons), tuple(g.portals), tuple(physics),
-                            physics_bsp(g.physics), bsp)
+                            physics_bsp(g.physics, bsp_depth), bsp)
         key = rec
         if key not in struct_index:
             struct_index[key] = len(structs)
@@ -577,6 +578,7 @@ PIT_LENGTHS = dr.OneOf(st.sampled_from((0.1, 0.5, 1.0)), dr.f32(0.05, 4.0))
 PIT_DEPTHS = dr.f32(0.2, 5.0)
 FLOOR_CULLS = st.sampled_from((int(CullMode.Clockwise), int(CullMode.Clockwise), int(CullMode.None_)))
 VISIBLE = st.sampled_from(("all", "all", "all", "neighbours", "missing"))
+BSP_DEPTHS = st.sampled_from((3, 3, 4, 6, 1))
 BSP_ORDERS = st.sampled_from(((0, 1, 2, 3, 4, 5), (4, 5, 0, 1, 2, 3), (5, 3, 1, 4, 2, 0), (2, 0, 4, 1, 5, 3)))
 # a seam's step between two cells' floors, and a floor reaching under the previous cell
 SEAM_DZ = st.sampled_from((0.0, 0.0, 0.0, 0.0, 0.001, -0.001, 0.0005, 0.01, -0.01))
@@ -713,7 +715,7 @@ def draw_indoor(draw, spheres, step_heights, policy: str | None = None) -> Scene
     d = lay_out(block, pieces, doors, entry, side, yaw, origin)
     vis = draw(VISIBLE)
     built = build(d, "all" if vis == "missing" else vis, draw(BSP_ORDERS), draw(dr.BOOLEANS), draw(dr.BOOLEANS),
-                  missing_visible=0 if vis == "missing" else None)
+                  missing_visible=0 if vis == "missing" else None, bsp_depth=draw(BSP_DEPTHS))
 
     # the mover: in piece 0 (or the feature piece), heading for the feature
     p0 = pieces[0]

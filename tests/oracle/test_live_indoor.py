@@ -111,3 +111,8 @@ def test_the_port_matches_ace_on_the_small_indoor_scenes(live, name):
 
     scene = SCENES[name]
     assert run_scene(scene, runtime=runtime_named(live.versions.runtime)) == live.run(scene)
+
+
+def test_indoors_the_server_and_client_modes_give_the_same_physics(live):
+    for scene in (two_rooms(), room_with_static(), SCENES["box room: into the east wall"]):
+        assert live.run(scene.replace(engine_mode="client")) == live.run(scene)
