@@ -86,7 +86,7 @@ class Record:
                       Versions.from_json(r["versions"]) if r.has("versions") else Versions())
 
 
-_READERS = {SCENE_FORMAT: Scene.from_json, SCENE_FORMAT_V1: Scene.from_json, OUTCOME_FORMAT_V1: Outcome.from_json, OUTCOME_FORMAT: Outcome.from_json,
+_READERS = {SCENE_FORMAT_V1: Scene.from_json, SCENE_FORMAT: Scene.from_json, OUTCOME_FORMAT_V1: Outcome.from_json, OUTCOME_FORMAT: Outcome.from_json,
             CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
 
 

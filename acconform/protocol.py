@@ -6,13 +6,13 @@
 1. The implementation starts and writes one handshake line::
 
        {"protocol": "acconform.protocol/1", "name": "my-port", "version": "1.2",
-        "kinds": ["terrain", "bsp", "obstacles"], "features": ["engine.client", ...],
+        "kinds": ["terrain", "bsp", "obstacles", "indoor"], "features": ["engine.client", ...],
         "modes": ["exact"]}
 
 2. For each scene the harness writes one request line and the implementation answers with one
    response line carrying the same id::
 
-       {"id": 7, "mode": "exact", "scene": {... acconform.scene/1 ...}}
+       {"id": 7, "mode": "exact", "scene": {... acconform.scene/2 ...}}
        {"id": 7, "outcome": {... acconform.outcome/1 ...}}
 
    A physics exception is an outcome with ``error`` set (``"NullReferenceException: ..."``).
@@ -47,7 +47,7 @@ from .outcome import Outcome
 from .scene import Scene
 
 PROTOCOL = "acconform.protocol/1"
-KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
+KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor")
 MODES: tuple[str, ...] = ("exact", "fast")
 
 # Verdict prefixes: the `error` of the outcome the harness records when the implementation fails.
@@ -70,6 +70,8 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "mover.scaled": (lambda s: s.mover.scale != 1.0, "a mover whose scale is not 1"),
     "object.scaled": (lambda s: any(o.scale != 1.0 for o in s.objects), "a static object whose scale is not 1"),
     "water": (_water, "terrain with water vertices"),
+    "indoor.statics": (lambda s: any(o.position.cell & 0xFFFF >= 0x100 for o in s.objects),
+                       "static objects inside EnvCells (DAT stabs, placed when ACE loads the cell)"),
 }
 
 

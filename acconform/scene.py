@@ -2,7 +2,8 @@
 
 A scene is what both the port and the oracle take. Format ``acconform.scene/2`` (README's
 "Scene format" section documents every field); ``acconform.scene/1`` files still read (a /1 scene
-is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with terrain). All floats are float32 values held as Python
+is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with terrain, and
+such a scene is written as /1, so outdoor files, corpus records and their keys stay as they were). All floats are float32 values held as Python
 floats; ids are uint32. Construction from JSON validates and names the bad field; records built
 in code (e.g. by the strategies) are checked the same way by `validate_scene`.
 """
@@ -18,7 +19,7 @@ from .errors import InvalidScene
 from .flags import CullMode, PhysicsState, TransientState, flag_names
 
 FORMAT = "acconform.scene/2"
-FORMAT_V1 = "acconform.scene/1"  # read (outdoor only), never written
+FORMAT_V1 = "acconform.scene/1"  # what an outdoor scene is written as (every /1 reader reads it)
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]  # (w, x, y, z), as AC's own files write frames
@@ -583,8 +584,13 @@ class Scene:
     environments: tuple[Environment, ...] = ()
     env_cells: tuple[EnvCell, ...] = ()
 
+    @property
+    def indoor(self) -> bool:
+        """Whether the scene needs /2: EnvCells, Environments or a landblock without terrain."""
+        return bool(self.env_cells or self.environments) or not all(lb.has_terrain for lb in self.landblocks)
+
     def to_json(self):
-        d = {"format": FORMAT}
+        d = {"format": FORMAT if self.indoor else FORMAT_V1}
         if self.name:
             d["name"] = self.name
         d["engine"] = {"mode": self.engine_mode}
@@ -681,7 +687,10 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         where = _p(path, "mover.contact_plane.cell")
         _check_cell_id(where, scene.mover.contact_plane.cell)
         check_landblock(where, scene.mover.contact_plane.cell)
-    _check_cell_id(_p(path, "mover.end.cell"), scene.mover.end.cell)
+    end = _p(path, "mover.end.cell")
+    _check_cell_id(end, scene.mover.end.cell)
+    if scene.mover.end.cell & 0xFFFF >= ENV_CELL_FIRST:  # an outdoor end may lie in a landblock not listed (ACE's verdict)
+        check_landblock(end, scene.mover.end.cell)
     ids = set()
     for i, o in enumerate(scene.objects):
         where = _p(path, f"objects[{i}]")

@@ -102,7 +102,8 @@ class _Inferrer:
             for v in node.values():
                 self._widen(v, families)
 
-    def finish(self, root: dict, title: str, fmt: str) -> dict:
+    def finish(self, root: dict, title: str, fmt: str | tuple[str, ...]) -> dict:
+        """`fmt`: the format string the documents carry, or the several a reader reads."""
         out_defs: dict[str, dict] = {}
         while len(out_defs) < len(self.defs):  # a definition's own samples may add definitions
             for name in list(self.defs):
@@ -127,7 +128,7 @@ class _Inferrer:
                     changed = True
         for d in out_defs.values():
             self._widen(d, families)
-        root["properties"]["format"] = {"const": fmt}
+        root["properties"]["format"] = {"const": fmt} if isinstance(fmt, str) else {"enum": list(fmt)}
         return {"$schema": DRAFT, "title": title, **root, "$defs": dict(sorted(out_defs.items()))}
 
 
@@ -156,11 +157,12 @@ def _every_optional_field(scene):
 def schemas() -> tuple[dict, dict]:
     """(scene schema, outcome schema), inferred from the records' JSON for the fixed sample."""
     from .outcome import FORMAT as OUTCOME_FORMAT, Outcome
-    from .scene import FORMAT as SCENE_FORMAT
+    from .scene import FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1
 
     scenes, outcomes = _sample()
     s = _Inferrer(nonfinite_floats=False)
-    scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene", SCENE_FORMAT)
+    # an outdoor scene is written as /1, an indoor one as /2
+    scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene", (SCENE_FORMAT_V1, SCENE_FORMAT))
     o = _Inferrer(nonfinite_floats=True)
     docs = [x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
     outcome = o.finish(o._plain(docs), "acconform outcome", OUTCOME_FORMAT)

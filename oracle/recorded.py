@@ -1,7 +1,7 @@
 """The recorded oracle: ACE's answers replayed from a corpus, so CI needs no ACE.
 
 Corpus layout: a directory of gzip'd JSON-lines shards named ``<kind>-<NNNN>.jsonl.gz`` (kind:
-terrain, bsp, obstacles), one `acconform.record/1` document per line (scene, outcome, versions).
+terrain, bsp, obstacles, indoor), one `acconform.record/1` document per line (scene, outcome, versions).
 Records are keyed by `scene_key`: the SHA-256 of the scene's canonical JSON (sorted keys, no
 whitespace), so an equal scene finds its record whatever its name or field order.
 
@@ -49,11 +49,12 @@ class CorpusCorrupt(AcconformError):
 def scene_key(scene: Scene) -> str:
     doc = scene.to_json()
     doc.pop("name", None)  # a scene's name is a label, not part of the physics
-    doc.pop("format", None)  # a /1 scene and the /2 scene it reads as are the same scene
     return hashlib.sha256(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
 
 def scene_kind(scene: Scene) -> str:
+    if scene.env_cells:
+        return "indoor"
     kinds = {o.shape.kind for o in scene.objects}
     if "bsp" in kinds:
         return "bsp"
@@ -212,7 +213,6 @@ class RecordedOracle:
 def _doc_key(doc) -> str:
     scene = dict(doc["scene"])
     scene.pop("name", None)
-    scene.pop("format", None)
     # the same canonical form scene_key hashes: the stored scene JSON is what Scene.to_json wrote
     return hashlib.sha256(json.dumps(scene, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 

@@ -9,13 +9,15 @@ ACE's own Unpack (tests/oracle/test_live.py).
 from __future__ import annotations
 
 import struct
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
 from acconform import dat
-from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, Frame, PlaneRec, PolygonRec, Position,
-                             SphereRec, SphereShape, StaticObject)
+from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, Environment, Frame, PlaneRec, PolygonRec,
+                             Position, SphereRec, SphereShape, StaticObject)
+from oracle import indoor_scenes
 
 
 class DatReader:
@@ -226,3 +228,145 @@ def test_the_mover_is_a_setup_with_its_spheres_and_step_heights_and_one_empty_me
     assert s["dims"] == (0.0, 0.0, f32(0.4), 1.5)  # Height and Radius 0: ACE's transition never reads them
     g = read_gfx_obj(recs.records[0].data)
     assert g["flags"] == 0 and g["vertices"] == {}
+
+
+# ---------------------------------------------------------------- indoors: Environment, EnvCell, LandblockInfo
+
+def read_polygons(r: DatReader, n: int) -> dict:
+    polys = {}
+    for _ in range(n):
+        key = r.take("H")
+        npts, stip, sides, pos_s, neg_s = r.take("BBihh")
+        polys[key] = (stip, sides, pos_s, neg_s, [r.take("h") for _ in range(npts)])
+        assert stip & 0xC == 0xC  # no UV indices follow
+    return polys
+
+
+def read_cell_node(r: DatReader):
+    """BSPNode.ReadNode with BSPType.Cell: ("leaf", index) or ("node", type, plane, pos, neg); DatLoader's
+    switch: BPnn/BPIn a front child, BpIN/BpnN a back child, BPIN/BPnN both, any other tag none."""
+    t = r.tag()
+    r.take("I")
+    if t == "LEAF":
+        return ("leaf", r.take("i"))
+    plane = r.take("4f")
+    pos = read_cell_node(r) if t in ("BPnn", "BPIn", "BPIN", "BPnN") else None
+    neg = read_cell_node(r) if t in ("BpIN", "BpnN", "BPIN", "BPnN") else None
+    return ("node", t, plane, pos, neg)
+
+
+def align(r: DatReader):  # BinaryReaderExtensions.AlignBoundary
+    r.pos += -r.pos % 4
+
+
+def read_cell_struct(r: DatReader) -> dict:
+    npolys, nphysics, nportals = r.take("III")
+    vtype, n = r.take("iI")
+    assert vtype == 1
+    verts = {}
+    for _ in range(n):
+        key, nuv = r.take("HH")
+        verts[key] = r.take("3f")
+        assert r.take("3f") == (0.0, 0.0, 0.0) and nuv == 0
+    out = {"vertices": verts, "polygons": read_polygons(r, npolys), "portals": [r.take("H") for _ in range(nportals)]}
+    align(r)
+    out["cell_bsp"] = read_cell_node(r)
+    out["physics_polygons"] = read_polygons(r, nphysics)
+    out["physics_bsp"] = read_node(r)
+    assert r.take("I") == 0  # no drawing BSP
+    align(r)
+    return out
+
+
+def read_environment(data: bytes) -> dict:
+    r = DatReader(data)
+    env_id, n = r.take("II")
+    cells = {}
+    for _ in range(n):
+        key = r.take("I")
+        cells[key] = read_cell_struct(r)
+    r.end()
+    return {"id": env_id, "cells": cells}
+
+
+def read_env_cell(data: bytes) -> dict:
+    r = DatReader(data)
+    out = {"id": r.take("I"), "flags": r.take("I")}
+    r.take("I")  # the cell id again
+    nsurf, nportals, nvisible = r.take("BBH")
+    out["surfaces"] = [r.take("H") for _ in range(nsurf)]
+    out["environment"] = 0x0D000000 | r.take("H")
+    out["cell_structure"] = r.take("H")
+    out["frame"] = (r.take("3f"), r.take("4f"))
+    out["portals"] = [r.take("4H") for _ in range(nportals)]
+    out["visible"] = [r.take("H") for _ in range(nvisible)]
+    out["stabs"] = []
+    if out["flags"] & 2:
+        out["stabs"] = [(r.take("I"), r.take("3f"), r.take("4f")) for _ in range(r.take("I"))]
+    assert not out["flags"] & 8
+    r.end()
+    return out
+
+
+def read_landblock_info(data: bytes) -> dict:
+    r = DatReader(data)
+    out = {"id": r.take("I"), "num_cells": r.take("I"), "objects": r.take("I")}
+    out["buildings"], out["pack_mask"] = r.take("HH")
+    r.end()
+    return out
+
+
+def test_an_environment_holds_each_cell_structure_by_index_to_its_last_aligned_byte():
+    rec = dat.environment_record(indoor_scenes.ENVIRONMENT)
+    assert rec.id == indoor_scenes.ENV and rec.kind == "Environment" and len(rec.data) % 4 == 0
+    env = read_environment(rec.data)
+    assert env["id"] == indoor_scenes.ENV and sorted(env["cells"]) == [0, 1, 2]
+    for k, struct_rec in enumerate(indoor_scenes.ENVIRONMENT.cell_structs):
+        got = env["cells"][k]
+        verts = got["vertices"]
+        polys = struct_rec.polygons + struct_rec.physics_polygons
+        assert len(verts) == len({tuple(map(f32, v)) for p in polys for v in p.vertices})
+        for key, p in enumerate(struct_rec.physics_polygons):
+            stip, sides, pos_s, neg_s, ids = got["physics_polygons"][key]
+            assert [verts[i] for i in ids] == [tuple(map(f32, v)) for v in p.vertices] and sides == p.sides_type
+        for key, p in enumerate(struct_rec.polygons):
+            assert [verts[i] for i in got["polygons"][key][4]] == [tuple(map(f32, v)) for v in p.vertices]
+        assert got["portals"] == list(struct_rec.portals)
+
+
+def test_a_cell_bsp_node_says_by_its_tag_which_children_follow_and_carries_no_sphere():
+    from acconform.scene import CellBSPLeaf, CellBSPNode, CellStructRec
+
+    plane = PlaneRec((0.0, 0.0, 1.0), f32(-0.5))
+    tree = CellBSPNode(plane, CellBSPNode(plane, None, CellBSPLeaf()), CellBSPNode(plane, CellBSPLeaf(), None))
+    lone = CellBSPNode(plane, None, None)
+    p = (0.0, 0.0, 1.0, f32(-0.5))
+    for root, want in ((tree, ("node", "BPIN", p, ("node", "BpIN", p, None, ("leaf", 0)), ("node", "BPIn", p, ("leaf", 1), None))),
+                       (lone, ("node", "Bpnn", p, None, None)), (CellBSPLeaf(), ("leaf", 0))):
+        rec = CellStructRec((), (), (PolygonRec(SQUARE),), LEAF_A, root)
+        got = read_environment(dat.environment_record(Environment(0x0D000002, (rec,))).data)["cells"][0]
+        assert got["cell_bsp"] == want
+
+
+def test_an_env_cell_holds_its_frame_portals_visible_cells_and_the_statics_inside_it_as_stabs():
+    scene = indoor_scenes.room_with_static()
+    (cell,) = scene.env_cells
+    (record,) = [r for r in dat.cell_dat_records(scene) if r.kind == "EnvCell"]
+    got = read_env_cell(record.data)
+    assert got["id"] == record.id == cell.id and got["flags"] == 2 and got["surfaces"] == []
+    assert got["environment"] == indoor_scenes.ENV and got["cell_structure"] == 0
+    assert got["frame"] == (indoor_scenes.ROOM_A, (1.0, 0.0, 0.0, 0.0)) and got["portals"] == [] and got["visible"] == []
+    obj = scene.objects[0]
+    assert got["stabs"] == [(dat.static_records(obj, 0).did, obj.position.frame.origin, obj.position.frame.orientation)]
+    a = read_env_cell(dat.env_cell_record(indoor_scenes.two_rooms().env_cells[0], ()).data)
+    assert a["flags"] == 0 and a["portals"] == [(0, 0, 0x0101, 0)] and a["visible"] == [0x0101] and a["stabs"] == []
+    assert read_env_cell(dat.env_cell_record(replace(cell, seen_outside=True), ()).data)["flags"] == 1
+
+
+def test_a_landblock_with_env_cells_gets_a_landblock_info_counting_them():
+    records = dat.cell_dat_records(indoor_scenes.two_rooms())
+    assert [(r.kind, r.id) for r in records] == [("EnvCell", indoor_scenes.BLOCK | 0x0100), ("EnvCell", indoor_scenes.BLOCK | 0x0101),
+                                                 ("LandblockInfo", indoor_scenes.BLOCK | 0xFFFE)]
+    info = read_landblock_info(records[-1].data)
+    assert info == {"id": indoor_scenes.BLOCK | 0xFFFE, "num_cells": 2, "objects": 0, "buildings": 0, "pack_mask": 0}
+    assert dat.cell_dat_records(replace(indoor_scenes.two_rooms(), env_cells=())) == ()

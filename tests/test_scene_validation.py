@@ -90,8 +90,8 @@ def test_unknown_flag_names_are_refused_listing_the_known_ones():
 
 
 def test_an_unknown_format_version_is_refused():
-    assert "format: unknown format version '2' (this acconform reads acconform.scene/1)" in refused(
-        scene_with(lambda d: d.__setitem__("format", "acconform.scene/2")))
+    assert "format: unknown format version '3' (this acconform reads acconform.scene/2)" in refused(
+        scene_with(lambda d: d.__setitem__("format", "acconform.scene/3")))
     assert "unknown format 'somethingelse/1'" in refused(scene_with(lambda d: d.__setitem__("format", "somethingelse/1")))
 
 
@@ -160,9 +160,11 @@ def test_unknown_and_missing_fields_are_named():
     assert "mover.step_down_height: missing required field" in refused(scene_with(lambda d: d["mover"].pop("step_down_height")))
 
 
-def test_indoor_cells_are_refused_because_scenes_have_no_env_cells():
-    doc = scene_with(lambda d: d["mover"]["begin"].__setitem__("cell", "0xA9B40100"))
-    assert "mover.begin.cell: cell A9B40100 is not an outdoor land cell" in refused(doc)
+def test_a_cell_that_is_neither_outdoor_nor_an_env_cell_is_refused():
+    doc = scene_with(lambda d: d["mover"]["end"].__setitem__("cell", "0xA9B40041"))
+    assert "mover.end.cell: cell A9B40041 is neither an outdoor land cell (low word 0x0001..0x0040) nor an EnvCell" in refused(doc)
+    doc = scene_with(lambda d: d["mover"]["begin"].__setitem__("cell", "0xA9B4FFFE"))
+    assert "mover.begin.cell: cell A9B4FFFE is neither" in refused(doc)
 
 
 def test_a_landblock_id_must_end_in_ffff_and_appear_once():

@@ -29,3 +29,17 @@ def test_the_scene_schema_covers_every_field_a_scene_writes_and_the_bsp_tree_rec
     assert set(scene["$defs"]) >= {"kind:bsp", "kind:sphere", "kind:cylsphere"}
     heights = scene["properties"]["landblocks"]["items"]["properties"]["heights"]
     assert heights["minItems"] == heights["maxItems"] == 81
+
+
+def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(generated):
+    scene, _ = generated
+    props = scene["properties"]
+    assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2"]}
+    assert {"environments", "env_cells"} <= set(props) and not {"environments", "env_cells"} & set(scene["required"])
+    landblock = props["landblocks"]["items"]
+    assert landblock["required"] == ["id"] and {"heights", "terrain"} <= set(landblock["properties"])
+    cell = props["env_cells"]["items"]["properties"]
+    assert {"id", "origin", "orientation", "environment", "cell_structure", "portals", "visible_cells", "seen_outside"} <= set(cell)
+    assert {"polygon", "other_cell", "other_portal", "flags"} <= set(cell["portals"]["items"]["properties"])
+    structure = props["environments"]["items"]["properties"]["cell_structs"]["items"]["properties"]
+    assert set(structure) == {"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"}

@@ -33,9 +33,19 @@ def describe_scene(scene) -> list[str]:
     out = [f"scene {scene.name!r}" if scene.name else "scene", f"  engine: {scene.engine_mode}"]
     table = scene.land_height_table
     for lb in scene.landblocks:
+        if not lb.has_terrain:
+            out.append(f"  landblock {_id(lb.id)}: no terrain")
+            continue
         zs = [table[h] for h in lb.heights]
         water = sum(is_water_word(t) for t in lb.terrain)
         out.append(f"  landblock {_id(lb.id)}: heights {min(zs):g}..{max(zs):g} m, {water} water vertices")
+    for env in scene.environments:
+        out.append(f"  environment {_id(env.id)}: {len(env.cell_structs)} cell structures")
+    for c in scene.env_cells:
+        portals = ", ".join(f"0x{p.other_cell:04X}" for p in c.portals) or "none"
+        out.append(f"  EnvCell {_id(c.id)} at {_v(c.frame.origin)} rot {_v(c.frame.orientation)}: structure "
+                   f"{c.cell_structure} of {_id(c.environment)}, portals to {portals}, "
+                   f"{len(c.visible_cells)} visible cells{', seen outside' if c.seen_outside else ''}")
     for o in scene.objects:
         s = o.shape
         if s.kind == "bsp":

@@ -49,6 +49,7 @@ namespace Acconform.Oracle
         static readonly List<uint> sceneRecords = new List<uint>();  // DAT ids this scene put in the portal FileCache
         static ConcurrentDictionary<uint, FileType> portalFiles;  // DatManager.PortalDat.FileCache
         static ConcurrentDictionary<uint, FileType> cellFiles;  // DatManager.CellDat.FileCache
+        static bool sceneHasCellRecords;  // without any, ACE cannot load an EnvCell (ReadFromDat throws first)
         // per static, in scene order: its cell id and DAT id, and the PhysicsObj placed outdoors (null for a
         // static in an EnvCell: ACE makes that one when it loads the cell, EnvCell.init_static_objects)
         static readonly List<uint> staticCellIds = new List<uint>();
@@ -288,9 +289,9 @@ namespace Acconform.Oracle
                 obj.leave_cell(false);
             }
             sceneStatics.Clear();
+            if (!sceneHasCellRecords) return;
             foreach (var lb in sceneLandblocks.Values)
             {
-                if (lb.LandCells.Count <= 64) continue;
                 var indoor = new List<int>();
                 foreach (var key in lb.LandCells.Keys) if (key >= 0x100) indoor.Add(key);
                 foreach (var key in indoor)
@@ -374,7 +375,8 @@ namespace Acconform.Oracle
             if (!GfxObjCache.GfxObjs.IsEmpty) GfxObjCache.GfxObjs.Clear();  // keyed by DAT id: ids repeat across scenes
             foreach (var id in sceneRecords) portalFiles.TryRemove(id, out _);
             sceneRecords.Clear();
-            if (!cellFiles.IsEmpty) cellFiles.Clear();  // the scene's records and anything ReadFromDat cached
+            if (sceneHasCellRecords) cellFiles.Clear();  // the scene's records and anything ReadFromDat cached
+            sceneHasCellRecords = false;
             staticCellIds.Clear();
             staticDids.Clear();
             staticObjs.Clear();
@@ -570,7 +572,10 @@ namespace Acconform.Oracle
             else throw new InvalidDataException("acconform facade: unknown DAT record kind " + kind);
             file.Unpack(new BinaryReader(new MemoryStream(ms.GetBuffer(), off, len, false)));
             if (kind >= 3)
+            {
                 cellFiles[id] = file;
+                sceneHasCellRecords = true;
+            }
             else
             {
                 portalFiles[id] = file;

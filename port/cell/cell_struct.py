@@ -6,16 +6,28 @@ each), the portals are the polygons the DAT portal ids name, and the three trees
 BSPCache.Get (off: a new BSPTree each): the cell tree (over the physics polygons, though its
 nodes name none), the drawing tree (over the polygons, when the DAT has one) and the physics tree.
 The cell tree answers the three containment questions in the cell's local frame.
+
+Across runs the port remembers the CellStruct built from a structure of an Environment record's
+exact bytes (`remembered`, keyed by the bytes, the structure's id and the mode): building the
+polygons' planes and the trees is about 40% of an indoor run. The answer cannot change:
+CellStruct(DatLoader CellStruct) is a function of those bytes, and nothing after construction
+writes to a CellStruct, its polygons, vertices or BSP nodes (sharing one between cells is
+unobservable: nothing compares polygons or nodes by identity). A record the run does not hold is
+never remembered.
 """
 
 from __future__ import annotations
 
 from acconform.numerics import Mode
 
-from ..anchors import anchor
+from ..anchors import anchor, harness
 from ..errors import KeyNotFoundException
 from ..geom.bsp import BoundingType, BSPTree
 from ..geom.polygon import Polygon
+
+
+BUILT_LIMIT = 256  # remembered CellStructs before the memory forgets them all
+BUILT: dict[tuple, "CellStruct"] = {}
 
 
 class CellStruct:
@@ -84,3 +96,24 @@ class CellStruct:
     @anchor("CCellStruct::point_in_cell", "CellStruct.cs:point_in_cell")
     def point_in_cell(self, point) -> bool:
         return self.cell_bsp.point_inside_cell_bsp(point)
+
+
+@harness("CellStruct(DatLoader CellStruct) for an Environment's structure, remembered across runs by the record's bytes")
+def remembered(portal_dat, environment_id: int, cell_structure_id: int, cell_struct) -> CellStruct:
+    """``new CellStruct(cellStruct)`` for structure `cell_structure_id` of the Environment record
+    `environment_id` of the run's portal DAT (see the module docstring)."""
+    data = portal_dat.records.get(environment_id)
+    key = (data, cell_structure_id, portal_dat.mode) if data is not None else None
+    built = BUILT.get(key) if key is not None else None
+    if built is None:
+        built = CellStruct.from_dat(cell_struct, portal_dat.mode)
+        if key is not None:
+            if len(BUILT) >= BUILT_LIMIT:
+                BUILT.clear()
+            BUILT[key] = built
+    return built
+
+
+@harness("empties the CellStructs remembered across runs")
+def clear_built() -> None:
+    BUILT.clear()

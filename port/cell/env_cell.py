@@ -34,6 +34,7 @@ from ..geom.bsp import BoundingType
 from ..geom.sphere import Sphere
 from ..dat.unpackable_extensions import dictionary_add
 from ..vec import Sidedness, intersect_box
+from . import cell_struct as cell_struct_module
 from .cell_struct import CellStruct
 from .obj_cell import ObjCell
 from . import land_cell
@@ -101,7 +102,8 @@ class EnvCell(ObjCell):
         if c.environment is not None and c.environment.cells is not None:
             cell_struct = c.environment.cells.get(c.cell_structure_id)
             if cell_struct is not None:
-                c.cell_structure = CellStruct.from_dat(cell_struct, mode)
+                c.cell_structure = cell_struct_module.remembered(portal_dat, c.environment_id, c.cell_structure_id,
+                                                                 cell_struct)  # new CellStruct(cellStruct)
 
         c.num_surfaces = len(env_cell.surfaces)
         return c

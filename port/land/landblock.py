@@ -13,7 +13,7 @@ GetCell (and so GetZ) reaches ACE's static LScape; here the run's LScape is the 
 from __future__ import annotations
 
 from acconform.numerics import Mode, Vector3, wrap_i32, wrap_u32
-from acconform.port.anchors import anchor
+from acconform.port.anchors import anchor, harness
 from acconform.port.constants import EPSILON
 from acconform.port import land_defs
 from acconform.port.cell.land_cell import LandCell
@@ -32,7 +32,7 @@ class Landblock(LandblockStruct):
     @anchor("CLandBlock::CLandBlock", "Landblock.cs:Landblock(CellLandblock)")
     def __init__(self, record, land_height_table, mode: Mode):
         """From a scene Landblock record (id 0xXXYYFFFF, 81 heights, 81 terrain words)."""
-        super().__init__(record.id, record.heights, record.terrain, land_height_table, mode)
+        super().__init__(record.id, record.heights, record.terrain, land_height_table, mode, lazy=not record.has_terrain)
         # Landblock.Init
         self.dir = Direction.Unknown
         self.closest = (-1.0, -1.0)
@@ -52,8 +52,17 @@ class Landblock(LandblockStruct):
 
     @anchor(None, "Landblock.cs:PostInit")
     def post_init(self) -> None:
-        """init_landcell; init_buildings and init_static_objs have nothing to do without Info."""
+        """init_landcell; init_buildings and init_static_objs have nothing to do without Info. A
+        landblock without terrain (built lazily) has no land cells yet: terrain_generated does
+        init_landcell's work on them when they are built."""
+        self.post_init_done = True
         self.init_landcell()
+
+    @harness("init_landcell's work on a lazy landblock's cells, built after PostInit")
+    def terrain_generated(self, cells: dict) -> None:
+        if self.__dict__.get("post_init_done"):
+            for land_cell in cells.values():
+                land_cell.cur_landblock = self
 
     @anchor("CLandBlock::init_landcell", "Landblock.cs:init_landcell")
     def init_landcell(self) -> None:

@@ -17,7 +17,7 @@ from acconform.flags import CullMode
 from acconform.numerics import Mode, Vector3, cs_fmod, wrap_i32, wrap_u32
 
 from ..constants import WATER_DEPTH_PARTIAL_WATER, WATER_DEPTH_DRY
-from acconform.port.anchors import anchor
+from acconform.port.anchors import anchor, harness
 from acconform.port.geom.polygon import Polygon, Vertex
 from acconform.port import land_defs
 from acconform.port.cell.land_cell import LandCell
@@ -43,20 +43,58 @@ def split_cuts_se_to_nw(split_dir: int) -> bool:
 class LandblockStruct:
     """The terrain mesh of one landblock: 81 vertices, 128 triangles, 64 LandCells."""
 
-    def __init__(self, landblock_id: int, height, terrain, land_height_table, mode: Mode):
+    def __init__(self, landblock_id: int, height, terrain, land_height_table, mode: Mode, lazy: bool = False):
         """``LandblockStruct(CellLandblock)``: Init, take Height and Terrain, Generate(id, 1, Unknown).
 
         Note that ACE's `ID` is still 0 here (the Landblock subclass sets it after this
         constructor), so InitPVArrays names the cells 0..63 until ConstructPolygons renames them.
+
+        `lazy` (a landblock without terrain: an indoor scene's) defers Init and Generate until a
+        terrain field is first read (`__getattr__`); until then `land_cells` holds only the
+        EnvCells the run loads. Building is deterministic and reads nothing but the constructor's
+        inputs, so building later gives the same terrain: no outcome can tell (pinned in
+        tests/port/land/test_landblock_struct.py).
         """
         self.mode = mode
         self.land_height_table = tuple(mode.scalar(h) for h in land_height_table)
         self.id = 0
-        self.init()
         self.height = tuple(height)
         self.terrain = tuple(terrain)
+        if lazy:
+            self.land_cells: dict = {}
+            self._deferred = landblock_id
+            return
+        self.init()
         # originally called from LScape.update_block()
         self.generate(landblock_id, 1, Direction.Unknown)
+
+    def __getattr__(self, name: str):
+        """A terrain field of a lazy landblock, read for the first time: build the terrain now, as the
+        constructor would have (ID 0 while generating), its cells going into `land_cells` ahead of
+        the EnvCells already there (ACE adds its EnvCells after the terrain's cells)."""
+        landblock_id = self.__dict__.pop("_deferred", None)
+        if landblock_id is None:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        cells, landblock_id_now = self.land_cells, self.id
+        self.id = 0
+        self.init()
+        self.generate(landblock_id, 1, Direction.Unknown)
+        self.id = landblock_id_now
+        terrain, indoor = self.land_cells, dict(cells)
+        cells.clear()
+        cells.update(terrain)
+        cells.update(indoor)
+        self.land_cells = cells
+        self.terrain_generated(terrain)
+        return getattr(self, name)
+
+    @harness("a lazy landblock's terrain was just built (Landblock: what PostInit did to the cells)")
+    def terrain_generated(self, cells: dict) -> None:
+        pass
+
+    @harness("whether the terrain is built (a lazy landblock's is built when first read)")
+    def terrain_built(self) -> bool:
+        return "_deferred" not in self.__dict__
 
     @anchor(None, "LandblockStruct.cs:Init")
     def init(self) -> None:

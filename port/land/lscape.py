@@ -64,8 +64,11 @@ class LandblockPool:
             cell.reset_for_pool()
         return landblock
 
-    @harness("hands a landblock back to the pool (its EnvCells dropped: they come from the run's DATs)")
+    @harness("hands a landblock back to the pool, without the EnvCells the run loaded into it")
     def release(self, key: tuple, landblock: Landblock) -> None:
+        """The run's EnvCells (LandCells keyed by their low word, 0x100 and up, as LScape.get_landcell
+        adds them) leave: the next run loads its own from its cell DAT. Whatever their statics left
+        in the outdoor cells goes at checkout (LandCell.reset_for_pool)."""
         for cell_id in [k for k in landblock.land_cells if k >= 0x100]:
             del landblock.land_cells[cell_id]
         self.idle.pop(key, None)

@@ -4,7 +4,8 @@ Each name is "<ACE routine>:<branch>". `BRANCHES` documents every name the port 
 tests/port/transition/test_branches.py checks that the port emits exactly these names; each
 one outside `NOT_YET_REACHED` is reached by a recorded test scene where the port matches ACE:
 a terrain scene (tests/port/transition) or, for `REACHED_BY_OBJECT_SCENES`, a static-object
-scene (tests/port/objects).
+scene (tests/port/objects), or, for `REACHED_BY_INDOOR_SCENES`, a named indoor scene
+(tests/port/cell).
 """
 
 from __future__ import annotations
@@ -84,16 +85,20 @@ BRANCHES: dict[str, str] = {
 }
 
 # Branches no recorded test scene reaches yet, and why.
-_INDOOR = "indoors: reached by tests/port/cell's named tests; no recorded ACE scene yet (issue 12)"
-NOT_YET_REACHED: dict[str, str] = {
-    "check_other_cells:no_cell": "needs a sphere center outside every loaded cell; DAT-less ACE crashes there",
-    "env_cell:physics_bsp": _INDOOR,
-    "env_cell:outside_portal": _INDOOR,
-    "env_cell:other_cell": _INDOOR,
-    "env_cell:unloaded_cell": _INDOOR,
-    "find_cell_list:indoor": _INDOOR,
-    "find_cell_list:pruned": _INDOOR,
+NOT_YET_REACHED: dict[str, str] = {}
+
+# Branches only the named indoor scenes reach (tests/port/cell: indoor_rooms.py and dungeon_scenes.py,
+# against ACE's recorded answers); the outdoor scenes never do.
+REACHED_BY_INDOOR_SCENES: dict[str, str] = {
+    "check_other_cells:no_cell": "a sphere center in no loaded cell: indoors, beyond a portal to an unloaded cell",
+    "env_cell:physics_bsp": "indoors only",
+    "env_cell:outside_portal": "indoors only",
+    "env_cell:other_cell": "indoors only",
+    "env_cell:unloaded_cell": "indoors only",
+    "find_cell_list:indoor": "indoors only",
+    "find_cell_list:pruned": "indoors only",
 }
+
 
 # Branches only the static-object scenes reach (tests/port/objects: BSP sets SpherePath.Walkable,
 # BSP/sphere collisions request step-up and SetCollide); the terrain scenes never do.

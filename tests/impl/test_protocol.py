@@ -179,3 +179,19 @@ def test_a_scene_sent_ahead_of_a_crash_is_sent_again_to_the_restarted_process(co
         assert impl.restarts == 1
     finally:
         impl.close()
+
+
+def test_indoor_scenes_are_the_kind_indoor_and_statics_inside_env_cells_a_feature():
+    from acconform.protocol import FEATURES, KINDS, handshake, scene_features
+    from oracle.indoor_scenes import room_with_static, two_rooms
+
+    assert "indoor" in KINDS and "indoor" in handshake()["kinds"] and "indoor.statics" in FEATURES
+    assert scene_kind(two_rooms()) == scene_kind(room_with_static()) == "indoor"
+    assert scene_features(two_rooms()) == [] and scene_features(room_with_static()) == ["indoor.statics"]
+    from types import SimpleNamespace
+
+    impl = SimpleNamespace(hello={"kinds": ["terrain", "indoor"], "features": []})  # what its handshake listed
+    assert Implementation.unsupported(impl, two_rooms()) is None
+    assert Implementation.unsupported(impl, room_with_static()) == "feature indoor.statics"
+    impl.hello["kinds"] = ["terrain"]
+    assert Implementation.unsupported(impl, two_rooms()) == "kind indoor"

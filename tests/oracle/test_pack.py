@@ -68,3 +68,29 @@ def test_packing_is_deterministic_and_shares_the_height_table_bytes():
     s = PROBE["ramp walk uphill"]
     assert pack_scene(s) == pack_scene(s)
     assert pack_scene(s.replace(land_height_table=tuple(x + 1.0 for x in s.land_height_table))) != pack_scene(s)
+
+
+def test_a_packed_scene_carries_its_indoor_records_after_its_landblocks():
+    from acconform import dat
+    from acconform.oracle.pack import PACK_VERSION
+
+    from .indoor_scenes import room_with_static
+
+    scene = room_with_static()
+    data = pack_scene(scene)
+    version, _server = struct.unpack_from("<iB", data)
+    pos = 5 + 256 * 4
+    (nlb,) = struct.unpack_from("<i", data, pos)
+    pos += 4 + nlb * (4 + 252)
+    (n,) = struct.unpack_from("<i", data, pos)
+    pos += 4
+    got = []
+    for _ in range(n):
+        kind, ident, length = struct.unpack_from("<BIi", data, pos)
+        got.append((kind, ident, bytes(data[pos + 9:pos + 9 + length])))
+        pos += 9 + length
+    want = dat.environment_records(scene) + dat.cell_dat_records(scene)
+    assert version == PACK_VERSION == 5 and nlb == 1
+    assert got == [({"Environment": 2, "EnvCell": 3, "LandblockInfo": 4}[r.kind], r.id, r.data) for r in want]
+    assert struct.unpack_from("<i", data, pos) == (1,)  # then the statics, as before
+    assert struct.unpack_from("<i", pack_scene(PROBE["flat 1-step walk"]), 5 + 1024 + 4 + 256) == (0,)

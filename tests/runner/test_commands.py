@@ -72,6 +72,16 @@ def test_show_prints_a_case_readably(tmp_path, capsys):
         assert needle in out
 
 
+def test_show_prints_an_indoor_scene_readably(capsys):
+    from pathlib import Path
+
+    assert main(["show", str(Path(__file__).parents[2] / "examples" / "two_rooms.json")]) == 0
+    out = capsys.readouterr().out
+    for needle in ("landblock 0x01D9FFFF: no terrain", "environment 0x0D000001: 3 cell structures",
+                   "EnvCell 0x01D90100 at (48, 48, -10) rot (1, 0, 0, 0): structure 1 of 0x0D000001, portals to 0x0101"):
+        assert needle in out
+
+
 def test_coverage_prints_a_branch_table_per_1000_scenes(capsys):
     _port()
     assert main(["coverage", "--branches", "-n", "40", "--seed", "1"]) == 0

@@ -16,15 +16,16 @@ from acconform.port.dat.bsp_node import BSP_TYPE_CELL, BSP_TYPE_DRAWING, read_no
 from acconform.port.dat.bsp_portal import BSPPortal
 from acconform.port.dat.env_cell import EnvCell as DatEnvCell
 from acconform.port.dat.environment import Environment as DatEnvironment
-from acconform.port.errors import ArgumentException, InvalidCastException, NullReferenceException
+from acconform.port.errors import ArgumentException, InvalidCastException
 from acconform.port.frame import AFrame, Position
 from acconform.port.geom.bsp import BoundingType
 from acconform.port.geom.sphere import Sphere
 from acconform.port.transition.branches import Trace
 from acconform.port.transition.cell_array import CellArray
-from acconform.scene import EnvCell as EnvCellRec
-from indoor_rooms import (LB, ENV_ID, cell_struct_bytes, env_cell_bytes, environment_bytes, indoor_scene, portal,
-                          room, room_struct, tag, two_rooms, walk, world)
+from acconform import dat
+from acconform.port.run import run_scene
+from acconform.scene import Frame as FrameRec
+from indoor_rooms import LB, ENV_ID, indoor_scene, portal, room, tag, two_rooms, world
 
 WALK = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
 NO_EDGE_SLIDE = int(PhysicsState.Gravity)
@@ -42,7 +43,7 @@ def rooms_world(**kw):
 
 def across(env, cells, start, end, state=WALK, begin=A, trace=None):
     scene = indoor_scene(env, cells, start, end, state=state, transient=GROUNDED, begin_cell=begin, end_cell=begin)
-    return walk(scene, EXACT, trace)
+    return run_scene(scene, trace=trace)
 
 
 # ---------------------------------------------------------------- DatLoader readers
@@ -50,10 +51,13 @@ def across(env, cells, start, end, state=WALK, begin=A, trace=None):
 
 @pytest.mark.anchor("ACE.DatLoader/FileTypes/EnvCell.cs:Unpack")
 def test_an_env_cell_record_reads_back_its_portals_visible_cells_stabs_and_widened_ids():
+    import struct
     rec = room(0x0100, 60.0, portals=(portal(0, 0x0101, flags=0x2), portal(1, 0xFFFF)), visible=(0x0101, 0x0102),
                seen_outside=True)
-    stab = (0x01000005, ((1.0, 2.0, 3.0), (1.0, 0.0, 0.0, 0.0)))
-    c = DatEnvCell.unpack(BinaryReader(env_cell_bytes(rec, (stab,), flags_extra=0x8) + b"\x07\0\0\0", EXACT))
+    data = dat.env_cell_record(rec, ((0x01000005, FrameRec((1.0, 2.0, 3.0))),)).data
+    # the writer never sets HasRestrictionObj: add it and the id it guards
+    data = data[:4] + struct.pack("<I", struct.unpack_from("<I", data, 4)[0] | 0x8) + data[8:] + struct.pack("<I", 7)
+    c = DatEnvCell.unpack(BinaryReader(data, EXACT))
     assert c.id == A and c.flags == 0xB and c.seen_outside
     assert c.environment_id == ENV_ID and c.cell_structure == 0 and c.surfaces == []
     assert [(p.polygon_id, p.other_cell_id, p.portal_side) for p in c.cell_portals] == [(0, 0x0101, False), (1, 0xFFFF, True)]
@@ -64,9 +68,11 @@ def test_an_env_cell_record_reads_back_its_portals_visible_cells_stabs_and_widen
 
 
 @pytest.mark.anchor("ACE.DatLoader/Entity/CellStruct.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/FileTypes/Environment.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/UnpackableExtensions.cs:Unpack(Dictionary<uint, T>)")
 def test_a_cell_struct_reads_its_cell_tree_as_planes_and_children_only_after_the_dword_alignment():
     env, _ = two_rooms()
-    e = DatEnvironment.unpack(BinaryReader(environment_bytes(env), EXACT))
+    e = DatEnvironment.unpack(BinaryReader(dat.environment_record(env).data, EXACT))
     assert e.id == ENV_ID and sorted(e.cells) == [0, 1]
     s = e.cells[0]
     assert s.portals == [0, 1] and len(s.polygons) == 2 and len(s.physics_polygons) == 2 and s.drawing_bsp is None
@@ -91,6 +97,7 @@ def test_a_cell_tree_node_reads_the_children_its_tag_names(name, front, back):
 
 
 @pytest.mark.anchor("ACE.DatLoader/Entity/BSPPortal.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/Entity/PortalPoly.cs:Unpack")
 def test_a_drawing_trees_portal_node_reads_both_children_its_sphere_polygons_and_portal_polygons():
     import struct
     leaf = tag("LEAF") + (0).to_bytes(4, "little")
@@ -107,6 +114,9 @@ def test_a_drawing_trees_portal_node_reads_both_children_its_sphere_polygons_and
 
 
 @pytest.mark.anchor("CEnvCell::point_in_cell")
+@pytest.mark.anchor("CCellStruct::point_in_cell")
+@pytest.mark.anchor("BSPTREE::point_inside_cell_bsp")
+@pytest.mark.anchor("BSPNODE::point_inside_cell_bsp")
 def test_point_in_cell_holds_points_inside_the_rooms_cell_tree_in_its_frame_and_not_beyond_its_walls():
     a = rooms_world().get_landcell(A)
     assert a.point_in_cell(v(61, 60, 21)) and a.point_in_cell(v(65, 60, 20))  # on the wall plane: Close counts
@@ -114,6 +124,8 @@ def test_point_in_cell_holds_points_inside_the_rooms_cell_tree_in_its_frame_and_
 
 
 @pytest.mark.anchor("CCellStruct::sphere_intersects_cell")
+@pytest.mark.anchor("BSPTREE::sphere_intersects_cell_bsp")
+@pytest.mark.anchor("BSPNODE::sphere_intersects_cell_bsp")
 def test_sphere_intersects_cell_tells_entirely_inside_from_straddling_a_wall_and_outside():
     s = rooms_world().get_landcell(A).cell_structure
     assert s.sphere_intersects_cell(Sphere(v(0, 0, 2), EXACT.scalar(1))) == BoundingType.EntirelyInside
@@ -122,6 +134,10 @@ def test_sphere_intersects_cell_tells_entirely_inside_from_straddling_a_wall_and
 
 
 @pytest.mark.anchor("CCellStruct::box_intersects_cell")
+@pytest.mark.anchor("BSPTREE::box_intersects_cell_bsp")
+@pytest.mark.anchor("BSPNODE::box_intersects_cell_bsp")
+@pytest.mark.anchor("BSPNode.cs:box_intersects_cell_bsp_inner")
+@pytest.mark.anchor("BBox.cs:GetCorners")
 def test_box_intersects_cell_is_false_only_for_a_box_wholly_behind_one_wall():
     s = rooms_world().get_landcell(A).cell_structure
     assert s.box_intersects_cell(BBox(v(-1, -1, 1), v(1, 1, 2)))
@@ -137,6 +153,10 @@ def test_get_portal_throws_on_its_first_portal_as_ace_reads_the_portal_before_as
 
 
 @pytest.mark.anchor("CEnvCell::build_visible_cells")
+@pytest.mark.anchor("CCellStruct::UnPack")
+@pytest.mark.anchor("EnvCell.cs:PostInit")
+@pytest.mark.anchor("DBObj.cs:GetEnvCell")
+@pytest.mark.anchor("DBObj.cs:GetEnvironment")
 def test_building_a_cell_builds_every_cell_it_sees_keyed_by_short_id_and_caches_them_in_the_landblock():
     lscape = rooms_world()
     a = lscape.get_landcell(A)
@@ -246,65 +266,58 @@ def test_find_cell_list_indoors_drops_cells_the_position_cell_does_not_see():
 def test_a_mover_walks_across_a_portal_into_the_neighbouring_room_on_its_floor():
     env, cells = two_rooms()
     trace = Trace()
-    trans, ok, _ = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0), trace=trace)
-    sp = trans.sphere_path
-    assert ok and sp.cur_cell.id == B and float(sp.cur_pos.frame.origin.z) == 20.0
-    assert trans.collision_info.contact_plane_valid
+    out = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0), trace=trace)
+    assert out.error is None and out.ok and out.cell == B and out.origin[2] == 20.0
+    assert out.contact_plane.valid
     assert trace["env_cell:physics_bsp"] and trace["env_cell:other_cell"] and trace["find_cell_list:indoor"]
 
 
 @pytest.mark.anchor("CEnvCell::find_collisions")
 def test_a_mover_walking_into_the_rooms_back_wall_stops_against_it():
     env, cells = two_rooms()
-    trans, ok, _ = across(env, cells, (57.0, 60.0, 20.0), (53.0, 60.0, 20.0))
-    sp = trans.sphere_path
-    assert sp.cur_cell.id == A and 55.48 <= float(sp.cur_pos.frame.origin.x) < 57.0
-    assert trans.collision_info.collision_normal_valid
+    out = across(env, cells, (57.0, 60.0, 20.0), (53.0, 60.0, 20.0))
+    assert out.cell == A and 55.48 <= out.origin[0] < 57.0
+    assert out.collision_normal.valid
 
 
 @pytest.mark.anchor("CTransition::step_down")
 def test_a_mover_steps_down_a_small_ledge_onto_the_next_rooms_lower_floor():
     env, cells = two_rooms(z_b=19.8)
-    trans, ok, _ = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0))
-    sp = trans.sphere_path
-    assert ok and sp.cur_cell.id == B and float(sp.cur_pos.frame.origin.z) == pytest.approx(19.8, abs=1e-5)
-    assert trans.collision_info.contact_plane_valid
+    out = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0))
+    assert out.ok and out.cell == B and out.origin[2] == pytest.approx(19.8, abs=1e-5)
+    assert out.contact_plane.valid
 
 
 @pytest.mark.anchor("CSpherePath::precipice_slide")
 def test_with_edge_slide_a_mover_stops_at_a_tall_ledge_by_precipice_slide_off_the_rooms_floor():
     env, cells = two_rooms(z_b=17.0)
     trace = Trace()
-    trans, ok, _ = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0), trace=trace)
-    sp = trans.sphere_path
-    assert float(sp.cur_pos.frame.origin.x) < 67.0 and float(sp.cur_pos.frame.origin.z) == 20.0
+    out = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0), trace=trace)
+    assert out.origin[0] < 67.0 and out.origin[2] == 20.0
     assert trace["edge_slide:back_probe_precipice_slide"] or trace["edge_slide:precipice_slide"]
 
 
 @pytest.mark.anchor("CTransition::edge_slide")
 def test_without_edge_slide_a_mover_walks_off_a_tall_ledge_and_loses_contact():
     env, cells = two_rooms(z_b=17.0)
-    trans, ok, _ = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0), state=NO_EDGE_SLIDE)
-    sp = trans.sphere_path
-    assert ok and sp.cur_cell.id == B and float(sp.cur_pos.frame.origin.x) == pytest.approx(67.0, abs=1e-4)
-    assert not trans.collision_info.contact_plane_valid
+    out = across(env, cells, (63.0, 60.0, 20.0), (67.0, 60.0, 20.0), state=NO_EDGE_SLIDE)
+    assert out.ok and out.cell == B and out.origin[0] == pytest.approx(67.0, abs=1e-4)
+    assert not out.contact_plane.valid
 
 
 @pytest.mark.anchor("CEnvCell::init_static_objects")
 def test_an_env_cells_stabs_become_statics_registered_in_the_cell_and_the_neighbour_they_straddle():
-    from acconform import dat
-    from acconform.scene import StaticObject, Position as PosRec, Frame as FrameRec
+    from acconform.scene import StaticObject, Position as PosRec
     from object_scenes import box
 
     env, cells = two_rooms()
-    scene = indoor_scene(env, cells, (61, 60, 20), (61, 60, 20), state=WALK, transient=GROUNDED, begin_cell=A, end_cell=A)
-    rec = StaticObject(0x70000000, PosRec(A, FrameRec((64.5, 60.0, 20.0))), box(2.0, 2.0, 2.0))
-    written = dat.static_records(rec, 0)
-    lscape, portal_dat = world(scene, EXACT, stabs={A: ((written.did, ((64.5, 60.0, 20.0), (1.0, 0.0, 0.0, 0.0))),)})
-    for r in written.records:
-        portal_dat.records[r.id] = r.data
+    boulder = StaticObject(0x70000000, PosRec(A, FrameRec((64.5, 60.0, 20.0))), box(2.0, 2.0, 2.0))
+    scene = indoor_scene(env, cells, (61, 60, 20), (61, 60, 20), state=WALK, transient=GROUNDED, begin_cell=A,
+                         end_cell=A, objects=(boulder,))
+    lscape, _ = world(scene, EXACT)
     a = lscape.get_landcell(A)
     (static,) = a.static_objects
     assert static.id == 0 and static.dat_object and static.cur_cell is a
     assert list(static.shadow_objects) == [A, B]
     assert a.shadow_object_list[0].physics_obj is static
+    assert run_scene(scene).static_cells == ((A, B),)

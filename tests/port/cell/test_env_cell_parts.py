@@ -14,7 +14,6 @@ from acconform.port.dat.cell_portal import CellPortal
 from acconform.port.dat.stab import Stab
 from acconform.port.frame import AFrame, Position
 from acconform.port.land.lscape import POOL
-from acconform.port.transition.cell_array import CellArray
 from acconform.port.vec import Sidedness, intersect_box
 from acconform.numerics import Plane
 from indoor_rooms import LB, indoor_scene, portal, room, two_rooms, world
@@ -52,6 +51,7 @@ def test_a_box_carried_into_a_cells_frame_spans_its_corners_there():
 
 
 @pytest.mark.anchor("CEnvCell::find_transit_cells")
+@pytest.mark.anchor("CPhysicsObj::is_completely_visible")
 def test_a_parts_box_crossing_a_portal_adds_the_neighbour_when_its_cell_tree_holds_the_box():
     from object_scenes import box
     from acconform import dat
@@ -76,6 +76,7 @@ def test_a_parts_box_crossing_a_portal_adds_the_neighbour_when_its_cell_tree_hol
 
 
 @pytest.mark.anchor("CEnvCell::find_visible_child_cell")
+@pytest.mark.anchor("CEnvCell::GetVisible")
 def test_find_visible_child_cell_finds_the_cell_holding_a_point_through_visible_cells_or_portals():
     lscape, _ = _world()
     a = lscape.get_landcell(A)
@@ -88,6 +89,9 @@ def test_find_visible_child_cell_finds_the_cell_holding_a_point_through_visible_
 
 
 @pytest.mark.anchor("CEnvCell::handle_move_restriction")
+@pytest.mark.anchor("EnvCell.cs:EnvCell()")
+@pytest.mark.anchor("CEnvCell::init")
+@pytest.mark.anchor("CellStruct.cs:CellStruct()")
 def test_an_env_cell_handles_a_move_restriction_and_its_empty_constructor_starts_empty():
     c = EnvCell(EXACT)
     assert c.handle_move_restriction(None) is True
@@ -135,6 +139,9 @@ def test_a_released_landblock_keeps_no_env_cell_for_the_next_run():
 
 
 @pytest.mark.anchor("ACE.DatLoader/FileTypes/LandblockInfo.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/Entity/BuildInfo.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/Entity/CBldPortal.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/UnpackableExtensions.cs:UnpackPackedHashTable(Dictionary<uint, uint>)")
 def test_a_landblock_info_reads_its_cell_count_objects_buildings_and_restriction_table():
     import struct
     stab = struct.pack("<I7f", 0x01000001, 1, 2, 3, 1, 0, 0, 0)
@@ -153,6 +160,11 @@ def test_a_landblock_info_reads_its_cell_count_objects_buildings_and_restriction
 
 
 @pytest.mark.anchor("Position::get_indoor_cell")
+@pytest.mark.anchor("AdjustCell.cs:AdjustCell(uint)")
+@pytest.mark.anchor("AdjustCell.cs:BuildEnv")
+@pytest.mark.anchor("AdjustCell.cs:GetCell")
+@pytest.mark.anchor("AdjustCell.cs:Get")
+@pytest.mark.anchor("Position::get_cell")
 def test_get_cell_of_an_indoor_position_is_the_dungeon_cell_holding_its_origin_else_its_own_id():
     lscape, _ = _world()
     inside_b = Position(A, AFrame(v(71, 60, 21), EXACT.quat(0, 0, 0, 1)))

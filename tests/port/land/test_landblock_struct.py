@@ -142,3 +142,48 @@ def test_fast_mode_builds_the_same_mesh_in_double():
     assert all(type(c) is np.float64 for c in lb.vertex_array[10].origin)
     ex = build(heights=[(i * 7) % 50 for i in range(81)])
     assert lb.sw_to_ne_cut == ex.sw_to_ne_cut
+
+
+def _terrain(lb):
+    """Everything a built terrain holds, as plain values (vertex origins, polygon vertices and planes,
+    cells with their ids, frames, water and polygons, the block's counts and water)."""
+    def v(x):
+        return (float(x.x), float(x.y), float(x.z))
+
+    def poly(p):
+        return ([v(x.origin) for x in p.vertices], v(p.plane.normal), float(p.plane.d), p.pos_surface)
+
+    cells = [(k, c.id, c.water_type, v(c.pos.frame.origin), [poly(p) for p in c.polygons], c.cur_landblock is lb)
+             for k, c in lb.land_cells.items()]
+    return ([v(x.origin) for x in lb.vertex_array], [poly(p) for p in lb.polygons], list(lb.sw_to_ne_cut), cells,
+            lb.water_type, lb.side_cell_count, lb.side_vertex_count, lb.side_poly_count, lb.trans_dir, lb.id)
+
+
+@pytest.mark.anchor("LandblockStruct.cs:Generate")
+def test_a_landblock_without_terrain_builds_it_when_first_read_and_builds_the_same_terrain():
+    from acconform.scene import Landblock as LandblockRecord
+
+    record = LandblockRecord(0x01D9FFFF, has_terrain=False)
+    eager = Landblock(LandblockRecord(0x01D9FFFF, record.heights, record.terrain), TABLE, EXACT)  # zeros, built now
+    eager.post_init()
+    lazy = Landblock(record, TABLE, EXACT)
+    lazy.post_init()
+    assert eager.terrain_built() and not lazy.terrain_built() and lazy.land_cells == {}
+    marker = object()
+    lazy.land_cells[0x100] = marker  # an EnvCell the run loaded before anything read the terrain
+    assert lazy.side_cell_count == 8 and lazy.terrain_built()
+    assert list(lazy.land_cells)[-1] == 0x100 and lazy.land_cells.pop(0x100) is marker
+    assert _terrain(lazy) == _terrain(eager) and len(lazy.land_cells) == 64
+
+
+@pytest.mark.anchor("LandblockStruct.cs:Generate")
+def test_indoor_scenes_build_no_terrain():
+    from acconform.port.land import lscape
+    from acconform.port.run import run_scene
+    from oracle.indoor_scenes import SCENES
+
+    lscape.clear_landblock_cache()
+    for scene in SCENES.values():
+        assert run_scene(scene).error is None
+    (landblock,) = lscape.POOL.idle.values()
+    assert not landblock.terrain_built() and landblock.land_cells == {}

@@ -1,0 +1,63 @@
+"""The CellStructs the port remembers across runs (port/cell/cell_struct.py BUILT) change no outcome, and
+their key holds every input CellStruct(DatLoader CellStruct) reads: the Environment record's bytes, the
+structure's id, the mode."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from acconform import dat
+from acconform.numerics import EXACT, FAST
+from acconform.port.cell import cell_struct
+from acconform.port.dat.binary_reader import BinaryReader
+from acconform.port.dat.environment import Environment as DatEnvironment
+from acconform.port.dat.portal_dat import PortalDat
+from acconform.port.run import run_scene
+from acconform.scene import Environment
+from dungeon_scenes import SCENES as DUNGEON_SCENES
+from indoor_rooms import ENV_ID, SCENES as ROOM_SCENES, room_struct, two_rooms
+
+SCENES = [s for s, _ in list(ROOM_SCENES.values()) + list(DUNGEON_SCENES.values())]
+
+
+@pytest.mark.anchor("CCellStruct::UnPack")
+@pytest.mark.parametrize("mode", ["exact", "fast"])
+def test_remembered_cell_structs_give_the_outcomes_a_fresh_build_gives(mode):
+    fresh = []
+    for s in SCENES:
+        cell_struct.clear_built()
+        fresh.append(run_scene(s, mode))
+    twice = [run_scene(s, mode) for s in SCENES] + [run_scene(s, mode) for s in SCENES]
+    assert twice == fresh + fresh
+
+
+def _built(env: Environment, mode, index: int):
+    data = dat.environment_record(env).data
+    portal_dat = PortalDat({env.id: data}, mode, True)
+    structs = DatEnvironment.unpack(BinaryReader(data, mode)).cells
+    return cell_struct.remembered(portal_dat, env.id, index, structs[index])
+
+
+@pytest.mark.anchor("CCellStruct::UnPack")
+def test_the_memory_is_keyed_by_the_records_bytes_the_structures_id_and_the_mode():
+    cell_struct.clear_built()
+    env, _ = two_rooms()
+    a = _built(env, EXACT, 0)
+    assert _built(env, EXACT, 0) is a
+    other_id = _built(env, EXACT, 1)
+    raised = _built(Environment(ENV_ID, (room_struct(floor=0.5, back_wall=True), env.cell_structs[1])), EXACT, 0)
+    fast = _built(env, FAST, 0)
+    assert other_id is not a and len(other_id.physics_polygons) == 1 and len(a.physics_polygons) == 2
+    assert raised is not a and raised.physics_polygons[0].vertices[0].origin.z == np.float32(0.5)
+    assert fast is not a and type(fast.physics_polygons[0].plane.d) is np.float64
+
+
+@pytest.mark.anchor("CCellStruct::UnPack")
+def test_a_structure_from_a_record_the_run_does_not_hold_is_not_remembered():
+    cell_struct.clear_built()
+    env, _ = two_rooms()
+    data = dat.environment_record(env).data
+    structs = DatEnvironment.unpack(BinaryReader(data, EXACT)).cells
+    cell_struct.remembered(PortalDat({}, EXACT, True), env.id, 0, structs[0])
+    assert cell_struct.BUILT == {}
