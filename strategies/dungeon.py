@@ -585,7 +585,9 @@ SEAM_DZ = st.sampled_from((0.0, 0.0, 0.0, 0.0, 0.001, -0.001, 0.0005, 0.01, -0.0
 LIPS = st.sampled_from((0.0, 0.0, 0.0, 0.001, 0.01, 0.05))
 # a doorway cell: a frame thinner than the mover, between two cells (its neighbours reached through it)
 FRAME_LENGTHS = dr.OneOf(st.sampled_from((0.05, 0.1, 0.2)), dr.f32(0.02, 1.0))
-OUTSIDE_Z = st.sampled_from((0.0, 0.01, 0.3, 0.02))
+# a dungeon with a way out: on the ground, just above it, or sunk a little below it (a cellar: the
+# land cells the outside portal adds reach into the cell, where the visible-cell pruning drops them)
+OUTSIDE_Z = st.sampled_from((0.0, -0.1, 0.01, -0.3, 0.3, 0.02, -0.05))
 POLICIES = st.sampled_from(("cross", "cross", "doorway", "wall", "ramp", "ramp", "stairs", "ledge", "ledge", "pit",
                             "tee", "static", "straddle", "seam", "outside", "fall"))
 # path lengths in mover radii past the target (a portal, an edge, a wall): within one step, or many
@@ -710,7 +712,6 @@ def draw_indoor(draw, spheres, step_heights, policy: str | None = None) -> Scene
         entry = Door(min(d0.width, pieces[0].width), min(d0.height, pieces[0].height), 0.0, OUTSIDE_CELL,
                      draw(FACES_OUT))
     yaw = dr.take(draw, YAWS)
-    # a dungeon with a way out stands on the ground, or just above it (the land cells matter)
     origin = (draw(ORIGIN_XY), draw(ORIGIN_XY), draw(OUTSIDE_Z) if entry is not None else dr.take(draw, ORIGIN_Z))
     d = lay_out(block, pieces, doors, entry, side, yaw, origin)
     vis = draw(VISIBLE)

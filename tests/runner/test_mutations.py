@@ -2,8 +2,8 @@
 
 Each mutant (tests/runner/mutants.py) runs as the port against the real port as the oracle,
 through the same runner `acconform check` uses (mutants.hunt: one worker, seed 0, no example
-database, BUDGET generated scenes), on the default kinds (terrain, BSP objects, obstacles). A
-caught mutant must shrink to a small scene. `python tests/runner/mutation_report.py` prints the
+database, BUDGET generated scenes), on the default kinds (terrain, BSP objects, obstacles), or on
+the indoor kind for the indoor mutants (their `kinds`). A caught mutant must shrink to a small scene. `python tests/runner/mutation_report.py` prints the
 same hunt's figures (scenes to find each mutant, shrunk sizes).
 
 Mutants the default kinds cannot reach are listed in UNREACHABLE with the reason, and the test
@@ -31,7 +31,14 @@ Kill rates of the 31 planted bugs (issue 14; `python tests/runner/mutation_repor
   (step_down_walkable_strict by the terrain exact_slope policy, step_sphere_down_allowance_strict
   and walkable_allowable_inclusive by the obstacle sphere_contact policy).
 
-Survivors everywhere: the two UNREACHABLE below (equivalent in practice: their boundary cannot be
+Indoor mutants (issue 12; this hunt on the indoor kind, BUDGET 1,500, seed 0; the first three on
+the strategies of 0ec653f, the other two on those of bc70bd4): portal_side_flipped caught at scene 511, point_in_cell_close_is_outside at
+181, visible_cell_pruning_skipped at 42 (once dungeons could sit just below the ground: before
+that, 1,500 scenes missed it), neighbour_tested_in_own_frame at 1, outside_portal_test_off at 9;
+each shrunk to one landblock, at most one object and a path under a metre. cell_bsp_slack_dropped
+went unnoticed for 1,500 scenes twice (UNREACHABLE says why).
+
+Survivors everywhere: the UNREACHABLE below (equivalent in practice: their boundary cannot be
 drawn, for the reasons given).
 """
 
@@ -54,6 +61,10 @@ UNREACHABLE = {
     # the float32 grid of r, and EPSILON's low bits are finer than that grid
     "validate_walkable_contact_test_strict": "boundary (dist == -EPSILON exactly) is unreachable by construction",
     "step_down_interp_floor_raised": "a step-down overshoot in [-0.1, 0) needs gentle slopes and a sliver step",
+    # the slack only decides whether a neighbour joins the cell list while the sphere is 0-0.01 m short of
+    # its cell BSP; that changes an outcome only if the neighbour has a polygon or static the sphere
+    # reaches from there, i.e. one outside the neighbour's own cell planes, which no drawn dungeon has
+    "cell_bsp_slack_dropped": "a neighbour's polygons lie within its cell BSP: one 0.01 m beyond it is never reached",
 }
 # mutants this hunt misses at its budget and seed, but the recorded corpus kills (not equivalent)
 FOUND_BY_THE_CORPUS = {
@@ -91,3 +102,8 @@ def test_every_mutation_still_applies_to_the_port_exactly_once():
     assert len(MUTATIONS) >= 10
     for m in MUTATIONS:
         assert (PORT_DIR / m.file).read_text().count(m.old) == 1, m.name
+
+
+def test_at_least_four_indoor_planted_bugs_are_hunted_on_the_indoor_kind_and_expected_caught():
+    indoor = [m.name for m in MUTATIONS if m.kinds == ("indoor",)]
+    assert len(set(indoor) - set(UNREACHABLE)) >= 4, indoor
