@@ -114,11 +114,21 @@ BOUNDARIES: dict[str, str] = {
     "bsp_split_walkable": "a BSP node's two sides both gave a walkable polygon (the visiting order decides)",
     "cell_border": "the transition ended exactly on a cell border (x or y a multiple of 24 m)",
     "landblock_border": "the transition ended exactly on a landblock border (x or y a multiple of 192 m)",
+    "plane_tangent": "Polygon.polygon_hits_sphere_precise: a polygon's plane exactly at the sphere's radius less EPSILON"
+                     " from its centre (|dp_pos| == rad)",
+    "polygon_edge": "Polygon.polygon_hits_sphere_precise: an edge exactly tangent to the circle the sphere cuts from the"
+                    " plane (cross.LengthSquared() * diff == dispDot * dispDot)",
+    "polygon_vertex": "Polygon.polygon_hits_sphere_precise: a vertex exactly on that circle (disp.LengthSquared() == diff;"
+                      " 0 == 0 when the vertex is the contact point of a sphere tangent to the plane)",
+    "step_up_height": "Sphere/CylSphere.StepSphereUp: the rise to climb bit-equal to the mover's StepUpHeight",
+    "step_down_height": "Transition.TransitionalInsert and CheckWalkable: the step-down height bit-equal to the mover's"
+                        " sphere diameter (one whole step-down or two halves)",
 }
 
 
 # the boundaries a Trace measures in ulps (the others are counted only when hit)
-MEASURED_IN_ULPS = ("floor_z", "landing_z", "sphere_tangent", "cylsphere_tangent")
+MEASURED_IN_ULPS = ("floor_z", "landing_z", "sphere_tangent", "cylsphere_tangent", "plane_tangent", "polygon_edge",
+                    "polygon_vertex", "step_up_height", "step_down_height")
 
 
 _F32, _U32 = struct.Struct("<f"), struct.Struct("<I")
