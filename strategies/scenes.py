@@ -495,6 +495,8 @@ SLOPE_STARTS = st.sampled_from(("top", "top", "top", "air"))
 # a LandingZ slope is 85 degrees: a 0.04 m step-down probe meets it only within 3.5 mm of the top
 # edge, so that walk starts on the edge and stops a sliver past it (metres; above EPSILON)
 SLOPE_SLIVERS = dr.f32(0.0005, 0.0035)
+# maybe a step-down height of exactly 2r: walking off the top, TransitionalInsert compares them (step_down_height)
+EXACT_STEP_DOWN = st.sampled_from((False, True))
 
 
 def _exact_slope_scene(draw, bx, by, spheres) -> Scene:
@@ -539,9 +541,11 @@ def _exact_slope_scene(draw, bx, by, spheres) -> Scene:
         transient = int(TransientState.Contact) | (int(TransientState.OnWalkable) if walkable_side else 0)
         ez = bz
     steps = step_heights([r * t for t in (0.5, 1.0, 1.5)])
+    down = dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps)
+    if draw(EXACT_STEP_DOWN):
+        down = to_f32(2 * r)  # exact: doubling a float32
     mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, bz))), end=position(gx1, gy1, ez),
-                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps),
-                  step_down_height=dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps),
+                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps), step_down_height=down,
                   state=state, transient_state=transient, contact_plane=contact, velocity=draw(ob.VELOCITIES))
     reach = max(s.center[2] + s.radius for s in spheres)
     scene = _scene(world, bx, by, (gx, gy), (gx1, gy1), reach, [], mover, f"terrain:exact-slope-{name}")

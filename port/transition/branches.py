@@ -126,6 +126,15 @@ BOUNDARIES: dict[str, str] = {
 }
 
 
+# Where they are counted: floor_z/landing_z at every walkable test against those constants; the
+# tangencies in Sphere/CylSphere.IntersectsSphere; plane_tangent, polygon_edge and polygon_vertex in
+# Polygon.polygon_hits_sphere_precise, whose callers pass the trace down the BSP (BSPTree.adjust_to_plane
+# has no path and passes none: its polygon tests go uncounted); step_up_height in StepSphereUp;
+# step_down_height where TransitionalInsert and CheckWalkable compare the step-down height with 2r.
+# Issue 14 also names rises "exactly 1.5x the step-up height": ACE (7b47913) compares no height with
+# 1.5 x StepUpHeight anywhere (grep Physics/ for StepUpHeight: only the two StepSphereUp tests), so
+# that is no boundary of ACE's to count; its step tests are the two above.
+
 # the boundaries a Trace measures in ulps (the others are counted only when hit)
 MEASURED_IN_ULPS = ("floor_z", "landing_z", "sphere_tangent", "cylsphere_tangent", "plane_tangent", "polygon_edge",
                     "polygon_vertex", "step_up_height", "step_down_height")

@@ -296,11 +296,12 @@ def hunt(index: int, budget: int = BUDGET, seed: int = SEED, failures_dir=None, 
 
 # ---------------------------------------------------------------- the corpus replay (no generation)
 
-def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED) -> dict:
+def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED, only=None) -> dict:
     """Replay the recorded corpus (records of `runtime`, in a seeded shuffle) through the mutant
     against ACE's recorded answer, until a record where the mutant differs from ACE and the real
     port does not (a record the real port already gets wrong kills nothing). Says whether the
-    corpus kills the mutant and after how many records."""
+    corpus kills the mutant and after how many records. `only`: replay just these record keys (in
+    the same shuffle), e.g. the fast lane's sample."""
     import random
     import time
     import warnings
@@ -314,6 +315,9 @@ def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED)
     mutant = load_mutant(index)
     oracle = RecordedOracle(corpus_dir)
     keys = oracle.select(runtime=runtime)
+    if only is not None:
+        only = set(only)
+        keys = [k for k in keys if k in only]
     random.Random(seed).shuffle(keys)
     t0 = time.monotonic()
     out = {"name": MUTATIONS[index].name, "killed": False, "records": len(keys), "records_to_kill": None}

@@ -31,6 +31,18 @@ Kill rates of the 31 planted bugs (issue 14; `python tests/runner/mutation_repor
   (step_down_walkable_strict by the terrain exact_slope policy, step_sphere_down_allowance_strict
   and walkable_allowable_inclusive by the obstacle sphere_contact policy).
 
+Seven more (issue 14's second set: plane_tangent_not_touching, polygon_edge_touch_missed,
+polygon_vertex_touch_missed, sphere_step_up_inclusive, cylsphere_step_up_inclusive,
+step_down_whole_strict, check_walkable_halving_inclusive), each flipping a comparison at the
+boundary of the same name in branches.BOUNDARIES, measured after the 856 records that hit them
+(tests/data/corpus/README.md) went into the corpus (14,421 records), seed 0:
+
+- the corpus replay alone: CORPUS_NEW (records to the kill: 30, 30, 73, 832, 173, 188, CW_CORPUS);
+  before those records the corpus had none at the three polygon boundaries.
+- a live campaign against ACE on mono (--live 4000): LIVE_NEW (cases run, shrinking included: 76,
+  2,684, 1,055, 765, 2,365, SDW_LIVE, CW_LIVE).
+- the fast lane: FAST_NOTE
+
 Survivors everywhere: the two UNREACHABLE below (equivalent in practice: their boundary cannot be
 drawn, for the reasons given).
 """
@@ -54,9 +66,18 @@ UNREACHABLE = {
     # the float32 grid of r, and EPSILON's low bits are finer than that grid
     "validate_walkable_contact_test_strict": "boundary (dist == -EPSILON exactly) is unreachable by construction",
     "step_down_interp_floor_raised": "a step-down overshoot in [-0.1, 0) needs gentle slopes and a sliver step",
+    # CheckWalkable probes down from where StepDown just put the sphere on walkable ground, so a probe of
+    # r meets that ground as surely as one of 2r: only ground between r and 2r under a sphere that is not
+    # on it would tell them apart. Equivalent in practice (the corpus and live ACE, 4,000 cases, agree)
+    "check_walkable_halving_inclusive": "CheckWalkable's probe starts on the ground StepDown found: r and 2r meet it alike",
 }
 # mutants this hunt misses at its budget and seed, but the recorded corpus kills (not equivalent)
 FOUND_BY_THE_CORPUS = {
+    # seed 0's live campaign needed 2,684, 2,365 and 1,857 cases (shrinking included) for these: the
+    # 1,500-scene hunt may miss them; the corpus kills each within 200 records (not yet run in this hunt)
+    "polygon_edge_touch_missed": "an edge exactly tangent: the bsp touch policy's edge variant, 1 in ~45 bsp scenes",
+    "cylsphere_step_up_inclusive": "the tangent policy's cylsphere with the exact step-up, 1 in ~24 obstacle scenes",
+    "step_down_whole_strict": "a step-down height of exactly 2r with the step-down taken (TransitionalInsert)",
     "adjust_offset_block_offset_dropped": "needs a grounded mover on a sloped contact plane stepping into the next "
                                           "landblock; seed 0's 1,500 scenes draw none, the corpus has them",
 }

@@ -222,3 +222,18 @@ def test_a_tangent_scene_with_the_exact_step_up_makes_step_sphere_up_compare_at_
             kinds.add(kind)
             assert _traced(scene)["boundary:step_up_height"] > 0, scene
     assert kinds == {"sphere", "cylsphere"}
+
+
+@pytest.mark.anchor("CTransition::transitional_insert")
+def test_an_exact_slope_walk_with_a_step_down_of_exactly_2r_compares_them_at_equality():
+    import importlib
+
+    from hypothesis import strategies as st
+
+    scenes = importlib.import_module("acconform.strategies.scenes")
+    drawn = _drawn(st.composite(lambda draw: scenes._exact_slope_scene(draw, 0x20, 0x30, draw(scenes.MOVER_SPHERES)))(),
+                   60, 5)
+    exact = [s for s in drawn if s.mover.step_down_height == 2 * s.mover.spheres[0].radius
+             and s.mover.contact_plane is not None and "floor_z" in s.name]
+    assert exact, "no walkable-side exact slope walk with a step-down of 2r drawn"
+    assert any(_traced(s)["boundary:step_down_height"] for s in exact)
