@@ -483,7 +483,7 @@ def _touch_scene(draw, bx, by) -> Scene:
                   step_down_height=dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps),
                   state=state, transient_state=int(TransientState.Contact | TransientState.OnWalkable),
                   contact_plane=ContactPlane(begin_cell, PlaneRec((0.0, 0.0, 1.0), 0.0)), velocity=(0.0, 0.0, 0.0))
-    placed = [(shape, ox, oy, 0.0, IDENTITY, ob.BSP_STATE)]
+    placed = [(shape, ox, oy, 0.0, IDENTITY, draw(ob.BSP_STATES))]  # mostly a plain physics BSP
     return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), 2 * r, placed, mover, f"bsp:touch-{how}")
 
 
