@@ -53,7 +53,7 @@ there fails the every-push lane. Measured because the whole lane per mutant, ~15
 did not fit beside the other engineers' jobs; the lane's other tests could only add kills):
 33 of 38, i.e. 33 of 35 non-equivalent (94.3 %). Surviving: the three UNREACHABLE, and
 adjust_offset_block_offset_dropped and walkable_allowable_inclusive, which the full corpus kills
-(records 311 and the sphere-contact fall records) but no sample record does. The whole lane
+(the corpus figures above) but no sample record does. The whole lane
 (--fast-lane) was measured for step_down_walkable_strict only (killed in 87 s, above).
 
 Survivors everywhere: the three UNREACHABLE below (equivalent in practice: the first two because
