@@ -230,3 +230,46 @@ def sphere_contact_layout(how: str, r: float, radius: float, dx: float, x0: floa
 def grid_round(x: float) -> float:
     """The multiple of GRID nearest x."""
     return round(x / GRID) * GRID
+
+
+# ---------------------------------------------------------------- step heights at the rise
+# Sphere.StepSphereUp compares `StepUpHeight < radsum - disp.Z` (radsum the sum it was given plus
+# EPSILON), CylSphere.StepSphereUp `StepUpHeight < checkPos.Radius + Height - disp.Z`. In a
+# tangent scene (strategies/scenes.py `_tangent_scene`) every term is known in float32, so the
+# step-up height can be the rise itself, bit for bit (the Setup's StepUpHeight * Scale.Z with
+# scale 1 keeps it).
+def tangent_step_up(kind: str, mover_r: float, radius: float, height: float, z0: float) -> float:
+    """The StepUpHeight equal to the rise StepSphereUp computes for `_tangent_scene`'s obstacle:
+    a sphere centred at the mover's sphere height (disp.Z == 0), or a cylsphere standing at z0."""
+    f = np.float32
+    if kind == "sphere":
+        return float(f(sphere_radsum(mover_r, radius)) + f(EPSILON))
+    disp_z = f(f(z0) + f(mover_r)) - f(z0)  # the mover's sphere centre less the cylinder's low point
+    return float((f(mover_r) + f(height)) - disp_z)
+
+
+# ---------------------------------------------------------------- a polygon touching the sphere
+# Polygon.polygon_hits_sphere_precise takes rad = radius - EPSILON and compares: |dp_pos| > rad
+# (the plane at exactly rad from the centre: "plane_tangent"), cross.LengthSquared() * diff <
+# dispDot^2 (an edge exactly tangent to the circle the sphere cuts from the plane, diff = rad^2 -
+# dp_pos^2: "polygon_edge") and disp.LengthSquared() <= diff (a vertex exactly on it:
+# "polygon_vertex"). With a mover radius whose rad is on GRID, an axis-aligned box of dyadic
+# sizes (make_plane's normals exactly an axis) and every coordinate on GRID, each of these is
+# exact: a face rad ahead of the sphere's centre; the box's top at the centre's height with its
+# edge rad ahead (dp_pos = 0, diff = rad^2, dispDot = rad * edge length); or a corner (a, b)
+# off the centre with a^2 + b^2 == rad^2 (a Pythagorean triple scaled by a power of two).
+TOUCH_RADS = (0.25, 0.3125, 0.375, 0.4375, 0.625, 0.75, 1.0)  # 0.5 has no such radius
+# (rad, a, b): a^2 + b^2 == rad^2 exactly in float32
+TOUCH_CORNERS = ((0.3125, 0.1875, 0.25), (0.625, 0.375, 0.5), (0.8125, 0.3125, 0.75), (1.25, 0.75, 1.0))
+TOUCH_SIZES = (0.5, 1.0, 2.0, 4.0)
+
+
+@lru_cache(maxsize=None)
+def touch_radius(rad: float) -> float:
+    """A float32 sphere radius r with r - EPSILON == rad exactly in float32 (rad on GRID)."""
+    b = f32_bits(to_f32(rad + float(EPSILON)))
+    for k in sorted(range(-8, 9), key=abs):
+        r = f32_from_bits(b + k)
+        if float(np.float32(r) - np.float32(EPSILON)) == rad:
+            return r
+    raise ValueError(f"no float32 radius r has r - EPSILON == {rad}")

@@ -146,7 +146,9 @@ OBJECT_COUNTS = dr.ints(1, 3)
 
 
 BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter",
-                                "straddle", "straddle", "slope", "slope", "seam"))
+                                "straddle", "straddle", "slope", "slope", "seam", "touch"))
+# "touch": a box face, top edge or corner exactly touching the mover's sphere at its end
+# (boundaries.TOUCH_RADS / TOUCH_CORNERS: plane_tangent, polygon_edge, polygon_vertex)
 # obstacles: scattered along a free path, one across a cell or landblock border or corner
 # ("straddle_round"), or "tangent": one exactly tangent to the mover's end
 # or "sphere_contact": stepping up onto, or falling past, a sphere whose contact normal's z is
@@ -206,6 +208,8 @@ def draw_scene(draw, kind: str) -> Scene:
         return _tangent_scene(draw, world, bx, by, spheres)
     if policy == "sphere_contact":
         return _sphere_contact_scene(draw, bx, by)
+    if policy == "touch":
+        return _touch_scene(draw, bx, by)
     if policy != "scatter":
         return _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres)
 
@@ -395,6 +399,14 @@ TANGENT_STEPS = dr.f32(0.25, 1.0)  # of the mover's radius: one step, so the che
 TANGENT_KINDS = st.sampled_from(("sphere", "cylsphere"))
 TANGENT_RADII = dr.f32(0.1, 2.0)
 TANGENT_HEIGHTS = dr.f32(0.5, 4.0)
+EXACT_STEP_UP = st.sampled_from((False, True))
+TOUCHES = st.sampled_from(("face", "edge", "vertex"))
+TOUCH_RADS = st.sampled_from(bd.TOUCH_RADS)
+TOUCH_CORNERS = st.sampled_from(bd.TOUCH_CORNERS)
+TOUCH_SIZES = st.sampled_from(bd.TOUCH_SIZES)
+TOUCH_TALL = st.sampled_from((2.0, 4.0))
+TOUCH_SIDE = st.sampled_from((0.0, 0.25, -0.25))  # of the box's width: where along the face it is met
+SIGNS = st.sampled_from((1, -1))
 
 
 def _tangent_scene(draw, world, bx, by, spheres) -> Scene:
@@ -412,21 +424,70 @@ def _tangent_scene(draw, world, bx, by, spheres) -> Scene:
     kind = draw(TANGENT_KINDS)
     radius, radsum = bd.tangent_radius(kind, r, draw(TANGENT_RADII))
     ox, oy = gx1 + radsum * ax, gy1 + radsum * ay
+    height = 0.0
     if kind == "sphere":
         shape, oz = SphereShape(SphereRec((0.0, 0.0, 0.0), radius)), to_f32(to_f32(z0) + r)
     else:
-        shape, oz = CylSphereShape((0.0, 0.0, 0.0), radius, draw(TANGENT_HEIGHTS)), z0
+        height = draw(TANGENT_HEIGHTS)
+        shape, oz = CylSphereShape((0.0, 0.0, 0.0), radius, height), z0
     begin_cell = cell_of(bx, by, lx, ly)
     state = int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if draw(dr.BOOLEANS) else 0)
     steps = step_heights([r * t for t in (0.5, 1.0, 1.5)])
+    # maybe the step-up height is the rise StepSphereUp computes there, bit for bit (step_up_height)
+    up = dr.one_of(draw, STEP_UP_SITE, *steps)
+    if draw(EXACT_STEP_UP):
+        up = bd.tangent_step_up(kind, r, radius, height, z0)
     mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, z0))), end=position(gx1, gy1, z0),
-                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps),
+                  step_up_height=up,
                   step_down_height=dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps),
                   state=state, transient_state=int(TransientState.Contact | TransientState.OnWalkable),
                   contact_plane=ContactPlane(begin_cell, PlaneRec(n0, d0)), velocity=(0.0, 0.0, 0.0))
     reach = max(s.center[2] + s.radius for s in spheres)
     placed = [(shape, ox, oy, oz, IDENTITY, int(PhysicsState.Static))]
     return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), reach, placed, mover, f"obstacles:tangent-{kind}")
+
+
+def _touch_scene(draw, bx, by) -> Scene:
+    """A box (dyadic sizes, on flat ground at z 0) exactly touching the mover's sphere at the end
+    of a one-step move along an axis (strategies/boundaries.py: rad = r - EPSILON on GRID, every
+    coordinate on GRID): "face", a side face rad ahead (plane_tangent); "edge", the box's top at
+    the sphere centre's height with its edge rad ahead (polygon_edge, and plane_tangent on the
+    side face); "vertex", a top corner (a, b) off the centre with a^2 + b^2 == rad^2 (polygon_vertex)."""
+    how = draw(TOUCHES)
+    if how == "vertex":
+        rad, a, b = draw(TOUCH_CORNERS)
+    else:
+        rad, a, b = draw(TOUCH_RADS), None, None
+    r = bd.touch_radius(rad)
+    lx, ly = draw(TANGENT_STARTS), draw(TANGENT_STARTS)
+    ax, ay = draw(AXES)
+    step = bd.grid_floor(r * draw(TANGENT_STEPS))
+    gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
+    gx1, gy1 = gx0 + step * ax, gy0 + step * ay
+    along, across = draw(TOUCH_SIZES), draw(TOUCH_SIZES)
+    px, py = -ay, ax  # across the move
+    if how == "vertex":
+        side = draw(SIGNS)
+        ahead, off = a + along / 2, side * (b + across / 2)
+    else:
+        ahead, off = rad + along / 2, draw(TOUCH_SIDE) * across
+    ox, oy = gx1 + ahead * ax + off * px, gy1 + ahead * ay + off * py
+    height = to_f32(r) if how != "face" else draw(TOUCH_TALL)  # the top at the sphere centre's height
+    shape = sh.box(along if ax else across, across if ax else along, height)
+    if how != "vertex":  # a face's own node would turn the sphere away at dist == reach
+        shape = sh.one_leaf_above_ground(shape)
+    world = _World(tr.Field(0, (), 0, 0, draw(tr.LAND)))
+    begin_cell = cell_of(bx, by, lx, ly)
+    spheres = (SphereRec((0.0, 0.0, r), r),)
+    state = int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if draw(dr.BOOLEANS) else 0)
+    steps = step_heights([r * t for t in (0.5, 1.0, 1.5)])
+    mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, 0.0))), end=position(gx1, gy1, 0.0),
+                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps),
+                  step_down_height=dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps),
+                  state=state, transient_state=int(TransientState.Contact | TransientState.OnWalkable),
+                  contact_plane=ContactPlane(begin_cell, PlaneRec((0.0, 0.0, 1.0), 0.0)), velocity=(0.0, 0.0, 0.0))
+    placed = [(shape, ox, oy, 0.0, IDENTITY, draw(ob.BSP_STATES))]  # mostly a plain physics BSP
+    return _scene(world, bx, by, (gx0, gy0), (gx1, gy1), 2 * r, placed, mover, f"bsp:touch-{how}")
 
 
 EXACT_SLOPE_TARGETS = st.sampled_from(bd.exact_terrain_targets())
@@ -437,6 +498,8 @@ SLOPE_STARTS = st.sampled_from(("top", "top", "top", "air"))
 # a LandingZ slope is 85 degrees: a 0.04 m step-down probe meets it only within 3.5 mm of the top
 # edge, so that walk starts on the edge and stops a sliver past it (metres; above EPSILON)
 SLOPE_SLIVERS = dr.f32(0.0005, 0.0035)
+# maybe a step-down height of exactly 2r: walking off the top, TransitionalInsert compares them (step_down_height)
+EXACT_STEP_DOWN = st.sampled_from((False, True))
 
 
 def _exact_slope_scene(draw, bx, by, spheres) -> Scene:
@@ -481,9 +544,11 @@ def _exact_slope_scene(draw, bx, by, spheres) -> Scene:
         transient = int(TransientState.Contact) | (int(TransientState.OnWalkable) if walkable_side else 0)
         ez = bz
     steps = step_heights([r * t for t in (0.5, 1.0, 1.5)])
+    down = dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps)
+    if draw(EXACT_STEP_DOWN):
+        down = to_f32(2 * r)  # exact: doubling a float32
     mover = Mover(spheres=spheres, begin=Position(begin_cell, Frame((lx, ly, bz))), end=position(gx1, gy1, ez),
-                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps),
-                  step_down_height=dr.one_of(draw, STEP_DOWN_SITE, ob.radius_to_diameter(r), *steps),
+                  step_up_height=dr.one_of(draw, STEP_UP_SITE, *steps), step_down_height=down,
                   state=state, transient_state=transient, contact_plane=contact, velocity=draw(ob.VELOCITIES))
     reach = max(s.center[2] + s.radius for s in spheres)
     scene = _scene(world, bx, by, (gx, gy), (gx1, gy1), reach, [], mover, f"terrain:exact-slope-{name}")

@@ -217,6 +217,15 @@ def leaf_root(shape: BSPShape) -> BSPShape:
     return BSPShape(shape.polygons, BSPLeaf(tuple(range(len(shape.polygons))), True, shape.sphere), shape.sphere)
 
 
+def one_leaf_above_ground(shape: BSPShape) -> BSPShape:
+    """The same polygons in one solid leaf in front of a root split by the plane z = 0 (an empty
+    leaf behind it). No splitting plane lies on a face, so a sphere exactly touching a face
+    reaches the polygon test (a face's own node sends it to the empty side at dist == reach)."""
+    leaf = BSPLeaf(tuple(range(len(shape.polygons))), True, shape.sphere)
+    root = BSPNode(PlaneRec((0.0, 0.0, 1.0), 0.0), shape.sphere, leaf, BSPLeaf((), False, shape.sphere))
+    return BSPShape(shape.polygons, root, shape.sphere)
+
+
 def zero_radius_empty_leaves(shape: BSPShape) -> BSPShape:
     """The same tree with every empty leaf's bounding sphere shrunk to radius 0 (at the origin)."""
     def walk(node):

@@ -197,7 +197,7 @@ class BSPNode:
         return BoundingType.PartiallyInside
 
     @anchor("BSPNODE::sphere_intersects_poly", "BSPNode.cs:sphere_intersects_poly")
-    def sphere_intersects_poly(self, check_pos: Sphere, movement: Vector3, polygon, contact_point: Vector3):
+    def sphere_intersects_poly(self, check_pos: Sphere, movement: Vector3, polygon, contact_point: Vector3, trace=None):
         """Returns (hit, polygon, contact_point): ACE's two ref parameters after the call."""
         if not self.sphere.intersects(check_pos):
             return False, polygon, contact_point
@@ -206,24 +206,24 @@ class BSPNode:
         reach = check_pos.radius - EPSILON
 
         if dist >= reach:
-            return self.pos_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point)
+            return self.pos_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point, trace)
         if dist <= -reach:
-            return self.neg_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point)
+            return self.neg_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point, trace)
 
         if self.pos_node is not None:
-            hit, polygon, contact_point = self.pos_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point)
+            hit, polygon, contact_point = self.pos_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point, trace)
             if hit:
                 return True, polygon, contact_point
 
         if self.neg_node is not None:
-            hit, polygon, contact_point = self.neg_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point)
+            hit, polygon, contact_point = self.neg_node.sphere_intersects_poly(check_pos, movement, polygon, contact_point, trace)
             if hit:
                 return True, polygon, contact_point
 
         return False, polygon, contact_point
 
     @anchor("BSPNODE::sphere_intersects_solid", "BSPNode.cs:sphere_intersects_solid")
-    def sphere_intersects_solid(self, check_pos: Sphere, center_check: bool) -> bool:
+    def sphere_intersects_solid(self, check_pos: Sphere, center_check: bool, trace=None) -> bool:
         if not self.sphere.intersects(check_pos):
             return False
 
@@ -231,20 +231,20 @@ class BSPNode:
         reach = check_pos.radius - EPSILON
 
         if dist >= reach:
-            return self.pos_node.sphere_intersects_solid(check_pos, center_check)
+            return self.pos_node.sphere_intersects_solid(check_pos, center_check, trace)
         if dist <= -reach:
-            return self.neg_node.sphere_intersects_solid(check_pos, center_check)
+            return self.neg_node.sphere_intersects_solid(check_pos, center_check, trace)
 
         if dist < 0.0:
-            if self.pos_node.sphere_intersects_solid(check_pos, False):
+            if self.pos_node.sphere_intersects_solid(check_pos, False, trace):
                 return True
-            return self.neg_node.sphere_intersects_solid(check_pos, center_check)
-        if self.pos_node.sphere_intersects_solid(check_pos, center_check):
+            return self.neg_node.sphere_intersects_solid(check_pos, center_check, trace)
+        if self.pos_node.sphere_intersects_solid(check_pos, center_check, trace):
             return True
-        return self.neg_node.sphere_intersects_solid(check_pos, False)
+        return self.neg_node.sphere_intersects_solid(check_pos, False, trace)
 
     @anchor("BSPNODE::sphere_intersects_solid_poly", "BSPNode.cs:sphere_intersects_solid_poly")
-    def sphere_intersects_solid_poly(self, check_pos: Sphere, radius, center_solid: bool, hit_poly, center_check: bool):
+    def sphere_intersects_solid_poly(self, check_pos: Sphere, radius, center_solid: bool, hit_poly, center_check: bool, trace=None):
         """Returns (hit, center_solid, hit_poly): ACE's two ref parameters after the call."""
         if not self.sphere.intersects(check_pos):
             return False, center_solid, hit_poly
@@ -253,22 +253,22 @@ class BSPNode:
         reach = radius - EPSILON
 
         if dist >= reach:
-            return self.pos_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, center_check)
+            return self.pos_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, center_check, trace)
         if dist <= -reach:
-            return self.neg_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, center_check)
+            return self.neg_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, center_check, trace)
 
         if dist <= 0.0:
             _, center_solid, hit_poly = self.neg_node.sphere_intersects_solid_poly(
-                check_pos, radius, center_solid, hit_poly, center_check)
+                check_pos, radius, center_solid, hit_poly, center_check, trace)
             if hit_poly is not None:
                 return center_solid, center_solid, hit_poly
-            return self.pos_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, False)
+            return self.pos_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, False, trace)
 
         _, center_solid, hit_poly = self.pos_node.sphere_intersects_solid_poly(
-            check_pos, radius, center_solid, hit_poly, center_check)
+            check_pos, radius, center_solid, hit_poly, center_check, trace)
         if hit_poly is not None:
             return center_solid, center_solid, hit_poly
-        return self.neg_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, False)
+        return self.neg_node.sphere_intersects_solid_poly(check_pos, radius, center_solid, hit_poly, False, trace)
 
 
 class BSPLeaf(BSPNode):
@@ -319,18 +319,18 @@ class BSPLeaf(BSPNode):
         return self.num_polys != 0
 
     @anchor("BSPLEAF::sphere_intersects_poly", "BSPLeaf.cs:sphere_intersects_poly")
-    def sphere_intersects_poly(self, check_pos: Sphere, movement: Vector3, hit_poly, contact_point: Vector3):
+    def sphere_intersects_poly(self, check_pos: Sphere, movement: Vector3, hit_poly, contact_point: Vector3, trace=None):
         if self.num_polys == 0 or not self.sphere.intersects(check_pos):
             return False, hit_poly, contact_point
 
         for polygon in self.polygons:
-            hit, contact_point, hit_poly = polygon.pos_hits_sphere(check_pos, movement, contact_point, hit_poly)
+            hit, contact_point, hit_poly = polygon.pos_hits_sphere(check_pos, movement, contact_point, hit_poly, trace)
             if hit:
                 return True, hit_poly, contact_point
         return False, hit_poly, contact_point
 
     @anchor("BSPLEAF::sphere_intersects_solid", "BSPLeaf.cs:sphere_intersects_solid")
-    def sphere_intersects_solid(self, check_pos: Sphere, check_center: bool) -> bool:
+    def sphere_intersects_solid(self, check_pos: Sphere, check_center: bool, trace=None) -> bool:
         if self.num_polys == 0:
             return False
         if check_center and self.solid:
@@ -339,12 +339,12 @@ class BSPLeaf(BSPNode):
             return False
 
         for polygon in self.polygons:
-            if polygon.hits_sphere(check_pos):
+            if polygon.hits_sphere(check_pos, trace):
                 return True
         return False
 
     @anchor("BSPLEAF::sphere_intersects_solid_poly", "BSPLeaf.cs:sphere_intersects_solid_poly")
-    def sphere_intersects_solid_poly(self, check_pos: Sphere, radius, center_solid: bool, hit_poly, check_center: bool):
+    def sphere_intersects_solid_poly(self, check_pos: Sphere, radius, center_solid: bool, hit_poly, check_center: bool, trace=None):
         if self.num_polys == 0:
             return False, center_solid, hit_poly
 
@@ -355,7 +355,7 @@ class BSPLeaf(BSPNode):
             return center_solid, center_solid, hit_poly
 
         for polygon in self.polygons:
-            if polygon.hits_sphere(check_pos):
+            if polygon.hits_sphere(check_pos, trace):
                 return True, center_solid, polygon
         return center_solid, center_solid, hit_poly
 
@@ -472,8 +472,8 @@ class BSPTree:
             if path.building_check:
                 clear_cell = not path.hits_interior_cell
 
-            if self.root_node.sphere_intersects_solid(local_sphere, clear_cell) or (
-                path.num_sphere > 1 and self.root_node.sphere_intersects_solid(local_sphere_, clear_cell)
+            if self.root_node.sphere_intersects_solid(local_sphere, clear_cell, trace=path.trace) or (
+                path.num_sphere > 1 and self.root_node.sphere_intersects_solid(local_sphere_, clear_cell, trace=path.trace)
             ):
                 return TransitionState.Collided
             return TransitionState.OK
@@ -511,14 +511,14 @@ class BSPTree:
         obj = transition.object_info
 
         if obj.state & ObjectInfoState.Contact:
-            hit, hit_poly, contact_point = self.root_node.sphere_intersects_poly(local_sphere, movement, hit_poly, contact_point)
+            hit, hit_poly, contact_point = self.root_node.sphere_intersects_poly(local_sphere, movement, hit_poly, contact_point, trace=path.trace)
             if hit:
                 return self.step_sphere_up(transition, hit_poly.plane.normal)
 
             if path.num_sphere > 1:
                 hit_poly_ = None
 
-                hit, hit_poly_, contact_point = self.root_node.sphere_intersects_poly(local_sphere_, movement, hit_poly_, contact_point)
+                hit, hit_poly_, contact_point = self.root_node.sphere_intersects_poly(local_sphere_, movement, hit_poly_, contact_point, trace=path.trace)
                 if hit:
                     return self.slide_sphere(transition, hit_poly_.plane.normal)
 
@@ -528,7 +528,7 @@ class BSPTree:
                     return self.neg_poly_hit(path, hit_poly, True)
             return TransitionState.OK
 
-        hit, hit_poly, contact_point = self.root_node.sphere_intersects_poly(local_sphere, movement, hit_poly, contact_point)
+        hit, hit_poly, contact_point = self.root_node.sphere_intersects_poly(local_sphere, movement, hit_poly, contact_point, trace=path.trace)
         if hit or hit_poly is not None:
             if obj.state & ObjectInfoState.PathClipped:
                 return self.collide_with_pt(transition, local_sphere, center, hit_poly, contact_point, scale)
@@ -539,7 +539,7 @@ class BSPTree:
 
             return TransitionState.Adjusted
         elif path.num_sphere > 1:
-            hit, hit_poly, contact_point = self.root_node.sphere_intersects_poly(local_sphere_, movement, hit_poly, contact_point)
+            hit, hit_poly, contact_point = self.root_node.sphere_intersects_poly(local_sphere_, movement, hit_poly, contact_point, trace=path.trace)
             if hit or hit_poly is not None:
                 collision_normal = path.local_space_pos.local_to_global_vec(hit_poly.plane.normal)
                 collisions.set_collision_normal(collision_normal)
@@ -574,14 +574,14 @@ class BSPTree:
 
         for i in range(PLACEMENT_ITERATIONS):
             center_solid = False
-            hit, center_solid, hit_poly = self.root_node.sphere_intersects_solid_poly(valid_pos, rad, center_solid, hit_poly, clear_cell)
+            hit, center_solid, hit_poly = self.root_node.sphere_intersects_solid_poly(valid_pos, rad, center_solid, hit_poly, clear_cell, trace=path.trace)
             if hit:
                 if hit_poly is not None:
                     hit_poly.adjust_to_placement_poly(valid_pos, valid_pos_, rad, center_solid, clear_cell)
                     continue
             else:
                 if path.num_sphere >= 2:
-                    hit, center_solid, hit_poly = self.root_node.sphere_intersects_solid_poly(valid_pos_, rad, center_solid, hit_poly, clear_cell)
+                    hit, center_solid, hit_poly = self.root_node.sphere_intersects_solid_poly(valid_pos_, rad, center_solid, hit_poly, clear_cell, trace=path.trace)
                     if hit:
                         if hit_poly is not None:
                             hit_poly.adjust_to_placement_poly(valid_pos_, valid_pos, rad, center_solid, clear_cell)

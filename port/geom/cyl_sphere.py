@@ -338,6 +338,8 @@ class CylSphere:
     def step_sphere_up(self, transition, check_pos, disp: Vector3, radsum) -> TransitionState:
         obj = transition.object_info
 
+        if transition.trace is not None:
+            transition.trace.boundary("step_up_height", obj.step_up_height, check_pos.radius + self.height - disp.z)
         if obj.step_up_height < check_pos.radius + self.height - disp.z:
             return self.slide_sphere(transition, check_pos, disp, radsum, 0)
 

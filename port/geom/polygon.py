@@ -246,9 +246,9 @@ class Polygon:
         return False, normal
 
     @anchor("CPolygon::hits_sphere", "Polygon.cs:hits_sphere")
-    def hits_sphere(self, sphere) -> bool:
+    def hits_sphere(self, sphere, trace=None) -> bool:
         contact_point = zero_like(sphere.radius)
-        hit, _ = self.polygon_hits_sphere_precise(sphere, contact_point)
+        hit, _ = self.polygon_hits_sphere_precise(sphere, contact_point, trace)
         return hit
 
     @anchor("CPolygon::make_plane", "Polygon.cs:make_plane")
@@ -361,8 +361,10 @@ class Polygon:
         return result, contact_point
 
     @anchor("CPolygon::polygon_hits_sphere_precise", "Polygon.cs:polygon_hits_sphere_precise")
-    def polygon_hits_sphere_precise(self, sphere, contact_point: Vector3) -> tuple[bool, Vector3]:
+    def polygon_hits_sphere_precise(self, sphere, contact_point: Vector3, trace=None) -> tuple[bool, Vector3]:
         """``polygon_hits_sphere_precise(sphere, ref contactPoint)``: returns (hit, contact_point).
+        `trace` (not ACE's: the run's branches.Trace or None) counts the plane_tangent,
+        polygon_edge and polygon_vertex boundaries where their comparisons are made.
 
         The loop structure is ACE's: the outer loop only looks for the first edge the contact
         point lies outside of; from there the inner loop re-runs every edge from the start and
@@ -374,6 +376,8 @@ class Polygon:
         plane = self.plane
         dp_pos = dot(plane.normal, sphere.center) + plane.d
         rad = sphere.radius - EPSILON
+        if trace is not None:
+            trace.boundary("plane_tangent", abs(dp_pos), rad)
         if abs(dp_pos) > rad:
             return False, contact_point
 
@@ -407,6 +411,8 @@ class Polygon:
                 disp_dot = dot(disp, cross_)
 
                 if disp_dot < 0.0:
+                    if trace is not None:
+                        trace.boundary("polygon_edge", cross_.length_squared() * diff, disp_dot * disp_dot)
                     if cross_.length_squared() * diff < disp_dot * disp_dot:
                         return False, contact_point
 
@@ -414,20 +420,22 @@ class Polygon:
                     if disp_edge >= 0.0 and disp_edge <= edge.length_squared():
                         return True, contact_point
 
+                if trace is not None:
+                    trace.boundary("polygon_vertex", disp.length_squared(), diff)
                 if disp.length_squared() <= diff:
                     return True, contact_point
             return False, contact_point
         return True, contact_point
 
     @anchor("CPolygon::pos_hits_sphere", "Polygon.cs:pos_hits_sphere")
-    def pos_hits_sphere(self, sphere, movement: Vector3, contact_point: Vector3, hit_poly) -> tuple[bool, Vector3, "Polygon | None"]:
+    def pos_hits_sphere(self, sphere, movement: Vector3, contact_point: Vector3, hit_poly, trace=None) -> tuple[bool, Vector3, "Polygon | None"]:
         """``pos_hits_sphere(sphere, movement, ref contactPoint, ref hitPoly)``.
 
         Returns (result, contact_point, hit_poly). hit_poly becomes this polygon whenever the
         sphere touches it, even when the result is False because the movement is not into the
         front face (dot(movement, normal) >= 0): BSP callers test ``hit_poly is not None``.
         """
-        hit, contact_point = self.polygon_hits_sphere_precise(sphere, contact_point)
+        hit, contact_point = self.polygon_hits_sphere_precise(sphere, contact_point, trace)
 
         if hit:
             hit_poly = self
@@ -446,5 +454,5 @@ class Polygon:
         if dp <= path.walkable_allowance:
             return False
         contact_point = zero_like(sphere.radius)
-        hit, _ = self.polygon_hits_sphere_precise(sphere, contact_point)
+        hit, _ = self.polygon_hits_sphere_precise(sphere, contact_point, path.trace)
         return hit

@@ -463,6 +463,8 @@ def step_sphere_down(center: Vector3, radius, transition, check_pos: Sphere, dis
 @anchor("CSphere::step_sphere_up", "Sphere.cs:StepSphereUp", "static overload (center, Transition, disp, radsum)")
 def step_sphere_up(center: Vector3, transition, disp: Vector3, radsum) -> TransitionState:
     radsum += EPSILON
+    if transition.trace is not None:
+        transition.trace.boundary("step_up_height", transition.object_info.step_up_height, radsum - disp.z)
     if transition.object_info.step_up_height < radsum - disp.z:
         return slide_sphere_by_disp(center, transition, disp, 0)
     glob_center = transition.sphere_path.global_curr_center[0].center

@@ -133,11 +133,30 @@ BOUNDARIES: dict[str, str] = {
     "bsp_split_walkable": "a BSP node's two sides both gave a walkable polygon (the visiting order decides)",
     "cell_border": "the transition ended exactly on a cell border (x or y a multiple of 24 m)",
     "landblock_border": "the transition ended exactly on a landblock border (x or y a multiple of 192 m)",
+    "plane_tangent": "Polygon.polygon_hits_sphere_precise: a polygon's plane exactly at the sphere's radius less EPSILON"
+                     " from its centre (|dp_pos| == rad)",
+    "polygon_edge": "Polygon.polygon_hits_sphere_precise: an edge exactly tangent to the circle the sphere cuts from the"
+                    " plane (cross.LengthSquared() * diff == dispDot * dispDot)",
+    "polygon_vertex": "Polygon.polygon_hits_sphere_precise: a vertex exactly on that circle (disp.LengthSquared() == diff;"
+                      " 0 == 0 when the vertex is the contact point of a sphere tangent to the plane)",
+    "step_up_height": "Sphere/CylSphere.StepSphereUp: the rise to climb bit-equal to the mover's StepUpHeight",
+    "step_down_height": "Transition.TransitionalInsert and CheckWalkable: the step-down height bit-equal to the mover's"
+                        " sphere diameter (one whole step-down or two halves)",
 }
 
 
+# Where they are counted: floor_z/landing_z at every walkable test against those constants; the
+# tangencies in Sphere/CylSphere.IntersectsSphere; plane_tangent, polygon_edge and polygon_vertex in
+# Polygon.polygon_hits_sphere_precise, whose callers pass the trace down the BSP (BSPTree.adjust_to_plane
+# has no path and passes none: its polygon tests go uncounted); step_up_height in StepSphereUp;
+# step_down_height where TransitionalInsert and CheckWalkable compare the step-down height with 2r.
+# Issue 14 also names rises "exactly 1.5x the step-up height": ACE (7b47913) compares no height with
+# 1.5 x StepUpHeight anywhere (grep Physics/ for StepUpHeight: only the two StepSphereUp tests), so
+# that is no boundary of ACE's to count; its step tests are the two above.
+
 # the boundaries a Trace measures in ulps (the others are counted only when hit)
-MEASURED_IN_ULPS = ("floor_z", "landing_z", "sphere_tangent", "cylsphere_tangent")
+MEASURED_IN_ULPS = ("floor_z", "landing_z", "sphere_tangent", "cylsphere_tangent", "plane_tangent", "polygon_edge",
+                    "polygon_vertex", "step_up_height", "step_down_height")
 
 
 _F32, _U32 = struct.Struct("<f"), struct.Struct("<I")

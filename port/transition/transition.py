@@ -211,6 +211,8 @@ class Transition:
         sp.check_walkable = True
 
         glob_sphere = sp.global_sphere[0]
+        if self.trace is not None:
+            self.trace.boundary("step_down_height", step_height, glob_sphere.radius * 2)
         if sp.num_sphere < 2 and step_height > glob_sphere.radius * 2:
             step_height = glob_sphere.radius * 0.5
 
@@ -574,6 +576,8 @@ class Transition:
                     sp.save_check_pos()
 
                     radsum = sp.global_sphere[0].radius * 2
+                    if self.trace is not None:
+                        self.trace.boundary("step_down_height", step_down_height, radsum)
                     if sp.num_sphere < 2:
                         if radsum < step_down_height:
                             step_down_height = sp.global_sphere[0].radius * 0.5

@@ -141,6 +141,37 @@ MUTATIONS: tuple[Mutation, ...] = (
              "        x = offset[0] + cast_float(_x, cs_floor(_x / CELL_LENGTH))",
              "        x = offset[0] + cast_float(_x, -cs_floor(-_x / CELL_LENGTH) - 1)",
              "get_outside_lcoord puts a point exactly on a cell border (x) in the cell below it"),
+    # polygon touches, step heights at the rise (issue 14's second set): each comparison flipped at its equality
+    Mutation("plane_tangent_not_touching", "geom/polygon.py",
+             "        if abs(dp_pos) > rad:\n            return False, contact_point\n\n"
+             "        diff = rad * rad - dp_pos * dp_pos\n        contact_point = sphere.center - plane.normal * dp_pos",
+             "        if abs(dp_pos) >= rad:\n            return False, contact_point\n\n"
+             "        diff = rad * rad - dp_pos * dp_pos\n        contact_point = sphere.center - plane.normal * dp_pos",
+             "polygon_hits_sphere_precise's `|dp_pos| > rad` made `>=`: a plane exactly rad from the centre is missed"),
+    Mutation("polygon_edge_touch_missed", "geom/polygon.py",
+             "if cross_.length_squared() * diff < disp_dot * disp_dot:",
+             "if cross_.length_squared() * diff <= disp_dot * disp_dot:",
+             "polygon_hits_sphere_precise's edge test `<` made `<=`: an edge exactly tangent to the sphere is missed"),
+    Mutation("polygon_vertex_touch_missed", "geom/polygon.py",
+             "                if disp.length_squared() <= diff:\n                    return True, contact_point",
+             "                if disp.length_squared() < diff:\n                    return True, contact_point",
+             "polygon_hits_sphere_precise's vertex test `<=` made `<`: a vertex exactly on the sphere is missed"),
+    Mutation("sphere_step_up_inclusive", "geom/sphere.py",
+             "    if transition.object_info.step_up_height < radsum - disp.z:",
+             "    if transition.object_info.step_up_height <= radsum - disp.z:",
+             "Sphere.StepSphereUp's `StepUpHeight < rise` made `<=`: a rise exactly the step-up height slides"),
+    Mutation("cylsphere_step_up_inclusive", "geom/cyl_sphere.py",
+             "        if obj.step_up_height < check_pos.radius + self.height - disp.z:",
+             "        if obj.step_up_height <= check_pos.radius + self.height - disp.z:",
+             "CylSphere.StepSphereUp's `StepUpHeight < rise` made `<=`: a rise exactly the step-up height slides"),
+    Mutation("step_down_whole_strict", "transition/transition.py",
+             "                    if radsum >= step_down_height:",
+             "                    if radsum > step_down_height:",
+             "TransitionalInsert's `2r >= stepDownHeight` made `>`: a step-down of exactly 2r is taken in two halves"),
+    Mutation("check_walkable_halving_inclusive", "transition/transition.py",
+             "        if step_height > glob_sphere.radius * 2:\n            step_height = step_height * 0.5",
+             "        if step_height >= glob_sphere.radius * 2:\n            step_height = step_height * 0.5",
+             "CheckWalkable's `stepHeight > 2r` made `>=`: a probe of exactly 2r is halved"),
     # registration: where a static is placed (PhysicsObj.add_obj_to_cell's chain)
     Mutation("add_cell_block_own_landblock_skip_dropped", "cell/land_cell.py",
              "            if id >> 16 != cell_id >> 16:\n                continue\n",
@@ -298,11 +329,12 @@ def hunt(index: int, budget: int = BUDGET, seed: int = SEED, failures_dir=None, 
 
 # ---------------------------------------------------------------- the corpus replay (no generation)
 
-def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED) -> dict:
+def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED, only=None) -> dict:
     """Replay the recorded corpus (records of `runtime`, in a seeded shuffle) through the mutant
     against ACE's recorded answer, until a record where the mutant differs from ACE and the real
     port does not (a record the real port already gets wrong kills nothing). Says whether the
-    corpus kills the mutant and after how many records."""
+    corpus kills the mutant and after how many records. `only`: replay just these record keys (in
+    the same shuffle), e.g. the fast lane's sample."""
     import random
     import time
     import warnings
@@ -316,6 +348,9 @@ def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED)
     mutant = load_mutant(index)
     oracle = RecordedOracle(corpus_dir)
     keys = oracle.select(runtime=runtime)
+    if only is not None:
+        only = set(only)
+        keys = [k for k in keys if k in only]
     random.Random(seed).shuffle(keys)
     t0 = time.monotonic()
     out = {"name": MUTATIONS[index].name, "killed": False, "records": len(keys), "records_to_kill": None}

@@ -3,7 +3,7 @@
     python tests/runner/mutation_report.py [-j 2] [--budget 1500] [--seed 0] [--only NAME,...] [--json FILE]
     python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [-j 2] [--only ...]
     ACE_ASSEMBLY=... python tests/runner/mutation_report.py --live 4000 [--only ...]
-    python tests/runner/mutation_report.py --fast-lane 600 [--only ...]
+    python tests/runner/mutation_report.py --fast-lane 600 [--lane-tests tests/port,...] [--lane-workers 1 -j 2] [--only ...]
 
 Runs the same hunt as test_mutations.py (mutants.hunt: one worker per mutant, no example
 database), mutants spread over -j processes. With --corpus, generates nothing: replays the
@@ -11,9 +11,15 @@ recorded corpus through each mutant against ACE's recorded answers (mutants.corp
 says which mutants the corpus alone kills. With --live N, each mutant is the implementation
 under test (tests/impl/planted_impl.py, --impl) in `acconform check -n N` against live ACE (the
 configured ACE_ASSEMBLY), one worker, no example database, stopping at its first difference.
+With --fast-sample, each mutant replays only the fast lane's differential sample
+(tests/runner/test_differential.py's records of both runtimes, in-process, as --corpus does):
+the part of the every-push lane that compares with ACE's answers, without pytest's start-up
+per mutant; a kill there fails the fast lane (the lane's other tests can only add kills).
 With --fast-lane S, each mutant is applied to a checkout of HEAD (benchmarks/revision.py's
 shim puts it on PYTHONPATH) whose every-push lane (`pytest -x -m "not slow"`) runs for at most S
 seconds: a failing test kills the mutant; running out of time says nothing either way.
+--lane-tests narrows the lane to some of its paths (comma-separated, under tests/) and
+--lane-workers sets its xdist workers (0: in one process); with 0 or 1, -j lanes run at once.
 """
 
 from __future__ import annotations
@@ -40,6 +46,22 @@ def _replay(args):
     return corpus_kill(i, corpus, runtime, seed)
 
 
+def _sample_replay(args):
+    """The fast lane's differential sample (test_differential's records, both runtimes) through the mutant."""
+    from acconform.oracle import default_corpus
+    from corpus_sample import load_sample
+
+    i, seed = args
+    out = {"name": MUTATIONS[i].name, "killed": False}
+    for runtime in ("mono", "coreclr"):
+        keys = [key for key, _kind, _branches in load_sample(runtime)["records"]]
+        r = corpus_kill(i, default_corpus(runtime), runtime, seed, only=keys)
+        out[runtime] = r["records_to_kill"]
+        out["killed"] = out["killed"] or r["killed"]
+        out["records"] = r["records"]
+    return out
+
+
 def _rows(fn, jobs, a, pooled: bool = True) -> list[dict]:
     """Each job's row (printed as a JSON line as it comes, and written to --json at the end);
     pooled over -j processes, or one at a time (a job that runs workers of its own)."""
@@ -63,6 +85,10 @@ def main(argv=None) -> int:
     p.add_argument("--corpus", default=None, metavar="DIR", help="replay this recorded corpus instead of hunting")
     p.add_argument("--fast-lane", type=int, default=0, metavar="S",
                    help="run the fast test lane (at most S seconds) on a checkout with each mutant applied instead")
+    p.add_argument("--fast-sample", action="store_true",
+                   help="replay only the fast lane's differential sample (both runtimes) through each mutant")
+    p.add_argument("--lane-tests", default="tests", help="with --fast-lane: the test paths to run (comma-separated)")
+    p.add_argument("--lane-workers", type=int, default=2, help="with --fast-lane: pytest-xdist workers per lane")
     p.add_argument("--live", type=int, default=0, metavar="N", help="a live campaign of N cases per mutant instead")
     p.add_argument("--runtime", default="mono", help="with --corpus: the records' runtime (mono or coreclr)")
     a = p.parse_args(argv)
@@ -76,6 +102,13 @@ def main(argv=None) -> int:
         return _live_report(picked, a)
     if a.fast_lane:
         return _fast_lane_report(picked, a)
+    if a.fast_sample:
+        rows = _rows(_sample_replay, [(i, a.seed) for i in picked], a)
+        print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by the fast lane's differential sample")
+        print(f"{'mutant':42} {'killed':>6} {'mono at':>8} {'coreclr at':>10}")
+        for r in rows:
+            print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r['mono'] or '-':>8} {r['coreclr'] or '-':>10}")
+        return 0
     if a.corpus is not None:
         if not Path(a.corpus).is_dir():
             print(f"mutation_report: no corpus directory at {a.corpus}", file=sys.stderr)
@@ -123,7 +156,7 @@ def _fast_lane(args):
     sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
     from revision import revision_env
 
-    i, limit = args
+    i, limit, tests, workers = args
     m = MUTATIONS[i]
     with revision_env("HEAD") as env:
         tree = Path(env["PYTHONPATH"]) / "acconform" / "port"
@@ -134,7 +167,8 @@ def _fast_lane(args):
         t0 = time.monotonic()
         try:
             r = subprocess.run([sys.executable, "-m", "pytest", "-x", "-q", "-m", "not slow", "-p", "no:cacheprovider",
-                                "-n", "2", "tests"], cwd=root, env=env, capture_output=True, text=True, timeout=limit)
+                                "-n", str(workers), *tests], cwd=root, env=env, capture_output=True, text=True,
+                               timeout=limit)
             failed = [ln for ln in r.stdout.splitlines() if ln.startswith(("FAILED", "ERROR"))][:1]
             # -x under xdist ends a failing lane as interrupted (exit 2): a FAILED line decides
             verdict = "killed" if failed else {0: "survived"}.get(r.returncode, f"exit {r.returncode}")
@@ -145,10 +179,13 @@ def _fast_lane(args):
 
 
 def _fast_lane_report(picked, a) -> int:
-    # one at a time: the lane itself runs two workers
-    rows = _rows(_fast_lane, [(i, a.fast_lane) for i in picked], a, pooled=False)
-    print(f"{sum(r['fast_lane'] == 'killed' for r in rows)}/{len(rows)} killed by the fast lane "
-          f"({sum(r['fast_lane'] == 'timed out' for r in rows)} ran out of its {a.fast_lane} s)")
+    # a lane of two workers runs alone; lanes of one process run -j at once
+    tests = a.lane_tests.split(",")
+    rows = _rows(_fast_lane, [(i, a.fast_lane, tests, a.lane_workers) for i in picked], a, pooled=a.lane_workers <= 1)
+    print(f"{sum(r['fast_lane'] == 'killed' for r in rows)}/{len(rows)} killed by the fast lane ({' '.join(tests)}; "
+          f"{sum(r['fast_lane'] == 'timed out' for r in rows)} ran out of its {a.fast_lane} s)")
+    for r in rows:
+        print(f"{r['name']:42} {r['fast_lane']:>10} {r['seconds']:7.1f} s  {r['first_failure'] or ''}")
     return 0
 
 

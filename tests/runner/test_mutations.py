@@ -31,6 +31,34 @@ Kill rates of the 31 planted bugs (issue 14; `python tests/runner/mutation_repor
   (step_down_walkable_strict by the terrain exact_slope policy, step_sphere_down_allowance_strict
   and walkable_allowable_inclusive by the obstacle sphere_contact policy).
 
+Seven more (issue 14's second set: plane_tangent_not_touching, polygon_edge_touch_missed,
+polygon_vertex_touch_missed, sphere_step_up_inclusive, cylsphere_step_up_inclusive,
+step_down_whole_strict, check_walkable_halving_inclusive), each flipping a comparison at the
+boundary of the same name in branches.BOUNDARIES, measured after the 856 records that hit them
+(tests/data/corpus/README.md) went into the corpus (14,421 records), seed 0:
+
+- the corpus replay alone: 6 of 7 (records to the kill: 30, 30, 73, 832, 173, 188; the seventh,
+  check_walkable_halving_inclusive, survives all 14,421 records);
+  before those records the corpus had none at the three polygon boundaries.
+- a live campaign against ACE on mono (--live 4000): 6 of 7 (cases run, shrinking included: 76,
+  2,684, 1,055, 765, 2,365, 1,857; check_walkable_halving_inclusive survives 4,000).
+  So 6 of 6 non-equivalent for both: check_walkable_halving_inclusive is in UNREACHABLE (equivalent
+  in practice, the reason there); whether this 1,500-scene hunt catches the other six is not run yet.
+- the fast lane: see FAST_LANE below (all 38).
+
+FAST_LANE, all 38 (--fast-sample: each mutant replays, in-process, the fast lane's differential
+sample: the 1,500 records of tests/data/corpus/<runtime>/fast-sample.json that
+test_differential.py replays every push, both runtimes, against ACE's recorded answers; a kill
+there fails the every-push lane. Measured because the whole lane per mutant, ~150 s on two cores,
+did not fit beside the other engineers' jobs; the lane's other tests could only add kills):
+33 of 38, i.e. 33 of 35 non-equivalent (94.3 %). Surviving: the three UNREACHABLE, and
+adjust_offset_block_offset_dropped and walkable_allowable_inclusive, which the full corpus kills
+(the corpus figures above) but no sample record does. The whole lane
+(--fast-lane) was measured for step_down_walkable_strict only (killed in 87 s, above).
+
+Survivors everywhere: the three UNREACHABLE below (equivalent in practice: the first two because
+their boundary cannot be drawn, the third because its two probe lengths meet the same ground).
+
 Indoor mutants (issue 12; this hunt on the indoor kind, BUDGET 1,500, seed 0; the first three on
 the strategies of 0ec653f, the other two on those of bc70bd4): portal_side_flipped caught at scene 511, point_in_cell_close_is_outside at
 181, visible_cell_pruning_skipped at 42 (once dungeons could sit just below the ground: before
@@ -65,9 +93,18 @@ UNREACHABLE = {
     # its cell BSP; that changes an outcome only if the neighbour has a polygon or static the sphere
     # reaches from there, i.e. one outside the neighbour's own cell planes, which no drawn dungeon has
     "cell_bsp_slack_dropped": "a neighbour's polygons lie within its cell BSP: one 0.01 m beyond it is never reached",
+    # CheckWalkable probes down from where StepDown just put the sphere on walkable ground, so a probe of
+    # r meets that ground as surely as one of 2r: only ground between r and 2r under a sphere that is not
+    # on it would tell them apart. Equivalent in practice (the corpus and live ACE, 4,000 cases, agree)
+    "check_walkable_halving_inclusive": "CheckWalkable's probe starts on the ground StepDown found: r and 2r meet it alike",
 }
 # mutants this hunt misses at its budget and seed, but the recorded corpus kills (not equivalent)
 FOUND_BY_THE_CORPUS = {
+    # seed 0's live campaign needed 2,684, 2,365 and 1,857 cases (shrinking included) for these: the
+    # 1,500-scene hunt may miss them; the corpus kills each within 200 records (not yet run in this hunt)
+    "polygon_edge_touch_missed": "an edge exactly tangent: the bsp touch policy's edge variant, 1 in ~45 bsp scenes",
+    "cylsphere_step_up_inclusive": "the tangent policy's cylsphere with the exact step-up, 1 in ~24 obstacle scenes",
+    "step_down_whole_strict": "a step-down height of exactly 2r with the step-down taken (TransitionalInsert)",
     "adjust_offset_block_offset_dropped": "needs a grounded mover on a sloped contact plane stepping into the next "
                                           "landblock; seed 0's 1,500 scenes draw none, the corpus has them",
 }

@@ -132,3 +132,112 @@ def test_every_solved_sphere_contact_hits_its_threshold_exactly_wherever_it_is_m
 
     monkeypatch.setattr(scenes, "SPHERE_CONTACTS", st.just(entry))
     check()
+
+
+def _drawn(composite, n: int, seed: int):
+    """n scenes drawn from a composite strategy (Hypothesis' engine, generation only)."""
+    from hypothesis import HealthCheck, Phase, given, settings
+    from hypothesis import seed as hseed
+
+    out = []
+
+    @hseed(seed)
+    @settings(max_examples=n, database=None, phases=[Phase.generate], deadline=None,
+              suppress_health_check=list(HealthCheck))
+    @given(composite)
+    def collect(scene):
+        out.append(scene)
+
+    collect()
+    return out
+
+
+def _traced(scene):
+    from acconform.port.run import run_scene
+    from acconform.port.transition.branches import Trace
+
+    trace = Trace()
+    run_scene(scene, trace=trace)
+    return trace
+
+
+@pytest.mark.parametrize("r", bd.TOUCH_RADS + tuple(c[0] for c in bd.TOUCH_CORNERS))
+def test_a_touch_radius_less_epsilon_is_its_grid_value_in_float32(r):
+    import numpy as np
+
+    from acconform.port.constants import EPSILON
+
+    radius = bd.touch_radius(r)
+    assert float(np.float32(radius) - np.float32(EPSILON)) == r and bd.on_grid(r)
+
+
+def test_every_touch_corner_is_a_float32_pythagorean_triple():
+    import numpy as np
+
+    f = np.float32
+    for rad, a, b in bd.TOUCH_CORNERS:
+        assert f(a) * f(a) + f(b) * f(b) == f(rad) * f(rad), (rad, a, b)
+
+
+@pytest.mark.anchor("CPolygon::polygon_hits_sphere_precise")
+def test_every_touch_scene_makes_the_polygon_test_compare_at_equality():
+    import importlib
+
+    from hypothesis import strategies as st
+
+    scenes = importlib.import_module("acconform.strategies.scenes")
+    drawn = _drawn(st.composite(lambda draw: scenes._touch_scene(draw, 0x20, 0x30))(), 45, 3)
+    want = {"face": "plane_tangent", "edge": "polygon_edge", "vertex": "polygon_vertex"}
+    seen = set()
+    from acconform.strategies.objects import BSP_STATE
+
+    for scene in drawn:
+        if scene.objects[0].state != BSP_STATE:  # ethereal, ignored or without a physics BSP: no polygon test
+            continue
+        how = scene.name.rsplit("-", 1)[1]
+        seen.add(how)
+        assert _traced(scene)["boundary:" + want[how]] > 0, (scene.name, scene)
+    assert seen == set(want)
+
+
+@pytest.mark.anchor("CSphere::step_sphere_up")
+@pytest.mark.anchor("CCylSphere::step_sphere_up")
+def test_a_tangent_scene_with_the_exact_step_up_makes_step_sphere_up_compare_at_equality():
+    import importlib
+
+    from hypothesis import strategies as st
+
+    scenes = importlib.import_module("acconform.strategies.scenes")
+    world = scenes._World(scenes.tr.Field(30, (), 0, 0, 1))
+
+    @st.composite
+    def exact(draw):
+        scene = scenes._tangent_scene(draw, world, 0x20, 0x30, draw(scenes.MOVER_SPHERES))
+        o, m = scene.objects[0], scene.mover
+        height = getattr(o.shape, "height", 0.0)
+        kind = "sphere" if "sphere" == scene.name.rsplit("-", 1)[1] else "cylsphere"
+        up = bd.tangent_step_up(kind, m.spheres[0].radius, o.shape.radius if kind == "cylsphere" else
+                                o.shape.sphere.radius, height, m.begin.frame.origin[2])
+        return scene, kind, up == m.step_up_height
+
+    kinds = set()
+    for scene, kind, is_exact in _drawn(exact(), 80, 4):
+        if is_exact:
+            kinds.add(kind)
+            assert _traced(scene)["boundary:step_up_height"] > 0, scene
+    assert kinds == {"sphere", "cylsphere"}
+
+
+@pytest.mark.anchor("CTransition::transitional_insert")
+def test_an_exact_slope_walk_with_a_step_down_of_exactly_2r_compares_them_at_equality():
+    import importlib
+
+    from hypothesis import strategies as st
+
+    scenes = importlib.import_module("acconform.strategies.scenes")
+    drawn = _drawn(st.composite(lambda draw: scenes._exact_slope_scene(draw, 0x20, 0x30, draw(scenes.MOVER_SPHERES)))(),
+                   60, 5)
+    exact = [s for s in drawn if s.mover.step_down_height == 2 * s.mover.spheres[0].radius
+             and s.mover.contact_plane is not None and "floor_z" in s.name]
+    assert exact, "no walkable-side exact slope walk with a step-down of 2r drawn"
+    assert any(_traced(s)["boundary:step_down_height"] for s in exact)

@@ -1,0 +1,71 @@
+"""Draw cost side by side: ms per drawn scene, per kind, for this tree and for another revision.
+
+    python benchmarks/bench_draw.py [--against d257643] [-n 300] [--rounds 3] [--seed 0]
+
+Each measurement is its own subprocess (one revision's `acconform` imported per process: this
+tree's, or REV's through benchmarks/revision.py's shim), drawing n scenes of one kind with
+`sample_scenes` (Hypothesis' engine, generation only) after a warm-up draw of 20. The two
+revisions alternate round by round so that load from other processes falls on both; the figure
+is the fastest round (the least disturbed), with the slowest beside it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from revision import revision_env  # noqa: E402
+
+CHILD = """
+import json, sys, time, warnings
+warnings.simplefilter("ignore", RuntimeWarning)
+from acconform.strategies import sample_scenes
+kind, n, seed = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+list(sample_scenes((kind,), 20, seed + 1))
+t = time.perf_counter()
+got = list(sample_scenes((kind,), n, seed))
+print(json.dumps({"ms": (time.perf_counter() - t) * 1000 / len(got)}))
+"""
+
+KINDS = ("terrain", "bsp", "obstacles")
+
+
+def _time(env, kind: str, n: int, seed: int) -> float:
+    r = subprocess.run([sys.executable, "-c", CHILD, kind, str(n), str(seed)], env=env, capture_output=True,
+                       text=True, cwd="/")
+    if r.returncode != 0:
+        raise SystemExit(f"bench_draw: drawing {kind} failed: {r.stderr.strip().splitlines()[-1:]}")
+    return json.loads(r.stdout.strip().splitlines()[-1])["ms"]
+
+
+def main() -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--against", default="d257643")
+    p.add_argument("-n", type=int, default=300)
+    p.add_argument("--rounds", type=int, default=3)
+    p.add_argument("--seed", type=int, default=0)
+    a = p.parse_args()
+    here = dict(os.environ)
+    here.pop("PYTHONPATH", None)
+    times = {(rev, k): [] for rev in ("this", a.against) for k in KINDS}
+    with revision_env(a.against) as old:
+        for _ in range(a.rounds):
+            for k in KINDS:
+                times[("this", k)].append(_time(here, k, a.n, a.seed))
+                times[(a.against, k)].append(_time(old, k, a.n, a.seed))
+    print(f"ms per drawn scene ({a.n} scenes, fastest of {a.rounds} rounds; slowest in brackets)")
+    print(f"{'kind':10} {'this tree':>18} {a.against:>18} {'ratio':>7}")
+    for k in KINDS:
+        t, o = times[("this", k)], times[(a.against, k)]
+        print(f"{k:10} {min(t):8.2f} ({max(t):6.2f}) {min(o):8.2f} ({max(o):6.2f}) {min(t) / min(o):7.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
