@@ -7,7 +7,7 @@ no corpus), 130 when interrupted (after printing what the campaign found so far)
 Replaying the corpus: ``--runtime`` picks the committed corpus of that runtime (default coreclr,
 .NET 10, what users run; ``--runtime mono`` replays mono's), or with ``--corpus DIR`` only the
 records of that runtime; ``-n`` replays a sample stratified by kind, drawn with ``--seed``;
-``--database`` (Hypothesis' example database) has no use there and is refused.
+``--database`` (the campaign's saved failing scenes) has no use there and is refused.
 """
 
 from __future__ import annotations
@@ -30,8 +30,8 @@ def add_arguments(p) -> None:
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")
     p.add_argument("--failures", default="failures", metavar="DIR", help="where case files go (default ./failures)")
-    p.add_argument("--database", default=None, metavar="DIR", help="Hypothesis example database (default .hypothesis/acconform; live only)")
-    p.add_argument("--no-database", action="store_true", help="do not read or write the example database")
+    p.add_argument("--database", default=None, metavar="DIR", help="where failing scenes are kept and retried first next run (default .hypothesis/acconform; live only)")
+    p.add_argument("--no-database", action="store_true", help="do not read or write the saved failing scenes")
     p.add_argument("-j", "--workers", type=int, default=0, help="worker processes (default: all cores)")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
     p.add_argument("--runtime", default=None, help="runtime of the live oracle (mono or coreclr; default: from the "
@@ -153,7 +153,7 @@ def _oracle(args, workers: int, kinds):
         return get_oracle(args.ace, args.runtime), None, []
     # replaying: options that only a generative campaign uses are refused, not ignored
     if args.database is not None:
-        raise AcconformError("--database is Hypothesis' example database for live campaigns; replaying the "
+        raise AcconformError("--database keeps the failing scenes of live campaigns; replaying the "
                              "recorded corpus uses none (no ACE is configured)")
     if args.seed is not None and args.cases is None:
         raise AcconformError("--seed draws the corpus sample of -n; replaying the whole corpus uses no seed "

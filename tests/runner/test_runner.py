@@ -79,6 +79,22 @@ def test_the_example_database_replays_a_saved_failure_first(tmp_path):
     assert any(db.rglob("*")) and again.found[0].case.scene == first.found[0].case.scene
 
 
+def test_a_kept_failing_scene_that_passes_now_is_forgotten(tmp_path):
+    db = tmp_path / "db"
+    first = run_campaign(buggy_when_long, fake_port, n=300, seed=7, failures_dir=None, database=db)
+    assert len(list(db.rglob("*.json"))) == 1
+    fixed = run_campaign(fake_port, fake_port, n=20, seed=8, failures_dir=None, database=db)
+    assert fixed.ok and first.found and not list(db.rglob("*.json"))
+
+
+def test_an_unwritable_database_loses_no_difference(tmp_path, capsys):
+    db = tmp_path / "db"
+    db.write_text("a file where the directory should be")
+    r = run_campaign(buggy_when_long, fake_port, n=300, seed=7, failures_dir=tmp_path / "f", database=db)
+    assert len(r.found) == 1 and r.found[0].path.exists()
+    assert "cannot keep the failing scene" in capsys.readouterr().err
+
+
 def test_replay_compares_recorded_scenes_without_shrinking(tmp_path):
     scenes = list(sample_scenes(None, 10, 1))
     r = run_campaign(buggy_when_long, fake_port, replay=scenes, failures_dir=tmp_path, keep_going=True)
