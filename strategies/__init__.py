@@ -25,7 +25,8 @@ from acconform.errors import AcconformError
 from .draws import OneOf
 from .scenes import scenes_of
 
-ALL_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor")
+from acconform.protocol import KINDS as ALL_KINDS
+
 # The kinds a default campaign draws: what the port supports (all of them since static objects landed).
 DEFAULT_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
 

@@ -19,7 +19,7 @@ import sys
 from collections import Counter, defaultdict
 from contextlib import contextmanager
 
-KINDS = ("terrain", "bsp", "obstacles")
+from ..protocol import KINDS
 
 
 def add_arguments(p) -> None:

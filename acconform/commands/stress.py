@@ -216,6 +216,7 @@ def _shift_landblocks(scene, sx: int, sy: int, tag: str):
                     contact_plane=None if m.contact_plane is None else replace(m.contact_plane, cell=cell(m.contact_plane.cell)))
     return replace(scene, landblocks=tuple(replace(lb, id=cell(lb.id)) for lb in scene.landblocks),
                    objects=tuple(replace(o, position=pos(o.position)) for o in scene.objects), mover=mover,
+                   env_cells=tuple(replace(c, id=cell(c.id)) for c in scene.env_cells),
                    name=f"{scene.name or 'scene'} [stress {tag}]")
 
 
