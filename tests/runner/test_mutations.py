@@ -31,12 +31,12 @@ Kill rates of the 31 planted bugs (issue 14; `python tests/runner/mutation_repor
   (step_down_walkable_strict by the terrain exact_slope policy, step_sphere_down_allowance_strict
   and walkable_allowable_inclusive by the obstacle sphere_contact policy).
 
-Indoor mutants (issue 12; this hunt on the indoor kind, BUDGET 1,500, seed 0; the first three on
-the strategies of 0ec653f, the other two on those of bc70bd4): portal_side_flipped caught at scene 511, point_in_cell_close_is_outside at
-181, visible_cell_pruning_skipped at 42 (once dungeons could sit just below the ground: before
-that, 1,500 scenes missed it), neighbour_tested_in_own_frame at 1, outside_portal_test_off at 9;
-each shrunk to one landblock, at most one object and a path under a metre. cell_bsp_slack_dropped
-went unnoticed for 1,500 scenes twice (UNREACHABLE says why).
+Indoor mutants (issue 12; this hunt on the indoor kind, BUDGET 1,500, seed 0, on the final
+dungeon strategies of issue 12): portal_side_flipped caught at scene 672, point_in_cell_close_is_outside
+at 41, visible_cell_pruning_skipped at 42 (once dungeons could sit just below the ground: before
+that, 1,500 scenes missed it), neighbour_tested_in_own_frame at 1, outside_portal_test_off at 5;
+each shrunk to one landblock, at most one object and a path of about a metre or less.
+cell_bsp_slack_dropped went unnoticed for 1,500 scenes twice (UNREACHABLE says why).
 
 Survivors everywhere: the UNREACHABLE below (equivalent in practice: their boundary cannot be
 drawn, for the reasons given).
