@@ -26,8 +26,9 @@ from .draws import OneOf
 from .scenes import scenes_of
 
 ALL_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor")
-# The kinds a default campaign draws: what the port supports (all of them since static objects landed).
-DEFAULT_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
+# The kinds a default campaign draws (and a corpus replay runs): what the port supports, all of them
+# since the port went indoors (issue 12).
+DEFAULT_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor")
 
 
 def check_kinds(kinds) -> tuple[str, ...]:

@@ -2,8 +2,8 @@
 
 Each mutant (tests/runner/mutants.py) runs as the port against the real port as the oracle,
 through the same runner `acconform check` uses (mutants.hunt: one worker, seed 0, no example
-database, BUDGET generated scenes), on the default kinds (terrain, BSP objects, obstacles), or on
-the indoor kind for the indoor mutants (their `kinds`). A caught mutant must shrink to a small scene. `python tests/runner/mutation_report.py` prints the
+database, BUDGET generated scenes), on the outdoor kinds (terrain, BSP objects, obstacles), or on
+the indoor kind for the indoor mutants (each mutant's `kinds`). A caught mutant must shrink to a small scene. `python tests/runner/mutation_report.py` prints the
 same hunt's figures (scenes to find each mutant, shrunk sizes).
 
 Mutants the default kinds cannot reach are listed in UNREACHABLE with the reason, and the test
