@@ -27,8 +27,9 @@ from .scenes import scenes_of
 
 from acconform.protocol import KINDS as ALL_KINDS
 
-# The kinds a default campaign draws: what the port supports (all of them since static objects landed).
-DEFAULT_KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles")
+# The kinds a default campaign draws (and a corpus replay runs): what the port supports, all of them
+# since the port went indoors (issue 12).
+DEFAULT_KINDS: tuple[str, ...] = ALL_KINDS
 
 
 def check_kinds(kinds) -> tuple[str, ...]:

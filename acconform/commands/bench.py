@@ -22,13 +22,11 @@ from __future__ import annotations
 
 import sys
 
-DEFAULT_KINDS = ("terrain", "bsp", "obstacles")
-
 
 def add_arguments(p) -> None:
     p.add_argument("-n", "--cases", type=int, default=200, help="scenes per kind (default 200)")
     p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
-    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default terrain,bsp,obstacles)")
+    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: all, terrain,bsp,obstacles,indoor)")
     p.add_argument("--corpus", nargs="?", const="", default=None, metavar="DIR",
                    help="take the scenes (and the oracle's answers) from a recorded corpus (default: the committed "
                    "corpus of --runtime; what bench does when no ACE is configured)")
@@ -261,7 +259,7 @@ def run(args) -> int:
     from ..strategies import check_kinds
 
     warnings.simplefilter("ignore", RuntimeWarning)
-    kinds = check_kinds(args.kinds or DEFAULT_KINDS)
+    kinds = check_kinds(args.kinds)
     if args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
     if args.json:

@@ -23,8 +23,6 @@ from __future__ import annotations
 
 import sys
 
-DEFAULT_KINDS = ("terrain", "bsp", "obstacles")
-
 # name -> the behaviour it stresses (the derivations live in derive())
 PERTURBATIONS: dict[str, str] = {
     "nudge_begin": "begin origin moved +-1..k float32 ULPs (all three coordinates)",
@@ -44,7 +42,7 @@ PERTURBATIONS: dict[str, str] = {
 def add_arguments(p) -> None:
     p.add_argument("-n", "--cases", type=int, default=50, help="base scenes per kind (default 50)")
     p.add_argument("--seed", type=int, default=0, help="seed for the base scenes (default 0)")
-    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default terrain,bsp,obstacles)")
+    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: all, terrain,bsp,obstacles,indoor)")
     p.add_argument("-k", "--ulps", type=int, default=2, help="nudges go from 1 to K ULPs each way (default 2)")
     p.add_argument("--only", default=None, help=f"comma-separated perturbation kinds (default all: {', '.join(PERTURBATIONS)})")
     p.add_argument("--failures", default="failures", metavar="DIR", help="where case files go (default ./failures)")
@@ -389,7 +387,7 @@ def run(args) -> int:
     from ..strategies import check_kinds, sample_scenes
 
     warnings.simplefilter("ignore", RuntimeWarning)
-    kinds = check_kinds(args.kinds or DEFAULT_KINDS)
+    kinds = check_kinds(args.kinds)
     if args.cases < 1 or args.ulps < 1:
         raise AcconformError(f"--cases and --ulps must be at least 1, got {args.cases} and {args.ulps}")
     perturbations = tuple(p for p in (args.only or ",".join(PERTURBATIONS)).split(",") if p)

@@ -26,7 +26,7 @@ class Mutation:
     old: str
     new: str
     what: str
-    kinds: tuple[str, ...] | None = None  # the scene kinds its hunt draws (None: the default kinds)
+    kinds: tuple[str, ...] = ("terrain", "bsp", "obstacles")  # the scene kinds its hunt draws
 
 
 MUTATIONS: tuple[Mutation, ...] = (

@@ -2,8 +2,8 @@
 
 Each mutant (tests/runner/mutants.py) runs as the port against the real port as the oracle,
 through the same runner `acconform check` uses (mutants.hunt: one worker, seed 0, no example
-database, BUDGET generated scenes), on the default kinds (terrain, BSP objects, obstacles), or on
-the indoor kind for the indoor mutants (their `kinds`). A caught mutant must shrink to a small scene. `python tests/runner/mutation_report.py` prints the
+database, BUDGET generated scenes), on the outdoor kinds (terrain, BSP objects, obstacles), or on
+the indoor kind for the indoor mutants (each mutant's `kinds`). A caught mutant must shrink to a small scene. `python tests/runner/mutation_report.py` prints the
 same hunt's figures (scenes to find each mutant, shrunk sizes).
 
 Mutants the default kinds cannot reach are listed in UNREACHABLE with the reason, and the test
@@ -59,12 +59,12 @@ adjust_offset_block_offset_dropped and walkable_allowable_inclusive, which the f
 Survivors everywhere: the three UNREACHABLE below (equivalent in practice: the first two because
 their boundary cannot be drawn, the third because its two probe lengths meet the same ground).
 
-Indoor mutants (issue 12; this hunt on the indoor kind, BUDGET 1,500, seed 0; the first three on
-the strategies of 0ec653f, the other two on those of bc70bd4): portal_side_flipped caught at scene 511, point_in_cell_close_is_outside at
-181, visible_cell_pruning_skipped at 42 (once dungeons could sit just below the ground: before
-that, 1,500 scenes missed it), neighbour_tested_in_own_frame at 1, outside_portal_test_off at 9;
-each shrunk to one landblock, at most one object and a path under a metre. cell_bsp_slack_dropped
-went unnoticed for 1,500 scenes twice (UNREACHABLE says why).
+Indoor mutants (issue 12; this hunt on the indoor kind, BUDGET 1,500, seed 0, on the final
+dungeon strategies of issue 12): portal_side_flipped caught at scene 672, point_in_cell_close_is_outside
+at 41, visible_cell_pruning_skipped at 42 (once dungeons could sit just below the ground: before
+that, 1,500 scenes missed it), neighbour_tested_in_own_frame at 1, outside_portal_test_off at 5;
+each shrunk to one landblock, at most one object and a path of about a metre or less.
+cell_bsp_slack_dropped went unnoticed for 1,500 scenes twice (UNREACHABLE says why).
 
 Survivors everywhere: the UNREACHABLE below (equivalent in practice: their boundary cannot be
 drawn, for the reasons given).
