@@ -112,10 +112,26 @@ namespace Acconform.Oracle
             OutputCapacity = outBuf.Length;
         }
 
+        /// <summary>log4net's first use reads its settings through System.Configuration, which .NET
+        /// (not mono) refuses outside an application: log4net catches that and prints the whole
+        /// stack trace to stderr, once per process, before any of ACE's code runs. Its first use is
+        /// made here, with .NET's stderr silenced; nothing of ACE's physics reads log4net.</summary>
+        static void QuietLog4netStartup()
+        {
+            var logManager = Type.GetType("log4net.LogManager, log4net");
+            if (logManager == null) return;
+            var err = Console.Error;
+            Console.SetError(TextWriter.Null);
+            try { logManager.GetMethod("GetLogger", new[] { typeof(Type) })?.Invoke(null, new object[] { typeof(Facade) }); }
+            catch (Exception) { }
+            finally { Console.SetError(err); }
+        }
+
         /// <summary>Allocate both pinned buffers and publish the native entry points (called once
         /// when the oracle loads).</summary>
         public static void Init()
         {
+            QuietLog4netStartup();
             InstallDats();
             EnsureInput(1 << 16);
             EnsureOutput(1 << 12);
