@@ -306,13 +306,13 @@ def _bench(args, kinds, run, json, AcconformError) -> int:
     if args.corpus is None and not args.no_oracle and not live_configured(args.ace):
         args.corpus = ""  # no ACE: ACE's recorded answers (the committed corpus of --runtime)
     by_kind, oracle = _scenes(args, kinds)
+    source = f"recorded corpus {oracle.corpus_dir}" if oracle is not None else f"sample_scenes seed {args.seed}"
     note = None
     if args.no_oracle:
         oracle, note = None, "oracle columns off (--no-oracle): fast mode's disagreement with ACE is not measured"
     elif oracle is None:
         oracle = require_live(args.ace, args.runtime)
     oracle_name = getattr(oracle, "name", None)
-    source = f"recorded corpus {oracle.corpus_dir}" if args.corpus is not None else f"sample_scenes seed {args.seed}"
     who = f"implementation {args.impl!r}" if args.impl else "the port"
     print(f"acconform bench: {who}; {', '.join(kinds)}; up to {args.cases} scenes per kind from {source}; oracle "
           + (f"{oracle_name} ({oracle.versions.ace} on {oracle.versions.runtime})" if oracle is not None else "none"))

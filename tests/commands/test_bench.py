@@ -62,3 +62,17 @@ def test_distance_treats_nan_pairs_as_equal_and_other_nonfinite_mismatches_as_in
     assert distance(math.nan, math.nan) == (0.0, 0.0)
     assert distance(math.inf, 1.0) == (math.inf, math.inf)
     assert distance(1.0, 1.0000001192092896) == (1.0, 1.1920928955078125e-07)
+
+
+def test_bench_on_a_corpus_without_the_oracle_names_the_corpus_and_measures_no_disagreement(no_ace, tmp_path, capsys):
+    from acconform.case import Record, Versions
+    from acconform.oracle.recorded import CorpusWriter
+    from acconform.port.run import run_scene
+    from acconform.strategies import sample_scenes
+
+    with CorpusWriter(tmp_path) as w:
+        for s in sample_scenes(("terrain",), 3, 5):
+            w.add(Record(s, run_scene(s), Versions("0.1.0", "test", "")))
+    assert main(["bench", "-n", "3", "--kinds", "terrain", "--corpus", str(tmp_path), "--no-oracle"]) == 0
+    out = capsys.readouterr().out
+    assert f"recorded corpus {tmp_path}" in out and "oracle none" in out and "--no-oracle" in out
