@@ -10,7 +10,7 @@ PLANTED = Path(__file__).with_name("planted_impl.py")
 
 USER_SUITE = '''
 def test_port_matches_ace(acconform_campaign):
-    result = acconform_campaign(n=40, seed=1, keep_going=True)
+    result = acconform_campaign(n=200, seed=1, keep_going=True)
     assert result.ok, result.report()
 '''
 
