@@ -65,6 +65,15 @@ def dotnet_root() -> dotnet_host.DotnetRoot | None:
     return _state.get("dotnet_root")
 
 
+# ACE's build asks for the server GC (a heap and a GC thread per core, concurrent background GC):
+# right for a game server owning the machine, wrong for a guest in a campaign worker, where every
+# worker (one per core) would own per-core heaps and threads that compete with the other workers'
+# Python. The GC decides when memory is reclaimed, never what ACE computes. These runtime
+# properties override the runtimeconfig's; DOTNET_gcServer / DOTNET_gcConcurrent in the
+# environment still win over both (the GC reads them first).
+GUEST_GC = (("System.GC.Server", "false"), ("System.GC.Concurrent", "false"))
+
+
 def _start_runtime(location: AceLocation) -> None:
     try:
         import pythonnet
@@ -72,7 +81,8 @@ def _start_runtime(location: AceLocation) -> None:
         raise OracleUnavailable(f"the live oracle needs pythonnet: {PIP_HINT}") from None
     try:
         if location.runtime == "coreclr":
-            pythonnet.load("coreclr", runtime_config=str(location.runtime_config), dotnet_root=str(location.dotnet_root.path))
+            pythonnet.load("coreclr", runtime_config=str(location.runtime_config), dotnet_root=str(location.dotnet_root.path),
+                           properties=dict(GUEST_GC))
         else:
             import warnings
 

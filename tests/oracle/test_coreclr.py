@@ -50,3 +50,12 @@ def test_on_coreclr_scenes_cross_into_net_through_native_entry_points(coreclr):
     o = coreclr.run(PROBE["flat 1-step walk"])
     assert o.error is None and o.ok and o.cell == 0xA9B40001
     assert coreclr.last_case_micros > 0 and coreclr.last_transition_micros > 0
+
+
+def test_on_coreclr_ace_runs_with_the_workstation_gc_of_a_guest_not_the_server_gc_its_build_asks_for(coreclr):
+    from System import AppContext
+    from System.Runtime import GCSettings
+
+    # ACE's own build (7b47913's ACE.Server.csproj) asks for the server GC and concurrent collection
+    assert not GCSettings.IsServerGC
+    assert str(AppContext.GetData("System.GC.Concurrent")) == "false"
