@@ -8,8 +8,11 @@ ACE's own Unpack (tests/oracle/test_live.py).
 
 from __future__ import annotations
 
+import os
+import re
 import struct
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -450,3 +453,19 @@ def test_a_structure_without_polygons_has_a_drawing_bsp_of_one_leaf():
     got = read_environment(dat.environment_record(indoor_scenes.ENVIRONMENT).data)["cells"]
     assert got[0]["drawing_bsp"] == ("leaf", 0)
     assert got[1]["drawing_bsp"][0] == "port" and got[1]["drawing_bsp"][6] == [(0, 0)]
+
+
+ACE_DATLOADER_BSP_NODE = Path(os.environ.get("ACE_SOURCE", "/work/ace")) / "Source/ACE.DatLoader/Entity/BSPNode.cs"
+
+
+@pytest.mark.skipif(not ACE_DATLOADER_BSP_NODE.is_file(), reason=f"ACE's source is not at {ACE_DATLOADER_BSP_NODE} (set ACE_SOURCE)")
+def test_the_writers_node_tags_are_datloaders_and_a_childless_cell_node_is_none_of_them():
+    """DatLoader's BSPNode.cs names each tag it switches on (`private const uint BPIN = ...`); the
+    writer's tags are those, read back to the same names, and its childless cell-node tag Bpnn is none
+    of them (DatLoader's BPnn, one letter apart, reads a front child)."""
+    consts = {m[1]: int(m[2]) for m in re.finditer(r"const uint (\w+) = (\d+);", ACE_DATLOADER_BSP_NODE.read_text())}
+    written = {"BPIN": dat.TAG_BPIN, "BPIn": dat.TAG_BPIn, "BpIN": dat.TAG_BpIN, "LEAF": dat.TAG_LEAF, "PORT": dat.TAG_PORT}
+    assert {name: consts[name] for name in written} == written
+    assert {name: DatReader(struct.pack("<I", t)).tag() for name, t in written.items()} == {n: n for n in written}
+    assert DatReader(struct.pack("<I", dat.TAG_Bpnn)).tag() == "Bpnn" and dat.TAG_Bpnn not in consts.values()
+    assert consts["BPnn"] != dat.TAG_Bpnn

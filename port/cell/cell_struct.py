@@ -34,22 +34,17 @@ class CellStruct:
     __slots__ = ("cell_struct_id", "vertex_array", "polygons", "physics_polygons", "portals",
                  "drawing_bsp", "physics_bsp", "cell_bsp")
 
-    @anchor(None, "CellStruct.cs:CellStruct()", "the empty constructor (EnvCell.Init's)")
-    def __init__(self):
-        self.cell_struct_id = 0
-        self.vertex_array = None
-        self.polygons = None
-        self.physics_polygons = None
-        self.portals = None
-        self.drawing_bsp = None
-        self.physics_bsp = None
-        self.cell_bsp = None
-
     @classmethod
     @anchor("CCellStruct::UnPack", "CellStruct.cs:CellStruct(DatLoader.Entity.CellStruct)", "the DAT constructor")
     def from_dat(cls, cell_struct, mode: Mode) -> "CellStruct":
-        """`mode` types the default splitting plane of a DAT leaf at a tree's root (BSPTree.from_dat)."""
-        c = cls()
+        """`mode` types the default splitting plane of a DAT leaf at a tree's root (BSPTree.from_dat).
+        ACE's only constructor of a CellStruct (the empty one, EnvCell.Init's, is called nowhere)."""
+        c = cls.__new__(cls)
+        c.cell_struct_id = 0  # never set: C#'s defaults
+        c.vertex_array = None
+        c.drawing_bsp = None
+        c.physics_bsp = None
+        c.cell_bsp = None
         c.polygons = {}
         for key, value in cell_struct.polygons.items():
             c.polygons[key] = Polygon.from_dat(value, cell_struct.vertex_array)  # PolygonCache is off

@@ -89,13 +89,11 @@ def test_find_visible_child_cell_finds_the_cell_holding_a_point_through_visible_
 
 
 @pytest.mark.anchor("CEnvCell::handle_move_restriction")
-@pytest.mark.anchor("EnvCell.cs:EnvCell()")
-@pytest.mark.anchor("CEnvCell::init")
-@pytest.mark.anchor("CellStruct.cs:CellStruct()")
-def test_an_env_cell_handles_a_move_restriction_and_its_empty_constructor_starts_empty():
-    c = EnvCell(EXACT)
-    assert c.handle_move_restriction(None) is True
-    assert c.id == 0 and c.visible_cells == {} and c.static_object_ids == [] and c.cell_structure.cell_bsp is None
+def test_an_env_cell_allows_every_move_restriction():
+    lscape, _ = _world()
+    c = lscape.get_landcell(A)
+    assert isinstance(c, EnvCell) and c.handle_move_restriction(None) is True
+    lscape.release()
 
 
 @pytest.mark.anchor("ACE.DatLoader/Entity/CellPortal.cs:Unpack")
