@@ -293,10 +293,14 @@ def cell_bsp_node(node, out: list, leaves: list) -> None:
         cell_bsp_node(node.back, out, leaves)
 
 
-def _f32(x: float) -> float:
-    """`x` rounded to float32 (an overflow is infinity, as C# casts, where struct.pack would raise)."""
-    with np.errstate(over="ignore"):
-        return float(np.float32(x))
+def _pack_4f(*xs: float) -> bytes:
+    """Four doubles as float32s; one beyond float32's range is written as infinity (C#'s cast),
+    where struct.pack would raise."""
+    try:
+        return _4f.pack(*xs)
+    except OverflowError:
+        with np.errstate(over="ignore"):
+            return _4f.pack(*(float(np.float32(x)) for x in xs))
 
 
 def _polygon_plane(poly: PolygonRec) -> tuple[float, float, float, float]:
@@ -311,38 +315,43 @@ def _polygon_plane(poly: PolygonRec) -> tuple[float, float, float, float]:
     return nx, ny, nz, -(nx * x + ny * y + nz * z)
 
 
-def _bounding_sphere(polygons) -> tuple[tuple[float, float, float], float]:
-    """A sphere holding every vertex of `polygons`, in doubles: the centre of their box and the
-    distance to the farthest vertex."""
-    points = [v for p in polygons for v in p.vertices]
-    center = tuple((min(v[i] for v in points) + max(v[i] for v in points)) / 2.0 for i in range(3))
-    radius = max(((v[0] - center[0]) ** 2 + (v[1] - center[1]) ** 2 + (v[2] - center[2]) ** 2) ** 0.5 for v in points)
-    return center, radius
+def _box(poly: PolygonRec, *boxes) -> tuple[float, ...]:
+    """The axis-aligned box (min x, y, z, max x, y, z) around a polygon's vertices and `boxes` (None: empty)."""
+    xs, ys, zs = zip(*poly.vertices)
+    lo, hi = [min(xs), min(ys), min(zs)], [max(xs), max(ys), max(zs)]
+    for b in boxes:
+        if b is not None:
+            lo = [min(a, c) for a, c in zip(lo, b[:3])]
+            hi = [max(a, c) for a, c in zip(hi, b[3:])]
+    return (*lo, *hi)
 
 
-def drawing_bsp_node(rec: CellStructRec, lo: int, hi: int, portal_indices: dict, out: list, leaves: list) -> None:
+def drawing_bsp_node(rec: CellStructRec, lo: int, hi: int, portal_indices: dict, out: list, leaves: list):
     """The drawing tree over polygon ids lo .. hi - 1 in DatLoader's BSPType.Drawing layout (see
     `drawing_bsp`): an empty range is a leaf (its tag and pre-order LeafIndex); otherwise the node of
     the middle id k: its tag and plane, the front tree (ids below k), the back tree (ids above k),
     its sphere, then ``BPIN``'s polygon ids (count, ids) or ``PORT``'s (polygon count, portal count,
-    ids, then per portal its index and polygon id as two shorts)."""
+    ids, then per portal its index and polygon id as two shorts). Returns the box around the
+    subtree's vertices (None for a leaf)."""
     if lo == hi:
         out.append(struct.pack("<Ii", TAG_LEAF, len(leaves)))
         leaves.append(lo)
-        return
+        return None
     k = (lo + hi) // 2
     portals = portal_indices.get(k, ())
     plane = _polygon_plane(rec.polygons[k])
-    out.append(_u32.pack(TAG_PORT if portals else TAG_BPIN) + _4f.pack(*map(_f32, plane)))
-    drawing_bsp_node(rec, lo, k, portal_indices, out, leaves)
-    drawing_bsp_node(rec, k + 1, hi, portal_indices, out, leaves)
-    center, radius = _bounding_sphere(rec.polygons[lo:hi])
-    out.append(sphere(tuple(map(_f32, center)), _f32(radius)))
+    out.append(_u32.pack(TAG_PORT if portals else TAG_BPIN) + _pack_4f(*plane))
+    front = drawing_bsp_node(rec, lo, k, portal_indices, out, leaves)
+    back = drawing_bsp_node(rec, k + 1, hi, portal_indices, out, leaves)
+    box = _box(rec.polygons[k], front, back)
+    half = [(box[i + 3] - box[i]) / 2.0 for i in range(3)]
+    out.append(_pack_4f(*(box[i] + half[i] for i in range(3)), (half[0] ** 2 + half[1] ** 2 + half[2] ** 2) ** 0.5))
     if portals:
         out.append(_u32.pack(1) + _u32.pack(len(portals)) + _u16.pack(k)
                    + b"".join(struct.pack("<HH", j & 0xFFFF, k) for j in portals))
     else:
         out.append(_u32.pack(1) + _u16.pack(k))
+    return box
 
 
 def drawing_bsp(rec: CellStructRec, out: list) -> None:
@@ -350,8 +359,9 @@ def drawing_bsp(rec: CellStructRec, out: list) -> None:
     it over the polygons and its physics never reads it): a balanced tree over the polygon ids,
     one node per polygon (`drawing_bsp_node`), a lone leaf when there is none. A portal polygon's
     node is a ``PORT`` listing it with each of its indices in `portals`; every other node a
-    ``BPIN``. A node's plane is its polygon's (`_polygon_plane`), its sphere bounds its subtree's
-    polygons (`_bounding_sphere`), both rounded to float32."""
+    ``BPIN``. A node's plane is its polygon's (`_polygon_plane`); its sphere is centred on the box
+    around its subtree's vertices, with half the box's diagonal as radius; both in doubles, written
+    as float32."""
     portal_indices: dict[int, list[int]] = {}
     for j, k in enumerate(rec.portals):
         portal_indices.setdefault(k, []).append(j)
