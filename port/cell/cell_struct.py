@@ -1,11 +1,12 @@
-"""CellStruct: CellStruct(DatLoader CellStruct), box_intersects_cell, get_portal, sphere_intersects_cell, point_in_cell.
+"""CellStruct: CellStruct(DatLoader CellStruct), box_intersects_cell, sphere_intersects_cell, point_in_cell.
 
 ACE's Common/CellStruct.cs: an EnvCell's geometry, built from the Environment's DAT cell
 structure. Polygons and physics polygons are built per id (PolygonCache is off: a new Polygon
 each), the portals are the polygons the DAT portal ids name, and the three trees are built by
 BSPCache.Get (off: a new BSPTree each): the cell tree (over the physics polygons, though its
 nodes name none), the drawing tree (over the polygons, when the DAT has one) and the physics tree.
-The cell tree answers the three containment questions in the cell's local frame.
+The cell tree answers the three containment questions in the cell's local frame. Not ported:
+ACE's empty constructor and get_portal, which nothing in ACE calls.
 
 Across runs the port remembers the CellStruct built from a structure of an Environment record's
 exact bytes (`remembered`, keyed by the bytes, the structure's id and the mode): building the
@@ -73,16 +74,6 @@ class CellStruct:
     @anchor("CCellStruct::box_intersects_cell", "CellStruct.cs:box_intersects_cell")
     def box_intersects_cell(self, bbox) -> bool:
         return self.cell_bsp.box_intersects_cell_bsp(bbox)
-
-    @anchor("CCellStruct::get_portal", "CellStruct.cs:get_portal",
-            "ACE reads portal.PolyID before it assigns portal: NullReferenceException on any portal")
-    def get_portal(self, poly_id: int):
-        portal = None
-        for p in self.portals:
-            if poly_id == portal.poly_id:  # ACE: `portal` is still null here
-                continue
-            portal = p
-        return portal
 
     @anchor("CCellStruct::sphere_intersects_cell", "CellStruct.cs:sphere_intersects_cell")
     def sphere_intersects_cell(self, sphere) -> BoundingType:

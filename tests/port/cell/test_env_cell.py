@@ -186,13 +186,6 @@ def test_box_intersects_cell_is_false_only_for_a_box_wholly_behind_one_wall():
     assert not s.box_intersects_cell(BBox(v(-8, -1, 1), v(-6, 1, 2)))
 
 
-@pytest.mark.anchor("CCellStruct::get_portal")
-def test_get_portal_throws_on_its_first_portal_as_ace_reads_the_portal_before_assigning_it():
-    s = rooms_world().get_landcell(A).cell_structure
-    with pytest.raises(AttributeError):
-        s.get_portal(0)
-
-
 @pytest.mark.anchor("CEnvCell::build_visible_cells")
 @pytest.mark.anchor("CCellStruct::UnPack")
 @pytest.mark.anchor("EnvCell.cs:PostInit")
