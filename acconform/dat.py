@@ -47,8 +47,10 @@ by their scene index (Stippling ``NoPos|NoNeg``, surfaces 0); the portal polygon
 in BSPType.Cell's layout (a node: its tag and splitting plane, then its children, no sphere; the tag
 says which children follow: ``BPIN`` both, ``BPIn`` the front only, ``BpIN`` the back only, and
 ``Bpnn`` none -- a tag DatLoader's switch does not list, so it reads no child (``BPnn`` would read a
-front child); a leaf ``LEAF`` and its pre-order LeafIndex); the physics BSP as a GfxObj's; no
-drawing BSP. An `EnvCell` (cell DAT, id = the cell's id; FileTypes/EnvCell.cs): flags SeenOutside
+front child); a leaf ``LEAF`` and its pre-order LeafIndex); the physics BSP as a GfxObj's; then
+(hasDrawingBSP 1) a drawing BSP derived from the polygons and portals (`drawing_bsp`: ACE builds
+CellStruct.DrawingBSP from it and its physics never reads it; every portal polygon is in a ``PORT``
+node, as in retail's Environments). An `EnvCell` (cell DAT, id = the cell's id; FileTypes/EnvCell.cs): flags SeenOutside
 (0x1) and HasStaticObjs (0x2, when it has stabs), no surfaces, the environment's low word, the
 structure index, the frame, the portals (flags, polygon, other cell, other portal), the visible
 cells, and its stabs: the scene's static objects whose position.cell is this cell, in scene order,
@@ -68,7 +70,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .scene import (BSPLeaf, BSPShape, CellBSPLeaf, CellStructRec, CylSphereShape, EnvCell, Environment, Mover,
-                    PolygonRec, Scene, SphereShape, StaticObject, ENV_CELL_FIRST)
+                    PolygonRec, Scene, SphereShape, StaticObject, ENV_CELL_FIRST, newell_normal)
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
@@ -88,6 +90,7 @@ TAG_LEAF = 0x4C454146  # "LEAF"
 TAG_BPIn = 0x4250496E  # "BPIn": PosNode only
 TAG_BpIN = 0x4270494E  # "BpIN": NegNode only
 TAG_Bpnn = 0x42706E6E  # "Bpnn": not in DatLoader's switch, so no child is read
+TAG_PORT = 0x504F5254  # "PORT": a portal node (BSPPortal.cs): both children always, then (drawing) its portal polygons
 
 # ACE.Entity.Enum.EnvCellFlags
 ENV_CELL_SEEN_OUTSIDE = 0x1
@@ -290,6 +293,81 @@ def cell_bsp_node(node, out: list, leaves: list) -> None:
         cell_bsp_node(node.back, out, leaves)
 
 
+def _pack_4f(*xs: float) -> bytes:
+    """Four doubles as float32s; one beyond float32's range is written as infinity (C#'s cast),
+    where struct.pack would raise."""
+    try:
+        return _4f.pack(*xs)
+    except OverflowError:
+        with np.errstate(over="ignore"):
+            return _4f.pack(*(float(np.float32(x)) for x in xs))
+
+
+def _polygon_plane(poly: PolygonRec) -> tuple[float, float, float, float]:
+    """The plane a polygon lies in, in doubles: its Newell normal normalised and d = -normal . its
+    first vertex ((0, 0, 0), 0 for a polygon spanning no area, which a scene's validation refuses)."""
+    nx, ny, nz = newell_normal(poly.vertices)
+    length = (nx * nx + ny * ny + nz * nz) ** 0.5
+    if length == 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    nx, ny, nz = nx / length, ny / length, nz / length
+    x, y, z = poly.vertices[0]
+    return nx, ny, nz, -(nx * x + ny * y + nz * z)
+
+
+def _box(poly: PolygonRec, *boxes) -> tuple[float, ...]:
+    """The axis-aligned box (min x, y, z, max x, y, z) around a polygon's vertices and `boxes` (None: empty)."""
+    xs, ys, zs = zip(*poly.vertices)
+    lo, hi = [min(xs), min(ys), min(zs)], [max(xs), max(ys), max(zs)]
+    for b in boxes:
+        if b is not None:
+            lo = [min(a, c) for a, c in zip(lo, b[:3])]
+            hi = [max(a, c) for a, c in zip(hi, b[3:])]
+    return (*lo, *hi)
+
+
+def drawing_bsp_node(rec: CellStructRec, lo: int, hi: int, portal_indices: dict, out: list, leaves: list):
+    """The drawing tree over polygon ids lo .. hi - 1 in DatLoader's BSPType.Drawing layout (see
+    `drawing_bsp`): an empty range is a leaf (its tag and pre-order LeafIndex); otherwise the node of
+    the middle id k: its tag and plane, the front tree (ids below k), the back tree (ids above k),
+    its sphere, then ``BPIN``'s polygon ids (count, ids) or ``PORT``'s (polygon count, portal count,
+    ids, then per portal its index and polygon id as two shorts). Returns the box around the
+    subtree's vertices (None for a leaf)."""
+    if lo == hi:
+        out.append(struct.pack("<Ii", TAG_LEAF, len(leaves)))
+        leaves.append(lo)
+        return None
+    k = (lo + hi) // 2
+    portals = portal_indices.get(k, ())
+    plane = _polygon_plane(rec.polygons[k])
+    out.append(_u32.pack(TAG_PORT if portals else TAG_BPIN) + _pack_4f(*plane))
+    front = drawing_bsp_node(rec, lo, k, portal_indices, out, leaves)
+    back = drawing_bsp_node(rec, k + 1, hi, portal_indices, out, leaves)
+    box = _box(rec.polygons[k], front, back)
+    half = [(box[i + 3] - box[i]) / 2.0 for i in range(3)]
+    out.append(_pack_4f(*(box[i] + half[i] for i in range(3)), (half[0] ** 2 + half[1] ** 2 + half[2] ** 2) ** 0.5))
+    if portals:
+        out.append(_u32.pack(1) + _u32.pack(len(portals)) + _u16.pack(k)
+                   + b"".join(struct.pack("<HH", j & 0xFFFF, k) for j in portals))
+    else:
+        out.append(_u32.pack(1) + _u16.pack(k))
+    return box
+
+
+def drawing_bsp(rec: CellStructRec, out: list) -> None:
+    """The structure's drawing BSP, derived from its polygons and portals (ACE's CellStruct builds
+    it over the polygons and its physics never reads it): a balanced tree over the polygon ids,
+    one node per polygon (`drawing_bsp_node`), a lone leaf when there is none. A portal polygon's
+    node is a ``PORT`` listing it with each of its indices in `portals`; every other node a
+    ``BPIN``. A node's plane is its polygon's (`_polygon_plane`); its sphere is centred on the box
+    around its subtree's vertices, with half the box's diagonal as radius; both in doubles, written
+    as float32."""
+    portal_indices: dict[int, list[int]] = {}
+    for j, k in enumerate(rec.portals):
+        portal_indices.setdefault(k, []).append(j)
+    drawing_bsp_node(rec, 0, len(rec.polygons), portal_indices, out, [])
+
+
 def _align(out: list, length: int) -> int:
     """BinaryReader.AlignBoundary: pad to the next multiple of 4 from the record's start; the new length."""
     pad = -length % 4
@@ -314,7 +392,8 @@ def cell_struct(rec: CellStructRec, out: list, length: int) -> int:
     n = len(rec.polygons)
     tail += [_u16.pack(k) + polygon(p, ids) for k, (p, ids) in enumerate(zip(rec.physics_polygons, poly_ids[n:]))]
     bsp_node(rec.physics_bsp, tail, [])
-    tail.append(_u32.pack(0))  # no DrawingBSP
+    tail.append(_u32.pack(1))  # hasDrawingBSP
+    drawing_bsp(rec, tail)
     length += sum(map(len, tail))
     out += tail
     return _align(out, length)
@@ -382,4 +461,4 @@ def environment_records(scene: Scene) -> tuple[DatRecord, ...]:
 
 __all__ = ["cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
            "env_cell_stabs", "mover_records", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
-           "TAG_BPIN", "TAG_LEAF"]
+           "TAG_BPIN", "TAG_LEAF", "TAG_PORT"]

@@ -8,8 +8,11 @@ ACE's own Unpack (tests/oracle/test_live.py).
 
 from __future__ import annotations
 
+import os
+import re
 import struct
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -273,9 +276,38 @@ def read_cell_struct(r: DatReader) -> dict:
     out["cell_bsp"] = read_cell_node(r)
     out["physics_polygons"] = read_polygons(r, nphysics)
     out["physics_bsp"] = read_node(r)
-    assert r.take("I") == 0  # no drawing BSP
+    has_drawing_bsp = r.take("I")
+    out["drawing_bsp"] = read_drawing_node(r) if has_drawing_bsp else None
     align(r)
     return out
+
+
+def read_drawing_node(r: DatReader):
+    """BSPNode.ReadNode with BSPType.Drawing: ("leaf", index); ("node", type, plane, pos, neg, sphere, polys);
+    or a PORT node (BSPPortal.Unpack: both children) ("port", plane, pos, neg, sphere, polys, portals)."""
+    t = r.tag()
+    r.take("I")
+    if t == "LEAF":
+        return ("leaf", r.take("i"))
+    plane = r.take("4f")
+    if t == "PORT":
+        pos, neg = read_drawing_node(r), read_drawing_node(r)
+        sph = r.take("4f")
+        npolys, nportals = r.take("II")
+        polys = [r.take("H") for _ in range(npolys)]
+        return ("port", plane, pos, neg, sph, polys, [r.take("hh") for _ in range(nportals)])
+    pos = read_drawing_node(r) if t in ("BPnn", "BPIn", "BPIN", "BPnN") else None
+    neg = read_drawing_node(r) if t in ("BpIN", "BpnN", "BPIN", "BPnN") else None
+    sph = r.take("4f")
+    return ("node", t, plane, pos, neg, sph, [r.take("H") for _ in range(r.take("I"))])
+
+
+def drawing_nodes(node):
+    """The drawing tree's nodes and leaves, pre-order."""
+    if node is None:
+        return []
+    kids = (node[2], node[3]) if node[0] == "port" else (node[3], node[4]) if node[0] == "node" else ()
+    return [node] + [n for k in kids for n in drawing_nodes(k)]
 
 
 def read_environment(data: bytes) -> dict:
@@ -370,3 +402,70 @@ def test_a_landblock_with_env_cells_gets_a_landblock_info_counting_them():
     info = read_landblock_info(records[-1].data)
     assert info == {"id": indoor_scenes.BLOCK | 0xFFFE, "num_cells": 2, "objects": 0, "buildings": 0, "pack_mask": 0}
     assert dat.cell_dat_records(replace(indoor_scenes.two_rooms(), env_cells=())) == ()
+
+
+def _room_with_doors():
+    """Five polygons: the floor, two walls, two doors; door 4 is listed as a portal twice."""
+    from acconform.scene import CellStructRec
+
+    s = indoor_scenes
+    polygons = (s.FLOOR, s.NORTH, s.EAST, s.SOUTH, s.WEST)
+    return CellStructRec(polygons, (4, 2, 4), (s.FLOOR,), s.physics_bsp(1), s.cell_bsp())
+
+
+def test_drawing_bsp_lists_every_portal_polygon_in_a_port_node():
+    rec = _room_with_doors()
+    got = read_environment(dat.environment_record(Environment(0x0D000002, (rec,))).data)["cells"][0]
+    nodes = [n for n in drawing_nodes(got["drawing_bsp"]) if n[0] != "leaf"]
+    ports = {n[5][0]: n[6] for n in nodes if n[0] == "port"}
+    assert ports == {2: [(1, 2)], 4: [(0, 4), (2, 4)]}  # (index in Portals, polygon id)
+    assert all(n[1] == "BPIN" for n in nodes if n[0] == "node")
+    assert sorted(p for n in nodes for p in (n[5] if n[0] == "port" else n[6])) == list(range(len(rec.polygons)))
+
+
+def test_drawing_bsp_is_balanced_and_each_node_has_its_polygons_plane_and_a_sphere_around_its_subtree():
+    rec = _room_with_doors()
+    tree = read_environment(dat.environment_record(Environment(0x0D000002, (rec,))).data)["cells"][0]["drawing_bsp"]
+
+    def check(node, depth):
+        """The node's polygon ids, checking its plane and sphere; the leaves' indices in pre-order."""
+        if node[0] == "leaf":
+            leaves.append(node[1])
+            return []
+        plane, pos, neg, sph, polys = node[1:6] if node[0] == "port" else node[2:7]
+        (k,) = polys
+        nx, ny, nz, d = plane
+        assert abs(nx * nx + ny * ny + nz * nz - 1.0) < 1e-6
+        assert all(abs(nx * x + ny * y + nz * z + d) < 1e-5 for x, y, z in rec.polygons[k].vertices)
+        below, above = check(pos, depth + 1), check(neg, depth + 1)
+        assert all(i < k for i in below) and all(i > k for i in above) and depth <= 2
+        cx, cy, cz, r = sph
+        for i in below + [k] + above:
+            assert all(((x - cx) ** 2 + (y - cy) ** 2 + (z - cz) ** 2) ** 0.5 <= r + 1e-5
+                       for x, y, z in rec.polygons[i].vertices)
+        return below + [k] + above
+
+    leaves = []
+    assert check(tree, 0) == [0, 1, 2, 3, 4] and leaves == list(range(6))
+
+
+def test_a_structure_without_polygons_has_a_drawing_bsp_of_one_leaf():
+    got = read_environment(dat.environment_record(indoor_scenes.ENVIRONMENT).data)["cells"]
+    assert got[0]["drawing_bsp"] == ("leaf", 0)
+    assert got[1]["drawing_bsp"][0] == "port" and got[1]["drawing_bsp"][6] == [(0, 0)]
+
+
+ACE_DATLOADER_BSP_NODE = Path(os.environ.get("ACE_SOURCE", "/work/ace")) / "Source/ACE.DatLoader/Entity/BSPNode.cs"
+
+
+@pytest.mark.skipif(not ACE_DATLOADER_BSP_NODE.is_file(), reason=f"ACE's source is not at {ACE_DATLOADER_BSP_NODE} (set ACE_SOURCE)")
+def test_the_writers_node_tags_are_datloaders_and_a_childless_cell_node_is_none_of_them():
+    """DatLoader's BSPNode.cs names each tag it switches on (`private const uint BPIN = ...`); the
+    writer's tags are those, read back to the same names, and its childless cell-node tag Bpnn is none
+    of them (DatLoader's BPnn, one letter apart, reads a front child)."""
+    consts = {m[1]: int(m[2]) for m in re.finditer(r"const uint (\w+) = (\d+);", ACE_DATLOADER_BSP_NODE.read_text())}
+    written = {"BPIN": dat.TAG_BPIN, "BPIn": dat.TAG_BPIn, "BpIN": dat.TAG_BpIN, "LEAF": dat.TAG_LEAF, "PORT": dat.TAG_PORT}
+    assert {name: consts[name] for name in written} == written
+    assert {name: DatReader(struct.pack("<I", t)).tag() for name, t in written.items()} == {n: n for n in written}
+    assert DatReader(struct.pack("<I", dat.TAG_Bpnn)).tag() == "Bpnn" and dat.TAG_Bpnn not in consts.values()
+    assert consts["BPnn"] != dat.TAG_Bpnn

@@ -1,11 +1,12 @@
-"""CellStruct: CellStruct(DatLoader CellStruct), box_intersects_cell, get_portal, sphere_intersects_cell, point_in_cell.
+"""CellStruct: CellStruct(DatLoader CellStruct), box_intersects_cell, sphere_intersects_cell, point_in_cell.
 
 ACE's Common/CellStruct.cs: an EnvCell's geometry, built from the Environment's DAT cell
 structure. Polygons and physics polygons are built per id (PolygonCache is off: a new Polygon
 each), the portals are the polygons the DAT portal ids name, and the three trees are built by
 BSPCache.Get (off: a new BSPTree each): the cell tree (over the physics polygons, though its
 nodes name none), the drawing tree (over the polygons, when the DAT has one) and the physics tree.
-The cell tree answers the three containment questions in the cell's local frame.
+The cell tree answers the three containment questions in the cell's local frame. Not ported:
+ACE's empty constructor and get_portal, which nothing in ACE calls.
 
 Across runs the port remembers the CellStruct built from a structure of an Environment record's
 exact bytes (`remembered`, keyed by the bytes, the structure's id and the mode): building the
@@ -34,22 +35,17 @@ class CellStruct:
     __slots__ = ("cell_struct_id", "vertex_array", "polygons", "physics_polygons", "portals",
                  "drawing_bsp", "physics_bsp", "cell_bsp")
 
-    @anchor(None, "CellStruct.cs:CellStruct()", "the empty constructor (EnvCell.Init's)")
-    def __init__(self):
-        self.cell_struct_id = 0
-        self.vertex_array = None
-        self.polygons = None
-        self.physics_polygons = None
-        self.portals = None
-        self.drawing_bsp = None
-        self.physics_bsp = None
-        self.cell_bsp = None
-
     @classmethod
     @anchor("CCellStruct::UnPack", "CellStruct.cs:CellStruct(DatLoader.Entity.CellStruct)", "the DAT constructor")
     def from_dat(cls, cell_struct, mode: Mode) -> "CellStruct":
-        """`mode` types the default splitting plane of a DAT leaf at a tree's root (BSPTree.from_dat)."""
-        c = cls()
+        """`mode` types the default splitting plane of a DAT leaf at a tree's root (BSPTree.from_dat).
+        ACE's only constructor of a CellStruct (the empty one, EnvCell.Init's, is called nowhere)."""
+        c = cls.__new__(cls)
+        c.cell_struct_id = 0  # never set: C#'s defaults
+        c.vertex_array = None
+        c.drawing_bsp = None
+        c.physics_bsp = None
+        c.cell_bsp = None
         c.polygons = {}
         for key, value in cell_struct.polygons.items():
             c.polygons[key] = Polygon.from_dat(value, cell_struct.vertex_array)  # PolygonCache is off
@@ -78,16 +74,6 @@ class CellStruct:
     @anchor("CCellStruct::box_intersects_cell", "CellStruct.cs:box_intersects_cell")
     def box_intersects_cell(self, bbox) -> bool:
         return self.cell_bsp.box_intersects_cell_bsp(bbox)
-
-    @anchor("CCellStruct::get_portal", "CellStruct.cs:get_portal",
-            "ACE reads portal.PolyID before it assigns portal: NullReferenceException on any portal")
-    def get_portal(self, poly_id: int):
-        portal = None
-        for p in self.portals:
-            if poly_id == portal.poly_id:  # ACE: `portal` is still null here
-                continue
-            portal = p
-        return portal
 
     @anchor("CCellStruct::sphere_intersects_cell", "CellStruct.cs:sphere_intersects_cell")
     def sphere_intersects_cell(self, sphere) -> BoundingType:

@@ -1,8 +1,10 @@
-"""EnvCell: EnvCell(DatLoader EnvCell), Init, PostInit, FindEnvCollisions, FindCollisions, build_visible_cells, find_visible_child_cell, GetVisible, find_transit_cells (the parts and sphere overloads), init_static_objects, point_in_cell, handle_move_restriction.
+"""EnvCell: EnvCell(DatLoader EnvCell), PostInit, FindEnvCollisions, FindCollisions, build_visible_cells, find_visible_child_cell, GetVisible, find_transit_cells (the parts and sphere overloads), init_static_objects, point_in_cell, handle_move_restriction.
 
 ACE's Common/EnvCell.cs: an indoor cell (0xXXYY0100 and up), an ObjCell (obj_cell.py) over a
 CellStruct (cell_struct.py) taken from its Environment record. Built by DBObj.GetEnvCell
-(port/db_obj.py) from the cell DAT's EnvCell record when LScape.get_landcell first asks for it;
+(port/db_obj.py) from the cell DAT's EnvCell record when LScape.get_landcell first asks for it
+(the only constructor ACE calls: its empty one, `EnvCell()` and the `Init` it runs, is called
+nowhere in ACE, so it is not ported);
 the landblock caches it, then PostInit resolves its visible cells (each one through
 LScape.get_landcell, so building a cell builds every cell it sees) and places its static objects
 (the record's stabs: makeObject with id 0, add_obj_to_cell at the stab's frame).
@@ -35,7 +37,6 @@ from ..geom.sphere import Sphere
 from ..dat.unpackable_extensions import dictionary_add
 from ..vec import Sidedness, intersect_box
 from . import cell_struct as cell_struct_module
-from .cell_struct import CellStruct
 from .obj_cell import ObjCell
 from . import land_cell
 
@@ -56,12 +57,6 @@ class EnvCell(ObjCell):
                  "num_static_objects", "static_object_ids", "static_object_frames", "static_objects",
                  "visible_cell_ids", "visible_cells", "flags", "environment_id", "_env_cell", "environment",
                  "shadow_object_ids", "num_stabs")
-
-    @anchor(None, "EnvCell.cs:EnvCell()", "the empty constructor: ObjCell(), then EnvCell's Init")
-    def __init__(self, mode=None):
-        super().__init__(0, mode)
-        self._clear()
-        self.init_env_cell_state()
 
     @classmethod
     @anchor("CEnvCell::UnPack", "EnvCell.cs:EnvCell(DatLoader.FileTypes.EnvCell)", "the DAT constructor")
@@ -130,13 +125,6 @@ class EnvCell(ObjCell):
 
     def __repr__(self) -> str:
         return f"EnvCell({self.id:08X})"
-
-    @anchor("CEnvCell::init", "EnvCell.cs:Init", "EnvCell's own Init (`new`): the empty constructor's, not the DAT one's")
-    def init_env_cell_state(self) -> None:
-        self.cell_structure = CellStruct()
-        self.static_object_ids = []
-        self.static_object_frames = []
-        self.visible_cells = {}
 
     @anchor(None, "EnvCell.cs:PostInit")
     def post_init(self, lscape) -> None:

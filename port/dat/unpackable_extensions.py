@@ -77,15 +77,3 @@ def unpack_uint_dict(reader, make) -> dict:
         item = make(reader)
         dictionary_add(value, key, item)
     return value
-
-
-@anchor(None, "ACE.DatLoader/UnpackableExtensions.cs:UnpackPackedHashTable(Dictionary<uint, uint>)")
-def unpack_packed_hash_table_uint(reader) -> dict:
-    """A ushort count, a ushort bucket size (unused), then (key, value) uint pairs."""
-    value: dict = {}
-    total = reader.read_uint16()
-    reader.read_uint16()  # bucketSize
-    for _ in range(total):
-        key = reader.read_uint32()
-        dictionary_add(value, key, reader.read_uint32())
-    return value

@@ -34,7 +34,12 @@ def test_ace_unpacks_the_environment_field_for_field(live):
         rec = ENVIRONMENT.cell_structs[int(entry.Key)]
         got = entry.Value
         assert int(got.Polygons.Count) == len(rec.polygons) and int(got.PhysicsPolygons.Count) == len(rec.physics_polygons)
-        assert [int(p) for p in got.Portals] == list(rec.portals) and got.DrawingBSP is None
+        assert [int(p) for p in got.Portals] == list(rec.portals)
+        drawing = got.DrawingBSP.RootNode  # a PORT node for the one portal polygon, or a lone leaf
+        if rec.portals:
+            assert str(drawing.Type) == "PORT" and [(int(p.PortalIndex), int(p.PolygonId)) for p in drawing.InPortals] == [(0, 0)]
+        else:
+            assert str(drawing.Type) == "LEAF" and int(drawing.LeafIndex) == 0
         verts = got.VertexArray.Vertices
         for poly in got.PhysicsPolygons:
             want = rec.physics_polygons[int(poly.Key)]
@@ -50,6 +55,55 @@ def test_ace_unpacks_the_environment_field_for_field(live):
         assert node is None
         root = got.PhysicsBSP.RootNode
         assert str(root.Type) == "BPIN" and [int(i) for i in root.PosNode.InPolys] == list(rec.physics_bsp.front.polygons)
+
+
+def _drawing_tree_matches(ace, port) -> int:
+    """ACE's physics BSP node and the port's built from the same DAT drawing node agree field for
+    field (class, sphere, splitting plane, polygons' planes, leaf index, children); the nodes compared."""
+    assert type(port).__name__ == str(ace.GetType().Name)
+    if port.sphere is None:
+        assert ace.Sphere is None
+    else:
+        c = ace.Sphere.Center
+        assert (float(c.X), float(c.Y), float(c.Z), float(ace.Sphere.Radius)) == (*map(float, port.sphere.center), float(port.sphere.radius))
+    n = ace.SplittingPlane.Normal
+    assert (float(n.X), float(n.Y), float(n.Z), float(ace.SplittingPlane.D)) == (*map(float, port.splitting_plane.normal), float(port.splitting_plane.d))
+    assert int(ace.NumPolys) == port.num_polys
+    for a, p in zip(ace.Polygons or (), port.polygons or ()):
+        an = a.Plane.Normal
+        assert (float(an.X), float(an.Y), float(an.Z), float(a.Plane.D)) == (*map(float, p.plane.normal), float(p.plane.d))
+    if type(port).__name__ == "BSPLeaf":
+        assert int(ace.LeafIdx) == port.leaf_idx and bool(ace.Solid) == port.solid
+    count = 1
+    for a, p in ((ace.PosNode, port.pos_node), (ace.NegNode, port.neg_node)):
+        assert (a is None) == (p is None)
+        if p is not None:
+            count += _drawing_tree_matches(a, p)
+    return count
+
+
+def test_ace_builds_the_drawing_tree_of_a_cell_structure_as_the_port_does(live):
+    from ACE.DatLoader.FileTypes import Environment  # type: ignore[import-not-found]
+    from ACE.Server.Physics.Common import CellStruct as AceCellStruct  # type: ignore[import-not-found]
+    from acconform.numerics import get_mode, runtime_named
+    from acconform.port.cell.cell_struct import CellStruct
+    from acconform.port.dat.binary_reader import BinaryReader
+    from acconform.port.dat.environment import Environment as PortEnvironment
+    from acconform.scene import CellStructRec, Environment as EnvironmentRec
+
+    from . import indoor_scenes as s
+
+    doors = CellStructRec((s.FLOOR, s.NORTH, s.EAST, s.SOUTH, s.WEST), (4, 2, 4), (s.FLOOR,), s.physics_bsp(1), s.cell_bsp())
+    data = dat.environment_record(EnvironmentRec(ENV, (*ENVIRONMENT.cell_structs, doors))).data
+    mode = get_mode("exact", runtime_named(live.versions.runtime))
+    ace_env = _unpack(Environment(), data)
+    port_env = PortEnvironment.unpack(BinaryReader(data, mode))
+    compared = 0
+    for entry in ace_env.Cells:
+        ace = AceCellStruct(entry.Value)
+        port = CellStruct.from_dat(port_env.cells[int(entry.Key)], mode)
+        compared += _drawing_tree_matches(ace.DrawingBSP.RootNode, port.drawing_bsp.root_node)
+    assert compared == 1 + 3 + 3 + 11  # a lone leaf, two portal nodes and their leaves, five nodes and six leaves
 
 
 def test_ace_unpacks_the_env_cells_and_the_landblock_info_field_for_field(live):

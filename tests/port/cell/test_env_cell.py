@@ -75,7 +75,7 @@ def test_a_cell_struct_reads_its_cell_tree_as_planes_and_children_only_after_the
     e = DatEnvironment.unpack(BinaryReader(dat.environment_record(env).data, EXACT))
     assert e.id == ENV_ID and sorted(e.cells) == [0, 1]
     s = e.cells[0]
-    assert s.portals == [0, 1] and len(s.polygons) == 2 and len(s.physics_polygons) == 2 and s.drawing_bsp is None
+    assert s.portals == [0, 1] and len(s.polygons) == 2 and len(s.physics_polygons) == 2
     node, depth = s.cell_bsp.root_node, 0
     while node is not None:
         assert node.sphere is None and node.in_polys is None and node.neg_node is None
@@ -110,7 +110,48 @@ def test_a_drawing_trees_portal_node_reads_both_children_its_sphere_polygons_and
     assert reader.position == len(data)
 
 
+@pytest.mark.anchor("ACE.DatLoader/Entity/CellStruct.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/Entity/BSPPortal.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/Entity/PortalPoly.cs:Unpack")
+@pytest.mark.anchor("ACE.DatLoader/Entity/BSPLeaf.cs:Unpack")
+def test_a_cell_structs_drawing_tree_reads_its_portal_polygons_in_port_nodes_to_the_records_last_byte():
+    env, _ = two_rooms()
+    data = dat.environment_record(env).data
+    reader = BinaryReader(data, EXACT)
+    e = DatEnvironment.unpack(reader)
+    assert reader.position == len(data)
+    for s in e.cells.values():
+        root = s.drawing_bsp.root_node  # polygon 0 at the root, polygon 1 in its front subtree
+        assert isinstance(root, BSPPortal) and root.in_polys == [1] and root.sphere is not None
+        assert [(p.portal_index, p.polygon_id) for p in root.in_portals] == [(1, 1)]
+        front = root.pos_node
+        assert isinstance(front, BSPPortal) and [(p.portal_index, p.polygon_id) for p in front.in_portals] == [(0, 0)]
+        leaves = [front.pos_node, front.neg_node, root.neg_node]
+        assert [(n.type, n.leaf_index, n.sphere, n.in_polys) for n in leaves] == [("LEAF", i, None, None) for i in range(3)]
+
+
 # ---------------------------------------------------------------- CellStruct, EnvCell
+
+
+@pytest.mark.anchor("CCellStruct::UnPack")
+@pytest.mark.anchor("BSPTREE::UnPack")
+@pytest.mark.anchor("BSPNODE::UnPackChild")
+@pytest.mark.anchor("BSPLeaf.cs:BSPLeaf(DatLoader.Entity.BSPLeaf, Dictionary<ushort, Polygon>, CVertexArray)")
+def test_a_cell_struct_builds_its_drawing_tree_over_its_polygons_with_portal_nodes_as_plain_nodes():
+    from acconform.port.cell.cell_struct import CellStruct
+    from acconform.port.geom.bsp import BSPLeaf, BSPNode
+
+    env, _ = two_rooms()
+    s = DatEnvironment.unpack(BinaryReader(dat.environment_record(env).data, EXACT)).cells[0]
+    c = CellStruct.from_dat(s, EXACT)
+    root = c.drawing_bsp.root_node
+    assert type(root) is BSPNode and type(root.pos_node) is BSPNode  # ACE: a DAT PORT node is no BSPLeaf
+    assert root.num_polys == 1 and root.polygons[0].plane == c.polygons[1].plane
+    assert root.polygons[0] is not c.polygons[1]  # PolygonCache is off: a Polygon of its own
+    assert root.pos_node.polygons[0].plane == c.polygons[0].plane
+    assert root.splitting_plane.normal == EXACT.vec(-1, 0, 0) and root.splitting_plane.d == EXACT.scalar(-5)  # x = -5
+    leaf = root.neg_node
+    assert type(leaf) is BSPLeaf and leaf.num_polys == 0 and leaf.sphere is None and not leaf.solid
 
 
 @pytest.mark.anchor("CEnvCell::point_in_cell")
@@ -143,13 +184,6 @@ def test_box_intersects_cell_is_false_only_for_a_box_wholly_behind_one_wall():
     assert s.box_intersects_cell(BBox(v(-1, -1, 1), v(1, 1, 2)))
     assert s.box_intersects_cell(BBox(v(4, -1, 1), v(6, 1, 2)))
     assert not s.box_intersects_cell(BBox(v(-8, -1, 1), v(-6, 1, 2)))
-
-
-@pytest.mark.anchor("CCellStruct::get_portal")
-def test_get_portal_throws_on_its_first_portal_as_ace_reads_the_portal_before_assigning_it():
-    s = rooms_world().get_landcell(A).cell_structure
-    with pytest.raises(AttributeError):
-        s.get_portal(0)
 
 
 @pytest.mark.anchor("CEnvCell::build_visible_cells")

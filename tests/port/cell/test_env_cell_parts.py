@@ -89,13 +89,11 @@ def test_find_visible_child_cell_finds_the_cell_holding_a_point_through_visible_
 
 
 @pytest.mark.anchor("CEnvCell::handle_move_restriction")
-@pytest.mark.anchor("EnvCell.cs:EnvCell()")
-@pytest.mark.anchor("CEnvCell::init")
-@pytest.mark.anchor("CellStruct.cs:CellStruct()")
-def test_an_env_cell_handles_a_move_restriction_and_its_empty_constructor_starts_empty():
-    c = EnvCell(EXACT)
-    assert c.handle_move_restriction(None) is True
-    assert c.id == 0 and c.visible_cells == {} and c.static_object_ids == [] and c.cell_structure.cell_bsp is None
+def test_an_env_cell_allows_every_move_restriction():
+    lscape, _ = _world()
+    c = lscape.get_landcell(A)
+    assert isinstance(c, EnvCell) and c.handle_move_restriction(None) is True
+    lscape.release()
 
 
 @pytest.mark.anchor("ACE.DatLoader/Entity/CellPortal.cs:Unpack")
@@ -139,24 +137,32 @@ def test_a_released_landblock_keeps_no_env_cell_for_the_next_run():
 
 
 @pytest.mark.anchor("ACE.DatLoader/FileTypes/LandblockInfo.cs:Unpack")
-@pytest.mark.anchor("ACE.DatLoader/Entity/BuildInfo.cs:Unpack")
-@pytest.mark.anchor("ACE.DatLoader/Entity/CBldPortal.cs:Unpack")
-@pytest.mark.anchor("ACE.DatLoader/UnpackableExtensions.cs:UnpackPackedHashTable(Dictionary<uint, uint>)")
-def test_a_landblock_info_reads_its_cell_count_objects_buildings_and_restriction_table():
+def test_a_landblock_info_reads_its_cell_count_and_objects_to_its_last_byte():
     import struct
-    stab = struct.pack("<I7f", 0x01000001, 1, 2, 3, 1, 0, 0, 0)
-    portal = struct.pack("<4H", 2, 0x0101, 0, 1) + struct.pack("<H", 0x0102) + b"\0\0"  # aligned to 4
-    building = struct.pack("<I7fI", 0x02000001, 5, 6, 7, 1, 0, 0, 0, 3) + struct.pack("<I", 1) + portal
-    data = (struct.pack("<II", 0xA9B4FFFE, 3) + struct.pack("<I", 1) + stab + struct.pack("<HH", 1, 1) + building
-            + struct.pack("<HH", 1, 0) + struct.pack("<II", 0xA9B40100, 0x7000000A))
+    from acconform import dat
     from acconform.port.dat.landblock_info import LandblockInfo
+
+    data = dat.landblock_info_record(0xA9B4, 3).data  # what a scene's landblock gets
     reader = BinaryReader(data, EXACT)
     info = LandblockInfo.unpack(reader)
-    assert (info.id, info.num_cells, [s.id for s in info.objects]) == (0xA9B4FFFE, 3, [0x01000001])
-    (b,) = info.buildings
-    assert b.model_id == 0x02000001 and b.num_leaves == 3
-    assert [(p.other_cell_id, p.stab_list) for p in b.portals] == [(0x0101, [0x0102])]
-    assert info.restriction_tables == {0xA9B40100: 0x7000000A} and reader.position == len(data)
+    assert (info.id, info.num_cells, info.objects, info.pack_mask, reader.position) == (0xA9B4FFFE, 3, [], 0, len(data))
+    stab = struct.pack("<I7f", 0x01000001, 1, 2, 3, 1, 0, 0, 0)
+    data = struct.pack("<III", 0xA9B4FFFE, 3, 1) + stab + struct.pack("<HH", 0, 2)
+    reader = BinaryReader(data, EXACT)
+    info = LandblockInfo.unpack(reader)
+    assert [s.id for s in info.objects] == [0x01000001] and info.pack_mask == 2 and reader.position == len(data)
+
+
+@pytest.mark.anchor("ACE.DatLoader/FileTypes/LandblockInfo.cs:Unpack")
+@pytest.mark.parametrize("buildings, pack_mask, names", [(1, 0, r"1 building\(s\)"), (0, 1, "restriction table")])
+def test_a_landblock_info_with_buildings_or_a_restriction_table_is_misuse_no_scene_can_make(buildings, pack_mask, names):
+    import struct
+    from acconform.errors import AcconformError
+    from acconform.port.dat.landblock_info import LandblockInfo
+
+    data = struct.pack("<IIIHH", 0xA9B4FFFE, 3, 0, buildings, pack_mask) + b"\0" * 64
+    with pytest.raises(AcconformError, match=f"LandblockInfo A9B4FFFE .*{names}.*no scene writes"):
+        LandblockInfo.unpack(BinaryReader(data, EXACT))
 
 
 @pytest.mark.anchor("Position::get_indoor_cell")
