@@ -337,8 +337,10 @@ class PhysicsObj:
 
         # should be using Math.Abs(), bug in original? (ACE): a move of any length toward -x and -y is kept
         if transition.sphere_path.cur_pos.obj_cell_id == new_cell.id and diff.x < PLACEMENT_CLOSE and diff.y < PLACEMENT_CLOSE:
-            transition._hit("check_position:kept_close" if -diff.x < PLACEMENT_CLOSE and -diff.y < PLACEMENT_CLOSE
-                            else "check_position:kept_far_negative")
+            if -diff.x < PLACEMENT_CLOSE and -diff.y < PLACEMENT_CLOSE:
+                transition._hit("check_position:kept_close")
+            else:
+                transition._hit("check_position:kept_far_negative")
             new_pos.frame.origin = transition.sphere_path.cur_pos.frame.origin
             return True
         transition._hit("check_position:moved_too_far")
