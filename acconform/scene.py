@@ -727,13 +727,15 @@ def check_consistency(scene: Scene, path: str = "") -> None:
     begin = _p(path, "mover.begin.cell")
     if scene.mover.placement is None:
         _check_cell_id(begin, scene.mover.begin.cell)
+        check_landblock(begin, scene.mover.begin.cell)
         _check_defined(begin, scene.mover.begin.cell, env_cells, "the mover starts in it (CurCell = LScape.get_landcell)")
-    elif scene.engine_mode != "client":
-        raise InvalidScene(_p(path, "mover.placement"), "a placement needs engine mode client: in server mode ACE's "
-                           "enter_cell_server asks the server's ObjectMaint and LandblockManager (adjacent landblocks, "
-                           "known players), which a scene does not carry")
-    # with a placement, any cell id: AdjustPosition judges it (ACE's answer for a cell it cannot use)
-    check_landblock(begin, scene.mover.begin.cell)
+    else:
+        if scene.engine_mode != "client":
+            raise InvalidScene(_p(path, "mover.placement"), "a placement needs engine mode client: in server mode "
+                               "ACE's enter_cell_server asks the server's ObjectMaint and LandblockManager (adjacent "
+                               "landblocks, known players), which a scene does not carry")
+        # any cell id in a defined landblock: AdjustPosition judges it (ACE's answer for a cell it cannot use)
+        check_landblock(begin, scene.mover.begin.cell)
     if scene.mover.contact_plane is not None:
         where = _p(path, "mover.contact_plane.cell")
         _check_cell_id(where, scene.mover.contact_plane.cell)
