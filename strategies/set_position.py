@@ -8,12 +8,14 @@ biased toward where placement goes wrong:
 - "at end": the end position (a wall, a ledge, an object the path ran into), so the placement
   overlaps geometry and FindValidPosition pushes the mover out -- by less or more than 0.05 in x
   or y, toward + or - (CheckPositionInternal's comparison has no Math.Abs);
-- "nudged": the begin moved a little (a few centimetres to a third of a metre) toward the end;
+- "backed off": the end position backed off toward the begin a little (a few centimetres to a third
+  of a metre): overlaps small and large;
 - "other cell": the point kept, the cell id another cell of its landblock: indoors another
   EnvCell (find_visible_child_cell finds the point's cell among its visible cells, or not; a
   SeenOutside cell falls out to the landblock), outdoors another land cell (AdjustToOutside
   fixes it);
-- "nowhere": the point moved well away from its cell (into no EnvCell, or off the dungeon);
+- "nowhere": the point moved well away from its cell (into no EnvCell, or off the dungeon), half the
+  time under a SeenOutside cell's id when the dungeon has one (AdjustPosition's adjust_to_outside);
 - "bad id": a cell id outside AdjustPosition's ranges (0, 0x41..0xFF, 0xFFFE).
 
 Flags: Slide or not (the 0.05 check runs only without it), sometimes DontCreateCells and the flags
@@ -35,11 +37,11 @@ from acconform.scene import ENV_CELL_FIRST, Frame, Placement, Position, Scene
 from . import draws as dr
 
 PLACE = st.sampled_from((False, False, False, True))
-WHERE = st.sampled_from(("as drawn", "at end", "at end", "nudged", "nudged", "other cell", "other cell", "nowhere",
-                         "bad id"))
+WHERE = st.sampled_from(("as drawn", "at end", "at end", "backed off", "backed off", "other cell", "other cell",
+                         "nowhere", "nowhere", "bad id"))
 NUDGES = dr.OneOf(dr.f32(0.0, 0.06), dr.f32(0.0, 0.35))
-SLIDE = st.sampled_from((False, True, True, True))
-GET_CELL = st.sampled_from((False, True, True, True))
+SLIDE = st.sampled_from((False, True))
+GET_CELL = st.sampled_from((False, True))
 EXTRA_FLAGS = st.sampled_from((0, 0, int(SetPositionFlags.Placement), int(SetPositionFlags.Teleport),
                                int(SetPositionFlags.DontCreateCells),
                                int(SetPositionFlags.Placement | SetPositionFlags.SendPositionEvent)))
@@ -62,14 +64,14 @@ def with_placement(draw, scene: Scene) -> Scene:
     block = begin.cell & 0xFFFF0000
     if where == "at end" and _landblock_defined(scene, m.end.cell):
         begin = Position(m.end.cell, Frame(m.end.frame.origin, begin.frame.orientation))
-    elif where == "nudged":
-        dx, dy = (e - b for e, b in zip(m.end.frame.origin[:2], begin.frame.origin[:2]))
+    elif where == "backed off" and _landblock_defined(scene, m.end.cell):
+        dx, dy = (b - e for b, e in zip(begin.frame.origin[:2], m.end.frame.origin[:2]))
         length = (dx * dx + dy * dy) ** 0.5
+        x, y, z = m.end.frame.origin
         if length > 0:
             step = dr.take(draw, NUDGES)
-            x, y, z = begin.frame.origin
-            begin = Position(begin.cell, Frame((to_f32(x + dx / length * step), to_f32(y + dy / length * step), z),
-                                               begin.frame.orientation))
+            x, y = to_f32(x + dx / length * step), to_f32(y + dy / length * step)
+        begin = Position(m.end.cell, Frame((x, y, z), begin.frame.orientation))
     elif where == "other cell":
         if scene.env_cells:
             cells = [c.id for c in scene.env_cells if c.id >> 16 == begin.cell >> 16]
@@ -80,7 +82,9 @@ def with_placement(draw, scene: Scene) -> Scene:
     elif where == "nowhere":
         ax, ay, az = draw(AWAY)
         x, y, z = begin.frame.origin
-        begin = Position(begin.cell, Frame((to_f32(x + ax), to_f32(y + ay), to_f32(z + az)), begin.frame.orientation))
+        seen_outside = [c.id for c in scene.env_cells if c.seen_outside and c.id >> 16 == begin.cell >> 16]
+        cell = seen_outside[draw(OTHER) % len(seen_outside)] if seen_outside and draw(dr.BOOLEANS) else begin.cell
+        begin = Position(cell, Frame((to_f32(x + ax), to_f32(y + ay), to_f32(z + az)), begin.frame.orientation))
     elif where == "bad id":
         begin = Position(block | draw(BAD_IDS), begin.frame)
     flags = draw(EXTRA_FLAGS) | (int(SetPositionFlags.Slide) if draw(SLIDE) else 0)
