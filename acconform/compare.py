@@ -11,6 +11,9 @@ SpherePath bits, error presence) must be equal in every mode. Floats:
   ``FAST_ABS`` absolute (for values near zero, where ULPs are tiny); NaN matches NaN of any
   payload, infinities only themselves.
 
+`placement` (the mover's placement, scenes with one) is compared field by field like the rest;
+one side with it and the other without is a difference.
+
 `static_cells` (the cells each static is registered in, in order) must be equal in every mode,
 unless either side has None ("not recorded": an ``acconform.outcome/1`` record); then it is
 not compared.
@@ -31,13 +34,13 @@ from typing import Any
 import numpy as np
 
 from .flags import ObjectInfoState, flag_names
-from .outcome import ContactPlaneState, NormalState, Outcome
+from .outcome import ContactPlaneState, NormalState, Outcome, PlacementState
 
 MODES = ("exact", "fast")
 FAST_ULPS = 64  # float32 ULPs allowed between a double run and ACE's float32 run
 FAST_ABS = 1e-4  # metres / unit-vector components; below PhysicsGlobals.EPSILON (2e-4)
 
-_ID_FIELDS = frozenset({"cell", "check_cell"})
+_ID_FIELDS = frozenset({"cell", "check_cell", "cur_cell"})
 _FLAG_FIELDS = {"object_info_state": ObjectInfoState}
 _VEC_FIELDS = frozenset({"origin", "orientation", "velocity", "normal", "vector"})
 _FLOAT_FIELDS = frozenset({"d"})
@@ -116,8 +119,11 @@ def _compare_record(a, b, prefix: str, mode: str, out: list) -> None:
         name = f.name
         path = f"{prefix}{name}"
         va, vb = getattr(a, name), getattr(b, name)
-        if isinstance(va, (ContactPlaneState, NormalState)):
+        if isinstance(va, (ContactPlaneState, NormalState)) or (
+                isinstance(va, PlacementState) and isinstance(vb, PlacementState)):
             _compare_record(va, vb, path + ".", mode, out)
+        elif name == "placement" and (va is None) != (vb is None):
+            out.append(Difference(path, va, vb))
         elif name == "static_cells":
             if va is not None and vb is not None and va != vb:
                 out.append(Difference(path, va, vb))

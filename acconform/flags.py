@@ -1,5 +1,6 @@
 """ACE's flag enums that scenes and outcomes name (ACE.Entity PhysicsState, PhysicsEngine.cs
-TransientStateFlags, ObjectInfo.cs ObjectInfoState, CullMode); values are ACE's.
+TransientStateFlags, ObjectInfo.cs ObjectInfoState, CullMode, SetPosition.cs SetPositionFlags and
+SetPositionError); values are ACE's.
 
 The three flag sets are read in the port's hottest loops (``state & PhysicsState.Missile``), so
 they are plain classes whose attributes are plain ints: a test is one int ``&``, where an
@@ -95,6 +96,31 @@ class TransientState(metaclass=FlagSet):
     StationaryStuck = 0x40
     Active = 0x80
     CheckEthereal = 0x100
+
+
+class SetPositionFlags(metaclass=FlagSet):
+    """SetPosition.cs SetPositionFlags: what PhysicsObj.SetPosition is asked to do."""
+
+    Placement = 0x1
+    Teleport = 0x2
+    Restore = 0x4
+    Slide = 0x10
+    DontCreateCells = 0x20
+    Scatter = 0x100
+    RandomScatter = 0x200
+    Line = 0x400
+    SendPositionEvent = 0x1000
+
+
+class SetPositionError(IntEnum):
+    """SetPosition.cs SetPositionError: PhysicsObj.SetPosition's answer."""
+
+    OK = 0x0
+    GeneralFailure = 0x1
+    NoValidPosition = 0x2
+    NoCell = 0x3
+    Collided = 0x4
+    InvalidArguments = 0x100
 
 
 class ObjectInfoState(metaclass=FlagSet):

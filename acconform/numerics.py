@@ -279,6 +279,11 @@ class Quaternion:
     def __mul__(self, o: "Quaternion") -> "Quaternion":
         return quat_multiply(self, o)
 
+    def length(self):
+        """Quaternion.Length (mono): (float)Math.Sqrt(X*X + Y*Y + Z*Z + W*W)."""
+        ls = self.x * self.x + self.y * self.y + self.z * self.z + self.w * self.w
+        return type(ls)(math.sqrt(ls))
+
 
 def quat_multiply(a: Quaternion, b: Quaternion) -> Quaternion:
     """Quaternion.Multiply (and operator *)."""
@@ -618,6 +623,11 @@ class Net10Quaternion(Quaternion):
 
     def __mul__(self, o: "Quaternion") -> "Quaternion":
         return net10_quat_multiply(self, o)
+
+    def length(self):
+        """Quaternion.Length on .NET 10: MathF.Sqrt of the Vector128.Dot LengthSquared."""
+        ls = _net10_length_squared(self)
+        return type(ls)(math.sqrt(ls))
 
 
 def net10_quat_multiply(value1: Quaternion, value2: Quaternion) -> Quaternion:

@@ -1,6 +1,6 @@
 """The outcome: what one transition left behind, read the same way from the port and from ACE.
 
-Format ``acconform.outcome/2``. Fields mirror ACE's objects after PhysicsObj.transition's
+Format ``acconform.outcome/3``. Fields mirror ACE's objects after PhysicsObj.transition's
 steps (FindValidPosition and its set-up): SpherePath.CurPos/CurCell, ObjectInfo.State, the
 CollisionInfo fields, the mover's velocity (ObjectInfo.StopVelocity zeroes it), and a few
 SpherePath fields that expose the transition's own state. `error` holds what a side raised
@@ -12,6 +12,13 @@ order, the ids of the cells its PhysicsObj is registered in as a shadow object, 
 placement removes nothing). It is required in ``/2`` (``null`` when a side could not read it,
 e.g. an error before placement); ``acconform.outcome/1`` documents still read, with
 ``static_cells = None``: "not recorded", which the comparator does not compare.
+
+`placement` (``/3``; None for a scene without a placement, whose outcome is still written as
+``/2``) is what ACE's placement of the mover left: SetPosition's answer and the mover's
+Position, CurCell, TransientState and ShadowObjects cells afterwards. When the placement left
+the mover in no cell, the transition is not run, and the transition's fields are the defaults
+of this record (`velocity` and `static_cells` are still read): both sides write that record,
+neither infers it.
 """
 
 from __future__ import annotations
@@ -19,10 +26,11 @@ from __future__ import annotations
 from dataclasses import dataclass, fields
 
 from .codec import Reader, write_f32, write_id, write_vec
-from .flags import ObjectInfoState, flag_names
+from .flags import ObjectInfoState, SetPositionError, TransientState, flag_names
 from .scene import Frame, IDENTITY, Vec3, check_format
 
-FORMAT = "acconform.outcome/2"
+FORMAT = "acconform.outcome/3"
+FORMAT_V2 = "acconform.outcome/2"  # what an outcome without a placement is written as
 FORMAT_V1 = "acconform.outcome/1"  # read (static_cells not recorded), never written
 ZERO: Vec3 = (0.0, 0.0, 0.0)
 
@@ -66,6 +74,36 @@ class NormalState:
 
 
 @dataclass(frozen=True, slots=True)
+class PlacementState:
+    """The mover after PhysicsObj.SetPositionInternal(Position, SetPosition, Transition)."""
+
+    result: int = 0  # SetPositionError
+    cell: int = 0  # Position.ObjCellID
+    origin: Vec3 = ZERO  # Position.Frame
+    orientation: tuple[float, float, float, float] = IDENTITY
+    cur_cell: int = 0  # CurCell id (0 when none)
+    transient_state: int = 0  # TransientState
+    shadow_cells: tuple[int, ...] = ()  # ShadowObjects' cell ids, in order
+
+    def to_json(self):
+        return {"result": SetPositionError(self.result).name, "cell": write_id(self.cell), "origin": write_vec(self.origin),
+                "orientation": write_vec(self.orientation), "cur_cell": write_id(self.cur_cell),
+                "transient_state": flag_names(TransientState, self.transient_state),
+                "shadow_cells": [write_id(c) for c in self.shadow_cells]}
+
+    @staticmethod
+    def from_json(r: Reader) -> "PlacementState":
+        r.obj({"result", "cell", "origin", "orientation", "cur_cell", "transient_state", "shadow_cells"})
+        name = r["result"].str_()
+        if name not in SetPositionError.__members__:
+            r["result"].fail(f"unknown SetPositionError {name!r} (known: {', '.join(SetPositionError.__members__)})")
+        return PlacementState(int(SetPositionError[name]), r["cell"].id_(), _vec_nf(r["origin"]),
+                              tuple(c.f32(allow_nonfinite=True) for c in r["orientation"].list(count=4)),
+                              r["cur_cell"].id_(), r["transient_state"].flags(TransientState),
+                              tuple(c.id_() for c in r["shadow_cells"].list()))
+
+
+@dataclass(frozen=True, slots=True)
 class Outcome:
     ok: bool = False  # FindValidPosition's answer (PhysicsObj.transition returns null when False)
     cell: int = 0  # SpherePath.CurCell id
@@ -85,15 +123,18 @@ class Outcome:
     neg_poly_hit: bool = False  # SpherePath.NegPolyHit
     error: str | None = None
     static_cells: tuple[tuple[int, ...], ...] | None = None  # per static: PhysicsObj.ShadowObjects' cell ids
+    placement: PlacementState | None = None  # the mover's placement, for a scene with one
 
     @property
     def frame(self) -> Frame:
         return Frame(self.origin, self.orientation)
 
     def to_json(self):
-        d = {"format": FORMAT}
+        d = {"format": FORMAT if self.placement is not None else FORMAT_V2}
         for f in fields(self):
             v = getattr(self, f.name)
+            if f.name == "placement" and v is None:
+                continue
             if f.name in ("cell", "check_cell"):
                 v = write_id(v)
             elif f.name in ("origin", "orientation", "velocity"):
@@ -111,15 +152,19 @@ class Outcome:
     def from_json(doc, path: str = "") -> "Outcome":
         r = Reader(doc, path)
         names = {f.name for f in fields(Outcome)}
-        v1 = isinstance(doc, dict) and doc.get("format") == FORMAT_V1
-        r.obj((names - {"static_cells"} if v1 else names) | {"format"})
-        if not v1:
+        fmt = doc.get("format") if isinstance(doc, dict) else None
+        v1 = fmt == FORMAT_V1
+        allowed = names - {"static_cells"} if v1 else names
+        if fmt != FORMAT:
+            allowed = allowed - {"placement"}
+        r.obj(allowed | {"format"})
+        if not v1 and fmt != FORMAT_V2:
             check_format(r, FORMAT)
         kw = {}
         for name in names:
             if not r.has(name):
-                if name == "error" or (name == "static_cells" and (v1 or name in r.value)):
-                    continue  # absent error: none; static_cells: /1 never has it, /2 may write null
+                if name in ("error", "placement") or (name == "static_cells" and (v1 or name in r.value)):
+                    continue  # absent error/placement: none; static_cells: /1 never has it, /2 may write null
                 r[name]  # raises InvalidScene: missing required field
             x = r[name]
             if name in ("cell", "check_cell"):
@@ -140,6 +185,8 @@ class Outcome:
                 kw[name] = x.str_()
             elif name == "static_cells":
                 kw[name] = tuple(tuple(c.id_() for c in cells.list()) for cells in x.list())
+            elif name == "placement":
+                kw[name] = PlacementState.from_json(x)
             else:
                 kw[name] = x.bool_()
         return Outcome(**kw)

@@ -72,6 +72,8 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "water": (_water, "terrain with water vertices"),
     "indoor.statics": (lambda s: any(o.position.cell & 0xFFFF >= 0x100 for o in s.objects),
                        "static objects inside EnvCells (DAT stabs, placed when ACE loads the cell)"),
+    "mover.placement": (lambda s: s.mover.placement is not None,
+                        "the mover placed by ACE's PhysicsObj.SetPosition before the transition (scene/3, outcome/3)"),
 }
 
 

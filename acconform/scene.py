@@ -1,9 +1,10 @@
 """The scene: everything one transition needs, as immutable records with a versioned JSON form.
 
-A scene is what both the port and the oracle take. Format ``acconform.scene/2`` (README's
-"Scene format" section documents every field); ``acconform.scene/1`` files still read (a /1 scene
-is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with terrain, and
-such a scene is written as /1, so outdoor files, corpus records and their keys stay as they were). All floats are float32 values held as Python
+A scene is what both the port and the oracle take. Format ``acconform.scene/3`` (README's
+"Scene format" section documents every field); ``acconform.scene/2`` and ``/1`` files still read
+(a /2 scene is a /3 scene whose mover has no ``placement``; a /1 scene is a /2 scene without indoor
+fields: no environments, no EnvCells, every landblock with terrain). A scene is written in the
+oldest version that holds it, so files, corpus records and their keys stay as they were. All floats are float32 values held as Python
 floats; ids are uint32. Construction from JSON validates and names the bad field; records built
 in code (e.g. by the strategies) are checked the same way by `validate_scene`.
 """
@@ -16,9 +17,10 @@ from typing import Union
 
 from .codec import Reader, dumps, parse_json_text, write_f32, write_id, write_vec
 from .errors import InvalidScene
-from .flags import CullMode, PhysicsState, TransientState, flag_names
+from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
-FORMAT = "acconform.scene/2"
+FORMAT = "acconform.scene/3"
+FORMAT_V2 = "acconform.scene/2"  # what a scene without a placement is written as (every /2 reader reads it)
 FORMAT_V1 = "acconform.scene/1"  # what an outdoor scene is written as (every /1 reader reads it)
 
 Vec3 = tuple[float, float, float]
@@ -509,6 +511,35 @@ class ContactPlane:
         return ContactPlane(r["cell"].id_(), PlaneRec.from_json(r["plane"]))
 
 
+# SetPositionFlags a scene's placement cannot ask for: ACE scatters only an object with a WorldObject
+# (PhysicsObj.SetPositionInternal(SetPosition, Transition) reads WorldObject.ScatterPos; the Scatter
+# retry sits behind it), and the mover's WeenieObj is WeenieObject.DummyObject, which has none.
+UNPLACEABLE_FLAGS = int(SetPositionFlags.Scatter | SetPositionFlags.RandomScatter)
+
+
+@dataclass(frozen=True, slots=True)
+class Placement:
+    """The mover placed by ACE's own placement (PhysicsObj.SetPosition) at ``mover.begin`` before the
+    transition: `flags` are the SetPosition's SetPositionFlags; `get_cell` first replaces the begin
+    position's cell id by ``Position.GetCell(ObjCellID)`` (the server's cell fix-up for a spawn or
+    teleport: AdjustCell indoors, the cell under the point outdoors)."""
+
+    flags: int = 0
+    get_cell: bool = False
+
+    def to_json(self):
+        return {"flags": flag_names(SetPositionFlags, self.flags), "get_cell": self.get_cell}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Placement":
+        r.obj({"flags", "get_cell"})
+        flags = r["flags"].flags(SetPositionFlags) if r.has("flags") else 0
+        if flags & UNPLACEABLE_FLAGS:
+            r["flags"].fail("Scatter and RandomScatter cannot be run: ACE scatters only an object with a "
+                            "WorldObject (ScatterPos), and the mover has none (WeenieObject.DummyObject)")
+        return Placement(flags, r["get_cell"].bool_() if r.has("get_cell") else False)
+
+
 DEFAULT_MOVER_STATE = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
 DEFAULT_MOVER_TRANSIENT = int(TransientState.Contact | TransientState.OnWalkable)
 
@@ -528,6 +559,7 @@ class Mover:
     velocity: Vec3 = (0.0, 0.0, 0.0)
     contact_plane: ContactPlane | None = None
     sliding_normal: Vec3 | None = None
+    placement: Placement | None = None  # None: Position = begin, CurCell = its cell (no placement)
 
     def to_json(self):
         d = {"spheres": [s.to_json() for s in self.spheres], "scale": write_f32(self.scale),
@@ -540,12 +572,15 @@ class Mover:
             d["contact_plane"] = self.contact_plane.to_json()
         if self.sliding_normal is not None:
             d["sliding_normal"] = write_vec(self.sliding_normal)
+        if self.placement is not None:
+            d["placement"] = self.placement.to_json()
         return d
 
     @staticmethod
-    def from_json(r: Reader) -> "Mover":
+    def from_json(r: Reader, placement: bool = True) -> "Mover":
+        """`placement`: the format may hold one (scene/3)."""
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
-               "velocity", "contact_plane", "sliding_normal", "begin", "end"})
+               "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
         scale = r["scale"].f32() if r.has("scale") else 1.0
         if not scale > 0:
@@ -567,6 +602,7 @@ class Mover:
             velocity=r["velocity"].vec3() if r.has("velocity") else (0.0, 0.0, 0.0),
             contact_plane=ContactPlane.from_json(r["contact_plane"]) if r.has("contact_plane") else None,
             sliding_normal=r["sliding_normal"].vec3() if r.has("sliding_normal") else None,
+            placement=Placement.from_json(r["placement"]) if r.has("placement") else None,
         )
 
 
@@ -589,8 +625,15 @@ class Scene:
         """Whether the scene needs /2: EnvCells, Environments or a landblock without terrain."""
         return bool(self.env_cells or self.environments) or not all(lb.has_terrain for lb in self.landblocks)
 
+    @property
+    def format(self) -> str:
+        """The oldest format that holds the scene (/3 for a placement, /2 indoors, else /1)."""
+        if self.mover.placement is not None:
+            return FORMAT
+        return FORMAT_V2 if self.indoor else FORMAT_V1
+
     def to_json(self):
-        d = {"format": FORMAT if self.indoor else FORMAT_V1}
+        d = {"format": self.format}
         if self.name:
             d["name"] = self.name
         d["engine"] = {"mode": self.engine_mode}
@@ -615,10 +658,11 @@ class Scene:
     @staticmethod
     def from_json(doc, path: str = "") -> "Scene":
         r = Reader(doc, path)
-        v1 = isinstance(doc, dict) and doc.get("format") == FORMAT_V1
+        fmt = doc.get("format") if isinstance(doc, dict) else None
+        v1 = fmt == FORMAT_V1
         indoor = () if v1 else ("environments", "env_cells")
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor})
-        if not v1:
+        if not v1 and fmt != FORMAT_V2:
             check_format(r, FORMAT)
         name = r["name"].str_() if r.has("name") else ""
         mode = "server"
@@ -638,7 +682,8 @@ class Scene:
             environments = tuple(Environment.from_json(e) for e in r["environments"].list())
         if r.has("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
-        scene = Scene(landblocks, Mover.from_json(r["mover"]), objects, table, mode, name, environments, env_cells)
+        mover = Mover.from_json(r["mover"], placement=fmt == FORMAT)
+        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells)
         check_consistency(scene, path)
         return scene
 
@@ -680,9 +725,17 @@ def check_consistency(scene: Scene, path: str = "") -> None:
                                       f"(defined: {', '.join(f'{b:04X}' for b in sorted(defined))})")
 
     begin = _p(path, "mover.begin.cell")
-    _check_cell_id(begin, scene.mover.begin.cell)
-    check_landblock(begin, scene.mover.begin.cell)
-    _check_defined(begin, scene.mover.begin.cell, env_cells, "the mover starts in it (CurCell = LScape.get_landcell)")
+    if scene.mover.placement is None:
+        _check_cell_id(begin, scene.mover.begin.cell)
+        check_landblock(begin, scene.mover.begin.cell)
+        _check_defined(begin, scene.mover.begin.cell, env_cells, "the mover starts in it (CurCell = LScape.get_landcell)")
+    else:
+        if scene.engine_mode != "client":
+            raise InvalidScene(_p(path, "mover.placement"), "a placement needs engine mode client: in server mode "
+                               "ACE's enter_cell_server asks the server's ObjectMaint and LandblockManager (adjacent "
+                               "landblocks, known players), which a scene does not carry")
+        # any cell id in a defined landblock: AdjustPosition judges it (ACE's answer for a cell it cannot use)
+        check_landblock(begin, scene.mover.begin.cell)
     if scene.mover.contact_plane is not None:
         where = _p(path, "mover.contact_plane.cell")
         _check_cell_id(where, scene.mover.contact_plane.cell)

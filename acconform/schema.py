@@ -156,14 +156,14 @@ def _every_optional_field(scene):
 
 def schemas() -> tuple[dict, dict]:
     """(scene schema, outcome schema), inferred from the records' JSON for the fixed sample."""
-    from .outcome import FORMAT as OUTCOME_FORMAT, Outcome
-    from .scene import FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1
+    from .outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V2 as OUTCOME_FORMAT_V2, Outcome
+    from .scene import FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2
 
     scenes, outcomes = _sample()
     s = _Inferrer(nonfinite_floats=False)
-    # an outdoor scene is written as /1, an indoor one as /2
-    scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene", (SCENE_FORMAT_V1, SCENE_FORMAT))
+    # an outdoor scene is written as /1, an indoor one as /2, one with a placement as /3
+    scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene", (SCENE_FORMAT_V1, SCENE_FORMAT_V2, SCENE_FORMAT))
     o = _Inferrer(nonfinite_floats=True)
     docs = [x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
-    outcome = o.finish(o._plain(docs), "acconform outcome", OUTCOME_FORMAT)
+    outcome = o.finish(o._plain(docs), "acconform outcome", (OUTCOME_FORMAT_V2, OUTCOME_FORMAT))
     return scene, outcome

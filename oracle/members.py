@@ -56,6 +56,12 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
                                        "SetScaleStatic", "remove_shadows_from_cells", "get_object_info",
                                        "makeObject", "DatObject", "add_obj_to_cell", "leave_cell", "DestroyObject",
                                        "ShadowObjects")),
+    # a scene's placement (mover.placement): Facade.Place
+    ("ACE.Server.Physics.PhysicsObj", ("SetPositionInternal",)),
+    ("ACE.Server.Physics.Common.Position", ("GetCell",)),
+    ("ACE.Server.Physics.Common.SetPosition", (".ctor",)),
+    ("ACE.Server.Physics.Common.SetPositionFlags", ("Slide", "DontCreateCells")),
+    ("ACE.Server.Physics.Animation.ObjectInfoState", ("Default",)),
     ("ACE.Server.Physics.Polygon", (".ctor", "Vertices", "VertexIDs", "make_plane")),
     ("ACE.Server.Physics.Sphere", (".ctor", "Center", "Radius")),
     ("ACE.Server.Physics.Animation.AFrame", (".ctor", "Origin", "Orientation")),

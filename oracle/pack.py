@@ -10,12 +10,12 @@ from __future__ import annotations
 import struct
 from dataclasses import fields
 
-from ..outcome import ContactPlaneState, NormalState, Outcome
+from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState
 from ..dat import cell_dat_records, environment_records, mover_records, static_records
 from ..scene import Landblock, Scene
 from ..staging import MOVER_ID
 
-PACK_VERSION = 5
+PACK_VERSION = 6
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -73,7 +73,7 @@ def _object(o, index: int) -> bytes:
 
 
 _HEAD = struct.Struct("<iB")
-_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS)
+_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiB")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -94,8 +94,10 @@ def pack_scene(scene: Scene) -> bytes:
     cpv = (0, 0, 0.0, 0.0, 0.0, 0.0) if cp is None else (1, cp.cell, *cp.plane.normal, cp.plane.d)
     sn = m.sliding_normal
     snv = (0, 0.0, 0.0, 0.0) if sn is None else (1, *sn)
+    pl = m.placement
+    plv = (0, 0, 0) if pl is None else (1, pl.flags, 1 if pl.get_cell else 0)
     out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
-                           *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end)))
+                           *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end), *plv))
     return b"".join(out)
 
 
@@ -129,17 +131,35 @@ _I32 = struct.Struct("<i")
 
 
 def _static_cells(data, pos: int):
-    """int count (-1: none read), then per static: int n and the n cell ids of its PhysicsObj.ShadowObjects."""
+    """int count (-1: none read), then per static: int n and the n cell ids of its PhysicsObj.ShadowObjects.
+    Returns (the cells or None, the offset after them)."""
     (n,) = _I32.unpack_from(data, pos)
-    if n < 0:
-        return None
     pos += 4
+    if n < 0:
+        return None, pos
     cells = []
     for _ in range(n):
         (k,) = _I32.unpack_from(data, pos)
         cells.append(struct.unpack_from(f"<{k}I", data, pos + 4))
         pos += 4 + 4 * k
-    return tuple(cells)
+    return tuple(cells), pos
+
+
+_PLACED = struct.Struct("<iI3f4fIIi")
+
+
+def _placement(data, pos: int):
+    """byte 0 (none), or 1 then SetPositionError, Position.ObjCellID, origin, orientation (w x y z), CurCell id,
+    TransientState, int n and the n ShadowObjects cell ids (Facade.WritePlacement)."""
+    if data[pos] in (0, b"\0"):
+        return None
+    v = _PLACED.unpack_from(data, pos + 1)
+    shadows = struct.unpack_from(f"<{v[11]}I", data, pos + 1 + _PLACED.size)
+    return PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows))
+
+
+_NO_TRANSITION = struct.Struct("<B3fd")  # tag 2 (placed in no cell): the mover's velocity, FVP time 0
+_AFTER = struct.Struct("<diidd")  # the whole case, then the counters
 
 
 _RAW = struct.Struct("<38x22s22s13s13s")  # the same four records' bytes: exact (bitwise) cache keys
@@ -174,13 +194,21 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         msg = bytes(data[offset + 5:offset + 5 + n]).decode("utf-8", "replace")
         us, case_us, built, reused, build_us, trans_us = _TAIL.unpack_from(data, offset + 5 + n)
         return Outcome(error=msg), us, case_us, (built, reused, build_us, trans_us)
+    if tag == 2 or tag == b"\x02":
+        _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)
+        at = offset + _NO_TRANSITION.size
+        case_us, built, reused, build_us, trans_us = _AFTER.unpack_from(data, at)
+        cells, at = _static_cells(data, at + _AFTER.size)
+        return (Outcome(velocity=(vx, vy, vz), static_cells=cells, placement=_placement(data, at)),
+                us, case_us, (built, reused, build_us, trans_us))
     v = _OUT.unpack_from(data, offset)
     if v[0] != 1:
         raise ValueError(f"unknown outcome tag {v[0]}")
     kc, kl, kn, ks = _RAW.unpack_from(data, offset)  # keyed by bits: 0.0 and -0.0 stay apart
     cp = _cps(kc, *v[11:18])
     lk = cp if kl == kc else _cps(kl, *v[18:25])
+    cells, at = _static_cells(data, offset + _OUT.size)
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
                           bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None,
-                          _static_cells(data, offset + _OUT.size)),
+                          cells, _placement(data, at)),
             v[42], v[43], (v[44], v[45], v[46], v[47]))

@@ -45,3 +45,15 @@ WATER_DEPTH_DRY = f32_from_bits(0x3DCCCCCD)
 DEFAULT_SCALE = f32_from_bits(0x3F800000)
 # PhysicsObj.cs InitPartArrayObject: SetTranslucencyInternal(0.25f) for an ethereal anim object
 TRANSLUCENCY_ETHEREAL = f32_from_bits(0x3E800000)
+# Transition.cs FindPlacementPos: the spiral search's reach `adjustDist = 4.0f`, halved (`2.0f`) for a
+# sphere under `0.125f` (a "fake sphere"), whose radius is otherwise taken as at least `0.48f`
+PLACEMENT_ADJUST_DIST = f32_from_bits(0x40800000)
+PLACEMENT_FAKE_ADJUST_RAD = f32_from_bits(0x40000000)
+PLACEMENT_FAKE_SPHERE_RADIUS = f32_from_bits(0x3E000000)
+PLACEMENT_MIN_RADIUS = f32_from_bits(0x3EF5C28F)
+# PhysicsObj.cs CheckPositionInternal: a placement moved less than `0.05f` in x and in y is kept
+PLACEMENT_CLOSE = f32_from_bits(0x3D4CCCCD)
+# QuaternionExtensions.IsValid: `Math.Abs(length - 1.0f) > PhysicsGlobals.EPSILON * 5.0f`, folded in float32
+QUAT_VALID_SLACK = f32_from_bits(0x3A83126E)
+# PhysicsGlobals.DefaultElasticity = 0.05f (PhysicsObj() sets Elasticity to it)
+DEFAULT_ELASTICITY = f32_from_bits(0x3D4CCCCD)

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 from acconform.numerics import MONO, Matrix4x4, Mode, Quaternion, Runtime, Vector3, cast_float, cs_fmod, cs_math, wrap_u32
 from acconform.port.anchors import anchor, harness
-from acconform.port.constants import CELL_LENGTH, EPSILON
+from acconform.port.constants import CELL_LENGTH, EPSILON, QUAT_VALID_SLACK
 from acconform.port import land_defs
 from acconform.port.vec import normalize_check_small
 
@@ -62,6 +62,27 @@ class AFrame:
         fields are read but whose runtime is never asked (the first frame's runtime computes)."""
         q = frame.orientation
         return AFrame(frame.origin, q.runtime.quaternion(q.x, q.y, q.z, q.w))
+
+    @anchor(None, "AFrame.cs:IsValid")
+    def is_valid(self) -> bool:
+        """Origin.IsValid() && Orientation.IsValid() (Vector3Extensions / QuaternionExtensions):
+        no NaN, and a quaternion's Length within EPSILON * 5 of 1."""
+        if not self.is_valid_except_for_heading():
+            return False
+        q = self.orientation
+        if math.isnan(q.x) or math.isnan(q.y) or math.isnan(q.z) or math.isnan(q.w):
+            return False
+        length = q.length()
+        if math.isnan(length):
+            return False
+        if abs(length - type(length)(1.0)) > QUAT_VALID_SLACK:
+            return False
+        return True
+
+    @anchor(None, "AFrame.cs:IsValidExceptForHeading")
+    def is_valid_except_for_heading(self) -> bool:
+        o = self.origin
+        return not (math.isnan(o.x) or math.isnan(o.y) or math.isnan(o.z))
 
     @anchor(None, "AFrame.cs:AFrame(AFrame)", "the copy constructor")
     def copy(self) -> "AFrame":

@@ -16,11 +16,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from acconform.flags import ObjectInfoState, PhysicsState, TransientState, TransitionState
+from acconform.flags import ObjectInfoState, PhysicsState, SetPositionError, SetPositionFlags, TransientState, TransitionState
 from acconform.numerics import Plane, Vector3, dot
 
 from .anchors import anchor
-from .constants import DEFAULT_SCALE, DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z, TRANSLUCENCY_ETHEREAL
+from .constants import (DEFAULT_ELASTICITY, DEFAULT_SCALE, DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z, GRAVITY, PLACEMENT_CLOSE,
+                        TRANSLUCENCY_ETHEREAL)
 from .frame import AFrame, Position
 from . import land_defs
 from .cell import obj_cell
@@ -31,6 +32,8 @@ from .transition.transition import Transition
 
 # PhysicsGlobals.MaxVelocity = 50.0f
 MAX_VELOCITY = 50.0
+# PhysicsEngine.cs TransientStateFlags.StationaryComplete = StationaryStuck | StationaryStop | StationaryFall
+STATIONARY_COMPLETE = TransientState.StationaryStuck | TransientState.StationaryStop | TransientState.StationaryFall
 # PhysicsGlobals.DefaultState
 DEFAULT_STATE = PhysicsState.EdgeSlide | PhysicsState.LightingOn | PhysicsState.Gravity | PhysicsState.ReportCollisions
 
@@ -52,6 +55,8 @@ class DummyWeenie:
 
     is_player: bool = False
     is_creature: bool = False
+    is_storage: bool = False
+    is_corpse: bool = False
 
     @anchor(None, "WeenieObject.cs:IsImpenetrable", "DummyObject: no Player, so false")
     def is_impenetrable(self) -> bool:
@@ -91,6 +96,13 @@ class PhysicsObj:
     children: list = field(default_factory=list)  # ChildList.Objects (always empty here)
     translucency: object = 0.0
     translucency_original: object = 0.0
+    acceleration: Vector3 | None = None
+    omega: Vector3 | None = None
+    cur_landblock: object = None  # port.land.landblock.Landblock
+    colliding_with_environment: bool = False
+    collision_table: dict | None = None  # object id -> CollisionRecord's Ethereal (TouchedTime: see report_collision_end)
+    entering_world: bool = False
+    elasticity: object = DEFAULT_ELASTICITY
 
     @property
     def is_player(self) -> bool:
@@ -140,7 +152,8 @@ class PhysicsObj:
         zero = mode.vec(0, 0, 0)
         return PhysicsObj(id=0, state=int(DEFAULT_STATE), position=Position(0, AFrame.identity(mode)),
                           velocity=zero, contact_plane=Plane(zero, mode.scalar(0.0)), sliding_normal=zero,
-                          scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray())
+                          scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray(), acceleration=zero, omega=zero,
+                          elasticity=mode.scalar(DEFAULT_ELASTICITY))
 
     @staticmethod
     @anchor("CPhysicsObj::makeObject", "PhysicsObj.cs:makeObject(uint, uint, bool, bool)")
@@ -266,6 +279,371 @@ class PhysicsObj:
         position.adjust_to_outside()
         return obj_cell.get_visible(lscape, position.obj_cell_id)
 
+    @anchor("CPhysicsObj::SetPositionInternal", "PhysicsObj.cs:SetPositionInternal(Position, SetPosition, Transition)")
+    def set_position_internal_pos(self, pos, set_pos_flags: int, transition: Transition, lscape) -> int:
+        """Returns the SetPositionError. `set_pos_flags` is the SetPosition's Flags (its Pos is
+        `pos`); the run's world `lscape` stands in for ACE's static LScape."""
+        if self.cur_cell is None:
+            self.prepare_to_enter_world()
+
+        new_cell = self.adjust_position(pos, transition.sphere_path.local_sphere[0].center,
+                                        bool(set_pos_flags & SetPositionFlags.DontCreateCells), True, lscape)
+
+        if new_cell is None:
+            transition._hit("set_position:no_cell_stored")
+            self.prepare_to_leave_visibility()
+            self.store_position(pos, lscape)
+            # ObjMaint.GotoLostCell(this, Position.ObjCellID) (ACE: commented out)
+            self.set_active(False)
+            return SetPositionError.OK
+
+        if self.weenie_obj is not None and (self.weenie_obj.is_storage or self.weenie_obj.is_corpse):
+            raise NotImplementedError("storage and corpses (ForceIntoCell) are not ported")
+
+        if not self.check_position_internal(new_cell, pos, transition, set_pos_flags):
+            collided = self.handle_all_collisions(transition.collision_info, False, False)
+            transition._hit("set_position:collided" if collided else "set_position:no_valid_position")
+            return SetPositionError.Collided if collided else SetPositionError.NoValidPosition
+
+        if transition.sphere_path.cur_cell is None:
+            return SetPositionError.NoCell
+
+        # custom (ACE): a non-ethereal spell projectile's collision on world entry; the mover has no
+        # WorldObject (WeenieObject.DummyObject), so `WeenieObj.WorldObject is SpellProjectile` is false
+
+        if self.entering_world and transition.sphere_path.cur_pos.landblock != pos.landblock:
+            return SetPositionError.NoValidPosition
+
+        if not self.set_position_internal(transition):
+            return SetPositionError.GeneralFailure
+
+        transition._hit("set_position:placed")
+        return SetPositionError.OK
+
+    @anchor("CPhysicsObj::CheckPositionInternal", "PhysicsObj.cs:CheckPositionInternal")
+    def check_position_internal(self, new_cell, new_pos, transition: Transition, set_pos_flags: int) -> bool:
+        transition.init_path(new_cell, None, new_pos)
+
+        if not set_pos_flags & SetPositionFlags.Slide:
+            transition.sphere_path.placement_allows_sliding = False
+
+        if not transition.find_valid_position():
+            return False
+
+        if set_pos_flags & SetPositionFlags.Slide:
+            return True
+
+        diff = transition.sphere_path.cur_pos.frame.origin - new_pos.frame.origin
+
+        # should be using Math.Abs(), bug in original? (ACE): a move of any length toward -x and -y is kept
+        if transition.sphere_path.cur_pos.obj_cell_id == new_cell.id and diff.x < PLACEMENT_CLOSE and diff.y < PLACEMENT_CLOSE:
+            if -diff.x < PLACEMENT_CLOSE and -diff.y < PLACEMENT_CLOSE:
+                transition._hit("check_position:kept_close")
+            else:
+                transition._hit("check_position:kept_far_negative")
+            new_pos.frame.origin = transition.sphere_path.cur_pos.frame.origin
+            return True
+        transition._hit("check_position:moved_too_far")
+        return False
+
+    @anchor("CPhysicsObj::SetPositionInternal", "PhysicsObj.cs:SetPositionInternal(Transition)")
+    def set_position_internal(self, transition: Transition) -> bool:
+        prev_on_walkable = (self.transient_state & TransientState.OnWalkable) != 0
+        transit_cell = transition.sphere_path.cur_cell
+        prev_contact = (self.transient_state & TransientState.Contact) != 0
+        cur_pos = transition.sphere_path.cur_pos
+
+        if transit_cell is None:
+            self.prepare_to_leave_visibility()
+            self.store_position(cur_pos, transition.lscape)
+            self.set_active(False)
+            return True
+
+        # modified: maintain consistency for Position.Frame in change_cell (ACE)
+        self.set_frame(cur_pos.frame, transition.lscape)
+
+        if transit_cell.equals(self.cur_cell):
+            self.position.obj_cell_id = cur_pos.obj_cell_id
+            if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+                self.part_array.set_cell_id(cur_pos.obj_cell_id)
+            for child in self.children:
+                raise NotImplementedError("child objects are not ported")
+        else:
+            self.change_cell(transit_cell, transition.lscape)
+
+        collisions = transition.collision_info
+
+        self.contact_plane_cell_id = collisions.contact_plane_cell_id
+        self.contact_plane = collisions.contact_plane
+
+        if collisions.contact_plane_valid:
+            self.transient_state |= TransientState.Contact
+        else:
+            self.transient_state &= ~TransientState.Contact
+
+        self.calc_acceleration()
+
+        if collisions.contact_plane_is_water:
+            self.transient_state |= TransientState.WaterContact
+        else:
+            self.transient_state &= ~TransientState.WaterContact
+
+        if self.transient_state & TransientState.Contact:
+            if self.contact_plane.normal.z < FLOOR_Z:
+                self.set_on_walkable(False)
+            else:
+                self.set_on_walkable(True)
+        else:
+            self.transient_state &= ~TransientState.OnWalkable
+            # MovementManager.LeaveGround(): the mover has no MovementManager
+            self.calc_acceleration()
+
+        self.sliding_normal = collisions.sliding_normal
+
+        if collisions.sliding_normal_valid:
+            self.transient_state |= TransientState.Sliding
+        else:
+            self.transient_state &= ~TransientState.Sliding
+
+        self.handle_all_collisions(collisions, prev_contact, prev_on_walkable)
+
+        if self.cur_cell is not None:
+            if self.state & PhysicsState.HasPhysicsBSP:
+                self.calc_cross_cells(transition.lscape)
+                return True
+
+            if len(transition.cell_array.cells) > 0:
+                self.remove_shadows_from_cells()
+                self.add_shadows_to_cell(transition.cell_array)
+                return True
+        return True
+
+    @anchor("CPhysicsObj::prepare_to_enter_world", "PhysicsObj.cs:prepare_to_enter_world")
+    def prepare_to_enter_world(self) -> None:
+        """UpdateTime (PhysicsTimer.CurrentTime) and ObjMaint's destruction queue are not kept:
+        nothing in a placement or a transition reads them."""
+        for child in self.children:
+            raise NotImplementedError("child objects are not ported")
+
+        if not self.state & PhysicsState.Static:
+            self.transient_state |= TransientState.Active
+
+    @anchor("CPhysicsObj::prepare_to_leave_visibility", "PhysicsObj.cs:prepare_to_leave_visibility")
+    def prepare_to_leave_visibility(self) -> bool:
+        """ObjMaint.AddObjectToBeDestroyed (a queue nothing here reads) is not kept."""
+        self.remove_shadows_from_cells()
+        self.leave_cell(False)
+        return False
+
+    @anchor("CPhysicsObj::leave_cell", "PhysicsObj.cs:leave_cell")
+    def leave_cell(self, is_changing_cell: bool) -> None:
+        if self.cur_cell is None:
+            return
+        raise NotImplementedError("leaving a cell (ObjCell.RemoveObject) is not ported: a scene places its mover once")
+
+    @anchor("CPhysicsObj::store_position", "PhysicsObj.cs:store_position")
+    def store_position(self, pos, lscape) -> None:
+        # position ref? (ACE)
+        if (pos.obj_cell_id & 0xFFFF) < 0x100:
+            land_defs.adjust_to_outside_pos(pos)
+
+        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+            self.part_array.set_cell_id(pos.obj_cell_id)
+
+        self.set_cell_id(pos.obj_cell_id)
+        self.set_frame(pos.frame, lscape)
+
+    @anchor("CPhysicsObj::set_cell_id", "PhysicsObj.cs:set_cell_id")
+    def set_cell_id(self, new_cell_id: int) -> None:
+        self.position.obj_cell_id = new_cell_id
+        if not self.state & PhysicsState.ParticleEmitter and self.part_array is not None:
+            self.part_array.set_cell_id(new_cell_id)
+
+    @anchor("CPhysicsObj::set_active", "PhysicsObj.cs:set_active")
+    def set_active(self, active: bool) -> bool:
+        """UpdateTime is not kept (see prepare_to_enter_world)."""
+        if active:
+            if self.state & PhysicsState.Static:
+                return False
+            self.transient_state |= TransientState.Active
+            return True
+        else:
+            self.transient_state &= ~TransientState.Active
+            return True
+
+    @anchor("CPhysicsObj::change_cell", "PhysicsObj.cs:change_cell")
+    def change_cell(self, new_cell, lscape) -> None:
+        if lscape.portal_dat.server:
+            raise NotImplementedError("change_cell_server (the server's ObjectMaint visibility) is not ported; "
+                                      "a scene's placement runs in client mode")
+
+        if self.cur_cell is not None:
+            self.leave_cell(True)
+        if new_cell is None:
+            self.position.obj_cell_id = 0
+            if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+                self.part_array.set_cell_id(0)
+            self.cur_cell = None
+        else:
+            self.enter_cell(new_cell, lscape)
+
+    @anchor("CPhysicsObj::set_frame", "PhysicsObj.cs:set_frame")
+    def set_frame(self, frame: AFrame, lscape) -> None:
+        """Writes the frame's orientation in place when ACE does (a frame valid except for its
+        heading gets the zero quaternion). The run's `lscape` says PhysicsEngine.Instance.Server."""
+        if not frame.is_valid() and frame.is_valid_except_for_heading():
+            z = type(frame.orientation.w)(0.0)
+            frame.orientation = frame.orientation.runtime.quaternion(z, z, z, z)
+
+        self.position.frame = frame.copy()
+
+        # custom for server: only update part frames for objects with physics bsp (ACE)
+        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter and (
+                self.state & PhysicsState.HasPhysicsBSP or not lscape.portal_dat.server):
+            self.part_array.set_frame(frame)
+
+        self.update_children_internal()
+
+    @anchor("CPhysicsObj::calc_acceleration", "PhysicsObj.cs:calc_acceleration")
+    def calc_acceleration(self) -> None:
+        z = type(self.velocity.x)(0.0)
+        zero = Vector3(z, z, z)
+        if self.transient_state & TransientState.Contact and self.transient_state & TransientState.OnWalkable:
+            self.omega = self.acceleration = zero
+        else:
+            if self.state & PhysicsState.Gravity:
+                self.acceleration = Vector3(zero.x, zero.y, type(zero.x)(GRAVITY))
+            else:
+                self.acceleration = zero
+
+    @anchor("CPhysicsObj::set_on_walkable", "PhysicsObj.cs:set_on_walkable")
+    def set_on_walkable(self, is_on_walkable: bool) -> None:
+        """The mover has no MovementManager (HitGround / LeaveGround)."""
+        if is_on_walkable:
+            self.transient_state |= TransientState.OnWalkable
+        else:
+            self.transient_state &= ~TransientState.OnWalkable
+        self.calc_acceleration()
+
+    @anchor("CPhysicsObj::handle_all_collisions", "PhysicsObj.cs:handle_all_collisions")
+    def handle_all_collisions(self, collisions, prev_has_contact: bool, prev_on_walkable: bool) -> bool:
+        apply_bounce = True
+        if prev_on_walkable and self.transient_state & TransientState.OnWalkable and not self.state & PhysicsState.Sledding:
+            apply_bounce = False
+
+        retval = False
+        for collide_object in collisions.collide_object:
+            if collide_object is not None and self.track_object_collision(collide_object, prev_has_contact):
+                retval = True
+
+        self.report_collision_end(False)
+
+        if self.colliding_with_environment:
+            self.colliding_with_environment = collisions.collided_with_environment
+        elif collisions.collided_with_environment or (not prev_on_walkable and self.transient_state & TransientState.OnWalkable):
+            if self.report_environment_collision(prev_has_contact):
+                retval = True
+
+        if collisions.frames_stationary_fall <= 1:
+            if apply_bounce and collisions.collision_normal_valid:
+                if self.state & PhysicsState.Inelastic:
+                    z = type(self.velocity.x)(0.0)
+                    self.velocity = Vector3(z, z, z)
+
+                    # custom for spell projectiles: explode on server (ACE)
+                    self.report_environment_collision(prev_has_contact)
+                else:
+                    collision_angle = dot(self.velocity, collisions.collision_normal)
+                    if collision_angle < 0.0:
+                        elastic_angle = -(collision_angle * (self.elasticity + type(collision_angle)(1.0)))
+                        self.velocity = self.velocity + collisions.collision_normal * elastic_angle
+        else:
+            z = type(self.velocity.x)(0.0)
+            self.velocity = Vector3(z, z, z)
+            if collisions.frames_stationary_fall == 3:
+                self.transient_state &= ~STATIONARY_COMPLETE
+                return retval
+
+        if collisions.frames_stationary_fall == 0:
+            self.transient_state &= ~STATIONARY_COMPLETE
+        elif collisions.frames_stationary_fall == 1:
+            self.transient_state |= TransientState.StationaryFall
+        elif collisions.frames_stationary_fall == 2:
+            self.transient_state |= TransientState.StationaryStop
+        else:
+            self.transient_state |= TransientState.StationaryStuck
+
+        return retval
+
+    @anchor("CPhysicsObj::track_object_collision", "PhysicsObj.cs:track_object_collision")
+    def track_object_collision(self, obj, prev_has_contact: bool) -> bool:
+        if obj.state & PhysicsState.Static:
+            return self.report_environment_collision(prev_has_contact)
+
+        if self.collision_table is None:
+            self.collision_table = {}
+
+        self.collision_table[obj.id] = bool(obj.state & PhysicsState.Ethereal)
+
+        return self.report_object_collision(obj, prev_has_contact)
+
+    @anchor("CPhysicsObj::report_collision_end", "PhysicsObj.cs:report_collision_end")
+    def report_collision_end(self, force_end: bool) -> None:
+        """PhysicsTimer.CurrentTime is Timers.PortalYearTicks, which nothing advances outside a
+        running server: every record's deltaTime is 0, so only `force_end` ends one; ending it calls
+        WeenieObject.DoCollisionEnd, which returns at once for DummyObject (no WorldObject)."""
+        if self.collision_table is None:
+            return
+        ends = [collision_id for collision_id, ethereal in self.collision_table.items() if force_end]
+        for end in ends:
+            del self.collision_table[end]
+
+    @anchor("CPhysicsObj::report_environment_collision", "PhysicsObj.cs:report_environment_collision")
+    def report_environment_collision(self, prev_has_contact: bool) -> bool:
+        """WeenieObj.DoCollision(EnvCollisionProfile) returns at once for DummyObject (no WorldObject)."""
+        if self.colliding_with_environment:
+            return False
+
+        result = False
+        if self.state & PhysicsState.ReportCollisions and self.weenie_obj is not None:
+            result = True
+        self.colliding_with_environment = True
+        if self.state & PhysicsState.Missile:
+            self.state &= ~PhysicsState.Missile
+        return result
+
+    @anchor("CPhysicsObj::report_object_collision", "PhysicsObj.cs:report_object_collision")
+    def report_object_collision(self, obj, prev_has_contact: bool) -> bool:
+        """The collision profiles and WeenieObj.DoCollision return at once for DummyObject."""
+        if obj.state & PhysicsState.ReportCollisionsAsEnvironment:
+            return self.report_environment_collision(prev_has_contact)
+
+        collided = False
+
+        if not obj.state & PhysicsState.IgnoreCollisions:
+            if self.state & PhysicsState.ReportCollisions and self.weenie_obj is not None:
+                collided = True
+
+            if self.state & PhysicsState.Missile:
+                self.state &= ~(PhysicsState.Missile | PhysicsState.AlignPath | PhysicsState.PathClipped)
+
+        if obj.state & PhysicsState.ReportCollisions and not self.state & PhysicsState.IgnoreCollisions and obj.weenie_obj is not None:
+            collided = True
+
+        return collided
+
+    @anchor("CPhysicsObj::calc_cross_cells", "PhysicsObj.cs:calc_cross_cells")
+    def calc_cross_cells(self, lscape) -> None:
+        self.cell_array.set_dynamic()
+
+        if self.state & PhysicsState.HasPhysicsBSP:
+            self.find_bbox_cell_list(self.cell_array, lscape)
+        else:
+            raise NotImplementedError("calc_cross_cells without a physics BSP is not reached (SetPositionInternal "
+                                      "calls it only with HasPhysicsBSP)")
+        self.remove_shadows_from_cells()
+        self.add_shadows_to_cell(self.cell_array)
+
     @anchor("CPhysicsObj::add_obj_to_cell", "PhysicsObj.cs:add_obj_to_cell")
     def add_obj_to_cell(self, new_cell, new_frame, lscape) -> None:
         """The run's world `lscape` stands in for ACE's static LScape."""
@@ -292,7 +670,9 @@ class PhysicsObj:
             self.part_array.set_cell_id(new_cell.id)
 
         if not self.dat_object and new_cell is not None:
-            raise NotImplementedError("a non-DAT object's landblock server list (Landblock.add_server_object) is not ported")
+            self.cur_landblock = lscape.get_landblock(new_cell.id)
+            if self.cur_landblock is not None:
+                self.cur_landblock.add_server_object(self)
 
     @anchor("CPhysicsObj::UpdateChildrenInternal", "PhysicsObj.cs:UpdateChildrenInternal")
     def update_children_internal(self) -> None:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from acconform.numerics import Plane, get_mode
-from acconform.outcome import ContactPlaneState, NormalState, Outcome
+from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState
 from acconform import dat
 from acconform.dat import cell_dat_records, environment_records, static_records
 from acconform.staging import MOVER_ID
@@ -35,6 +35,9 @@ from .frame import AFrame, Position
 from . import land_defs
 from .land.lscape import LScape
 from .physics_obj import PhysicsObj
+from .constants import DUMMY_SPHERE_RADIUS
+from .geom.sphere import Sphere
+from .transition.transition import Transition
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 from .transition.branches import Trace
 
@@ -55,7 +58,8 @@ def build_mover(scene: Scene, portal_dat: PortalDat, lscape: LScape) -> PhysicsO
     MOVER_ID, dynamic)`` over dat.mover_records (its spheres and step heights, one empty mesh
     part), then SetScaleStatic(scale), State, TransientState, Velocity, the contact plane (and its
     cell) and the sliding normal as the scene gives them, Position = begin, CurCell = the begin
-    cell. It is not entered in any cell."""
+    cell. It is not entered in any cell. With a placement, Position and CurCell stay as makeObject
+    left them: `place_mover` places it."""
     mode = lscape.mode
     m = scene.mover
     s = mode.scalar
@@ -69,9 +73,46 @@ def build_mover(scene: Scene, portal_dat: PortalDat, lscape: LScape) -> PhysicsO
         obj.contact_plane_cell_id = m.contact_plane.cell
     if m.sliding_normal is not None:
         obj.sliding_normal = mode.vec(*m.sliding_normal)
-    obj.position = Position.from_record(m.begin, mode)
-    obj.cur_cell = lscape.get_landcell(m.begin.cell)
+    if m.placement is None:
+        obj.position = Position.from_record(m.begin, mode)
+        obj.cur_cell = lscape.get_landcell(m.begin.cell)
     return obj
+
+
+@harness("places the mover as the oracle's facade does: PhysicsObj.SetPosition's body around SetPositionInternal(Position, SetPosition, Transition)")
+def place_mover(scene: Scene, mover: PhysicsObj, lscape: LScape, trace) -> PlacementState:
+    """The begin position (its cell id first replaced by Position.GetCell when the placement asks),
+    then what PhysicsObj.SetPosition does: MakeTransition, InitObject(this, ObjectInfoState.Default),
+    InitSphere (the Setup's spheres at Scale, or the dummy sphere at 1), SetPositionInternal(pos,
+    setPos, transition), CleanupTransition. SetPosition itself goes through SetPositionInternal(
+    SetPosition, Transition), which answers GeneralFailure for an object without a WorldObject; for
+    one without a ScatterPos it makes exactly the call made here (docs/oracle.md's audit table)."""
+    mode = lscape.mode
+    placement = scene.mover.placement
+    pos = Position.from_record(scene.mover.begin, mode)
+    if placement.get_cell:
+        pos.obj_cell_id = pos.get_cell(pos.obj_cell_id, mode.runtime, lscape)
+
+    transition = Transition(mode, lscape, trace)
+    transition.init_object(mover, 0)  # ObjectInfoState.Default
+    if mover.part_array is not None and mover.part_array.get_num_sphere() != 0:
+        transition.init_sphere(mover.part_array.get_num_sphere(), mover.part_array.get_sphere(), mover.scale)
+    else:
+        dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
+        transition.init_sphere(1, [dummy], mode.scalar(1.0))
+    result = mover.set_position_internal_pos(pos, placement.flags, transition, lscape)
+    transition.cleanup_transition()
+
+    q = mover.position.frame.orientation
+    return PlacementState(
+        result=int(result),
+        cell=int(mover.position.obj_cell_id),
+        origin=_vec(mover.position.frame.origin),
+        orientation=(float(q.w), float(q.x), float(q.y), float(q.z)),
+        cur_cell=mover.cur_cell.id if mover.cur_cell is not None else 0,
+        transient_state=int(mover.transient_state),
+        shadow_cells=tuple(mover.shadow_objects),
+    )
 
 
 @harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects, mover and Environments, and each static's did")
@@ -184,6 +225,13 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
     statics = [build_static(record, did, portal_dat, lscape) if record.position.cell & 0xFFFF < ENV_CELL_FIRST else None
                for record, did in zip(scene.objects, dids)]
     mover = build_mover(scene, portal_dat, lscape)
+    placement = None
+    if scene.mover.placement is not None:
+        placement = place_mover(scene, mover, lscape, trace)
+        if mover.cur_cell is None:  # placed in no cell: no transition (the oracle writes the same record)
+            return Outcome(velocity=_vec(mover.velocity), placement=placement,
+                           static_cells=tuple(static_cells(record, did, obj, lscape)
+                                              for record, did, obj in zip(scene.objects, dids, statics)))
     old_pos = mover.position.copy()
     new_pos = Position.from_record(scene.mover.end, mode)
     trans, ok = mover.transition(old_pos, new_pos, False, lscape, trace)
@@ -214,4 +262,5 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
         neg_poly_hit=bool(sp.neg_poly_hit),
         static_cells=tuple(static_cells(record, did, obj, lscape)
                            for record, did, obj in zip(scene.objects, dids, statics)),
+        placement=placement,
     )

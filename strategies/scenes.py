@@ -24,6 +24,7 @@ from . import dungeon as dg
 from . import objects as ob
 from . import shapes as sh
 from . import terrain as tr
+from .set_position import with_placement
 
 BLOCK = 192.0
 CELL = 24.0
@@ -174,7 +175,7 @@ OBJECT_ANGLES = st.sampled_from((0, 0, 90, 45, 10, -30))
 
 @st.composite
 def scenes_of(draw, kind: str):
-    return draw_scene(draw, kind)
+    return with_placement(draw, draw_scene(draw, kind))
 
 
 def draw_scene(draw, kind: str) -> Scene:

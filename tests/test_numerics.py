@@ -105,6 +105,13 @@ def test_fast_mode_vectors_compute_in_double():
         ("WATER_DEPTH_PARTIAL_WATER", k.WATER_DEPTH_PARTIAL_WATER, 0x3EE66666),
         ("WATER_DEPTH_ENTIRELY_WATER", k.WATER_DEPTH_ENTIRELY_WATER, 0x3F666666),
         ("WATER_DEPTH_DRY", k.WATER_DEPTH_DRY, 0x3DCCCCCD),
+        ("PLACEMENT_ADJUST_DIST", k.PLACEMENT_ADJUST_DIST, 0x40800000),
+        ("PLACEMENT_FAKE_ADJUST_RAD", k.PLACEMENT_FAKE_ADJUST_RAD, 0x40000000),
+        ("PLACEMENT_FAKE_SPHERE_RADIUS", k.PLACEMENT_FAKE_SPHERE_RADIUS, 0x3E000000),
+        ("PLACEMENT_MIN_RADIUS", k.PLACEMENT_MIN_RADIUS, 0x3EF5C28F),
+        ("PLACEMENT_CLOSE", k.PLACEMENT_CLOSE, 0x3D4CCCCD),
+        ("QUAT_VALID_SLACK", k.QUAT_VALID_SLACK, 0x3A83126E),
+        ("DEFAULT_ELASTICITY", k.DEFAULT_ELASTICITY, 0x3D4CCCCD),
     ],
 )
 def test_constants_are_pinned_by_their_float32_bit_patterns(name, value, bits):
@@ -121,6 +128,9 @@ def test_constants_match_the_csharp_literals_they_come_from():
     assert f32_bits(-0.1) == f32_bits(k.STEP_INTERP_LIMIT)
     assert f32_bits(0.44999999) == f32_bits(k.WATER_DEPTH_PARTIAL_WATER)
     assert f32_bits(0.89999998) == f32_bits(k.WATER_DEPTH_ENTIRELY_WATER)
+    assert f32_bits(0.48) == f32_bits(k.PLACEMENT_MIN_RADIUS)
+    assert f32_bits(0.05) == f32_bits(k.PLACEMENT_CLOSE)
+    assert f32_bits(np.float32(0.0002) * np.float32(5.0)) == f32_bits(k.QUAT_VALID_SLACK)
 
 
 def test_math_floor_and_ceiling_pass_infinities_and_nan_through_as_csharp_does():

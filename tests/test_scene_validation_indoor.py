@@ -8,7 +8,7 @@ import pytest
 
 from acconform.case import parse_document
 from acconform.errors import InvalidScene
-from acconform.scene import FORMAT, Landblock, Scene, validate_scene
+from acconform.scene import FORMAT_V2, Landblock, Scene, validate_scene
 from oracle.indoor_scenes import SCENES, two_rooms, room_with_static
 
 from test_scene_validation import EXAMPLE
@@ -37,7 +37,7 @@ def struct(d, k=1):
 def test_indoor_scenes_round_trip_through_json(name):
     scene = SCENES[name]
     doc = json.loads(scene.dumps())
-    assert doc["format"] == FORMAT == "acconform.scene/2" and "heights" not in doc["landblocks"][0]
+    assert doc["format"] == FORMAT_V2 == "acconform.scene/2" and "heights" not in doc["landblocks"][0]
     assert Scene.from_json(doc) == scene and validate_scene(scene) == scene
 
 

@@ -36,7 +36,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 5;
+        public const int PackVersion = 6;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -57,6 +57,18 @@ namespace Acconform.Oracle
         static readonly List<PhysicsObj> staticObjs = new List<PhysicsObj>();
         // for each static, in scene order: the ids of PhysicsObj.ShadowObjects (null until read after the transition)
         static List<List<uint>> staticCells;
+
+        // the scene's placement (mover.placement): its SetPositionFlags and whether Position.GetCell runs first
+        static bool hasPlacement, placementGetCell;
+        static int placementFlags;
+        // the mover once ACE's placement ran (it leaves its cells after the scene), and what the placement left
+        static PhysicsObj placedMover;
+        static bool placed;
+        static int placedResult;
+        static uint placedCell, placedCurCell, placedTransient;
+        static Vector3 placedOrigin;
+        static Quaternion placedOrientation;
+        static readonly List<uint> placedShadowCells = new List<uint>();
 
         static readonly List<Tuple<int, int>> tableUsed = new List<Tuple<int, int>>();
         static bool tableCleared;
@@ -216,12 +228,25 @@ namespace Acconform.Oracle
             landblocksBuilt = landblocksReused = 0;
             buildMicros = transitionMicros = 0;
             staticCells = null;
+            placed = false;
             var total = Stopwatch.StartNew();
             try
             {
                 var mover = BuildScene(r);
-                var ok = RunTransition(mover.Item1, mover.Item2, mover.Item3, out var trans, out fvpMicros);
-                WriteOutcome(w, ok, trans, mover.Item1, fvpMicros);
+                var obj = mover.Item1;
+                var oldPos = mover.Item2;
+                if (hasPlacement)
+                {
+                    Place(obj, mover.Item2);
+                    oldPos = new ACE.Server.Physics.Common.Position(obj.Position);
+                }
+                if (!hasPlacement || obj.CurCell != null)
+                {
+                    var ok = RunTransition(obj, oldPos, mover.Item3, out var trans, out fvpMicros);
+                    WriteOutcome(w, ok, trans, obj, fvpMicros);
+                }
+                else
+                    WriteNoTransition(w, obj);
                 staticCells = ReadStaticCells();
                 RemoveStatics();
                 w.Write(total.Elapsed.TotalMilliseconds * 1000.0);
@@ -230,6 +255,7 @@ namespace Acconform.Oracle
             {
                 while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
                 staticCells = null;  // an error outcome carries no registration
+                placed = false;  // nor a placement
                 outcome.Position = start;
                 outcome.SetLength(start);
                 w.Write((byte)0xEE);
@@ -246,6 +272,65 @@ namespace Acconform.Oracle
             w.Write(buildMicros);
             w.Write(transitionMicros);
             WriteStaticCells(w, staticCells);
+            WritePlacement(w);
+        }
+
+        /// <summary>byte 0 (no placement), or 1 then SetPositionError, Position.ObjCellID, its frame (origin, then
+        /// w x y z), CurCell id (0: none), TransientState, int n and the n ids of ShadowObjects.</summary>
+        static void WritePlacement(BinaryWriter w)
+        {
+            if (!placed) { w.Write((byte)0); return; }
+            w.Write((byte)1);
+            w.Write(placedResult);
+            w.Write(placedCell);
+            W3(w, placedOrigin);
+            w.Write(placedOrientation.W); w.Write(placedOrientation.X); w.Write(placedOrientation.Y); w.Write(placedOrientation.Z);
+            w.Write(placedCurCell);
+            w.Write(placedTransient);
+            w.Write(placedShadowCells.Count);
+            foreach (var id in placedShadowCells) w.Write(id);
+        }
+
+        /// <summary>The mover placed by ACE: the begin position (its cell id first replaced by ACE's Position.GetCell
+        /// when the scene asks), then PhysicsObj.SetPosition's body -- MakeTransition, InitObject(obj,
+        /// ObjectInfoState.Default), InitSphere as SetPosition does, CleanupTransition -- around ACE's
+        /// SetPositionInternal(Position, SetPosition, Transition): the call SetPositionInternal(SetPosition, Transition)
+        /// makes for an object whose WorldObject has no ScatterPos. (SetPosition itself answers GeneralFailure for a
+        /// PhysicsObj without a WorldObject, and the mover's WeenieObj is WeenieObject.DummyObject.)</summary>
+        static void Place(PhysicsObj obj, ACE.Server.Physics.Common.Position begin)
+        {
+            var pos = new ACE.Server.Physics.Common.Position(begin);
+            if (placementGetCell)
+                pos.ObjCellID = pos.GetCell(pos.ObjCellID);
+            var setPos = new SetPosition(pos, (SetPositionFlags)placementFlags);
+            var transition = Transition.MakeTransition();
+            transition.InitObject(obj, ObjectInfoState.Default);
+            if (obj.PartArray != null && obj.PartArray.GetNumSphere() != 0)
+                transition.InitSphere(obj.PartArray.GetNumSphere(), obj.PartArray.GetSphere(), obj.Scale);
+            else
+                transition.InitSphere(1, PhysicsGlobals.DummySphere, 1.0f);
+            placedMover = obj;
+            var result = obj.SetPositionInternal(pos, setPos, transition);
+            transition.CleanupTransition();
+
+            placed = true;
+            placedResult = (int)result;
+            placedCell = obj.Position.ObjCellID;
+            placedOrigin = obj.Position.Frame.Origin;
+            placedOrientation = obj.Position.Frame.Orientation;
+            placedCurCell = obj.CurCell != null ? obj.CurCell.ID : 0u;
+            placedTransient = (uint)obj.TransientState;
+            placedShadowCells.Clear();
+            placedShadowCells.AddRange(obj.ShadowObjects.Keys);
+        }
+
+        /// <summary>Tag 2: the placement left the mover in no cell, so no transition runs: the mover's velocity
+        /// (the rest of the outcome is the record's defaults on both sides), then the FindValidPosition time (0).</summary>
+        static void WriteNoTransition(BinaryWriter w, PhysicsObj obj)
+        {
+            w.Write((byte)2);
+            W3(w, obj.Velocity);
+            w.Write(0.0);
         }
 
         /// <summary>int count (-1: not read, e.g. an error outcome), then per static: int n, n cell ids.</summary>
@@ -296,9 +381,17 @@ namespace Acconform.Oracle
 
         static void RemoveStatics()
         {
-            // leave cached landblocks as they were built: this scene's statics leave their cells again, and the
-            // EnvCells ACE loaded into them (Landblock.LandCells, keyed by the cell's low word) go, with the
-            // statics they placed; the next scene's cell DAT loads its own
+            // leave cached landblocks as they were built: a placed mover and this scene's statics leave their cells
+            // again (ObjectList, ShadowObjectList, the landblock's ServerObjects), and the EnvCells ACE loaded into
+            // them (Landblock.LandCells, keyed by the cell's low word) go, with the statics they placed; the next
+            // scene's cell DAT loads its own
+            if (placedMover != null)
+            {
+                var mover = placedMover;
+                placedMover = null;
+                mover.remove_shadows_from_cells();
+                mover.leave_cell(false);
+            }
             foreach (var obj in sceneStatics)
             {
                 obj.remove_shadows_from_cells();
@@ -657,6 +750,9 @@ namespace Acconform.Oracle
             var sliding = V3(r);
             var begin = Pos(r);
             var end = Pos(r);
+            hasPlacement = r.ReadByte() != 0;
+            placementFlags = r.ReadInt32();
+            placementGetCell = r.ReadByte() != 0;
 
             // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a dynamic object
             var obj = PhysicsObj.makeObject(did, moverId, true);
@@ -670,8 +766,12 @@ namespace Acconform.Oracle
                 obj.ContactPlaneCellID = cpCell;
             }
             if (hasSliding) obj.SlidingNormal = sliding;
-            obj.Position = new ACE.Server.Physics.Common.Position(begin);
-            obj.CurCell = LScape.get_landcell(begin.ObjCellID);
+            if (!hasPlacement)
+            {
+                obj.Position = new ACE.Server.Physics.Common.Position(begin);
+                obj.CurCell = LScape.get_landcell(begin.ObjCellID);
+            }
+            // with a placement, Position and CurCell stay as makeObject left them: Place places the mover
             return Tuple.Create(obj, new ACE.Server.Physics.Common.Position(begin), end);
         }
 

@@ -37,6 +37,7 @@ class Landblock(LandblockStruct):
         self.dir = Direction.Unknown
         self.closest = (-1.0, -1.0)
         self.static_objects: list = []
+        self.server_objects: list = []  # ServerObjects: the non-DAT objects in its cells (Landblock.add_server_object)
         self.buildings: list = []
 
         self.id = record.id
@@ -44,6 +45,13 @@ class Landblock(LandblockStruct):
         self.info = None
         self.block_coord = land_defs.value_of(land_defs.blockid_to_lcoord(record.id), "Landblock(CellLandblock)")
         self.get_land_limits()
+
+    @anchor(None, "Landblock.cs:add_server_object")
+    def add_server_object(self, obj) -> bool:
+        if obj not in self.server_objects:
+            self.server_objects.append(obj)
+            return True
+        return False
 
     @anchor("CLandBlock::get_land_limits", "Landblock.cs:get_land_limits")
     def get_land_limits(self) -> None:

@@ -38,8 +38,9 @@ class LandblockPool:
 
     A landblock is in the pool only while no LScape holds it: `checkout` takes it out (or
     builds one), `release` puts it back. What a run may change in a landblock is the ObjCell
-    state of its cells (objects and shadow objects registered in them); checkout resets
-    those (LandCell.reset_for_pool), so a pooled landblock reads as a new one.
+    state of its cells (objects and shadow objects registered in them) and its ServerObjects
+    (a placed mover); checkout resets those (LandCell.reset_for_pool), so a pooled landblock
+    reads as a new one.
     Terrain (vertices, polygons and planes, cell ids and frames, water) is never changed
     after construction.
     """
@@ -62,6 +63,7 @@ class LandblockPool:
             return landblock
         for cell in landblock.land_cells.values():
             cell.reset_for_pool()
+        landblock.server_objects = []  # the last run's mover (Landblock.add_server_object)
         return landblock
 
     @harness("hands a landblock back to the pool, without the EnvCells the run loaded into it")

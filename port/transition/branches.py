@@ -82,10 +82,28 @@ BRANCHES: dict[str, str] = {
     "env_cell:unloaded_cell": "a sphere reaches a portal to a cell not visible: its short id added, no cell",
     "find_cell_list:indoor": "the position is in an EnvCell: that cell added (path hits an interior cell)",
     "find_cell_list:pruned": "a cell the position's EnvCell does not see dropped from the CellArray",
+    # placement (a scene's mover.placement): PhysicsObj.SetPositionInternal / CheckPositionInternal,
+    # Transition.FindPlacementPosition / FindPlacementPos
+    "set_position:no_cell_stored": "AdjustPosition found no cell: the position stored, the mover in no cell, no transition",
+    "set_position:collided": "no valid position and handle_all_collisions reported a collision: Collided",
+    "set_position:no_valid_position": "no valid position, nothing reported: NoValidPosition",
+    "set_position:placed": "placed: SetPositionInternal(Transition) entered the mover in its cell",
+    "check_position:kept_close": "without Slide: moved less than 0.05 in x and in y, kept",
+    "check_position:kept_far_negative": "without Slide: moved 0.05 or more toward -x or -y, kept all the same (no Math.Abs)",
+    "check_position:moved_too_far": "without Slide: moved 0.05 or more toward +x or +y (or into another cell): refused",
+    "find_placement_position:initial_blocked": "the initial placement insert failed: no valid position",
+    "find_placement_pos:in_place": "the placement insert at the current position is OK",
+    "find_placement_pos:no_sliding": "blocked where it stands, and the placement may not slide (no Slide)",
+    "find_placement_pos:slid_to_free_spot": "blocked where it stands: the spiral search found a free spot",
+    "find_placement_pos:no_free_spot": "blocked where it stands: the spiral search found no free spot within reach",
 }
 
 # Branches no recorded test scene reaches yet, and why.
-NOT_YET_REACHED: dict[str, str] = {}
+NOT_YET_REACHED: dict[str, str] = {
+    "find_placement_position:initial_blocked": "the first placement insert fails only where a cell's physics BSP cannot "
+                                               "lift the sphere clear in 20 tries, or its centre leaves every loaded "
+                                               "cell after AdjustPosition found one; no named scene builds either yet",
+}
 
 # Branches only the named indoor scenes reach (tests/port/cell: indoor_rooms.py and dungeon_scenes.py,
 # against ACE's recorded answers); the outdoor scenes never do.
@@ -97,6 +115,15 @@ REACHED_BY_INDOOR_SCENES: dict[str, str] = {
     "env_cell:unloaded_cell": "indoors only",
     "find_cell_list:indoor": "indoors only",
     "find_cell_list:pruned": "indoors only",
+}
+
+
+# Branches only the named placement scenes reach (tests/port/cell/placement_scenes.py, against ACE's
+# recorded answers on both runtimes); a scene without a placement never does.
+REACHED_BY_PLACEMENT_SCENES: dict[str, str] = {
+    name: "placement only" for name in BRANCHES
+    if name.split(":")[0] in ("set_position", "check_position", "find_placement_position", "find_placement_pos")
+    and name not in NOT_YET_REACHED
 }
 
 

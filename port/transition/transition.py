@@ -1,8 +1,8 @@
-"""Transition: AdjustOffset, BuildCellArray, CalcNumSteps, CheckCollisions, CheckOtherCells, CheckWalkable, CleanupTransition, CliffSlide, EdgeSlide, SetEdgeSlide, FindTransitionalPosition, FindValidPosition, Init, InitContactPlane, InitLastKnownContactPlane, InitObject, InitPath, InitSlidingNormal, InitSphere, InsertIntoCell, StepDown, StepUp, TransitionalInsert, ValidateTransition, SetCurrentCheckPos.
+"""Transition: AdjustOffset, BuildCellArray, CalcNumSteps, CheckCollisions, CheckOtherCells, CheckWalkable, CleanupTransition, CliffSlide, EdgeSlide, SetEdgeSlide, FindPlacementPos, FindPlacementPosition, FindTransitionalPosition, FindValidPosition, Init, InitContactPlane, InitLastKnownContactPlane, InitObject, InitPath, InitSlidingNormal, InitSphere, InsertIntoCell, PlacementInsert, StepDown, StepUp, TransitionalInsert, ValidatePlacement, ValidatePlacementTransition, ValidateTransition, SetCurrentCheckPos.
 
-ACE's Animation/Transition.cs, line by line. The placement routines (FindPlacementPos,
-FindPlacementPosition, PlacementInsert, ValidatePlacement*) are not ported: scenes always move
-from a begin position (InsertType.Transition).
+ACE's Animation/Transition.cs, line by line. The placement routines (FindPlacementPosition and
+what it calls) run when a scene's mover is placed (PhysicsObj.CheckPositionInternal); a
+transition always moves from a begin position (InsertType.Transition).
 
 The run's world (`lscape`, an acconform.port.land.lscape.LScape) replaces ACE's static LScape,
 and `trace` (a collections.Counter or None) counts the branches named in branches.py.
@@ -12,10 +12,13 @@ from __future__ import annotations
 
 
 from acconform.flags import InsertType, ObjectInfoState, PhysicsState, TransitionState
-from acconform.numerics import Mode, Plane, Vector3, cs_ceiling, cs_floor, cross, dot
+import math
+
+from acconform.numerics import Mode, Plane, Vector3, cast_float, cs_ceiling, cs_floor, cross, dot, wrap_i32
 
 from ..anchors import anchor
-from ..constants import EPSILON, EPSILON_SQ, FLOOR_Z, LANDING_Z, STEP_DOWN_PROBE
+from ..constants import (EPSILON, EPSILON_SQ, FLOOR_Z, LANDING_Z, PLACEMENT_ADJUST_DIST, PLACEMENT_FAKE_ADJUST_RAD,
+                         PLACEMENT_FAKE_SPHERE_RADIUS, PLACEMENT_MIN_RADIUS, STEP_DOWN_PROBE)
 from .. import land_defs
 from ..cell.obj_cell import EMPTY_CELL, find_cell_list_path
 from ..vec import normalize_check_small, snap_to_plane, unit_z_like
@@ -23,6 +26,7 @@ from .cell_array import CellArray
 from .collision_info import CollisionInfo
 from .object_info import ObjectInfo
 from .sphere_path import SpherePath
+from ..frame import AFrame
 
 # Transition.FindTransitionalPosition: `var maxSteps = 1000;`
 MAX_STEPS = 1000
@@ -395,7 +399,201 @@ class Transition:
     def find_valid_position(self) -> bool:
         if self.sphere_path.insert_type == InsertType.Transition:
             return self.find_transitional_position()
-        raise NotImplementedError("FindPlacementPosition is not ported (scenes always have a begin position)")
+        else:
+            return self.find_placement_position()
+
+    @anchor("CTransition::find_placement_pos", "Transition.cs:FindPlacementPos")
+    def find_placement_pos(self) -> bool:
+        sp = self.sphere_path
+        ci = self.collision_info
+        s = self.mode.scalar
+        # refactor me (ACE)
+        sp.set_check_pos(sp.cur_pos, sp.cur_cell)
+
+        ci.sliding_normal_valid = False
+        ci.contact_plane_valid = False
+        ci.contact_plane_is_water = False
+
+        transition_state = self.transitional_insert(3)
+
+        transition_state = self.validate_placement_transition(transition_state)
+
+        if transition_state == TransitionState.OK:
+            self._hit("find_placement_pos:in_place")
+            return True
+
+        if not sp.placement_allows_sliding:
+            self._hit("find_placement_pos:no_sliding")
+            return False
+
+        adjust_dist = s(PLACEMENT_ADJUST_DIST)
+        adjust_rad = adjust_dist
+        sphere_rad = sp.local_sphere[0].radius
+
+        fake_sphere = False
+
+        if sphere_rad < PLACEMENT_FAKE_SPHERE_RADIUS:
+            fake_sphere = True
+            adjust_rad = s(PLACEMENT_FAKE_ADJUST_RAD)
+        elif sphere_rad < PLACEMENT_MIN_RADIUS:
+            sphere_rad = s(PLACEMENT_MIN_RADIUS)
+
+        movement_delta = sphere_rad
+
+        f_num_steps = s(4.0) / movement_delta
+
+        if fake_sphere:
+            f_num_steps *= s(0.5)
+
+        if f_num_steps <= 1.0:
+            return False
+
+        num_steps = self.mode.runtime.to_int32(cs_ceiling(f_num_steps))
+        dist_per_step = adjust_rad / s(num_steps)
+        radians_per_step = cast_float(dist_per_step, math.pi * float(dist_per_step) / float(sphere_rad))
+
+        total_dist = s(0.0)
+        total_rad = s(0.0)
+
+        for _ in range(num_steps):
+            total_dist += dist_per_step
+            total_rad += radians_per_step
+
+            rad = self.mode.runtime.to_int32(cs_ceiling(total_rad))
+            rad = wrap_i32(rad * 2)
+            angle = s(360.0) / s(rad)
+
+            frame = AFrame.identity(self.mode)
+
+            for j in range(rad):
+                sp.set_check_pos(sp.cur_pos, sp.cur_cell)
+                frame.set_heading(angle * s(j))
+                offset = frame.get_vector_heading() * total_dist
+                sp.global_offset = self.adjust_offset(offset)
+                if sp.global_offset.length() >= EPSILON:
+                    sp.add_offset_to_check_pos(sp.global_offset)
+
+                    # possibly reset by AdjustOffset (ACE)
+                    ci.sliding_normal_valid = False
+                    ci.contact_plane_valid = False
+                    ci.contact_plane_is_water = False
+
+                    transition_state = self.transitional_insert(3)
+                    transition_state = self.validate_placement_transition(transition_state)
+
+                    if transition_state == TransitionState.OK:
+                        self._hit("find_placement_pos:slid_to_free_spot")
+                        return True
+        self._hit("find_placement_pos:no_free_spot")
+        return False
+
+    @anchor("CTransition::find_placement_position", "Transition.cs:FindPlacementPosition")
+    def find_placement_position(self) -> bool:
+        sp = self.sphere_path
+        sp.set_check_pos(sp.cur_pos, sp.cur_cell)
+        sp.insert_type = InsertType.InitialPlacement
+        transition_state = TransitionState.Invalid  # new TransitionState()
+
+        if sp.check_cell is not None:
+            transition_state = self.insert_into_cell(sp.check_cell, 3)
+
+            if transition_state == TransitionState.OK:
+                transition_state = self.check_other_cells(sp.check_cell)
+        else:
+            transition_state = TransitionState.Collided
+
+        result = self.validate_placement(transition_state, True)
+        if result != TransitionState.OK:
+            self._hit("find_placement_position:initial_blocked")
+            return False
+
+        sp.insert_type = InsertType.Placement
+        if not self.find_placement_pos():
+            return False
+
+        if not self.object_info.step_down:
+            result = self.validate_placement(TransitionState.OK, True)
+            return result == TransitionState.OK
+
+        sp.walkable_allowance = self.mode.scalar(LANDING_Z)
+        sp.save_check_pos()
+
+        sp.backup = sp.insert_type
+        sp.insert_type = InsertType.Transition
+
+        glob_sphere = sp.global_sphere[0]
+        step_down_height = self.object_info.step_down_height
+
+        if sp.num_sphere < 2 and glob_sphere.radius * 2 < step_down_height:
+            step_down_height = glob_sphere.radius * self.mode.scalar(0.5)
+
+        if step_down_height <= glob_sphere.radius * 2:
+            if not self.step_down(step_down_height, self.mode.scalar(LANDING_Z)):
+                sp.restore_check_pos()
+                self.collision_info.contact_plane_valid = False
+                self.collision_info.contact_plane_is_water = False
+        else:
+            step_down_height *= self.mode.scalar(0.5)
+            if (not self.step_down(step_down_height, self.mode.scalar(LANDING_Z))
+                    and not self.step_down(step_down_height, self.mode.scalar(LANDING_Z))):
+                sp.restore_check_pos()
+                self.collision_info.contact_plane_valid = False
+                self.collision_info.contact_plane_is_water = False
+
+        sp.insert_type = sp.backup
+        sp.walkable = None
+
+        result = self.validate_placement(TransitionState.OK, True)
+        return result == TransitionState.OK
+
+    @anchor("CTransition::placement_insert", "Transition.cs:PlacementInsert")
+    def placement_insert(self) -> TransitionState:
+        sp = self.sphere_path
+        if sp.check_cell is None:
+            return TransitionState.Collided
+
+        check_cell = sp.check_cell
+        transit_state = self.insert_into_cell(check_cell, 3)
+
+        if transit_state == TransitionState.OK:
+            transit_state = self.check_other_cells(check_cell)
+
+        return transit_state
+
+    @anchor("CTransition::validate_placement", "Transition.cs:ValidatePlacement")
+    def validate_placement(self, transition_state: TransitionState, adjust: bool) -> TransitionState:
+        """``CurPos = CheckPos`` is ACE's assignment of the reference: the two stay one Position
+        until SetCheckPos or RestoreCheckPos makes a new CheckPos."""
+        sp = self.sphere_path
+        if sp.check_cell is None:
+            return TransitionState.Collided
+
+        if transition_state == TransitionState.OK:
+            sp.cur_pos = sp.check_pos
+            sp.cur_cell = sp.check_cell
+            sp.cache_global_curr_center()
+        elif transition_state in (TransitionState.Adjusted, TransitionState.Slid):
+            if adjust:
+                return self.validate_placement(self.placement_insert(), False)
+        return transition_state
+
+    @anchor("CTransition::validate_placement_transition", "Transition.cs:ValidatePlacementTransition")
+    def validate_placement_transition(self, transition_state: TransitionState) -> TransitionState:
+        """ACE's `ref int redo` is set to 0 and never read by its callers; it is dropped. ``CurPos =
+        CheckPos`` shares the reference, as in ValidatePlacement."""
+        sp = self.sphere_path
+        if sp.check_cell is None:
+            return TransitionState.Collided
+
+        if transition_state == TransitionState.OK:
+            sp.cur_pos = sp.check_pos
+            sp.cur_cell = sp.check_cell
+            sp.cache_global_curr_center()
+        elif transition_state in (TransitionState.Collided, TransitionState.Adjusted, TransitionState.Slid):
+            # added target id (ACE)
+            if sp.placement_allows_sliding and self.object_info.target_id == 0:
+                self.collision_info.init()
+        return transition_state
 
     @anchor("CTransition::init_contact_plane", "Transition.cs:InitContactPlane")
     def init_contact_plane(self, cell_id: int, contact_plane: Plane, is_water: bool) -> None:

@@ -164,9 +164,9 @@ def test_run_prints_one_scene_outcome_from_the_port_or_an_implementation(tmp_pat
                            capture_output=True, text=True)
         assert r.returncode == 0, r.stderr
         outs.append(json.loads(r.stdout))
-    from acconform.outcome import FORMAT
+    from acconform.outcome import FORMAT_V2
 
-    assert outs[0] == outs[1] and outs[0]["format"] == FORMAT
+    assert outs[0] == outs[1] and outs[0]["format"] == FORMAT_V2  # a scene without a placement: outcome/2
 
 
 def test_a_scene_sent_ahead_of_a_crash_is_sent_again_to_the_restarted_process(corpus_scenes):

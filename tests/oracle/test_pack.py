@@ -3,7 +3,7 @@
 import math
 import struct
 
-from acconform.outcome import ContactPlaneState, NormalState, Outcome
+from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState
 from acconform.oracle.pack import _OUT, _frozen_maker, pack_scene, unpack_outcome
 
 from .scenes import PROBE
@@ -15,13 +15,24 @@ def _cells(cells):
     return struct.pack("<i", len(cells)) + b"".join(struct.pack(f"<i{len(c)}I", len(c), *c) for c in cells)
 
 
-def _packed(cp_normal=(0.0, 0.0, 1.0), sliding=(0.0, 0.0, 0.0), neg=0, cells=()):
+def _placement(p):
+    """Facade.WritePlacement: byte 0, or 1 then the placement's fields."""
+    if p is None:
+        return b"\0"
+    return b"\1" + struct.pack(f"<iI3f4fIIi{len(p.shadow_cells)}I", p.result, p.cell, *p.origin, *p.orientation,
+                                p.cur_cell, p.transient_state, len(p.shadow_cells), *p.shadow_cells)
+
+
+PLACED = PlacementState(2, 0xA9B40100, (63.0, 60.0, 20.0), (1.0, 0.0, 0.0, 0.0), 0, 0x83, (0xA9B40100, 0xA9B40101))
+
+
+def _packed(cp_normal=(0.0, 0.0, 1.0), sliding=(0.0, 0.0, 0.0), neg=0, cells=(), placement=None):
     vals = (1, 1, 0xA9B40001, 12.5, 12.0, 20.0, 1.0, 0.0, 0.0, 0.0, 0x103,
             1, 0xA9B40001, 0, *cp_normal, -20.0,
             1, 0xA9B40001, 0, 0.0, 0.0, 1.0, -20.0,
             0, 0.0, 0.0, 0.0, 1, *sliding,
             1, 0, 0.0, 0.0, 0.0, 0xA9B40001, 1, 0, neg, 1.5, 12.0, 2, 1, 30.0, 4.5)
-    return _OUT.pack(*vals) + _cells(cells)
+    return _OUT.pack(*vals) + _cells(cells) + _placement(placement)
 
 
 def test_the_fast_record_maker_gives_records_equal_to_the_dataclass_constructor():
@@ -59,9 +70,38 @@ def test_shared_records_are_keyed_by_bits_so_negative_zero_stays_negative():
 
 def test_an_error_outcome_carries_the_message_and_the_counters():
     msg = "NullReferenceException: boom".encode()
-    data = b"\xee" + struct.pack("<i", len(msg)) + msg + struct.pack("<ddiidd", 0.0, 9.0, 1, 0, 5.0, 2.5) + _cells(None)
+    data = (b"\xee" + struct.pack("<i", len(msg)) + msg + struct.pack("<ddiidd", 0.0, 9.0, 1, 0, 5.0, 2.5) + _cells(None)
+            + _placement(None))
     o, fvp, case, counts = unpack_outcome(data)
     assert o == Outcome(error="NullReferenceException: boom") and (case, counts) == (9.0, (1, 0, 5.0, 2.5))
+
+
+def test_unpacking_reads_the_placement_after_the_statics_cells():
+    o = unpack_outcome(_packed(cells=((0xA9B40009,),), placement=PLACED))[0]
+    assert o.placement == PLACED and o.static_cells == ((0xA9B40009,),) and o.ok
+    assert unpack_outcome(_packed())[0].placement is None
+
+
+def test_a_placement_in_no_cell_unpacks_as_the_default_record_with_velocity_cells_and_placement():
+    data = (struct.pack("<B3fd", 2, 0.0, -1.5, 0.25, 0.0) + struct.pack("<diidd", 9.0, 1, 0, 5.0, 2.5)
+            + _cells(((0xA9B40001,),)) + _placement(PLACED))
+    o, fvp, case, counts = unpack_outcome(data)
+    assert o == Outcome(velocity=(0.0, -1.5, 0.25), static_cells=((0xA9B40001,),), placement=PLACED)
+    assert (fvp, case, counts) == (0.0, 9.0, (1, 0, 5.0, 2.5))
+
+
+def test_a_packed_scene_carries_its_placement_after_the_end_position():
+    from dataclasses import replace
+
+    from acconform.flags import SetPositionFlags
+    from acconform.scene import Placement
+
+    s = PROBE["flat 1-step walk"]
+    plain = pack_scene(s)
+    placed = pack_scene(s.replace(engine_mode="client", mover=replace(
+        s.mover, placement=Placement(int(SetPositionFlags.Slide), True))))
+    assert plain[-6:] == struct.pack("<BiB", 0, 0, 0)
+    assert placed[-6:] == struct.pack("<BiB", 1, int(SetPositionFlags.Slide), 1)
 
 
 def test_packing_is_deterministic_and_shares_the_height_table_bytes():
@@ -90,7 +130,7 @@ def test_a_packed_scene_carries_its_indoor_records_after_its_landblocks():
         got.append((kind, ident, bytes(data[pos + 9:pos + 9 + length])))
         pos += 9 + length
     want = dat.environment_records(scene) + dat.cell_dat_records(scene)
-    assert version == PACK_VERSION == 5 and nlb == 1
+    assert version == PACK_VERSION == 6 and nlb == 1
     assert got == [({"Environment": 2, "EnvCell": 3, "LandblockInfo": 4}[r.kind], r.id, r.data) for r in want]
     assert struct.unpack_from("<i", data, pos) == (1,)  # then the statics, as before
     assert struct.unpack_from("<i", pack_scene(PROBE["flat 1-step walk"]), 5 + 1024 + 4 + 256) == (0,)
