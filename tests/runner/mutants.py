@@ -225,6 +225,23 @@ MUTATIONS: tuple[Mutation, ...] = (
              "            if False:\n                for sphere in spheres:",
              "find_transit_cells treats a portal to 0xFFFF as one to an unloaded cell: the outdoor cells never added",
              ("indoor",)),
+    # ---- placement (issue 12: a scene's mover.placement, ACE's SetPositionInternal): every kind draws one
+    Mutation("placement_slide_flag_ignored", "physics_obj.py",
+             "        if not set_pos_flags & SetPositionFlags.Slide:\n"
+             "            transition.sphere_path.placement_allows_sliding = False\n",
+             "",
+             "CheckPositionInternal ignores a SetPosition without Slide: a blocked placement always slides",
+             ("terrain", "bsp", "obstacles", "indoor")),
+    Mutation("placement_in_no_cell_left_active", "physics_obj.py",
+             "            self.set_active(False)\n            return SetPositionError.OK",
+             "            return SetPositionError.OK",
+             "SetPositionInternal stores a position in no cell but leaves the mover Active",
+             ("terrain", "bsp", "obstacles", "indoor")),
+    Mutation("adjust_position_seen_outside_ignored", "physics_obj.py",
+             "        if not visible_cell.seen_outside:\n            return None\n",
+             "",
+             "AdjustPosition falls out to the landblock from any EnvCell, not only a SeenOutside one",
+             ("indoor",)),
 )
 
 

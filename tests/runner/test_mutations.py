@@ -66,6 +66,11 @@ that, 1,500 scenes missed it), neighbour_tested_in_own_frame at 1, outside_porta
 each shrunk to one landblock, at most one object and a path of about a metre or less.
 cell_bsp_slack_dropped went unnoticed for 1,500 scenes twice (UNREACHABLE says why).
 
+Placement mutants (issue 12's mover.placement, ACE's SetPositionInternal; seed 0): placement_slide_flag_ignored
+caught at scene 917 (shrunk to one landblock, one object, a 6 cm path), placement_in_no_cell_left_active
+at 119 (nine landblocks: the mover is placed 40 m away from its begin, into no cell),
+adjust_position_seen_outside_ignored at 215 (indoor; one landblock, no object, no path).
+
 Survivors everywhere: the UNREACHABLE below (equivalent in practice: their boundary cannot be
 drawn, for the reasons given).
 """
