@@ -7,8 +7,8 @@ For each seed, `acconform check -n N -j J --seed S` runs once against each build
 other in a fresh process (as a user runs it: worker start-up, ACE's load and facade, Hypothesis'
 draw, the port, ACE and the comparison all counted); the order alternates from seed to seed, so
 a busy spell on the shared machine does not always fall on the same runtime. Prints each pair's
-cases/s (the campaign's own figure, from --json), their ratio, and each side's differences; the
-medians close the table. Every pair is printed: the machine is noisy, and one pair proves little.
+cases/s (the campaign's own figure, from --json), their ratio, the seconds the workers spent in the
+port and in ACE (summed over workers), and each side's differences; the medians close the table. Every pair is printed: the machine is noisy, and one pair proves little.
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ RUNTIMES = ("mono", "coreclr")
 def campaign(ace: str, n: int, workers: int, seed: int, kinds: str | None) -> dict:
     out = Path(tempfile.mkdtemp(prefix="acconform-bench-")) / "summary.json"
     cmd = [sys.executable, "-m", "acconform.cli", "check", "-n", str(n), "-j", str(workers), "--seed", str(seed),
-           "--no-progress", "--keep-going", "--failures", str(out.parent / "failures"), "--json", str(out)]
+           "--no-progress", "--no-database", "--keep-going", "--failures", str(out.parent / "failures"), "--json", str(out)]
     if kinds:
         cmd += ["--kinds", kinds]
     env = dict(os.environ, ACE_ASSEMBLY=ace)
@@ -39,8 +39,9 @@ def campaign(ace: str, n: int, workers: int, seed: int, kinds: str | None) -> di
     s = json.loads(out.read_text())
     if s["oracle"] != "live":
         sys.exit(f"bench_campaign_runtimes: {ace} did not run live (oracle {s['oracle']!r})")
-    return {"rate": s["timings"]["cases_per_s"], "cases": s["cases"]["run"], "differences": s["differences"]["total"],
-            "runtime": s["versions"]["runtime"]}
+    t = s["timings"]
+    return {"rate": t["cases_per_s"], "cases": s["cases"]["run"], "differences": s["differences"]["total"],
+            "port": t.get("port_s", 0.0), "oracle": t.get("oracle_s", 0.0)}
 
 
 def main() -> None:
@@ -54,7 +55,8 @@ def main() -> None:
     a = p.parse_args()
     builds = {"mono": a.mono, "coreclr": a.coreclr}
     print(f"acconform check -n {a.n} -j {a.j} per run, live ACE; cases/s as the campaign reports it")
-    print(f"{'seed':>6s} {'first':>8s} {'mono':>9s} {'coreclr':>9s} {'coreclr/mono':>13s}  differences (mono, coreclr)")
+    print(f"{'seed':>6s} {'first':>8s} {'mono':>9s} {'coreclr':>9s} {'coreclr/mono':>13s}  "
+          f"port s (mono, coreclr)  ACE s (mono, coreclr)  differences (mono, coreclr)")
     ratios, rates = [], {rt: [] for rt in RUNTIMES}
     for i, seed in enumerate(int(s) for s in a.seeds.split(",")):
         order = RUNTIMES if i % 2 == 0 else RUNTIMES[::-1]
@@ -63,8 +65,10 @@ def main() -> None:
         ratios.append(ratio)
         for rt in RUNTIMES:
             rates[rt].append(r[rt]["rate"])
-        print(f"{seed:6d} {order[0]:>8s} {r['mono']['rate']:9.1f} {r['coreclr']['rate']:9.1f} {ratio:12.2f}x  "
-              f"{r['mono']['differences']}, {r['coreclr']['differences']}")
+        m, c = r["mono"], r["coreclr"]
+        print(f"{seed:6d} {order[0]:>8s} {m['rate']:9.1f} {c['rate']:9.1f} {ratio:12.2f}x  "
+              f"{m['port']:10.1f}, {c['port']:<10.1f} {m['oracle']:9.1f}, {c['oracle']:<10.1f} "
+              f"{m['differences']}, {c['differences']}")
     print(f"{'median':>6s} {'':>8s} {statistics.median(rates['mono']):9.1f} {statistics.median(rates['coreclr']):9.1f} "
           f"{statistics.median(ratios):12.2f}x  ({sum(x >= 1 for x in ratios)} of {len(ratios)} pairs CoreCLR >= mono)")
 
