@@ -12,6 +12,8 @@ import pytest
 ROOT = Path(__file__).parent.parent
 MAPPED = {"acconform": "acconform", "acconform.port": "port", "acconform.oracle": "oracle", "acconform.strategies": "strategies"}
 DATA_PACKAGES = {"acconform.corpus": "tests/data/corpus"}  # data only, no __init__.py
+# data-only directories inside packages, listed so setuptools does not warn that it skips them
+DATA_SUBPACKAGES = {"acconform.corpus.mono", "acconform.corpus.coreclr", "acconform.oracle.facade"}
 
 
 def test_every_package_directory_is_listed_in_pyproject():
@@ -25,7 +27,7 @@ def test_every_package_directory_is_listed_in_pyproject():
             found.add(".".join((name, *rel)))
     missing = found - listed
     assert not missing, f"add these to [tool.setuptools] packages in pyproject.toml: {sorted(missing)}"
-    assert not (listed - found - set(DATA_PACKAGES)), f"listed but absent: {sorted(listed - found)}"
+    assert not (listed - found - set(DATA_PACKAGES) - DATA_SUBPACKAGES), f"listed but absent: {sorted(listed - found)}"
 
 
 def test_no_generic_top_level_names_are_installed():
