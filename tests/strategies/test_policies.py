@@ -16,8 +16,8 @@ import pytest
 from acconform.flags import PhysicsState, TransientState
 from acconform.strategies import sample_scenes
 from acconform.strategies.objects import BSP_STATE, EPS
-from acconform.strategies.scenes import BLOCK, CELL, REACH_SLACK
-from acconform.strategies.shapes import object_reach
+from acconform.strategies.shapes import REACH_SLACK, object_reach
+from acconform.strategies.terrain import BLOCK, CELL
 from strategy_records import floats_in
 
 warnings.simplefilter("ignore", RuntimeWarning)
