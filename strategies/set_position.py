@@ -50,8 +50,8 @@ from hypothesis import strategies as st
 
 from acconform.flags import PhysicsState, SetPositionFlags
 from acconform.numerics import to_f32
-from acconform.scene import (ENV_CELL_FIRST, IDENTITY, BSPNode, BSPShape, CylSphereShape, Frame, Placement, Position, Scene,
-                             SphereShape, StaticObject, newell_normal)
+from acconform.scene import (ENV_CELL_FIRST, IDENTITY, BSPNode, BSPShape, CylSphereShape, Frame, Placement, Position,
+                             Scene, SphereShape, StaticObject, newell_normal)
 
 from . import draws as dr
 from .objects import BSP_STATE
