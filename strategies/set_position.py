@@ -1,6 +1,6 @@
 """Placements: a share of drawn scenes of every kind has its mover placed by ACE's PhysicsObj.SetPosition.
 
-`with_placement(draw, scene)` gives the scene a ``mover.placement`` one time in three, indoors one
+`with_placement(draw, scene)` gives the scene a ``mover.placement`` one time in four, indoors one
 time in two (and engine mode client, which ACE's placement of a scene's mover needs). The begin
 position is then biased toward where placement goes wrong:
 
@@ -32,7 +32,7 @@ position is then biased toward where placement goes wrong:
   spot at the side, wider it finds none.
 
 Flags: Slide or not (the 0.05 check runs only without it; against an EnvCell's wall mostly not,
-inside a solid mostly), sometimes DontCreateCells and the flags ACE ignores here (Placement,
+against an object's face or inside a solid mostly), sometimes DontCreateCells and the flags ACE ignores here (Placement,
 Teleport, SendPositionEvent); get_cell true or false. One time in four the mover reports collisions
 (PhysicsState.ReportCollisions): where no valid position is found, handle_all_collisions then
 reports the environment collision (the mover's WeenieObj is WeenieObject.DummyObject, not null)
@@ -58,7 +58,7 @@ from .objects import BSP_STATE
 from .shapes import box, object_blocks, rotate
 from .terrain import BLOCK, cell_of, split_global
 
-PLACE = st.sampled_from((False, False, True))
+PLACE = st.sampled_from((False, False, False, True))
 # indoors, where placement inserts push a sphere out of the walls, one time in two
 PLACE_INDOORS = st.sampled_from((False, True))
 WHERE = st.sampled_from(("as drawn", "at end", "at end", "backed off", "backed off", "other cell", "other cell",
@@ -69,8 +69,8 @@ WHERE_INDOORS = st.sampled_from(("as drawn", "at end", "backed off", "other cell
                                  "bad id", "bad id") + ("against a face",) * 8 + ("inside a solid",) * 3)
 NUDGES = dr.OneOf(dr.f32(0.0, 0.06), dr.f32(0.0, 0.35))
 SLIDE = st.sampled_from((False, True))
-# against an EnvCell's wall the push is what CheckPositionInternal judges without Slide; inside a
-# solid, Slide sends the placement on the spiral search
+# against an EnvCell's wall the push is what CheckPositionInternal judges without Slide; against an
+# object's face or inside a solid, Slide sends the placement on the spiral search
 SLIDE_RARELY = st.sampled_from((False, False, False, True))
 SLIDE_MOSTLY = st.sampled_from((False, True, True, True))
 GET_CELL = st.sampled_from((False, True))
@@ -305,7 +305,7 @@ def with_placement(draw, scene: Scene) -> Scene:
         against = _against_a_face(draw, scene)
         if against is not None:
             begin, face = against
-            slides = SLIDE_RARELY if face.cell_wall else SLIDE
+            slides = SLIDE_RARELY if face.cell_wall else SLIDE_MOSTLY
     elif where == "inside a solid":
         solid = _inside_a_solid(draw, scene)
         if solid is not None:
