@@ -152,6 +152,8 @@ def derive(kind: str, scene, k: int = 2) -> list[tuple[object, object | None]]:
             v = _end_at_global(scene, gx, gy, ez0, f"{kind} {'xy'[axis]}={line:g}")
             out.append((v, _twin(v)))
     elif kind == "floor_z":
+        if m.placement is not None:  # the placement finds the contact plane, and its begin's cell id may be any
+            return out
         h = math.hypot(dx, dy)
         ux, uy = (dx / h, dy / h) if h > 0 else (1.0, 0.0)
         for n in (-1, 1):
