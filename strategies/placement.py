@@ -18,9 +18,8 @@ from collections import Counter
 from acconform.scene import BSPLeaf, BSPShape, CylSphereShape, SphereShape
 
 from .shapes import object_reach
+from .terrain import BLOCK, CELL
 
-BLOCK = 192.0
-CELL = 24.0
 LARGE = 2.0  # metres of reach radius
 
 

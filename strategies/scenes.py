@@ -24,31 +24,13 @@ from . import dungeon as dg
 from . import objects as ob
 from . import shapes as sh
 from . import terrain as tr
+from .terrain import BLOCK, CELL, cell_of, split_global
 from .set_position import with_placement
 
-BLOCK = 192.0
-CELL = 24.0
 
 # Typical Setup spheres: humans 0.35-0.5 m; the 2-sphere form stacks a head sphere above.
 RADII = tuple(to_f32(r) for r in (0.3, 0.35, 0.4, 0.48, 0.5, 1.0))
 STEP_HEIGHTS = tuple(to_f32(h) for h in (0.0, 0.01, 0.04, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0, 1.5, 2.0))
-
-
-def cell_of(bx: int, by: int, lx: float, ly: float) -> int:
-    cx = min(max(int(lx // CELL), 0), 7)
-    cy = min(max(int(ly // CELL), 0), 7)
-    return (bx << 24) | (by << 16) | (1 + cx * 8 + cy)
-
-
-def split_global(gx: float, gy: float) -> tuple[int, int, float, float]:
-    """(block x, block y, local x, local y) of a global point; locals are exact float32s in [0, 192)."""
-    bx, by = int(gx // BLOCK), int(gy // BLOCK)
-    lx, ly = to_f32(gx - bx * BLOCK), to_f32(gy - by * BLOCK)
-    if lx >= BLOCK:  # rounding up to 192.0 belongs to the next block
-        bx, lx = bx + 1, 0.0
-    if ly >= BLOCK:
-        by, ly = by + 1, 0.0
-    return bx, by, lx, ly
 
 
 def position(gx: float, gy: float, z: float, orientation=IDENTITY) -> Position:
@@ -592,41 +574,26 @@ def _scene(world, bx, by, p0, p1, reach, placed, mover, name) -> Scene:
     return Scene(landblocks, mover, tuple(objects), name=name)
 
 
-# metres beyond the spheres' reach: float rounding, a step-up's lift, a slide's last epsilon. The
-# mover never ends farther from its path than its spheres reach (slides and steps only shorten
-# the move), and cells are gathered from the spheres (add_all_outside_cells), so a metre is ample.
-REACH_SLACK = 1.0
-
-
 def _blocks_in_reach(bx, by, p0, p1, reach, objects) -> set[tuple[int, int]]:
     """Every landblock the mover's path (plus the spheres' reach and REACH_SLACK) or any object's
     bounding sphere (plus REACH_SLACK) can touch: a function of the path and the objects only, so
     as Hypothesis shrinks them the landblock set shrinks too (a short path inside one block and no
     object across a border is a one-landblock scene)."""
-    margin = reach + REACH_SLACK
-    boxes = [(min(p0[0], p1[0]) - margin, min(p0[1], p1[1]) - margin,
-              max(p0[0], p1[0]) + margin, max(p0[1], p1[1]) + margin)]
+    margin = reach + sh.REACH_SLACK
+    x0, y0 = min(p0[0], p1[0]) - margin, min(p0[1], p1[1]) - margin
+    x1, y1 = max(p0[0], p1[0]) + margin, max(p0[1], p1[1]) + margin
+    ix0, ix1, iy0, iy1 = int(x0 // BLOCK), int(x1 // BLOCK), int(y0 // BLOCK), int(y1 // BLOCK)
+    # a sphere stepping down just across a border looks one landblock further on along the
+    # crossing (check_pos keeps the old block's frame a moment: add_all_outside_cells reaches the
+    # cell beyond), so a path spanning a border takes the next block ahead
+    if ix1 > ix0:
+        ix0, ix1 = (ix0 - 1, ix1) if p1[0] < p0[0] else (ix0, ix1 + 1)
+    if iy1 > iy0:
+        iy0, iy1 = (iy0 - 1, iy1) if p1[1] < p0[1] else (iy0, iy1 + 1)
+    blocks = {(bx, by)} | {(ix, iy) for ix in range(ix0, ix1 + 1) for iy in range(iy0, iy1 + 1)
+                           if 0 <= ix <= 0xFE and 0 <= iy <= 0xFE}
     for o in objects:
-        (cx, cy, _), rad = sh.object_reach(o)
-        ox = (o.position.cell >> 24) * BLOCK + cx
-        oy = ((o.position.cell >> 16) & 0xFF) * BLOCK + cy
-        m = rad + REACH_SLACK
-        boxes.append((ox - m, oy - m, ox + m, oy + m))
-    blocks = {(bx, by)}
-    for k, (x0, y0, x1, y1) in enumerate(boxes):
-        ix0, ix1, iy0, iy1 = int(x0 // BLOCK), int(x1 // BLOCK), int(y0 // BLOCK), int(y1 // BLOCK)
-        if k == 0:
-            # a sphere stepping down just across a border looks one landblock further on along
-            # the crossing (check_pos keeps the old block's frame a moment: add_all_outside_cells
-            # reaches the cell beyond), so a path spanning a border takes the next block ahead
-            if ix1 > ix0:
-                ix0, ix1 = (ix0 - 1, ix1) if p1[0] < p0[0] else (ix0, ix1 + 1)
-            if iy1 > iy0:
-                iy0, iy1 = (iy0 - 1, iy1) if p1[1] < p0[1] else (iy0, iy1 + 1)
-        for ix in range(ix0, ix1 + 1):
-            for iy in range(iy0, iy1 + 1):
-                if 0 <= ix <= 0xFE and 0 <= iy <= 0xFE:
-                    blocks.add((ix, iy))
+        blocks |= sh.object_blocks(o)
     return blocks
 
 

@@ -26,6 +26,7 @@ from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, PlaneRe
                              SphereShape)
 
 from . import draws as dr
+from .terrain import BLOCK
 
 
 def f32s(lo: float, hi: float):
@@ -235,7 +236,8 @@ def zero_radius_empty_leaves(shape: BSPShape) -> BSPShape:
     return BSPShape(shape.polygons, walk(shape.root), shape.sphere)
 
 
-def _rotate(q, v):
+def rotate(q, v):
+    """v turned by the quaternion q = (w, x, y, z) (normalised first), in doubles."""
     w, x, y, z = q
     n = math.sqrt(w * w + x * x + y * y + z * z) or 1.0
     w, x, y, z = w / n, x / n, y / n, z / n
@@ -259,6 +261,23 @@ def object_reach(obj) -> tuple[tuple[float, float, float], float]:
     else:  # the shape's bounding sphere, which the strategies draw to cover every vertex
         c, r = shape.sphere.center, shape.sphere.radius
     s = obj.scale
-    rc = _rotate(obj.position.frame.orientation, (c[0] * s, c[1] * s, c[2] * s))
+    rc = rotate(obj.position.frame.orientation, (c[0] * s, c[1] * s, c[2] * s))
     o = obj.position.frame.origin
     return (o[0] + rc[0], o[1] + rc[1], o[2] + rc[2]), r * s
+
+
+# metres beyond the spheres' reach: float rounding, a step-up's lift, a slide's last epsilon. The
+# mover never ends farther from its path than its spheres reach (slides and steps only shorten
+# the move), and cells are gathered from the spheres (add_all_outside_cells), so a metre is ample.
+REACH_SLACK = 1.0
+
+
+def object_blocks(obj) -> set[tuple[int, int]]:
+    """The landblocks (x, y) a scene lists for a static object: every one its reach sphere (plus
+    REACH_SLACK) touches, off the map's edge left out."""
+    (cx, cy, _), rad = object_reach(obj)
+    gx = (obj.position.cell >> 24) * BLOCK + cx
+    gy = ((obj.position.cell >> 16) & 0xFF) * BLOCK + cy
+    m = rad + REACH_SLACK
+    return {(ix, iy) for ix in range(int((gx - m) // BLOCK), int((gx + m) // BLOCK) + 1)
+            for iy in range(int((gy - m) // BLOCK), int((gy + m) // BLOCK) + 1) if 0 <= ix <= 0xFE and 0 <= iy <= 0xFE}

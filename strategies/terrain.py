@@ -47,6 +47,24 @@ WATER_TYPES = (0x10, 0x11, 0x12, 0x13, 0x14)
 LAND_TYPES = (0x0, 0x1, 0x3, 0x5, 0x7, 0xA, 0xD)
 
 
+def cell_of(bx: int, by: int, lx: float, ly: float) -> int:
+    """The id of the land cell of landblock (bx, by) holding the block-local point (lx, ly)."""
+    cx = min(max(int(lx // CELL), 0), 7)
+    cy = min(max(int(ly // CELL), 0), 7)
+    return (bx << 24) | (by << 16) | (1 + cx * 8 + cy)
+
+
+def split_global(gx: float, gy: float) -> tuple[int, int, float, float]:
+    """(block x, block y, local x, local y) of a global point; locals are exact float32s in [0, 192)."""
+    bx, by = int(gx // BLOCK), int(gy // BLOCK)
+    lx, ly = to_f32(gx - bx * BLOCK), to_f32(gy - by * BLOCK)
+    if lx >= BLOCK:  # rounding up to 192.0 belongs to the next block
+        bx, lx = bx + 1, 0.0
+    if ly >= BLOCK:
+        by, ly = by + 1, 0.0
+    return bx, by, lx, ly
+
+
 def is_water_word(word: int) -> bool:
     return 0x10 <= (word >> 2 & 0x1F) <= 0x14
 

@@ -69,7 +69,7 @@ def _relocated(pos, lx: float, ly: float, z: float):
     """`pos` moved to landblock-local (lx, ly, z) of its landblock (a global point when outside it)."""
     from ..numerics import to_f32
     from ..scene import Frame, Position
-    from ..strategies.scenes import BLOCK, cell_of, split_global
+    from ..strategies.terrain import BLOCK, cell_of, split_global
 
     bx, by = pos.cell >> 24, (pos.cell >> 16) & 0xFF
     if 0.0 <= lx < BLOCK and 0.0 <= ly < BLOCK:
@@ -79,7 +79,7 @@ def _relocated(pos, lx: float, ly: float, z: float):
 
 
 def _global(pos) -> tuple[float, float, float]:
-    from ..strategies.scenes import BLOCK
+    from ..strategies.terrain import BLOCK
 
     x, y, z = pos.frame.origin
     return (pos.cell >> 24) * BLOCK + x, ((pos.cell >> 16) & 0xFF) * BLOCK + y, z
@@ -105,7 +105,7 @@ def _nudge(scene, which: str, n: int, tag: str):
 def _end_at_global(scene, gx: float, gy: float, z: float, tag: str):
     b = scene.mover.begin
     bx, by = b.cell >> 24, (b.cell >> 16) & 0xFF
-    from ..strategies.scenes import BLOCK
+    from ..strategies.terrain import BLOCK
 
     return _with_end(scene, _relocated(b, gx - bx * BLOCK, gy - by * BLOCK, z), tag)
 
@@ -128,7 +128,7 @@ def derive(kind: str, scene, k: int = 2) -> list[tuple[object, object | None]]:
     from ..numerics import f32_from_bits, f32_bits, to_f32
     from ..port.constants import EPSILON, FLOOR_Z
     from ..scene import ContactPlane, PlaneRec, SphereRec
-    from ..strategies.scenes import BLOCK, CELL
+    from ..strategies.terrain import BLOCK, CELL
 
     m = scene.mover
     bx0, by0, bz0 = _global(m.begin)
@@ -152,6 +152,8 @@ def derive(kind: str, scene, k: int = 2) -> list[tuple[object, object | None]]:
             v = _end_at_global(scene, gx, gy, ez0, f"{kind} {'xy'[axis]}={line:g}")
             out.append((v, _twin(v)))
     elif kind == "floor_z":
+        if m.placement is not None:  # the placement finds the contact plane, and its begin's cell id may be any
+            return out
         h = math.hypot(dx, dy)
         ux, uy = (dx / h, dy / h) if h > 0 else (1.0, 0.0)
         for n in (-1, 1):

@@ -98,12 +98,8 @@ BRANCHES: dict[str, str] = {
     "find_placement_pos:no_free_spot": "blocked where it stands: the spiral search found no free spot within reach",
 }
 
-# Branches no recorded test scene reaches yet, and why.
-NOT_YET_REACHED: dict[str, str] = {
-    "find_placement_position:initial_blocked": "the first placement insert fails only where a cell's physics BSP cannot "
-                                               "lift the sphere clear in 20 tries, or its centre leaves every loaded "
-                                               "cell after AdjustPosition found one; no named scene builds either yet",
-}
+# Branches no recorded test scene reaches yet, and why (none at present).
+NOT_YET_REACHED: dict[str, str] = {}
 
 # Branches only the named indoor scenes reach (tests/port/cell: indoor_rooms.py and dungeon_scenes.py,
 # against ACE's recorded answers); the outdoor scenes never do.

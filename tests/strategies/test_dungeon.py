@@ -84,7 +84,7 @@ def test_a_portal_faces_the_neighbour_exactly_when_its_portal_side_bit_is_clear(
 
 
 def test_the_mover_starts_inside_its_cell_by_the_cell_bsp(indoor_scenes):
-    for scene in indoor_scenes:
+    for scene in (s for s in indoor_scenes if s.mover.placement is None):  # a placement moves the begin on purpose
         built_cells = {c.id: c for c in scene.env_cells}
         structs = _structs(scene)
         m = scene.mover

@@ -12,7 +12,7 @@ from dataclasses import replace
 
 from acconform.flags import PhysicsState, SetPositionFlags
 from acconform.numerics import to_f32
-from acconform.scene import EnvCell, Frame, Placement, Position, StaticObject, validate_scene
+from acconform.scene import EnvCell, Frame, Placement, Position, SphereRec, StaticObject, validate_scene
 
 from indoor_rooms import ENV_ID, LB, SCENES as ROOM_SCENES, portal, room, two_rooms
 from object_scenes import box
@@ -36,13 +36,16 @@ def turned_room():
 
 
 def placed(begin_cell: int, origin, flags: int = 0, get_cell: bool = False, objects=(), base: str = "across-portal",
-           state: int | None = None, cells=None):
-    """The base room scene with its mover placed at (begin_cell, origin) first, in client mode."""
+           state: int | None = None, cells=None, radius: float | None = None):
+    """The base room scene with its mover placed at (begin_cell, origin) first, in client mode
+    (its one sphere `radius` big, when given)."""
     scene = ROOM_SCENES[base][0]
     mover = replace(scene.mover, begin=Position(begin_cell, Frame(tuple(to_f32(c) for c in origin))),
                     placement=Placement(flags, get_cell))
     if state is not None:
         mover = replace(mover, state=state)
+    if radius is not None:
+        mover = replace(mover, spheres=(SphereRec((0.0, 0.0, to_f32(radius)), to_f32(radius)),))
     return validate_scene(replace(scene, mover=mover, engine_mode="client", objects=tuple(objects) or scene.objects,
                                   env_cells=cells if cells is not None else scene.env_cells))
 
@@ -79,6 +82,9 @@ def _named() -> dict:
                              "inside a box with Slide: the spiral search finds a free spot"),
         "inside-slab-slide": (placed(A, (62.0, 60.0, 20.5), SLIDE, objects=(SLAB,)),
                               "inside a 12 m slab with Slide: the spiral search finds no free spot within 4 m"),
+        "lifted-out-of-the-cell": (placed(A, (60.0, 60.0, 18.5), radius=4.5),
+                                   "a 4.5 m sphere sunk 1.5 m into the floor: placement_insert lifts its centre above "
+                                   "the 4 m ceiling, into no cell; the initial placement fails"),
         "get-cell-indoor": (placed(A, (66.0, 60.0, 20.0), get_cell=True),
                             "Position.GetCell first: AdjustCell (LandblockInfo) finds B for the point"),
         "get-cell-outdoor": (placed(LB | 0x0001, (30.0, 30.0, 0.0), get_cell=True),
