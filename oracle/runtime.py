@@ -72,6 +72,13 @@ def dotnet_root() -> dotnet_host.DotnetRoot | None:
 # properties override the runtimeconfig's; DOTNET_gcServer / DOTNET_gcConcurrent in the
 # environment still win over both (the GC reads them first).
 GUEST_GC = (("System.GC.Server", "false"), ("System.GC.Concurrent", "false"))
+# Tiered PGO adds an instrumented tier between tier 0 and tier 1 and re-JITs every hot method once
+# more, on a background thread that competes with the campaign's other worker for the two cores
+# (with it, the port's time per case rose 10-25% in CoreCLR workers and CoreCLR campaigns ran 0.79-1.23x
+# mono's; without it, 0.97-1.12x, 2026-12-02, docs/oracle.md). PGO steers inlining, devirtualisation
+# and block layout, never what a float operation computes: ACE's answers stay bit for bit the same
+# (the whole corpus re-recorded without it gave every answer again). DOTNET_TieredPGO still wins.
+GUEST_JIT = (("System.Runtime.TieredPGO", "false"),)
 
 
 def _start_runtime(location: AceLocation) -> None:
@@ -82,7 +89,7 @@ def _start_runtime(location: AceLocation) -> None:
     try:
         if location.runtime == "coreclr":
             pythonnet.load("coreclr", runtime_config=str(location.runtime_config), dotnet_root=str(location.dotnet_root.path),
-                           properties=dict(GUEST_GC))
+                           properties=dict(GUEST_GC + GUEST_JIT))
         else:
             import warnings
 

@@ -59,3 +59,10 @@ def test_on_coreclr_ace_runs_with_the_workstation_gc_of_a_guest_not_the_server_g
     # ACE's own build (7b47913's ACE.Server.csproj) asks for the server GC and concurrent collection
     assert not GCSettings.IsServerGC
     assert str(AppContext.GetData("System.GC.Concurrent")) == "false"
+
+
+def test_on_coreclr_ace_runs_without_tiered_pgo_so_no_third_jit_tier_competes_for_the_cores(coreclr):
+    from System import AppContext
+
+    # the runtime's own default is on; the property is what CLRConfig reads for DOTNET_TieredPGO
+    assert str(AppContext.GetData("System.Runtime.TieredPGO")) == "false"
