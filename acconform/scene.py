@@ -579,6 +579,8 @@ class Mover:
     @staticmethod
     def from_json(r: Reader, placement: bool = True) -> "Mover":
         """`placement`: the format may hold one (scene/3)."""
+        if not placement and isinstance(r.value, dict) and "placement" in r.value:
+            r["placement"].fail(f"a placement needs format {FORMAT!r} (older formats have no placement)")
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))

@@ -176,3 +176,29 @@ def test_a_landblock_id_must_end_in_ffff_and_appear_once():
 def test_heights_must_be_byte_indices():
     doc = scene_with(lambda d: d["landblocks"][0]["heights"].__setitem__(5, 256))
     assert "landblocks[0].heights[5]: expected an integer in [0, 255], got 256" in refused(doc)
+
+
+PLACED = json.loads((Path(__file__).parent.parent / "examples" / "placement_wall_push.json").read_text())
+
+
+@pytest.mark.parametrize("mutate, field, says", [
+    (lambda d: d["mover"]["placement"].update(flags=["Slide", "Scatter"]), "mover.placement.flags", "WorldObject"),
+    (lambda d: d["mover"]["placement"].update(flags=["NoSuchFlag"]), "mover.placement.flags", "NoSuchFlag"),
+    (lambda d: d["mover"]["placement"].update(get_cell="yes"), "mover.placement.get_cell", "true or false"),
+    (lambda d: d["mover"]["placement"].update(where="here"), "mover.placement", "where"),
+    (lambda d: d["engine"].update(mode="server"), "mover.placement", "engine mode client"),
+    (lambda d: d.update(format="acconform.scene/2"), "mover.placement", "acconform.scene/3"),
+    (lambda d: d["mover"]["begin"].update(cell="0x12340100"), "mover.begin.cell", "not defined"),
+], ids=["scatter", "unknown flag", "get_cell not a bool", "unknown field", "server mode", "older format", "no landblock"])
+def test_a_bad_placement_is_refused_naming_its_field(mutate, field, says):
+    doc = copy.deepcopy(PLACED)
+    mutate(doc)
+    with pytest.raises(InvalidScene) as e:
+        parse_document(doc)
+    assert field in str(e.value) and says in str(e.value), str(e.value)
+
+
+def test_a_placement_may_name_any_cell_of_a_defined_landblock_for_adjust_position_to_judge():
+    doc = copy.deepcopy(PLACED)
+    doc["mover"]["begin"]["cell"] = "0xA9B40050"  # out of AdjustPosition's ranges: ACE stores it, no cell
+    assert parse_document(doc).mover.begin.cell == 0xA9B40050
