@@ -64,6 +64,11 @@ def describe_scene(scene) -> list[str]:
     out.append(f"    state {'|'.join(flag_names(PhysicsState, m.state)) or '0'}; "
                f"transient {'|'.join(flag_names(TransientState, m.transient_state)) or '0'}")
     out.append(f"    begin {_id(m.begin.cell)} {_v(m.begin.frame.origin)}")
+    if m.placement is not None:
+        from ..flags import SetPositionFlags
+
+        out.append(f"    placed there first by ACE's SetPosition: flags {'|'.join(flag_names(SetPositionFlags, m.placement.flags)) or 'none'}"
+                   + (", cell id by Position.GetCell" if m.placement.get_cell else ""))
     out.append(f"    end   {_id(m.end.cell)} {_v(m.end.frame.origin)}")
     if m.contact_plane is not None:
         cp = m.contact_plane
@@ -80,7 +85,16 @@ def describe_outcome(o, label: str = "outcome") -> list[str]:
     if o.error is not None:
         return [f"{label}: error {o.error}"]
     cp = o.contact_plane
-    return [
+    placed = []
+    if o.placement is not None:
+        from ..flags import SetPositionError, TransientState
+
+        p = o.placement
+        placed = [f"{label} of the placement: {SetPositionError(p.result).name}, position {_id(p.cell)} {_v(p.origin)}, "
+                  f"CurCell {_id(p.cur_cell) if p.cur_cell else 'none'}, "
+                  f"transient {'|'.join(flag_names(TransientState, p.transient_state)) or '0'}, "
+                  f"shadows in {', '.join(_id(c) for c in p.shadow_cells) or 'no cell'}"]
+    return placed + [
         f"{label}: ok={o.ok} cell {_id(o.cell)} origin {_v(o.origin)}",
         f"  state {'|'.join(flag_names(ObjectInfoState, o.object_info_state)) or '0'}; "
         f"contact plane {'valid' if cp.valid else 'invalid'} {_id(cp.cell)} n={_v(cp.normal)} d={cp.d:.9g}",

@@ -82,6 +82,22 @@ def test_show_prints_an_indoor_scene_readably(capsys):
         assert needle in out
 
 
+def test_show_prints_a_placement_and_what_it_left(tmp_path, capsys):
+    from pathlib import Path
+
+    from acconform.case import parse_document
+    from acconform.port.run import run_scene
+
+    scene = parse_document(json.loads((Path(__file__).parents[2] / "examples" / "placement_wall_push.json").read_text()))
+    path = tmp_path / "outcome.json"
+    path.write_text(json.dumps(run_scene(scene).to_json()))
+    assert main(["show", str(Path(__file__).parents[2] / "examples" / "placement_wall_push.json")]) == 0
+    assert "placed there first by ACE's SetPosition: flags none" in capsys.readouterr().out
+    assert main(["show", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "outcome of the placement: OK, position 0xA9B40100 (64.5199966, 60, 20), CurCell 0xA9B40100" in out
+
+
 def test_coverage_prints_a_branch_table_per_1000_scenes(capsys):
     _port()
     assert main(["coverage", "--branches", "-n", "40", "--seed", "1"]) == 0
