@@ -256,7 +256,8 @@ def _coplanar(a: PlaneRec, b: PlaneRec) -> bool:
     return abs(abs(dot) - 1) < 1e-6 and abs(a.d - (b.d if dot > 0 else -b.d)) < 1e-4
 
 
-def _dist(plane: PlaneRec, p) -> float:
+def plane_distance(plane: PlaneRec, p) -> float:
+    """The signed distance of point p from the plane (positive in front)."""
     n = plane.normal
     return n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + plane.d
 
@@ -281,7 +282,7 @@ def physics_bsp(physics: list, max_depth: int = 4) -> BSPNode | BSPLeaf:
         best = None
         for k in candidates:
             pl = planes[k]
-            dists = [[_dist(pl, v) for v in polys[i].vertices] for i in ids]
+            dists = [[plane_distance(pl, v) for v in polys[i].vertices] for i in ids]
             front = [i for i, ds in zip(ids, dists) if max(ds) > -SPLIT_TOL]
             back = [i for i, ds in zip(ids, dists) if min(ds) < SPLIT_TOL]
             size = max(len(front), len(back))
@@ -319,7 +320,7 @@ def point_inside(bsp: CellBSPNode | None, point) -> bool:
     """BSPNode.point_inside_cell_bsp in doubles (for the strategies' own checks; the port is float32)."""
     node = bsp
     while node is not None:
-        if _dist(node.plane, point) < -0.0002:
+        if plane_distance(node.plane, point) < -0.0002:
             return False
         node = node.front
     return True

@@ -54,6 +54,7 @@ from acconform.scene import (ENV_CELL_FIRST, IDENTITY, BSPNode, BSPShape, CylSph
                              Scene, SphereShape, StaticObject, newell_normal)
 
 from . import draws as dr
+from .dungeon import plane_distance
 from .objects import BSP_STATE
 from .shapes import box, object_blocks, rotate
 from .terrain import BLOCK, cell_of, split_global
@@ -131,7 +132,7 @@ def _splitting_planes(node) -> list:
 
 
 def _on_plane(verts, plane) -> bool:
-    return all(abs(sum(n * c for n, c in zip(plane.normal, v)) + plane.d) < ON_PLANE for v in verts)
+    return all(abs(plane_distance(plane, v)) < ON_PLANE for v in verts)
 
 
 def _faces(scene: Scene) -> list[Face]:

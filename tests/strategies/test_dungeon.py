@@ -77,7 +77,7 @@ def test_a_portal_faces_the_neighbour_exactly_when_its_portal_side_bit_is_clear(
             for portal in cell.portals:
                 poly = st.polygons[portal.polygon]
                 plane = dg.plane_of(poly.vertices)
-                faces_out = dg._dist(plane, inside) < 0
+                faces_out = dg.plane_distance(plane, inside) < 0
                 assert faces_out == (not portal.flags & PORTAL_SIDE_BIT)
                 sides[faces_out] += 1
     assert sides[True] and sides[False]
@@ -104,7 +104,7 @@ def test_a_cell_bsp_is_a_chain_of_inward_planes_with_no_leaf_on_it(indoor_scenes
             node, depth = st.cell_bsp, 0
             while node is not None:
                 assert not isinstance(node, CellBSPLeaf)
-                assert dg._dist(node.plane, (0.0, 0.0, 0.01)) > 0 or st.physics_polygons  # entry floor's centre
+                assert dg.plane_distance(node.plane, (0.0, 0.0, 0.01)) > 0 or st.physics_polygons  # entry floor's centre
                 node, depth = node.front, depth + 1
             assert depth == 6
 
