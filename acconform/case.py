@@ -13,8 +13,10 @@ from pathlib import Path
 
 from .codec import Reader, dumps, parse_json_text
 from .errors import InvalidScene
-from .outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V1 as OUTCOME_FORMAT_V1, FORMAT_V2 as OUTCOME_FORMAT_V2, Outcome
-from .scene import FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2, Scene, check_format
+from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V1 as OUTCOME_FORMAT_V1, FORMAT_V2 as OUTCOME_FORMAT_V2,
+                      FORMAT_V3 as OUTCOME_FORMAT_V3, Outcome)
+from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
+                    FORMAT_V3 as SCENE_FORMAT_V3, Scene, check_format)
 
 CASE_FORMAT = "acconform.case/1"
 RECORD_FORMAT = "acconform.record/1"
@@ -86,8 +88,10 @@ class Record:
                       Versions.from_json(r["versions"]) if r.has("versions") else Versions())
 
 
-_READERS = {SCENE_FORMAT_V1: Scene.from_json, SCENE_FORMAT_V2: Scene.from_json, SCENE_FORMAT: Scene.from_json,
-            OUTCOME_FORMAT_V1: Outcome.from_json, OUTCOME_FORMAT_V2: Outcome.from_json, OUTCOME_FORMAT: Outcome.from_json,
+_READERS = {SCENE_FORMAT_V1: Scene.from_json, SCENE_FORMAT_V2: Scene.from_json, SCENE_FORMAT_V3: Scene.from_json,
+            SCENE_FORMAT: Scene.from_json,
+            OUTCOME_FORMAT_V1: Outcome.from_json, OUTCOME_FORMAT_V2: Outcome.from_json, OUTCOME_FORMAT_V3: Outcome.from_json,
+            OUTCOME_FORMAT: Outcome.from_json,
             CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
 
 

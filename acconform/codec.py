@@ -5,6 +5,9 @@ same float32 (numpy's repr), and read by rounding to the nearest float32, so a f
 the trip bit for bit (tests/test_codec.py draws every finite pattern class). Non-finite values,
 legal only in outcomes, are written as their bit pattern, e.g. "0x7fc00000".
 Cell and object ids are written as hex strings ("0xA9B40001") and read from hex strings or ints.
+Doubles (a tick scene's clock: ``ticks.start`` and each step's ``dt``) are written as Python's
+``repr`` of the double (the shortest decimal that reads back as the same double) and read back
+bit for bit by `Reader.f64`; they are always finite.
 """
 
 from __future__ import annotations
@@ -24,6 +27,15 @@ def write_f32(x) -> float | str:
         return f"0x{int(v.view(np.uint32)):08x}"
     # float(repr) keeps the shortest digits: json then prints them unchanged.
     return float(str(v)) if v != 0 else (-0.0 if np.signbit(v) else 0.0)
+
+
+def write_f64(x) -> float:
+    """A finite double, as the shortest decimal that reads back as the same double (json writes
+    a Python float with its repr)."""
+    v = float(x)
+    if not math.isfinite(v):
+        raise ValueError(f"a double written to JSON must be finite, got {v}")
+    return v
 
 
 def write_vec(v) -> list:
@@ -125,6 +137,19 @@ class Reader:
         if not np.isfinite(r) and not allow_nonfinite:
             self.fail(f"{v} is outside float32's range")
         return float(r)
+
+    def f64(self) -> float:
+        """A finite double (the shortest round-trip decimal `write_f64` writes reads back bit for bit)."""
+        v = self.value
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            self.fail(f"expected a number, got {_kind(v)}")
+        try:
+            d = float(v)
+        except OverflowError:
+            self.fail(f"{v} is outside a double's range")
+        if not math.isfinite(d):
+            self.fail(f"expected a finite number, got {v}")
+        return d
 
     def vec3(self) -> tuple[float, float, float]:
         a, b, c = (r.f32() for r in self.list(count=3))

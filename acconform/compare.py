@@ -22,27 +22,39 @@ Errors: their presence must match in every mode, and in exact mode also the exce
 (the text before the first colon); the messages are free text (ACE's come from .NET, the
 port's name the missing piece) and are shown but never compared.
 
+`ticks` (a tick scene's outcome) is compared tick by tick, each `TickState` field by field
+(``ticks[7].origin[0]``), right after `placement` and before `static_cells` (which are read after
+the last tick), so the first difference of a tick scene is its first differing tick and field:
+`first_tick_difference` picks it, and the case file and ``acconform show`` put it on top. A tick's
+``update_time`` is a double (ACE's clock arithmetic) and must be bit-equal in every mode; a tick's
+``error`` follows the rule for errors below; when one side ran fewer ticks (an error ended it), the
+first missing tick is a difference (``ticks[n]``, one value None); one side with ticks and the other
+without is a difference (``ticks``).
+
 A Difference names the field by path (``contact_plane.normal[2]``) and carries both values.
 """
 
 from __future__ import annotations
 
 import math
+import struct
 from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
 
-from .flags import ObjectInfoState, flag_names
-from .outcome import ContactPlaneState, NormalState, Outcome, PlacementState
+from .flags import ObjectInfoState, PhysicsState, TransientState, flag_names
+from .outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 
 MODES = ("exact", "fast")
 FAST_ULPS = 64  # float32 ULPs allowed between a double run and ACE's float32 run
 FAST_ABS = 1e-4  # metres / unit-vector components; below PhysicsGlobals.EPSILON (2e-4)
 
-_ID_FIELDS = frozenset({"cell", "check_cell", "cur_cell"})
-_FLAG_FIELDS = {"object_info_state": ObjectInfoState}
-_VEC_FIELDS = frozenset({"origin", "orientation", "velocity", "normal", "vector"})
+_ID_FIELDS = frozenset({"cell", "check_cell", "cur_cell", "contact_plane_cell"})
+_FLAG_FIELDS = {"object_info_state": ObjectInfoState, "state": PhysicsState, "transient_state": TransientState}
+_VEC_FIELDS = frozenset({"origin", "orientation", "velocity", "normal", "vector", "acceleration", "omega",
+                         "cached_velocity", "sliding_normal"})
+_DOUBLE_FIELDS = frozenset({"update_time"})
 _FLOAT_FIELDS = frozenset({"d"})
 
 
@@ -73,6 +85,14 @@ def _show(path: str, v) -> str:
         return "[" + ", ".join("[" + ", ".join(f"0x{c:08X}" for c in cells) + "]" for cells in v) + "]"
     if isinstance(v, int) and leaf in _FLAG_FIELDS:
         return "|".join(flag_names(_FLAG_FIELDS[leaf], v)) or "0"
+    if isinstance(v, float) and leaf in _DOUBLE_FIELDS:
+        return f"{v!r} (0x{_double_bits(v):016x})"
+    if isinstance(v, tuple) and leaf == "shadow_cells":
+        return "[" + ", ".join(f"0x{c:08X}" for c in v) + "]"
+    if isinstance(v, tuple) and leaf == "ticks":
+        return f"{len(v)} ticks"
+    if isinstance(v, TickState):
+        return "TickState(error=" + repr(v.error) + ")" if v.error is not None else "a TickState"
     if isinstance(v, float):
         f = np.float32(v)
         return f"{f!r}"[len("np.float32("):-1] + f" (0x{_bits(v):08x})" if math.isfinite(v) else f"{v} (0x{_bits(v):08x})"
@@ -114,12 +134,51 @@ def compare(a: Outcome, b: Outcome, mode: str = "exact") -> list["Difference"]:
     return out
 
 
+def _double_bits(x: float) -> int:
+    return struct.unpack("<Q", struct.pack("<d", x))[0]
+
+
+def _order(record) -> list[str]:
+    """The fields of `record` in comparison order: an Outcome's `placement` and `ticks` come before
+    `static_cells` (read after the transition or the last tick); every other record in field order."""
+    names = [f.name for f in fields(record)]
+    if isinstance(record, Outcome):
+        names.remove("static_cells")
+        names.append("static_cells")
+    return names
+
+
+def first_tick_difference(diffs: list["Difference"]) -> "Difference | None":
+    """The first difference in a tick (``ticks[...]``, the first differing tick and field), or None."""
+    return next((d for d in diffs if d.field.startswith("ticks")), None)
+
+
+def _compare_ticks(va, vb, mode: str, out: list) -> None:
+    if (va is None) != (vb is None):
+        out.append(Difference("ticks", va, vb))
+        return
+    if va is None:
+        return
+    for i in range(max(len(va), len(vb))):
+        if i >= len(va) or i >= len(vb):
+            out.append(Difference(f"ticks[{i}]", va[i] if i < len(va) else None, vb[i] if i < len(vb) else None))
+            return
+        _compare_record(va[i], vb[i], f"ticks[{i}].", mode, out)
+
+
 def _compare_record(a, b, prefix: str, mode: str, out: list) -> None:
-    for f in fields(a):
-        name = f.name
+    for name in _order(a):
         path = f"{prefix}{name}"
         va, vb = getattr(a, name), getattr(b, name)
-        if isinstance(va, (ContactPlaneState, NormalState)) or (
+        if name == "ticks" and isinstance(a, Outcome):
+            _compare_ticks(va, vb, mode, out)
+        elif name in _DOUBLE_FIELDS:
+            if _double_bits(va) != _double_bits(vb):
+                out.append(Difference(path, va, vb))
+        elif name == "shadow_cells":
+            if va != vb:
+                out.append(Difference(path, va, vb))
+        elif isinstance(va, (ContactPlaneState, NormalState, PlaneState)) or (
                 isinstance(va, PlacementState) and isinstance(vb, PlacementState)):
             _compare_record(va, vb, path + ".", mode, out)
         elif name == "placement" and (va is None) != (vb is None):

@@ -1,6 +1,6 @@
 """The outcome: what one transition left behind, read the same way from the port and from ACE.
 
-Format ``acconform.outcome/3``. Fields mirror ACE's objects after PhysicsObj.transition's
+Format ``acconform.outcome/4``. Fields mirror ACE's objects after PhysicsObj.transition's
 steps (FindValidPosition and its set-up): SpherePath.CurPos/CurCell, ObjectInfo.State, the
 CollisionInfo fields, the mover's velocity (ObjectInfo.StopVelocity zeroes it), and a few
 SpherePath fields that expose the transition's own state. `error` holds what a side raised
@@ -19,17 +19,25 @@ Position, CurCell, TransientState and ShadowObjects cells afterwards. When the p
 the mover in no cell, the transition is not run, and the transition's fields are the defaults
 of this record (`velocity` and `static_cells` are still read): both sides write that record,
 neither infers it.
+
+`ticks` (``/4``; None for a scene without ticks, whose outcome is still written as ``/3`` or ``/2``)
+holds, for a tick scene, one `TickState` per step: the mover's PhysicsObj read after the step's
+driver returned. A tick scene's transition fields keep this record's defaults (no single
+transition). An exception in a tick is that tick's `error` (its other fields the defaults) and
+ends the scene: later steps have no TickState. An error before the first tick (building the
+world) is the outcome's own `error`, with `ticks` None.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
 
-from .codec import Reader, write_f32, write_id, write_vec
-from .flags import ObjectInfoState, SetPositionError, TransientState, flag_names
+from .codec import Reader, write_f32, write_f64, write_id, write_vec
+from .flags import ObjectInfoState, PhysicsState, SetPositionError, TransientState, flag_names
 from .scene import Frame, IDENTITY, Vec3, check_format
 
-FORMAT = "acconform.outcome/3"
+FORMAT = "acconform.outcome/4"
+FORMAT_V3 = "acconform.outcome/3"  # what an outcome with a placement and no ticks is written as
 FORMAT_V2 = "acconform.outcome/2"  # what an outcome without a placement is written as
 FORMAT_V1 = "acconform.outcome/1"  # read (static_cells not recorded), never written
 ZERO: Vec3 = (0.0, 0.0, 0.0)
@@ -104,6 +112,129 @@ class PlacementState:
 
 
 @dataclass(frozen=True, slots=True)
+class PlaneState:
+    """A System.Numerics Plane read back from ACE (PhysicsObj.ContactPlane): its normal and d."""
+
+    normal: Vec3 = ZERO
+    d: float = 0.0
+
+    def to_json(self):
+        return {"normal": write_vec(self.normal), "d": write_f32(self.d)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "PlaneState":
+        r.obj({"normal", "d"})
+        return PlaneState(_vec_nf(r["normal"]), r["d"].f32(allow_nonfinite=True))
+
+
+Quat = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class TickState:
+    """The mover's PhysicsObj after one tick's driver returned (update_object / the request_pos path)."""
+
+    updated: bool = False               # update_object's / update_object_server's return value
+    update_time: float = 0.0            # PhysicsObj.UpdateTime (double)
+    cell: int = 0                       # Position.ObjCellID
+    cur_cell: int = 0                   # CurCell id (0 when none)
+    origin: Vec3 = ZERO                 # Position.Frame.Origin
+    orientation: Quat = IDENTITY        # Position.Frame.Orientation (w, x, y, z)
+    velocity: Vec3 = ZERO               # Velocity
+    acceleration: Vec3 = ZERO           # Acceleration
+    omega: Vec3 = ZERO                  # Omega
+    cached_velocity: Vec3 = ZERO        # CachedVelocity
+    state: int = 0                      # State (PhysicsState)
+    transient_state: int = 0            # TransientState
+    contact_plane_cell: int = 0         # ContactPlaneCellID
+    contact_plane: PlaneState = PlaneState()  # ContactPlane
+    sliding_normal: Vec3 = ZERO         # SlidingNormal
+    jumped_this_frame: bool = False     # JumpedThisFrame
+    shadow_cells: tuple[int, ...] = ()  # ShadowObjects' cell ids, in order
+    error: str | None = None            # an exception in this tick (later ticks are not run)
+
+    def to_json(self):
+        d = {}
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if f.name in _TICK_IDS:
+                v = write_id(v)
+            elif f.name in _TICK_VECS:
+                v = write_vec(v)
+            elif f.name == "update_time":
+                v = _write_double(v)
+            elif f.name == "state":
+                v = flag_names(PhysicsState, v)
+            elif f.name == "transient_state":
+                v = flag_names(TransientState, v)
+            elif f.name == "shadow_cells":
+                v = [write_id(c) for c in v]
+            elif f.name == "contact_plane":
+                v = v.to_json()
+            elif f.name == "error" and v is None:
+                continue
+            d[f.name] = v
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "TickState":
+        names = [f.name for f in fields(TickState)]
+        r.obj(set(names))
+        kw = {}
+        for name in names:
+            if name == "error":
+                if r.has("error"):
+                    kw[name] = r["error"].str_()
+                continue
+            x = r[name]
+            if name in _TICK_IDS:
+                kw[name] = x.id_()
+            elif name == "orientation":
+                kw[name] = tuple(c.f32(allow_nonfinite=True) for c in x.list(count=4))
+            elif name in _TICK_VECS:
+                kw[name] = _vec_nf(x)
+            elif name == "update_time":
+                kw[name] = _read_double(x)
+            elif name == "state":
+                kw[name] = x.flags(PhysicsState)
+            elif name == "transient_state":
+                kw[name] = x.flags(TransientState)
+            elif name == "shadow_cells":
+                kw[name] = tuple(c.id_() for c in x.list())
+            elif name == "contact_plane":
+                kw[name] = PlaneState.from_json(x)
+            else:
+                kw[name] = x.bool_()
+        return TickState(**kw)
+
+
+_TICK_IDS = frozenset({"cell", "cur_cell", "contact_plane_cell"})
+_TICK_VECS = frozenset({"origin", "orientation", "velocity", "acceleration", "omega", "cached_velocity", "sliding_normal"})
+
+
+def _write_double(v: float):
+    """A double read back from ACE: finite as its shortest round-trip decimal, else its bit pattern."""
+    import math
+    import struct
+
+    if math.isfinite(v):
+        return write_f64(v)
+    return f"0x{struct.unpack('<Q', struct.pack('<d', v))[0]:016x}"
+
+
+def _read_double(r: Reader) -> float:
+    import struct
+
+    v = r.value
+    if isinstance(v, str) and v.lower().startswith("0x") and len(v) == 18:
+        try:
+            return struct.unpack("<d", struct.pack("<Q", int(v, 16)))[0]
+        except ValueError:
+            r.fail(f"expected a number or a double's bit pattern, got {v!r}")
+    return r.f64()
+
+
+@dataclass(frozen=True, slots=True)
 class Outcome:
     ok: bool = False  # FindValidPosition's answer (PhysicsObj.transition returns null when False)
     cell: int = 0  # SpherePath.CurCell id
@@ -124,16 +255,20 @@ class Outcome:
     error: str | None = None
     static_cells: tuple[tuple[int, ...], ...] | None = None  # per static: PhysicsObj.ShadowObjects' cell ids
     placement: PlacementState | None = None  # the mover's placement, for a scene with one
+    ticks: tuple[TickState, ...] | None = None  # per step of a tick scene, the mover after it
 
     @property
     def frame(self) -> Frame:
         return Frame(self.origin, self.orientation)
 
     def to_json(self):
-        d = {"format": FORMAT if self.placement is not None else FORMAT_V2}
+        d = {"format": FORMAT if self.ticks is not None else FORMAT_V3 if self.placement is not None else FORMAT_V2}
         for f in fields(self):
             v = getattr(self, f.name)
-            if f.name == "placement" and v is None:
+            if f.name in ("placement", "ticks") and v is None:
+                continue
+            if f.name == "ticks":
+                d["ticks"] = [t.to_json() for t in v]
                 continue
             if f.name in ("cell", "check_cell"):
                 v = write_id(v)
@@ -155,16 +290,18 @@ class Outcome:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         allowed = names - {"static_cells"} if v1 else names
-        if fmt != FORMAT:
+        if fmt not in (FORMAT, FORMAT_V3):
             allowed = allowed - {"placement"}
+        if fmt != FORMAT:
+            allowed = allowed - {"ticks"}
         r.obj(allowed | {"format"})
-        if not v1 and fmt != FORMAT_V2:
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3):
             check_format(r, FORMAT)
         kw = {}
         for name in names:
             if not r.has(name):
-                if name in ("error", "placement") or (name == "static_cells" and (v1 or name in r.value)):
-                    continue  # absent error/placement: none; static_cells: /1 never has it, /2 may write null
+                if name in ("error", "placement", "ticks") or (name == "static_cells" and (v1 or name in r.value)):
+                    continue  # absent error/placement/ticks: none; static_cells: /1 never has it, /2 may write null
                 r[name]  # raises InvalidScene: missing required field
             x = r[name]
             if name in ("cell", "check_cell"):
@@ -187,6 +324,8 @@ class Outcome:
                 kw[name] = tuple(tuple(c.id_() for c in cells.list()) for cells in x.list())
             elif name == "placement":
                 kw[name] = PlacementState.from_json(x)
+            elif name == "ticks":
+                kw[name] = tuple(TickState.from_json(t) for t in x.list())
             else:
                 kw[name] = x.bool_()
         return Outcome(**kw)

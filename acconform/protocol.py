@@ -74,6 +74,9 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                        "static objects inside EnvCells (DAT stabs, placed when ACE loads the cell)"),
     "mover.placement": (lambda s: s.mover.placement is not None,
                         "the mover placed by ACE's PhysicsObj.SetPosition before the transition (scene/3, outcome/3)"),
+    "ticks": (lambda s: s.ticks is not None,
+              "a tick scene: ACE's per-tick update (update_object or the RequestPos path) moves the mover once per "
+              "step, answered with one TickState per step (scene/4, outcome/4)"),
 }
 
 

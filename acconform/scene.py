@@ -1,9 +1,11 @@
 """The scene: everything one transition needs, as immutable records with a versioned JSON form.
 
-A scene is what both the port and the oracle take. Format ``acconform.scene/3`` (README's
-"Scene format" section documents every field); ``acconform.scene/2`` and ``/1`` files still read
-(a /2 scene is a /3 scene whose mover has no ``placement``; a /1 scene is a /2 scene without indoor
-fields: no environments, no EnvCells, every landblock with terrain). A scene is written in the
+A scene is what both the port and the oracle take. Format ``acconform.scene/4`` (README's
+"Scene format" section documents every field); ``/3``, ``/2`` and ``/1`` files still read (a /3
+scene is a /4 scene without ``ticks``; a /2 scene is a /3 scene whose mover has no ``placement``; a
+/1 scene is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with
+terrain). A scene with ``ticks`` is a tick scene: the mover has no ``end``, and ACE's per-tick
+update (`Ticks.driver`) moves it once per step (issue 19). A scene is written in the
 oldest version that holds it, so files, corpus records and their keys stay as they were. All floats are float32 values held as Python
 floats; ids are uint32. Construction from JSON validates and names the bad field; records built
 in code (e.g. by the strategies) are checked the same way by `validate_scene`.
@@ -15,11 +17,12 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Union
 
-from .codec import Reader, dumps, parse_json_text, write_f32, write_id, write_vec
+from .codec import Reader, dumps, parse_json_text, write_f32, write_f64, write_id, write_vec
 from .errors import InvalidScene
 from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
-FORMAT = "acconform.scene/3"
+FORMAT = "acconform.scene/4"
+FORMAT_V3 = "acconform.scene/3"  # what a scene with a placement and no ticks is written as
 FORMAT_V2 = "acconform.scene/2"  # what a scene without a placement is written as (every /2 reader reads it)
 FORMAT_V1 = "acconform.scene/1"  # what an outdoor scene is written as (every /1 reader reads it)
 
@@ -540,17 +543,128 @@ class Placement:
         return Placement(flags, r["get_cell"].bool_() if r.has("get_cell") else False)
 
 
+DRIVERS = ("update_object", "request_pos")  # PhysicsObj.update_object / the legacy player path (RequestPos)
+
+# a step's inputs, in the order both sides apply them (the clock still at the previous tick's time)
+TICK_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega", "jump", "sequence_velocity",
+               "sequence_omega", "request_pos")
+_TICK_VECTORS = ("velocity", "local_velocity", "omega", "jump", "sequence_velocity", "sequence_omega")
+
+
+@dataclass(frozen=True, slots=True)
+class TickStep:
+    """One tick: the time the clock advances (a double, seconds) and the inputs applied before the
+    tick, in `TICK_INPUTS` order, with the clock still at the previous tick's time: ``state`` and
+    ``transient_state`` set PhysicsObj.State / TransientState; ``velocity``, ``local_velocity`` and
+    ``omega`` call set_velocity / set_local_velocity / set_omega (sendEvent false); ``jump`` runs the
+    physics calls of ACE's Player.HandleActionJump (FastTick branch) with that local jump velocity;
+    ``sequence_velocity`` / ``sequence_omega`` set the PartArray's Sequence velocity / omega (root
+    motion); ``request_pos`` is the RequestPos of the request_pos driver (required there, refused
+    for update_object)."""
+
+    dt: float                                  # double
+    state: int | None = None                   # PhysicsState flags
+    transient_state: int | None = None         # TransientState flags
+    velocity: Vec3 | None = None
+    local_velocity: Vec3 | None = None
+    omega: Vec3 | None = None
+    jump: Vec3 | None = None
+    sequence_velocity: Vec3 | None = None
+    sequence_omega: Vec3 | None = None
+    request_pos: Position | None = None
+
+    def to_json(self):
+        d = {"dt": write_f64(self.dt)}
+        if self.state is not None:
+            d["state"] = flag_names(PhysicsState, self.state)
+        if self.transient_state is not None:
+            d["transient_state"] = flag_names(TransientState, self.transient_state)
+        for name in _TICK_VECTORS:
+            v = getattr(self, name)
+            if v is not None:
+                d[name] = write_vec(v)
+        if self.request_pos is not None:
+            d["request_pos"] = self.request_pos.to_json()
+        return d
+
+    @staticmethod
+    def from_json(r: Reader, driver: str) -> "TickStep":
+        """`driver`: the scene's driver (request_pos needs a RequestPos on every step, update_object refuses one)."""
+        r.obj({"dt", *TICK_INPUTS})
+        dt = r["dt"].f64()
+        if dt < 0:
+            r["dt"].fail(f"a tick's dt is the time the clock advances: 0 or more seconds, got {dt!r}")
+        kw = {}
+        if r.has("state"):
+            kw["state"] = r["state"].flags(PhysicsState)
+        if r.has("transient_state"):
+            kw["transient_state"] = r["transient_state"].flags(TransientState)
+        for name in _TICK_VECTORS:
+            if r.has(name):
+                kw[name] = r[name].vec3()
+        if driver == "request_pos":
+            if not r.has("request_pos"):
+                raise InvalidScene(_p(r.path, "request_pos"), "missing: driver request_pos moves the mover to a "
+                                   "RequestPos on every tick (give each step one, or use driver update_object)")
+            kw["request_pos"] = Position.from_json(r["request_pos"])
+        elif r.has("request_pos"):
+            r["request_pos"].fail("driver update_object moves the mover by its own velocity and root motion: "
+                                  "a RequestPos belongs to driver request_pos")
+        return TickStep(dt, **kw)
+
+
+@dataclass(frozen=True, slots=True)
+class Ticks:
+    """A tick scene's timeline: the driver, the clock when the mover is made (Timers.PortalYearTicks,
+    double seconds) and one step per tick, in order."""
+
+    driver: str                                # "update_object" | "request_pos"
+    start: float                               # double
+    steps: tuple[TickStep, ...]
+
+    def times(self) -> tuple[float, ...]:
+        """The clock of each tick: ``t = start; t = t + dt`` per step, in double arithmetic, computed
+        here once (the harness's clock, not a physics rule): the oracle packs these absolute values
+        and the port runs on the same ones."""
+        out = []
+        t = float(self.start)
+        for s in self.steps:
+            t = t + float(s.dt)
+            out.append(t)
+        return tuple(out)
+
+    def to_json(self):
+        return {"driver": self.driver, "start": write_f64(self.start), "steps": [s.to_json() for s in self.steps]}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Ticks":
+        r.obj({"driver", "start", "steps"})
+        driver = r["driver"].str_()
+        if driver not in DRIVERS:
+            r["driver"].fail(f"unknown driver {driver!r} (known: {', '.join(DRIVERS)})")
+        start = r["start"].f64()
+        steps = r["steps"].list()
+        if not steps:
+            r["steps"].fail("a tick scene needs at least one step (one per tick)")
+        ticks = Ticks(driver, start, tuple(TickStep.from_json(s, driver) for s in steps))
+        times = ticks.times()
+        if not math.isfinite(times[-1]):
+            r["steps"].fail(f"the clock overflows: start plus the steps' dt reaches {times[-1]}")
+        return ticks
+
+
 DEFAULT_MOVER_STATE = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
 DEFAULT_MOVER_TRANSIENT = int(TransientState.Contact | TransientState.OnWalkable)
 
 
 @dataclass(frozen=True, slots=True)
 class Mover:
-    """The moving PhysicsObj: its Setup spheres and step heights, flags, and the path to try."""
+    """The moving PhysicsObj: its Setup spheres and step heights, flags, and the path to try
+    (`end`; None in a tick scene, whose ticks move the mover)."""
 
     spheres: tuple[SphereRec, ...]
     begin: Position
-    end: Position
+    end: Position | None
     step_up_height: float
     step_down_height: float
     scale: float = 1.0
@@ -567,7 +681,9 @@ class Mover:
              "state": flag_names(PhysicsState, self.state),
              "transient_state": flag_names(TransientState, self.transient_state),
              "velocity": write_vec(self.velocity),
-             "begin": self.begin.to_json(), "end": self.end.to_json()}
+             "begin": self.begin.to_json()}
+        if self.end is not None:
+            d["end"] = self.end.to_json()
         if self.contact_plane is not None:
             d["contact_plane"] = self.contact_plane.to_json()
         if self.sliding_normal is not None:
@@ -577,10 +693,13 @@ class Mover:
         return d
 
     @staticmethod
-    def from_json(r: Reader, placement: bool = True) -> "Mover":
-        """`placement`: the format may hold one (scene/3)."""
+    def from_json(r: Reader, placement: bool = True, ticks: bool = False) -> "Mover":
+        """`placement`: the format may hold one (scene/3 and later). `ticks`: the scene is a tick
+        scene, whose mover has no end."""
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
-            r["placement"].fail(f"a placement needs format {FORMAT!r} (older formats have no placement)")
+            r["placement"].fail(f"a placement needs format {FORMAT_V3!r} or later (older formats have no placement)")
+        if ticks and isinstance(r.value, dict) and "end" in r.value:
+            r["end"].fail("a tick scene's mover has no end: its ticks move it (omit end)")
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
@@ -595,7 +714,7 @@ class Mover:
         return Mover(
             spheres=spheres,
             begin=Position.from_json(r["begin"]),
-            end=Position.from_json(r["end"]),
+            end=None if ticks else Position.from_json(r["end"]),
             step_up_height=up,
             step_down_height=down,
             scale=scale,
@@ -621,6 +740,7 @@ class Scene:
     name: str = ""
     environments: tuple[Environment, ...] = ()
     env_cells: tuple[EnvCell, ...] = ()
+    ticks: Ticks | None = None  # a tick scene: ACE's per-tick update moves the mover (scene/4)
 
     @property
     def indoor(self) -> bool:
@@ -629,9 +749,11 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/3 for a placement, /2 indoors, else /1)."""
-        if self.mover.placement is not None:
+        """The oldest format that holds the scene (/4 for ticks, /3 for a placement, /2 indoors, else /1)."""
+        if self.ticks is not None:
             return FORMAT
+        if self.mover.placement is not None:
+            return FORMAT_V3
         return FORMAT_V2 if self.indoor else FORMAT_V1
 
     def to_json(self):
@@ -649,6 +771,8 @@ class Scene:
         if self.env_cells:
             d["env_cells"] = [c.to_json() for c in self.env_cells]
         d["mover"] = self.mover.to_json()
+        if self.ticks is not None:
+            d["ticks"] = self.ticks.to_json()
         return d
 
     def dumps(self) -> str:
@@ -663,8 +787,11 @@ class Scene:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         indoor = () if v1 else ("environments", "env_cells")
-        r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor})
-        if not v1 and fmt != FORMAT_V2:
+        ticks_field = ("ticks",) if fmt == FORMAT else ()
+        if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3) and "ticks" in doc:
+            r["ticks"].fail(f"ticks need format {FORMAT!r} (older formats have no ticks)")
+        r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field})
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.has("name") else ""
         mode = "server"
@@ -684,8 +811,9 @@ class Scene:
             environments = tuple(Environment.from_json(e) for e in r["environments"].list())
         if r.has("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
-        mover = Mover.from_json(r["mover"], placement=fmt == FORMAT)
-        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells)
+        ticks = Ticks.from_json(r["ticks"]) if r.has("ticks") else None
+        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT), ticks=ticks is not None)
+        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks)
         check_consistency(scene, path)
         return scene
 
@@ -742,10 +870,16 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         where = _p(path, "mover.contact_plane.cell")
         _check_cell_id(where, scene.mover.contact_plane.cell)
         check_landblock(where, scene.mover.contact_plane.cell)
-    end = _p(path, "mover.end.cell")
-    _check_cell_id(end, scene.mover.end.cell)
-    if scene.mover.end.cell & 0xFFFF >= ENV_CELL_FIRST:  # an outdoor end may lie in a landblock not listed (ACE's verdict)
-        check_landblock(end, scene.mover.end.cell)
+    if scene.ticks is None:
+        end = _p(path, "mover.end.cell")
+        if scene.mover.end is None:
+            raise InvalidScene(end[:-len(".cell")], "missing: a scene without ticks moves the mover from begin to end "
+                                                    "(only a tick scene's mover has no end)")
+        _check_cell_id(end, scene.mover.end.cell)
+        if scene.mover.end.cell & 0xFFFF >= ENV_CELL_FIRST:  # an outdoor end may lie in a landblock not listed (ACE's verdict)
+            check_landblock(end, scene.mover.end.cell)
+    else:
+        _check_ticks(scene, path, check_landblock, env_cells)
     ids = set()
     for i, o in enumerate(scene.objects):
         where = _p(path, f"objects[{i}]")
@@ -763,6 +897,25 @@ def check_consistency(scene: Scene, path: str = "") -> None:
             if o.scale != 1.0:
                 raise InvalidScene(f"{where}.scale", f"a static in an EnvCell is a DAT stab: ACE's "
                                    f"EnvCell.init_static_objects sets no scale (omit it, or give 1), got {o.scale}")
+
+
+def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> None:
+    """A tick scene runs in client mode, and each RequestPos names a cell the scene defines."""
+    if scene.mover.end is not None:
+        raise InvalidScene(_p(path, "mover.end"), "a tick scene's mover has no end: its ticks move it (omit end)")
+    if scene.engine_mode != "client":
+        raise InvalidScene(_p(path, "engine.mode"), "a tick scene needs engine mode client: in server mode the "
+                           "mover's change of cell goes through ACE's change_cell_server -> enter_cell_server, whose "
+                           "visibility update (ObjectMaint.GetVisibleObjects) reads the landblock's adjacent landblocks, "
+                           "which only a running server's LandblockManager sets; a scene does not carry them")
+    for i, step in enumerate(scene.ticks.steps):
+        if step.request_pos is None:
+            continue
+        where = _p(path, f"ticks.steps[{i}].request_pos.cell")
+        cell = step.request_pos.cell
+        _check_cell_id(where, cell)
+        check_landblock(where, cell)
+        _check_defined(where, cell, env_cells, "set_current_pos moves the mover into it (LScape.get_landcell)")
 
 
 def _check_indoor(scene: Scene, path: str, defined: set[int]) -> dict[int, EnvCell]:

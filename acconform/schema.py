@@ -143,6 +143,32 @@ def _sample():
     return scenes, [run_scene(s) for s in scenes]
 
 
+def _tick_scenes(scene):
+    """Tick scenes (scene/4) made from a sampled scene: each driver, every input of a step once."""
+    from dataclasses import replace
+
+    from .flags import PhysicsState, TransientState
+    from .scene import Ticks, TickStep
+
+    m = replace(scene.mover, end=None)
+    every = TickStep(1 / 30, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
+                     velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0),
+                     jump=(0.0, 0.0, 4.0), sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
+    return [replace(scene, engine_mode="client", mover=m, name="ticks", ticks=Ticks("update_object", 1000.0, (every, TickStep(0.25)))),
+            replace(scene, engine_mode="client", mover=m, ticks=Ticks("request_pos", 0.0, (
+                TickStep(0.1, request_pos=scene.mover.begin),)))]
+
+
+def _tick_outcomes() -> list:
+    """A tick scene's outcome: a TickState of every field, and a tick ended by an error."""
+    from .outcome import Outcome, PlaneState, TickState
+
+    state = TickState(True, 1000.1, 0xA9B40001, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0), (0.0, 2.0, 0.0),
+                      (0.0, 0.0, -9.8), (0.0, 0.0, 0.0), (0.0, 2.0, 0.0), 0x400, 0x83, 0xA9B40001,
+                      PlaneState((0.0, 0.0, 1.0), -20.0), (0.0, 0.0, 0.0), False, (0xA9B40001,))
+    return [Outcome(static_cells=(), ticks=(state, TickState(error="NullReferenceException: an example")))]
+
+
 def _every_optional_field(scene):
     """Variants of a sampled scene that write the fields samples may leave out (name, a height
     table, a sliding normal, a velocity) or omit ones they always write."""
@@ -156,14 +182,18 @@ def _every_optional_field(scene):
 
 def schemas() -> tuple[dict, dict]:
     """(scene schema, outcome schema), inferred from the records' JSON for the fixed sample."""
-    from .outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V2 as OUTCOME_FORMAT_V2, Outcome
-    from .scene import FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2
+    from .outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V2 as OUTCOME_FORMAT_V2, FORMAT_V3 as OUTCOME_FORMAT_V3, Outcome
+    from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
+                        FORMAT_V3 as SCENE_FORMAT_V3)
 
     scenes, outcomes = _sample()
+    scenes += _tick_scenes(scenes[0])
     s = _Inferrer(nonfinite_floats=False)
-    # an outdoor scene is written as /1, an indoor one as /2, one with a placement as /3
-    scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene", (SCENE_FORMAT_V1, SCENE_FORMAT_V2, SCENE_FORMAT))
+    # an outdoor scene is written as /1, an indoor one as /2, one with a placement as /3, a tick scene as /4
+    scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene",
+                     (SCENE_FORMAT_V1, SCENE_FORMAT_V2, SCENE_FORMAT_V3, SCENE_FORMAT))
     o = _Inferrer(nonfinite_floats=True)
-    docs = [x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
-    outcome = o.finish(o._plain(docs), "acconform outcome", (OUTCOME_FORMAT_V2, OUTCOME_FORMAT))
+    docs = ([x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
+            + [x.to_json() for x in _tick_outcomes()])
+    outcome = o.finish(o._plain(docs), "acconform outcome", (OUTCOME_FORMAT_V2, OUTCOME_FORMAT_V3, OUTCOME_FORMAT))
     return scene, outcome

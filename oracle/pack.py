@@ -10,12 +10,12 @@ from __future__ import annotations
 import struct
 from dataclasses import fields
 
-from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState
+from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from ..dat import cell_dat_records, environment_records, mover_records, static_records
-from ..scene import Landblock, Scene
+from ..scene import DRIVERS, TICK_INPUTS, Landblock, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 6
+PACK_VERSION = 7
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -73,11 +73,43 @@ def _object(o, index: int) -> bytes:
 
 
 _HEAD = struct.Struct("<iB")
+_NO_END = Position(0, Frame((0.0, 0.0, 0.0)))  # a tick scene's mover has no end: the facade reads none
+_TICKS_HEAD = struct.Struct("<BBdi")
+_STEP_HEAD = struct.Struct("<dI")
+_U32 = struct.Struct("<I")
+_POS_S = struct.Struct("<" + "I3f4f")
+
+
+def _ticks(ticks: Ticks | None) -> bytes:
+    """byte 0 (not a tick scene), or 1, the driver (its index in scene.DRIVERS), the start clock (double), the
+    number of steps, and per step: its absolute clock value from `Ticks.times()` (double, computed once by the
+    record), a mask of the inputs present (bit i: TICK_INPUTS[i]) and their values in that order."""
+    if ticks is None:
+        return b"\0"
+    out = [_TICKS_HEAD.pack(1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
+    for step, time in zip(ticks.steps, ticks.times()):
+        mask = 0
+        values = []
+        for bit, name in enumerate(TICK_INPUTS):
+            v = getattr(step, name)
+            if v is None:
+                continue
+            mask |= 1 << bit
+            if name in ("state", "transient_state"):
+                values.append(_U32.pack(v))
+            elif name == "request_pos":
+                values.append(_POS_S.pack(*_pos(v)))
+            else:
+                values.append(_3f.pack(*v))
+        out.append(_STEP_HEAD.pack(time, mask))
+        out += values
+    return b"".join(out)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiB")
 
 
 def pack_scene(scene: Scene) -> bytes:
     out = [_HEAD.pack(PACK_VERSION, 1 if scene.engine_mode == "server" else 0),
+           _ticks(scene.ticks),
            _table_bytes(scene.land_height_table),
            struct.pack("<i", len(scene.landblocks))]
     for lb in scene.landblocks:
@@ -97,7 +129,8 @@ def pack_scene(scene: Scene) -> bytes:
     pl = m.placement
     plv = (0, 0, 0) if pl is None else (1, pl.flags, 1 if pl.get_cell else 0)
     out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
-                           *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end), *plv))
+                           *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end if m.end is not None else _NO_END),
+                           *plv))
     return b"".join(out)
 
 
@@ -151,15 +184,51 @@ _PLACED = struct.Struct("<iI3f4fIIi")
 def _placement(data, pos: int):
     """byte 0 (none), or 1 then SetPositionError, Position.ObjCellID, origin, orientation (w x y z), CurCell id,
     TransientState, int n and the n ShadowObjects cell ids (Facade.WritePlacement)."""
+    return _placement_at(data, pos)[0]
+
+
+def _placement_at(data, pos: int):
+    """(`_placement`, the offset after it)."""
     if data[pos] in (0, b"\0"):
-        return None
+        return None, pos + 1
     v = _PLACED.unpack_from(data, pos + 1)
-    shadows = struct.unpack_from(f"<{v[11]}I", data, pos + 1 + _PLACED.size)
-    return PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows))
+    at = pos + 1 + _PLACED.size
+    shadows = struct.unpack_from(f"<{v[11]}I", data, at)
+    return PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows)), at + 4 * v[11]
+
+
+# a tick's state (Facade.WriteTick, after its byte 0): updated, UpdateTime, Position.ObjCellID, CurCell id, origin,
+# orientation (w x y z), Velocity, Acceleration, Omega, CachedVelocity, State, TransientState, ContactPlaneCellID,
+# ContactPlane (normal, d), SlidingNormal, JumpedThisFrame, then int n and the n ShadowObjects cell ids
+_TICK = struct.Struct("<BdII3f4f3f3f3f3fIII3ff3fBi")
+
+
+def _ticks_at(data, pos: int):
+    """int n (-1: not a tick scene), then per tick byte 0 and its state, or byte 1, int length and the error
+    message (the last tick: an error ends the scene). Returns the TickStates or None."""
+    (n,) = _I32.unpack_from(data, pos)
+    pos += 4
+    if n < 0:
+        return None
+    out = []
+    for _ in range(n):
+        if data[pos] not in (0, b"\0"):
+            (k,) = _I32.unpack_from(data, pos + 1)
+            out.append(TickState(error=bytes(data[pos + 5:pos + 5 + k]).decode("utf-8", "replace")))
+            pos += 5 + k
+            continue
+        v = _TICK.unpack_from(data, pos + 1)
+        pos += 1 + _TICK.size
+        shadows = struct.unpack_from(f"<{v[34]}I", data, pos)
+        pos += 4 * v[34]
+        out.append(TickState(bool(v[0]), v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23],
+                             v[23], v[24], v[25], PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), tuple(shadows)))
+    return tuple(out)
 
 
 _NO_TRANSITION = struct.Struct("<B3fd")  # tag 2 (placed in no cell): the mover's velocity, FVP time 0
 _AFTER = struct.Struct("<diidd")  # the whole case, then the counters
+_TICK_SCENE = struct.Struct("<Bd")  # tag 3 (a tick scene: no single transition): FVP time 0
 
 
 _RAW = struct.Struct("<38x22s22s13s13s")  # the same four records' bytes: exact (bitwise) cache keys
@@ -194,6 +263,14 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         msg = bytes(data[offset + 5:offset + 5 + n]).decode("utf-8", "replace")
         us, case_us, built, reused, build_us, trans_us = _TAIL.unpack_from(data, offset + 5 + n)
         return Outcome(error=msg), us, case_us, (built, reused, build_us, trans_us)
+    if tag == 3 or tag == b"\x03":
+        _tag, us = _TICK_SCENE.unpack_from(data, offset)
+        at = offset + _TICK_SCENE.size
+        case_us, built, reused, build_us, trans_us = _AFTER.unpack_from(data, at)
+        cells, at = _static_cells(data, at + _AFTER.size)
+        placement, at = _placement_at(data, at)
+        return (Outcome(static_cells=cells, placement=placement, ticks=_ticks_at(data, at)),
+                us, case_us, (built, reused, build_us, trans_us))
     if tag == 2 or tag == b"\x02":
         _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)
         at = offset + _NO_TRANSITION.size
@@ -210,5 +287,5 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
     cells, at = _static_cells(data, offset + _OUT.size)
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
                           bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None,
-                          cells, _placement(data, at)),
+                          cells, _placement(data, at), None),
             v[42], v[43], (v[44], v[45], v[46], v[47]))

@@ -17,7 +17,8 @@ def test_the_outcome_schema_names_and_requires_every_outcome_field(generated):
     _, outcome = generated
     names = {f.name for f in fields(Outcome)}
     assert set(outcome["properties"]) == names | {"format"}
-    assert set(outcome["required"]) == names - {"placement"} | {"format"}  # only a placed scene's outcome has one
+    # only a placed scene's outcome has a placement, only a tick scene's has ticks
+    assert set(outcome["required"]) == names - {"placement", "ticks"} | {"format"}
     assert {s.get("type") for s in outcome["properties"]["error"]["anyOf"]} == {"null", "string"}
 
 
@@ -35,7 +36,7 @@ def test_the_scene_schema_covers_every_field_a_scene_writes_and_the_bsp_tree_rec
 def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(generated):
     scene, _ = generated
     props = scene["properties"]
-    assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2", "acconform.scene/3"]}
+    assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2", "acconform.scene/3", "acconform.scene/4"]}
     assert {"environments", "env_cells"} <= set(props) and not {"environments", "env_cells"} & set(scene["required"])
     landblock = props["landblocks"]["items"]
     assert landblock["required"] == ["id"] and {"heights", "terrain"} <= set(landblock["properties"])
@@ -44,3 +45,19 @@ def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(g
     assert {"polygon", "other_cell", "other_portal", "flags"} <= set(cell["portals"]["items"]["properties"])
     structure = props["environments"]["items"]["properties"]["cell_structs"]["items"]["properties"]
     assert set(structure) == {"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"}
+
+
+def test_the_schemas_name_every_tick_record_field_and_the_tick_formats(generated):
+    from acconform.outcome import TickState
+    from acconform.scene import TICK_INPUTS
+
+    scene, outcome = generated
+    ticks = scene["properties"]["ticks"]
+    assert "ticks" not in scene["required"] and set(ticks["required"]) == {"driver", "start", "steps"}
+    step = ticks["properties"]["steps"]["items"]
+    assert set(step["properties"]) == {"dt", *TICK_INPUTS} and step["required"] == ["dt"]
+    assert "end" not in scene["properties"]["mover"]["required"]  # a tick scene's mover has none
+    tick = outcome["properties"]["ticks"]["items"]
+    assert set(tick["properties"]) == {f.name for f in fields(TickState)}
+    assert set(tick["required"]) == {f.name for f in fields(TickState)} - {"error"}  # an errored tick writes the defaults
+    assert outcome["properties"]["format"] == {"enum": ["acconform.outcome/2", "acconform.outcome/3", "acconform.outcome/4"]}

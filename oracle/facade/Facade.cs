@@ -36,7 +36,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 6;
+        public const int PackVersion = 7;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -69,6 +69,25 @@ namespace Acconform.Oracle
         static Vector3 placedOrigin;
         static Quaternion placedOrientation;
         static readonly List<uint> placedShadowCells = new List<uint>();
+
+        // a tick scene (scene/4): its driver (0 update_object, 1 request_pos), the clock when the mover is made,
+        // and per step the absolute clock value (Ticks.times()) and the inputs applied before it
+        sealed class TickStep
+        {
+            public double Time;
+            public uint Mask;  // bit i: input i of acconform.scene.TICK_INPUTS is present
+            public uint State, Transient;
+            public Vector3 Velocity, LocalVelocity, Omega, Jump, SequenceVelocity, SequenceOmega;
+            public ACE.Server.Physics.Common.Position RequestPos;
+        }
+        static bool hasTicks;
+        static byte tickDriver;
+        static double tickStart;
+        static readonly List<TickStep> tickSteps = new List<TickStep>();
+        static int ticksRun;  // -1: not a tick scene (or an error before the first tick)
+        static readonly MemoryStream tickStream = new MemoryStream(4096);
+        static readonly BinaryWriter tickWriter = new BinaryWriter(tickStream);
+        static Action<double> setPortalYearTicks;
 
         static readonly List<Tuple<int, int>> tableUsed = new List<Tuple<int, int>>();
         static bool tableCleared;
@@ -229,6 +248,8 @@ namespace Acconform.Oracle
             buildMicros = transitionMicros = 0;
             staticCells = null;
             placed = false;
+            ticksRun = -1;
+            tickStream.SetLength(0);
             var total = Stopwatch.StartNew();
             try
             {
@@ -240,7 +261,15 @@ namespace Acconform.Oracle
                     Place(obj, mover.Item2);
                     oldPos = new ACE.Server.Physics.Common.Position(obj.Position);
                 }
-                if (!hasPlacement || obj.CurCell != null)
+                if (hasTicks)
+                {
+                    // a tick scene: ACE's per-tick update moves the mover (it enters cells: it leaves them after the scene)
+                    placedMover = obj;
+                    RunTicks(obj);
+                    w.Write((byte)3);
+                    w.Write(0.0);
+                }
+                else if (!hasPlacement || obj.CurCell != null)
                 {
                     var ok = RunTransition(obj, oldPos, mover.Item3, out var trans, out fvpMicros);
                     WriteOutcome(w, ok, trans, obj, fvpMicros);
@@ -256,6 +285,7 @@ namespace Acconform.Oracle
                 while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
                 staticCells = null;  // an error outcome carries no registration
                 placed = false;  // nor a placement
+                ticksRun = -1;  // nor ticks
                 outcome.Position = start;
                 outcome.SetLength(start);
                 w.Write((byte)0xEE);
@@ -273,6 +303,152 @@ namespace Acconform.Oracle
             w.Write(transitionMicros);
             WriteStaticCells(w, staticCells);
             WritePlacement(w);
+            w.Write(ticksRun);
+            if (ticksRun > 0) w.Write(tickStream.GetBuffer(), 0, (int)tickStream.Length);
+        }
+
+        // ------------------------------------------------------------------ ticks
+        /// <summary>Timers.PortalYearTicks, the clock PhysicsTimer.CurrentTime reads, through its internal setter
+        /// (reflection): a tick scene's clock is scene data, never the wall clock.</summary>
+        static void SetClock(double t)
+        {
+            if (setPortalYearTicks == null)
+            {
+                var setter = typeof(ACE.Server.Entity.Timers).GetProperty("PortalYearTicks", BindingFlags.Public | BindingFlags.Static)
+                    .GetSetMethod(true);
+                setPortalYearTicks = (Action<double>)Delegate.CreateDelegate(typeof(Action<double>), setter);
+            }
+            setPortalYearTicks(t);
+        }
+
+        /// <summary>byte 0: not a tick scene; or 1, the driver byte, the start (double), int n and per step: its
+        /// absolute clock (double), the input mask, then the present inputs in TICK_INPUTS order.</summary>
+        static void ReadTicks(BinaryReader r)
+        {
+            tickSteps.Clear();
+            hasTicks = r.ReadByte() != 0;
+            if (!hasTicks) return;
+            tickDriver = r.ReadByte();
+            tickStart = r.ReadDouble();
+            var n = r.ReadInt32();
+            for (var i = 0; i < n; i++)
+            {
+                var s = new TickStep { Time = r.ReadDouble(), Mask = r.ReadUInt32() };
+                if ((s.Mask & 1) != 0) s.State = r.ReadUInt32();
+                if ((s.Mask & 2) != 0) s.Transient = r.ReadUInt32();
+                if ((s.Mask & 4) != 0) s.Velocity = V3(r);
+                if ((s.Mask & 8) != 0) s.LocalVelocity = V3(r);
+                if ((s.Mask & 16) != 0) s.Omega = V3(r);
+                if ((s.Mask & 32) != 0) s.Jump = V3(r);
+                if ((s.Mask & 64) != 0) s.SequenceVelocity = V3(r);
+                if ((s.Mask & 128) != 0) s.SequenceOmega = V3(r);
+                if ((s.Mask & 256) != 0) s.RequestPos = Pos(r);
+                tickSteps.Add(s);
+            }
+        }
+
+        /// <summary>Per step: the inputs (the clock still at the previous tick's time), the clock set to the step's
+        /// time, the driver, then the mover read back. An exception ACE throws is that tick's error and ends the
+        /// scene.</summary>
+        static void RunTicks(PhysicsObj obj)
+        {
+            ticksRun = 0;
+            foreach (var step in tickSteps)
+            {
+                bool updated;
+                try
+                {
+                    ApplyInputs(obj, step);
+                    SetClock(step.Time);
+                    updated = tickDriver == 0 ? obj.update_object() : UpdateObjectServer(obj, step.RequestPos);
+                }
+                catch (Exception e)
+                {
+                    while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
+                    var msg = Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
+                    tickWriter.Write((byte)1);
+                    tickWriter.Write(msg.Length);
+                    tickWriter.Write(msg);
+                    ticksRun++;
+                    return;
+                }
+                WriteTick(obj, updated);
+                ticksRun++;
+            }
+        }
+
+        static void ApplyInputs(PhysicsObj obj, TickStep s)
+        {
+            if ((s.Mask & 1) != 0) obj.State = (PhysicsState)s.State;
+            if ((s.Mask & 2) != 0) obj.TransientState = (TransientStateFlags)s.Transient;
+            if ((s.Mask & 4) != 0) obj.set_velocity(s.Velocity, false);
+            if ((s.Mask & 8) != 0) obj.set_local_velocity(s.LocalVelocity, false);
+            if ((s.Mask & 16) != 0) obj.set_omega(s.Omega, false);
+            if ((s.Mask & 32) != 0) Jump(obj, s.Jump);
+            if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
+            if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
+        }
+
+        /// <summary>The physics calls of Player.HandleActionJump's FastTick branch with a local jump velocity. The
+        /// mover has no MovementManager (as every manager, null on both sides): IsMovingOrAnimating is ACE's own
+        /// property, and when it reaches its MovementManager terms (every term before them false) it counts as not
+        /// moving; MotionInterpreter.PendingMotions.Clear() has no interpreter to clear.</summary>
+        static void Jump(PhysicsObj obj, Vector3 velocity)
+        {
+            bool moving;
+            try { moving = obj.IsMovingOrAnimating; }
+            catch (NullReferenceException) { moving = false; }
+            if (!moving)
+                obj.UpdateTime = PhysicsTimer.CurrentTime;
+            obj.TransientState &= ~(TransientStateFlags.Contact | TransientStateFlags.WaterContact);
+            obj.calc_acceleration();
+            obj.set_on_walkable(false);
+            obj.set_local_velocity(velocity, false);
+            obj.RemoveLinkAnimations();
+            obj.IsAnimating = false;
+        }
+
+        /// <summary>The legacy player path: RequestPos = the step's, then the body of update_object_server(forcePos:
+        /// true) as ACE runs it for a player's WorldObject that is not teleporting (the mover has no WorldObject, so
+        /// ACE's own method would skip UpdateObjectInternalServer).</summary>
+        static bool UpdateObjectServer(PhysicsObj obj, ACE.Server.Physics.Common.Position requestPos)
+        {
+            obj.RequestPos = new ACE.Server.Physics.Common.Position(requestPos);
+            var deltaTime = PhysicsTimer.CurrentTime - obj.UpdateTime;
+            var success = obj.UpdateObjectInternalServer(deltaTime);
+            if (success)
+                obj.set_current_pos(obj.RequestPos);
+            if ((obj.TransientState & TransientStateFlags.Contact) != 0)
+                obj.CachedVelocity = Vector3.Zero;
+            obj.UpdateTime = PhysicsTimer.CurrentTime;
+            return success;
+        }
+
+        /// <summary>byte 0, then the TickState fields (acconform.outcome.TickState, in order).</summary>
+        static void WriteTick(PhysicsObj obj, bool updated)
+        {
+            var w = tickWriter;
+            w.Write((byte)0);
+            w.Write((byte)(updated ? 1 : 0));
+            w.Write(obj.UpdateTime);
+            w.Write(obj.Position.ObjCellID);
+            w.Write(obj.CurCell != null ? obj.CurCell.ID : 0u);
+            W3(w, obj.Position.Frame.Origin);
+            var q = obj.Position.Frame.Orientation;
+            w.Write(q.W); w.Write(q.X); w.Write(q.Y); w.Write(q.Z);
+            W3(w, obj.Velocity);
+            W3(w, obj.Acceleration);
+            W3(w, obj.Omega);
+            W3(w, obj.CachedVelocity);
+            w.Write((uint)obj.State);
+            w.Write((uint)obj.TransientState);
+            w.Write(obj.ContactPlaneCellID);
+            W3(w, obj.ContactPlane.Normal);
+            w.Write(obj.ContactPlane.D);
+            W3(w, obj.SlidingNormal);
+            w.Write((byte)(obj.JumpedThisFrame ? 1 : 0));
+            w.Write(obj.ShadowObjects.Count);
+            foreach (var id in obj.ShadowObjects.Keys) w.Write(id);
         }
 
         /// <summary>byte 0 (no placement), or 1 then SetPositionError, Position.ObjCellID, its frame (origin, then
@@ -571,6 +747,9 @@ namespace Acconform.Oracle
             if (r.ReadInt32() != PackVersion) throw new InvalidDataException("acconform facade: pack version mismatch");
             var server = r.ReadByte() != 0;
             Reset(server);
+            ReadTicks(r);
+            if (hasTicks)
+                SetClock(tickStart);  // Timers.PortalYearTicks = ticks.start before anything is made
 
             var table = ReadHeightTable(r);
             LandDefs.LandHeightTable = table;

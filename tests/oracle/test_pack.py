@@ -118,8 +118,8 @@ def test_a_packed_scene_carries_its_indoor_records_after_its_landblocks():
 
     scene = room_with_static()
     data = pack_scene(scene)
-    version, _server = struct.unpack_from("<iB", data)
-    pos = 5 + 256 * 4
+    version, _server, ticks = struct.unpack_from("<iBB", data)
+    pos = 6 + 256 * 4
     (nlb,) = struct.unpack_from("<i", data, pos)
     pos += 4 + nlb * (4 + 252)
     (n,) = struct.unpack_from("<i", data, pos)
@@ -130,7 +130,72 @@ def test_a_packed_scene_carries_its_indoor_records_after_its_landblocks():
         got.append((kind, ident, bytes(data[pos + 9:pos + 9 + length])))
         pos += 9 + length
     want = dat.environment_records(scene) + dat.cell_dat_records(scene)
-    assert version == PACK_VERSION == 6 and nlb == 1
+    assert version == PACK_VERSION == 7 and nlb == 1 and ticks == 0
     assert got == [({"Environment": 2, "EnvCell": 3, "LandblockInfo": 4}[r.kind], r.id, r.data) for r in want]
     assert struct.unpack_from("<i", data, pos) == (1,)  # then the statics, as before
-    assert struct.unpack_from("<i", pack_scene(PROBE["flat 1-step walk"]), 5 + 1024 + 4 + 256) == (0,)
+    assert struct.unpack_from("<i", pack_scene(PROBE["flat 1-step walk"]), 6 + 1024 + 4 + 256) == (0,)
+
+
+def _tick_scene():
+    from acconform.case import load_document
+
+    from pathlib import Path
+
+    return load_document(Path(__file__).parents[2] / "examples" / "tick_jump.json")
+
+
+def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_after_the_header():
+    from dataclasses import replace
+
+    from acconform.flags import PhysicsState, TransientState
+    from acconform.scene import Frame, Position, TickStep, Ticks
+
+    scene = _tick_scene()
+    scene = replace(scene, ticks=Ticks("request_pos", 1234.5, (
+        TickStep(0.1, state=int(PhysicsState.Gravity), velocity=(1.0, 2.0, 3.0), jump=(0.0, 0.5, 4.0),
+                 request_pos=Position(0xA9B40001, Frame((12.0, 12.5, 20.0)))),
+        TickStep(0.2, transient_state=int(TransientState.Active), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0),
+                 sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, -1.0),
+                 request_pos=Position(0xA9B40009, Frame((12.0, 24.5, 20.0), (0.0, 0.0, 0.0, 1.0)))))))
+    data = pack_scene(scene)
+    t1, t2 = scene.ticks.times()
+    assert (t1, t2) == (1234.5 + 0.1, 1234.5 + 0.1 + 0.2)  # the record's double sums, packed as they are
+    want = (struct.pack("<BBdi", 1, 1, 1234.5, 2)
+            + struct.pack("<dI", t1, 1 | 4 | 32 | 256) + struct.pack("<I", int(PhysicsState.Gravity))
+            + struct.pack("<3f3f", 1.0, 2.0, 3.0, 0.0, 0.5, 4.0) + struct.pack("<I3f4f", 0xA9B40001, 12.0, 12.5, 20.0, 1, 0, 0, 0)
+            + struct.pack("<dI", t2, 2 | 8 | 16 | 64 | 128 | 256) + struct.pack("<I", int(TransientState.Active))
+            + struct.pack("<12f", 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 3.0, 0.0, 0.0, 0.0, -1.0)
+            + struct.pack("<I3f4f", 0xA9B40009, 12.0, 24.5, 20.0, 0, 0, 0, 1))
+    assert data[5:5 + len(want)] == want
+    assert data[5 + len(want):5 + len(want) + 1024] == struct.pack("<256f", *scene.land_height_table)
+    # the mover has no end: an empty position is packed where a transition scene's end goes
+    assert data[-6 - 32:-6] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+
+
+def _tick_bytes(t):
+    from acconform.oracle.pack import _TICK
+
+    if t.error is not None:
+        msg = t.error.encode()
+        return b"\1" + struct.pack("<i", len(msg)) + msg
+    return b"\0" + _TICK.pack(t.updated, t.update_time, t.cell, t.cur_cell, *t.origin, *t.orientation, *t.velocity,
+                              *t.acceleration, *t.omega, *t.cached_velocity, t.state, t.transient_state,
+                              t.contact_plane_cell, *t.contact_plane.normal, t.contact_plane.d, *t.sliding_normal,
+                              t.jumped_this_frame, len(t.shadow_cells)) + struct.pack(f"<{len(t.shadow_cells)}I", *t.shadow_cells)
+
+
+def test_unpacking_a_tick_scene_reads_every_tick_state_and_the_error_that_ended_it():
+    from acconform.outcome import PlaneState, TickState
+
+    ticks = (TickState(True, 1000.1, 0xA9B40001, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0), (0.0, 2.0, -1.0),
+                       (0.0, 0.0, -9.75), (0.0, 0.0, 0.5), (0.0, 2.0, 0.0), 0x400, 0x83, 0xA9B40001,
+                       PlaneState((0.0, 0.0, 1.0), -20.0), (-0.0, 0.0, 0.0), True, (0xA9B40001, 0xA9B40009)),
+             TickState(error="NullReferenceException: no cell"))
+    data = (struct.pack("<Bd", 3, 0.0) + struct.pack("<diidd", 9.0, 1, 0, 5.0, 2.5) + _cells(()) + _placement(PLACED)
+            + struct.pack("<i", 2) + b"".join(_tick_bytes(t) for t in ticks))
+    o, fvp, case, counts = unpack_outcome(data)
+    assert o == Outcome(static_cells=(), placement=PLACED, ticks=ticks)
+    assert math.copysign(1.0, o.ticks[0].sliding_normal[0]) == -1.0
+    assert (fvp, case, counts) == (0.0, 9.0, (1, 0, 5.0, 2.5))
+    # a transition scene's outcome ends with -1: no ticks
+    assert unpack_outcome(_packed() + struct.pack("<i", -1))[0].ticks is None
