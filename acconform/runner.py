@@ -45,7 +45,7 @@ from typing import Callable, Iterable
 
 from . import __version__
 from .case import Case, Versions, write_document
-from .compare import Difference, compare, render
+from .compare import Difference, compare, first_tick_difference, render
 from .errors import AcconformError
 from .outcome import Outcome
 from .scene import Scene
@@ -178,6 +178,10 @@ def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: C
 
 
 def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions) -> Case:
+    """The case of a difference; a tick scene's first differing tick and field is its first line."""
+    first = first_tick_difference(diffs)
+    if first is not None:
+        diffs = [first] + [d for d in diffs if d is not first]
     return Case(scene=scene, port=a, oracle=b, differences=tuple(render(diffs)), seed=str(seed), mode=mode,
                 versions=versions)
 

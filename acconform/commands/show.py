@@ -69,13 +69,53 @@ def describe_scene(scene) -> list[str]:
 
         out.append(f"    placed there first by ACE's SetPosition: flags {'|'.join(flag_names(SetPositionFlags, m.placement.flags)) or 'none'}"
                    + (", cell id by Position.GetCell" if m.placement.get_cell else ""))
-    out.append(f"    end   {_id(m.end.cell)} {_v(m.end.frame.origin)}")
+    if m.end is not None:
+        out.append(f"    end   {_id(m.end.cell)} {_v(m.end.frame.origin)}")
     if m.contact_plane is not None:
         cp = m.contact_plane
         out.append(f"    contact plane {_id(cp.cell)} n={_v(cp.plane.normal)} d={cp.plane.d:.9g}"
                    + (" (water)" if m.transient_state & TransientState.WaterContact else ""))
     if any(v != 0 for v in m.velocity):
         out.append(f"    velocity {_v(m.velocity)}")
+    if scene.ticks is not None:
+        out += describe_ticks(scene.ticks)
+    return out
+
+
+def describe_ticks(ticks) -> list[str]:
+    """A tick scene's timeline: the driver, the clock, and each step with its inputs (a step the same as the
+    step before, dt and inputs, is counted, not listed)."""
+    from ..flags import PhysicsState, TransientState, flag_names
+    from ..scene import TICK_INPUTS
+
+    out = [f"  ticks: {len(ticks.steps)} by {ticks.driver}, clock from {ticks.start!r} to {ticks.times()[-1]!r}"]
+    quiet, last = 0, None
+    for i, step in enumerate(ticks.steps):
+        inputs = []
+        for name in TICK_INPUTS:
+            v = getattr(step, name)
+            if v is None:
+                continue
+            if name == "state":
+                v = "|".join(flag_names(PhysicsState, v)) or "0"
+            elif name == "transient_state":
+                v = "|".join(flag_names(TransientState, v)) or "0"
+            elif name == "request_pos":
+                v = f"{_id(v.cell)} {_v(v.frame.origin)}"
+            else:
+                v = _v(v)
+            inputs.append(f"{name} {v}")
+        line = f"dt {step.dt!r}" + ("; " + "; ".join(inputs) if inputs else "")
+        if line == last and "request_pos" not in line:
+            quiet += 1
+            continue
+        if quiet:
+            out.append(f"    ... {quiet} more step{'s' if quiet != 1 else ''} the same")
+            quiet = 0
+        out.append(f"    step {i}: {line}")
+        last = line
+    if quiet:
+        out.append(f"    ... {quiet} more step{'s' if quiet != 1 else ''} the same")
     return out
 
 
@@ -84,6 +124,8 @@ def describe_outcome(o, label: str = "outcome") -> list[str]:
 
     if o.error is not None:
         return [f"{label}: error {o.error}"]
+    if o.ticks is not None:
+        return describe_tick_outcome(o, label)
     cp = o.contact_plane
     placed = []
     if o.placement is not None:
@@ -105,6 +147,26 @@ def describe_outcome(o, label: str = "outcome") -> list[str]:
     ]
 
 
+def describe_tick_outcome(o, label: str) -> list[str]:
+    """A tick scene's outcome: one line per tick (the mover after it), the placement first."""
+    from ..flags import SetPositionError, TransientState, flag_names
+
+    out = []
+    if o.placement is not None:
+        p = o.placement
+        out.append(f"{label} of the placement: {SetPositionError(p.result).name}, position {_id(p.cell)} {_v(p.origin)}")
+    out.append(f"{label}: {len(o.ticks)} ticks")
+    for i, t in enumerate(o.ticks):
+        if t.error is not None:
+            out.append(f"  tick {i}: error {t.error}")
+            continue
+        out.append(f"  tick {i}: {'updated' if t.updated else 'not updated'} at {t.update_time!r}, {_id(t.cell)} "
+                   f"{_v(t.origin)} v={_v(t.velocity)} a={_v(t.acceleration)} cached={_v(t.cached_velocity)} "
+                   f"{'|'.join(flag_names(TransientState, t.transient_state)) or '0'}"
+                   + (" jumped" if t.jumped_this_frame else ""))
+    return out
+
+
 def describe(doc) -> list[str]:
     from ..case import Case, Record
     from ..outcome import Outcome
@@ -120,6 +182,13 @@ def describe(doc) -> list[str]:
     assert isinstance(doc, Case)
     v = doc.versions
     out = [f"case: mode {doc.mode}, seed {doc.seed or '?'}, acconform {v.acconform or '?'}, ACE {v.ace or '?'} on {v.runtime or '?'}"]
+    if doc.scene.ticks is not None:
+        from ..compare import compare, first_tick_difference
+
+        first = first_tick_difference(compare(doc.port, doc.oracle, doc.mode))
+        if first is not None:
+            tick = first.field.split("]", 1)[0].split("[", 1)[1]
+            out.append(f"first differing tick: {tick} of {len(doc.scene.ticks.steps)}: {first}")
     out.append(f"{len(doc.differences)} difference{'s' if len(doc.differences) != 1 else ''}:")
     out += [f"  {d}" for d in doc.differences]
     return out + describe_scene(doc.scene) + describe_outcome(doc.port, "port") + describe_outcome(doc.oracle, "oracle")

@@ -1,0 +1,137 @@
+"""The comparator on tick outcomes (outcome/4): every TickState field, the first differing tick on top."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+
+import pytest
+
+from acconform.compare import Difference, compare, first_tick_difference
+from acconform.errors import InvalidScene
+from acconform.outcome import FORMAT, Outcome, PlacementState, PlaneState, TickState
+
+TICK = TickState(True, 1000.0999999999999, 0xA9B40001, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0),
+                 (0.0, 2.0, -1.5), (0.0, 0.0, -9.75), (0.0, 0.0, 0.5), (0.0, 2.0, 0.0), 0x400, 0x83, 0xA9B40001,
+                 PlaneState((0.0, 0.0, 1.0), -20.0), (0.0, 0.0, 0.0), True, (0xA9B40001, 0xA9B40009))
+BASE = Outcome(static_cells=(), ticks=tuple(dataclasses.replace(TICK, update_time=1000.0 + 0.1 * i) for i in range(10)))
+
+
+def with_tick(i: int, **changes) -> Outcome:
+    ticks = list(BASE.ticks)
+    ticks[i] = dataclasses.replace(ticks[i], **changes)
+    return dataclasses.replace(BASE, ticks=tuple(ticks))
+
+
+def _changed(name: str, v):
+    """A value of TickState field `name` that differs from `v`."""
+    if isinstance(v, bool):
+        return not v
+    if name == "update_time":
+        return math.nextafter(v, math.inf)  # one double ulp
+    if isinstance(v, int):
+        return v + 1
+    if name == "shadow_cells":
+        return tuple(reversed(v))
+    if isinstance(v, tuple):
+        return (v[0], v[1] + 0.5, *v[2:])
+    if isinstance(v, PlaneState):
+        return dataclasses.replace(v, d=v.d - 1.0)
+    return "NullReferenceException: x"
+
+
+@pytest.mark.parametrize("name", [f.name for f in dataclasses.fields(TickState)])
+def test_each_tick_state_field_is_compared_and_named_with_its_tick(name):
+    v = getattr(TICK, name)
+    other = with_tick(7, **{name: _changed(name, v)})
+    for mode in ("exact", "fast"):
+        diffs = compare(BASE, other, mode)
+        assert diffs, (name, mode)
+        assert all(d.field.startswith(f"ticks[7].{name}") for d in diffs), diffs
+        assert first_tick_difference(diffs) == diffs[0]
+
+
+def test_the_first_differing_tick_and_field_come_first_whatever_else_differs():
+    other = with_tick(7, origin=(12.0, 12.5, 20.5), cell=0xA9B40009)
+    other = dataclasses.replace(other, ticks=other.ticks[:3] + (dataclasses.replace(other.ticks[3], omega=(0.0, 0.0, 1.0)),)
+                                + other.ticks[4:], static_cells=((0xA9B40001,),))
+    diffs = compare(BASE, other)
+    assert [d.field for d in diffs] == ["ticks[3].omega[2]", "ticks[7].cell", "ticks[7].origin[2]", "static_cells"]
+    assert first_tick_difference(diffs).render() == "ticks[3].omega[2]: port=0.5 (0x3f000000) oracle=1.0 (0x3f800000)"
+
+
+def test_a_placement_difference_comes_before_the_ticks_it_caused():
+    placed = dataclasses.replace(BASE, placement=PlacementState(1, 0xA9B40001))
+    other = dataclasses.replace(with_tick(0, cell=0xA9B40002), placement=PlacementState(2, 0xA9B40001))
+    diffs = compare(placed, other)
+    assert [d.field for d in diffs] == ["placement.result", "ticks[0].cell"]
+    assert first_tick_difference(diffs).field == "ticks[0].cell"
+
+
+def test_update_time_is_a_double_compared_by_bits_in_every_mode():
+    t = BASE.ticks[2].update_time
+    other = with_tick(2, update_time=math.nextafter(t, 0.0))
+    for mode in ("exact", "fast"):
+        (d,) = compare(BASE, other, mode)
+        assert d.field == "ticks[2].update_time"
+    assert d.render().startswith(f"ticks[2].update_time: port={t!r} (0x")
+
+
+def test_fewer_ticks_on_one_side_is_a_difference_at_the_first_missing_tick():
+    ended = dataclasses.replace(BASE, ticks=BASE.ticks[:4] + (TickState(error="NullReferenceException: boom"),))
+    diffs = compare(BASE, ended)
+    assert [d.field for d in diffs][:1] == ["ticks[4].updated"]
+    assert "ticks[4].error" in [d.field for d in diffs] and diffs[-1].field == "ticks[5]"
+    assert diffs[-1].b is None and diffs[-1].render() == "ticks[5]: port=a TickState oracle=None"
+
+
+def test_a_ticks_error_counts_by_presence_and_in_exact_mode_by_type_only():
+    a = with_tick(3, error="NullReferenceException: Object reference not set")
+    a2 = with_tick(3, error="NullReferenceException: another message")
+    b = with_tick(3, error="InvalidOperationException: x")
+    assert compare(a, a2) == [] and [d.field for d in compare(a, b)] == ["ticks[3].error"]
+    assert compare(a, b, "fast") == []
+
+
+def test_ticks_on_one_side_only_is_one_difference():
+    plain = dataclasses.replace(BASE, ticks=None)
+    assert compare(plain, BASE) == [Difference("ticks", None, BASE.ticks)]
+    assert compare(plain, BASE)[0].render() == "ticks: port=None oracle=10 ticks"
+
+
+def test_fast_mode_allows_ulps_in_a_ticks_floats_but_not_in_its_ids_or_flags():
+    from acconform.numerics import f32_from_bits
+
+    import numpy as np
+
+    near = f32_from_bits(int(np.float32(12.5).view(np.uint32)) + 3)
+    other = with_tick(5, origin=(12.0, near, 20.0))
+    assert [d.field for d in compare(BASE, other)] == ["ticks[5].origin[1]"] and compare(BASE, other, "fast") == []
+    assert compare(BASE, with_tick(5, transient_state=0x81), "fast")[0].render() == \
+        "ticks[5].transient_state: port=Contact|OnWalkable|Active oracle=Contact|Active"
+
+
+def test_a_tick_outcome_is_written_as_outcome_4_and_reads_back_bit_for_bit():
+    odd = with_tick(1, sliding_normal=(-0.0, 0.0, 0.0), update_time=0.1 + 0.2, velocity=(math.nan, 0.0, math.inf))
+    doc = json.loads(json.dumps(odd.to_json()))
+    assert doc["format"] == FORMAT == "acconform.outcome/4"
+    back = Outcome.from_json(doc)
+    assert compare(odd, back) == [] and back.ticks[1].update_time == 0.30000000000000004
+    assert math.copysign(1.0, back.ticks[1].sliding_normal[0]) == -1.0
+    errored = dataclasses.replace(BASE, ticks=(TickState(error="NullReferenceException: x"),))
+    assert Outcome.from_json(errored.to_json()) == errored
+    assert "error" not in BASE.to_json()["ticks"][0]
+
+
+def test_an_older_outcome_format_cannot_carry_ticks_and_a_bad_tick_names_its_field():
+    doc = BASE.to_json()
+    with pytest.raises(InvalidScene, match="unknown field 'ticks'"):
+        Outcome.from_json(dict(doc, format="acconform.outcome/3"))
+    bad = json.loads(json.dumps(doc))
+    bad["ticks"][2]["update_time"] = "soon"
+    with pytest.raises(InvalidScene, match=r"ticks\[2\]\.update_time: expected a number"):
+        Outcome.from_json(bad)
+    del bad["ticks"][2]["update_time"]
+    with pytest.raises(InvalidScene, match=r"ticks\[2\]\.update_time: missing required field"):
+        Outcome.from_json(bad)
