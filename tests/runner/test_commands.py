@@ -103,3 +103,28 @@ def test_coverage_prints_a_branch_table_per_1000_scenes(capsys):
     assert main(["coverage", "--branches", "-n", "40", "--seed", "1"]) == 0
     out = capsys.readouterr().out
     assert "scenes/1000" in out and "step_down:ok" in out
+
+
+def test_a_tick_case_and_show_put_the_first_differing_tick_on_top(tmp_path, capsys):
+    from pathlib import Path
+
+    from acconform.case import load_document
+    from acconform.outcome import Outcome
+    from acconform.runner import make_case
+
+    root = Path(__file__).parents[2]
+    scene = load_document(root / "examples" / "tick_jump.json")
+    ace = Outcome.from_json(json.loads((root / "tests" / "oracle" / "data" / "ace_tick_outcomes.json").read_text())
+                            ["outcomes"]["mono"]["tick_jump"])
+    ticks = list(ace.ticks)
+    ticks[9] = dataclasses.replace(ticks[9], origin=(ticks[9].origin[0], ticks[9].origin[1], 25.0))
+    ticks[4] = dataclasses.replace(ticks[4], jumped_this_frame=not ticks[4].jumped_this_frame)
+    port = dataclasses.replace(ace, ticks=tuple(ticks), static_cells=((0xA9B40001,),))
+    case = make_case(scene, port, ace, compare(port, ace), 7, "exact", Versions("0.1.0", "", ""))
+    assert case.differences[0].startswith("ticks[4].jumped_this_frame: port=")
+    path = write_document(tmp_path / "tick_case.json", case)
+    assert main(["show", str(path)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[1].startswith("first differing tick: 4 of 40: ticks[4].jumped_this_frame: port=")
+    assert "  ticks: 40 by update_object, clock from 1000.0 to 1001.5999999999985" in lines
+    assert any(line.startswith("  tick 9: updated at") and "25)" in line for line in lines)
