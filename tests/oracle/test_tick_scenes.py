@@ -111,6 +111,37 @@ def test_ace_moves_the_mover_to_each_request_pos_and_keeps_no_cached_velocity():
         assert t.cached_velocity == (0.0, 0.0, 0.0)  # set_current_pos: requestCachedVelocity (set_request_pos not run)
 
 
+# ---------------------------------------------------------------- the facade's members
+
+
+def test_every_physics_obj_member_the_facades_tick_code_touches_is_in_members_py():
+    import re
+
+    from acconform.oracle.members import REQUIRED
+
+    source = (ROOT / "oracle" / "facade" / "Facade.cs").read_text()
+    ticks = source[source.index("// ------------------------------------------------------------------ ticks"):
+                   source.index("// ------------------------------------------------------------------ content keys")]
+    touched = set(re.findall(r"\bobj\.(\w+)", ticks))
+    listed = {m for t, members in REQUIRED if t == "ACE.Server.Physics.PhysicsObj" for m in members}
+    assert touched >= {"update_object", "UpdateObjectInternalServer", "set_current_pos", "IsMovingOrAnimating"}
+    assert touched - listed == set()
+
+
+def test_an_ace_build_without_the_tick_members_is_refused_naming_them():
+    from acconform.errors import OracleUnavailable
+    from acconform.oracle.members import REQUIRED, check_members
+
+    types: dict[str, set] = {}
+    for t, members in REQUIRED:  # a type may be listed more than once
+        types.setdefault(t, set()).update(members)
+    del types["ACE.Server.Entity.Timers"]
+    types["ACE.Server.Physics.Animation.Sequence"] -= {"SetVelocity"}
+    with pytest.raises(OracleUnavailable) as e:
+        check_members(types.get, lambda t, m: m in t, "/opt/ace")
+    assert "type ACE.Server.Entity.Timers" in str(e.value) and "Sequence.SetVelocity" in str(e.value)
+
+
 # ---------------------------------------------------------------- live
 
 
