@@ -57,3 +57,35 @@ PLACEMENT_CLOSE = f32_from_bits(0x3D4CCCCD)
 QUAT_VALID_SLACK = f32_from_bits(0x3A83126E)
 # PhysicsGlobals.DefaultElasticity = 0.05f (PhysicsObj() sets Elasticity to it)
 DEFAULT_ELASTICITY = f32_from_bits(0x3D4CCCCD)
+
+# ---- the tick (PhysicsObj.update_object and what it calls). All are C# `float`s; update_object
+# compares and steps its `double` deltaTime against them, which widens each to double exactly, so
+# each is written here once as its float32 value (a Python float: double where the code is double).
+# PhysicsGlobals.MinQuantum = 1.0f / 30.0f, folded by the C# compiler in float32 (30 fps)
+MIN_QUANTUM = f32_from_bits(0x3D088889)
+# PhysicsGlobals.MaxQuantum = 0.1f (10 fps; ACE's, where retail's is 0.2f)
+MAX_QUANTUM = f32_from_bits(0x3DCCCCCD)
+# PhysicsGlobals.HugeQuantum = 2.0f (0.5 fps): a longer gap is skipped, not simulated
+HUGE_QUANTUM = f32_from_bits(0x40000000)
+# PhysicsObj.TickRate = 1.0f / 30.0f (a static float field, not a const; the same value as MinQuantum)
+TICK_RATE = f32_from_bits(0x3D088889)
+# PhysicsGlobals.MaxVelocity = 50.0f; MaxVelocitySquared = MaxVelocity * MaxVelocity (folded in float32)
+MAX_VELOCITY = f32_from_bits(0x42480000)
+MAX_VELOCITY_SQUARED = f32_from_bits(0x451C4000)
+# PhysicsGlobals.SmallVelocity = 0.25f; SmallVelocitySquared = SmallVelocity * SmallVelocity
+SMALL_VELOCITY = f32_from_bits(0x3E800000)
+SMALL_VELOCITY_SQUARED = f32_from_bits(0x3D800000)
+# PhysicsGlobals.DefaultFriction = 0.95f (PhysicsObj() sets Friction to it)
+DEFAULT_FRICTION = f32_from_bits(0x3F733333)
+# PhysicsObj.calc_friction: no friction when `Vector3.Dot(Velocity, ContactPlane.Normal) >= 0.25f`
+FRICTION_LEAVING_ANGLE = f32_from_bits(0x3E800000)
+# calc_friction, sledding: friction 1.0f below `velocity_mag2 < 1.5625f` (1.25 m/s squared) ...
+SLEDDING_STOP_SPEED_SQUARED = f32_from_bits(0x3FC80000)
+SLEDDING_STOP_FRICTION = f32_from_bits(0x3F800000)
+# ... and 0.2f at `velocity_mag2 >= 6.25f` (2.5 m/s squared) on a plane with `Normal.Z > 0.99999536f`
+# (ACE's sledding threshold; other ports use cos 10 degrees)
+SLEDDING_GLIDE_SPEED_SQUARED = f32_from_bits(0x40C80000)
+SLEDDING_FLAT_Z = f32_from_bits(0x3F7FFFB2)
+SLEDDING_GLIDE_FRICTION = f32_from_bits(0x3E4CCCCD)
+# CollisionRecord: report_collision_end ends a record touched more than `1.0f` second ago
+COLLISION_RECORD_LIFETIME = f32_from_bits(0x3F800000)

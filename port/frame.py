@@ -1,4 +1,4 @@
-"""AFrame (Combine, GlobalToLocal, GlobalToLocalVec, LocalToGlobal, LocalToGlobalVec, InterpolateOrigin, InterpolateRotation, Subtract, set_heading, set_vector_heading, get_heading, set_rotate) and Position (GetOffset, LocalToLocal, LocalToGlobal, GlobalToLocalVec, GetCell, GetIndoorCell, GetOutdoorCell).
+"""AFrame (Combine, GRotate, Rotate, GlobalToLocal, GlobalToLocalVec, LocalToGlobal, LocalToGlobalVec, InterpolateOrigin, InterpolateRotation, Subtract, set_heading, set_vector_heading, get_heading, set_rotate) and Position (GetOffset, LocalToLocal, LocalToGlobal, GlobalToLocalVec, GetCell, GetIndoorCell, GetOutdoorCell).
 
 ACE's Animation/AFrame.cs and Common/Position.cs. Both are C# classes (reference types), so
 they are mutable here too; their Vector3/Quaternion fields are immutable values. Copy with
@@ -136,6 +136,12 @@ class AFrame:
         rt = self.orientation.runtime
         self.orientation = rt.quat_multiply(self.orientation, rt.quat_create_from_yaw_pitch_roll(rotation.x, rotation.y, rotation.z))
         self.orientation = rt.quat_normalize(self.orientation)
+
+    @anchor("AFrame::rotate", "AFrame.cs:Rotate(Vector3)")
+    def rotate_vec(self, rotation: Vector3) -> None:
+        """ACE's overload Rotate(Vector3): the local rotation vector turned into global angles."""
+        angles = self.orientation.runtime.transform_by_quaternion(rotation, self.orientation)
+        self.grotate(angles)
 
     @anchor("AFrame::rotate", "AFrame.cs:Rotate(Quaternion)")
     def rotate(self, rotation: Quaternion) -> None:

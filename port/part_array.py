@@ -1,4 +1,4 @@
-"""PartArray and PhysicsPart: PartArray (AddPartsShadow, AllowsFreeHeading, CacheHasPhysicsBSP, CreateMesh, CreateSetup, DestroyParts, DestroySetup, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, InitDefaults, InitParts, SetCellID, SetFrame, SetMeshID, SetPlacementFrame, SetScaleInternal, SetSetupID, UpdateParts, calc_cross_cells_static), PhysicsPart (InitEmpty, SetPart, LoadGfxObjArray, MakePhysicsPart, MorphToExistingObject, GetBoundingBox, FindObjCollisions).
+"""PartArray and PhysicsPart: PartArray (AddPartsShadow, Update, HandleMovement, HandleEnterWorld, RemoveParts, AllowsFreeHeading, CacheHasPhysicsBSP, CreateMesh, CreateSetup, DestroyParts, DestroySetup, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, InitDefaults, InitParts, SetCellID, SetFrame, SetMeshID, SetPlacementFrame, SetScaleInternal, SetSetupID, UpdateParts, calc_cross_cells_static), PhysicsPart (InitEmpty, SetPart, LoadGfxObjArray, MakePhysicsPart, MorphToExistingObject, GetBoundingBox, FindObjCollisions).
 
 ACE's Physics/PartArray.cs and Physics/PhysicsPart.cs. A static object's PartArray is made by
 PhysicsObj.makeObject from its DAT record: CreateMesh for a GfxObj id (one part over a simple
@@ -10,10 +10,10 @@ PartArray is made the same way, from its own Setup record (CreateSetup).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from acconform.flags import TransitionState
-from acconform.numerics import Vector3
+from acconform.numerics import Vector3, cast_float
 
 from . import gfx_obj_cache
 from .anchors import anchor
@@ -99,12 +99,13 @@ class PartArray:
     parts: list | None = None  # PhysicsPart
     scale: Vector3 | None = None  # Vector3.One from the constructor; set by SetScaleInternal
     state: int = 0
-    sequence: Sequence = field(default_factory=Sequence)
+    sequence: Sequence | None = None
+    motion_table_manager: object = None  # MotionTableManager: null (dat.py writes no motion table)
 
     @staticmethod
     @anchor("CPartArray::CPartArray", "PartArray.cs:PartArray()")
     def create(mode) -> "PartArray":
-        return PartArray(scale=mode.vec(1, 1, 1))
+        return PartArray(scale=mode.vec(1, 1, 1), sequence=Sequence.create(mode))
 
     @staticmethod
     @anchor("CPartArray::CreateMesh", "PartArray.cs:CreateMesh")
@@ -233,6 +234,28 @@ class PartArray:
         num_parts = min(self.num_parts, len(cur_frame.frames))
         for i in range(num_parts):
             self.parts[i].pos.frame.combine_scaled(frame, AFrame.from_dat(cur_frame.frames[i]), self.scale)
+
+    @anchor("CPartArray::Update", "PartArray.cs:Update")
+    def update(self, quantum, offset_frame) -> None:
+        """`quantum` is a double, cast to float for the Sequence; `offset_frame` (C# `ref AFrame`)
+        is changed in place."""
+        self.sequence.update(cast_float(self.scale.x, quantum), offset_frame)
+
+    @anchor("CPartArray::HandleMovement", "PartArray.cs:HandleMovement")
+    def handle_movement(self) -> None:
+        if self.motion_table_manager is not None:
+            raise NotImplementedError("motion tables (MotionTableManager.UseTime) are not ported")
+
+    @anchor("CPartArray::HandleEnterWorld", "PartArray.cs:HandleEnterWorld")
+    def handle_enter_world(self) -> None:
+        if self.motion_table_manager is not None:
+            raise NotImplementedError("motion tables (MotionTableManager.HandleEnterWorld) are not ported")
+
+    @anchor("CPartArray::RemoveParts", "PartArray.cs:RemoveParts")
+    def remove_parts(self, cell) -> None:
+        """ACE calls PartCell.RemovePart per part, which returns at once (its body is commented
+        out in ACE): nothing happens."""
+        return None
 
     @anchor("CPartArray::SetCellID", "PartArray.cs:SetCellID")
     def set_cell_id(self, cell_id: int) -> None:

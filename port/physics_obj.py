@@ -1,4 +1,4 @@
-"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), is_completely_visible, transition, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, report_object_collision_end, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
 The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
 record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
@@ -10,18 +10,31 @@ through the PartArray, or the Setup's spheres / cylspheres). The mover's PartArr
 harness's (run.py, as the oracle builds it). The WeenieObj is ACE's WeenieObject.DummyObject (no
 player, creature or PK flags), which is what a PhysicsObj made without a WorldObject carries;
 a static's DatObject is true (as Landblock.init_static_objs sets it), the mover's false.
+
+The tick (a tick scene's steps): update_object cuts the time since UpdateTime (the run's
+PhysicsTimer, port/physics_timer.py, for ACE's static clock) into sub-steps of UpdateObjectInternal:
+root motion from the PartArray's Sequence and the integration of UpdatePhysicsInternal give the new
+frame, a transition moves there, SetPositionInternal(Transition) takes the cell, contact plane and
+flags and handle_all_collisions bounces; UpdateObjectInternalServer is the legacy player path to
+RequestPos. The managers ACE makes for creatures and players (movement, position, detection,
+target, script, particle) are null for every object here; their null checks stay as ACE has them.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import math
+
 from acconform.flags import ObjectInfoState, PhysicsState, SetPositionError, SetPositionFlags, TransientState, TransitionState
-from acconform.numerics import Plane, Vector3, dot
+from acconform.numerics import Plane, Vector3, cast_float, dot, normalize
 
 from .anchors import anchor
-from .constants import (DEFAULT_ELASTICITY, DEFAULT_SCALE, DUMMY_SPHERE_RADIUS, EPSILON, FLOOR_Z, GRAVITY, PLACEMENT_CLOSE,
-                        TRANSLUCENCY_ETHEREAL)
+from .constants import (COLLISION_RECORD_LIFETIME, DEFAULT_ELASTICITY, DEFAULT_FRICTION, DEFAULT_SCALE, DUMMY_SPHERE_RADIUS,
+                        EPSILON, FLOOR_Z, FRICTION_LEAVING_ANGLE, GRAVITY, HUGE_QUANTUM, MAX_QUANTUM, MAX_VELOCITY,
+                        MAX_VELOCITY_SQUARED, MIN_QUANTUM, PLACEMENT_CLOSE, SLEDDING_FLAT_Z, SLEDDING_GLIDE_FRICTION,
+                        SLEDDING_GLIDE_SPEED_SQUARED, SLEDDING_STOP_FRICTION, SLEDDING_STOP_SPEED_SQUARED,
+                        SMALL_VELOCITY_SQUARED, TICK_RATE, TRANSLUCENCY_ETHEREAL)
 from .frame import AFrame, Position
 from . import land_defs
 from .cell import obj_cell
@@ -30,8 +43,6 @@ from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
 
-# PhysicsGlobals.MaxVelocity = 50.0f
-MAX_VELOCITY = 50.0
 # PhysicsEngine.cs TransientStateFlags.StationaryComplete = StationaryStuck | StationaryStop | StationaryFall
 STATIONARY_COMPLETE = TransientState.StationaryStuck | TransientState.StationaryStop | TransientState.StationaryFall
 # PhysicsGlobals.DefaultState
@@ -47,6 +58,20 @@ def divine_type_of(data_did: int) -> int:
     elif type_ == 0x02:
         return 7
     return 0
+
+
+@dataclass(slots=True)
+class CollisionRecord:
+    """ACE's Collision/CollisionRecord.cs: when an object was last touched (PhysicsTimer.CurrentTime,
+    double) and whether it was ethereal then."""
+
+    touched_time: float
+    ethereal: bool
+
+
+def _hit(trace, branch: str) -> None:
+    if trace is not None:
+        trace[branch] += 1
 
 
 @dataclass(frozen=True, slots=True)
@@ -103,6 +128,25 @@ class PhysicsObj:
     collision_table: dict | None = None  # object id -> CollisionRecord's Ethereal (TouchedTime: see report_collision_end)
     entering_world: bool = False
     elasticity: object = DEFAULT_ELASTICITY
+    friction: object = DEFAULT_FRICTION
+    timer: object = None  # the run's PhysicsTimer (port/physics_timer.py): ACE's static PhysicsTimer.CurrentTime
+    update_time: float = 0.0  # UpdateTime (double)
+    physics_timer_current_time: float = 0.0  # PhysicsTimer_CurrentTime (double): update_object's running clock
+    cached_velocity: Vector3 | None = None
+    initial_updates: int = 0
+    hooks: list = field(default_factory=list)  # PhysicsObjHook: nothing here ever adds one
+    anim_hooks: list = field(default_factory=list)  # AnimationHook: nothing here ever adds one (no animations)
+    request_pos: object = None  # RequestPos (a Position; made by the constructor in server mode)
+    request_cached_velocity: Vector3 | None = None  # requestCachedVelocity (set only by set_request_pos)
+    is_animating: bool = False  # IsAnimating (the MotionInterpreter sets it; the mover has none)
+    # the managers ACE makes on demand for a creature or player: the scene's mover has none, and
+    # their null checks stay as ACE has them (docs/oracle.md's audit table)
+    movement_manager: object = None
+    position_manager: object = None
+    detection_manager: object = None
+    target_manager: object = None
+    script_manager: object = None
+    particle_manager: object = None
 
     @property
     def is_player(self) -> bool:
@@ -143,23 +187,32 @@ class PhysicsObj:
 
     @staticmethod
     @anchor("CPhysicsObj::CPhysicsObj", "PhysicsObj.cs:PhysicsObj()")
-    def create(mode) -> "PhysicsObj":
-        """``new PhysicsObj()``: the fields a static's placement and a transition read, at ACE's
-        defaults (Position cell 0 and identity frame, PhysicsGlobals.DefaultState, scale 1,
-        zero velocity and sliding normal, default(Plane) contact plane, an empty CellArray)."""
+    def create(mode, timer, server: bool = False) -> "PhysicsObj":
+        """``new PhysicsObj()``: ACE's defaults (Position cell 0 and identity frame,
+        PhysicsGlobals.DefaultState, scale 1, default elasticity and friction, zero velocity,
+        acceleration, omega, CachedVelocity and sliding normal, default(Plane) contact plane, an
+        empty CellArray, UpdateTime and PhysicsTimer_CurrentTime from the clock `timer`, a
+        RequestPos when PhysicsEngine.Instance.Server (`server`))."""
         from .transition.cell_array import CellArray
 
         zero = mode.vec(0, 0, 0)
-        return PhysicsObj(id=0, state=int(DEFAULT_STATE), position=Position(0, AFrame.identity(mode)),
-                          velocity=zero, contact_plane=Plane(zero, mode.scalar(0.0)), sliding_normal=zero,
-                          scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray(), acceleration=zero, omega=zero,
-                          elasticity=mode.scalar(DEFAULT_ELASTICITY))
+        obj = PhysicsObj(id=0, state=int(DEFAULT_STATE), position=Position(0, AFrame.identity(mode)),
+                         velocity=zero, contact_plane=Plane(zero, mode.scalar(0.0)), sliding_normal=zero,
+                         scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray(), acceleration=zero, omega=zero,
+                         elasticity=mode.scalar(DEFAULT_ELASTICITY), friction=mode.scalar(DEFAULT_FRICTION),
+                         cached_velocity=zero, request_cached_velocity=zero, timer=timer)
+        obj.update_time = timer.current_time
+        obj.physics_timer_current_time = timer.current_time
+        if server:
+            obj.request_pos = Position(0, AFrame.identity(mode))
+        return obj
 
     @staticmethod
     @anchor("CPhysicsObj::makeObject", "PhysicsObj.cs:makeObject(uint, uint, bool, bool)")
     def make_object(data_did: int, object_iid: int, dynamic: bool, portal_dat, sight_obj: bool = False) -> "PhysicsObj":
-        """`portal_dat` (port/dat/portal_dat.py) stands in for the DAT statics the DAT readers use."""
-        obj = PhysicsObj.create(portal_dat.mode)
+        """`portal_dat` (port/dat/portal_dat.py) stands in for the DAT statics the DAT readers use,
+        PhysicsEngine.Instance.Server and the PhysicsTimer."""
+        obj = PhysicsObj.create(portal_dat.mode, portal_dat.timer, portal_dat.server)
         obj.init_object_begin(object_iid, dynamic)
         obj.init_part_array_object(data_did, True, portal_dat)
         obj.init_object_end()
@@ -178,6 +231,7 @@ class PhysicsObj:
             self.state &= ~int(PhysicsState.Static)
 
         self.transient_state &= ~int(TransientState.Active)
+        self.update_time = self.timer.current_time
         return True
 
     @anchor("CPhysicsObj::InitPartArrayObject", "PhysicsObj.cs:InitPartArrayObject")
@@ -301,7 +355,7 @@ class PhysicsObj:
             raise NotImplementedError("storage and corpses (ForceIntoCell) are not ported")
 
         if not self.check_position_internal(new_cell, pos, transition, set_pos_flags):
-            collided = self.handle_all_collisions(transition.collision_info, False, False)
+            collided = self.handle_all_collisions(transition.collision_info, False, False, transition.trace)
             transition._hit("set_position:collided" if collided else "set_position:no_valid_position")
             return SetPositionError.Collided if collided else SetPositionError.NoValidPosition
 
@@ -395,7 +449,10 @@ class PhysicsObj:
                 self.set_on_walkable(True)
         else:
             self.transient_state &= ~TransientState.OnWalkable
-            # MovementManager.LeaveGround(): the mover has no MovementManager
+
+            if self.movement_manager is not None and prev_on_walkable:
+                raise NotImplementedError("MovementManager.LeaveGround is not ported: the mover has no MovementManager")
+
             self.calc_acceleration()
 
         self.sliding_normal = collisions.sliding_normal
@@ -405,7 +462,7 @@ class PhysicsObj:
         else:
             self.transient_state &= ~TransientState.Sliding
 
-        self.handle_all_collisions(collisions, prev_contact, prev_on_walkable)
+        self.handle_all_collisions(collisions, prev_contact, prev_on_walkable, transition.trace)
 
         if self.cur_cell is not None:
             if self.state & PhysicsState.HasPhysicsBSP:
@@ -420,12 +477,17 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::prepare_to_enter_world", "PhysicsObj.cs:prepare_to_enter_world")
     def prepare_to_enter_world(self) -> None:
-        """UpdateTime (PhysicsTimer.CurrentTime) and ObjMaint's destruction queue are not kept:
-        nothing in a placement or a transition reads them."""
+        """ObjMaint's destruction queue (RemoveObjectToBeDestroyed) is not kept: nothing in the
+        physics reads it."""
+        self.update_time = self.timer.current_time
+
         for child in self.children:
             raise NotImplementedError("child objects are not ported")
 
         if not self.state & PhysicsState.Static:
+            if not self.transient_state & TransientState.Active:
+                self.update_time = self.timer.current_time  # hiword? (ACE)
+
             self.transient_state |= TransientState.Active
 
     @anchor("CPhysicsObj::prepare_to_leave_visibility", "PhysicsObj.cs:prepare_to_leave_visibility")
@@ -433,13 +495,23 @@ class PhysicsObj:
         """ObjMaint.AddObjectToBeDestroyed (a queue nothing here reads) is not kept."""
         self.remove_shadows_from_cells()
         self.leave_cell(False)
-        return False
+        for child in self.children:
+            raise NotImplementedError("child objects are not ported")
+        return True
 
     @anchor("CPhysicsObj::leave_cell", "PhysicsObj.cs:leave_cell")
     def leave_cell(self, is_changing_cell: bool) -> None:
         if self.cur_cell is None:
             return
-        raise NotImplementedError("leaving a cell (ObjCell.RemoveObject) is not ported: a scene places its mover once")
+        self.cur_cell.remove_object(self)
+        for child in self.children:
+            child.leave_cell(is_changing_cell)
+        # removed lighting (ACE)
+        self.cur_cell = None
+
+        if self.cur_landblock is not None and not self.dat_object:
+            self.cur_landblock.remove_server_object(self)
+            self.cur_landblock = None
 
     @anchor("CPhysicsObj::store_position", "PhysicsObj.cs:store_position")
     def store_position(self, pos, lscape) -> None:
@@ -461,10 +533,13 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::set_active", "PhysicsObj.cs:set_active")
     def set_active(self, active: bool) -> bool:
-        """UpdateTime is not kept (see prepare_to_enter_world)."""
         if active:
             if self.state & PhysicsState.Static:
                 return False
+
+            if not self.transient_state & TransientState.Active:
+                self.update_time = self.timer.current_time
+
             self.transient_state |= TransientState.Active
             return True
         else:
@@ -474,8 +549,8 @@ class PhysicsObj:
     @anchor("CPhysicsObj::change_cell", "PhysicsObj.cs:change_cell")
     def change_cell(self, new_cell, lscape) -> None:
         if lscape.portal_dat.server:
-            raise NotImplementedError("change_cell_server (the server's ObjectMaint visibility) is not ported; "
-                                      "a scene's placement runs in client mode")
+            self.change_cell_server(new_cell, lscape)
+            return
 
         if self.cur_cell is not None:
             self.leave_cell(True)
@@ -486,6 +561,66 @@ class PhysicsObj:
             self.cur_cell = None
         else:
             self.enter_cell(new_cell, lscape)
+
+    @anchor(None, "PhysicsObj.cs:change_cell_server")
+    def change_cell_server(self, new_cell, lscape) -> None:
+        if self.cur_cell is not None:
+            self.leave_cell(True)
+        if new_cell is None:
+            self.position.obj_cell_id = 0
+            if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+                self.part_array.set_cell_id(0)
+            self.cur_cell = None
+        else:
+            self.enter_cell_server(new_cell, lscape)
+
+    @anchor(None, "PhysicsObj.cs:enter_cell_server")
+    def enter_cell_server(self, new_cell, lscape) -> None:
+        """ObjectMaint's tables (visible, known and to-be-destroyed objects) are not kept: a scene
+        has no object they could hold (every static is a DAT object, which ObjectMaint filters out,
+        and the mover is left out by its id) and nothing in the physics reads them; what can throw
+        is kept (handle_visible_cells' GetVisibleObjects)."""
+        self.enter_cell(new_cell, lscape)
+        self.request_pos.obj_cell_id = new_cell.id  # document this control flow better (ACE)
+
+        # sync location for initial CO (ACE)
+        if self.entering_world:
+            raise NotImplementedError("WorldObject.SyncLocation: the mover has no WorldObject")
+
+        # handle self (ACE)
+        if self.is_player:
+            self.handle_visible_cells()  # enqueue_objs returns at once: no Player WorldObject
+        else:
+            raise NotImplementedError("handle_visible_cells_non_player (WeenieObject.IsMonster) is not ported")
+
+        # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover
+
+    @anchor(None, "PhysicsObj.cs:handle_visible_cells")
+    def handle_visible_cells(self) -> list:
+        """ObjMaint.DestroyObjects, then ObjMaint.GetVisibleObjects(CurCell) (ObjectMaint.cs),
+        whose answer is empty here (see enter_cell_server); the newly visible and occluded lists
+        only feed ObjectMaint's tables."""
+        from .cell.env_cell import EnvCell
+
+        cell = self.cur_cell
+        if self.cur_landblock is None or cell is None:
+            return []
+
+        # use PVS / VisibleCells for EnvCells not seen outside (ACE)
+        if isinstance(cell, EnvCell):
+            visible_objs = list(cell.object_list)
+            for env_cell in (cell.visible_cells or {}).values():
+                if env_cell is not None:
+                    visible_objs.extend(env_cell.object_list)
+            if cell.seen_outside:
+                outside = [i for i in self.cur_landblock.get_server_objects(True)
+                           if not isinstance(i.cur_cell, EnvCell) or i.cur_cell.seen_outside]
+                visible_objs.extend(outside)
+            return [i for i in visible_objs if not i.dat_object and i.id != self.id]
+
+        # use current landblock + adjacents for outdoors (ACE)
+        visible_objs = self.cur_landblock.get_server_objects(True)
+        return [i for i in visible_objs if i.id != self.id and (not isinstance(i.cur_cell, EnvCell) or i.cur_cell.seen_outside)]
 
     @anchor("CPhysicsObj::set_frame", "PhysicsObj.cs:set_frame")
     def set_frame(self, frame: AFrame, lscape) -> None:
@@ -518,15 +653,18 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::set_on_walkable", "PhysicsObj.cs:set_on_walkable")
     def set_on_walkable(self, is_on_walkable: bool) -> None:
-        """The mover has no MovementManager (HitGround / LeaveGround)."""
         if is_on_walkable:
             self.transient_state |= TransientState.OnWalkable
         else:
             self.transient_state &= ~TransientState.OnWalkable
+
+        if self.movement_manager is not None:
+            raise NotImplementedError("MovementManager.HitGround / LeaveGround are not ported: the mover has none")
         self.calc_acceleration()
 
     @anchor("CPhysicsObj::handle_all_collisions", "PhysicsObj.cs:handle_all_collisions")
-    def handle_all_collisions(self, collisions, prev_has_contact: bool, prev_on_walkable: bool) -> bool:
+    def handle_all_collisions(self, collisions, prev_has_contact: bool, prev_on_walkable: bool, trace=None) -> bool:
+        """`trace`: the run's branch counter (the transition's), or None."""
         apply_bounce = True
         if prev_on_walkable and self.transient_state & TransientState.OnWalkable and not self.state & PhysicsState.Sledding:
             apply_bounce = False
@@ -547,6 +685,7 @@ class PhysicsObj:
         if collisions.frames_stationary_fall <= 1:
             if apply_bounce and collisions.collision_normal_valid:
                 if self.state & PhysicsState.Inelastic:
+                    _hit(trace, "handle_all_collisions:inelastic_stop")
                     z = type(self.velocity.x)(0.0)
                     self.velocity = Vector3(z, z, z)
 
@@ -555,6 +694,7 @@ class PhysicsObj:
                 else:
                     collision_angle = dot(self.velocity, collisions.collision_normal)
                     if collision_angle < 0.0:
+                        _hit(trace, "handle_all_collisions:elastic_bounce")
                         elastic_angle = -(collision_angle * (self.elasticity + type(collision_angle)(1.0)))
                         self.velocity = self.velocity + collisions.collision_normal * elastic_angle
         else:
@@ -583,20 +723,35 @@ class PhysicsObj:
         if self.collision_table is None:
             self.collision_table = {}
 
-        self.collision_table[obj.id] = bool(obj.state & PhysicsState.Ethereal)
+        self.collision_table[obj.id] = CollisionRecord(self.timer.current_time, bool(obj.state & PhysicsState.Ethereal))
 
         return self.report_object_collision(obj, prev_has_contact)
 
     @anchor("CPhysicsObj::report_collision_end", "PhysicsObj.cs:report_collision_end")
     def report_collision_end(self, force_end: bool) -> None:
-        """PhysicsTimer.CurrentTime is Timers.PortalYearTicks, which nothing advances outside a
-        running server: every record's deltaTime is 0, so only `force_end` ends one; ending it calls
-        WeenieObject.DoCollisionEnd, which returns at once for DummyObject (no WorldObject)."""
+        """A record ends when touched more than a second ago (PhysicsTimer.CurrentTime, the run's
+        clock: a scene without ticks never moves it), when ethereal and touched before now, or when
+        forced."""
         if self.collision_table is None:
             return
-        ends = [collision_id for collision_id, ethereal in self.collision_table.items() if force_end]
+
+        ends = []
+        for collision_id, collision in self.collision_table.items():
+            delta_time = self.timer.current_time - collision.touched_time
+
+            if delta_time > COLLISION_RECORD_LIFETIME or collision.ethereal and delta_time > 0.0 or force_end:
+                ends.append(collision_id)
+
         for end in ends:
             del self.collision_table[end]
+            self.report_object_collision_end(end)
+
+    @anchor("CPhysicsObj::report_object_collision_end", "PhysicsObj.cs:report_object_collision_end")
+    def report_object_collision_end(self, object_id: int) -> bool:
+        """ObjMaint is never null (the constructor makes one): whether ServerObjectManager finds the
+        object or not, the only calls left are WeenieObject.DoCollisionEnd, which return at once for
+        DummyObject (no WorldObject)."""
+        return True
 
     @anchor("CPhysicsObj::report_environment_collision", "PhysicsObj.cs:report_environment_collision")
     def report_environment_collision(self, prev_has_contact: bool) -> bool:
@@ -712,12 +867,15 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::remove_shadows_from_cells", "PhysicsObj.cs:remove_shadows_from_cells")
     def remove_shadows_from_cells(self) -> None:
-        """A static is placed once: its ShadowObjects are still empty here, as ACE's are. Removing
-        entries from a cell's shadow list is not ported."""
+        """Each ShadowObj leaves its cell's list (its Cell becomes null); ShadowObjects itself keeps
+        every key it ever had, as ACE's dictionary does."""
         for shadow_obj in self.shadow_objects.values():
             if shadow_obj.cell is None:
                 continue
-            raise NotImplementedError("removing shadow objects (ObjCell.remove_shadow_object) is not ported")
+            cell = shadow_obj.cell
+            shadow_obj.cell.remove_shadow_object(shadow_obj)
+            if self.part_array is not None:
+                self.part_array.remove_parts(cell)
         self.num_shadow_objects = 0  # should be ShadowObjects.Count (ACE)
         for child in self.children:
             child.remove_shadows_from_cells()
@@ -799,15 +957,418 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::set_velocity", "PhysicsObj.cs:set_velocity")
     def set_velocity(self, velocity: Vector3, send_event: bool) -> None:
-        """The observable part: Velocity (clamped to MaxVelocity) and the Active transient flag."""
         if not velocity == self.velocity:
             self.velocity = velocity
             if self.velocity.length() > MAX_VELOCITY:
-                self.velocity = self.velocity / self.velocity.length()
+                self.velocity = self.velocity / self.velocity.length()  # todo: add normalize method (ACE)
                 self.velocity = self.velocity * MAX_VELOCITY
             self.jumped_this_frame = True
+
         if not self.state & PhysicsState.Static:
+            if not self.transient_state & TransientState.Active:
+                self.update_time = self.timer.current_time
+
             self.transient_state |= TransientState.Active
+
+    @anchor("CPhysicsObj::set_local_velocity", "PhysicsObj.cs:set_local_velocity")
+    def set_local_velocity(self, new_vel: Vector3, send_event: bool) -> None:
+        global_vec = self.position.local_to_global_vec(new_vel)
+        self.set_velocity(global_vec, send_event)
+
+    @anchor("CPhysicsObj::set_omega", "PhysicsObj.cs:set_omega")
+    def set_omega(self, omega: Vector3, send_event: bool) -> None:
+        self.omega = omega
+
+    @anchor("CPhysicsObj::set_initial_frame", "PhysicsObj.cs:set_initial_frame")
+    def set_initial_frame(self, frame: AFrame) -> None:
+        """Position.Frame is the frame itself (no copy), and the parts follow it whatever the
+        engine mode (unlike set_frame)."""
+        self.position.frame = frame
+
+        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+            self.part_array.set_frame(frame)
+
+        self.update_children_internal()
+
+    @anchor("CPhysicsObj::set_ethereal", "PhysicsObj.cs:set_ethereal")
+    def set_ethereal(self, ethereal: bool, send_event: bool, lscape) -> bool:
+        if ethereal:
+            self.state |= PhysicsState.Ethereal
+            self.transient_state &= ~TransientState.CheckEthereal
+            return True
+
+        self.state &= ~PhysicsState.Ethereal
+
+        if self.parent is not None or self.cur_cell is None or not self.ethereal_check_for_collisions(lscape):
+            self.transient_state &= ~TransientState.CheckEthereal
+            return True
+
+        # error path - go back to ethereal, start loop in CheckEthereal state (ACE)
+        self.state |= PhysicsState.Ethereal
+        self.transient_state |= TransientState.CheckEthereal
+        return False
+
+    @anchor("CPhysicsObj::ethereal_check_for_collisions", "PhysicsObj.cs:ethereal_check_for_collisions")
+    def ethereal_check_for_collisions(self, lscape) -> bool:
+        for shadow_obj in self.shadow_objects.values():
+            if shadow_obj.cell is not None and shadow_obj.cell.check_collisions(self, lscape):
+                return True
+        return False
+
+    @anchor("CPhysicsObj::check_collision", "PhysicsObj.cs:check_collision")
+    def check_collision(self, obj, lscape) -> bool:
+        """Whether `obj` collides with this object standing where it is (MakeTransition is a new
+        Transition of the run)."""
+        if self.state & PhysicsState.Static:
+            return False
+
+        mode = lscape.mode
+        trans = Transition(mode, lscape, None)
+        object_info = self.get_object_info(trans, False)
+        trans.init_object(self, object_info.state)
+
+        if self.part_array is not None and self.part_array.get_num_sphere() != 0:
+            trans.init_sphere(self.part_array.get_num_sphere(), self.part_array.get_sphere(), self.scale)
+        else:
+            from .geom.sphere import Sphere
+
+            dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
+            trans.init_sphere(1, [dummy], self.scale)
+
+        trans.init_path(self.cur_cell, self.position, self.position)
+        return trans.check_collisions(obj)
+
+    @anchor(None, "PhysicsObj.cs:IsMovingOrAnimating")
+    def is_moving_or_animating(self) -> bool:
+        """ACE's property, evaluated left to right: with no MovementManager, an object that is
+        neither animating nor moving reaches ``MovementManager.MotionInterpreter`` and throws
+        NullReferenceException (AttributeError on None here, which run_scene reports as that)."""
+        return bool(self.is_animating or not self.part_array.sequence.is_first_cyclic()
+                    or not self.cached_velocity == Vector3(0.0, 0.0, 0.0) or not self.velocity == Vector3(0.0, 0.0, 0.0)
+                    or self.movement_manager.motion_interpreter.interpreted_state.has_commands()
+                    or self.movement_manager.move_to_manager.initialized)
+
+    @anchor("CPhysicsObj::RemoveLinkAnimations", "PhysicsObj.cs:RemoveLinkAnimations")
+    def remove_link_animations(self) -> None:
+        if self.part_array is not None:
+            self.part_array.handle_enter_world()
+
+    @staticmethod
+    @anchor(None, "PhysicsObj.cs:GetBlockDist(Position, Position)")
+    def get_block_dist(a, b) -> int:
+        # protection, figure out FastTeleport state (ACE)
+        if a is None or b is None:
+            return 0
+
+        return PhysicsObj.get_block_dist_ids(a.obj_cell_id, b.obj_cell_id)
+
+    @staticmethod
+    @anchor(None, "PhysicsObj.cs:GetBlockDist(uint, uint)")
+    def get_block_dist_ids(a: int, b: int) -> int:
+        """``(int)lbx_a - lbx_b`` is int minus uint, computed in long: no wraparound."""
+        lbx_a = a >> 24
+        lby_a = (a >> 16) & 0xFF
+
+        lbx_b = b >> 24
+        lby_b = (b >> 16) & 0xFF
+
+        dx = abs(lbx_a - lbx_b)
+        dy = abs(lby_a - lby_b)
+
+        return max(dx, dy)
+
+    @anchor("CPhysicsObj::process_hooks", "PhysicsObj.cs:process_hooks")
+    def process_hooks(self) -> None:
+        """Runs and clears the hooks; nothing here ever queues one (no PhysicsObjHook, and an
+        AnimationHook only comes from an animation frame)."""
+        for hook in self.hooks:
+            raise NotImplementedError("physics object hooks (PhysicsObjHook.Execute) are not ported")
+        self.hooks.clear()
+
+        for anim_hook in self.anim_hooks:
+            raise NotImplementedError("animation hooks (AnimHook.Execute) are not ported")
+        self.anim_hooks.clear()
+
+    @anchor("CPhysicsObj::calc_friction", "PhysicsObj.cs:calc_friction")
+    def calc_friction(self, quantum: float, velocity_mag2, trace=None) -> None:
+        """`quantum` is a double (UpdatePhysicsInternal's float, widened); ``Math.Pow(1.0f -
+        friction, quantum)`` in double, cast to float."""
+        if not self.transient_state & TransientState.OnWalkable:
+            return
+
+        angle = dot(self.velocity, self.contact_plane.normal)
+        if angle >= FRICTION_LEAVING_ANGLE:
+            _hit(trace, "calc_friction:leaving_plane")
+            return
+
+        self.velocity = self.velocity - self.contact_plane.normal * angle
+
+        friction = self.friction
+        if self.state & PhysicsState.Sledding:
+            if trace is not None:
+                trace.boundary("sledding_stop_speed", velocity_mag2, SLEDDING_STOP_SPEED_SQUARED)
+                trace.boundary("sledding_glide_speed", velocity_mag2, SLEDDING_GLIDE_SPEED_SQUARED)
+                trace.boundary("sledding_flat_z", self.contact_plane.normal.z, SLEDDING_FLAT_Z)
+            if velocity_mag2 < SLEDDING_STOP_SPEED_SQUARED:
+                _hit(trace, "calc_friction:sledding_stop")
+                friction = type(friction)(SLEDDING_STOP_FRICTION)
+
+            elif velocity_mag2 >= SLEDDING_GLIDE_SPEED_SQUARED and self.contact_plane.normal.z > SLEDDING_FLAT_Z:
+                _hit(trace, "calc_friction:sledding_glide")
+                friction = type(friction)(SLEDDING_GLIDE_FRICTION)
+
+        scalar = cast_float(friction, math.pow(float(1.0 - friction), float(quantum)))
+        self.velocity = self.velocity * scalar
+
+    @anchor("CPhysicsObj::UpdatePhysicsInternal", "PhysicsObj.cs:UpdatePhysicsInternal")
+    def update_physics_internal(self, quantum, frame_offset: AFrame, trace=None) -> None:
+        """`quantum` is a float; `frame_offset` (C# `ref AFrame`) is changed in place."""
+        velocity_mag2 = self.velocity.length_squared()
+
+        if velocity_mag2 <= 0.0:
+            if self.movement_manager is None and self.transient_state & TransientState.OnWalkable:
+                self.transient_state &= ~TransientState.Active
+        else:
+            if trace is not None:
+                trace.boundary("max_velocity", velocity_mag2, MAX_VELOCITY_SQUARED)
+                trace.boundary("small_velocity", velocity_mag2 - SMALL_VELOCITY_SQUARED, EPSILON)
+            if velocity_mag2 > MAX_VELOCITY_SQUARED:
+                _hit(trace, "update_physics:velocity_clamped")
+                self.velocity = normalize(self.velocity) * MAX_VELOCITY
+                velocity_mag2 = type(velocity_mag2)(MAX_VELOCITY_SQUARED)
+            # todo: collision normals (ACE)
+            self.calc_friction(quantum, velocity_mag2, trace)
+
+            if velocity_mag2 - SMALL_VELOCITY_SQUARED < EPSILON:
+                _hit(trace, "update_physics:small_velocity_zeroed")
+                z = type(velocity_mag2)(0.0)
+                self.velocity = Vector3(z, z, z)
+
+            movement = self.acceleration * 0.5 * quantum * quantum + self.velocity * quantum
+            frame_offset.origin = frame_offset.origin + movement
+
+        self.velocity = self.velocity + self.acceleration * quantum
+        frame_offset.grotate(self.omega * quantum)
+
+    @anchor("CPhysicsObj::UpdatePositionInternal", "PhysicsObj.cs:UpdatePositionInternal")
+    def update_position_internal(self, quantum: float, new_frame: AFrame, mode, trace=None) -> AFrame:
+        """`quantum` is a double. Returns the new frame (C# `ref AFrame newFrame`, replaced by
+        AFrame.Combine)."""
+        offset_frame = AFrame.identity(mode)
+
+        if not self.state & PhysicsState.Hidden:
+            if self.part_array is not None:
+                self.part_array.update(quantum, offset_frame)
+
+            if self.transient_state & TransientState.OnWalkable:
+                offset_frame.origin = offset_frame.origin * self.scale
+            else:
+                offset_frame.origin = offset_frame.origin * 0.0  # OnWalkable getting reset? (ACE)
+        if self.position_manager is not None:
+            raise NotImplementedError("PositionManager.AdjustOffset is not ported: the mover has no PositionManager")
+
+        new_frame = AFrame.combine(self.position.frame, offset_frame)
+
+        if not self.state & PhysicsState.Hidden:
+            self.update_physics_internal(cast_float(self.scale, quantum), new_frame, trace)
+
+        self.process_hooks()
+        return new_frame
+
+    @anchor("CPhysicsObj::UpdateObjectInternal", "PhysicsObj.cs:UpdateObjectInternal")
+    def update_object_internal(self, quantum: float, lscape, trace=None) -> None:
+        """`quantum` is a double. The run's world `lscape` stands in for ACE's static LScape."""
+        if not self.transient_state & TransientState.Active or self.cur_cell is None:
+            _hit(trace, "update_object_internal:inactive")
+            return
+
+        if self.transient_state & TransientState.CheckEthereal:
+            self.set_ethereal(False, False, lscape)
+
+        mode = lscape.mode
+        self.jumped_this_frame = False
+        new_pos = Position(self.position.obj_cell_id, AFrame.identity(mode))
+        new_pos.frame = self.update_position_internal(quantum, new_pos.frame, mode, trace)
+
+        zero = Vector3(type(self.scale)(0.0), type(self.scale)(0.0), type(self.scale)(0.0))
+        if self.part_array is not None and self.part_array.get_num_sphere() != 0:
+            if new_pos.frame.equals(self.position.frame):
+                _hit(trace, "update_object_internal:unmoved")
+                self.cached_velocity = zero
+                self.set_frame(new_pos.frame, lscape)
+                self.initial_updates += 1
+            else:
+                if self.state & PhysicsState.AlignPath:
+                    diff = new_pos.frame.origin - self.position.frame.origin
+                    new_pos.frame.set_vector_heading(normalize(diff))
+                elif self.state & PhysicsState.Sledding and not self.velocity == zero:
+                    new_pos.frame.set_vector_heading(normalize(self.velocity))
+
+                if PhysicsObj.get_block_dist(self.position, new_pos) > 1:
+                    _hit(trace, "update_object_internal:block_dist_refused")
+                    return
+
+                transit, valid = self.transition(self.position, new_pos, False, lscape, trace)
+
+                # temporarily modified while debug path is examined (ACE); transition() is null when not valid
+                if valid and transit.sphere_path.cur_cell is not None:
+                    self.cached_velocity = self.position.get_offset(transit.sphere_path.cur_pos) / cast_float(self.scale, quantum)
+
+                    self.set_position_internal(transit)
+                else:
+                    _hit(trace, "update_object_internal:transition_failed")
+                    new_pos.frame.origin = self.position.frame.origin
+                    self.set_initial_frame(new_pos.frame)
+                    self.cached_velocity = zero
+        else:
+            if self.movement_manager is None and self.transient_state & TransientState.OnWalkable:
+                self.transient_state &= ~TransientState.Active
+
+            new_pos.frame.origin = self.position.frame.origin
+            self.set_frame(new_pos.frame, lscape)
+            self.cached_velocity = zero
+            self.initial_updates += 1
+
+        if self.detection_manager is not None:
+            raise NotImplementedError("DetectionManager.CheckDetection is not ported")
+
+        if self.target_manager is not None:
+            raise NotImplementedError("TargetManager.HandleTargetting is not ported")
+
+        if self.movement_manager is not None:
+            raise NotImplementedError("MovementManager.UseTime is not ported")
+
+        if self.part_array is not None:
+            self.part_array.handle_movement()
+
+        if self.position_manager is not None:
+            raise NotImplementedError("PositionManager.UseTime is not ported")
+
+        if self.particle_manager is not None:
+            raise NotImplementedError("ParticleManager.UpdateParticles is not ported")
+
+        if self.script_manager is not None:
+            raise NotImplementedError("ScriptManager.UpdateScripts is not ported")
+
+    @anchor("CPhysicsObj::update_object", "PhysicsObj.cs:update_object")
+    def update_object(self, lscape, trace=None) -> bool:
+        """One tick: the time since UpdateTime cut into MaxQuantum sub-steps and a last one over
+        MinQuantum; a remainder at or under MinQuantum is kept (UpdateTime advances only by the
+        sub-steps run). ``deltaTime`` and the clocks are doubles, the float quanta widen to double."""
+        if self.parent is not None or self.cur_cell is None or self.state & PhysicsState.Frozen:
+            _hit(trace, "update_object:not_in_world")
+            self.transient_state &= ~TransientState.Active
+            return False
+
+        self.physics_timer_current_time = self.update_time
+
+        delta_time = self.timer.current_time - self.update_time
+        if trace is not None:  # the quanta are doubles here: a boundary is bit-equal in double
+            if delta_time == TICK_RATE:
+                trace["boundary:tick_rate"] += 1
+            if delta_time == HUGE_QUANTUM:
+                trace["boundary:huge_quantum"] += 1
+
+        if delta_time < TICK_RATE:
+            _hit(trace, "update_object:tick_rate_gate")
+            return False
+
+        # commented out for debugging (ACE)
+        if delta_time > HUGE_QUANTUM:
+            _hit(trace, "update_object:huge_quantum_skip")
+            self.update_time = self.timer.current_time  # consume time? (ACE)
+            return False
+
+        while delta_time > MAX_QUANTUM:
+            _hit(trace, "update_object:max_quantum_step")
+            self.physics_timer_current_time += MAX_QUANTUM
+            self.update_object_internal(MAX_QUANTUM, lscape, trace)
+            delta_time -= MAX_QUANTUM
+
+        if trace is not None:
+            if delta_time == MAX_QUANTUM:
+                trace["boundary:max_quantum"] += 1
+            if delta_time == MIN_QUANTUM:
+                trace["boundary:min_quantum"] += 1
+        if delta_time > MIN_QUANTUM:
+            _hit(trace, "update_object:remainder_step")
+            self.physics_timer_current_time += delta_time
+            self.update_object_internal(delta_time, lscape, trace)
+        else:
+            _hit(trace, "update_object:remainder_kept")
+
+        self.update_time = self.physics_timer_current_time
+        return True
+
+    @anchor(None, "PhysicsObj.cs:UpdateObjectInternalServer")
+    def update_object_internal_server(self, quantum: float, lscape, trace=None) -> bool:
+        """The legacy player path: a transition to RequestPos. `quantum` is a double."""
+        if PhysicsObj.get_block_dist(self.position, self.request_pos) > 1:
+            _hit(trace, "update_object_internal_server:block_dist_refused")
+            return False
+
+        request_cell = self.request_pos.obj_cell_id
+
+        transit, valid = self.transition(self.position, self.request_pos, False, lscape, trace)
+        if valid:  # transition() is null when not valid
+            self.cached_velocity = self.position.get_offset(transit.sphere_path.cur_pos) / cast_float(self.scale, quantum)
+            self.set_position_internal(transit)
+        else:
+            _hit(trace, "update_object_internal_server:transition_failed")
+
+        if self.detection_manager is not None:
+            raise NotImplementedError("DetectionManager.CheckDetection is not ported")
+
+        if self.target_manager is not None:
+            raise NotImplementedError("TargetManager.HandleTargetting is not ported")
+
+        if self.movement_manager is not None:
+            raise NotImplementedError("MovementManager.UseTime is not ported")
+
+        if self.part_array is not None:
+            self.part_array.handle_movement()
+
+        if self.position_manager is not None:
+            raise NotImplementedError("PositionManager.UseTime is not ported")
+
+        if self.particle_manager is not None:
+            raise NotImplementedError("ParticleManager.UpdateParticles is not ported")
+
+        if self.script_manager is not None:
+            raise NotImplementedError("ScriptManager.UpdateScripts is not ported")
+
+        return request_cell >> 16 != 0x18A or (self.cur_cell is not None and self.cur_cell.id >> 16 == request_cell >> 16)
+
+    @anchor(None, "PhysicsObj.cs:update_object_server", "its body for a WorldObject that is not teleporting "
+            "(the mover has none: docs/oracle.md's audit table)")
+    def update_object_server(self, force_pos: bool, lscape, trace=None) -> bool:
+        delta_time = self.timer.current_time - self.update_time
+
+        success = self.update_object_internal_server(delta_time, lscape, trace)
+
+        if force_pos and success:
+            self.set_current_pos(self.request_pos, lscape)
+
+        # temp for players (ACE)
+        if self.transient_state & TransientState.Contact:
+            z = type(self.scale)(0.0)
+            self.cached_velocity = Vector3(z, z, z)
+
+        self.update_time = self.timer.current_time
+        return success
+
+    @anchor(None, "PhysicsObj.cs:set_current_pos")
+    def set_current_pos(self, new_pos, lscape) -> None:
+        """``WeenieObj.WorldObject is Player``: the mover has no WorldObject, so the contact plane
+        is never read from the terrain here."""
+        self.position.obj_cell_id = new_pos.obj_cell_id
+        self.position.frame = new_pos.frame.copy()
+
+        if self.cur_cell is None or self.cur_cell.id != self.position.obj_cell_id:
+            new_cell = lscape.get_landcell(new_pos.obj_cell_id)
+            self.change_cell_server(new_cell, lscape)
+
+        self.cached_velocity = self.request_cached_velocity
 
     @anchor("CPhysicsObj::FindObjCollisions", "PhysicsObj.cs:FindObjCollisions")
     def find_obj_collisions(self, transition: Transition) -> TransitionState:

@@ -19,8 +19,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from acconform.flags import TransientState
 from acconform.numerics import Plane, get_mode
-from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState
+from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from acconform import dat
 from acconform.dat import cell_dat_records, environment_records, static_records
 from acconform.staging import MOVER_ID
@@ -35,6 +36,7 @@ from .frame import AFrame, Position
 from . import land_defs
 from .land.lscape import LScape
 from .physics_obj import PhysicsObj
+from .physics_timer import PhysicsTimer
 from .constants import DUMMY_SPHERE_RADIUS
 from .geom.sphere import Sphere
 from .transition.transition import Transition
@@ -116,8 +118,9 @@ def place_mover(scene: Scene, mover: PhysicsObj, lscape: LScape, trace) -> Place
 
 
 @harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects, mover and Environments, and each static's did")
-def portal_dat_for(scene: Scene, mode) -> tuple[PortalDat, list[int]]:
-    """The PortalDat and, per static object in scene order, the id makeObject takes."""
+def portal_dat_for(scene: Scene, mode, timer: PhysicsTimer | None = None) -> tuple[PortalDat, list[int]]:
+    """The PortalDat (carrying the run's clock `timer`) and, per static object in scene order, the
+    id makeObject takes."""
     records = {r.id: r.data for r in dat.mover_records(scene.mover).records}
     dids = []
     for index, record in enumerate(scene.objects):
@@ -127,7 +130,7 @@ def portal_dat_for(scene: Scene, mode) -> tuple[PortalDat, list[int]]:
             records[dat_record.id] = dat_record.data
     for dat_record in environment_records(scene):
         records[dat_record.id] = dat_record.data
-    return PortalDat(records, mode, scene.engine_mode == "server"), dids
+    return PortalDat(records, mode, scene.engine_mode == "server", timer), dids
 
 
 @harness("the run's cell DAT: the EnvCell and LandblockInfo records acconform/dat.py writes for the scene")
@@ -200,14 +203,20 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
     try:
         with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
             return _run(scene, numerics, trace)
-    except AceException as e:  # where ACE throws: its .NET type, as the oracle reports ACE's
-        return Outcome(error=e.verdict())
-    except AttributeError as e:
-        if e.obj is None:  # a member of None: where C# meets null (e.g. a missing BSP child)
-            return Outcome(error=NullReferenceException.from_none(e).verdict())
-        return Outcome(error=f"{type(e).__name__}: {e}")
-    except Exception as e:  # any other port exception is a verdict too (a port bug or gap)
-        return Outcome(error=f"{type(e).__name__}: {e}")
+    except Exception as e:
+        return Outcome(error=verdict(e))
+
+
+@harness("an exception in the port as an outcome's error string, as the oracle reports ACE's")
+def verdict(e: Exception) -> str:
+    """Where ACE throws (an AceException): ``"<.NET type>: <message>"``; a member of None is where C#
+    meets null (e.g. a missing BSP child): NullReferenceException; any other port exception is a
+    verdict too (a port bug or gap), under its Python type."""
+    if isinstance(e, AceException):
+        return e.verdict()
+    if isinstance(e, AttributeError) and e.obj is None:
+        return NullReferenceException.from_none(e).verdict()
+    return f"{type(e).__name__}: {e}"
 
 
 def _run(scene: Scene, mode, trace) -> Outcome:
@@ -219,7 +228,9 @@ def _run(scene: Scene, mode, trace) -> Outcome:
 
 
 def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
-    portal_dat, dids = portal_dat_for(scene, mode)
+    # the clock: at the tick scene's start before anything is made (PhysicsObj() reads it)
+    timer = PhysicsTimer(scene.ticks.start if scene.ticks is not None else 0.0)
+    portal_dat, dids = portal_dat_for(scene, mode, timer)
     lscape.portal_dat = portal_dat
     lscape.cell_dat = cell_dat_for(scene, mode)
     statics = [build_static(record, did, portal_dat, lscape) if record.position.cell & 0xFFFF < ENV_CELL_FIRST else None
@@ -228,6 +239,12 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
     placement = None
     if scene.mover.placement is not None:
         placement = place_mover(scene, mover, lscape, trace)
+    if scene.ticks is not None:
+        ticks = run_ticks(scene, mover, timer, lscape, trace)
+        return Outcome(placement=placement, ticks=ticks,
+                       static_cells=tuple(static_cells(record, did, obj, lscape)
+                                          for record, did, obj in zip(scene.objects, dids, statics)))
+    if placement is not None:
         if mover.cur_cell is None:  # placed in no cell: no transition (the oracle writes the same record)
             return Outcome(velocity=_vec(mover.velocity), placement=placement,
                            static_cells=tuple(static_cells(record, did, obj, lscape)
@@ -264,3 +281,100 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
                            for record, did, obj in zip(scene.objects, dids, statics)),
         placement=placement,
     )
+
+
+# ---------------------------------------------------------------- tick scenes
+
+
+@harness("the physics calls of Player.HandleActionJump's FastTick branch, as the oracle's facade makes them")
+def jump(mover: PhysicsObj, velocity) -> None:
+    """With a local jump velocity. The mover has no MovementManager (no manager, on both sides):
+    IsMovingOrAnimating is ACE's own property, and where it reaches its MovementManager terms
+    (every earlier term false) and throws NullReferenceException, the jump counts the mover as not
+    moving; MotionInterpreter.PendingMotions.Clear() has no interpreter to clear (docs/oracle.md's
+    audit table)."""
+    try:
+        moving = mover.is_moving_or_animating()
+    except AttributeError as e:
+        if e.obj is not None:
+            raise
+        moving = False
+    if not moving:
+        mover.update_time = mover.timer.current_time
+
+    # perform jump in physics engine (ACE)
+    mover.transient_state &= ~(TransientState.Contact | TransientState.WaterContact)
+    mover.calc_acceleration()
+    mover.set_on_walkable(False)
+    mover.set_local_velocity(velocity, False)
+    mover.remove_link_animations()  # matches MotionInterp.LeaveGround more closely (ACE)
+    mover.is_animating = False
+
+
+@harness("a tick step's inputs, in the scene's order, as the oracle's facade applies them")
+def apply_inputs(mover: PhysicsObj, step, mode) -> None:
+    if step.state is not None:
+        mover.state = step.state
+    if step.transient_state is not None:
+        mover.transient_state = step.transient_state
+    if step.velocity is not None:
+        mover.set_velocity(mode.vec(*step.velocity), False)
+    if step.local_velocity is not None:
+        mover.set_local_velocity(mode.vec(*step.local_velocity), False)
+    if step.omega is not None:
+        mover.set_omega(mode.vec(*step.omega), False)
+    if step.jump is not None:
+        jump(mover, mode.vec(*step.jump))
+    if step.sequence_velocity is not None:
+        mover.part_array.sequence.set_velocity(mode.vec(*step.sequence_velocity))
+    if step.sequence_omega is not None:
+        mover.part_array.sequence.set_omega(mode.vec(*step.sequence_omega))
+
+
+@harness("reads the mover's PhysicsObj after a tick, as the oracle's facade does")
+def tick_state(mover: PhysicsObj, updated: bool) -> TickState:
+    q = mover.position.frame.orientation
+    return TickState(
+        updated=bool(updated),
+        update_time=float(mover.update_time),
+        cell=int(mover.position.obj_cell_id),
+        cur_cell=mover.cur_cell.id if mover.cur_cell is not None else 0,
+        origin=_vec(mover.position.frame.origin),
+        orientation=(float(q.w), float(q.x), float(q.y), float(q.z)),
+        velocity=_vec(mover.velocity),
+        acceleration=_vec(mover.acceleration),
+        omega=_vec(mover.omega),
+        cached_velocity=_vec(mover.cached_velocity),
+        state=int(mover.state),
+        transient_state=int(mover.transient_state),
+        contact_plane_cell=int(mover.contact_plane_cell_id),
+        contact_plane=PlaneState(_vec(mover.contact_plane.normal), float(mover.contact_plane.d)),
+        sliding_normal=_vec(mover.sliding_normal),
+        jumped_this_frame=bool(mover.jumped_this_frame),
+        shadow_cells=tuple(mover.shadow_objects),
+    )
+
+
+@anchor(None, "PhysicsObj.cs:update_object", "the tick scene driver: per step the inputs, the clock, then "
+        "update_object or the legacy player path (update_object_server's body)")
+def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LScape, trace) -> tuple[TickState, ...]:
+    """Per step: the inputs (the clock still at the previous tick's time), the clock set to the
+    step's time (Ticks.times()), the driver, then the mover read back. An exception in a tick is
+    that tick's error and ends the run, as in the oracle."""
+    ticks = scene.ticks
+    mode = lscape.mode
+    states = []
+    for step, time in zip(ticks.steps, ticks.times()):
+        try:
+            apply_inputs(mover, step, mode)
+            timer.set(time)
+            if ticks.driver == "update_object":
+                updated = mover.update_object(lscape, trace)
+            else:
+                mover.request_pos = Position.from_record(step.request_pos, mode)
+                updated = mover.update_object_server(True, lscape, trace)
+        except Exception as e:
+            states.append(TickState(error=verdict(e)))
+            break
+        states.append(tick_state(mover, updated))
+    return tuple(states)

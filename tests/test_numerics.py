@@ -112,6 +112,22 @@ def test_fast_mode_vectors_compute_in_double():
         ("PLACEMENT_CLOSE", k.PLACEMENT_CLOSE, 0x3D4CCCCD),
         ("QUAT_VALID_SLACK", k.QUAT_VALID_SLACK, 0x3A83126E),
         ("DEFAULT_ELASTICITY", k.DEFAULT_ELASTICITY, 0x3D4CCCCD),
+        ("MIN_QUANTUM", k.MIN_QUANTUM, 0x3D088889),
+        ("MAX_QUANTUM", k.MAX_QUANTUM, 0x3DCCCCCD),
+        ("HUGE_QUANTUM", k.HUGE_QUANTUM, 0x40000000),
+        ("TICK_RATE", k.TICK_RATE, 0x3D088889),
+        ("MAX_VELOCITY", k.MAX_VELOCITY, 0x42480000),
+        ("MAX_VELOCITY_SQUARED", k.MAX_VELOCITY_SQUARED, 0x451C4000),
+        ("SMALL_VELOCITY", k.SMALL_VELOCITY, 0x3E800000),
+        ("SMALL_VELOCITY_SQUARED", k.SMALL_VELOCITY_SQUARED, 0x3D800000),
+        ("DEFAULT_FRICTION", k.DEFAULT_FRICTION, 0x3F733333),
+        ("FRICTION_LEAVING_ANGLE", k.FRICTION_LEAVING_ANGLE, 0x3E800000),
+        ("SLEDDING_STOP_SPEED_SQUARED", k.SLEDDING_STOP_SPEED_SQUARED, 0x3FC80000),
+        ("SLEDDING_STOP_FRICTION", k.SLEDDING_STOP_FRICTION, 0x3F800000),
+        ("SLEDDING_GLIDE_SPEED_SQUARED", k.SLEDDING_GLIDE_SPEED_SQUARED, 0x40C80000),
+        ("SLEDDING_FLAT_Z", k.SLEDDING_FLAT_Z, 0x3F7FFFB2),
+        ("SLEDDING_GLIDE_FRICTION", k.SLEDDING_GLIDE_FRICTION, 0x3E4CCCCD),
+        ("COLLISION_RECORD_LIFETIME", k.COLLISION_RECORD_LIFETIME, 0x3F800000),
     ],
 )
 def test_constants_are_pinned_by_their_float32_bit_patterns(name, value, bits):
@@ -131,6 +147,20 @@ def test_constants_match_the_csharp_literals_they_come_from():
     assert f32_bits(0.48) == f32_bits(k.PLACEMENT_MIN_RADIUS)
     assert f32_bits(0.05) == f32_bits(k.PLACEMENT_CLOSE)
     assert f32_bits(np.float32(0.0002) * np.float32(5.0)) == f32_bits(k.QUAT_VALID_SLACK)
+    # the tick's: 1.0f / 30.0f and the squares are folded by the C# compiler in float32
+    assert f32_bits(np.float32(1.0) / np.float32(30.0)) == f32_bits(k.MIN_QUANTUM) == f32_bits(k.TICK_RATE)
+    assert f32_bits(0.1) == f32_bits(k.MAX_QUANTUM) and f32_bits(0.95) == f32_bits(k.DEFAULT_FRICTION)
+    assert f32_bits(np.float32(50.0) * np.float32(50.0)) == f32_bits(k.MAX_VELOCITY_SQUARED)
+    assert f32_bits(np.float32(0.25) * np.float32(0.25)) == f32_bits(k.SMALL_VELOCITY_SQUARED)
+    assert f32_bits(0.99999536) == f32_bits(k.SLEDDING_FLAT_Z) and f32_bits(0.2) == f32_bits(k.SLEDDING_GLIDE_FRICTION)
+    assert f32_bits(1.5625) == f32_bits(k.SLEDDING_STOP_SPEED_SQUARED) and f32_bits(6.25) == f32_bits(k.SLEDDING_GLIDE_SPEED_SQUARED)
+
+
+def test_the_quanta_widen_to_double_as_their_float32_values_not_the_decimal_literals():
+    # update_object compares a double deltaTime with the float constants: (double)0.1f, not 0.1
+    assert k.MAX_QUANTUM == 0.10000000149011612 and k.MAX_QUANTUM != 0.1
+    assert k.MIN_QUANTUM == 0.03333333507180214 and k.MIN_QUANTUM != 1.0 / 30.0
+    assert type(k.MAX_QUANTUM) is float and type(k.MIN_QUANTUM) is float
 
 
 def test_math_floor_and_ceiling_pass_infinities_and_nan_through_as_csharp_does():

@@ -77,6 +77,41 @@ class ObjCell:
         if self.voyeur_table:
             raise NotImplementedError("voyeurs (ObjCell.VoyeurTable) are not ported")
 
+    @anchor("CObjCell::remove_object", "ObjCell.cs:RemoveObject")
+    def remove_object(self, obj) -> None:
+        """List.Remove: the first entry that is `obj` (PhysicsObj has no Equals override: by
+        reference), if any. NumObjects is not kept; update_all_voyeur has no voyeurs to tell."""
+        for i, entry in enumerate(self.object_list):
+            if entry is obj:
+                del self.object_list[i]
+                break
+        self.update_all_voyeur(obj)
+
+    @anchor("CObjCell::update_all_voyeur", "ObjCell.cs:update_all_voyeur")
+    def update_all_voyeur(self, obj) -> None:
+        if obj.id == 0 or obj.parent is not None or self.voyeur_table is None:
+            return
+        if self.voyeur_table:
+            raise NotImplementedError("voyeurs (ObjCell.VoyeurTable) are not ported")
+
+    @anchor("CObjCell::remove_shadow_object", "ObjCell.cs:remove_shadow_object")
+    def remove_shadow_object(self, shadow_obj) -> None:
+        """List.Remove by reference (ShadowObj has no Equals override); NumShadowObjects is not kept."""
+        # multiple shadows? (ACE)
+        for i, entry in enumerate(self.shadow_object_list):
+            if entry is shadow_obj:
+                del self.shadow_object_list[i]
+                break
+        shadow_obj.cell = None
+
+    @anchor("CObjCell::check_collisions", "ObjCell.cs:check_collisions")
+    def check_collisions(self, obj, lscape) -> bool:
+        for shadow_obj in self.shadow_object_list:
+            p_obj = shadow_obj.physics_obj
+            if p_obj.parent is None and not p_obj.equals(obj) and p_obj.check_collision(obj, lscape):
+                return True
+        return False
+
     @anchor("CObjCell::find_collisions", "ObjCell.cs:FindCollisions")
     def find_collisions(self, transition) -> TransitionState:
         return TransitionState.Invalid

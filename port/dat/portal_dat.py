@@ -3,18 +3,23 @@
 A DatDatabase (port/dat/dat_database.py) of the portal records acconform/dat.py wrote for the
 scene (its objects' and the mover's GfxObjs and Setups, its Environments). It also carries the
 run's stand-ins for the other statics DAT loading reads: GfxObjCache's dictionary (`gfx_objs`)
-and PhysicsEngine.Instance.Server (`server`).
+and PhysicsEngine.Instance.Server (`server`), and the physics clock every PhysicsObj made from
+these records reads (`timer`: the run's port/physics_timer.PhysicsTimer, for the static
+PhysicsTimer.CurrentTime; a PortalDat made without one gets a clock at 0.0, which a scene without
+ticks never observes).
 """
 
 from __future__ import annotations
 
+from ..physics_timer import PhysicsTimer
 from .dat_database import DatDatabase
 
 
 class PortalDat(DatDatabase):
-    __slots__ = ("server", "gfx_objs")
+    __slots__ = ("server", "gfx_objs", "timer")
 
-    def __init__(self, records: dict[int, bytes], mode, server: bool):
+    def __init__(self, records: dict[int, bytes], mode, server: bool, timer: PhysicsTimer | None = None):
         super().__init__(records, mode)
         self.server = server
+        self.timer = timer if timer is not None else PhysicsTimer()
         self.gfx_objs: dict = {}  # GfxObjCache.GfxObjs

@@ -38,6 +38,7 @@ class Landblock(LandblockStruct):
         self.closest = (-1.0, -1.0)
         self.static_objects: list = []
         self.server_objects: list = []  # ServerObjects: the non-DAT objects in its cells (Landblock.add_server_object)
+        self.adjacents = None  # set only by a running server's LandblockManager (SetAdjacents): never here
         self.buildings: list = []
 
         self.id = record.id
@@ -51,6 +52,31 @@ class Landblock(LandblockStruct):
         if obj not in self.server_objects:
             self.server_objects.append(obj)
             return True
+        return False
+
+    @anchor(None, "Landblock.cs:GetServerObjects")
+    def get_server_objects(self, include_adjacents: bool) -> list:
+        """`adjacents` is null unless a running server's LandblockManager set it (SetAdjacents), so
+        asking for them throws NullReferenceException where ACE's foreach meets the null list."""
+        results = list(self.server_objects)
+
+        if include_adjacents:
+            if self.adjacents is None:
+                from ..errors import NullReferenceException
+
+                raise NullReferenceException("Object reference not set to an instance of an object. "
+                                             "(port: Landblock.adjacents, set only by a running server)")
+            for adjacent in self.adjacents:
+                results.extend(adjacent.server_objects)
+
+        return results
+
+    @anchor(None, "Landblock.cs:remove_server_object")
+    def remove_server_object(self, obj) -> bool:
+        for i, entry in enumerate(self.server_objects):
+            if entry is obj:
+                del self.server_objects[i]
+                return True
         return False
 
     @anchor("CLandBlock::get_land_limits", "Landblock.cs:get_land_limits")

@@ -96,10 +96,51 @@ BRANCHES: dict[str, str] = {
     "find_placement_pos:no_sliding": "blocked where it stands, and the placement may not slide (no Slide)",
     "find_placement_pos:slid_to_free_spot": "blocked where it stands: the spiral search found a free spot",
     "find_placement_pos:no_free_spot": "blocked where it stands: the spiral search found no free spot within reach",
+    # the tick (a tick scene's steps): PhysicsObj.update_object and what it calls
+    "update_object:not_in_world": "a parent, no CurCell or Frozen: Active cleared, no update",
+    "update_object:tick_rate_gate": "less than TickRate (1/30 s) since UpdateTime: no update, the time kept for later",
+    "update_object:huge_quantum_skip": "more than HugeQuantum (2 s) since UpdateTime: the time consumed, no update",
+    "update_object:max_quantum_step": "a MaxQuantum (0.1 s) sub-step while more than MaxQuantum is left",
+    "update_object:remainder_step": "the remainder over MinQuantum run as a last sub-step",
+    "update_object:remainder_kept": "a remainder at or under MinQuantum kept for the next tick (UpdateTime not advanced past it)",
+    "update_object_internal:inactive": "not Active (or no CurCell): the sub-step does nothing",
+    "update_object_internal:unmoved": "the new frame within EPSILON of the old: no transition, CachedVelocity zero",
+    "update_object_internal:block_dist_refused": "the new position more than one landblock away (GetBlockDist > 1): refused",
+    "update_object_internal:transition_failed": "the transition found no valid position (or no cell): the mover stays, CachedVelocity zero",
+    "update_object_internal_server:block_dist_refused": "RequestPos more than one landblock away: refused, update fails",
+    "update_object_internal_server:transition_failed": "the transition to RequestPos found no valid position",
+    "update_physics:velocity_clamped": "speed over MaxVelocity: scaled down to it",
+    "update_physics:small_velocity_zeroed": "squared speed within EPSILON of SmallVelocity squared, or under: velocity zeroed",
+    "calc_friction:leaving_plane": "on walkable ground, velocity leaving the contact plane (dot >= 0.25): no friction",
+    "calc_friction:sledding_stop": "sledding under 1.25 m/s: friction 1.0 (stops)",
+    "calc_friction:sledding_glide": "sledding at 2.5 m/s or more on a plane flatter than 0.99999536: friction 0.2",
+    "handle_all_collisions:elastic_bounce": "a collision normal the velocity runs into: bounced by Elasticity",
+    "handle_all_collisions:inelastic_stop": "Inelastic and a collision normal: velocity zeroed",
 }
 
-# Branches no recorded test scene reaches yet, and why (none at present).
-NOT_YET_REACHED: dict[str, str] = {}
+# The tick's branches (a tick scene's steps) that the example tick scenes reach (examples/tick_*.json,
+# against ACE's recorded answers on both runtimes in tests/oracle/data/ace_tick_outcomes.json;
+# tests/port/test_tick_scenes.py checks each); the other scenes never do (handle_all_collisions'
+# bounce also comes with a placement).
+REACHED_BY_TICK_SCENES: dict[str, str] = {
+    name: "tick scenes only" for name in (
+        "update_object:tick_rate_gate", "update_object:huge_quantum_skip", "update_object:max_quantum_step",
+        "update_object:remainder_step", "update_object_internal:inactive", "update_object_internal:unmoved",
+        "update_physics:small_velocity_zeroed", "calc_friction:leaving_plane", "handle_all_collisions:elastic_bounce")
+}
+
+# Branches no recorded test scene reaches yet, and why.
+NOT_YET_REACHED: dict[str, str] = {
+    name: "a tick branch no example tick scene with ACE's recorded answers reaches yet (issue 19's tick corpus records them)"
+    for name in BRANCHES if name.split(":")[0] in (
+        "update_object", "update_object_internal", "update_object_internal_server", "update_physics", "calc_friction",
+        "handle_all_collisions") and name not in REACHED_BY_TICK_SCENES
+}
+# ACE builds UpdateObjectInternal's newPos as `new Position(Position.ObjCellID)`: GetBlockDist(Position, newPos)
+# compares a cell id with itself and is always 0, so this refusal cannot happen (counted, for the record)
+NOT_YET_REACHED["update_object_internal:block_dist_refused"] = (
+    "unreachable in ACE: newPos takes Position.ObjCellID, so GetBlockDist(Position, newPos) is always 0")
+
 
 # Branches only the named indoor scenes reach (tests/port/cell: indoor_rooms.py and dungeon_scenes.py,
 # against ACE's recorded answers); the outdoor scenes never do.
@@ -165,6 +206,16 @@ BOUNDARIES: dict[str, str] = {
     "step_up_height": "Sphere/CylSphere.StepSphereUp: the rise to climb bit-equal to the mover's StepUpHeight",
     "step_down_height": "Transition.TransitionalInsert and CheckWalkable: the step-down height bit-equal to the mover's"
                         " sphere diameter (one whole step-down or two halves)",
+    # the tick's: update_object compares its double deltaTime with the float quanta (counted when equal in double)
+    "tick_rate": "update_object: the time since UpdateTime exactly TickRate (updates: the gate is `<`)",
+    "huge_quantum": "update_object: the time since UpdateTime exactly HugeQuantum (simulated: the skip is `>`)",
+    "max_quantum": "update_object: the time left exactly MaxQuantum at the loop test (no further MaxQuantum step)",
+    "min_quantum": "update_object: the remainder exactly MinQuantum (kept, not run: the test is `>`)",
+    "max_velocity": "UpdatePhysicsInternal: the squared speed bit-equal to MaxVelocitySquared (not clamped)",
+    "small_velocity": "UpdatePhysicsInternal: squared speed less SmallVelocitySquared bit-equal to EPSILON (kept)",
+    "sledding_stop_speed": "calc_friction, sledding: the squared speed bit-equal to 1.5625 (not stopped)",
+    "sledding_glide_speed": "calc_friction, sledding: the squared speed bit-equal to 6.25 (glides)",
+    "sledding_flat_z": "calc_friction, sledding: the contact normal's z bit-equal to 0.99999536 (no glide: the test is `>`)",
 }
 
 
@@ -179,7 +230,8 @@ BOUNDARIES: dict[str, str] = {
 
 # the boundaries a Trace measures in ulps (the others are counted only when hit)
 MEASURED_IN_ULPS = ("floor_z", "landing_z", "sphere_tangent", "cylsphere_tangent", "plane_tangent", "polygon_edge",
-                    "polygon_vertex", "step_up_height", "step_down_height")
+                    "polygon_vertex", "step_up_height", "step_down_height", "max_velocity", "small_velocity",
+                    "sledding_stop_speed", "sledding_glide_speed", "sledding_flat_z")
 
 
 _F32, _U32 = struct.Struct("<f"), struct.Struct("<I")

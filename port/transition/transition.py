@@ -620,6 +620,13 @@ class Transition:
     def init_path(self, begin_cell, begin_pos, end_pos) -> None:
         self.sphere_path.init_path(begin_cell, begin_pos, end_pos)
 
+    @anchor("CTransition::check_collisions", "Transition.cs:CheckCollisions")
+    def check_collisions(self, obj) -> bool:
+        self.sphere_path.insert_type = InsertType.Placement
+        self.sphere_path.set_check_pos(self.sphere_path.cur_pos, self.sphere_path.cur_cell)
+
+        return obj.find_obj_collisions(self) != TransitionState.OK
+
     @anchor("CTransition::init_sliding_normal", "Transition.cs:InitSlidingNormal")
     def init_sliding_normal(self, normal: Vector3) -> None:
         ci = self.collision_info

@@ -23,6 +23,7 @@ import pytest
 from acconform.numerics import RUNTIMES, runtime_named
 from acconform.oracle import get_oracle, live_configured
 from acconform.port.run import run_scene
+from acconform.port.transition.branches import REACHED_BY_TICK_SCENES
 from corpus_sample import SAMPLE_NAME, load_sample
 
 SHARDS = 4
@@ -115,6 +116,13 @@ CORPUS_MISSES = {
     "validate_transition:stationary_fall_2": "needs FramesStationaryFall already 1, which a scene cannot seed",
     "validate_transition:stationary_fall_3": "needs FramesStationaryFall already 2, which a scene cannot seed",
 }
+# the tick's branches the example tick scenes reach (tests/port/test_tick_scenes.py): the corpus holds no tick
+# scene yet (issue 19's tick corpus); handle_all_collisions' bounce is reached by its placements already
+CORPUS_MISSES.update({
+    name: "a tick branch: no tick scene in the corpus yet (the example tick scenes reach it)"
+    for name in REACHED_BY_TICK_SCENES
+    if name != "handle_all_collisions:elastic_bounce"
+})
 
 
 @pytest.mark.slow

@@ -14,6 +14,7 @@ from acconform.port.dat.cell_portal import CellPortal
 from acconform.port.dat.stab import Stab
 from acconform.port.frame import AFrame, Position
 from acconform.port.land.lscape import POOL
+from acconform.port.physics_timer import PhysicsTimer
 from acconform.port.vec import Sidedness, intersect_box
 from acconform.numerics import Plane
 from indoor_rooms import LB, indoor_scene, portal, room, two_rooms, world
@@ -187,7 +188,7 @@ def test_adjust_position_moves_an_indoor_position_into_the_visible_child_cell_or
     env, (a, b) = two_rooms()
     a = room(0x0100, 60.0, portals=a.portals, visible=a.visible_cells, seen_outside=True)
     lscape, _ = _world(cells=(a, b))
-    obj = PhysicsObj.create(EXACT)
+    obj = PhysicsObj.create(EXACT, PhysicsTimer())
     low = v(0, 0, 0.5)
     pos = Position(A, AFrame(v(71, 60, 20), EXACT.quat(0, 0, 0, 1)))
     assert obj.adjust_position(pos, low, False, True, lscape).id == B and pos.obj_cell_id == B
