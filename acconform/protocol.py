@@ -39,7 +39,7 @@ import time
 from collections.abc import Callable
 
 from . import __version__
-from .codec import dumps_compact
+from .codec import dumps_compact, loads_answer
 from .errors import AcconformError, InvalidScene
 from .numerics import RUNTIMES
 from .oracle.recorded import scene_kind
@@ -351,14 +351,14 @@ class Implementation:
         except _Failed as e:
             return self._fail_head(e.args[0])
         try:
-            doc = json.loads(line)
+            doc = loads_answer(line)  # -0 is negative zero
             if not isinstance(doc, dict):
                 raise ValueError("not a JSON object")
             if doc.get("id") != rid:
                 raise ValueError(f"answer id {doc.get('id')!r}, expected {rid}")
             if "outcome" not in doc:
                 raise ValueError("no \"outcome\" field")
-            outcome = Outcome.from_json(doc["outcome"], "outcome")
+            outcome = Outcome.from_json(doc["outcome"], "outcome", exact=True)  # a float must name a float32
         except (ValueError, InvalidScene) as e:
             return self._fail_head(f"{PROTOCOL_ERROR}: malformed answer ({e}): {line[:120]!r}")
         self._inflight.popleft()
