@@ -42,6 +42,7 @@ from . import __version__
 from .codec import dumps_compact, loads_answer
 from .errors import AcconformError, InvalidScene
 from .numerics import RUNTIMES
+from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import scene_kind
 from .outcome import Outcome
 from .scene import Scene
@@ -140,7 +141,7 @@ class Implementation:
         if not self.argv:
             raise ImplementationError("--impl needs a command, e.g. --impl 'acconform serve'")
         self.mode = mode
-        self.runtime = "mono"  # the ACE compared with: whose System.Numerics arithmetic to match
+        self.runtime = DEFAULT_RUNTIME  # the ACE compared with: whose System.Numerics arithmetic to match
         self.timeout = timeout
         self.start_timeout = start_timeout
         self.restarts = 0
@@ -389,8 +390,10 @@ class Implementation:
 # ---------------------------------------------------------------- the implementation side
 
 
-def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None) -> int:
-    """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side).
+def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None,
+          default_runtime: str = DEFAULT_RUNTIME) -> int:
+    """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side);
+    a request that names no runtime is computed as `default_runtime`.
 
     A request that cannot be read is answered with an outcome whose error says why (the harness
     counts it as the implementation's verdict); the loop goes on.
@@ -408,7 +411,7 @@ def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=No
             rid = req.get("id") if isinstance(req, dict) else None
             if not isinstance(req, dict) or "scene" not in req:
                 raise ValueError("expected {\"id\": ..., \"mode\": ..., \"scene\": {...}}")
-            mode, runtime = req.get("mode", "exact"), req.get("runtime", "mono")
+            mode, runtime = req.get("mode", "exact"), req.get("runtime", default_runtime)
             if mode not in MODES:
                 raise ValueError(f"unknown mode {mode!r}")
             if runtime not in RUNTIMES:
