@@ -154,7 +154,7 @@ def measure_kind(scenes, oracle=None, run_scene=None, runtime: str | None = None
     """Every figure for one kind's scenes: timings and the three comparisons.
 
     `run_scene(scene, mode=...)` is the implementation measured (default: the built-in port).
-    `runtime` (--runtime): the arithmetic computed, by default the oracle's (commands.runtime_or_default).
+    `runtime` (--runtime): the arithmetic computed without an oracle (commands.runtime_or_default).
     """
     import time
 
@@ -164,8 +164,8 @@ def measure_kind(scenes, oracle=None, run_scene=None, runtime: str | None = None
     if run_scene is None:
         from ..port.run import run_scene
 
-    # the port computes as the ACE it is compared with (--runtime's, or the default, without an oracle)
-    rt = runtime_or_default(runtime, oracle)
+    # the port computes as the ACE it is compared with (whose answers the figures use), else as --runtime
+    rt = runtime_or_default(None, oracle) if oracle is not None else runtime_or_default(runtime)
     t_exact = t_fast = 0.0
     fast_exact, fast_oracle, exact_oracle = ErrorStats(), ErrorStats(), ErrorStats()
     errors = {"exact": 0, "fast": 0, "oracle": 0}
