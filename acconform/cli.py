@@ -35,8 +35,16 @@ COMMANDS: dict[str, tuple[str, str]] = {
 }
 
 
+class _Parser(argparse.ArgumentParser):
+    """Bad options are bad input like any other: one line naming what is wrong, exit 2 (the usage is
+    one `--help` away). Subcommand parsers are made of this class too."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (see `{self.prog} --help`)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="acconform",
         description="Differential conformance testing of Asheron's Call physics: a Python port of "
         "ACE's collision code against ACE itself.",

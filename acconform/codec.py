@@ -3,7 +3,12 @@
 Floats: every float is a float32. It is written as the shortest decimal that reads back as the
 same float32 (numpy's repr), and read by rounding to the nearest float32, so a float32 survives
 the trip bit for bit (tests/test_codec.py draws every finite pattern class). Non-finite values,
-legal only in outcomes, are written as their bit pattern, e.g. "0x7fc00000".
+legal only in outcomes, are written as their bit pattern, e.g. "0x7fc00000"; an outcome's float
+may be read from its bit pattern whatever its value ("0x80000000" is -0.0).
+An implementation's answer (the protocol) is read strictly (`loads_answer`, `Reader(..., exact=True)`):
+JSON ``-0`` is negative zero, and a number that names no float32 -- neither a float32's exact value
+nor a decimal of at most 9 significant digits, as every float32 can be written (a double with more
+digits, e.g. 0.30000000000000004) -- is refused naming the field, never rounded without a word.
 Cell and object ids are written as hex strings ("0xA9B40001") and read from hex strings or ints.
 Doubles (a tick scene's clock: ``ticks.start`` and each step's ``dt``) are written as Python's
 ``repr`` of the double (the shortest decimal that reads back as the same double) and read back
@@ -55,15 +60,41 @@ def dumps_compact(obj: Any) -> str:
 
 
 F32_MAX = float(np.finfo(np.float32).max)
+# every float32 has a decimal of at most this many significant digits that reads back to it
+# (C's "%.9g", .NET's "G9"; the shortest form has fewer)
+F32_DIGITS = 9
+
+
+def _parse_int(text: str):
+    return -0.0 if text == "-0" else int(text)
+
+
+def loads_answer(text: str) -> Any:
+    """JSON as an implementation writes it: ``-0`` read as negative zero (json reads it as the integer 0)."""
+    return json.loads(text, parse_int=_parse_int)
+
+
+def names_a_float32(v: float | int, r: float) -> bool:
+    """Whether the number `v` read from JSON names the float32 `r` it rounds to: `r` exactly, or
+    written in at most F32_DIGITS significant digits (what a double computation's 17 digits are not)."""
+    if v == r:
+        return True
+    if isinstance(v, int):
+        digits = str(abs(v)).rstrip("0")
+    else:
+        digits = repr(v).lstrip("-").split("e", 1)[0].replace(".", "").strip("0")
+    return len(digits) <= F32_DIGITS
 
 
 class Reader:
     """Walks a parsed JSON document, checking types and naming the field path in every error."""
 
-    __slots__ = ("value", "_path", "_parent", "_key")
+    __slots__ = ("value", "_path", "_parent", "_key", "exact")
 
-    def __init__(self, value: Any, path: str = "", parent: "Reader | None" = None, key=None):
+    def __init__(self, value: Any, path: str = "", parent: "Reader | None" = None, key=None, exact: bool = False):
         self.value = value
+        # exact: a float must name a float32 (an implementation's answer), not be rounded to one
+        self.exact = parent.exact if parent is not None else exact
         # a child's path string is built only when asked for (an error message): reading a scene
         # makes a Reader per number, and formatting every path was a third of the reading time
         self._path = path if parent is None else None
@@ -119,23 +150,32 @@ class Reader:
         return [Reader(v, "", self, i) for i, v in enumerate(self.value)]
 
     def f32(self, allow_nonfinite: bool = False) -> float:
+        """A float32. `allow_nonfinite` (an outcome's floats): also non-finite, and any float32 may
+        be given as its bit pattern ("0x80000000")."""
         v = self.value
         if type(v) is float and -F32_MAX < v < F32_MAX:  # the common case: rounds to a finite float32
-            return float(np.float32(v))
+            r = float(np.float32(v))
+            if self.exact and r != v and not names_a_float32(v, r):
+                self._not_a_float32(v, r)
+            return r
         if isinstance(v, str) and allow_nonfinite and v.lower().startswith("0x"):
             try:
                 bits = int(v, 16)
             except ValueError:
                 self.fail(f"expected a number or a float32 bit pattern, got {v!r}")
-            return float(np.uint32(bits & 0xFFFFFFFF).view(np.float32))
+            if not 0 <= bits <= 0xFFFFFFFF:
+                self.fail(f"a float32 bit pattern has at most 8 hex digits, got {v!r}")
+            return float(np.uint32(bits).view(np.float32))
         if isinstance(v, bool) or not isinstance(v, (int, float)):
-            self.fail(f"expected a number, got {_kind(v)}")
+            self.fail(f"expected a number{' or a float32 bit pattern' if allow_nonfinite else ''}, got {_kind(v)}")
         if not math.isfinite(v):
             self.fail(f"expected a finite number, got {v}")
         with np.errstate(over="ignore"):
             r = np.float32(v)
         if not np.isfinite(r) and not allow_nonfinite:
             self.fail(f"{v} is outside float32's range")
+        if self.exact and np.isfinite(r) and not names_a_float32(v, float(r)):
+            self._not_a_float32(v, float(r))
         return float(r)
 
     def f64(self) -> float:
@@ -150,6 +190,11 @@ class Reader:
         if not math.isfinite(d):
             self.fail(f"expected a finite number, got {v}")
         return d
+
+    def _not_a_float32(self, v, r: float):
+        f = np.float32(r)
+        self.fail(f"{v!r} is not a float32 (the nearest is {str(f)}): write a float32 exactly, in at most "
+                  f"{F32_DIGITS} significant digits, or as its bit pattern '0x{int(f.view(np.uint32)):08x}'")
 
     def vec3(self) -> tuple[float, float, float]:
         a, b, c = (r.f32() for r in self.list(count=3))

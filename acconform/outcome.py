@@ -30,7 +30,7 @@ world) is the outcome's own `error`, with `ticks` None.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields
 
 from .codec import Reader, write_f32, write_f64, write_id, write_vec
 from .flags import ObjectInfoState, PhysicsState, SetPositionError, TransientState, flag_names
@@ -43,6 +43,12 @@ FORMAT_V1 = "acconform.outcome/1"  # read (static_cells not recorded), never wri
 ZERO: Vec3 = (0.0, 0.0, 0.0)
 
 
+def _field(default, unit: str, what: str):
+    """A field with its unit ("" when it has none) and what it holds: docs/protocol.md's table of
+    outcome fields is generated from these (acconform.schema.outcome_fields_markdown)."""
+    return field(default=default, metadata={"unit": unit, "what": what})
+
+
 def _vec_nf(r: Reader) -> Vec3:
     a, b, c = (x.f32(allow_nonfinite=True) for x in r.list(count=3))
     return (a, b, c)
@@ -50,11 +56,11 @@ def _vec_nf(r: Reader) -> Vec3:
 
 @dataclass(frozen=True, slots=True)
 class ContactPlaneState:
-    valid: bool = False
-    cell: int = 0
-    is_water: bool = False
-    normal: Vec3 = ZERO
-    d: float = 0.0
+    valid: bool = _field(False, "", "whether the plane is set (CollisionInfo.ContactPlaneValid / LastKnownContactPlaneValid)")
+    cell: int = _field(0, "", "the cell the plane was found in (ContactPlaneCellID)")
+    is_water: bool = _field(False, "", "whether it is a water surface (ContactPlaneIsWater)")
+    normal: Vec3 = _field(ZERO, "unit vector", "Plane.Normal")
+    d: float = _field(0.0, "m", "Plane.D: the plane holds the points p with normal . p + d = 0")
 
     def to_json(self):
         return {"valid": self.valid, "cell": write_id(self.cell), "is_water": self.is_water,
@@ -69,8 +75,8 @@ class ContactPlaneState:
 
 @dataclass(frozen=True, slots=True)
 class NormalState:
-    valid: bool = False
-    vector: Vec3 = ZERO
+    valid: bool = _field(False, "", "whether the normal is set (CollisionNormalValid / SlidingNormalValid)")
+    vector: Vec3 = _field(ZERO, "direction", "the normal, un-normalised as ACE stores it")
 
     def to_json(self):
         return {"valid": self.valid, "vector": write_vec(self.vector)}
@@ -85,13 +91,13 @@ class NormalState:
 class PlacementState:
     """The mover after PhysicsObj.SetPositionInternal(Position, SetPosition, Transition)."""
 
-    result: int = 0  # SetPositionError
-    cell: int = 0  # Position.ObjCellID
-    origin: Vec3 = ZERO  # Position.Frame
-    orientation: tuple[float, float, float, float] = IDENTITY
-    cur_cell: int = 0  # CurCell id (0 when none)
-    transient_state: int = 0  # TransientState
-    shadow_cells: tuple[int, ...] = ()  # ShadowObjects' cell ids, in order
+    result: int = _field(0, "", "SetPosition's answer: a SetPositionError name (OK, NoCell, Collided, ...)")
+    cell: int = _field(0, "", "Position.ObjCellID")
+    origin: Vec3 = _field(ZERO, "m", "Position.Frame.Origin, within the cell's landblock")
+    orientation: tuple[float, float, float, float] = _field(IDENTITY, "quaternion [w, x, y, z]", "Position.Frame.Orientation")
+    cur_cell: int = _field(0, "", "the mover's CurCell id (0x00000000 when none)")
+    transient_state: int = _field(0, "", "TransientState flag names (Contact, OnWalkable, ...)")
+    shadow_cells: tuple[int, ...] = _field((), "", "the cell ids of the mover's ShadowObjects, in their order")
 
     def to_json(self):
         return {"result": SetPositionError(self.result).name, "cell": write_id(self.cell), "origin": write_vec(self.origin),
@@ -115,8 +121,8 @@ class PlacementState:
 class PlaneState:
     """A System.Numerics Plane read back from ACE (PhysicsObj.ContactPlane): its normal and d."""
 
-    normal: Vec3 = ZERO
-    d: float = 0.0
+    normal: Vec3 = _field(ZERO, "unit vector", "Plane.Normal")
+    d: float = _field(0.0, "m", "Plane.D: the plane holds the points p with normal . p + d = 0")
 
     def to_json(self):
         return {"normal": write_vec(self.normal), "d": write_f32(self.d)}
@@ -134,24 +140,24 @@ Quat = tuple[float, float, float, float]
 class TickState:
     """The mover's PhysicsObj after one tick's driver returned (update_object / the request_pos path)."""
 
-    updated: bool = False               # update_object's / update_object_server's return value
-    update_time: float = 0.0            # PhysicsObj.UpdateTime (double)
-    cell: int = 0                       # Position.ObjCellID
-    cur_cell: int = 0                   # CurCell id (0 when none)
-    origin: Vec3 = ZERO                 # Position.Frame.Origin
-    orientation: Quat = IDENTITY        # Position.Frame.Orientation (w, x, y, z)
-    velocity: Vec3 = ZERO               # Velocity
-    acceleration: Vec3 = ZERO           # Acceleration
-    omega: Vec3 = ZERO                  # Omega
-    cached_velocity: Vec3 = ZERO        # CachedVelocity
-    state: int = 0                      # State (PhysicsState)
-    transient_state: int = 0            # TransientState
-    contact_plane_cell: int = 0         # ContactPlaneCellID
-    contact_plane: PlaneState = PlaneState()  # ContactPlane
-    sliding_normal: Vec3 = ZERO         # SlidingNormal
-    jumped_this_frame: bool = False     # JumpedThisFrame
-    shadow_cells: tuple[int, ...] = ()  # ShadowObjects' cell ids, in order
-    error: str | None = None            # an exception in this tick (later ticks are not run)
+    updated: bool = _field(False, "", "the driver's return value (update_object / update_object_server)")
+    update_time: float = _field(0.0, "s (double)", "PhysicsObj.UpdateTime, the clock the next tick's quantum counts from")
+    cell: int = _field(0, "", "Position.ObjCellID")
+    cur_cell: int = _field(0, "", "CurCell's id (0x00000000 when none)")
+    origin: Vec3 = _field(ZERO, "m", "Position.Frame.Origin, within the cell's landblock")
+    orientation: Quat = _field(IDENTITY, "quaternion [w, x, y, z]", "Position.Frame.Orientation")
+    velocity: Vec3 = _field(ZERO, "m/s", "PhysicsObj.Velocity")
+    acceleration: Vec3 = _field(ZERO, "m/s^2", "PhysicsObj.Acceleration")
+    omega: Vec3 = _field(ZERO, "rad/s", "PhysicsObj.Omega")
+    cached_velocity: Vec3 = _field(ZERO, "m/s", "PhysicsObj.CachedVelocity")
+    state: int = _field(0, "", "PhysicsState flag names")
+    transient_state: int = _field(0, "", "TransientState flag names (Contact, OnWalkable, Active, ...)")
+    contact_plane_cell: int = _field(0, "", "PhysicsObj.ContactPlaneCellID")
+    contact_plane: PlaneState = _field(PlaneState(), "", "PhysicsObj.ContactPlane")
+    sliding_normal: Vec3 = _field(ZERO, "direction", "PhysicsObj.SlidingNormal")
+    jumped_this_frame: bool = _field(False, "", "PhysicsObj.JumpedThisFrame")
+    shadow_cells: tuple[int, ...] = _field((), "", "the cell ids of the mover's ShadowObjects, in their order")
+    error: str | None = _field(None, "", "what this step threw (later steps are not run); absent when nothing was raised")
 
     def to_json(self):
         d = {}
@@ -236,26 +242,31 @@ def _read_double(r: Reader) -> float:
 
 @dataclass(frozen=True, slots=True)
 class Outcome:
-    ok: bool = False  # FindValidPosition's answer (PhysicsObj.transition returns null when False)
-    cell: int = 0  # SpherePath.CurCell id
-    origin: Vec3 = ZERO  # SpherePath.CurPos.Frame
-    orientation: tuple[float, float, float, float] = IDENTITY
-    object_info_state: int = 0
-    contact_plane: ContactPlaneState = ContactPlaneState()
-    last_known_contact_plane: ContactPlaneState = ContactPlaneState()
-    collision_normal: NormalState = NormalState()
-    sliding_normal: NormalState = NormalState()
-    collided_with_environment: bool = False
-    frames_stationary_fall: int = 0
-    velocity: Vec3 = ZERO  # the mover's velocity afterwards (StopVelocity zeroes it)
-    check_cell: int = 0  # SpherePath.CheckCell id (0 when none)
-    walkable: bool = False  # SpherePath.Walkable is set
-    step_up: bool = False  # SpherePath.StepUp
-    neg_poly_hit: bool = False  # SpherePath.NegPolyHit
-    error: str | None = None
-    static_cells: tuple[tuple[int, ...], ...] | None = None  # per static: PhysicsObj.ShadowObjects' cell ids
-    placement: PlacementState | None = None  # the mover's placement, for a scene with one
-    ticks: tuple[TickState, ...] | None = None  # per step of a tick scene, the mover after it
+    ok: bool = _field(False, "", "FindValidPosition's answer (PhysicsObj.transition returns null when false)")
+    cell: int = _field(0, "", "SpherePath.CurCell's id")
+    origin: Vec3 = _field(ZERO, "m", "SpherePath.CurPos.Frame.Origin, within the cell's landblock")
+    orientation: tuple[float, float, float, float] = _field(IDENTITY, "quaternion [w, x, y, z]", "SpherePath.CurPos.Frame.Orientation")
+    object_info_state: int = _field(0, "", "ObjectInfo.State flag names (Contact, OnWalkable, EdgeSlide, ...)")
+    contact_plane: ContactPlaneState = _field(ContactPlaneState(), "", "CollisionInfo's contact plane")
+    last_known_contact_plane: ContactPlaneState = _field(ContactPlaneState(), "", "CollisionInfo's last known contact plane")
+    collision_normal: NormalState = _field(NormalState(), "", "CollisionInfo.CollisionNormal")
+    sliding_normal: NormalState = _field(NormalState(), "", "CollisionInfo.SlidingNormal")
+    collided_with_environment: bool = _field(False, "", "CollisionInfo.CollidedWithEnvironment")
+    frames_stationary_fall: int = _field(0, "frames (0-3)", "CollisionInfo.FramesStationaryFall")
+    velocity: Vec3 = _field(ZERO, "m/s", "the mover's velocity afterwards (ObjectInfo.StopVelocity zeroes it)")
+    check_cell: int = _field(0, "", "SpherePath.CheckCell's id (0x00000000 when none)")
+    walkable: bool = _field(False, "", "whether SpherePath.Walkable is set")
+    step_up: bool = _field(False, "", "SpherePath.StepUp")
+    neg_poly_hit: bool = _field(False, "", "SpherePath.NegPolyHit")
+    error: str | None = _field(None, "", "what a side raised, its .NET type first (\"NullReferenceException: ...\"), "
+                               "or an implementation verdict; null when nothing was raised")
+    static_cells: tuple[tuple[int, ...], ...] | None = _field(
+        None, "", "for each static object, in scene order, the ids of the cells its PhysicsObj is registered in "
+        "(PhysicsObj.ShadowObjects, in their order); null when it could not be read")
+    placement: PlacementState | None = _field(None, "", "the mover after ACE's placement, only for a scene with "
+                                              "mover.placement (then the format is acconform.outcome/3)")
+    ticks: tuple[TickState, ...] | None = _field(None, "", "for a tick scene (then the format is acconform.outcome/4), "
+                                                 "the mover's PhysicsObj after each step's driver returned, in step order")
 
     @property
     def frame(self) -> Frame:
@@ -284,8 +295,9 @@ class Outcome:
         return d
 
     @staticmethod
-    def from_json(doc, path: str = "") -> "Outcome":
-        r = Reader(doc, path)
+    def from_json(doc, path: str = "", exact: bool = False) -> "Outcome":
+        """`exact` (an implementation's answer): every float must name a float32 (codec.Reader.f32)."""
+        r = Reader(doc, path, exact=exact)
         names = {f.name for f in fields(Outcome)}
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1

@@ -39,9 +39,10 @@ import time
 from collections.abc import Callable
 
 from . import __version__
-from .codec import dumps_compact
+from .codec import dumps_compact, loads_answer
 from .errors import AcconformError, InvalidScene
 from .numerics import RUNTIMES
+from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import scene_kind
 from .outcome import Outcome
 from .scene import Scene
@@ -143,7 +144,7 @@ class Implementation:
         if not self.argv:
             raise ImplementationError("--impl needs a command, e.g. --impl 'acconform serve'")
         self.mode = mode
-        self.runtime = "mono"  # the ACE compared with: whose System.Numerics arithmetic to match
+        self.runtime = DEFAULT_RUNTIME  # the ACE compared with: whose System.Numerics arithmetic to match
         self.timeout = timeout
         self.start_timeout = start_timeout
         self.restarts = 0
@@ -354,14 +355,14 @@ class Implementation:
         except _Failed as e:
             return self._fail_head(e.args[0])
         try:
-            doc = json.loads(line)
+            doc = loads_answer(line)  # -0 is negative zero
             if not isinstance(doc, dict):
                 raise ValueError("not a JSON object")
             if doc.get("id") != rid:
                 raise ValueError(f"answer id {doc.get('id')!r}, expected {rid}")
             if "outcome" not in doc:
                 raise ValueError("no \"outcome\" field")
-            outcome = Outcome.from_json(doc["outcome"], "outcome")
+            outcome = Outcome.from_json(doc["outcome"], "outcome", exact=True)  # a float must name a float32
         except (ValueError, InvalidScene) as e:
             return self._fail_head(f"{PROTOCOL_ERROR}: malformed answer ({e}): {line[:120]!r}")
         self._inflight.popleft()
@@ -392,8 +393,10 @@ class Implementation:
 # ---------------------------------------------------------------- the implementation side
 
 
-def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None) -> int:
-    """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side).
+def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None,
+          default_runtime: str = DEFAULT_RUNTIME) -> int:
+    """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side);
+    a request that names no runtime is computed as `default_runtime`.
 
     A request that cannot be read is answered with an outcome whose error says why (the harness
     counts it as the implementation's verdict); the loop goes on.
@@ -411,7 +414,7 @@ def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=No
             rid = req.get("id") if isinstance(req, dict) else None
             if not isinstance(req, dict) or "scene" not in req:
                 raise ValueError("expected {\"id\": ..., \"mode\": ..., \"scene\": {...}}")
-            mode, runtime = req.get("mode", "exact"), req.get("runtime", "mono")
+            mode, runtime = req.get("mode", "exact"), req.get("runtime", default_runtime)
             if mode not in MODES:
                 raise ValueError(f"unknown mode {mode!r}")
             if runtime not in RUNTIMES:

@@ -1,6 +1,8 @@
-"""The install maps port/, oracle/, strategies/ under acconform.* and lists every subpackage; a wheel works."""
+"""The install maps port/, oracle/, strategies/ under acconform.* and lists every subpackage; a wheel works;
+a checkout imports its own mapped folders whatever acconform is installed beside it."""
 
 import os
+import re
 import subprocess
 import sys
 import tomllib
@@ -35,6 +37,42 @@ def test_no_generic_top_level_names_are_installed():
     assert all(p == "acconform" or p.startswith("acconform.") for p in cfg["packages"])
 
 
+def test_a_checkout_imports_acconform_port_oracle_strategies_and_corpus_from_its_own_folders():
+    """What `python -m pytest` in a clone does after a plain `pip install .`: the clone's acconform/
+    comes first on sys.path, and no editable finder maps port/ etc. (`-S`: no site-packages at all)."""
+    code = ("import sys, importlib.util; sys.path.insert(0, sys.argv[1]); import acconform; "
+            "print('\\n'.join(f'{n} ' + ' '.join(importlib.util.find_spec(n).submodule_search_locations) "
+            "for n in sys.argv[2:]))")
+    names = [*MAPPED, *DATA_PACKAGES]
+    r = subprocess.run([sys.executable, "-S", "-c", code, str(ROOT), *names], capture_output=True, text=True, cwd="/")
+    assert r.returncode == 0, r.stderr
+    found = dict(line.split(" ", 1) for line in r.stdout.splitlines())
+    for name, folder in (MAPPED | DATA_PACKAGES).items():
+        assert Path(found[name]).resolve() == (ROOT / folder).resolve(), (name, found[name])
+
+
+def test_a_checkout_maps_only_the_folders_pyproject_maps():
+    code = "import sys; sys.path.insert(0, sys.argv[1]); import acconform, importlib.util; print(importlib.util.find_spec('acconform.tests'))"
+    r = subprocess.run([sys.executable, "-S", "-c", code, str(ROOT)], capture_output=True, text=True, cwd="/")
+    assert r.returncode == 0 and r.stdout.strip() == "None", r.stdout + r.stderr
+
+
+def _readme_setup_commands() -> list[str]:
+    block = (ROOT / "README.md").read_text().split("## Set up", 1)[1].split("```sh\n", 1)[1].split("```", 1)[0]
+    return [line.split("#", 1)[0].strip() for line in block.splitlines() if line.strip()]
+
+
+def test_ci_runs_the_readmes_set_up_commands_exactly_as_written():
+    commands = _readme_setup_commands()
+    assert commands == ['pip install . && acconform check', 'python -m pytest -n auto -m "not slow"']
+    ci = (ROOT / ".ci" / "run").read_text()
+    lines = [line.strip() for line in ci.splitlines()]
+    for cmd in commands:
+        assert cmd in lines or f"exec {cmd}" in lines, f".ci/run must run {cmd!r} as the README writes it"
+    assert not re.search(r"install[^\n]* -e ", ci), ".ci/run must install as the README does, not editable"
+    assert subprocess.run(["bash", "-n", str(ROOT / ".ci" / "run")]).returncode == 0
+
+
 @pytest.mark.slow
 def test_a_wheel_installed_acconform_runs_check_on_the_corpus_it_carries(tmp_path):
     """Non-editable: the wheel carries the corpus and Facade.cs; `check` runs from a fresh venv."""
@@ -66,3 +104,9 @@ def test_a_wheel_installed_acconform_runs_check_on_the_corpus_it_carries(tmp_pat
     where = subprocess.run([str(venv / "bin" / "python"), "-c", "from acconform.oracle import default_corpus; "
                             "print(default_corpus())"], capture_output=True, text=True, cwd=tmp_path, env=env)
     assert where.stdout.strip().endswith("acconform/corpus/coreclr") and str(ROOT) not in where.stdout, where
+    # in the checkout, beside the installed wheel (the README's `python -m pytest`), the checkout's own folders
+    here = subprocess.run([str(venv / "bin" / "python"), "-c", "import acconform.port, acconform.corpus; "
+                           "print(acconform.port.__file__); print(*acconform.corpus.__path__)"],
+                          capture_output=True, text=True, cwd=ROOT, env=env)
+    assert here.returncode == 0, here.stderr
+    assert here.stdout.split() == [str((ROOT / "port" / "__init__.py").resolve()), str((ROOT / "tests/data/corpus").resolve())]

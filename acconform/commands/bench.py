@@ -32,8 +32,10 @@ def add_arguments(p) -> None:
                    "corpus of --runtime; what bench does when no ACE is configured)")
     p.add_argument("--no-oracle", action="store_true", help="do not compare against an oracle even when ACE is configured")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
-    p.add_argument("--runtime", default=None, help="runtime of the live oracle (mono or coreclr; "
-                   "default: from the build), or of the committed corpus --corpus takes (default coreclr)")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the ACE compared with (the live oracle's runtime, or the committed corpus --corpus "
+                         "takes); the port computes its arithmetic, also with --no-oracle")
     p.add_argument("--json", default=None, metavar="FILE", help="also write the figures as JSON")
     from ..impl import add_arguments as impl_arguments
 
@@ -148,21 +150,22 @@ def _scenes(args, kinds):
     return out, oracle
 
 
-def measure_kind(scenes, oracle=None, run_scene=None) -> dict:
+def measure_kind(scenes, oracle=None, run_scene=None, runtime: str | None = None) -> dict:
     """Every figure for one kind's scenes: timings and the three comparisons.
 
     `run_scene(scene, mode=...)` is the implementation measured (default: the built-in port).
+    `runtime` (--runtime): the arithmetic computed without an oracle (commands.runtime_or_default).
     """
     import time
 
     from ..compare import compare
-    from ..numerics import runtime_named
+    from . import runtime_or_default
 
     if run_scene is None:
         from ..port.run import run_scene
 
-    # the port computes as the ACE it is compared with (mono's arithmetic without an oracle)
-    rt = runtime_named(oracle.versions.runtime) if oracle is not None else "mono"
+    # the port computes as the ACE it is compared with (whose answers the figures use), else as --runtime
+    rt = runtime_or_default(None, oracle) if oracle is not None else runtime_or_default(runtime)
     t_exact = t_fast = 0.0
     fast_exact, fast_oracle, exact_oracle = ErrorStats(), ErrorStats(), ErrorStats()
     errors = {"exact": 0, "fast": 0, "oracle": 0}
@@ -320,7 +323,7 @@ def _bench(args, kinds, run, json, AcconformError) -> int:
         print(note)
     results = {}
     for k in kinds:
-        results[k] = measure_kind(by_kind[k], oracle, run)
+        results[k] = measure_kind(by_kind[k], oracle, run, args.runtime)
         print()
         print("\n".join(render_kind(k, results[k], oracle_name)))
     if oracle is not None:

@@ -34,8 +34,10 @@ def add_arguments(p) -> None:
     p.add_argument("--no-database", action="store_true", help="do not read or write the saved failing scenes")
     p.add_argument("-j", "--workers", type=int, default=0, help="worker processes (default: all cores)")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
-    p.add_argument("--runtime", default=None, help="runtime of the live oracle (mono or coreclr; default: from the "
-                   "build); replaying: the corpus of that runtime (default coreclr, .NET 10)")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the ACE compared with: live, the runtime the build is loaded on; replaying, the "
+                         "committed corpus of that runtime. The port computes its arithmetic")
     p.add_argument("--corpus", default=None, metavar="DIR", help="recorded corpus to replay when no ACE is configured "
                    "(default: the committed corpus of --runtime)")
     impl_arguments(p)

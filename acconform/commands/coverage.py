@@ -32,6 +32,9 @@ def add_arguments(p) -> None:
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: what the port supports)")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "whose System.Numerics arithmetic the port computes (branches can fire differently)")
 
 
 def known_branches() -> list[str]:
@@ -40,10 +43,14 @@ def known_branches() -> list[str]:
     return sorted(BRANCHES)
 
 
-def measure(kinds, n: int, seed: int, mode: str = "exact"):
+def measure(kinds, n: int, seed: int, mode: str = "exact", runtime: str | None = None):
     """(per-scene branch presence Counter, total fires Counter, generation s, port s, errors Counter).
-    A boundary hit counts as "boundary:<name>"; one within NEAR_ULPS of it as "near:<name>"."""
+    A boundary hit counts as "boundary:<name>"; one within NEAR_ULPS of it as "near:<name>".
+    `runtime`: the arithmetic computed (commands.runtime_or_default)."""
     from ..port.run import run_scene
+    from . import runtime_or_default
+
+    runtime = runtime_or_default(runtime)
     from ..port.transition.branches import Trace
     from ..strategies import check_kinds, sample_scenes
 
@@ -56,7 +63,7 @@ def measure(kinds, n: int, seed: int, mode: str = "exact"):
     t1 = time.perf_counter()
     for s in scenes:
         trace = Trace()
-        o = run_scene(s, mode=mode, trace=trace)
+        o = run_scene(s, mode=mode, trace=trace, runtime=runtime)
         if o.error:
             errors[o.error.split(":", 1)[0]] += 1
         total.update(trace)
@@ -81,7 +88,7 @@ def run(args) -> int:
     from ..anchor_coverage import counting_anchors, render_table
 
     with counting_anchors() if args.anchors else nullcontext() as counted:
-        present, total, gen, port, errors = measure(kinds, args.cases, args.seed, args.mode)
+        present, total, gen, port, errors = measure(kinds, args.cases, args.seed, args.mode, args.runtime)
     if args.anchors and not args.branches:
         print(f"kinds {','.join(kinds)}, {args.cases} scenes, seed {args.seed}, mode {args.mode}")
         print("\n".join(render_table(counted.calls, counted.unwrapped)))

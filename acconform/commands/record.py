@@ -5,10 +5,11 @@
     acconform record -n 1000 --kinds terrain,bsp    scenes drawn from the strategies (sample_scenes)
     acconform record -n 500 --boundaries            keep only scenes whose port run hits an exact boundary
 
-Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: the committed
-corpus of the runtime ACE ran on, tests/data/corpus/<mono|coreclr>). Scenes already in the
-corpus are skipped. Needs a live ACE: without one it
-exits 2 saying how to configure it.
+Records go to gzip'd JSON-lines shards <kind>-NNNN.jsonl.gz in --out (default: ./corpus/<runtime>
+under the working directory, <runtime> being the one ACE ran on, mono or coreclr -- never into the
+installed package, where the next install would lose them; the summary line says where they went).
+To grow a checkout's committed corpus, give it: --out tests/data/corpus/<runtime>. Scenes already
+in the output corpus are skipped. Needs a live ACE: without one it exits 2 saying how to configure it.
 
 --boundaries keeps only scenes where the built-in port, traced (port/transition/branches.py),
 compares two bit-equal values at an exact boundary other than a cell or landblock border (those
@@ -27,6 +28,15 @@ import time
 BOUNDARY_ROUNDS = 50
 # boundaries a scene must hit for --boundaries: every one but the borders
 BORDERS = ("cell_border", "landblock_border")
+# where records go without --out: DEFAULT_OUT/<runtime> under the working directory
+DEFAULT_OUT = "corpus"
+
+
+def default_out(runtime: str):
+    """The corpus `record` writes without --out: ./corpus/<runtime>, under the working directory."""
+    from pathlib import Path
+
+    return Path.cwd() / DEFAULT_OUT / runtime
 
 
 def add_arguments(p) -> None:
@@ -34,10 +44,13 @@ def add_arguments(p) -> None:
     p.add_argument("-n", type=int, default=0, help="also record N scenes drawn from the strategies")
     p.add_argument("--kinds", default=None, help="scene kinds to draw, comma-separated (default: the strategies' defaults)")
     p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
-    p.add_argument("--out", default=None, metavar="DIR", help="corpus directory (default: the committed "
-                   "corpus of the runtime ACE runs on, tests/data/corpus/<runtime>)")
+    p.add_argument("--out", default=None, metavar="DIR", help=f"corpus directory (default: ./{DEFAULT_OUT}/<runtime> "
+                   "under the working directory, <runtime> the one ACE runs on; a checkout's committed corpus is "
+                   "tests/data/corpus/<runtime>)")
     p.add_argument("--ace", default=None, metavar="PATH", help="ACE.Server.dll or its directory (else ACE_ASSEMBLY, else the config file)")
-    p.add_argument("--runtime", choices=("mono", "coreclr"), default=None, help="force the .NET runtime (default: from the build)")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the .NET runtime to load the build on")
     p.add_argument("--batch", type=int, default=256, help="scenes per call into ACE (default 256)")
     p.add_argument("--boundaries", action="store_true",
                    help="keep only scenes whose port run hits an exact boundary (not a cell/landblock border)")
@@ -91,16 +104,18 @@ def _scenes(args, runtime: str):
 
 
 def run(args) -> int:
+    from pathlib import Path
+
     from ..case import Record
     from ..errors import AcconformError
     from ..numerics import runtime_named
-    from ..oracle import default_corpus, require_live
+    from ..oracle import require_live
     from ..oracle.recorded import CorpusWriter, RecordedOracle, scene_key
 
     if not args.files and args.n <= 0:
         raise AcconformError("nothing to record: give scene files and/or -n N")
     oracle = require_live(args.ace, args.runtime)
-    out = args.out or default_corpus(runtime_named(oracle.versions.runtime))
+    out = Path(args.out) if args.out else default_out(runtime_named(oracle.versions.runtime))
     try:
         known = set(RecordedOracle(out)._lines)
     except AcconformError:
@@ -134,5 +149,5 @@ def run(args) -> int:
     dt = time.perf_counter() - t0
     kinds = ", ".join(f"{k} {n}" for k, n in sorted(writer.written.items())) or "none"
     print(f"recorded {done} scenes ({kinds}; {errors} ACE exceptions as verdicts), skipped {skipped} already "
-          f"recorded, into {out} in {dt:.1f}s with {oracle.versions.ace} on {oracle.versions.runtime}")
+          f"recorded, into {out.resolve()} in {dt:.1f}s with {oracle.versions.ace} on {oracle.versions.runtime}")
     return 0

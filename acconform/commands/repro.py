@@ -11,7 +11,10 @@ def add_arguments(p) -> None:
     p.add_argument("file", metavar="FILE", help="a case file (from acconform check)")
     p.add_argument("--mode", choices=("exact", "fast"), default=None, help="override the case's mode")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle")
-    p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the ACE compared with (the live oracle's runtime; without ACE the case's answer "
+                         "is one runtime's, and only that one can replay it); the port computes its arithmetic")
     from ..impl import add_arguments as impl_arguments
 
     impl_arguments(p)
@@ -20,7 +23,7 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     from ..case import Case, load_document
     from ..compare import compare, render
-    from ..errors import InvalidScene
+    from ..errors import AcconformError, InvalidScene
     from ..numerics import runtime_named
     from ..oracle import live_configured
     from ..impl import make_backend
@@ -36,6 +39,9 @@ def run(args) -> int:
         runtime = resolve(args.ace, args.runtime).runtime
     else:  # ... as the ACE that answered the case
         runtime = runtime_named(doc.versions.runtime)
+        if args.runtime is not None and args.runtime != runtime:
+            raise AcconformError(f"--runtime {args.runtime}: this case holds the answer of ACE on {runtime}, and "
+                                 f"without a live ACE nothing answers as {args.runtime} (configure ACE, or drop --runtime)")
     backend = make_backend(args.impl, mode, args.timeout)
     backend.runtime = runtime
     try:

@@ -15,6 +15,9 @@ def add_arguments(p) -> None:
 
     impl_arguments(p)
     p.add_argument("--readable", action="store_true", help="print the outcome for a person, not as JSON")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "whose System.Numerics arithmetic the port (or --impl) computes, as ACE on that runtime")
 
 
 def run(args) -> int:
@@ -29,7 +32,10 @@ def run(args) -> int:
         from ..errors import InvalidScene
 
         raise InvalidScene("format", "expected a scene, case or record file (an outcome has no scene to run)", args.file)
+    from . import runtime_or_default
+
     backend = make_backend(args.impl, args.mode, args.timeout)
+    backend.runtime = runtime_or_default(args.runtime)
     try:
         outcome = backend(scene)
     finally:

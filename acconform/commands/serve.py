@@ -9,13 +9,17 @@ from __future__ import annotations
 
 
 def add_arguments(p) -> None:
-    pass
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the arithmetic of a request that names no runtime (acconform's requests always name one)")
 
 
 def run(args) -> int:
     from ..port.run import run_scene
     from ..protocol import serve
     from ..runner import campaign_gc
+    from . import runtime_or_default
 
     with campaign_gc():  # the collector tuned as for an in-process campaign (runner.GC_THRESHOLDS)
-        return serve(lambda scene, mode, runtime: run_scene(scene, mode=mode, runtime=runtime))
+        return serve(lambda scene, mode, runtime: run_scene(scene, mode=mode, runtime=runtime),
+                     default_runtime=runtime_or_default(args.runtime))

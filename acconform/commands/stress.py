@@ -48,7 +48,9 @@ def add_arguments(p) -> None:
     p.add_argument("--failures", default="failures", metavar="DIR", help="where case files go (default ./failures)")
     p.add_argument("--no-oracle", action="store_true", help="port only, even when ACE is configured")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
-    p.add_argument("--runtime", default=None, help="runtime for the live oracle (mono or coreclr)")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the .NET runtime to load the live build on; the port computes its arithmetic")
 
 
 # ---------------------------------------------------------------- float32 steps and positions
@@ -408,9 +410,9 @@ def run(args) -> int:
             print("oracle half skipped: no ACE is configured (pass --ace or set ACE_ASSEMBLY); the recorded corpus "
                   "cannot answer stressed scenes. Port-only figures follow.")
 
-    from ..numerics import runtime_named
+    from . import runtime_or_default
 
-    rt = runtime_named(oracle.versions.runtime) if oracle is not None else "mono"  # as the ACE compared with
+    rt = runtime_or_default(args.runtime, oracle)  # as the ACE compared with
 
     def exact(s):
         return run_scene(s, mode="exact", runtime=rt)
