@@ -10,9 +10,9 @@ Loading reads the shards' lines and each record's versions, nothing more (about 
 head of its line. `select` picks records (a stratified, seeded sample by kind; a kind; a runtime)
 as `Entry`s, and `scenes(entries)` is a lazy sequence that parses each record when it is asked
 for, so a replay's first case starts at once and each worker parses only its own records. A
-scene handed out by `scenes` is answered by `run` from the record it came from; any other scene
-is looked up by key, in an index of every record built the first time one is needed (that
-parses the whole corpus: tens of seconds).
+scene handed out by `scenes` is answered by `run` from the record it came from (by identity, or
+by key when asked for late); any other scene is looked up by key, in an index of every record
+built the first time one is needed (that parses the whole corpus: tens of seconds).
 
 A shard that cannot be read (truncated or corrupt gzip) or a line that is not a record raises
 `CorpusCorrupt` naming the shard and the line -- when loading, or when the record is parsed; with
@@ -172,6 +172,7 @@ class RecordedOracle:
         self.entries: list[Entry] = []
         self._index: dict[str, Entry] | None = None  # key -> entry, built when first needed
         self._handed: dict[int, tuple[Scene, Entry, dict]] = {}  # id(scene) -> (scene, entry, outcome JSON)
+        self._handed_keys: dict[str, Entry] = {}  # scene key -> entry, of every scene handed out
         versions: set[Versions] = set()
         for shard in shards(self.corpus_dir):
             kind = SHARD_RE.match(shard.name)["kind"]
@@ -333,6 +334,7 @@ class RecordedOracle:
         except InvalidScene as e:
             raise CorpusCorrupt(f"{entry.where}: {e}") from None
         if keep:
+            self._handed_keys[_doc_key(doc)] = entry
             if len(self._handed) >= self.HANDED_OUT:
                 del self._handed[next(iter(self._handed))]
             self._handed[id(scene)] = (scene, entry, doc.get("outcome"))
@@ -345,6 +347,9 @@ class RecordedOracle:
                 return Outcome.from_json(handed[2], "outcome")
             except InvalidScene as e:
                 raise CorpusCorrupt(f"{handed[1].where}: {e}") from None
+        entry = self._handed_keys.get(scene_key(scene))  # handed out, but asked for late or as an equal copy
+        if entry is not None:
+            return self._record(entry).outcome
         return self.record(scene).outcome
 
 

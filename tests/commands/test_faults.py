@@ -185,3 +185,21 @@ def test_coverage_anchors_names_every_anchor_once_and_never_reached_agrees_with_
     never = next(l for l in lines if l.startswith("never reached"))
     unreached = [n for n, c in table.items() if c == 0]
     assert unreached and never == f"never reached ({len(unreached)}): " + ", ".join(unreached)
+
+
+def test_repro_gives_no_verdict_when_the_implementation_a_case_names_does_not_start(tmp_path, no_ace):
+    from acconform.case import Case, ImplementationRun, write_document
+    from acconform.impl import BuiltinPort
+    from acconform.strategies import sample_scenes
+
+    scene = next(iter(sample_scenes(("terrain",), 1, 1)))
+    answer = BuiltinPort()(scene)
+    gone = ImplementationRun(f"{sys.executable} {tmp_path / 'no-such-port.py'}", str(tmp_path), {"name": "js-port"})
+    write_document(tmp_path / "case.json", Case(scene, answer, answer, implementation=gone))
+    r = cli("repro", str(tmp_path / "case.json"))
+    last = one_line_exit_2(r, "no verdict", "'js-port'", "no-such-port.py", "--impl")
+    assert "no longer fails" not in r.stdout and "still fails" not in r.stdout, last
+
+
+def test_stress_refuses_a_time_limit_that_is_not_positive():
+    one_line_exit_2(cli("stress", "-n", "1", "--scene-timeout", "0"), "--scene-timeout must be positive")
