@@ -120,6 +120,16 @@ def describe(doc) -> list[str]:
     assert isinstance(doc, Case)
     v = doc.versions
     out = [f"case: mode {doc.mode}, seed {doc.seed or '?'}, acconform {v.acconform or '?'}, ACE {v.ace or '?'} on {v.runtime or '?'}"]
+    from .check import shrink_label
+
+    impl = doc.implementation
+    if impl is not None:
+        out.append(f"made by implementation {impl.handshake.get('name', '')!r}: {impl.command}"
+                   + (f" (in {impl.cwd})" if impl.cwd else ""))
+        if impl.stderr:
+            out.append(f"its stderr ({len(impl.stderr)} characters):")
+            out += [f"  | {line}" for line in impl.stderr.splitlines()]
+    out.append(shrink_label(doc.shrink))
     out.append(f"{len(doc.differences)} difference{'s' if len(doc.differences) != 1 else ''}:")
     out += [f"  {d}" for d in doc.differences]
     return out + describe_scene(doc.scene) + describe_outcome(doc.port, "port") + describe_outcome(doc.oracle, "oracle")
