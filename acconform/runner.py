@@ -689,6 +689,11 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
         if not keep_going:
             result.found = result.found[:1]
     if items is not None and result.found and not result.interrupted:
+        if progress and stand_in is not None:
+            kinds_found = len({f.signature for f in result.found})
+            print(f"shrinking the first difference of each kind ({kinds_found}) against the built-in port standing in "
+                  f"for ACE, up to {DEFAULT_BUDGET if shrink_budget is None else shrink_budget} smaller scenes each",
+                  file=sys.stderr, flush=True)
         _shrink_replayed(result, port, stand_in, mode, DEFAULT_BUDGET if shrink_budget is None else shrink_budget)
     if failures_dir is not None:
         save_cases(result, failures_dir)
