@@ -1,7 +1,11 @@
 """Case files (a shrunk difference, replayable) and oracle records (ACE's answer to a scene).
 
-``acconform.case/1``: the scene, both outcomes, the field-by-field differences, the seed that
-found it, and the versions of the port and of ACE. ``acconform.record/1``: one scene with the
+``acconform.case/2``: the scene, both outcomes, the field-by-field differences, the seed that
+found it, the versions of the port and of ACE, which implementation answered on the port's side
+(an `ImplementationRun`: the --impl command, its handshake and its stderr when it failed; absent
+for the built-in port) and how the scene was shrunk (`Shrink`: against live ACE, against the
+built-in port standing in for a recorded ACE, or not, and why). ``acconform.case/1`` files (no
+implementation, no shrink label) are still read. ``acconform.record/1``: one scene with the
 outcome ACE gave, its version and runtime -- data only, ACE's answers, never its code.
 `load_document` reads any acconform JSON file and dispatches on its "format".
 """
@@ -18,7 +22,8 @@ from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V1 as OUTCOME_FORMAT_V1, 
 from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
                     FORMAT_V3 as SCENE_FORMAT_V3, Scene, check_format)
 
-CASE_FORMAT = "acconform.case/1"
+CASE_FORMAT = "acconform.case/2"
+CASE_FORMAT_V1 = "acconform.case/1"
 RECORD_FORMAT = "acconform.record/1"
 
 
@@ -37,6 +42,81 @@ class Versions:
         return Versions(*(r[k].str_() if r.has(k) else "" for k in ("acconform", "ace", "runtime")))
 
 
+# How much of an implementation's stderr a case keeps: all of it up to this many characters; past
+# it the first STDERR_HEAD and the last (STDERR_LIMIT - STDERR_HEAD), with a line saying how much
+# was left out between (the banner at the top and the error at the bottom both survive).
+STDERR_LIMIT = 64 * 1024
+STDERR_HEAD = 8 * 1024
+
+
+def bound_stderr(text: str) -> str:
+    if len(text) <= STDERR_LIMIT:
+        return text
+    tail = STDERR_LIMIT - STDERR_HEAD
+    left_out = len(text) - STDERR_LIMIT
+    return f"{text[:STDERR_HEAD]}\n[... {left_out} characters left out (cases keep {STDERR_LIMIT}) ...]\n{text[-tail:]}"
+
+
+@dataclass(frozen=True, slots=True)
+class ImplementationRun:
+    """The implementation under test that answered a case (--impl): what `repro` starts again."""
+
+    command: str
+    cwd: str = ""  # the directory it was started in (a relative command is relative to it)
+    handshake: dict = field(default_factory=dict)  # as the implementation sent it (checked)
+    stderr: str = ""  # its stderr when it failed on this scene (crash, hang, bad answer), bounded
+
+    def to_json(self):
+        d = {"command": self.command, "cwd": self.cwd, "handshake": self.handshake}
+        if self.stderr:
+            d["stderr"] = self.stderr
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "ImplementationRun":
+        r.obj({"command", "cwd", "handshake", "stderr"})
+        hello = r["handshake"].value if r.has("handshake") else {}
+        if not isinstance(hello, dict):
+            r["handshake"].fail("expected an object (the implementation's handshake)")
+        command = r["command"].str_()
+        if not command.strip():
+            r["command"].fail("empty: the command that started the implementation")
+        return ImplementationRun(command, r["cwd"].str_() if r.has("cwd") else "", hello,
+                                 r["stderr"].str_() if r.has("stderr") else "")
+
+
+SHRUNK_AGAINST = ("ace", "port", "none")
+
+
+@dataclass(frozen=True, slots=True)
+class Shrink:
+    """How a case's scene was shrunk: against live ACE, against the built-in port standing in for
+    a recorded ACE (it agreed with ACE's recorded answer on the original scene), or not at all."""
+
+    against: str = "none"  # one of SHRUNK_AGAINST
+    note: str = ""  # why not, or what it took
+    bytes_before: int = 0  # the scene's JSON, before and after (0: not measured)
+    bytes_after: int = 0
+
+    def to_json(self):
+        return {"against": self.against, "note": self.note, "bytes_before": self.bytes_before,
+                "bytes_after": self.bytes_after}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Shrink":
+        r.obj({"against", "note", "bytes_before", "bytes_after"})
+        against = r["against"].str_()
+        if against not in SHRUNK_AGAINST:
+            r["against"].fail(f"expected one of {', '.join(SHRUNK_AGAINST)}, got {against!r}")
+        sizes = []
+        for k in ("bytes_before", "bytes_after"):
+            v = r[k].value if r.has(k) else 0
+            if isinstance(v, bool) or not isinstance(v, int) or v < 0:
+                r[k].fail(f"expected a byte count, got {v!r}")
+            sizes.append(v)
+        return Shrink(against, r["note"].str_() if r.has("note") else "", *sizes)
+
+
 @dataclass(frozen=True, slots=True)
 class Case:
     scene: Scene
@@ -46,17 +126,27 @@ class Case:
     seed: str = ""
     mode: str = "exact"
     versions: Versions = field(default_factory=Versions)
+    implementation: ImplementationRun | None = None  # None: the built-in port (or a case/1 file, which does not say)
+    shrink: Shrink = field(default_factory=Shrink)
+    format: str = CASE_FORMAT  # as read (a case/1 file names no implementation)
 
     def to_json(self):
-        return {"format": CASE_FORMAT, "seed": self.seed, "mode": self.mode, "versions": self.versions.to_json(),
-                "differences": list(self.differences), "scene": self.scene.to_json(),
-                "port": self.port.to_json(), "oracle": self.oracle.to_json()}
+        d = {"format": CASE_FORMAT, "seed": self.seed, "mode": self.mode, "versions": self.versions.to_json()}
+        if self.implementation is not None:
+            d["implementation"] = self.implementation.to_json()
+        d["shrunk"] = self.shrink.to_json()
+        d.update({"differences": list(self.differences), "scene": self.scene.to_json(),
+                  "port": self.port.to_json(), "oracle": self.oracle.to_json()})
+        return d
 
     @staticmethod
     def from_json(doc, path: str = "") -> "Case":
         r = Reader(doc, path)
-        r.obj({"format", "seed", "mode", "versions", "differences", "scene", "port", "oracle"})
-        check_format(r, CASE_FORMAT)
+        v1 = isinstance(doc, dict) and doc.get("format") == CASE_FORMAT_V1
+        r.obj({"format", "seed", "mode", "versions", "differences", "scene", "port", "oracle",
+               *(() if v1 else ("implementation", "shrunk"))})
+        if not v1:
+            check_format(r, CASE_FORMAT)
         return Case(
             scene=Scene.from_json(r["scene"].value, r["scene"].path),
             port=Outcome.from_json(r["port"].value, r["port"].path),
@@ -65,6 +155,9 @@ class Case:
             seed=r["seed"].str_() if r.has("seed") else "",
             mode=r["mode"].str_() if r.has("mode") else "exact",
             versions=Versions.from_json(r["versions"]) if r.has("versions") else Versions(),
+            implementation=ImplementationRun.from_json(r["implementation"]) if r.has("implementation") else None,
+            shrink=Shrink.from_json(r["shrunk"]) if r.has("shrunk") else Shrink(),
+            format=CASE_FORMAT_V1 if v1 else CASE_FORMAT,
         )
 
 
@@ -92,7 +185,7 @@ _READERS = {SCENE_FORMAT_V1: Scene.from_json, SCENE_FORMAT_V2: Scene.from_json, 
             SCENE_FORMAT: Scene.from_json,
             OUTCOME_FORMAT_V1: Outcome.from_json, OUTCOME_FORMAT_V2: Outcome.from_json, OUTCOME_FORMAT_V3: Outcome.from_json,
             OUTCOME_FORMAT: Outcome.from_json,
-            CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
+            CASE_FORMAT_V1: Case.from_json, CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
 
 
 def parse_document(doc, source: str | None = None):

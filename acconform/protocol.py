@@ -55,6 +55,7 @@ MODES: tuple[str, ...] = ("exact", "fast")
 CRASH = "ImplementationCrash"
 TIMEOUT = "ImplementationTimeout"
 PROTOCOL_ERROR = "ImplementationProtocolError"
+KEPT = " (the case file keeps the whole stderr)"
 
 
 def _water(scene: Scene) -> bool:
@@ -136,10 +137,12 @@ class Implementation:
 
     per_process = True
 
-    def __init__(self, command: str, *, mode: str = "exact", timeout: float = 10.0, start_timeout: float = 60.0):
+    def __init__(self, command: str, *, mode: str = "exact", timeout: float = 10.0, start_timeout: float = 60.0,
+                 cwd: str | None = None):
         if mode not in MODES:
             raise AcconformError(f"unknown mode {mode!r}: choose exact or fast")
         self.command = command
+        self.cwd = cwd or os.getcwd()  # where it runs (a case records it: `repro` starts it there again)
         self.argv = shlex.split(command)
         if not self.argv:
             raise ImplementationError("--impl needs a command, e.g. --impl 'acconform serve'")
@@ -155,6 +158,8 @@ class Implementation:
         self._next_id = 0
         self._inflight: deque[tuple[int, Scene]] = deque()  # requests sent, answers not yet read, in order
         self._answers: dict[int, Outcome] = {}
+        self._stderr_of: dict[int, str] = {}  # request id -> the process's stderr when it failed on it
+        self.last_stderr = ""  # of the scene `run` answered last: its stderr if it failed, else ""
         self._sel = None
         self.hello = self._start()
         if mode not in self.hello["modes"]:
@@ -183,7 +188,7 @@ class Implementation:
         self._stderr = tempfile.TemporaryFile()
         try:
             self._proc = subprocess.Popen(self.argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                          stderr=self._stderr, bufsize=0,
+                                          stderr=self._stderr, bufsize=0, cwd=self.cwd,
                                           start_new_session=True)  # Ctrl-C in the terminal is the harness's
         except OSError as e:
             raise ImplementationError(f"cannot start implementation {self.command!r}: {e.strerror or e}") from None
@@ -196,7 +201,8 @@ class Implementation:
             line = self._readline(self.start_timeout)
         except _Failed as e:
             self._kill()
-            raise ImplementationError(f"implementation {self.command!r} sent no handshake: {e.args[0]}") from None
+            raise ImplementationError(f"implementation {self.command!r} sent no handshake: "
+                                      f"{e.args[0].replace(KEPT, '')}") from None
         try:
             doc = json.loads(line)
         except ValueError:
@@ -209,15 +215,37 @@ class Implementation:
             self._kill()
             raise
 
+    def _stderr_text(self) -> str:
+        """The process's whole stderr so far, bounded as a case keeps it (case.bound_stderr)."""
+        from .case import bound_stderr
+
+        try:
+            self._stderr.seek(0)
+            return bound_stderr(self._stderr.read().decode("utf-8", "replace"))
+        except (OSError, ValueError):
+            return ""
+
+    def case_implementation(self):
+        """What a case records of this implementation: command, directory, handshake, and the
+        stderr of the scene answered last when the process failed on it."""
+        from .case import ImplementationRun
+
+        return ImplementationRun(self.command, self.cwd, dict(self.hello), self.last_stderr)
+
     def _stderr_tail(self) -> str:
+        """For the one-line verdict: the last stderr line naming an error (an ``Error:``, an
+        exception, a panic), else the last line. The case file keeps the whole stderr."""
         try:
             self._stderr.seek(0, os.SEEK_END)
             size = self._stderr.tell()
-            self._stderr.seek(max(0, size - 400))
-            lines = self._stderr.read().decode("utf-8", "replace").strip().splitlines()
+            self._stderr.seek(max(0, size - 4096))
+            lines = [l.strip() for l in self._stderr.read().decode("utf-8", "replace").splitlines() if l.strip()]
         except (OSError, ValueError):
             return ""
-        return f"; stderr: {lines[-1][:200]}" if lines else ""
+        if not lines:
+            return ""
+        named = [l for l in lines if any(w in l for w in ("Error", "Exception", "panic", "Traceback", "FATAL"))]
+        return f"; stderr: {(named or lines)[-1][:200]}{KEPT}"
 
     def _readline(self, timeout: float) -> str:
         deadline = time.monotonic() + timeout
@@ -290,6 +318,7 @@ class Implementation:
         """The implementation's outcome for `scene` (sent now, unless `prefetch` sent it already)."""
         why = self._ensure()
         if why is not None:
+            self.last_stderr = ""
             return self._verdict(why)
         rid = next((r for r, s in self._inflight if s is scene), None)
         if rid is None:
@@ -298,6 +327,8 @@ class Implementation:
             self._read_answer()
         for old in [r for r in self._answers if r < rid]:  # answers to prefetched scenes never asked for
             del self._answers[old]
+            self._stderr_of.pop(old, None)
+        self.last_stderr = self._stderr_of.pop(rid, "")
         return self._answers.pop(rid)
 
     def prefetch(self, scene: Scene) -> None:
@@ -372,6 +403,7 @@ class Implementation:
         """The oldest request's verdict; a fresh process gets the requests still in flight."""
         rid, _ = self._inflight.popleft()
         self._answers[rid] = self._verdict(text)
+        self._stderr_of[rid] = self._stderr_text()
         rest = list(self._inflight)
         self._inflight.clear()
         self._kill()

@@ -1,7 +1,8 @@
 """A campaign's results for CI: a JSON summary (``check --json``) and JUnit XML (``check --junit``).
 
-The JSON summary (``acconform.summary/1``) holds the cases run, compared and skipped, the
-differences by field and by scene kind with their case files, the seed, versions and timings.
+The JSON summary (``acconform.summary/1``) holds the cases run (compared + skipped), compared
+and skipped (by reason), the scenes shrinking ran besides, the differences by field and by scene
+kind with their case files (each labelled with how it was shrunk), the seed, versions and timings.
 The JUnit file has one testcase per class of difference (the set of differing fields, the
 runner's signature), each naming its case files; a clean campaign is one passing testcase.
 """
@@ -32,6 +33,7 @@ class Campaign:
     implementation: dict  # {"name", "version", "command"}; command "" for the built-in port
     failures_dir: str | None
     bad_records: list[str] = field(default_factory=list)
+    kinds_skipped: tuple[str, ...] = ()  # asked for, but the implementation's handshake does not list them
 
 
 def _classes(result: Result) -> dict[tuple[str, ...], list]:
@@ -49,8 +51,11 @@ def summary(result: Result, c: Campaign) -> dict:
         kind = scene_kind(f.case.scene)
         by_kind[kind] += 1
         by_field.update(f.signature)
+        sh = f.case.shrink
         cases.append({"file": str(f.path) if f.path else None, "kind": kind, "fields": list(f.signature),
-                      "shrunk": f.shrunk, "differences": list(f.case.differences)})
+                      "shrunk": f.shrunk, "shrunk_against": sh.against, "shrink_note": sh.note,
+                      "bytes_before": sh.bytes_before or None, "bytes_after": sh.bytes_after or None,
+                      "differences": list(f.case.differences)})
     v = result.found[0].case.versions if result.found else result.versions
     t = result.timings
     return {
@@ -61,10 +66,13 @@ def summary(result: Result, c: Campaign) -> dict:
         "mode": c.mode,
         "seed": c.seed,
         "kinds": list(c.kinds),
+        "kinds_skipped": list(c.kinds_skipped),
         "implementation": c.implementation,
         "cases": {"run": result.cases, "compared": result.compared, "skipped": dict(result.skipped),
+                  "skipped_total": sum(result.skipped.values()), "shrink_runs": result.shrink_runs,
                   "bad_records": len(c.bad_records)},
-        "differences": {"total": len(result.found), "by_field": dict(sorted(by_field.items())),
+        "differences": {"total": len(result.found), "kinds_of_difference": len(_classes(result)),
+                        "by_field": dict(sorted(by_field.items())),
                         "by_kind": dict(sorted(by_kind.items())), "cases": cases},
         "failures_dir": c.failures_dir,
         "failures_fallback": result.failures_fallback,

@@ -14,7 +14,11 @@ Two kinds of campaign:
   Hypothesis' own example database is not used: with one, Hypothesis keeps a Pareto front of every
   target() score, which cost 40-50% of a live campaign's time.
 - replay (a recorded oracle): Hypothesis cannot ask a recording about scenes it never saw, so
-  the recorded scenes are replayed as they are and a difference is saved unshrunk.
+  the recorded scenes are replayed as they are. The first difference of each kind is then shrunk
+  (acconform.shrink) with a *stand-in* for ACE -- the built-in port, computing as the recorded
+  runtime -- provided the stand-in agrees bit for bit with ACE's recorded answer on the original
+  scene; otherwise, and for the other differences of that kind, the case is written as recorded.
+  Each case says which (`Case.shrink`: against "ace", "port" or "none", and why).
 
 Deterministic for a seed (and a worker count): worker w draws with seed (seed, w). With
 ``keep_going`` a campaign goes on after a difference, ignoring differences with the same
@@ -22,7 +26,10 @@ Deterministic for a seed (and a worker count): worker w draws with seed (seed, w
 
 A port backend may name scenes it cannot run (``port.unsupported(scene) -> reason or None``, as
 an implementation under test does from its handshake): those are skipped and counted by reason
-in `Result.skipped`, never compared. Ctrl-C ends a campaign early with what it has found so far
+in `Result.skipped`, never compared, and never count toward `n`: `n` is the number of scenes
+compared. Each scene is counted once: `Result.cases` = compared + skipped; the extra runs
+shrinking takes are `Result.shrink_runs`; each kind of difference is found once (a live campaign
+on several workers keeps the first worker's case of each kind). Ctrl-C ends a campaign early with what it has found so far
 (`Result.interrupted`); worker processes ignore SIGINT and stop when the parent tells them to.
 """
 
@@ -41,10 +48,10 @@ import time
 from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Iterable
+from typing import Callable, Iterable, Sequence
 
 from . import __version__
-from .case import Case, Versions, write_document
+from .case import Case, Shrink, Versions, write_document
 from .compare import Difference, compare, first_tick_difference, render
 from .errors import AcconformError
 from .outcome import Outcome
@@ -100,12 +107,15 @@ class Found:
     case: Case
     path: Path | None = None
     signature: tuple[str, ...] = ()
-    shrunk: bool = False
+
+    @property
+    def shrunk(self) -> bool:
+        return self.case.shrink.against != "none"
 
 
 @dataclass(slots=True)
 class Result:
-    cases: int = 0
+    cases: int = 0  # scenes taken: compared + skipped (each once; shrinking's runs are not cases)
     found: list[Found] = field(default_factory=list)
     elapsed: float = 0.0
     source: str = "generative"
@@ -114,6 +124,8 @@ class Result:
     interrupted: bool = False  # Ctrl-C ended the campaign early
     failures_fallback: str | None = None  # why case files went to a temporary directory instead
     versions: Versions | None = None  # of the oracle (None: per-process oracle, not asked in this process)
+    shrink_runs: int = 0  # scenes run while shrinking (not counted in cases)
+    unreadable: list[str] = field(default_factory=list)  # replayed items that did not load, each naming where
 
     @property
     def ok(self) -> bool:
@@ -153,18 +165,8 @@ def versions_of(port: Backend, oracle: Backend) -> Versions:
     return Versions(__version__, str(getattr(owner, "name", "") or ""), "")
 
 
-def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: Counter,
-             skipped: Counter | None = None):
-    """One scene through both backends and the comparator, adding each step's time to `timings`.
-
-    None (and the reason counted in `skipped`) when the port says it cannot run the scene.
-    """
-    unsupported = getattr(port, "unsupported", None)
-    if unsupported is not None and skipped is not None:
-        why = unsupported(scene)
-        if why:
-            skipped[why] += 1
-            return None
+def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: Counter):
+    """One scene through both backends and the comparator, adding each step's time to `timings`."""
     t0 = time.perf_counter()
     a = guarded(port, scene)
     t1 = time.perf_counter()
@@ -177,13 +179,29 @@ def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: C
     return a, b, diffs
 
 
-def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions) -> Case:
+def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions, implementation=None,
+              shrink: Shrink | None = None) -> Case:
     """The case of a difference; a tick scene's first differing tick and field is its first line."""
     first = first_tick_difference(diffs)
     if first is not None:
         diffs = [first] + [d for d in diffs if d is not first]
     return Case(scene=scene, port=a, oracle=b, differences=tuple(render(diffs)), seed=str(seed), mode=mode,
-                versions=versions)
+                versions=versions, implementation=implementation, shrink=shrink or Shrink())
+
+
+def implementation_run(port: Backend):
+    """What a case records of the implementation under test (None: the built-in port)."""
+    info = getattr(port, "case_implementation", None)
+    return info() if info is not None else None
+
+
+def shrunk_against(oracle: Backend) -> str:
+    """The label of a case Hypothesis shrank against `oracle`: "port" when the built-in port
+    stands in for ACE, else "ace"."""
+    from .impl import BuiltinPort
+
+    owner = getattr(oracle, "__self__", oracle)
+    return "port" if isinstance(owner, BuiltinPort) else "ace"
 
 
 def write_case(case: Case, failures_dir: str | Path) -> Path:
@@ -237,39 +255,70 @@ class _Mismatch(Exception):
     pass
 
 
-class Progress:
-    """A plain-text progress bar on stderr (redrawn in place on a terminal, a line per 10% otherwise)."""
+def _duration(seconds: float) -> str:
+    seconds = max(int(round(seconds)), 0)
+    if seconds < 60:
+        return f"{seconds} s"
+    m, sec = divmod(seconds, 60)
+    if m < 60:
+        return f"{m} min {sec:02d} s"
+    h, m = divmod(m, 60)
+    return f"{h} h {m:02d} min"
 
-    def __init__(self, total: int, enabled: bool, stream=None):
+
+class Progress:
+    """A plain-text progress line on stderr, with the rate and an ETA: redrawn in place on a
+    terminal (at most 5 times a second); otherwise (piped, a log file) a line every
+    `PIPE_EVERY` seconds and one at the end. `check`, `bench` and `runtime-diff` use it.
+
+    `update(done, found)`: `found` (differences so far) is shown when not None."""
+
+    PIPE_EVERY = 5.0
+
+    def __init__(self, total: int, enabled: bool, stream=None, unit: str = "cases", label: str = ""):
         self.total = max(total, 1)
         self.enabled = enabled
         self.stream = stream or sys.stderr
         self.tty = hasattr(self.stream, "isatty") and self.stream.isatty()
+        self.unit = unit
+        self.label = label
         self.start = time.monotonic()
         self.last = 0.0
-        self.last_decile = -1
+        self.last_line = self.start  # when a piped line was last written
 
-    def update(self, done: int, found: int, force: bool = False) -> None:
+    def line(self, done: int, found: int | None = None, now: float | None = None) -> str:
+        now = time.monotonic() if now is None else now
+        elapsed = max(now - self.start, 1e-9)
+        frac = min(done / self.total, 1.0)
+        rate = done / elapsed
+        width = 30
+        bar = "#" * int(frac * width) + "-" * (width - int(frac * width))
+        text = f"{self.label}[{bar}] {done}/{self.total} {self.unit}"
+        if found is not None:
+            text += f"  {found} difference{'s' if found != 1 else ''}"
+        text += f"  {rate:.1f} {self.unit}/s" if rate < 10 else f"  {rate:.0f} {self.unit}/s"
+        if done >= self.total:
+            text += f"  took {_duration(elapsed)}"
+        elif done > 0:
+            text += f"  ETA {_duration((self.total - done) / rate)}"
+        return text
+
+    def update(self, done: int, found: int | None = None, force: bool = False) -> None:
         if not self.enabled:
             return
         now = time.monotonic()
         if not force and now - self.last < 0.2:
             return
         self.last = now
-        frac = min(done / self.total, 1.0)
-        rate = done / max(now - self.start, 1e-9)
-        width = 30
-        bar = "#" * int(frac * width) + "-" * (width - int(frac * width))
-        line = f"[{bar}] {done}/{self.total} cases  {found} difference{'s' if found != 1 else ''}  {rate:.0f} cases/s"
         if self.tty:
-            self.stream.write("\r" + line)
+            self.stream.write("\r" + self.line(done, found, now) + "\033[K")
             self.stream.flush()
-        elif int(frac * 10) > self.last_decile or force:
-            self.last_decile = int(frac * 10)
-            self.stream.write(line + "\n")
+        elif force or now - self.last_line >= self.PIPE_EVERY:
+            self.last_line = now
+            self.stream.write(self.line(done, found, now) + "\n")
             self.stream.flush()
 
-    def close(self, done: int, found: int) -> None:
+    def close(self, done: int, found: int | None = None) -> None:
         self.update(done, found, force=True)
         if self.enabled and self.tty:
             self.stream.write("\n")
@@ -315,13 +364,15 @@ def aim_at_boundaries(trace) -> None:
             event(key)
 
 
-def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mode: str, keep_going: bool,
-                database, tick, should_stop, timings: Counter, skipped: Counter, versions: Versions,
-                found: list[Found]) -> int:
-    """Draw up to `n` scenes; append each new kind of difference (shrunk) to `found`; return scenes run."""
-    from hypothesis import HealthCheck, Phase, Verbosity, example, given, settings
+def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, seed: int, mode: str,
+                keep_going: bool, database, tick, should_stop, versions: Versions) -> None:
+    """Compare up to `n` scenes drawn by Hypothesis; add each new kind of difference (shrunk) to
+    `r.found`. Scenes the port cannot run are rejected (Hypothesis draws another: they do not count
+    toward `n`) and counted in `r.skipped`; the scenes shrinking runs go to `r.shrink_runs`."""
+    from hypothesis import HealthCheck, Phase, Verbosity, example, given, reject, settings
     from hypothesis import seed as hseed
 
+    from .shrink import scene_bytes
     from .strategies import check_kinds, scenes
     from .strategies.determinism import pinned_constants
 
@@ -331,89 +382,176 @@ def _generative(port: Backend, oracle: Backend, *, kinds, n: int, seed: int, mod
     known: set[tuple[str, ...]] = set()
     if hasattr(port, "trace_boundaries"):  # the built-in port: aim the search at exact boundaries
         port.trace_boundaries = True
-    done = 0
+    unsupported = getattr(port, "unsupported", None)
+    against = shrunk_against(oracle)
+    compared = 0
     round_ = 0
-    while done < n:
+    while compared < n:
         last: list = []
+        failing = [0]  # the size of the first failing scene this round; then Hypothesis is shrinking
         ran = [0]
-        replayed = {id(s): s for s in saved.scenes()} if saved is not None else {}
+        explicit = saved.scenes()[:n - compared] if saved is not None else []
+        replayed = {id(s): s for s in explicit}
 
         def differential(scene):
             if should_stop():
                 raise _Stop
-            ran[0] += 1
-            tick(1)
-            ran_case = run_case(port, oracle, scene, mode, timings, skipped)
-            if ran_case is None:
-                return
+            why = unsupported(scene) if unsupported is not None else None
+            if why:
+                if not failing[0]:
+                    r.skipped[why] += 1
+                    r.cases += 1
+                reject()
+            ran_case = run_case(port, oracle, scene, mode, r.timings)
+            if failing[0]:
+                r.shrink_runs += 1
+            else:
+                ran[0] += 1
+                r.cases += 1
+                tick(1)
             aim_at_boundaries(getattr(port, "last_trace", None))
             a, b, diffs = ran_case
             if diffs:
                 sig = signature(diffs)
                 if sig not in known:
-                    last[:] = [scene, a, b, diffs]
+                    failing[0] = failing[0] or scene_bytes(scene)
+                    last[:] = [scene, a, b, diffs, implementation_run(port)]
                     raise _Mismatch(sig)
             elif id(scene) in replayed:
                 saved.forget(scene)
 
-        for scene in replayed.values():
+        for scene in explicit:
             differential = example(scene)(differential)
-        differential = settings(max_examples=n - done, database=None, deadline=None, verbosity=Verbosity.quiet,
+        budget = n - compared - len(explicit)  # explicit examples do not count toward max_examples
+        phases = [Phase.explicit, Phase.generate, Phase.target, Phase.shrink] if budget > 0 else [Phase.explicit]
+        differential = settings(max_examples=max(budget, 1), database=None, deadline=None, verbosity=Verbosity.quiet,
                                 suppress_health_check=list(HealthCheck), report_multiple_bugs=False,
-                                phases=[Phase.explicit, Phase.generate, Phase.target, Phase.shrink])(
-            hseed(seed * 7919 + round_)(given(scenes(kinds))(differential)))
+                                phases=phases)(hseed(seed * 7919 + round_)(given(scenes(kinds))(differential)))
 
         new = False
         try:
             with pinned_constants():
                 differential()
         except _Mismatch:
-            scene, a, b, diffs = last
+            scene, a, b, diffs, impl = last
             sig = signature(diffs)
             known.add(sig)
             if saved is not None:
                 saved.save(scene)
-            found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions), None, sig, True))
+            what = "live ACE" if against == "ace" else "the built-in port"
+            shrink = Shrink(against, f"shrunk by Hypothesis against {what}", failing[0], scene_bytes(scene))
+            r.found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions, impl, shrink), None, sig))
             new = True
         except _Stop:
-            return done + ran[0]
-        done += ran[0]
+            return
+        compared += ran[0]
         round_ += 1
         # stop: first difference and not keep_going; or a clean round (the budget is spent or
-        # Hypothesis ran out of scenes); or a round that ran nothing
+        # Hypothesis ran out of scenes); or a round that compared nothing
         if (new and not keep_going) or not new or ran[0] == 0:
             break
-    return done
 
 
-def _replay(port: Backend, oracle: Backend, scenes: Iterable[Scene], *, mode: str, keep_going: bool, tick,
-            should_stop, timings: Counter, skipped: Counter, versions: Versions, seed, found: list[Found]) -> int:
-    """Replay `scenes` as they are; append each difference (unshrunk) to `found`; return scenes run.
+REPLAYED = Shrink("none", "replayed as recorded: not shrunk")
 
-    A port that can take a scene ahead (`port.prefetch`, an implementation process) is sent the
-    next scene before the current answer is read, so it computes while this process compares.
+
+def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices: Iterable[int], *, mode: str,
+            keep_going: bool, tick, should_stop, versions: Versions, seed) -> None:
+    """Replay `items[i]` for i in `indices` as they are; add each difference (unshrunk) to `r.found`.
+
+    `items` may load lazily (a corpus sample parses each record when asked): one that does not
+    load (an AcconformError naming where) is listed in `r.unreadable` and skipped with
+    `keep_going`, else the replay stops. A port that can take a scene ahead (`port.prefetch`, an
+    implementation process) is sent the next scene before the current answer is read, so it
+    computes while this process compares.
     """
-    done = 0
-    scenes = list(scenes)
+    indices = iter(indices)
+    stop = [False]
+
+    def take():
+        for i in indices:
+            try:
+                return items[i]
+            except AcconformError as e:
+                r.unreadable.append(str(e))
+                if not keep_going:
+                    stop[0] = True
+                    return None
+        return None
+
     prefetch = getattr(port, "prefetch", None)
-    if prefetch is not None and scenes:
-        prefetch(scenes[0])
-    for i, scene in enumerate(scenes):
-        if should_stop():
-            break
-        done += 1
-        tick(1)
-        if prefetch is not None and i + 1 < len(scenes):
-            prefetch(scenes[i + 1])
-        ran_case = run_case(port, oracle, scene, mode, timings, skipped)
-        if ran_case is None:
+    unsupported = getattr(port, "unsupported", None)
+    scene = take()
+    if prefetch is not None and scene is not None:
+        prefetch(scene)
+    while scene is not None and not should_stop():
+        nxt = None if stop[0] else take()
+        if prefetch is not None and nxt is not None:
+            prefetch(nxt)
+        why = unsupported(scene) if unsupported is not None else None
+        if why:
+            r.skipped[why] += 1
+            r.cases += 1
+            tick(1)
+        else:
+            a, b, diffs = run_case(port, oracle, scene, mode, r.timings)
+            r.cases += 1
+            tick(1)
+            if diffs:
+                case = make_case(scene, a, b, diffs, seed, mode, versions, implementation_run(port), REPLAYED)
+                r.found.append(Found(case, None, signature(diffs)))
+                if not keep_going:
+                    break
+        scene = nxt
+
+
+def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: str, budget: int) -> None:
+    """Shrink the first replayed difference of each kind against `stand_in` (the built-in port
+    standing in for ACE), when it agrees bit for bit with ACE's recorded answer on that scene."""
+    from dataclasses import replace
+
+    from .shrink import scene_bytes, shrink_scene
+
+    unsupported = getattr(port, "unsupported", None)
+    first: dict[tuple[str, ...], str] = {}
+    for f in r.found:
+        c = f.case
+        if f.signature in first:
+            f.case = replace(c, shrink=Shrink("none", f"not shrunk: the first case of this kind ({first[f.signature]}) was"))
             continue
-        a, b, diffs = ran_case
-        if diffs:
-            found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions), None, signature(diffs), False))
-            if not keep_going:
-                break
-    return done
+        first[f.signature] = scene_hash(c.scene)[:12]
+        if stand_in is None:
+            continue
+        ref = guarded(stand_in, c.scene)
+        r.shrink_runs += 1
+        off = compare(ref, c.oracle, "exact")
+        if off:
+            f.case = replace(c, shrink=Shrink("none", "written as recorded, not shrunk: the built-in port differs from "
+                                              f"ACE's recorded answer on this scene (in {', '.join(signature(off))}), "
+                                              "so it cannot stand in for ACE"))
+            continue
+        before = scene_bytes(c.scene)
+        last: list = []
+
+        def still_fails(s: Scene) -> bool:
+            if unsupported is not None and unsupported(s):
+                return False
+            r.shrink_runs += 1
+            a, b = guarded(port, s), guarded(stand_in, s)
+            d = compare(a, b, mode)
+            if d and signature(d) == f.signature:
+                last[:] = [s, a, b, d, implementation_run(port)]
+                return True
+            return False
+
+        small, tried = shrink_scene(c.scene, still_fails, budget)
+        what = ("shrunk against the built-in port standing in for ACE (it agrees with ACE's recorded answer on "
+                f"the original scene; the oracle outcome here is the port's); {tried} smaller scenes tried")
+        if not last:
+            f.case = replace(c, shrink=Shrink("port", what + ", none still differs in the same fields", before, before))
+            continue
+        s, a, b, d, impl = last
+        f.case = make_case(s, a, b, d, c.seed, c.mode, c.versions, impl, Shrink("port", what, before, scene_bytes(s)))
 
 
 # ---------------------------------------------------------------- workers
@@ -426,7 +564,7 @@ def _ignore_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
-def _worker(w: int) -> tuple[int, list[dict], dict, list[bool], dict]:
+def _worker(w: int) -> dict:
     s = _SHARED
     counter, stop = s["counter"], s["stop"]
 
@@ -434,55 +572,82 @@ def _worker(w: int) -> tuple[int, list[dict], dict, list[bool], dict]:
         with counter.get_lock():
             counter.value += k
 
-    timings: Counter = Counter()
-    skipped: Counter = Counter()
-    found: list[Found] = []
+    r = Result()
     if s["versions"] is None:  # a per-process oracle: this worker loads its own runtime
         s["versions"] = versions_of(s["port"], s["oracle"])
     with campaign_gc():
-        done = _worker_campaign(w, s, tick, timings, skipped, found)
-    if found and not s["keep_going"]:
+        _worker_campaign(w, s, r, tick)
+    if (r.found or r.unreadable) and not s["keep_going"]:
         stop.set()
     close = getattr(s["port"], "close", None)
     if close is not None:
         close()  # this worker's implementation process
-    return done, [f.case.to_json() for f in found], dict(timings), [f.shrunk for f in found], dict(skipped)
+    return {"cases": r.cases, "found": [f.case.to_json() for f in r.found], "timings": dict(r.timings),
+            "skipped": dict(r.skipped), "shrink_runs": r.shrink_runs, "unreadable": r.unreadable}
 
 
-def _worker_campaign(w: int, s: dict, tick, timings: Counter, skipped: Counter, found: list[Found]) -> int:
+def _worker_campaign(w: int, s: dict, r: Result, tick) -> None:
     stop = s["stop"]
     if s["replay"] is not None:
-        mine = [sc for i, sc in enumerate(s["replay"]) if i % s["workers"] == w]
-        return _replay(s["port"], s["oracle"], mine, mode=s["mode"], keep_going=s["keep_going"], tick=tick,
-                       should_stop=lambda: stop.is_set(), timings=timings, skipped=skipped, versions=s["versions"],
-                       seed=s["seed"], found=found)
+        _replay(s["port"], s["oracle"], r, s["replay"], range(w, len(s["replay"]), s["workers"]), mode=s["mode"],
+                keep_going=s["keep_going"], tick=tick, should_stop=lambda: stop.is_set(), versions=s["versions"],
+                seed=s["seed"])
+        return
     n = s["n"] // s["workers"] + (1 if w < s["n"] % s["workers"] else 0)
-    return _generative(s["port"], s["oracle"], kinds=s["kinds"], n=n, seed=s["seed"] * 1000 + w,
-                       mode=s["mode"], keep_going=s["keep_going"], database=s["database"], tick=tick,
-                       should_stop=lambda: stop.is_set(), timings=timings, skipped=skipped, versions=s["versions"],
-                       found=found)
+    _generative(s["port"], s["oracle"], r, kinds=s["kinds"], n=n, seed=s["seed"] * 1000 + w, mode=s["mode"],
+                keep_going=s["keep_going"], database=s["database"], tick=tick, should_stop=lambda: stop.is_set(),
+                versions=s["versions"])
+
+
+def _merge(result: Result, outs: list[dict], mode: str, generative: bool) -> None:
+    """The workers' results as one: counts added; each difference once (a scene two workers both
+    found, e.g. a saved failing scene each replayed, is one case; a live campaign keeps one case
+    per kind of difference, the first worker's)."""
+    seen_scenes: set[str] = set()
+    seen_kinds: set[tuple[str, ...]] = set()
+    for out in outs:
+        result.cases += out["cases"]
+        result.timings.update(out["timings"])
+        result.skipped.update(out["skipped"])
+        result.shrink_runs += out["shrink_runs"]
+        result.unreadable.extend(out["unreadable"])
+        for doc in out["found"]:
+            case = Case.from_json(doc)
+            sig = signature(compare(case.port, case.oracle, mode))
+            h = scene_hash(case.scene)
+            if h in seen_scenes or (generative and sig in seen_kinds):
+                continue
+            seen_scenes.add(h)
+            seen_kinds.add(sig)
+            result.found.append(Found(case, None, sig))
 
 
 def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, seed: int = 0, mode: str = "exact",
                  keep_going: bool = False, failures_dir: str | Path | None = "failures",
                  database: str | Path | None = DEFAULT_DATABASE, workers: int = 1, progress: bool = False,
-                 replay: Iterable[Scene] | None = None) -> Result:
-    """Run a campaign of `n` scenes (or replay `replay`) through port and oracle; see the module doc.
+                 replay: Sequence[Scene] | Iterable[Scene] | None = None, stand_in: Backend | None = None,
+                 shrink_budget: int | None = None) -> Result:
+    """Compare `n` scenes (or replay `replay`) through port and oracle; see the module doc.
 
-    Found differences are written to `failures_dir` (None: not written). `workers` > 1 forks
-    worker processes (the backends are inherited, so any callable works); an oracle marked
+    `replay` is a sequence of scenes (or an iterable, listed first); a lazy one (a corpus sample)
+    is loaded item by item in the worker that replays it. `stand_in` is what replayed differences
+    are shrunk against (the built-in port standing in for ACE; None: not shrunk). Found
+    differences are written to `failures_dir` (None: not written). `workers` > 1 forks worker
+    processes (the backends are inherited, so any callable works); an oracle marked
     `per_process` (a .NET runtime cannot be forked) is first touched inside each worker.
     """
+    from .shrink import DEFAULT_BUDGET
+
     if mode not in ("exact", "fast"):
         raise AcconformError(f"unknown mode {mode!r}: choose exact or fast")
     per_process = getattr(getattr(oracle, "__self__", oracle), "per_process", False)
     versions = None if per_process and workers > 1 else versions_of(port, oracle)
-    replay_list = list(replay) if replay is not None else None
-    total = len(replay_list) if replay_list is not None else n
+    items = None if replay is None else replay if isinstance(replay, Sequence) else list(replay)
+    total = len(items) if items is not None else n
     bar = Progress(total, progress)
     start = time.monotonic()
     workers = max(1, min(workers, total or 1))
-    result = Result(source="replay" if replay_list is not None else "generative", versions=versions)
+    result = Result(source="replay" if items is not None else "generative", versions=versions)
 
     if workers == 1:
         count = [0]
@@ -493,24 +658,20 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
 
         try:
             with campaign_gc():
-                if replay_list is not None:
-                    result.cases = _replay(port, oracle, replay_list, mode=mode, keep_going=keep_going, tick=tick,
-                                           should_stop=lambda: False, timings=result.timings, skipped=result.skipped,
-                                           versions=versions, seed=seed, found=result.found)
+                if items is not None:
+                    _replay(port, oracle, result, items, range(len(items)), mode=mode, keep_going=keep_going,
+                            tick=tick, should_stop=lambda: False, versions=versions, seed=seed)
                 else:
-                    result.cases = _generative(port, oracle, kinds=kinds, n=n, seed=seed, mode=mode,
-                                               keep_going=keep_going, database=database, tick=tick,
-                                               should_stop=lambda: False, timings=result.timings,
-                                               skipped=result.skipped, versions=versions, found=result.found)
+                    _generative(port, oracle, result, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
+                                database=database, tick=tick, should_stop=lambda: False, versions=versions)
         except KeyboardInterrupt:
             result.interrupted = True
-            result.cases = max(count[0] - 1, 0)  # the case Ctrl-C cut short was not compared
     else:
         ctx = multiprocessing.get_context("fork")
         counter = ctx.Value("q", 0)
         stop = ctx.Event()
         _SHARED.update(port=port, oracle=oracle, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
-                       database=database, versions=versions, replay=replay_list, workers=workers, counter=counter,
+                       database=database, versions=versions, replay=items, workers=workers, counter=counter,
                        stop=stop)
         try:
             with ctx.Pool(workers, initializer=_ignore_sigint) as pool:
@@ -519,7 +680,7 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                     try:
                         while not pending.ready():
                             pending.wait(0.2)
-                            bar.update(counter.value, 0)
+                            bar.update(counter.value, None)
                         outs = pending.get()
                         break
                     except KeyboardInterrupt:
@@ -528,16 +689,16 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                         stop.set()
         finally:
             _SHARED.clear()
-        for done, cases, timings, shrunk, skipped in outs:
-            result.cases += done
-            result.timings.update(timings)
-            result.skipped.update(skipped)
-            for doc, sh in zip(cases, shrunk):
-                case = Case.from_json(doc)
-                diffs = compare(case.port, case.oracle, mode)
-                result.found.append(Found(case, None, signature(diffs), sh))
+        _merge(result, outs, mode, generative=items is None)
         if not keep_going:
             result.found = result.found[:1]
+    if items is not None and result.found and not result.interrupted:
+        if progress and stand_in is not None:
+            kinds_found = len({f.signature for f in result.found})
+            print(f"shrinking the first difference of each kind ({kinds_found}) against the built-in port standing in "
+                  f"for ACE, up to {DEFAULT_BUDGET if shrink_budget is None else shrink_budget} smaller scenes each",
+                  file=sys.stderr, flush=True)
+        _shrink_replayed(result, port, stand_in, mode, DEFAULT_BUDGET if shrink_budget is None else shrink_budget)
     if failures_dir is not None:
         save_cases(result, failures_dir)
     result.elapsed = time.monotonic() - start

@@ -5,11 +5,19 @@ terrain, bsp, obstacles, indoor), one `acconform.record/1` document per line (sc
 Records are keyed by `scene_key`: the SHA-256 of the scene's canonical JSON (sorted keys, no
 whitespace), so an equal scene finds its record whatever its name or field order.
 
+Loading reads the shards' lines and each record's versions, nothing more (about a second for the
+21,491 committed records): a record's kind comes from its shard's name and its versions from the
+head of its line. `select` picks records (a stratified, seeded sample by kind; a kind; a runtime)
+as `Entry`s, and `scenes(entries)` is a lazy sequence that parses each record when it is asked
+for, so a replay's first case starts at once and each worker parses only its own records. A
+scene handed out by `scenes` is answered by `run` from the record it came from (by identity, or
+by key when asked for late); any other scene is looked up by key, in an index of every record
+built the first time one is needed (that parses the whole corpus: tens of seconds).
+
 A shard that cannot be read (truncated or corrupt gzip) or a line that is not a record raises
-`CorpusCorrupt` naming the shard and the line; with ``keep_going`` the bad records are skipped
-and listed in `RecordedOracle.bad` instead. Records are parsed lazily (loading keeps each line);
-`select` picks a stratified, seeded sample by kind (and filters by kind and runtime) before any
-scene is parsed.
+`CorpusCorrupt` naming the shard and the line -- when loading, or when the record is parsed; with
+``keep_going`` the bad records are skipped and listed in `RecordedOracle.bad` (or by the runner)
+instead. `record` never writes a scene twice, so a corpus holds each scene once.
 """
 
 from __future__ import annotations
@@ -19,6 +27,8 @@ import hashlib
 import json
 import random
 import re
+from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..case import RECORD_FORMAT, Record, Versions, jsonl_lines
@@ -87,10 +97,69 @@ def record_doc(line: str, where: str) -> dict:
     return doc
 
 
+# the head of a line CorpusWriter wrote: the record's versions come before its scene
+_HEAD = re.compile(r'\{"format":"acconform\.record/1","versions":(\{[^{}]*\}),"scene":')
+
+
+def _versions(v) -> Versions:
+    v = v if isinstance(v, dict) else {}
+    return Versions(str(v.get("acconform", "")), str(v.get("ace", "")), str(v.get("runtime", "")))
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Entry:
+    """One corpus record, not parsed yet: where it is ("SHARD line N"), its kind (from the
+    shard's name), the versions it was recorded with, and its line."""
+
+    where: str
+    kind: str
+    versions: Versions
+    line: str
+
+    @property
+    def runtime(self) -> str:
+        return self.versions.runtime
+
+    def doc(self) -> dict:
+        return record_doc(self.line, self.where)
+
+    @property
+    def key(self) -> str:
+        return _doc_key(self.doc())
+
+
+class Scenes(Sequence):
+    """The scenes of some corpus entries, parsed when asked for (``scenes[i]``, iteration).
+
+    ``scenes[i]`` raises CorpusCorrupt (naming shard and line) for a record that does not parse;
+    iteration skips such a record when the oracle keeps going (listing it in `oracle.bad`)."""
+
+    def __init__(self, oracle: "RecordedOracle", entries: list[Entry]):
+        self.oracle = oracle
+        self.entries = entries
+
+    def __len__(self) -> int:
+        return len(self.entries)
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return Scenes(self.oracle, self.entries[i])
+        return self.oracle._hand_out(self.entries[i])
+
+    def __iter__(self):
+        for e in self.entries:
+            try:
+                yield self.oracle._hand_out(e)
+            except CorpusCorrupt as err:
+                self.oracle._bad(err)
+
+
 class RecordedOracle:
-    """ACE's answers from a corpus. `progress(message)` (optional) hears about each shard as it loads."""
+    """ACE's answers from a corpus. `progress(message)` (optional) hears about each shard as it
+    loads, and about the key index when one is built."""
 
     name = "recorded"
+    HANDED_OUT = 256  # scenes from `scenes` whose answers are kept until `run` asks for them
 
     def __init__(self, corpus_dir, *, keep_going: bool = False, progress=None):
         self.corpus_dir = Path(corpus_dir)
@@ -98,34 +167,34 @@ class RecordedOracle:
             raise CorpusMissing(f"no recorded-oracle corpus at {self.corpus_dir} (expected <kind>-NNNN.jsonl.gz "
                                 "shards written by `acconform record`); configure ACE for the live oracle or record one")
         self.keep_going = keep_going
+        self.progress = progress
         self.bad: list[str] = []  # what keep_going skipped, each naming shard and line
-        self._lines: dict[str, str] = {}
-        self._where: dict[str, tuple[str, str, str]] = {}  # key -> ("shard line N", kind, runtime)
-        self._versions: set[Versions] = set()
+        self.entries: list[Entry] = []
+        self._index: dict[str, Entry] | None = None  # key -> entry, built when first needed
+        self._handed: dict[int, tuple[Scene, Entry, dict]] = {}  # id(scene) -> (scene, entry, outcome JSON)
+        self._handed_keys: dict[str, Entry] = {}  # scene key -> entry, of every scene handed out
+        versions: set[Versions] = set()
         for shard in shards(self.corpus_dir):
             kind = SHARD_RE.match(shard.name)["kind"]
             if progress is not None:
-                progress(f"loading {shard.name} ({len(self._lines)} records so far)")
+                progress(f"loading {shard.name} ({len(self.entries)} records so far)")
             try:
                 for lineno, line in shard_lines(shard):
                     where = f"{shard} line {lineno}"
+                    head = _HEAD.match(line)
                     try:
-                        doc = record_doc(line, where)
-                    except CorpusCorrupt as e:
-                        self._bad(e)
+                        v = _versions(json.loads(head[1]) if head else record_doc(line, where).get("versions"))
+                    except (CorpusCorrupt, ValueError) as e:
+                        self._bad(e if isinstance(e, CorpusCorrupt) else CorpusCorrupt(f"{where}: not JSON ({e})"))
                         continue
-                    key = _doc_key(doc)
-                    v = doc.get("versions") if isinstance(doc.get("versions"), dict) else {}
-                    version = Versions(str(v.get("acconform", "")), str(v.get("ace", "")), str(v.get("runtime", "")))
-                    self._lines[key] = line
-                    self._where[key] = (where, kind, version.runtime)
-                    self._versions.add(version)
+                    self.entries.append(Entry(where, kind, v, line))
+                    versions.add(v)
             except CorpusCorrupt as e:
                 self._bad(e)
-        if not self._lines:
+        if not self.entries:
             raise CorpusMissing(f"the recorded-oracle corpus at {self.corpus_dir} holds no records "
                                 "(record some with `acconform record`)")
-        vs = sorted(self._versions, key=lambda v: (v.ace, v.runtime))
+        vs = sorted(versions, key=lambda v: (v.ace, v.runtime))
         self.versions = vs[0] if len(vs) == 1 else Versions(
             "", "; ".join(sorted({v.ace for v in vs})), "; ".join(sorted({v.runtime for v in vs})))
 
@@ -135,24 +204,93 @@ class RecordedOracle:
         self.bad.append(str(e))
 
     def __len__(self) -> int:
-        return len(self._lines)
+        return len(self.entries)
 
     def runtimes(self) -> list[str]:
-        return sorted({rt for _, _, rt in self._where.values()})
+        return sorted({e.runtime for e in self.entries})
 
-    def select(self, *, n: int | None = None, seed: int = 0, kinds=None, runtime: str | None = None) -> list[str]:
-        """Record keys in corpus order: of `kinds`, recorded on `runtime` (its name, e.g. "mono", or
-        a full runtime string), and when `n` is given a sample of n stratified by kind (each kind
-        gets its share of n, at least one when n allows), drawn with `seed`."""
-        keys = [k for k, (_, kind, rt) in self._where.items()
-                if (kinds is None or kind in kinds)
-                and (runtime is None or rt == runtime or rt.split(" ", 1)[0] == runtime)]
-        if n is None or n >= len(keys):
-            return keys
-        by_kind: dict[str, list[str]] = {}
-        for k in keys:
-            by_kind.setdefault(self._where[k][1], []).append(k)
-        shares = {kind: n * len(ks) / len(keys) for kind, ks in by_kind.items()}
+    # ------------------------------------------------------------ by key (parses every record once)
+
+    def index(self, progress=None) -> dict[str, Entry]:
+        """Every entry by scene key, built the first time (it parses every record: tens of seconds
+        for the committed corpus); `progress(done, total)` hears every 500 records."""
+        if self._index is None:
+            if self.progress is not None and progress is None:
+                self.progress(f"indexing {len(self.entries)} records by scene key")
+            index: dict[str, Entry] = {}
+            for i, e in enumerate(self.entries):
+                if progress is not None and i % 500 == 0:
+                    progress(i, len(self.entries))
+                try:
+                    index.setdefault(_doc_key(e.doc()), e)
+                except CorpusCorrupt as err:
+                    self._bad(err)
+            if progress is not None:
+                progress(len(self.entries), len(self.entries))
+            self._index = index
+        return self._index
+
+    def _keyed(self) -> dict[str, Entry]:
+        return self.index()
+
+    @property
+    def _lines(self) -> dict[str, str]:
+        """Every record's line by scene key (builds the key index)."""
+        return {k: e.line for k, e in self._keyed().items()}
+
+    @property
+    def _where(self) -> dict[str, tuple[str, str, str]]:
+        """Every record's ("shard line N", kind, runtime) by scene key (builds the key index)."""
+        return {k: (e.where, e.kind, e.runtime) for k, e in self._keyed().items()}
+
+    def __contains__(self, scene: Scene) -> bool:
+        return scene_key(scene) in self._keyed()
+
+    def record(self, scene: Scene) -> Record:
+        key = scene_key(scene)
+        entry = self._keyed().get(key)
+        if entry is None:
+            label = f" {scene.name!r}" if scene.name else ""
+            raise UnrecordedScene(f"the recorded oracle ({self.corpus_dir}, {len(self)} records) has no answer for "
+                                  f"scene{label} (key {key[:16]}); record it with `acconform record` and a live ACE")
+        return self._record(entry)
+
+    def _record(self, entry: "Entry | str") -> Record:
+        """The record of an entry (or of a scene key)."""
+        if isinstance(entry, str):
+            entry = self._keyed()[entry]
+        try:
+            return Record.from_json(entry.doc())
+        except InvalidScene as e:
+            raise CorpusCorrupt(f"{entry.where}: {e}") from None
+
+    def records(self):
+        """Every record, in corpus order."""
+        for e in self.entries:
+            yield self._record(e)
+
+    # ------------------------------------------------------------ selecting and replaying
+
+    def select(self, *, n: int | None = None, seed: int = 0, kinds=None, runtime: str | None = None,
+               unsupported=None, skipped=None) -> list[Entry]:
+        """Entries in corpus order: of `kinds`, recorded on `runtime` (its name, e.g. "mono", or a
+        full runtime string), and when `n` is given a sample of n stratified by kind (each kind
+        gets its share of n, at least one when n allows), drawn with `seed`: each kind's records
+        in a seeded order, the first ones taken.
+
+        `unsupported(scene) -> reason or None` (an implementation's handshake): with `n`, a record
+        whose scene it names is passed over for the next one of its kind, so n are still taken,
+        and its reason is counted in `skipped` (a Counter); without `n` nothing is parsed here."""
+        entries = [e for e in self.entries
+                   if (kinds is None or e.kind in kinds)
+                   and (runtime is None or e.runtime == runtime or e.runtime.split(" ", 1)[0] == runtime)]
+        if n is None:
+            return entries
+        by_kind: dict[str, list[int]] = {}
+        for i, e in enumerate(entries):
+            by_kind.setdefault(e.kind, []).append(i)
+        n = min(n, len(entries))
+        shares = {kind: n * len(ix) / len(entries) for kind, ix in by_kind.items()}
         take = {kind: int(x) for kind, x in shares.items()}
         # the cases left go to the largest remainders; then every kind gets one if n allows
         for kind in sorted(by_kind, key=lambda kind: (int(shares[kind]) - shares[kind], kind))[:n - sum(take.values())]:
@@ -163,51 +301,56 @@ class RecordedOracle:
                     take[max(take, key=take.get)] -= 1
                     take[kind] = 1
         rng = random.Random(seed)
-        chosen = set()
+        chosen: set[int] = set()
         for kind in sorted(by_kind):
-            chosen.update(rng.sample(by_kind[kind], min(take[kind], len(by_kind[kind]))))
-        return [k for k in keys if k in chosen]
+            order = rng.sample(by_kind[kind], len(by_kind[kind]))
+            got = 0
+            for i in order:
+                if got == take[kind]:
+                    break
+                if unsupported is not None:
+                    try:
+                        why = unsupported(self._hand_out(entries[i], keep=False))
+                    except CorpusCorrupt as err:
+                        self._bad(err)
+                        continue
+                    if why:
+                        if skipped is not None:
+                            skipped[why] += 1
+                        continue
+                chosen.add(i)
+                got += 1
+        return [e for i, e in enumerate(entries) if i in chosen]
 
-    def __contains__(self, scene: Scene) -> bool:
-        return scene_key(scene) in self._lines
+    def scenes(self, entries=None) -> Scenes:
+        """The scenes of `entries` (default: every record), in their order, parsed when asked for."""
+        return Scenes(self, list(self.entries) if entries is None else list(entries))
 
-    def record(self, scene: Scene) -> Record:
-        key = scene_key(scene)
-        line = self._lines.get(key)
-        if line is None:
-            label = f" {scene.name!r}" if scene.name else ""
-            raise UnrecordedScene(f"the recorded oracle ({self.corpus_dir}, {len(self)} records) has no answer for "
-                                  f"scene{label} (key {key[:16]}); record it with `acconform record` and a live ACE")
-        return self._record(key)
-
-    def _record(self, key: str) -> Record:
+    def _hand_out(self, entry: Entry, keep: bool = True) -> Scene:
+        """The entry's scene, parsed; kept (with the entry's answer) for `run` when `keep`."""
+        doc = entry.doc()
         try:
-            return Record.from_json(json.loads(self._lines[key]))
+            scene = Scene.from_json(doc["scene"], "scene")
         except InvalidScene as e:
-            raise CorpusCorrupt(f"{self._where[key][0]}: {e}") from None
-
-    def records(self):
-        """Every record, in corpus order."""
-        for key in self._lines:
-            yield self._record(key)
+            raise CorpusCorrupt(f"{entry.where}: {e}") from None
+        if keep:
+            self._handed_keys[_doc_key(doc)] = entry
+            if len(self._handed) >= self.HANDED_OUT:
+                del self._handed[next(iter(self._handed))]
+            self._handed[id(scene)] = (scene, entry, doc.get("outcome"))
+        return scene
 
     def run(self, scene: Scene) -> Outcome:
-        return self.record(scene).outcome
-
-    def scenes(self, keys=None, progress=None):
-        """The recorded scenes of `keys` (default: every one), in corpus order.
-
-        A record whose scene does not read raises CorpusCorrupt naming shard and line; with
-        keep_going it is skipped and listed in `bad`. `progress(done, total)` hears every 1,000.
-        """
-        keys = list(self._lines) if keys is None else list(keys)
-        for i, key in enumerate(keys):
-            if progress is not None and i % 1000 == 0:
-                progress(i, len(keys))
+        handed = self._handed.pop(id(scene), None)
+        if handed is not None and handed[0] is scene:
             try:
-                yield Scene.from_json(json.loads(self._lines[key])["scene"], "scene")
+                return Outcome.from_json(handed[2], "outcome")
             except InvalidScene as e:
-                self._bad(CorpusCorrupt(f"{self._where[key][0]}: {e}"))
+                raise CorpusCorrupt(f"{handed[1].where}: {e}") from None
+        entry = self._handed_keys.get(scene_key(scene))  # handed out, but asked for late or as an equal copy
+        if entry is not None:
+            return self._record(entry).outcome
+        return self.record(scene).outcome
 
 
 def _doc_key(doc) -> str:

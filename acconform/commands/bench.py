@@ -37,6 +37,7 @@ def add_arguments(p) -> None:
     add_runtime_argument(p, "the ACE compared with (the live oracle's runtime, or the committed corpus --corpus "
                          "takes); the port computes its arithmetic, also with --no-oracle")
     p.add_argument("--json", default=None, metavar="FILE", help="also write the figures as JSON")
+    p.add_argument("--no-progress", action="store_true", help="no progress lines (with an ETA) on stderr")
     from ..impl import add_arguments as impl_arguments
 
     impl_arguments(p)
@@ -127,22 +128,33 @@ class ErrorStats:
 
 def _scenes(args, kinds):
     """{kind: scenes}, and the recorded oracle when the scenes come from a corpus."""
+    from ..runner import Progress
     from ..strategies import sample_scenes
 
+    bar = Progress(len(kinds), not args.no_progress, unit="kinds",
+                   label=f"acconform bench: {'drawing' if args.corpus is None else 'reading'} {args.cases} scenes per kind ")
+    bar.update(0, force=True)
     if args.corpus is None:
-        return {k: list(sample_scenes((k,), args.cases, args.seed)) for k in kinds}, None
+        out = {}
+        for i, k in enumerate(kinds):
+            out[k] = list(sample_scenes((k,), args.cases, args.seed))
+            bar.update(i + 1)
+        bar.close(len(kinds))
+        return out, None
     from ..errors import AcconformError
     from ..oracle import default_corpus
-    from ..oracle.recorded import RecordedOracle, scene_kind
+    from ..oracle.recorded import RecordedOracle
 
     oracle = RecordedOracle(args.corpus or default_corpus(args.runtime))
-    out: dict[str, list] = {k: [] for k in kinds}
-    for s in oracle.scenes():
-        k = scene_kind(s)
-        if k in out and len(out[k]) < args.cases:
-            out[k].append(s)
-            if all(len(ss) >= args.cases for ss in out.values()):
-                break
+    entries: dict[str, list] = {k: [] for k in kinds}
+    for e in oracle.select(kinds=set(kinds)):  # the first records of each kind, parsed only once taken
+        if len(entries[e.kind]) < args.cases:
+            entries[e.kind].append(e)
+    out = {}
+    for i, k in enumerate(kinds):
+        out[k] = list(oracle.scenes(entries[k]))
+        bar.update(i + 1)
+    bar.close(len(kinds))
     empty = [k for k, ss in out.items() if not ss]
     if empty:
         raise AcconformError(f"the corpus {oracle.corpus_dir} holds no scenes of kind {', '.join(empty)} "
@@ -150,12 +162,14 @@ def _scenes(args, kinds):
     return out, oracle
 
 
-def measure_kind(scenes, oracle=None, run_scene=None, runtime: str | None = None) -> dict:
+def measure_kind(scenes, oracle=None, run_scene=None, runtime: str | None = None, tick=None) -> dict:
     """Every figure for one kind's scenes: timings and the three comparisons.
 
     `run_scene(scene, mode=...)` is the implementation measured (default: the built-in port).
     `runtime` (--runtime): the arithmetic computed without an oracle (commands.runtime_or_default).
+    `tick()` (optional) hears each scene run in both modes, and each the oracle answers.
     """
+    tick = tick or (lambda: None)
     import time
 
     from ..compare import compare
@@ -182,6 +196,7 @@ def measure_kind(scenes, oracle=None, run_scene=None, runtime: str | None = None
         t_fast += t2 - t1
         exact.append(e)
         fast.append(f)
+        tick()
         fast_exact.add(f, e)
         errors["exact"] += e.error is not None
         errors["fast"] += f.error is not None
@@ -198,9 +213,13 @@ def measure_kind(scenes, oracle=None, run_scene=None, runtime: str | None = None
                 for o, us in oracle.run_many(scenes[i:i + 256]):
                     answers.append(o)
                     ace_us += us
+                    tick()
             out["ms_oracle_ace"] = ace_us / 1000 / n
         else:
-            answers = [oracle.run(s) for s in scenes]
+            answers = []
+            for s in scenes:
+                answers.append(oracle.run(s))
+                tick()
         out["ms_oracle_wall"] = 1000 * (time.perf_counter() - t0) / n
         # what a campaign reports: scenes the comparator finds different (fast: within its ULP tolerance)
         out["check_differs"] = {"fast": 0, "exact": 0}
@@ -318,14 +337,27 @@ def _bench(args, kinds, run, json, AcconformError) -> int:
     oracle_name = getattr(oracle, "name", None)
     who = f"implementation {args.impl!r}" if args.impl else "the port"
     print(f"acconform bench: {who}; {', '.join(kinds)}; up to {args.cases} scenes per kind from {source}; oracle "
-          + (f"{oracle_name} ({oracle.versions.ace} on {oracle.versions.runtime})" if oracle is not None else "none"))
+          + (f"{oracle_name} ({oracle.versions.ace} on {oracle.versions.runtime})" if oracle is not None else "none"),
+          flush=True)
     if note:
         print(note)
+    from ..runner import Progress
+
     results = {}
+    per_scene = 2 if oracle is not None else 1  # both modes, then the oracle
+    bar = Progress(sum(len(by_kind[k]) for k in kinds) * per_scene, not args.no_progress, unit="steps",
+                   label="acconform bench: measuring ")
+    done = [0]
+
+    def tick():
+        done[0] += 1
+        bar.update(done[0])
+
     for k in kinds:
-        results[k] = measure_kind(by_kind[k], oracle, run, args.runtime)
+        results[k] = measure_kind(by_kind[k], oracle, run, args.runtime, tick)
         print()
-        print("\n".join(render_kind(k, results[k], oracle_name)))
+        print("\n".join(render_kind(k, results[k], oracle_name)), flush=True)
+    bar.close(done[0])
     if oracle is not None:
         n = sum(r["scenes"] for r in results.values())
         fast = sum(r["check_differs"]["fast"] for r in results.values())

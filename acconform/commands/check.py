@@ -75,7 +75,10 @@ def run(args) -> int:
 
 
 def _campaign(args, port, kinds, workers) -> int:
+    from collections import Counter
+
     from ..errors import AcconformError
+    from ..impl import BuiltinPort
     from ..report import Campaign, junit, summary, write_json, write_junit
     from ..runner import DEFAULT_DATABASE, run_campaign
 
@@ -86,7 +89,8 @@ def _campaign(args, port, kinds, workers) -> int:
         if not run_kinds:
             raise AcconformError(f"implementation {port.name!r} supports none of the kinds asked for "
                                  f"({','.join(kinds)}); its handshake lists {','.join(port.kinds)}")
-    oracle, replay, bad = _oracle(args, workers, kinds)
+    presampled: Counter = Counter()  # corpus scenes passed over before the campaign (never sent)
+    oracle, replay, bad = _oracle(args, workers, kinds, run_kinds, port, presampled)
     port.runtime = runtime = _port_runtime(args, oracle)
     database = None if args.no_database else (args.database or DEFAULT_DATABASE)
     seed = args.seed if args.seed is not None else 0
@@ -98,37 +102,90 @@ def _campaign(args, port, kinds, workers) -> int:
         _say(f"{who} vs {getattr(oracle, 'name', 'oracle')} oracle, mode {args.mode}, {runtime} arithmetic, "
              f"kinds {','.join(run_kinds)}, "
              f"{args.cases or GENERATIVE_CASES} cases, seed {seed}, {workers} worker{'s' if workers != 1 else ''}")
-    if unsupported_kinds and replay is None:
+    if unsupported_kinds:
         _say(f"skipping kinds {','.join(unsupported_kinds)}: the implementation's handshake does not list them")
+    # replayed differences are shrunk against the built-in port standing in for ACE (where it
+    # agrees with ACE's recorded answer), computing as the runtime the records come from
+    stand_in = BuiltinPort("exact", runtime) if replay is not None else None
     result = run_campaign(port, oracle.run, kinds=run_kinds, n=args.cases or GENERATIVE_CASES, seed=seed,
                           mode=args.mode, keep_going=args.keep_going, failures_dir=args.failures,
-                          database=database, workers=workers, progress=not args.no_progress, replay=replay)
-    rate = result.cases / max(result.elapsed, 1e-9)
-    head = "interrupted: " if result.interrupted else ""
-    print(f"{head}{result.cases} cases in {result.elapsed:.1f} s ({rate:.0f} cases/s): "
-          f"{len(result.found)} difference{'s' if len(result.found) != 1 else ''}", flush=True)
-    if result.skipped:
-        print(f"skipped {sum(result.skipped.values())} scenes the implementation cannot run: "
-              + ", ".join(f"{why} x{n}" for why, n in result.skipped.most_common()))
-    if bad:
-        print(f"skipped {len(bad)} unreadable corpus record{'s' if len(bad) != 1 else ''} (--keep-going); first: {bad[0]}")
-    if result.failures_fallback:
-        print(f"warning: {result.failures_fallback}")
-    for f in result.found:
-        how = "shrunk" if f.shrunk else "as recorded, not shrunk"
-        print(f"  {f.path} ({how}; {f.case.scene.name or 'scene'})")
-        for line in f.case.differences:
-            print(f"    {line}")
+                          database=database, workers=workers, progress=not args.no_progress, replay=replay,
+                          stand_in=stand_in)
+    result.skipped.update(presampled)
+    result.cases += sum(presampled.values())
+    bad = bad + result.unreadable
+    for line in console_summary(result, bad, keep_going=args.keep_going):
+        print(line, flush=True)
     sampled = replay is None or args.cases is not None  # replaying the whole corpus draws nothing
     campaign = Campaign("recorded" if replay is not None else "live", args.mode, seed if sampled else None, run_kinds,
-                        impl_info, str(args.failures), bad)
+                        impl_info, str(args.failures), bad, tuple(unsupported_kinds))
     if args.json:
         write_json(args.json, summary(result, campaign))
     if args.junit:
         write_junit(args.junit, junit(result, campaign))
     if result.interrupted:
         return 130
+    if result.unreadable and not args.keep_going:
+        raise AcconformError(f"{result.unreadable[0]} (--keep-going skips unreadable records)")
     return 1 if result.found else 0
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
+def console_summary(result, bad, keep_going: bool) -> list[str]:
+    """What `check` prints at the end: what was run, compared, skipped and found (each once), the
+    differences by outcome field and by scene kind, then each kind of difference with its case."""
+    from collections import Counter
+
+    from ..oracle.recorded import scene_kind
+
+    skipped = sum(result.skipped.values())
+    rate = result.cases / max(result.elapsed, 1e-9)
+    head = "interrupted: " if result.interrupted else ""
+    out = [f"{head}{result.cases} cases in {result.elapsed:.1f} s ({rate:.0f} cases/s): {result.compared} compared, "
+           f"{skipped} skipped, {_plural(len(result.found), 'difference')}"]
+    if result.skipped:
+        out.append(f"skipped {_plural(skipped, 'scene')} the implementation cannot run: "
+                   + ", ".join(f"{why} x{n}" for why, n in result.skipped.most_common()))
+    if result.shrink_runs:
+        out.append(f"shrinking ran {_plural(result.shrink_runs, 'more scene')} (not counted above)")
+    if bad:
+        how = "(--keep-going)" if keep_going else "(the campaign stopped there)"
+        out.append(f"skipped {_plural(len(bad), 'unreadable corpus record')} {how}; first: {bad[0]}")
+    if result.failures_fallback:
+        out.append(f"warning: {result.failures_fallback}")
+    if not result.found:
+        return out
+    by_field: Counter = Counter()
+    by_kind: Counter = Counter()
+    groups: dict[tuple, list] = {}
+    for f in result.found:
+        by_field.update(f.signature)
+        by_kind[scene_kind(f.case.scene)] += 1
+        groups.setdefault(f.signature, []).append(f)
+    out.append("differences by field: " + ", ".join(f"{k} x{n}" for k, n in sorted(by_field.items(), key=lambda kv: (-kv[1], kv[0]))))
+    out.append("differences by kind:  " + ", ".join(f"{k} x{n}" for k, n in sorted(by_kind.items(), key=lambda kv: (-kv[1], kv[0]))))
+    for sig, found in groups.items():
+        f = found[0]
+        out.append(f"  {f.path} ({shrink_label(f.case.shrink)}; {f.case.scene.name or 'scene'})")
+        out += [f"    {line}" for line in f.case.differences]
+        if len(found) > 1:
+            out.append(f"    + {_plural(len(found) - 1, 'more scene')} differing in the same fields "
+                       f"({', '.join(sig)}), written as recorded beside it (listed in --json)")
+    return out
+
+
+def shrink_label(shrink) -> str:
+    sizes = ""
+    if shrink.bytes_before and shrink.bytes_after:
+        sizes = f", {shrink.bytes_before:,} -> {shrink.bytes_after:,} bytes"
+    if shrink.against == "ace":
+        return f"shrunk against ACE{sizes}"
+    if shrink.against == "port":
+        return f"shrunk against the built-in port standing in for ACE{sizes}"
+    return shrink.note or "not shrunk"
 
 
 def _port_runtime(args, oracle) -> str:
@@ -143,8 +200,13 @@ def _port_runtime(args, oracle) -> str:
     return runtime_named(args.runtime or oracle.versions.runtime)
 
 
-def _oracle(args, workers: int, kinds):
-    """(oracle, scenes to replay or None, unreadable records skipped). Exit 2 when there is nothing to compare against."""
+def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
+    """(oracle, scenes to replay or None, unreadable records skipped). Exit 2 when there is nothing to compare against.
+
+    Replaying, the scenes are a lazy sequence (each record parsed when its case runs). The kinds
+    the implementation does not list are left out (a whole-corpus replay counts their records as
+    skipped); a sample of -n N is drawn among the scenes the implementation can run, the ones it
+    passes over counted in `presampled`."""
     from ..errors import AcconformError, OracleUnavailable
     from ..oracle import PerProcessOracle, default_corpus, get_oracle, live_configured
     from ..oracle.recorded import CorpusMissing, RecordedOracle
@@ -170,15 +232,14 @@ def _oracle(args, workers: int, kinds):
     if args.runtime is not None and not oracle.select(runtime=args.runtime):
         raise AcconformError(f"--runtime {args.runtime}: the recorded corpus {corpus} holds no records of that "
                              f"runtime (it holds {', '.join(oracle.runtimes()) or 'none'})")
-    keys = oracle.select(n=args.cases, seed=args.seed or 0, kinds=set(kinds), runtime=args.runtime)
-    if not keys:
+    unsupported = getattr(port, "unsupported", None)
+    entries = oracle.select(n=args.cases, seed=args.seed or 0, kinds=set(run_kinds), runtime=args.runtime,
+                            unsupported=unsupported if args.cases is not None else None, skipped=presampled)
+    if args.cases is None:
+        for e in oracle.select(kinds=set(kinds) - set(run_kinds), runtime=args.runtime):
+            presampled[f"kind {e.kind}"] += 1
+    if not entries:
         raise OracleUnavailable(f"nothing to check against: no ACE assembly is configured and the recorded corpus "
-                                f"{corpus} holds no scenes of kinds {','.join(kinds)} (record some with `acconform "
+                                f"{corpus} holds no scenes of kinds {','.join(run_kinds)} (record some with `acconform "
                                 f"record` where ACE is available)")
-
-    def reading(done, total):
-        if not args.no_progress and total > 1000:
-            _say(f"reading scenes: {done}/{total}")
-
-    scenes = list(oracle.scenes(keys, progress=reading))
-    return oracle, scenes, oracle.bad
+    return oracle, oracle.scenes(entries), oracle.bad

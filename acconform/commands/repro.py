@@ -2,6 +2,11 @@
 
 Prints the field-by-field difference. Exit 0 when the case no longer fails, 1 when it still
 does, 2 for a bad file. Without a live ACE the oracle's side is the outcome stored in the case.
+
+A case made with --impl names its implementation (command, directory, handshake): `repro`
+starts that command again, in that directory, and says so; when it does not start, `repro`
+gives no verdict (exit 2) rather than replay the built-in port in its place. --impl CMD replays
+the case on another implementation.
 """
 
 from __future__ import annotations
@@ -26,12 +31,11 @@ def run(args) -> int:
     from ..errors import AcconformError, InvalidScene
     from ..numerics import runtime_named
     from ..oracle import live_configured
-    from ..impl import make_backend
     from ..runner import guarded
 
     doc = load_document(args.file)
     if not isinstance(doc, Case):
-        raise InvalidScene("format", "expected a case file (\"acconform.case/1\"); use `acconform show` for other files", args.file)
+        raise InvalidScene("format", "expected a case file (\"acconform.case/2\"); use `acconform show` for other files", args.file)
     mode = args.mode or doc.mode
     if live_configured(args.ace):  # the port computes as the ACE it is compared with
         from ..oracle.config import resolve
@@ -42,7 +46,7 @@ def run(args) -> int:
         if args.runtime is not None and args.runtime != runtime:
             raise AcconformError(f"--runtime {args.runtime}: this case holds the answer of ACE on {runtime}, and "
                                  f"without a live ACE nothing answers as {args.runtime} (configure ACE, or drop --runtime)")
-    backend = make_backend(args.impl, mode, args.timeout)
+    backend, said = _backend(args, doc, mode)
     backend.runtime = runtime
     try:
         port = guarded(backend, doc.scene)
@@ -57,8 +61,12 @@ def run(args) -> int:
         oracle = doc.oracle
         source = "the oracle outcome recorded in the case (no ACE configured)"
     diffs = compare(port, oracle, mode)
-    who = f"implementation {backend.name!r}" if args.impl else "port"
+    if source != "live ACE" and doc.shrink.against == "port":
+        source += "; it is the built-in port's, which stood in for ACE when the case was shrunk"
+    who = f"implementation {backend.name!r}" if getattr(backend, "command", None) else "port"
     print(f"{args.file}: {who} (mode {mode}, {runtime} arithmetic) vs {source}")
+    for line in said:
+        print(line)
     if not diffs:
         print("no longer fails: every field agrees")
         return 0
@@ -66,3 +74,47 @@ def run(args) -> int:
     for line in render(diffs):
         print(f"  {line}")
     return 1
+
+
+def _backend(args, doc, mode):
+    """(the implementation to replay on, lines saying which and why): --impl, else the one the case
+    names, else the built-in port. A named implementation that does not start is exit 2."""
+    from pathlib import Path
+
+    from ..case import CASE_FORMAT_V1
+    from ..errors import AcconformError
+    from ..impl import make_backend
+    from ..protocol import Implementation, ImplementationError
+
+    made_by = doc.implementation
+    if args.impl is not None:
+        said = []
+        if made_by is not None and made_by.command != args.impl:
+            said.append(f"note: the case was made by implementation {made_by.handshake.get('name', '')!r} "
+                        f"({made_by.command}); replaying on --impl instead")
+        elif made_by is None:
+            said.append("note: the case was made by the built-in port; replaying on --impl instead")
+        return make_backend(args.impl, mode, args.timeout), said
+    if made_by is None:
+        said = []
+        if doc.format == CASE_FORMAT_V1:
+            said.append("note: an acconform.case/1 file does not say which implementation made it; replaying on "
+                        "the built-in port (pass --impl CMD if another made it)")
+        return make_backend(None, mode), said
+    name = made_by.handshake.get("name", "") or made_by.command
+    cwd = made_by.cwd if made_by.cwd and Path(made_by.cwd).is_dir() else None
+    if not args.timeout > 0:
+        raise AcconformError(f"--timeout must be positive, got {args.timeout:g}")
+    try:
+        backend = Implementation(made_by.command, mode=mode, timeout=args.timeout, cwd=cwd)
+    except ImplementationError as e:
+        raise AcconformError(f"no verdict: the case was made by implementation {name!r} ({made_by.command}), "
+                             f"which does not start here ({e}); pass --impl CMD to replay it on another") from None
+    said = [f"replaying on the implementation the case names: {made_by.command!r}"
+            + (f" in {cwd}" if cwd else " (its directory is gone: started here)")]
+    now, then = backend.hello, made_by.handshake
+    changed = [k for k in ("name", "version", "kinds", "features", "modes") if then and now.get(k) != then.get(k)]
+    if changed:
+        said.append("note: its handshake changed since the case was made: "
+                    + ", ".join(f"{k} {then.get(k)!r} -> {now.get(k)!r}" for k in changed))
+    return backend, said

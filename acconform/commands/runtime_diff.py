@@ -15,7 +15,6 @@ The output is Markdown: docs/oracle.md keeps it ("What the runtime alone changes
 
 from __future__ import annotations
 
-import sys
 from collections import Counter, defaultdict
 from contextlib import contextmanager
 
@@ -27,6 +26,7 @@ def add_arguments(p) -> None:
     p.add_argument("--coreclr", default=None, metavar="DIR", help="corpus of ACE on .NET 10 (default: the committed one)")
     p.add_argument("--attribute", action="store_true", help="also find the System.Numerics operation behind each "
                    "difference (runs the port once per operation on each differing scene)")
+    p.add_argument("--no-progress", action="store_true", help="no progress lines on stderr")
 
 
 # The operations whose formula differs between the runtimes (acconform.numerics.Runtime), as
@@ -50,25 +50,42 @@ def field_group(path: str) -> str:
     return path.split("[", 1)[0]
 
 
-def pair(mono, coreclr):
-    """(key, kind) of every scene both corpora hold, in the mono corpus's order."""
-    return [(key, mono._where[key][1]) for key in mono.select() if key in coreclr._lines]
+def pair(mono, coreclr, progress=None):
+    """(key, kind) of every scene both corpora hold, in the mono corpus's order. Keying parses
+    every record of both; `progress` (a runner.Progress) hears how many."""
+    total = len(mono) + len(coreclr)
+    m = mono.index(None if progress is None else lambda done, _: progress.update(done))
+    c = coreclr.index(None if progress is None else lambda done, _: progress.update(len(mono) + done))
+    if progress is not None:
+        progress.close(total)
+    return [(key, e.kind) for key, e in m.items() if key in c]
 
 
-def field_table(mono, coreclr, pairs) -> tuple[dict, dict, Counter]:
+def _progress(args, total: int, unit: str, label: str):
+    from ..runner import Progress
+
+    return Progress(total, not getattr(args, "no_progress", True), unit=unit,
+                    label=f"acconform runtime-diff: {label} ")
+
+
+def field_table(mono, coreclr, pairs, progress=None) -> tuple[dict, dict, Counter]:
     """({field: {kind: scenes}}, {kind: scenes differing}, {kind: scenes paired})."""
     from ..compare import compare
 
     fields: dict[str, Counter] = defaultdict(Counter)
     differing: Counter = Counter()
     paired: Counter = Counter()
-    for key, kind in pairs:
+    for i, (key, kind) in enumerate(pairs):
+        if progress is not None:
+            progress.update(i)
         paired[kind] += 1
         diffs = compare(mono._record(key).outcome, coreclr._record(key).outcome)
         if diffs:
             differing[kind] += 1
             for g in {field_group(d.field) for d in diffs}:
                 fields[g][kind] += 1
+    if progress is not None:
+        progress.close(len(pairs))
     return fields, differing, paired
 
 
@@ -117,29 +134,36 @@ def mono_operation(op: str):
         clear_landblock_cache()
 
 
-def attribute(mono, coreclr, pairs, progress=None) -> tuple[dict, Counter, Counter]:
+def attribute(mono, coreclr, pairs, progress=None, differing=None) -> tuple[dict, Counter, Counter]:
     """({operation: {kind: scenes it alone explains}}, {kind: scenes no single switch explains},
-    {kind: scenes where the port on .NET 10 arithmetic is not ACE on .NET 10 (should be none)})."""
+    {kind: scenes where the port on .NET 10 arithmetic is not ACE on .NET 10 (should be none)}).
+
+    `progress(done)` (optional, e.g. a runner.Progress's update) hears the port runs done, of
+    (operations + 1) x the differing scenes; `differing` (optional) is those scenes' (key, kind)."""
     from ..compare import compare
     from ..port.run import run_scene
 
-    todo = [(key, kind) for key, kind in pairs
-            if compare(mono._record(key).outcome, coreclr._record(key).outcome)]
+    todo = differing if differing is not None else [
+        (key, kind) for key, kind in pairs if compare(mono._record(key).outcome, coreclr._record(key).outcome)]
+    tick = progress or (lambda done: None)
+    runs = 0
     scenes = {key: mono._record(key).scene for key, _ in todo}
     port_wrong: Counter = Counter()
     for key, kind in todo:
         if compare(run_scene(scenes[key], runtime="coreclr"), coreclr._record(key).outcome):
             port_wrong[kind] += 1
+        runs += 1
+        tick(runs)
     explained: dict[str, Counter] = {op: Counter() for op in OPERATIONS}
     by_scene: dict[str, int] = Counter()
-    for i, op in enumerate(OPERATIONS):
-        if progress is not None:
-            progress(f"switching {op} to mono's formula ({i + 1}/{len(OPERATIONS)}, {len(todo)} scenes)")
+    for op in OPERATIONS:
         with mono_operation(op):
             for key, kind in todo:
                 if not compare(run_scene(scenes[key], runtime="coreclr"), mono._record(key).outcome):
                     explained[op][kind] += 1
                     by_scene[key] += 1
+                runs += 1
+                tick(runs)
     several = Counter(kind for key, kind in todo if not by_scene[key])
     return explained, several, port_wrong
 
@@ -150,8 +174,8 @@ def _row(name: str, counts, paired=None) -> str:
     return f"| {name} | " + " | ".join(str(c) for c in cells) + f" | {total} |"
 
 
-def render(mono, coreclr, pairs, attribution=None) -> list[str]:
-    fields, differing, paired = field_table(mono, coreclr, pairs)
+def render(mono, coreclr, pairs, attribution=None, table=None) -> list[str]:
+    fields, differing, paired = table or field_table(mono, coreclr, pairs)
     out = [f"ACE {mono.versions.ace} on {mono.versions.runtime} against ACE {coreclr.versions.ace} on "
            f"{coreclr.versions.runtime}: {len(pairs)} scenes paired by scene key.", "",
            "| outcome field | " + " | ".join(KINDS) + " | all |", "|---|" + "---:|" * (len(KINDS) + 1),
@@ -186,13 +210,20 @@ def run(args) -> int:
         got = runtime_named(oracle.versions.runtime)
         if got != want:
             raise AcconformError(f"--{want}: the corpus {oracle.corpus_dir} holds answers of ACE on {got}, not {want}")
-    pairs = pair(mono, coreclr)
+    pairs = pair(mono, coreclr, _progress(args, len(mono) + len(coreclr), "records", "pairing by scene key"))
     if not pairs:
         raise AcconformError(f"the corpora {mono.corpus_dir} and {coreclr.corpus_dir} share no scene (record the "
                              f"same scenes on both runtimes: `acconform record MONO_CORPUS/*.jsonl.gz`)")
+    table = field_table(mono, coreclr, pairs, _progress(args, len(pairs), "scenes", "comparing outcomes"))
     attribution = None
     if args.attribute:
-        attribution = attribute(mono, coreclr, pairs,
-                                lambda m: print(f"acconform runtime-diff: {m}", file=sys.stderr, flush=True))
-    print("\n".join(render(mono, coreclr, pairs, attribution)))
+        from ..compare import compare
+
+        differing = [(key, kind) for key, kind in pairs
+                     if compare(mono._record(key).outcome, coreclr._record(key).outcome)]
+        bar = _progress(args, len(differing) * (len(OPERATIONS) + 1), "runs",
+                        f"switching each of {len(OPERATIONS)} operations on {len(differing)} scenes")
+        attribution = attribute(mono, coreclr, pairs, bar.update, differing)
+        bar.close(len(differing) * (len(OPERATIONS) + 1))
+    print("\n".join(render(mono, coreclr, pairs, attribution, table)))
     return 0

@@ -189,6 +189,16 @@ def describe(doc) -> list[str]:
         if first is not None:
             tick = first.field.split("]", 1)[0].split("[", 1)[1]
             out.append(f"first differing tick: {tick} of {len(doc.scene.ticks.steps)}: {first}")
+    from .check import shrink_label
+
+    impl = doc.implementation
+    if impl is not None:
+        out.append(f"made by implementation {impl.handshake.get('name', '')!r}: {impl.command}"
+                   + (f" (in {impl.cwd})" if impl.cwd else ""))
+        if impl.stderr:
+            out.append(f"its stderr ({len(impl.stderr)} characters):")
+            out += [f"  | {line}" for line in impl.stderr.splitlines()]
+    out.append(shrink_label(doc.shrink))
     out.append(f"{len(doc.differences)} difference{'s' if len(doc.differences) != 1 else ''}:")
     out += [f"  {d}" for d in doc.differences]
     return out + describe_scene(doc.scene) + describe_outcome(doc.port, "port") + describe_outcome(doc.oracle, "oracle")

@@ -14,7 +14,10 @@ skipped with a note). Reports per perturbation kind:
 - outcome sensitivity: of the pairs (stressed scene, the same scene one ULP away), how many
   have a different discrete outcome in the exact port;
 - fast/exact discrete flips, non-finite values in any outcome field, and exceptions the port
-  raised (split into those where ACE raised too, a verdict, and the rest).
+  raised (split into those where ACE raised too, a verdict, and the rest);
+- scenes over the time limit (--scene-timeout, per scene and side): each side runs in a child
+  process (acconform.timed), so a scene that would run for minutes (a 187 m move of a 0.35 mm
+  sphere) becomes a "SceneTimeout" verdict, counted apart and never compared.
 
 Exit 1 when port (exact) and oracle differ on any stressed scene, else 0; 2 for bad options.
 """
@@ -51,6 +54,11 @@ def add_arguments(p) -> None:
     from . import add_runtime_argument
 
     add_runtime_argument(p, "the .NET runtime to load the live build on; the port computes its arithmetic")
+    from ..timed import DEFAULT_LIMIT
+
+    p.add_argument("--scene-timeout", type=float, default=DEFAULT_LIMIT, metavar="S",
+                   help=f"seconds the port (each mode) or ACE may take for one scene before it is a timeout verdict "
+                        f"(default {DEFAULT_LIMIT:g})")
 
 
 # ---------------------------------------------------------------- float32 steps and positions
@@ -262,10 +270,12 @@ class KindStats:
         self.nonfinite = 0
         self.raised_alone: dict[str, int] = {}
         self.raised_both = 0
+        self.timed_out: dict[str, int] = {}  # side ("port exact", "port fast", "ACE") -> scenes over the limit
 
     def to_json(self):
         return {k: getattr(self, k) for k in ("scenes", "not_applicable", "diff_exact", "diff_fast", "pairs", "flips",
-                                              "fast_flips", "nonfinite", "raised_alone", "raised_both")} | {
+                                              "fast_flips", "nonfinite", "raised_alone", "raised_both",
+                                              "timed_out")} | {
             "invalid": len(self.invalid)}
 
 
@@ -277,6 +287,7 @@ def stress(bases, kinds_of_perturbation, port_exact, port_fast, oracle=None, *, 
     from ..errors import InvalidScene
     from ..runner import guarded, make_case, versions_of, write_case
     from ..scene import validate_scene
+    from ..timed import SCENE_TIMEOUT
     from .bench import discrete_part, nonfinite_fields
 
     if versions is None and oracle is not None:
@@ -317,6 +328,12 @@ def stress(bases, kinds_of_perturbation, port_exact, port_fast, oracle=None, *, 
                 st.scenes += 1
                 e = exact_of(s)
                 f = guarded(port_fast, s)
+                late = [side for side, x in (("port exact", e), ("port fast", f), ("ACE", o))
+                        if x is not None and (x.error or "").startswith(SCENE_TIMEOUT)]
+                for side in late:
+                    st.timed_out[side] = st.timed_out.get(side, 0) + 1
+                if late:  # no outcome to judge on one side: a verdict of its own, not a difference
+                    continue
                 if discrete_part(e) != discrete_part(f):
                     st.fast_flips += 1
                 if nonfinite_fields(e) or nonfinite_fields(f):
@@ -341,8 +358,11 @@ def stress(bases, kinds_of_perturbation, port_exact, port_fast, oracle=None, *, 
             for v, twin in pairs:
                 if twin is None or id(v) not in valid or (twin is not base and id(twin) not in valid):
                     continue
+                ev, et = exact_of(v), exact_of(twin)
+                if any((x.error or "").startswith(SCENE_TIMEOUT) for x in (ev, et)):
+                    continue
                 st.pairs += 1
-                st.flips += discrete_part(exact_of(v)) != discrete_part(exact_of(twin))
+                st.flips += discrete_part(ev) != discrete_part(et)
     return stats
 
 
@@ -378,6 +398,9 @@ def render(stats: dict[str, KindStats], with_oracle: bool) -> list[str]:
             what = "port raised where ACE did not" if with_oracle else "port raised (no ACE to compare with)"
             out.append(f"  {name}: {what}: "
                        + ", ".join(f"{t} x{n}" for t, n in sorted(s.raised_alone.items())))
+        if s.timed_out:
+            out.append(f"  {name}: over the time limit for a scene (not compared): "
+                       + ", ".join(f"{side} x{n}" for side, n in sorted(s.timed_out.items())))
         for msg in s.invalid[:3]:
             out.append(f"  {name}: INVALID derived scene (a stress bug): {msg}")
     return out
@@ -388,7 +411,7 @@ def run(args) -> int:
 
     from ..errors import AcconformError
     from ..port.run import run_scene
-    from ..strategies import check_kinds, sample_scenes
+    from ..strategies import check_kinds
 
     warnings.simplefilter("ignore", RuntimeWarning)
     kinds = check_kinds(args.kinds)
@@ -398,14 +421,21 @@ def run(args) -> int:
     for p in perturbations:
         if p not in PERTURBATIONS:
             raise AcconformError(f"unknown perturbation kind {p!r} (known: {', '.join(PERTURBATIONS)})")
+    if not args.scene_timeout > 0:
+        raise AcconformError(f"--scene-timeout must be positive, got {args.scene_timeout:g}")
+    from functools import partial
+
+    from ..timed import TimedBackend
+
     oracle = None
     if args.no_oracle:
         print("oracle half skipped: --no-oracle")
     else:
-        from ..oracle import live_configured, require_live
+        from ..oracle import PerProcessOracle, live_configured
 
         if live_configured(args.ace):
-            oracle = require_live(args.ace, args.runtime)
+            # ACE loads in a child process, which a scene past the time limit stops
+            oracle = TimedBackend(lambda: PerProcessOracle(args.ace, args.runtime).run, args.scene_timeout, "ACE")
         else:
             print("oracle half skipped: no ACE is configured (pass --ace or set ACE_ASSEMBLY); the recorded corpus "
                   "cannot answer stressed scenes. Port-only figures follow.")
@@ -413,12 +443,19 @@ def run(args) -> int:
     from . import runtime_or_default
 
     rt = runtime_or_default(args.runtime, oracle)  # as the ACE compared with
+    exact = TimedBackend(partial(partial, run_scene, mode="exact", runtime=rt), args.scene_timeout, "port (exact)")
+    fast = TimedBackend(partial(partial, run_scene, mode="fast", runtime=rt), args.scene_timeout, "port (fast)")
+    try:
+        return _run(args, kinds, perturbations, exact, fast, oracle)
+    finally:
+        for b in (exact, fast, oracle):
+            if b is not None:
+                b.close()
 
-    def exact(s):
-        return run_scene(s, mode="exact", runtime=rt)
 
-    def fast(s):
-        return run_scene(s, mode="fast", runtime=rt)
+def _run(args, kinds, perturbations, exact, fast, oracle) -> int:
+    from ..runner import versions_of
+    from ..strategies import sample_scenes
 
     found: list[str] = []
 
@@ -428,13 +465,15 @@ def run(args) -> int:
 
     total_diff = 0
     print(f"acconform stress: {', '.join(kinds)}; {args.cases} base scenes per kind (seed {args.seed}); nudges 1..{args.ulps} "
-          f"ULP; oracle " + (f"live ({oracle.versions.ace} on {oracle.versions.runtime})" if oracle else "none"))
+          f"ULP; oracle " + (f"live ({oracle.versions.ace} on {oracle.versions.runtime})" if oracle else "none")
+          + f"; at most {args.scene_timeout:g} s a scene", flush=True)
+    versions = versions_of(exact, oracle) if oracle is not None else None
     for kind in kinds:
         bases = list(sample_scenes((kind,), args.cases, args.seed))
         stats = stress(bases, perturbations, exact, fast, oracle, k=args.ulps, failures_dir=args.failures,
-                       seed=args.seed, on_case=on_case)
+                       seed=args.seed, versions=versions, on_case=on_case)
         print(f"\n{kind}:")
-        print("\n".join(render(stats, oracle is not None)))
+        print("\n".join(render(stats, oracle is not None)), flush=True)
         total_diff += sum(s.diff_exact for s in stats.values())
     if found:
         print(f"\n{len(found)} stressed scene{'s' if len(found) != 1 else ''} where port and ACE differ (case files):")

@@ -132,13 +132,13 @@ def test_replay_refuses_options_it_would_ignore(no_ace):
 
 def test_replay_samples_n_cases_stratified_by_kind_with_the_seed():
     oracle = RecordedOracle(default_corpus())
-    every = Counter(oracle._where[k][1] for k in oracle.select())
+    every = Counter(e.kind for e in oracle.select())
     a = oracle.select(n=300, seed=1)
     assert len(a) == 300 and a == oracle.select(n=300, seed=1) and a != oracle.select(n=300, seed=2)
-    got = Counter(oracle._where[k][1] for k in a)
+    got = Counter(e.kind for e in a)
     for kind, n in every.items():
         assert abs(got[kind] - 300 * n / len(oracle)) <= 1, (got, every)
-    assert Counter(oracle._where[k][1] for k in oracle.select(n=2, seed=0)).total() == 2
+    assert Counter(e.kind for e in oracle.select(n=2, seed=0)).total() == 2
     assert set(oracle.select(runtime="coreclr")) == set(oracle.select()) and not oracle.select(runtime="mono")
 
 
@@ -185,3 +185,21 @@ def test_coverage_anchors_names_every_anchor_once_and_never_reached_agrees_with_
     never = next(l for l in lines if l.startswith("never reached"))
     unreached = [n for n, c in table.items() if c == 0]
     assert unreached and never == f"never reached ({len(unreached)}): " + ", ".join(unreached)
+
+
+def test_repro_gives_no_verdict_when_the_implementation_a_case_names_does_not_start(tmp_path, no_ace):
+    from acconform.case import Case, ImplementationRun, write_document
+    from acconform.impl import BuiltinPort
+    from acconform.strategies import sample_scenes
+
+    scene = next(iter(sample_scenes(("terrain",), 1, 1)))
+    answer = BuiltinPort()(scene)
+    gone = ImplementationRun(f"{sys.executable} {tmp_path / 'no-such-port.py'}", str(tmp_path), {"name": "js-port"})
+    write_document(tmp_path / "case.json", Case(scene, answer, answer, implementation=gone))
+    r = cli("repro", str(tmp_path / "case.json"))
+    last = one_line_exit_2(r, "no verdict", "'js-port'", "no-such-port.py", "--impl")
+    assert "no longer fails" not in r.stdout and "still fails" not in r.stdout, last
+
+
+def test_stress_refuses_a_time_limit_that_is_not_positive():
+    one_line_exit_2(cli("stress", "-n", "1", "--scene-timeout", "0"), "--scene-timeout must be positive")

@@ -129,14 +129,14 @@ def test_crashes_and_hangs_in_a_campaign_come_out_as_differences_never_a_harness
     assert any(CRASH in d for d in errors) and any(TIMEOUT in d for d in errors)
 
 
-def test_kinds_missing_from_the_handshake_are_skipped_and_counted(tmp_path, no_ace):
+def test_kinds_missing_from_the_handshake_are_skipped_and_do_not_count_toward_n(tmp_path, no_ace):
     r = check("--impl", planted("none", "--kinds", "terrain"), "-n", "30", "--seed", "1",
               "--failures", str(tmp_path / "f"), "--json", str(tmp_path / "s.json"), cwd=tmp_path)
     assert r.returncode == 0, r.stdout + r.stderr
     s = json.loads((tmp_path / "s.json").read_text())
-    assert s["cases"]["skipped"].get("kind bsp", 0) > 0 and s["cases"]["skipped"].get("kind obstacles", 0) > 0
-    assert s["cases"]["compared"] + sum(s["cases"]["skipped"].values()) == 30
-    assert "skipped" in r.stdout
+    assert s["cases"]["compared"] == 30 and s["kinds_skipped"] == ["bsp", "obstacles", "indoor"]
+    assert s["cases"]["run"] == s["cases"]["compared"] + s["cases"]["skipped_total"]
+    assert "skipping kinds bsp,obstacles,indoor" in r.stderr and "30 compared" in r.stdout
 
 
 def test_an_implementation_that_sends_no_handshake_is_one_line_and_exit_2(tmp_path, no_ace):

@@ -364,10 +364,10 @@ def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED,
     warnings.simplefilter("ignore", RuntimeWarning)
     mutant = load_mutant(index)
     oracle = RecordedOracle(corpus_dir)
-    keys = oracle.select(runtime=runtime)
+    keys = oracle.select(runtime=runtime)  # entries, in corpus order
     if only is not None:
         only = set(only)
-        keys = [k for k in keys if k in only]
+        keys = [e for e in keys if e.key in only]
     random.Random(seed).shuffle(keys)
     t0 = time.monotonic()
     out = {"name": MUTATIONS[index].name, "killed": False, "records": len(keys), "records_to_kill": None}

@@ -1,0 +1,130 @@
+"""Shrinking a scene that did not come from Hypothesis: a recorded scene that differs.
+
+A live campaign's scenes are Hypothesis' own draws, and Hypothesis shrinks them. A replayed
+corpus scene was drawn long ago, so Hypothesis cannot shrink it; `shrink_scene` does, greedily,
+on the scene record itself: it tries a smaller scene (fewer objects, EnvCells, Environments,
+landblocks; one sphere; no velocity, slide or placement; flat bare terrain; a shorter path;
+fewer flags) and keeps it when `still_fails(candidate)` says the difference is still there. A
+candidate that is no valid scene (`validate_scene` refuses it) is never run.
+
+It knows nothing of ACE: the caller's `still_fails` compares the implementation with whatever
+stands in for ACE (the runner uses the built-in port, after checking that it agrees with ACE's
+recorded answer on the original scene). Deterministic: the same scene and predicate give the
+same result. `budget` bounds the candidates tried.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Callable, Iterator
+
+from .errors import InvalidScene
+from .flags import PhysicsState, TransientState
+from .numerics import to_f32
+from .scene import Scene, validate_scene
+
+DEFAULT_BUDGET = 300  # candidates tried per scene (each costs a run on both sides)
+
+
+def scene_bytes(scene: Scene) -> int:
+    return len(scene.dumps().encode("utf-8"))
+
+
+def _without(items: tuple, i: int) -> tuple:
+    return items[:i] + items[i + 1:]
+
+
+def _cells(scene: Scene) -> Iterator[Scene]:
+    """Fewer EnvCells: per landblock the last one (they are numbered without gaps), then the
+    Environments no cell names any more."""
+    for c in reversed(scene.env_cells):
+        block = c.id >> 16
+        last = max(x.id for x in scene.env_cells if x.id >> 16 == block)
+        if c.id == last:
+            yield scene.replace(env_cells=tuple(x for x in scene.env_cells if x is not c))
+    used = {c.environment for c in scene.env_cells}
+    if any(e.id not in used for e in scene.environments):
+        yield scene.replace(environments=tuple(e for e in scene.environments if e.id in used))
+
+
+def _landblocks(scene: Scene) -> Iterator[Scene]:
+    for i in reversed(range(len(scene.landblocks))):
+        if len(scene.landblocks) > 1:
+            yield scene.replace(landblocks=_without(scene.landblocks, i))
+    flat = tuple(replace(lb, heights=(0,) * len(lb.heights), terrain=(0,) * len(lb.terrain))
+                 for lb in scene.landblocks if lb.has_terrain)
+    if any(lb.has_terrain and (any(lb.heights) or any(lb.terrain)) for lb in scene.landblocks):
+        it = iter(flat)
+        yield scene.replace(landblocks=tuple(next(it) if lb.has_terrain else lb for lb in scene.landblocks))
+    for i, lb in enumerate(scene.landblocks):
+        if lb.has_terrain and any(lb.terrain):
+            yield scene.replace(landblocks=scene.landblocks[:i] + (replace(lb, terrain=(0,) * len(lb.terrain)),)
+                                + scene.landblocks[i + 1:])
+
+
+def _mover(scene: Scene) -> Iterator[Scene]:
+    m = scene.mover
+
+    def with_(**kw):
+        return scene.replace(mover=replace(m, **kw))
+
+    if len(m.spheres) > 1:
+        yield with_(spheres=m.spheres[:1])
+    if m.placement is not None:
+        yield with_(placement=None)
+    if m.velocity != (0.0, 0.0, 0.0):
+        yield with_(velocity=(0.0, 0.0, 0.0))
+    if m.sliding_normal is not None:
+        yield with_(sliding_normal=None)
+    if m.contact_plane is not None:
+        yield with_(contact_plane=None)
+    if m.scale != 1.0:
+        yield with_(scale=1.0)
+    if m.end != m.begin:
+        yield with_(end=m.begin)
+        if m.end.cell == m.begin.cell:  # halfway along the path, in the same cell
+            a, b = m.begin.frame.origin, m.end.frame.origin
+            mid = tuple(to_f32((x + y) / 2) for x, y in zip(a, b))
+            if mid != b:
+                yield with_(end=replace(m.end, frame=replace(m.end.frame, origin=mid)))
+    for flags, name in ((PhysicsState, "state"), (TransientState, "transient_state")):
+        value = getattr(m, name)
+        for f in flags:
+            if value & f.value:
+                yield with_(**{name: value & ~f.value})
+
+
+def _candidates(scene: Scene) -> Iterator[Scene]:
+    if scene.objects:
+        yield scene.replace(objects=())
+        for i in reversed(range(len(scene.objects))):
+            yield scene.replace(objects=_without(scene.objects, i))
+    yield from _cells(scene)
+    yield from _landblocks(scene)
+    yield from _mover(scene)
+    if scene.engine_mode != "server" and scene.mover.placement is None:
+        yield scene.replace(engine_mode="server")
+
+
+def shrink_scene(scene: Scene, still_fails: Callable[[Scene], bool], budget: int = DEFAULT_BUDGET) -> tuple[Scene, int]:
+    """The smallest scene found from `scene` for which `still_fails` holds, and the candidates tried.
+
+    Greedy: the first candidate that still fails replaces the scene and the candidates start
+    over from it; done when none does or `budget` candidates were tried."""
+    tried = 0
+    improved = True
+    while improved and tried < budget:
+        improved = False
+        for c in _candidates(scene):
+            if tried >= budget:
+                break
+            try:
+                c = validate_scene(c)
+            except InvalidScene:
+                continue
+            tried += 1
+            if still_fails(c):
+                scene = c
+                improved = True
+                break
+    return scene, tried
