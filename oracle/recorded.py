@@ -102,6 +102,9 @@ class RecordedOracle:
         self._lines: dict[str, str] = {}
         self._where: dict[str, tuple[str, str, str]] = {}  # key -> ("shard line N", kind, runtime)
         self._versions: set[Versions] = set()
+        for misnamed in sorted(p for p in self.corpus_dir.glob("*.jsonl.gz") if not SHARD_RE.match(p.name)):
+            self._bad(CorpusCorrupt(f"{misnamed}: not read: a shard is named <kind>-NNNN.jsonl.gz (e.g. "
+                                    f"terrain-0000.jsonl.gz); rename it"))
         for shard in shards(self.corpus_dir):
             kind = SHARD_RE.match(shard.name)["kind"]
             if progress is not None:

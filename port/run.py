@@ -21,7 +21,7 @@ import numpy as np
 
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState
-from acconform import dat
+from acconform import dat, deep
 from acconform.dat import cell_dat_records, environment_records, static_records
 from acconform.staging import MOVER_ID
 from acconform.scene import ENV_CELL_FIRST, Scene, StaticObject
@@ -198,8 +198,15 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
             into.update(trace)
     numerics = get_mode(mode, runtime)  # an unknown mode or runtime is misuse, not a verdict
     try:
-        with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
-            return _run(scene, numerics, trace)
+        try:
+            return _run_quietly(scene, numerics, trace)
+        except RecursionError:  # a BSP deeper than Python's default stack allows: again on a deep one
+            if trace is not None:
+                trace.clear()
+                trace.closest.clear()
+            return deep.call(_run_quietly, scene, numerics, trace)
+    except deep.TooDeep:
+        raise  # deeper than the harness runs anything: misuse (exit 2), not a verdict
     except AceException as e:  # where ACE throws: its .NET type, as the oracle reports ACE's
         return Outcome(error=e.verdict())
     except AttributeError as e:
@@ -208,6 +215,11 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
         return Outcome(error=f"{type(e).__name__}: {e}")
     except Exception as e:  # any other port exception is a verdict too (a port bug or gap)
         return Outcome(error=f"{type(e).__name__}: {e}")
+
+
+def _run_quietly(scene: Scene, mode, trace) -> Outcome:
+    with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
+        return _run(scene, mode, trace)
 
 
 def _run(scene: Scene, mode, trace) -> Outcome:

@@ -31,6 +31,14 @@ def run(args) -> int:
         raise InvalidScene("format", "expected a scene, case or record file (an outcome has no scene to run)", args.file)
     backend = make_backend(args.impl, args.mode, args.timeout)
     try:
+        why = backend.unsupported(scene)
+        if why:  # sent anyway, its answer would be about a scene it says it cannot run
+            from ..errors import AcconformError
+
+            listed = "kinds" if why.startswith("kind") else "features"
+            raise AcconformError(f"{args.file}: implementation {backend.name!r} does not support this scene's {why} "
+                                 f"(its handshake lists {listed} {', '.join(backend.hello[listed]) or 'none'}); "
+                                 "nothing was sent")
         outcome = backend(scene)
     finally:
         getattr(backend, "close", lambda: None)()
