@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .codec import Reader, dumps, json_line, parse_json_text
+from .codec import Reader, dumps, dumps_compact, json_line, parse_json_text
 from .errors import InvalidScene
 from .outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V1 as OUTCOME_FORMAT_V1, FORMAT_V2 as OUTCOME_FORMAT_V2, Outcome
 from .scene import FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2, Scene, check_format
@@ -169,7 +169,11 @@ def write_document(path: str | Path, doc) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     from . import deep
 
-    text = deep.retrying(lambda: dumps(doc.to_json()))  # a deep BSP writes on a deep stack
+    try:
+        text = dumps(doc.to_json())
+    except RecursionError:  # a BSP thousands of levels deep: written on a deep stack, without the
+        # indentation (Python's indenting writer is a generator per level: quadratic in the depth)
+        text = deep.call(lambda: dumps_compact(doc.to_json()))
     tmp = path.with_name(path.name + ".tmp")
     tmp.write_text(text + "\n", encoding="utf-8")
     tmp.replace(path)

@@ -15,9 +15,15 @@ import threading
 
 from .errors import InvalidScene
 
-# Python frames the deep call may use: a scene with a BSP MAX_DEPTH levels deep reads (one JSON
-# level and one frame per BSP level) and runs (one frame per level in each recursive query).
+# how deeply a document may nest (JSON levels; a BSP node is one level): reading and writing one
+# take a Python frame per level, so the deep call that reads has this recursion limit (and a
+# little for the frames below it). ACE on mono runs a BSP 19,900 levels deep (measured on the
+# oracle's main thread, whose stack is 8 MB).
 MAX_DEPTH = 20_000
+READ_FRAMES = MAX_DEPTH + 200
+# the port's recursive BSP queries take up to a few frames per level (a query and the child it
+# asks): a scene that reads runs within this limit
+RUN_FRAMES = 5 * MAX_DEPTH
 # the deep thread's stack: the C JSON reader and writer use ~0.2-0.5 KB per level; only the pages
 # touched are ever committed
 STACK_BYTES = 512 << 20
@@ -36,8 +42,8 @@ class TooDeep(InvalidScene):
         return TooDeep(source)
 
 
-def call(fn, *args, **kwargs):
-    """`fn(*args, **kwargs)` in a thread with a STACK_BYTES stack and a MAX_DEPTH recursion limit;
+def call(fn, *args, frames: int = READ_FRAMES, **kwargs):
+    """`fn(*args, **kwargs)` in a thread with a STACK_BYTES stack and a recursion limit of `frames`;
     its exception is raised here, a RecursionError as TooDeep."""
     box: dict = {}
 
@@ -53,7 +59,7 @@ def call(fn, *args, **kwargs):
         old_limit = sys.getrecursionlimit()
         old_stack = threading.stack_size(STACK_BYTES)
         try:
-            sys.setrecursionlimit(max(old_limit, MAX_DEPTH))
+            sys.setrecursionlimit(max(old_limit, frames))
             thread = threading.Thread(target=body, name="acconform-deep", daemon=True)
             thread.start()
         finally:

@@ -22,6 +22,7 @@ import re
 from pathlib import Path
 
 from ..case import RECORD_FORMAT, Record, Versions, jsonl_lines
+from .. import deep
 from ..codec import dumps_compact
 from ..errors import AcconformError, InvalidScene
 from ..outcome import Outcome
@@ -47,9 +48,9 @@ class CorpusCorrupt(AcconformError):
 
 
 def scene_key(scene: Scene) -> str:
-    doc = scene.to_json()
+    doc = deep.retrying(scene.to_json)
     doc.pop("name", None)  # a scene's name is a label, not part of the physics
-    return hashlib.sha256(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
+    return hashlib.sha256(_canonical(doc).encode()).hexdigest()
 
 
 def scene_kind(scene: Scene) -> str:
@@ -79,7 +80,7 @@ def shard_lines(shard: Path):
 def record_doc(line: str, where: str) -> dict:
     """A corpus line's JSON, checked enough to key it (a record with a scene); CorpusCorrupt otherwise."""
     try:
-        doc = json.loads(line)
+        doc = deep.retrying(json.loads, line)
     except ValueError as e:
         raise CorpusCorrupt(f"{where}: not JSON ({e})") from None
     if not isinstance(doc, dict) or doc.get("format") != RECORD_FORMAT or not isinstance(doc.get("scene"), dict):
@@ -185,7 +186,7 @@ class RecordedOracle:
 
     def _record(self, key: str) -> Record:
         try:
-            return Record.from_json(json.loads(self._lines[key]))
+            return deep.retrying(lambda: Record.from_json(json.loads(self._lines[key])))
         except InvalidScene as e:
             raise CorpusCorrupt(f"{self._where[key][0]}: {e}") from None
 
@@ -208,7 +209,7 @@ class RecordedOracle:
             if progress is not None and i % 1000 == 0:
                 progress(i, len(keys))
             try:
-                yield Scene.from_json(json.loads(self._lines[key])["scene"], "scene")
+                yield deep.retrying(lambda: Scene.from_json(json.loads(self._lines[key])["scene"], "scene"))
             except InvalidScene as e:
                 self._bad(CorpusCorrupt(f"{self._where[key][0]}: {e}"))
 
@@ -217,7 +218,12 @@ def _doc_key(doc) -> str:
     scene = dict(doc["scene"])
     scene.pop("name", None)
     # the same canonical form scene_key hashes: the stored scene JSON is what Scene.to_json wrote
-    return hashlib.sha256(json.dumps(scene, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
+    return hashlib.sha256(_canonical(scene).encode()).hexdigest()
+
+
+def _canonical(scene_json: dict) -> str:
+    """The canonical JSON a scene key hashes (a deep BSP's on a deep stack)."""
+    return deep.retrying(json.dumps, scene_json, sort_keys=True, separators=(",", ":"))
 
 
 class CorpusWriter:
@@ -245,7 +251,7 @@ class CorpusWriter:
             tmp = path.with_name(path.name + ".tmp")
             f = gzip.GzipFile(tmp, "wb", compresslevel=9, mtime=0)
             count = 0
-        f.write((dumps_compact(record.to_json()) + "\n").encode("utf-8"))
+        f.write((deep.retrying(lambda: dumps_compact(record.to_json())) + "\n").encode("utf-8"))
         self._open[kind] = (f, path, count + 1)
         self.written[kind] = self.written.get(kind, 0) + 1
 

@@ -204,7 +204,7 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
             if trace is not None:
                 trace.clear()
                 trace.closest.clear()
-            return deep.call(_run_quietly, scene, numerics, trace)
+            return deep.call(_run_quietly, scene, numerics, trace, frames=deep.RUN_FRAMES)
     except deep.TooDeep:
         raise  # deeper than the harness runs anything: misuse (exit 2), not a verdict
     except AceException as e:  # where ACE throws: its .NET type, as the oracle reports ACE's
