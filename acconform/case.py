@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .codec import Reader, dumps, parse_json_text
+from .codec import Reader, dumps, dumps_compact, json_line, parse_json_text
 from .errors import InvalidScene
 from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V1 as OUTCOME_FORMAT_V1, FORMAT_V2 as OUTCOME_FORMAT_V2,
                       FORMAT_V3 as OUTCOME_FORMAT_V3, Outcome)
@@ -39,7 +39,7 @@ class Versions:
     @staticmethod
     def from_json(r: Reader) -> "Versions":
         r.obj({"acconform", "ace", "runtime"})
-        return Versions(*(r[k].str_() if r.has(k) else "" for k in ("acconform", "ace", "runtime")))
+        return Versions(*(r[k].str_() if r.given(k) else "" for k in ("acconform", "ace", "runtime")))
 
 
 # How much of an implementation's stderr a case keeps: all of it up to this many characters; past
@@ -151,12 +151,12 @@ class Case:
             scene=Scene.from_json(r["scene"].value, r["scene"].path),
             port=Outcome.from_json(r["port"].value, r["port"].path),
             oracle=Outcome.from_json(r["oracle"].value, r["oracle"].path),
-            differences=tuple(d.str_() for d in r["differences"].list()) if r.has("differences") else (),
-            seed=r["seed"].str_() if r.has("seed") else "",
-            mode=r["mode"].str_() if r.has("mode") else "exact",
-            versions=Versions.from_json(r["versions"]) if r.has("versions") else Versions(),
-            implementation=ImplementationRun.from_json(r["implementation"]) if r.has("implementation") else None,
-            shrink=Shrink.from_json(r["shrunk"]) if r.has("shrunk") else Shrink(),
+            differences=tuple(d.str_() for d in r["differences"].list()) if r.given("differences") else (),
+            seed=r["seed"].str_() if r.given("seed") else "",
+            mode=r["mode"].str_() if r.given("mode") else "exact",
+            versions=Versions.from_json(r["versions"]) if r.given("versions") else Versions(),
+            implementation=ImplementationRun.from_json(r["implementation"]) if r.given("implementation") else None,
+            shrink=Shrink.from_json(r["shrunk"]) if r.given("shrunk") else Shrink(),
             format=CASE_FORMAT_V1 if v1 else CASE_FORMAT,
         )
 
@@ -178,7 +178,7 @@ class Record:
         check_format(r, RECORD_FORMAT)
         return Record(Scene.from_json(r["scene"].value, r["scene"].path),
                       Outcome.from_json(r["outcome"].value, r["outcome"].path),
-                      Versions.from_json(r["versions"]) if r.has("versions") else Versions())
+                      Versions.from_json(r["versions"]) if r.given("versions") else Versions())
 
 
 _READERS = {SCENE_FORMAT_V1: Scene.from_json, SCENE_FORMAT_V2: Scene.from_json, SCENE_FORMAT_V3: Scene.from_json,
@@ -203,7 +203,9 @@ def parse_document(doc, source: str | None = None):
             if family in known:
                 raise InvalidScene("format", f"unknown format version {version!r} (this acconform reads {known[family]})")
             raise InvalidScene("format", f"unknown format {fmt!r} (known: {', '.join(sorted(_READERS))})")
-        return reader(doc)
+        from . import deep
+
+        return deep.retrying(reader, doc)  # a BSP thousands of levels deep reads on a deep stack
     except InvalidScene as e:
         raise e.in_file(source) if source and not e.source else e
 
@@ -250,25 +252,26 @@ def jsonl_lines(path: str | Path):
 def iter_documents(path: str | Path):
     """(where, document) for each document in `path`: one for a JSON file, one per line for a
     JSON-lines shard (where = "FILE line N"). A bad line raises InvalidScene naming it."""
-    import json
-
     if not is_lines_file(path):
         yield str(path), load_document(path)
         return
     for lineno, line in jsonl_lines(path):
         where = f"{path} line {lineno}"
-        try:
-            doc = json.loads(line)
-        except ValueError as e:
-            raise InvalidScene("", f"not JSON ({e})", where) from None
-        yield where, parse_document(doc, where)
+        yield where, parse_document(json_line(line, where), where)
 
 
 def write_document(path: str | Path, doc) -> Path:
     """Write a record's JSON atomically (temp file then rename): a crash never leaves half a file."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
+    from . import deep
+
+    try:
+        text = dumps(doc.to_json())
+    except RecursionError:  # a BSP thousands of levels deep: written on a deep stack, without the
+        # indentation (Python's indenting writer is a generator per level: quadratic in the depth)
+        text = deep.call(lambda: dumps_compact(doc.to_json()))
     tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(dumps(doc.to_json()) + "\n", encoding="utf-8")
+    tmp.write_text(text + "\n", encoding="utf-8")
     tmp.replace(path)
     return path

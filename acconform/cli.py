@@ -58,24 +58,62 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+# commands whose output is all they do: when the reader goes away (`acconform show FILE | head`)
+# they stop quietly, exit 0, as other tools do. Every other command goes on with its output
+# dropped and ends with its verdict's exit code (`acconform check | head -1` still exits 1 when
+# it found a difference).
+STOP_WHEN_READER_GOES = ("show", "schema")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "command", None):
         parser.print_help()
         return 2
+    if sys.stdout is sys.__stdout__ and sys.stdout is not None and args.command not in STOP_WHEN_READER_GOES:
+        sys.stdout = _ReaderMayGo(sys.stdout)
     try:
         return int(importlib.import_module(args._module).run(args) or 0)
     except AcconformError as e:
         print(f"acconform {args.command}: error: {e}", file=sys.stderr)
         return 2
+    except RecursionError:  # a reader without a deep-stack retry met a deeply nested file (acconform/deep.py)
+        from .deep import TooDeep
+
+        print(f"acconform {args.command}: error: {TooDeep()}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt:
         print(f"acconform {args.command}: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:
-        # the reader went away (`acconform show FILE | head`): stop quietly, as other tools do
         _silence_stdout()
         return 0
+
+
+class _ReaderMayGo:
+    """The process's stdout, for a command whose exit code is a verdict: when the reader of a pipe
+    goes away, what is written after that goes to /dev/null and the command runs on to its end."""
+
+    def __init__(self, stream):
+        self._stream = stream
+
+    def write(self, text: str) -> int:
+        try:
+            return self._stream.write(text)
+        except BrokenPipeError:
+            _silence_stdout()
+            return len(text)
+
+    def flush(self) -> None:
+        try:
+            self._stream.flush()
+        except BrokenPipeError:
+            _silence_stdout()
+            self._stream.flush()  # what was buffered goes to /dev/null now
+
+    def __getattr__(self, name):
+        return getattr(self._stream, name)
 
 
 def _silence_stdout() -> None:

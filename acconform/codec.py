@@ -126,6 +126,16 @@ class Reader:
     def has(self, key: str) -> bool:
         return key in self.value and self.value[key] is not None
 
+    def given(self, key: str) -> bool:
+        """Whether the optional field `key` (one with a default when left out) is given. A null
+        there is refused naming the field: null is no value, and leaving the field out is how a
+        file asks for the default (``"velocity": null`` is not ``[0, 0, 0]``)."""
+        if key not in self.value:
+            return False
+        if self.value[key] is None:
+            raise InvalidScene(self._child_path(key), "null is not a value here; leave the field out for its default")
+        return True
+
     def __getitem__(self, key) -> "Reader":
         if isinstance(key, str):
             if key not in self.value:
@@ -258,7 +268,23 @@ def _kind(v: Any) -> str:
 
 
 def parse_json_text(text: str, source: str | None = None) -> Any:
+    from . import deep
+
     try:
-        return json.loads(text)
+        return deep.retrying(json.loads, text)
+    except deep.TooDeep as e:
+        raise e.in_file(source) if source else e from None
     except json.JSONDecodeError as e:
         raise InvalidScene("", f"not valid JSON: {e.msg} at line {e.lineno} column {e.colno}", source) from None
+
+
+def json_line(line: str, where: str) -> Any:
+    """One line of a JSON-lines file, parsed; InvalidScene naming `where` when it is not JSON."""
+    from . import deep
+
+    try:
+        return deep.retrying(json.loads, line)
+    except deep.TooDeep as e:
+        raise e.in_file(where) from None
+    except ValueError as e:
+        raise InvalidScene("", f"not JSON ({e})", where) from None

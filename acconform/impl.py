@@ -11,6 +11,9 @@ from .outcome import Outcome
 from .scene import Scene
 
 DEFAULT_TIMEOUT = 10.0
+# the least time an implementation gets to write its handshake (a process starting an interpreter or
+# a JVM on a loaded machine); --timeout above it is the handshake's time limit too
+HANDSHAKE_TIMEOUT_MIN = 10.0
 
 
 def add_arguments(p) -> None:
@@ -18,7 +21,8 @@ def add_arguments(p) -> None:
                    help="the implementation under test: a command speaking acconform.protocol/1 "
                         "(docs/protocol.md); default: the built-in port, in process")
     p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, metavar="S",
-                   help=f"seconds --impl may take for one scene before it is a hang verdict (default {DEFAULT_TIMEOUT:g})")
+                   help=f"seconds --impl may take for one scene before it is a hang verdict (default {DEFAULT_TIMEOUT:g}), "
+                        f"and to start and write its handshake (at least {HANDSHAKE_TIMEOUT_MIN:g})")
 
 
 class BuiltinPort:
@@ -60,4 +64,4 @@ def make_backend(impl: str | None, mode: str = "exact", timeout: float = DEFAULT
 
     if not timeout > 0:
         raise AcconformError(f"--timeout must be positive, got {timeout:g}")
-    return Implementation(impl, mode=mode, timeout=timeout)
+    return Implementation(impl, mode=mode, timeout=timeout, start_timeout=max(timeout, HANDSHAKE_TIMEOUT_MIN))

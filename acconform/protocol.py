@@ -38,7 +38,7 @@ import tempfile
 import time
 from collections.abc import Callable
 
-from . import __version__
+from . import __version__, deep
 from .codec import dumps_compact, loads_answer
 from .errors import AcconformError, InvalidScene
 from .numerics import RUNTIMES
@@ -143,7 +143,11 @@ class Implementation:
             raise AcconformError(f"unknown mode {mode!r}: choose exact or fast")
         self.command = command
         self.cwd = cwd or os.getcwd()  # where it runs (a case records it: `repro` starts it there again)
-        self.argv = shlex.split(command)
+        try:
+            self.argv = shlex.split(command)
+        except ValueError as e:  # an unbalanced quote
+            raise ImplementationError(f"--impl {command!r}: cannot split into a command and its arguments "
+                                      f"({str(e).lower()}); check the quotes") from None
         if not self.argv:
             raise ImplementationError("--impl needs a command, e.g. --impl 'acconform serve'")
         self.mode = mode
@@ -201,8 +205,11 @@ class Implementation:
             line = self._readline(self.start_timeout)
         except _Failed as e:
             self._kill()
-            raise ImplementationError(f"implementation {self.command!r} sent no handshake: "
-                                      f"{e.args[0].replace(KEPT, '')}") from None
+            why = e.args[0]
+            if why.startswith(TIMEOUT):  # a process that never speaks the protocol, or starts too slowly
+                why = (f"none within {self.start_timeout:g} s, so it was stopped (--timeout sets the wait); an "
+                       f"{PROTOCOL} implementation writes its handshake line first (docs/protocol.md)")
+            raise ImplementationError(f"implementation {self.command!r} sent no handshake: {why.replace(KEPT, '')}") from None
         try:
             doc = json.loads(line)
         except ValueError:
@@ -355,7 +362,8 @@ class Implementation:
             self._next_id += 1
             rid = self._next_id
             self._inflight.append((rid, scene))
-        request = dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime, "scene": scene.to_json()}) + "\n"
+        request = deep.retrying(lambda: dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime,
+                                                       "scene": scene.to_json()})) + "\n"
         self._write(request.encode("utf-8"))
         return rid
 
@@ -442,7 +450,7 @@ def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=No
             continue
         rid = None
         try:
-            req = json.loads(raw)
+            req = deep.retrying(json.loads, raw)
             rid = req.get("id") if isinstance(req, dict) else None
             if not isinstance(req, dict) or "scene" not in req:
                 raise ValueError("expected {\"id\": ..., \"mode\": ..., \"scene\": {...}}")
@@ -451,7 +459,7 @@ def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=No
                 raise ValueError(f"unknown mode {mode!r}")
             if runtime not in RUNTIMES:
                 raise ValueError(f"unknown runtime {runtime!r} (known: {', '.join(RUNTIMES)})")
-            outcome = run_scene(Scene.from_json(req["scene"], "scene"), mode, runtime)
+            outcome = run_scene(deep.retrying(Scene.from_json, req["scene"], "scene"), mode, runtime)
         except (ValueError, InvalidScene) as e:
             outcome = Outcome(error=f"InvalidRequest: {e}")
         stdout.write((dumps_compact({"id": rid, "outcome": outcome.to_json()}) + "\n").encode("utf-8"))

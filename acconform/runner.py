@@ -139,7 +139,9 @@ class Result:
 def scene_hash(scene: Scene) -> str:
     from .codec import dumps_compact
 
-    return hashlib.sha256(dumps_compact(scene.to_json()).encode()).hexdigest()
+    from . import deep
+
+    return hashlib.sha256(deep.retrying(lambda: dumps_compact(scene.to_json())).encode()).hexdigest()
 
 
 def signature(diffs: list[Difference]) -> tuple[str, ...]:
@@ -212,6 +214,7 @@ def write_case(case: Case, failures_dir: str | Path) -> Path:
 def check_writable(directory: str | Path, what: str = "--failures") -> Path:
     """`directory`, created if need be, after writing and removing a probe file in it; else exit 2."""
     d = Path(directory)
+    _no_file_in_the_way(d, what)
     try:
         d.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=d, prefix=".acconform-probe-"):
@@ -219,6 +222,40 @@ def check_writable(directory: str | Path, what: str = "--failures") -> Path:
     except OSError as e:
         raise AcconformError(f"{what} {d}: cannot write there ({e.strerror or e}); choose a writable directory") from None
     return d
+
+
+def _no_file_in_the_way(d: Path, what: str) -> None:
+    """Exit 2 when `d`, or the folder it would be made in, is a file: it can never be a directory."""
+    for p in (d, *d.parents):
+        if p.exists():
+            if not p.is_dir():
+                raise AcconformError(f"{what} {d}: cannot write there ({p} is a file, not a directory); "
+                                     "choose a writable directory")
+            return
+
+
+def check_failures_dir(directory: str | Path, what: str = "--failures") -> Path:
+    """The directory case files will go to, checked before a campaign without creating anything: it is
+    made when the first difference is written (a clean campaign in a read-only folder writes nothing).
+    Exit 2 only when it can never be a directory; one that cannot be written when a difference is
+    found sends the cases to a temporary directory the summary names (`save_cases`)."""
+    d = Path(directory)
+    _no_file_in_the_way(d, what)
+    return d
+
+
+def save_output(path: str | Path, option: str, write) -> str | None:
+    """`write(path)` for a report a job writes when it ends (--json, --junit); when that fails (its
+    directory went away during the run), the report goes to a temporary file instead. Returns a
+    warning naming where it went, or None."""
+    try:
+        write(path)
+        return None
+    except OSError as e:
+        fd, fallback = tempfile.mkstemp(prefix="acconform-", suffix=Path(path).suffix or ".out")
+        os.close(fd)
+        write(fallback)
+        return f"could not write {option} {path} ({e.strerror or e}); it is in {fallback}"
 
 
 def check_output_file(path: str | Path, option: str) -> Path:

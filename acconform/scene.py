@@ -51,7 +51,7 @@ class Frame:
     @staticmethod
     def from_json(r: Reader) -> "Frame":
         r.obj({"origin", "orientation"})
-        o = r.get("orientation")
+        o = r["orientation"] if r.given("orientation") else None
         q = IDENTITY
         if o is not None:
             w, x, y, z = (c.f32() for c in o.list(count=4))
@@ -141,10 +141,10 @@ class Landblock:
         lb_id = r["id"].id_()
         if lb_id & 0xFFFF != 0xFFFF:
             r["id"].fail(f"a landblock id ends in FFFF (e.g. 0x{lb_id >> 16:04X}FFFF), got {write_id(lb_id)}")
-        if indoor and not r.has("heights") and not r.has("terrain"):
+        if indoor and not r.given("heights") and not r.given("terrain"):
             return Landblock(lb_id, has_terrain=False)
-        if indoor and r.has("heights") != r.has("terrain"):
-            missing = "terrain" if r.has("heights") else "heights"
+        if indoor and r.given("heights") != r.given("terrain"):
+            missing = "terrain" if r.given("heights") else "heights"
             raise InvalidScene(f"{r.path}.{missing}", "missing: a landblock gives both heights and terrain, or "
                                                       "neither (a landblock without terrain, e.g. a dungeon's)")
         heights = tuple(h.int_(0, 255) for h in r["heights"].list(count=81))
@@ -169,7 +169,7 @@ class PolygonRec:
         if _newell_area2(verts) <= 1e-12:
             r["vertices"].fail("degenerate polygon: its vertices span no area")
         sides = CullMode.None_
-        s = r.get("sides_type")
+        s = r["sides_type"] if r.given("sides_type") else None
         if s is not None:
             name = s.str_()
             if name not in _CULL_NAMES:
@@ -224,7 +224,7 @@ def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
     if kind == "leaf":
         r.obj({"type", "polygons", "solid", "sphere"})
         polys = tuple(p.int_(0, npolys - 1) for p in r["polygons"].list())
-        solid = r["solid"].bool_() if r.has("solid") else False
+        solid = r["solid"].bool_() if r.given("solid") else False
         return BSPLeaf(polys, solid, SphereRec.from_json(r["sphere"], bounding=True))
     if kind == "node":
         r.obj({"type", "plane", "sphere", "front", "back"})
@@ -370,7 +370,7 @@ class CellStructRec:
         """Both trees are required: a DAT CellStruct always holds a cell BSP and a physics BSP."""
         r.obj({"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"})
         polys = tuple(PolygonRec.from_json(p) for p in r["polygons"].list(max_count=0xFFFF))
-        portals = tuple(p.int_(0, len(polys) - 1) for p in r["portals"].list()) if r.has("portals") else ()
+        portals = tuple(p.int_(0, len(polys) - 1) for p in r["portals"].list()) if r.given("portals") else ()
         physics = tuple(PolygonRec.from_json(p) for p in r["physics_polygons"].list(max_count=0xFFFF))
         return CellStructRec(polys, portals, physics, _bsp_from_json(r["physics_bsp"], len(physics)),
                              _cell_bsp_from_json(r["cell_bsp"]))
@@ -425,7 +425,7 @@ class CellPortalRec:
         if other != OUTSIDE_CELL and not ENV_CELL_FIRST <= other <= ENV_CELL_LAST:
             r["other_cell"].fail(f"a portal leads to an EnvCell (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}) "
                                  f"or outside (0xFFFF), got 0x{other:04X}")
-        flags = r["flags"].int_(0, PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT) if r.has("flags") else 0
+        flags = r["flags"].int_(0, PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT) if r.given("flags") else 0
         return CellPortalRec(r["polygon"].int_(0, 0xFFFF), other, r["other_portal"].int_(0, 0xFFFF), flags)
 
 
@@ -455,16 +455,16 @@ class EnvCell:
         if not ENV_CELL_FIRST <= cell_id & 0xFFFF <= ENV_CELL_LAST:
             r["id"].fail(f"an EnvCell id is 0xXXYY{ENV_CELL_FIRST:04X} to 0xXXYY{ENV_CELL_LAST:04X}, got {write_id(cell_id)}")
         frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
-        portals = tuple(CellPortalRec.from_json(p) for p in r["portals"].list(max_count=0xFF)) if r.has("portals") else ()
+        portals = tuple(CellPortalRec.from_json(p) for p in r["portals"].list(max_count=0xFF)) if r.given("portals") else ()
         visible = ()
-        if r.has("visible_cells"):
+        if r.given("visible_cells"):
             visible = tuple(_low_word(v) for v in r["visible_cells"].list(max_count=0xFFFF))
             for i, v in enumerate(visible):
                 if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
                     r["visible_cells"][i].fail(f"a visible cell is an EnvCell's low word "
                                                f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
         return EnvCell(cell_id, frame, r["environment"].id_(), r["cell_structure"].int_(0, 0xFFFF), portals, visible,
-                       r["seen_outside"].bool_() if r.has("seen_outside") else False)
+                       r["seen_outside"].bool_() if r.given("seen_outside") else False)
 
 
 def _low_word(r: Reader) -> int:
@@ -490,8 +490,8 @@ class StaticObject:
     @staticmethod
     def from_json(r: Reader) -> "StaticObject":
         r.obj({"id", "position", "shape", "state", "scale"})
-        state = r["state"].flags(PhysicsState) if r.has("state") else int(PhysicsState.Static)
-        scale = r["scale"].f32() if r.has("scale") else 1.0
+        state = r["state"].flags(PhysicsState) if r.given("state") else int(PhysicsState.Static)
+        scale = r["scale"].f32() if r.given("scale") else 1.0
         if not scale > 0:
             r["scale"].fail(f"scale must be positive, got {scale}")
         return StaticObject(r["id"].id_(), Position.from_json(r["position"]), _shape_from_json(r["shape"]), state, scale)
@@ -536,11 +536,11 @@ class Placement:
     @staticmethod
     def from_json(r: Reader) -> "Placement":
         r.obj({"flags", "get_cell"})
-        flags = r["flags"].flags(SetPositionFlags) if r.has("flags") else 0
+        flags = r["flags"].flags(SetPositionFlags) if r.given("flags") else 0
         if flags & UNPLACEABLE_FLAGS:
             r["flags"].fail("Scatter and RandomScatter cannot be run: ACE scatters only an object with a "
                             "WorldObject (ScatterPos), and the mover has none (WeenieObject.DummyObject)")
-        return Placement(flags, r["get_cell"].bool_() if r.has("get_cell") else False)
+        return Placement(flags, r["get_cell"].bool_() if r.given("get_cell") else False)
 
 
 DRIVERS = ("update_object", "request_pos")  # PhysicsObj.update_object / the legacy player path (RequestPos)
@@ -703,7 +703,7 @@ class Mover:
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
-        scale = r["scale"].f32() if r.has("scale") else 1.0
+        scale = r["scale"].f32() if r.given("scale") else 1.0
         if not scale > 0:
             r["scale"].fail(f"scale must be positive, got {scale}")
         up = r["step_up_height"].f32()
@@ -718,9 +718,9 @@ class Mover:
             step_up_height=up,
             step_down_height=down,
             scale=scale,
-            state=r["state"].flags(PhysicsState) if r.has("state") else DEFAULT_MOVER_STATE,
-            transient_state=r["transient_state"].flags(TransientState) if r.has("transient_state") else DEFAULT_MOVER_TRANSIENT,
-            velocity=r["velocity"].vec3() if r.has("velocity") else (0.0, 0.0, 0.0),
+            state=r["state"].flags(PhysicsState) if r.given("state") else DEFAULT_MOVER_STATE,
+            transient_state=r["transient_state"].flags(TransientState) if r.given("transient_state") else DEFAULT_MOVER_TRANSIENT,
+            velocity=r["velocity"].vec3() if r.given("velocity") else (0.0, 0.0, 0.0),
             contact_plane=ContactPlane.from_json(r["contact_plane"]) if r.has("contact_plane") else None,
             sliding_normal=r["sliding_normal"].vec3() if r.has("sliding_normal") else None,
             placement=Placement.from_json(r["placement"]) if r.has("placement") else None,
@@ -793,23 +793,23 @@ class Scene:
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field})
         if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3):
             check_format(r, FORMAT)
-        name = r["name"].str_() if r.has("name") else ""
+        name = r["name"].str_() if r.given("name") else ""
         mode = "server"
-        if r.has("engine"):
+        if r.given("engine"):
             e = r["engine"].obj({"mode"})
-            if e.has("mode"):
+            if e.given("mode"):
                 mode = e["mode"].str_()
                 if mode not in ENGINE_MODES:
                     e["mode"].fail(f"unknown engine mode {mode!r} (known: server, client)")
         table = DEFAULT_LAND_HEIGHT_TABLE
-        if r.has("land_height_table"):
+        if r.given("land_height_table"):
             table = tuple(h.f32() for h in r["land_height_table"].list(count=256))
         landblocks = tuple(Landblock.from_json(lb, not v1) for lb in r["landblocks"].list(min_count=1))
-        objects = tuple(StaticObject.from_json(o) for o in r["objects"].list()) if r.has("objects") else ()
+        objects = tuple(StaticObject.from_json(o) for o in r["objects"].list()) if r.given("objects") else ()
         environments = env_cells = ()
-        if r.has("environments"):
+        if r.given("environments"):
             environments = tuple(Environment.from_json(e) for e in r["environments"].list())
-        if r.has("env_cells"):
+        if r.given("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
         ticks = Ticks.from_json(r["ticks"]) if r.has("ticks") else None
         mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT), ticks=ticks is not None)

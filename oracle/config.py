@@ -113,6 +113,11 @@ def _assembly_file(path: Path, source: str) -> Path:
             raise OracleUnavailable(f"no {ASSEMBLY_NAME} in the directory {path} (from {source}); point it at an "
                                     f"ACE build output holding {ASSEMBLY_NAME}; {HOW_TO_SET}")
         path = candidate
+    elif path.name.lower() != ASSEMBLY_NAME.lower() and path.resolve().name.lower() != ASSEMBLY_NAME.lower():
+        # another of the build's assemblies (ACE.Common.dll, ...): the oracle loads ACE.Server.dll
+        # beside it, which may be a different build or none; say which file to give
+        raise OracleUnavailable(f"{path} (from {source}) is not {ASSEMBLY_NAME}: give {ASSEMBLY_NAME} or the "
+                                f"directory holding it (e.g. {path.absolute().parent / ASSEMBLY_NAME})")
     problem = dotnet_assembly_problem(path)
     if problem:
         raise OracleUnavailable(f"{path} (from {source}) is not a .NET assembly: {problem}; {HOW_TO_SET}")

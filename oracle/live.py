@@ -11,7 +11,7 @@ from __future__ import annotations
 import ctypes
 import struct
 
-from .. import __version__
+from .. import __version__, deep
 from ..case import Versions
 from ..errors import OracleError, OracleUnavailable
 from ..outcome import Outcome
@@ -53,7 +53,7 @@ class LiveOracle:
 
     def run_timed(self, scene: Scene) -> tuple[Outcome, float]:
         """(Outcome, ACE's in-runtime FindValidPosition time in microseconds)."""
-        data = pack_scene(scene)
+        data = deep.retrying(pack_scene, scene)  # a BSP thousands of levels deep packs on a deep stack
         n = self._call(self._run_pinned, data)
         outcome, us, case_us, counts = unpack_outcome(self._out, 0) if n <= self._out_cap else self._overflow(n)
         self.last_ace_micros, self.last_case_micros = us, case_us
@@ -92,7 +92,7 @@ class LiveOracle:
         scenes = list(scenes)
         parts = [struct.pack("<i", len(scenes))]
         for s in scenes:
-            d = pack_scene(s)
+            d = deep.retrying(pack_scene, s)
             parts.append(struct.pack("<i", len(d)))
             parts.append(d)
         total = self._call(self._run_many_pinned, b"".join(parts))

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..case import RECORD_FORMAT, Record, Versions, jsonl_lines
+from .. import deep
 from ..codec import dumps_compact
 from ..errors import AcconformError, InvalidScene
 from ..outcome import Outcome
@@ -57,9 +58,9 @@ class CorpusCorrupt(AcconformError):
 
 
 def scene_key(scene: Scene) -> str:
-    doc = scene.to_json()
+    doc = deep.retrying(scene.to_json)
     doc.pop("name", None)  # a scene's name is a label, not part of the physics
-    return hashlib.sha256(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
+    return hashlib.sha256(_canonical(doc).encode()).hexdigest()
 
 
 def scene_kind(scene: Scene) -> str:
@@ -89,7 +90,7 @@ def shard_lines(shard: Path):
 def record_doc(line: str, where: str) -> dict:
     """A corpus line's JSON, checked enough to key it (a record with a scene); CorpusCorrupt otherwise."""
     try:
-        doc = json.loads(line)
+        doc = deep.retrying(json.loads, line)
     except ValueError as e:
         raise CorpusCorrupt(f"{where}: not JSON ({e})") from None
     if not isinstance(doc, dict) or doc.get("format") != RECORD_FORMAT or not isinstance(doc.get("scene"), dict):
@@ -174,6 +175,9 @@ class RecordedOracle:
         self._handed: dict[int, tuple[Scene, Entry, dict]] = {}  # id(scene) -> (scene, entry, outcome JSON)
         self._handed_keys: dict[str, Entry] = {}  # scene key -> entry, of every scene handed out
         versions: set[Versions] = set()
+        for misnamed in sorted(p for p in self.corpus_dir.glob("*.jsonl.gz") if not SHARD_RE.match(p.name)):
+            self._bad(CorpusCorrupt(f"{misnamed}: not read: a shard is named <kind>-NNNN.jsonl.gz (e.g. "
+                                    f"terrain-0000.jsonl.gz); rename it"))
         for shard in shards(self.corpus_dir):
             kind = SHARD_RE.match(shard.name)["kind"]
             if progress is not None:
@@ -330,7 +334,7 @@ class RecordedOracle:
         """The entry's scene, parsed; kept (with the entry's answer) for `run` when `keep`."""
         doc = entry.doc()
         try:
-            scene = Scene.from_json(doc["scene"], "scene")
+            scene = deep.retrying(Scene.from_json, doc["scene"], "scene")
         except InvalidScene as e:
             raise CorpusCorrupt(f"{entry.where}: {e}") from None
         if keep:
@@ -344,7 +348,7 @@ class RecordedOracle:
         handed = self._handed.pop(id(scene), None)
         if handed is not None and handed[0] is scene:
             try:
-                return Outcome.from_json(handed[2], "outcome")
+                return deep.retrying(Outcome.from_json, handed[2], "outcome")
             except InvalidScene as e:
                 raise CorpusCorrupt(f"{handed[1].where}: {e}") from None
         entry = self._handed_keys.get(scene_key(scene))  # handed out, but asked for late or as an equal copy
@@ -357,7 +361,12 @@ def _doc_key(doc) -> str:
     scene = dict(doc["scene"])
     scene.pop("name", None)
     # the same canonical form scene_key hashes: the stored scene JSON is what Scene.to_json wrote
-    return hashlib.sha256(json.dumps(scene, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
+    return hashlib.sha256(_canonical(scene).encode()).hexdigest()
+
+
+def _canonical(scene_json: dict) -> str:
+    """The canonical JSON a scene key hashes (a deep BSP's on a deep stack)."""
+    return deep.retrying(json.dumps, scene_json, sort_keys=True, separators=(",", ":"))
 
 
 class CorpusWriter:
@@ -385,7 +394,7 @@ class CorpusWriter:
             tmp = path.with_name(path.name + ".tmp")
             f = gzip.GzipFile(tmp, "wb", compresslevel=9, mtime=0)
             count = 0
-        f.write((dumps_compact(record.to_json()) + "\n").encode("utf-8"))
+        f.write((deep.retrying(lambda: dumps_compact(record.to_json())) + "\n").encode("utf-8"))
         self._open[kind] = (f, path, count + 1)
         self.written[kind] = self.written.get(kind, 0) + 1
 

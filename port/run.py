@@ -22,7 +22,7 @@ import numpy as np
 from acconform.flags import TransientState
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
-from acconform import dat
+from acconform import dat, deep
 from acconform.dat import cell_dat_records, environment_records, static_records
 from acconform.staging import MOVER_ID
 from acconform.scene import ENV_CELL_FIRST, Scene, StaticObject
@@ -201,8 +201,15 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
             into.update(trace)
     numerics = get_mode(mode, runtime)  # an unknown mode or runtime is misuse, not a verdict
     try:
-        with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
-            return _run(scene, numerics, trace)
+        try:
+            return _run_quietly(scene, numerics, trace)
+        except RecursionError:  # a BSP deeper than Python's default stack allows: again on a deep one
+            if trace is not None:
+                trace.clear()
+                trace.closest.clear()
+            return deep.call(_run_quietly, scene, numerics, trace, frames=deep.RUN_FRAMES)
+    except deep.TooDeep:
+        raise  # deeper than the harness runs anything: misuse (exit 2), not a verdict
     except Exception as e:
         return Outcome(error=verdict(e))
 
@@ -217,6 +224,11 @@ def verdict(e: Exception) -> str:
     if isinstance(e, AttributeError) and e.obj is None:
         return NullReferenceException.from_none(e).verdict()
     return f"{type(e).__name__}: {e}"
+
+
+def _run_quietly(scene: Scene, mode, trace) -> Outcome:
+    with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
+        return _run(scene, mode, trace)
 
 
 def _run(scene: Scene, mode, trace) -> Outcome:

@@ -35,14 +35,21 @@ DEFAULT_KINDS: tuple[str, ...] = ALL_KINDS
 def check_kinds(kinds) -> tuple[str, ...]:
     if kinds is None:
         return DEFAULT_KINDS
+    given = kinds
     if isinstance(kinds, str):
-        kinds = tuple(k for k in kinds.split(",") if k)
+        kinds = tuple(k.strip() for k in kinds.split(","))
     kinds = tuple(kinds)
-    if not kinds:
+    if not kinds or kinds == ("",):
         raise AcconformError(f"no scene kinds chosen (known: {', '.join(ALL_KINDS)})")
     for k in kinds:
+        if not k:
+            raise AcconformError(f"--kinds {given!r}: an empty kind name between commas "
+                                 f"(known: {', '.join(ALL_KINDS)})")
         if k not in ALL_KINDS:
             raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)})")
+    if len(set(kinds)) != len(kinds):
+        twice = next(k for k in kinds if kinds.count(k) > 1)
+        raise AcconformError(f"--kinds {given!r}: {twice!r} is named twice")
     return kinds
 
 

@@ -370,10 +370,15 @@ def _bench(args, kinds, run, json, AcconformError) -> int:
                "oracle": None if oracle is None else {"name": oracle_name, "ace": oracle.versions.ace,
                                                       "runtime": oracle.versions.runtime},
                "kinds": results}
-        with open(args.json, "w", encoding="utf-8") as f:
-            json.dump(_finite(doc), f, indent=1, allow_nan=False)
-            f.write("\n")
-        print(f"\nfigures written to {args.json}", file=sys.stderr)
+        from ..runner import save_output
+
+        def write(path):
+            with open(path, "w", encoding="utf-8") as f:
+                json.dump(_finite(doc), f, indent=1, allow_nan=False)
+                f.write("\n")
+
+        warned = save_output(args.json, "--json", write)  # its directory may have gone during the run
+        print(f"\nwarning: {warned}" if warned else f"\nfigures written to {args.json}", file=sys.stderr)
     return 0
 
 

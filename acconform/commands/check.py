@@ -53,7 +53,7 @@ def _say(msg: str) -> None:
 def run(args) -> int:
     from ..errors import AcconformError
     from ..impl import make_backend
-    from ..runner import check_output_file, check_writable, default_workers
+    from ..runner import check_failures_dir, check_output_file, default_workers
     from ..strategies import check_kinds
 
     kinds = check_kinds(args.kinds)
@@ -61,8 +61,15 @@ def run(args) -> int:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
     if args.workers < 0:
         raise AcconformError(f"--workers must be 0 (all cores) or more, got {args.workers}")
+    if args.workers > default_workers():
+        # each worker is a process (with its own ACE, live): more than the cores only slow the
+        # campaign and multiply its memory, and the scenes a seed draws depend on the count
+        raise AcconformError(f"--workers {args.workers}: this machine has {default_workers()} cores; more workers "
+                             f"than cores only slow a campaign down (use -j {default_workers()} or fewer; "
+                             "-j 0: all cores)")
     # everything that could stop a finished campaign from being saved is checked before it starts
-    check_writable(args.failures)
+    # (the case directory itself is made only when a difference is written)
+    check_failures_dir(args.failures)
     for path, option in ((args.json, "--json"), (args.junit, "--junit")):
         if path is not None:
             check_output_file(path, option)
@@ -119,10 +126,19 @@ def _campaign(args, port, kinds, workers) -> int:
     sampled = replay is None or args.cases is not None  # replaying the whole corpus draws nothing
     campaign = Campaign("recorded" if replay is not None else "live", args.mode, seed if sampled else None, run_kinds,
                         impl_info, str(args.failures), bad, tuple(unsupported_kinds))
+    from ..runner import save_output
+
+    # a report whose directory went away during the run goes to a temporary file, named here
     if args.json:
-        write_json(args.json, summary(result, campaign))
+        doc = summary(result, campaign)
+        warned = save_output(args.json, "--json", lambda p: write_json(p, doc))
+        if warned:
+            print(f"warning: {warned}")
     if args.junit:
-        write_junit(args.junit, junit(result, campaign))
+        root = junit(result, campaign)
+        warned = save_output(args.junit, "--junit", lambda p: write_junit(p, root))
+        if warned:
+            print(f"warning: {warned}")
     if result.interrupted:
         return 130
     if result.unreadable and not args.keep_going:

@@ -114,6 +114,15 @@ def run(args) -> int:
 
     if not args.files and args.n <= 0:
         raise AcconformError("nothing to record: give scene files and/or -n N")
+    # what can be checked before ACE starts is checked first: a bad option costs no wait for ACE
+    if args.kinds is not None:
+        from ..strategies import check_kinds
+
+        check_kinds(args.kinds)
+    if args.out is not None:
+        from ..runner import check_writable
+
+        check_writable(args.out, "--out")
     oracle = require_live(args.ace, args.runtime)
     out = Path(args.out) if args.out else default_out(runtime_named(oracle.versions.runtime))
     try:

@@ -37,6 +37,14 @@ def run(args) -> int:
     backend = make_backend(args.impl, args.mode, args.timeout)
     backend.runtime = runtime_or_default(args.runtime)
     try:
+        why = backend.unsupported(scene)
+        if why:  # sent anyway, its answer would be about a scene it says it cannot run
+            from ..errors import AcconformError
+
+            listed = "kinds" if why.startswith("kind") else "features"
+            raise AcconformError(f"{args.file}: implementation {backend.name!r} does not support this scene's {why} "
+                                 f"(its handshake lists {listed} {', '.join(backend.hello[listed]) or 'none'}); "
+                                 "nothing was sent")
         outcome = backend(scene)
     finally:
         getattr(backend, "close", lambda: None)()

@@ -24,6 +24,7 @@ def _kind(doc) -> str:
 
 def run(args) -> int:
     from ..case import is_lines_file, jsonl_lines, load_document, parse_document
+    from ..codec import json_line
     from ..errors import InvalidScene
 
     bad = 0
@@ -41,18 +42,12 @@ def run(args) -> int:
                 print(f"ok {f}: {_kind(doc)}{label}")
             continue
         # a shard: every line, going on past a bad one
-        import json
-
         good, kinds, bad_here = 0, set(), 0
         try:
             for lineno, line in jsonl_lines(f):
                 where = f"{f} line {lineno}"
                 try:
-                    try:
-                        raw = json.loads(line)
-                    except ValueError as e:
-                        raise InvalidScene("", f"not JSON ({e})", where) from None
-                    kinds.add(_kind(parse_document(raw, where)))
+                    kinds.add(_kind(parse_document(json_line(line, where), where)))
                     good += 1
                 except InvalidScene as e:
                     bad_here += 1

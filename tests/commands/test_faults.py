@@ -203,3 +203,313 @@ def test_repro_gives_no_verdict_when_the_implementation_a_case_names_does_not_st
 
 def test_stress_refuses_a_time_limit_that_is_not_positive():
     one_line_exit_2(cli("stress", "-n", "1", "--scene-timeout", "0"), "--scene-timeout must be positive")
+
+
+# ------------------------------------------------------------------ the fault catalogue (issue 23)
+#
+# Every fault a new user met, as data: what they typed and the words the one line must hold. Each
+# entry builds its inputs in a temporary directory and returns the finished process, the exit code
+# it must end with, and the words. `test_no_fault_in_the_catalogue_prints_a_traceback` runs them all.
+
+EXAMPLES = ROOT / "examples"
+PLANTED = ROOT / "tests" / "impl" / "planted_impl.py"
+
+
+def nested_json(path: Path, depth: int) -> Path:
+    path.write_text("[" * depth + "]" * depth)
+    return path
+
+
+def deep_bsp_scene(path: Path, depth: int) -> Path:
+    """A recorded BSP scene whose tree is put `depth` nodes deeper: each new node's plane lies 1 km
+    above the object, so every query walks down its back child to the recorded tree."""
+    line = next(iter(gzip.open(shards(default_corpus())[0], "rt")))
+    scene = json.loads(line)["scene"]
+    shape = next(o["shape"] for o in scene["objects"] if o["shape"]["kind"] == "bsp")
+    root, sphere = shape["root"], shape["root"]["sphere"]
+    for _ in range(depth):
+        root = {"type": "node", "plane": {"normal": [0.0, 0.0, 1.0], "d": -1000.0}, "sphere": sphere,
+                "front": {"type": "leaf", "polygons": [], "solid": False, "sphere": sphere}, "back": root}
+    shape["root"] = root
+    from acconform import deep
+
+    path.write_text(deep.call(json.dumps, scene))
+    return path
+
+
+def scene_with(path: Path, **mover) -> Path:
+    doc = json.loads((EXAMPLES / "flat_walk.json").read_text())
+    doc["mover"].update(mover)
+    path.write_text(json.dumps(doc))
+    return path
+
+
+def case_with(path: Path, **fields) -> Path:
+    from acconform.case import Case
+    from acconform.outcome import Outcome
+    from acconform.scene import Scene
+
+    doc = Case(Scene.loads((EXAMPLES / "flat_walk.json").read_text()), Outcome(ok=True), Outcome()).to_json()
+    doc.update(fields)
+    path.write_text(json.dumps(doc))
+    return path
+
+
+def tampered_corpus(d: Path) -> Path:
+    """Four recorded terrain scenes, ACE's answer to the second moved 1 m: replaying finds a difference."""
+    d.mkdir()
+    lines = [line for _, line in zip(range(4), gzip.open(next(s for s in shards(default_corpus())
+                                                              if s.name.startswith("terrain")), "rt"))]
+    doc = json.loads(lines[1])
+    doc["outcome"]["origin"][0] += 1.0
+    lines[1] = json.dumps(doc) + "\n"
+    with gzip.open(d / "terrain-0000.jsonl.gz", "wt") as f:
+        f.writelines(lines)
+    return d
+
+
+def read_only(directory: Path, argv: list[str]) -> list[str]:
+    """`argv` run with `directory` read-only: a read-only bind mount in a user namespace (root cannot be
+    kept out by permission bits), or the permission bits for anyone else."""
+    if os.geteuid() != 0:
+        directory.chmod(0o555)
+        return argv
+    if not shutil.which("unshare") or subprocess.run(["unshare", "-rm", "true"], capture_output=True).returncode:
+        pytest.skip("running as root without `unshare -rm`: no way to make a directory read-only here")
+    # cd again after the mount: a working directory entered before it would still be the writable one
+    return ["unshare", "-rm", "sh", "-c", 'mount -o bind,ro "$0" "$0" && cd "$PWD" && exec "$@"', str(directory), *argv]
+
+
+def acconform(*args) -> list[str]:
+    return [sys.executable, "-m", "acconform.cli", *map(str, args)]
+
+
+def run_cli(argv, cwd=None):
+    return subprocess.run(argv, capture_output=True, text=True, cwd=cwd or ROOT)
+
+
+def closed_pipe(argv):
+    """`argv` with its stdout a pipe the reader closed at once (`... | head -1` after the first line)."""
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    p.stdout.close()
+    err = p.stderr.read()
+    return subprocess.CompletedProcess(argv, p.wait(), "", err)
+
+
+def json_directory_removed(tmp: Path):
+    """`check --json` whose directory is removed while the campaign runs."""
+    out = tmp / "reports"
+    out.mkdir()
+    p = subprocess.Popen(acconform("check", "--corpus", tampered_corpus(tmp / "corpus"), "--no-progress", "-j", "1",
+                                   "--failures", tmp / "f", "--json", out / "summary.json", "--junit", out / "junit.xml"),
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    first = p.stderr.readline()  # "acconform check: port vs recorded corpus ...": the campaign has begun
+    shutil.rmtree(out)
+    stdout, stderr = p.communicate(timeout=300)
+    return subprocess.CompletedProcess(p.args, p.returncode, stdout, first + stderr)
+
+
+# name -> function(tmp) -> (finished process, exit code, words the stderr's last line holds; for
+# exit 0 and 1, words stdout holds)
+CATALOGUE = {
+    "a deeply nested JSON file in validate": lambda t: (
+        run_cli(acconform("validate", nested_json(t / "deep.json", 30_000))), 2, ["deep.json", "nested more than 20,000"]),
+    "a deeply nested JSON file in run": lambda t: (
+        run_cli(acconform("run", nested_json(t / "deep.json", 30_000))), 2, ["deep.json", "nested more than 20,000"]),
+    "an unbalanced quote in --impl": lambda t: (
+        run_cli(acconform("run", EXAMPLES / "flat_walk.json", "--impl", f"{sys.executable} 'x")), 2,
+        ["--impl", "no closing quotation", "check the quotes"]),
+    "record --out on an existing file": lambda t: (
+        (t / "corpus").write_text(""), run_cli(acconform("record", EXAMPLES / "flat_walk.json", "--out", t / "corpus")))[1:]
+        + (2, ["--out", "is a file, not a directory"]),
+    "record --out on a read-only filesystem": lambda t: (
+        run_cli(read_only(t, acconform("record", EXAMPLES / "flat_walk.json", "--out", t / "corpus"))), 2,
+        ["--out", "cannot write there"]),
+    "the --json directory removed during a run": lambda t: (
+        json_directory_removed(t), 1, ["warning: could not write --json", "warning: could not write --junit"]),
+    "check | head -1 after a difference": lambda t: (
+        closed_pipe(acconform("check", "--corpus", tampered_corpus(t / "corpus"), "--no-progress", "--failures", t / "f")),
+        1, []),
+    "\"velocity\": null": lambda t: (
+        run_cli(acconform("validate", scene_with(t / "s.json", velocity=None))), 2, ["mover.velocity", "null"]),
+    "a case with \"seed\": null": lambda t: (
+        run_cli(acconform("validate", case_with(t / "c.json", seed=None))), 2, ["seed", "null"]),
+    "--kinds terrain,,bsp": lambda t: (
+        run_cli(acconform("check", "--kinds", "terrain,,bsp")), 2, ["--kinds", "empty kind name"]),
+    "-j above the core count": lambda t: (
+        run_cli(acconform("check", "-j", (os.cpu_count() or 1) + 1)), 2, ["--workers", "cores"]),
+    "--ace .../ACE.Common.dll": lambda t: (
+        (t / "ACE.Common.dll").write_bytes(b"MZ"), run_cli(acconform("check", "--ace", t / "ACE.Common.dll")))[1:]
+        + (2, ["ACE.Common.dll", "is not ACE.Server.dll", str(t / "ACE.Server.dll")]),
+    "run --impl with an indoor scene for an implementation of terrain only": lambda t: (
+        run_cli(acconform("run", EXAMPLES / "two_rooms.json", "--impl", f"{sys.executable} {PLANTED} none --kinds terrain")),
+        2, ["kind indoor", "lists kinds terrain", "nothing was sent"]),
+    "a misnamed shard": lambda t: (
+        (t / "corpus").mkdir(), shutil.copy(shards(default_corpus())[0], t / "corpus" / "bsp.jsonl.gz"),
+        run_cli(acconform("check", "--corpus", t / "corpus", "--no-progress")))[2:]
+        + (2, ["bsp.jsonl.gz", "<kind>-NNNN.jsonl.gz", "rename it"]),
+    "a missing handshake": lambda t: (
+        run_cli(acconform("run", EXAMPLES / "flat_walk.json", "--timeout", "1", "--impl",
+                          f"{sys.executable} -c 'import time; time.sleep(60)'")), 2,
+        ["sent no handshake", "none within 10 s", "stopped"]),
+    "a clean check in a read-only working directory": lambda t: (
+        run_cli(read_only(t, acconform("check", "-n", "3", "--seed", "1", "--no-progress")), cwd=t), 0,
+        ["3 cases in", "0 differences"]),
+    # met before issue 23, kept here so that the count covers them
+    "a bad JSON line in a shard": lambda t: (
+        (t / "c").mkdir(), (t / "c" / "bsp-0000.jsonl.gz").write_bytes(gzip.compress(b'{"format": \n')),
+        run_cli(acconform("check", "--corpus", t / "c", "--no-progress")))[2:] + (2, ["bsp-0000.jsonl.gz line 1", "not JSON"]),
+    "a truncated shard": lambda t: (
+        (t / "terrain-0000.jsonl.gz").write_bytes(shards(default_corpus())[0].read_bytes()[:5000]),
+        run_cli(acconform("validate", t / "terrain-0000.jsonl.gz")))[1:] + (2, ["terrain-0000.jsonl.gz", "truncated"]),
+    "an unwritable --failures": lambda t: (
+        (t / "file").write_text(""), run_cli(acconform("check", "--failures", t / "file" / "sub")))[1:]
+        + (2, ["--failures", "cannot write there", "is a file"]),
+    "bench --json in no directory": lambda t: (
+        run_cli(acconform("bench", "-n", "1", "--json", "/nonexistent-dir/figures.json")), 2, ["--json", "no directory"]),
+    "coverage -n 0": lambda t: (run_cli(acconform("coverage", "-n", "0")), 2, ["--cases must be at least 1"]),
+    "negative workers": lambda t: (run_cli(acconform("check", "-j", "-3")), 2, ["--workers", "-3"]),
+    "--database while replaying": lambda t: (run_cli(acconform("check", "--database", "db")), 2, ["--database"]),
+}
+
+
+def test_no_fault_in_the_catalogue_prints_a_traceback(tmp_path, no_ace):
+    from concurrent.futures import ThreadPoolExecutor
+
+    def one(item):
+        name, make = item
+        d = tmp_path / f"f{list(CATALOGUE).index(name)}"
+        d.mkdir()
+        try:
+            r, code, words = make(d)
+        finally:
+            d.chmod(0o755)
+        return name, r, code, words
+
+    with ThreadPoolExecutor(2) as pool:  # the handshake wait is 10 s; the rest is mostly start-up
+        results = list(pool.map(one, CATALOGUE.items()))
+    tracebacks = [name for name, r, _, _ in results if "Traceback" in r.stderr or "Traceback" in r.stdout]
+    assert not tracebacks, f"{len(tracebacks)} of {len(results)} faults print a traceback: {tracebacks}"
+    for name, r, code, words in results:
+        assert r.returncode == code, (name, r.returncode, r.stdout, r.stderr)
+        text = r.stderr.strip().splitlines()[-1] if code == 2 else r.stdout
+        for w in words:
+            assert w in text, (name, w, text)
+        assert "restarted" not in r.stderr, name
+    assert len(results) == len(CATALOGUE) >= 23
+
+
+@pytest.mark.anchor("BSPNODE::find_walkable")
+def test_a_bsp_5000_levels_deep_validates_and_runs_as_the_tree_without_them(tmp_path):
+    deep = deep_bsp_scene(tmp_path / "deep.json", 5000)
+    shallow = deep_bsp_scene(tmp_path / "shallow.json", 0)
+    r = cli("validate", str(deep))
+    assert r.returncode == 0 and r.stdout.startswith(f"ok {deep}: scene"), r.stderr
+    expected = cli("run", str(shallow))
+    assert expected.returncode == 0, expected.stderr
+    for how in ((), ("--impl", f"{sys.executable} -m acconform.cli serve")):
+        r = cli("run", str(deep), *how)
+        assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr
+        assert r.stdout == expected.stdout, how
+
+
+@pytest.mark.live_oracle
+@pytest.mark.anchor("BSPNODE::find_walkable")
+def test_ace_runs_a_bsp_5000_levels_deep_and_the_port_answers_as_it_does(tmp_path, live):
+    from acconform.case import load_document
+    from acconform.compare import compare
+    from acconform.numerics import runtime_named
+    from acconform.port.run import run_scene
+
+    scene = load_document(deep_bsp_scene(tmp_path / "deep.json", 5000))
+    ace = live.run(scene)
+    assert ace.error is None
+    assert compare(run_scene(scene, runtime=runtime_named(live.versions.runtime)), ace, "exact") == []
+
+
+def test_a_json_file_nested_past_the_limit_is_refused_naming_the_file(tmp_path):
+    from acconform.case import load_document
+    from acconform.deep import MAX_DEPTH, TooDeep
+
+    with pytest.raises(TooDeep, match=f"deep.json: nested more than {MAX_DEPTH:,} levels"):
+        load_document(nested_json(tmp_path / "deep.json", 2 * MAX_DEPTH))
+
+
+def test_null_is_refused_where_leaving_a_field_out_means_a_default():
+    from acconform.case import Case
+    from acconform.errors import InvalidScene
+    from acconform.scene import Scene
+
+    doc = json.loads((EXAMPLES / "flat_walk.json").read_text())
+    for field_, value in (("velocity", [0.0, 0.0, 0.0]), ("state", ["Gravity"]), ("scale", 1.0)):
+        bad = json.loads(json.dumps(doc))
+        bad["mover"][field_] = None
+        with pytest.raises(InvalidScene, match=f"mover.{field_}: null is not a value"):
+            Scene.from_json(bad)
+        bad["mover"][field_] = value
+        Scene.from_json(bad)
+    none = json.loads(json.dumps(doc))
+    none["mover"]["sliding_normal"] = None  # left out, it is none: null says the same
+    assert Scene.from_json(none).mover.sliding_normal is None
+    from acconform.outcome import Outcome
+
+    case = Case(Scene.from_json(doc), Outcome(ok=True), Outcome()).to_json()
+    for field_ in ("seed", "mode", "differences", "versions"):
+        with pytest.raises(InvalidScene, match=f"{field_}: null is not a value"):
+            Case.from_json({**case, field_: None})
+
+
+def test_kinds_with_an_empty_or_repeated_name_are_refused():
+    from acconform.errors import AcconformError
+    from acconform.strategies import check_kinds
+
+    assert check_kinds("terrain, bsp") == ("terrain", "bsp")
+    for kinds, words in (("terrain,,bsp", "empty kind name"), ("terrain,", "empty kind name"),
+                         ("bsp,terrain,bsp", "'bsp' is named twice")):
+        with pytest.raises(AcconformError, match=words):
+            check_kinds(kinds)
+
+
+def test_a_missing_handshake_stops_the_process_after_the_start_timeout_and_says_so():
+    from acconform.protocol import Implementation, ImplementationError
+
+    t0 = time.monotonic()
+    with pytest.raises(ImplementationError) as e:
+        Implementation(f"{sys.executable} -c 'import time; time.sleep(60)'", timeout=0.2, start_timeout=0.5)
+    assert time.monotonic() - t0 < 10
+    assert "sent no handshake: none within 0.5 s, so it was stopped" in str(e.value) and "restart" not in str(e.value)
+
+
+def test_reports_whose_directory_went_away_during_a_run_are_written_to_a_named_file(tmp_path, no_ace):
+    r = json_directory_removed(tmp_path)
+    assert r.returncode == 1, r.stdout + r.stderr
+    warnings = {line.split()[4]: line.rsplit(" ", 1)[1] for line in r.stdout.splitlines() if line.startswith("warning: could not write --")}
+    assert set(warnings) == {"--json", "--junit"}, r.stdout
+    assert json.loads(Path(warnings["--json"]).read_text())["differences"]
+    import xml.etree.ElementTree as ET
+
+    assert ET.parse(warnings["--junit"]).getroot().iter("failure")
+    for f in warnings.values():
+        Path(f).unlink()
+
+
+def test_a_check_in_a_read_only_directory_puts_its_cases_in_a_named_temporary_directory(tmp_path, no_ace):
+    corpus = tampered_corpus(tmp_path / "corpus")
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    try:
+        r = run_cli(read_only(ro, acconform("check", "--corpus", corpus, "--no-progress")), cwd=ro)
+    finally:
+        ro.chmod(0o755)
+    assert r.returncode == 1, r.stdout + r.stderr
+    warning = next(line for line in r.stdout.splitlines() if line.startswith("warning: could not write to failures"))
+    fallback = Path(warning.rsplit(" ", 1)[1])
+    assert [p.name for p in fallback.glob("case-*.json")] and not (ro / "failures").exists()
+    shutil.rmtree(fallback)
+
+
+def test_check_into_a_pipe_its_reader_closed_keeps_the_verdicts_exit_code(tmp_path, no_ace):
+    corpus = tampered_corpus(tmp_path / "corpus")
+    r = closed_pipe(acconform("check", "--corpus", corpus, "--no-progress", "--failures", tmp_path / "f"))
+    assert r.returncode == 1 and "Traceback" not in r.stderr and "BrokenPipe" not in r.stderr, r.stderr
+    assert list((tmp_path / "f").glob("case-*.json"))  # the case is written all the same

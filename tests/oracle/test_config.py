@@ -21,6 +21,7 @@ def _fake_dll(path, managed=True):
     struct.pack_into("<H", b, opt, 0x10B)
     if managed:
         struct.pack_into("<II", b, opt + 96 + 14 * 8, 0x2008, 0x48)
+    path.parent.mkdir(parents=True, exist_ok=True)
     path.write_bytes(bytes(b))
     return path
 
@@ -73,9 +74,12 @@ def test_a_file_that_is_not_dotnet_is_refused(isolated_config, tmp_path):
     txt.write_text("not a binary")
     with pytest.raises(OracleUnavailable, match="not a .NET assembly.*MZ"):
         config.resolve(txt)
-    native = _fake_dll(tmp_path / "native.dll", managed=False)
+    native = _fake_dll(tmp_path / "native" / "ACE.Server.dll", managed=False)
     with pytest.raises(OracleUnavailable, match="native executable without a CLR header"):
         config.resolve(native)
+    other = _fake_dll(tmp_path / "build" / "ACE.Common.dll")  # managed, but not the one the oracle loads
+    with pytest.raises(OracleUnavailable, match="ACE.Common.dll .* is not ACE.Server.dll: give ACE.Server.dll"):
+        config.resolve(other)
 
 
 def test_runtime_is_chosen_from_the_build_or_forced(isolated_config, tmp_path, monkeypatch):
