@@ -263,6 +263,13 @@ def block_dist_refusal():
     return scene("block_dist_refusal", lbs, m, steps, driver="request_pos")
 
 
+def skid_from_over_max_velocity():
+    """The mover starts on the ground at 60 m/s (a scene's start velocity is the field, unclamped):
+    UpdatePhysicsInternal clamps it to MaxVelocity (50) and then applies friction, tick after tick."""
+    m = mover((12.0, 12.0, GROUND), state=GRAVITY, velocity=(60.0, 0.0, 0.0))
+    return scene("skid_from_over_max_velocity", [land(), land(0xAAB40000)], m, idle(10, 0.05))
+
+
 # ---------------------------------------------------------------- the list
 
 NAMED: tuple[tuple[str, str, object], ...] = (
@@ -287,6 +294,7 @@ NAMED: tuple[tuple[str, str, object], ...] = (
     ("remainder_carried_across_ticks", "update_object keeps a remainder under MinQuantum", remainder_carried_across_ticks),
     ("huge_quantum_skip", "update_object skips a tick over HugeQuantum", huge_quantum_skip),
     ("block_dist_refusal", "UpdateObjectInternalServer refuses a RequestPos two landblocks away", block_dist_refusal),
+    ("skid_from_over_max_velocity", "the velocity clamp comes before friction", skid_from_over_max_velocity),
 )
 DERETH = tuple(name for name, _, _ in NAMED[:13])
 

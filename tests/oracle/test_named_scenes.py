@@ -1,5 +1,5 @@
 """The named tick scenes (tests/oracle/named_scenes.py, files in examples/named/): dereth's 13 required
-trace-gate scenarios and the acceptance list's six, with live ACE's answers recorded on both runtimes,
+trace-gate scenarios, the acceptance list's six and one for a planted bug, with live ACE's answers recorded on both runtimes,
 the port against them every tick bit for bit, and what each scene shows.
 
 data/ace_named_outcomes.json holds live ACE's outcomes (ACE 7b47913 on mono and on .NET 10 through the
@@ -51,11 +51,12 @@ def recorded(runtime: str) -> dict[str, Outcome]:
 # ---------------------------------------------------------------- the list and the files
 
 
-def test_the_named_scenes_are_derets_thirteen_by_name_and_the_acceptance_lists_six():
+def test_the_named_scenes_are_derets_thirteen_by_name_and_the_acceptance_lists_six_and_one_more():
     assert DERETH == DERETH_REQUIRED
     assert {name for name, _, _ in NAMED} - set(DERETH) == {
         "fall_landing_on_lower_floor", "walk_off_ledge_with_edge_slide", "walk_off_ledge_without_edge_slide",
-        "bounce_with_elasticity", "remainder_carried_across_ticks", "huge_quantum_skip", "block_dist_refusal"}
+        "bounce_with_elasticity", "remainder_carried_across_ticks", "huge_quantum_skip", "block_dist_refusal",
+        "skid_from_over_max_velocity"}  # the last for a planted tick-loop bug (tests/runner/mutants.py)
     assert all(behaviour for _, behaviour, _ in NAMED)
 
 
@@ -179,6 +180,12 @@ def test_ace_steps_onto_the_4cm_lip_and_onto_one_1mm_over_the_step_height_too():
 def test_ace_walks_through_the_portal_into_the_next_dungeon_cell_and_across_the_landblock_corner():
     assert _ticks("walk_through_portal_into_dungeon")[-1].cell == 0x01D90101
     assert _ticks("cross_landblock_boundary_diagonally")[-1].cell >> 16 == 0xAAB5
+
+
+def test_ace_clamps_a_start_velocity_over_max_velocity_before_friction():
+    ticks = _ticks("skid_from_over_max_velocity")
+    assert 40.0 < ticks[0].velocity[0] < 50.0 and ticks[0].origin[0] > 14.0
+    assert _trace("skid_from_over_max_velocity")["update_physics:velocity_clamped"] == 1
 
 
 def test_ace_zeroes_the_cached_velocity_when_the_walk_is_stopped_by_the_object():
