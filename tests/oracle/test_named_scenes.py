@@ -103,6 +103,18 @@ def _trace(name) -> Counter:
     return trace
 
 
+def test_ace_walks_the_mover_up_the_48_degree_ramp_standing_on_it():
+    """cos 48 deg is over FloorZ (cos 48.4 deg): the ramp is walkable, and root motion carries the mover up
+    it, slower along x (the offset is horizontal; the transition turns it along the plane)."""
+    import math
+
+    ticks = _ticks("walk_up_48_degree_slope")
+    on_ramp = [t for t in ticks if t.contact_plane.normal[2] < 1.0]
+    assert on_ramp and all(t.transient_state & ON_GROUND == ON_GROUND for t in on_ramp)
+    assert on_ramp[0].contact_plane.normal[2] == pytest.approx(math.cos(math.radians(48.0)), abs=1e-6)
+    assert on_ramp[-1].origin[2] > on_ramp[0].origin[2] + 1.0 and 0.0 < on_ramp[-1].cached_velocity[0] < 3.0
+
+
 def test_ace_keeps_the_mover_out_of_an_entirely_water_landblock():
     ticks = _ticks("swim_into_deep_sea")
     assert all(t.cell >> 16 == 0xA9B4 for t in ticks) and ticks[-1].origin[0] < 192.0
