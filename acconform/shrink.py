@@ -80,7 +80,7 @@ def _mover(scene: Scene) -> Iterator[Scene]:
         yield with_(contact_plane=None)
     if m.scale != 1.0:
         yield with_(scale=1.0)
-    if m.end != m.begin:
+    if m.end is not None and m.end != m.begin:  # a tick scene's mover has no end
         yield with_(end=m.begin)
         if m.end.cell == m.begin.cell:  # halfway along the path, in the same cell
             a, b = m.begin.frame.origin, m.end.frame.origin

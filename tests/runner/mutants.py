@@ -19,6 +19,9 @@ from pathlib import Path
 PORT_DIR = Path(__file__).resolve().parents[2] / "port"
 
 
+TICKS = ("ticks",)  # a tick-loop mutant: replayed over the tick records (tick_kill)
+
+
 @dataclass(frozen=True)
 class Mutation:
     name: str
@@ -242,6 +245,54 @@ MUTATIONS: tuple[Mutation, ...] = (
              "",
              "AdjustPosition falls out to the landblock from any EnvCell, not only a SeenOutside one",
              ("indoor",)),
+    # ---- the tick loop (issue 19): caught by replaying the tick records (tick_kill), not by the hunt
+    Mutation("tick_remainder_dropped", "physics_obj.py",
+             "        self.update_time = self.physics_timer_current_time\n        return True",
+             "        self.update_time = self.timer.current_time\n        return True",
+             "update_object drops the remainder under MinQuantum (UpdateTime = CurrentTime, as ClassicDereth)",
+             TICKS),
+    Mutation("tick_max_quantum_retail", "constants.py",
+             "MAX_QUANTUM = f32_from_bits(0x3DCCCCCD)",
+             "MAX_QUANTUM = f32_from_bits(0x3E4CCCCD)",
+             "MaxQuantum 0.2f (retail's) instead of ACE's 0.1f", TICKS),
+    Mutation("tick_sledding_flat_z_cos_10", "constants.py",
+             "SLEDDING_FLAT_Z = f32_from_bits(0x3F7FFFB2)",
+             "SLEDDING_FLAT_Z = f32_from_bits(0x3F7C1C5C)",
+             "calc_friction's sledding glide threshold cos 10 deg (other ports') instead of 0.99999536f", TICKS),
+    Mutation("tick_friction_before_velocity_clamp", "physics_obj.py",
+             "            if velocity_mag2 > MAX_VELOCITY_SQUARED:\n"
+             "                _hit(trace, \"update_physics:velocity_clamped\")\n"
+             "                self.velocity = normalize(self.velocity) * MAX_VELOCITY\n"
+             "                velocity_mag2 = type(velocity_mag2)(MAX_VELOCITY_SQUARED)\n"
+             "            # todo: collision normals (ACE)\n"
+             "            self.calc_friction(quantum, velocity_mag2, trace)\n",
+             "            self.calc_friction(quantum, velocity_mag2, trace)\n"
+             "            if velocity_mag2 > MAX_VELOCITY_SQUARED:\n"
+             "                _hit(trace, \"update_physics:velocity_clamped\")\n"
+             "                self.velocity = normalize(self.velocity) * MAX_VELOCITY\n"
+             "                velocity_mag2 = type(velocity_mag2)(MAX_VELOCITY_SQUARED)\n",
+             "UpdatePhysicsInternal applies friction before clamping the velocity to MaxVelocity", TICKS),
+    Mutation("tick_elasticity_sign_flipped", "physics_obj.py",
+             "elastic_angle = -(collision_angle * (self.elasticity + type(collision_angle)(1.0)))",
+             "elastic_angle = -(collision_angle * (type(collision_angle)(1.0) - self.elasticity))",
+             "handle_all_collisions' bounce with the elasticity's sign flipped (1 - e instead of 1 + e)", TICKS),
+    Mutation("tick_block_dist_off_by_one", "physics_obj.py",
+             "        return max(dx, dy)",
+             "        return max(dx, dy) + 1",
+             "GetBlockDist one too many: a RequestPos in the next landblock is refused", TICKS),
+    Mutation("tick_huge_quantum_inclusive", "physics_obj.py",
+             "        if delta_time > HUGE_QUANTUM:",
+             "        if delta_time >= HUGE_QUANTUM:",
+             "update_object's `deltaTime > HugeQuantum` made `>=`: a tick of exactly 2 s is skipped", TICKS),
+    Mutation("tick_rate_gate_dropped", "physics_obj.py",
+             "        if delta_time < TICK_RATE:",
+             "        if delta_time < 0.0:",
+             "update_object runs every tick, however short (no TickRate gate)", TICKS),
+    Mutation("tick_cached_velocity_unscaled_by_quantum", "physics_obj.py",
+             "                    self.cached_velocity = self.position.get_offset(transit.sphere_path.cur_pos) "
+             "/ cast_float(self.scale, quantum)",
+             "                    self.cached_velocity = self.position.get_offset(transit.sphere_path.cur_pos)",
+             "UpdateObjectInternal's CachedVelocity is the offset, not the offset over the quantum", TICKS),
 )
 
 
@@ -378,5 +429,83 @@ def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED,
                                                               "exact"):
             out.update(killed=True, records_to_kill=n, scene_name=rec.scene.name)
             break
+    out["seconds"] = round(time.monotonic() - t0, 1)
+    return out
+
+
+# ---------------------------------------------------------------- the tick records (issue 19)
+
+def tick_records(runtime: str):
+    """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the
+    corpus's tick shards (ticks-NNNN.jsonl.gz) when present, then the example tick scenes, the
+    hand-written ones and the named ones (tests/oracle/data)."""
+    import json
+
+    from acconform.case import load_document
+    from acconform.oracle import default_corpus
+    from acconform.oracle.recorded import RecordedOracle, shards
+    from acconform.outcome import Outcome
+    from acconform.scene import Scene
+
+    corpus = default_corpus(runtime)
+    if any(p.name.startswith("ticks-") for p in shards(corpus)):
+        oracle = RecordedOracle(corpus)
+        for e in oracle.select(kinds=("ticks",), runtime=runtime):
+            rec = oracle._record(e)
+            yield e.where, rec.scene, rec.outcome
+    root = PORT_DIR.parent
+    data = root / "tests" / "oracle" / "data"
+    examples = json.loads((data / "ace_tick_outcomes.json").read_text())["outcomes"][runtime]
+    for p in sorted((root / "examples").glob("tick_*.json")):
+        yield f"examples/{p.name}", load_document(p), Outcome.from_json(examples[p.stem])
+    hand = json.loads((data / "ace_tick_handwritten.json").read_text())
+    for name, s in hand["scenes"].items():
+        yield f"hand-written {name}", Scene.from_json(s), Outcome.from_json(hand["outcomes"][runtime][name])
+    named = json.loads((data / "ace_named_outcomes.json").read_text())["outcomes"][runtime]
+    for p in sorted((root / "examples" / "named").glob("*.json")):
+        yield f"examples/named/{p.name}", load_document(p), Outcome.from_json(named[p.stem])
+
+
+def tick_kill(index: int, runtime: str = "coreclr", budget: int = 150) -> dict:
+    """Replay the tick records through the mutant against ACE's recorded answers, in order, until one
+    where the mutant differs from ACE and the real port does not; then shrink that scene against the
+    real port (standing in for ACE, as `check` shrinks without ACE): first to the ticks up to the first
+    one that differs (a tick's state depends only on the ticks before it), then acconform.shrink's
+    scene shrinking. Says whether the records kill the mutant, after how many, and how small it got."""
+    import dataclasses
+    import time
+    import warnings
+
+    from acconform.compare import compare
+    from acconform.port.run import run_scene
+    from acconform.runner import guarded
+    from acconform.shrink import scene_bytes, shrink_scene
+
+    warnings.simplefilter("ignore", RuntimeWarning)
+    mutant = load_mutant(index)
+    t0 = time.monotonic()
+    out = {"name": MUTATIONS[index].name, "killed": False, "records_to_kill": None}
+    n = 0
+    for n, (where, scene, ace) in enumerate(tick_records(runtime), 1):
+        got = guarded(lambda s: mutant(s, runtime=runtime), scene)
+        if not compare(got, ace, "exact") or compare(run_scene(scene, runtime=runtime), ace, "exact"):
+            continue
+        port = run_scene(scene, runtime=runtime)
+        first = next(i for i, (a, b) in enumerate(zip(got.ticks or (), port.ticks or ())) if a != b) \
+            if got.ticks and port.ticks else len(scene.ticks.steps) - 1
+        cut = scene.replace(ticks=dataclasses.replace(scene.ticks, steps=scene.ticks.steps[:first + 1]))
+
+        def still_fails(s):
+            return bool(compare(guarded(lambda x: mutant(x, runtime=runtime), s),
+                                guarded(lambda x: run_scene(x, runtime=runtime), s), "exact"))
+
+        assert still_fails(cut), f"{where}: the difference is not in the ticks up to the first differing one"
+        small, tried = shrink_scene(cut, still_fails, budget)
+        out.update(killed=True, records_to_kill=n, record=where, ticks=len(scene.ticks.steps),
+                   first_differing_tick=first, shrunk_ticks=len(small.ticks.steps), shrunk_objects=len(small.objects),
+                   shrunk_landblocks=len(small.landblocks), shrunk_bytes=scene_bytes(small),
+                   original_bytes=scene_bytes(scene), candidates=tried)
+        break
+    out["records"] = n
     out["seconds"] = round(time.monotonic() - t0, 1)
     return out

@@ -3,6 +3,7 @@
     python tests/runner/mutation_report.py [-j 2] [--budget 1500] [--seed 0] [--only NAME,...] [--json FILE]
     python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [-j 2] [--only ...]
     ACE_ASSEMBLY=... python tests/runner/mutation_report.py --live 4000 [--only ...]
+    python tests/runner/mutation_report.py --ticks [--runtime coreclr] [--only ...]
     python tests/runner/mutation_report.py --fast-lane 600 [--lane-tests tests/port,...] [--lane-workers 1 -j 2] [--only ...]
 
 Runs the same hunt as test_mutations.py (mutants.hunt: one worker per mutant, no example
@@ -20,6 +21,9 @@ shim puts it on PYTHONPATH) whose every-push lane (`pytest -x -m "not slow"`) ru
 seconds: a failing test kills the mutant; running out of time says nothing either way.
 --lane-tests narrows the lane to some of its paths (comma-separated, under tests/) and
 --lane-workers sets its xdist workers (0: in one process); with 0 or 1, -j lanes run at once.
+With --ticks, the tick-loop mutants (kinds ("ticks",)) replay the tick records (mutants.tick_kill: the
+corpus's ticks-* shards when present, then the example, hand-written and named tick scenes) against
+ACE's recorded answers, and the killing scene is shrunk; the hunt has no tick kind and skips them.
 """
 
 from __future__ import annotations
@@ -33,7 +37,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from mutants import BUDGET, MUTATIONS, SEED, corpus_kill, hunt  # noqa: E402
+from mutants import BUDGET, MUTATIONS, SEED, TICKS, corpus_kill, hunt, tick_kill  # noqa: E402
 
 
 def _one(args):
@@ -90,7 +94,8 @@ def main(argv=None) -> int:
     p.add_argument("--lane-tests", default="tests", help="with --fast-lane: the test paths to run (comma-separated)")
     p.add_argument("--lane-workers", type=int, default=2, help="with --fast-lane: pytest-xdist workers per lane")
     p.add_argument("--live", type=int, default=0, metavar="N", help="a live campaign of N cases per mutant instead")
-    p.add_argument("--runtime", default="mono", help="with --corpus: the records' runtime (mono or coreclr)")
+    p.add_argument("--runtime", default="mono", help="with --corpus or --ticks: the records' runtime (mono or coreclr)")
+    p.add_argument("--ticks", action="store_true", help="replay the tick records through the tick-loop mutants")
     a = p.parse_args(argv)
     names = [m.name for m in MUTATIONS]
     unknown = [n for n in a.only.split(",") if n and n not in names]
@@ -98,6 +103,8 @@ def main(argv=None) -> int:
         print(f"mutation_report: unknown mutant {unknown[0]!r}", file=sys.stderr)
         return 2
     picked = [names.index(n) for n in a.only.split(",") if n] or list(range(len(MUTATIONS)))
+    if a.ticks:
+        return _ticks_report([i for i in picked if MUTATIONS[i].kinds == TICKS], a)
     if a.live:
         return _live_report(picked, a)
     if a.fast_lane:
@@ -114,6 +121,7 @@ def main(argv=None) -> int:
             print(f"mutation_report: no corpus directory at {a.corpus}", file=sys.stderr)
             return 2
         return _corpus_report(picked, a)
+    picked = [i for i in picked if MUTATIONS[i].kinds != TICKS]  # no tick kind to hunt on: --ticks
     rows = _rows(_one, [(i, a.budget, a.seed) for i in picked], a)
     caught = [r for r in rows if r["caught"]]
     print(f"{len(caught)}/{len(rows)} caught")
@@ -194,6 +202,22 @@ def _live_report(picked, a) -> int:
     print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by a live campaign of at most {a.live} cases")
     for r in rows:
         print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r.get('cases')}")
+    return 0
+
+
+def _tick(args):
+    i, runtime = args
+    return tick_kill(i, runtime)
+
+
+def _ticks_report(picked, a) -> int:
+    rows = _rows(_tick, [(i, a.runtime) for i in picked], a)
+    print(f"{sum(r['killed'] for r in rows)}/{len(rows)} tick-loop mutants killed by the tick records ({a.runtime})")
+    print(f"{'mutant':42} {'killed':>6} {'after':>6} {'ticks':>5} {'shrunk':>6} {'objs':>4} {'lbs':>3} {'bytes':>6}  record")
+    for r in rows:
+        print(f"{r['name']:42} {'yes' if r['killed'] else 'no':>6} {r['records_to_kill'] or '-':>6} {r.get('ticks', '-'):>5} "
+              f"{r.get('shrunk_ticks', '-'):>6} {r.get('shrunk_objects', '-'):>4} {r.get('shrunk_landblocks', '-'):>3} "
+              f"{r.get('shrunk_bytes', '-'):>6}  {r.get('record', '')}")
     return 0
 
 

@@ -73,13 +73,24 @@ adjust_position_seen_outside_ignored at 215 (indoor; one landblock, no object, n
 
 Survivors everywhere: the UNREACHABLE below (equivalent in practice: their boundary cannot be
 drawn, for the reasons given).
+
+Tick-loop mutants (issue 19, kinds ("ticks",)): `python tests/runner/mutation_report.py --ticks
+--runtime coreclr` (and mono, the same figures): 9 of 9 killed by the tick records (no ticks-* corpus
+shards yet: the 5 example, 8 hand-written and 21 named tick scenes), each shrunk (the ticks up to the
+first differing one, then acconform.shrink) to one object at most and at most two landblocks:
+remainder dropped at record 13 (walk-on-an-irregular-clock, 9 ticks -> 2), MaxQuantum 0.2 at 1
+(tick_clock, 14 -> 5), sledding at cos 10 deg at 26 (sled_9_degree_slope, 40 -> 11), friction before
+the clamp at 24 (skid_from_over_max_velocity, 10 -> 1), elasticity sign at 1 (tick_clock, 14 -> 13),
+GetBlockDist + 1 at 14 (block_dist_refusal, 4 -> 2), HugeQuantum inclusive at 1 (14 -> 13), no TickRate
+gate at 1 (14 -> 2), CachedVelocity not over the quantum at 1 (14 -> 1). Shrinking drops no middle
+ticks yet (tick shrinking is the tick-corpus work): a late first difference keeps its prefix.
 """
 
 from __future__ import annotations
 
 import pytest
 
-from mutants import MUTATIONS, corpus_kill, hunt
+from mutants import MUTATIONS, TICKS, corpus_kill, hunt, tick_kill
 
 MAX_LANDBLOCKS = 9  # a path crossing a block corner: 3 x 3 with the block ahead on each axis
 # the scatter policy draws up to 3 objects, their shapes in one loop and their placements in a later
@@ -119,6 +130,9 @@ FOUND_BY_THE_CORPUS = {
 @pytest.mark.parametrize("index", range(len(MUTATIONS)), ids=[m.name for m in MUTATIONS])
 def test_the_runner_finds_and_shrinks_a_planted_bug(index, tmp_path):
     m = MUTATIONS[index]
+    if m.kinds == TICKS:  # no tick kind to hunt on yet: the tick records kill it (below)
+        assert tick_kill(index, "mono")["killed"], m.name
+        return
     r = hunt(index, failures_dir=tmp_path)
     if m.name in UNREACHABLE:
         assert not r["caught"], f"{m.name} is caught now: take it out of UNREACHABLE ({r})"
@@ -131,6 +145,26 @@ def test_the_runner_finds_and_shrinks_a_planted_bug(index, tmp_path):
     assert r["caught"], f"{m.name} ({m.what}) went unnoticed for {r['runs']} scenes"
     assert r["shrunk"] and r["path_file"]
     assert r["landblocks"] <= MAX_LANDBLOCKS and r["objects"] <= MAX_OBJECTS, r
+
+
+# the tick-loop mutants: the tick records kill each (tick_kill: the corpus's ticks-* shards when there
+# are any, then the example, hand-written and named tick scenes, against ACE's recorded answers), and
+# the scene that does shrinks to a few ticks (the ticks up to the first differing one, then shrink.py)
+MAX_SHRUNK_TICKS = 13
+TICK_MUTANTS = [i for i, m in enumerate(MUTATIONS) if m.kinds == TICKS]
+
+
+@pytest.mark.parametrize("index", TICK_MUTANTS, ids=[MUTATIONS[i].name for i in TICK_MUTANTS])
+def test_the_tick_records_kill_a_planted_tick_loop_bug_and_shrink_it_to_a_few_ticks(index):
+    r = tick_kill(index, "coreclr")
+    assert r["killed"], f"{MUTATIONS[index].name} ({MUTATIONS[index].what}) survives {r['records']} tick records"
+    assert r["shrunk_ticks"] <= MAX_SHRUNK_TICKS and r["shrunk_objects"] <= 1 and r["shrunk_landblocks"] <= 2, r
+
+
+def test_the_six_tick_loop_bugs_issue_19_names_are_planted():
+    assert {"tick_remainder_dropped", "tick_max_quantum_retail", "tick_sledding_flat_z_cos_10",
+            "tick_friction_before_velocity_clamp", "tick_elasticity_sign_flipped",
+            "tick_block_dist_off_by_one"} <= {MUTATIONS[i].name for i in TICK_MUTANTS}
 
 
 def test_at_least_ten_planted_bugs_are_expected_to_be_caught():
