@@ -43,7 +43,7 @@ from .codec import dumps_compact, loads_answer
 from .errors import AcconformError, InvalidScene
 from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
-from .oracle.recorded import scene_kind
+from .oracle.recorded import geometry_kind
 from .outcome import Outcome
 from .scene import Scene
 
@@ -177,10 +177,11 @@ class Implementation:
 
     @property
     def kinds(self) -> tuple[str, ...]:
-        return tuple(self.hello["kinds"])
+        """The campaign kinds it can run: its handshake's, and "ticks" when it lists the feature."""
+        return tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in self.hello["features"] else ())
 
     def unsupported(self, scene: Scene) -> str | None:
-        kind = scene_kind(scene)
+        kind = geometry_kind(scene)  # a tick scene's too: the ticks themselves are a feature
         if kind not in self.hello["kinds"]:
             return f"kind {kind}"
         missing = [f for f in scene_features(scene) if f not in self.hello["features"]]

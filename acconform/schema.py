@@ -140,10 +140,10 @@ class _Inferrer:
 
 def _sample():
     from .port.run import run_scene
-    from .strategies import ALL_KINDS, sample_scenes
+    from .strategies import GEOMETRY_KINDS, sample_scenes
 
     scenes = []
-    for kind in ALL_KINDS:
+    for kind in GEOMETRY_KINDS:  # tick scenes: _tick_scenes below, every input once
         scenes += list(sample_scenes((kind,), SAMPLE_PER_KIND, SAMPLE_SEED))
     scenes += _every_optional_field(scenes[0])
     return scenes, [run_scene(s) for s in scenes]

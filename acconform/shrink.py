@@ -4,7 +4,7 @@ A live campaign's scenes are Hypothesis' own draws, and Hypothesis shrinks them.
 corpus scene was drawn long ago, so Hypothesis cannot shrink it; `shrink_scene` does, greedily,
 on the scene record itself: it tries a smaller scene (fewer objects, EnvCells, Environments,
 landblocks; one sphere; no velocity, slide or placement; flat bare terrain; a shorter path;
-fewer flags) and keeps it when `still_fails(candidate)` says the difference is still there. A
+fewer flags; for a tick scene fewer ticks, fewer inputs and simpler time steps) and keeps it when `still_fails(candidate)` says the difference is still there. A
 candidate that is no valid scene (`validate_scene` refuses it) is never run.
 
 It knows nothing of ACE: the caller's `still_fails` compares the implementation with whatever
@@ -21,7 +21,7 @@ from typing import Callable, Iterator
 from .errors import InvalidScene
 from .flags import PhysicsState, TransientState
 from .numerics import to_f32
-from .scene import Scene, validate_scene
+from .scene import TICK_INPUTS, Scene, validate_scene
 
 DEFAULT_BUDGET = 300  # candidates tried per scene (each costs a run on both sides)
 
@@ -94,7 +94,42 @@ def _mover(scene: Scene) -> Iterator[Scene]:
                 yield with_(**{name: value & ~f.value})
 
 
+# the simplest time step a tick shrinks to: 30 fps, a clock at 1000 s (the example tick scenes')
+SIMPLE_DT = 1 / 30
+SIMPLE_START = 1000.0
+
+
+def _ticks(scene: Scene) -> Iterator[Scene]:
+    """Fewer ticks (the first half, all but the last, one fewer anywhere), fewer inputs (each input
+    of each step; a request_pos driver's RequestPos stays), simpler time steps (every dt, then
+    each dt, 1/30 s; the clock's start 1000 s)."""
+    t = scene.ticks
+    steps = t.steps
+
+    def with_(**kw):
+        return scene.replace(ticks=replace(t, **kw))
+
+    if len(steps) > 1:
+        yield with_(steps=steps[: len(steps) // 2])
+        yield with_(steps=steps[:-1])
+        for i in reversed(range(len(steps) - 1)):
+            yield with_(steps=_without(steps, i))
+    for i, step in enumerate(steps):
+        for name in TICK_INPUTS:
+            if name != "request_pos" and getattr(step, name) is not None:
+                yield with_(steps=steps[:i] + (replace(step, **{name: None}),) + steps[i + 1:])
+    if any(s.dt != SIMPLE_DT for s in steps):
+        yield with_(steps=tuple(replace(s, dt=SIMPLE_DT) for s in steps))
+        for i, step in enumerate(steps):
+            if step.dt != SIMPLE_DT:
+                yield with_(steps=steps[:i] + (replace(step, dt=SIMPLE_DT),) + steps[i + 1:])
+    if t.start != SIMPLE_START:
+        yield with_(start=SIMPLE_START)
+
+
 def _candidates(scene: Scene) -> Iterator[Scene]:
+    if scene.ticks is not None:
+        yield from _ticks(scene)
     if scene.objects:
         yield scene.replace(objects=())
         for i in reversed(range(len(scene.objects))):

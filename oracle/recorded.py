@@ -1,7 +1,7 @@
 """The recorded oracle: ACE's answers replayed from a corpus, so CI needs no ACE.
 
 Corpus layout: a directory of gzip'd JSON-lines shards named ``<kind>-<NNNN>.jsonl.gz`` (kind:
-terrain, bsp, obstacles, indoor), one `acconform.record/1` document per line (scene, outcome, versions).
+terrain, bsp, obstacles, indoor, or ticks for tick scenes over any of them), one `acconform.record/1` document per line (scene, outcome, versions).
 Records are keyed by `scene_key`: the SHA-256 of the scene's canonical JSON (sorted keys, no
 whitespace), so an equal scene finds its record whatever its name or field order.
 
@@ -64,6 +64,14 @@ def scene_key(scene: Scene) -> str:
 
 
 def scene_kind(scene: Scene) -> str:
+    """The campaign kind (a corpus shard's, `--kinds`'): "ticks" for a tick scene (whatever its
+    geometry), else the geometry's kind."""
+    return "ticks" if scene.ticks is not None else geometry_kind(scene)
+
+
+def geometry_kind(scene: Scene) -> str:
+    """The kind of the scene's world (what an implementation's handshake lists): indoor with EnvCells,
+    bsp with a BSP object, obstacles with only spheres and cylspheres, else terrain."""
     if scene.env_cells:
         return "indoor"
     kinds = {o.shape.kind for o in scene.objects}

@@ -10,7 +10,9 @@ strategies/objects.py; strategies/placement.py counts them per 1,000 scenes --
 or walls, floors, ramps, steps, platforms, posts, boxes, convex polygons scattered along a path), "obstacles"
 (spheres and cylspheres), "indoor" (dungeons of EnvCells joined by portals -- rooms, corridors,
 T-junctions, ramps at and around FloorZ, stairs, ledges, pits, narrow doorways, seams, turned cell
-frames, statics inside and across cells, portals to outside -- strategies/dungeon.py). DEFAULT_KINDS
+frames, statics inside and across cells, portals to outside -- strategies/dungeon.py), "ticks"
+(any of those worlds with a timeline of ticks: falls, jumps, slides, sledding, presses, crossings,
+portals, quantum-exact clocks, threshold velocities, both drivers -- strategies/ticks.py). DEFAULT_KINDS
 is what the port supports today; grow it as the port does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
 """
 
@@ -25,10 +27,16 @@ from acconform.errors import AcconformError
 from .draws import OneOf
 from .scenes import scenes_of
 
-from acconform.protocol import KINDS as ALL_KINDS
+from acconform.protocol import KINDS as GEOMETRY_KINDS
 
-# The kinds a default campaign draws (and a corpus replay runs): what the port supports, all of them
-# since the port went indoors (issue 12).
+# "ticks" (strategies/ticks.py): tick scenes over every other kind's geometry, ACE's per-tick update
+# moving the mover (issue 19). An implementation is offered one when its handshake lists the
+# scene's geometry kind and the feature `ticks`; otherwise it is skipped, counted, and another drawn.
+ALL_KINDS: tuple[str, ...] = GEOMETRY_KINDS + ("ticks",)
+
+# The kinds a campaign draws (and a corpus replay runs) when --kinds is not given: what the port
+# supports, all of them since the port went indoors (issue 12) and ticked (issue 19): a fifth of a
+# live campaign's scenes are tick scenes, and a replay runs the ticks shards with the others.
 DEFAULT_KINDS: tuple[str, ...] = ALL_KINDS
 
 

@@ -89,6 +89,29 @@ def exact_wedges(target_bits: int, mode: Mode = EXACT) -> tuple[tuple[float, flo
     return tuple(found)
 
 
+# ACE's sledding threshold (PhysicsObj.calc_friction: a Sledding mover glides on a contact plane
+# with `normal.z > 0.99999536f`) and an ulp either side, as wedge slopes (sx, sy, sz) through
+# make_plane. Near 1 normalize skips most bit patterns (a one-cell terrain rise reaches the
+# threshold itself but neither neighbour), so these were searched through the port, a few thousand
+# ulps of sz around the analytic rise, and are kept as data; tests/strategies/test_ticks.py checks
+# that each lands on its bits.
+SLED_Z_BOUNDARIES: dict[str, int] = {"sledding_flat_z": 0x3F7FFFB2, "sledding_flat_z-1ulp": 0x3F7FFFB1,
+                                     "sledding_flat_z+1ulp": 0x3F7FFFB3}
+SLED_WEDGES: dict[str, tuple[tuple[float, float, float], ...]] = {
+    "sledding_flat_z": ((1.0, 2.0, 0.003049326129257679), (2.0, 3.3, 0.006098652258515358),
+                        (4.0, 2.0, 0.012197304517030716), (5.0, 3.3, 0.015246630646288395),
+                        (8.0, 3.3, 0.024394609034061432)),
+    "sledding_flat_z-1ulp": ((0.75, 1.0, 0.0023016082122921944), (1.5, 2.0, 0.004603216424584389),
+                             (3.0, 3.3, 0.009206432849168777), (6.0, 2.0, 0.018412865698337555),
+                             (8.0, 3.3, 0.024550486356019974)),
+    "sledding_flat_z+1ulp": ((0.75, 1.0, 0.002272286918014288), (1.5, 2.0, 0.004544573836028576),
+                             (3.0, 2.0, 0.009089147672057152), (5.0, 2.0, 0.015148579142987728),
+                             (6.0, 2.0, 0.018178295344114304)),
+}
+# the one-cell terrain rise (table[1], boundaries.terrain_rise_for's search) whose normal.z is the threshold
+SLED_TERRAIN_RISE = 0.0731838271021843
+
+
 # ---------------------------------------------------------------- tangency
 # Block-local coordinates in [64, 128) are the multiples of 2^-17 there, so a sum of such a
 # coordinate and a length that is itself a multiple of 2^-17 is exact when it stays in range.

@@ -368,6 +368,38 @@ def slope(draw, gx: float, gy: float, r: float) -> Plan:
     return p
 
 
+SLED_TARGETS = st.sampled_from(tuple(bd.SLED_Z_BOUNDARIES))
+SLED_WEDGES = {name: st.sampled_from(w) for name, w in bd.SLED_WEDGES.items()}
+SLED_HEADINGS = st.sampled_from((180.0, 180.0, 0.0, 90.0, 160.0))  # down, up, across, slanted
+
+
+@st.composite
+def sled_slope(draw, gx: float, gy: float, r: float) -> Plan:
+    """On a wedge whose slope's normal.z is the sledding threshold or an ulp either side
+    (boundaries.SLED_WEDGES), over its middle part (strategies/ticks.py sleds down it)."""
+    p = Plan()
+    target = draw(SLED_TARGETS)
+    sx, sy, sz = draw(SLED_WEDGES[target])
+    yaw = draw(SLOPE_YAWS)
+    along = draw(SLOPE_ALONG) * sy
+    nx, _, nz = bd.slope_normal(sx, sy, sz)
+    u = sx * draw(SLOPE_ALONG)
+    p.stand_lift = r / nz - r
+    p.stand_on = to_f32((u + sx / 2) * sz / sx + p.stand_lift)
+    c, s_ = math.cos(math.radians(yaw)), math.sin(math.radians(yaw))
+    p.stand_normal = (to_f32(nx * c), to_f32(nx * s_), nz)
+    p.heading = yaw + draw(SLED_HEADINGS)
+    p.length = to_f32(sx)
+    ox, oy = _rot(yaw, u, along)
+    p.objects.append((sh.wedge(sx, sy, sz), gx - ox, gy - oy, yaw, BSP_STATE))
+    p.begin = (gx, gy)
+    p.edge_slide = draw(EDGE_SLIDE)
+    p.steps.append(sz)
+    p.velocity = (0.0, 0.0, 0.0)
+    p.label = f"sled-{target.replace('_', '-')}"
+    return p
+
+
 SLOPE_DROPS = st.sampled_from((0.05, 0.5, 2.0))
 
 SEAM_DROPS = st.sampled_from((0.01, 0.01, EPS, 0.1, 0.0, -0.01, -EPS))  # the negative half is higher: both sides adjust
@@ -484,7 +516,7 @@ def straddle(draw, gx: float, gy: float, r: float, scene_kind: str = "bsp") -> P
 # a policy: (global x, global y, mover radius) -> a strategy of Plans (built per scene: a policy
 # depends on the mover; it costs little next to the span of its own it gives the shrinker)
 POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall, "straddle": straddle, "slope": slope, "seam": seam,
-            "straddle_round": lambda gx, gy, r: straddle(gx, gy, r, "obstacles")}
+            "straddle_round": lambda gx, gy, r: straddle(gx, gy, r, "obstacles"), "sled_slope": sled_slope}
 
 
 def mover_flags(plan: Plan) -> tuple[int, int]:

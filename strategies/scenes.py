@@ -157,14 +157,20 @@ OBJECT_ANGLES = st.sampled_from((0, 0, 90, 45, 10, -30))
 
 @st.composite
 def scenes_of(draw, kind: str):
+    if kind == "ticks":
+        from .ticks import draw_tick_scene
+
+        return draw_tick_scene(draw)
     return with_placement(draw, draw_scene(draw, kind))
 
 
-def draw_scene(draw, kind: str) -> Scene:
+def draw_scene(draw, kind: str, policy: str | None = None) -> Scene:
+    """A scene of `kind`, with its policy drawn (or the one given: a TERRAIN_POLICIES, BSP_POLICIES,
+    OBSTACLE_POLICIES or dungeon.POLICIES entry; strategies/ticks.py asks for ledges, stairs, walls)."""
     if kind == "indoor":
-        return dg.draw_indoor(draw, draw(MOVER_SPHERES), step_heights)
+        return dg.draw_indoor(draw, draw(MOVER_SPHERES), step_heights, policy)
     bx, by = draw(HOME)
-    terrain_policy = draw(TERRAIN_POLICIES) if kind == "terrain" else "free"
+    terrain_policy = (policy or draw(TERRAIN_POLICIES)) if kind == "terrain" else "free"
     if terrain_policy == "exact_slope":
         return _exact_slope_scene(draw, bx, by, draw(MOVER_SPHERES))
     crossing = terrain_policy == "border_slope"
@@ -179,7 +185,8 @@ def draw_scene(draw, kind: str) -> Scene:
             lx, ly = ly, lx
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     vx, vy = round(gx0 / CELL), round(gy0 / CELL)
-    policy = draw(BSP_POLICIES) if kind == "bsp" else draw(OBSTACLE_POLICIES) if kind == "obstacles" else "scatter"
+    if kind == "terrain" or policy is None:
+        policy = draw(BSP_POLICIES) if kind == "bsp" else draw(OBSTACLE_POLICIES) if kind == "obstacles" else "scatter"
     flat = kind != "terrain" and (policy != "scatter" or draw(QUARTERS) < 3)
     field = tr.field_near(draw, vx, vy, flat=flat, tilt=crossing)
     world = _World(field)

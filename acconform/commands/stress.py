@@ -45,7 +45,7 @@ PERTURBATIONS: dict[str, str] = {
 def add_arguments(p) -> None:
     p.add_argument("-n", "--cases", type=int, default=50, help="base scenes per kind (default 50)")
     p.add_argument("--seed", type=int, default=0, help="seed for the base scenes (default 0)")
-    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: all, terrain,bsp,obstacles,indoor)")
+    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: terrain,bsp,obstacles,indoor; a tick scene has no path to nudge)")
     p.add_argument("-k", "--ulps", type=int, default=2, help="nudges go from 1 to K ULPs each way (default 2)")
     p.add_argument("--only", default=None, help=f"comma-separated perturbation kinds (default all: {', '.join(PERTURBATIONS)})")
     p.add_argument("--failures", default="failures", metavar="DIR", help="where case files go (default ./failures)")
@@ -414,7 +414,12 @@ def run(args) -> int:
     from ..strategies import check_kinds
 
     warnings.simplefilter("ignore", RuntimeWarning)
-    kinds = check_kinds(args.kinds)
+    from ..strategies import GEOMETRY_KINDS
+
+    kinds = check_kinds(args.kinds or ",".join(GEOMETRY_KINDS))
+    if "ticks" in kinds:
+        raise AcconformError("--kinds ticks: stress nudges a transition's begin and end, and a tick scene has no end "
+                             "(check --kinds ticks runs tick scenes)")
     if args.cases < 1 or args.ulps < 1:
         raise AcconformError(f"--cases and --ulps must be at least 1, got {args.cases} and {args.ulps}")
     perturbations = tuple(p for p in (args.only or ",".join(PERTURBATIONS)).split(",") if p)

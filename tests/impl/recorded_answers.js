@@ -129,7 +129,8 @@ function sceneKey(scene) {
 function load(dirs) {
   const answers = new Map(); // scene key -> {outcome: text, runtime}
   for (const dir of dirs) {
-    const names = fs.readdirSync(dir).filter((f) => SHARD.test(f)).sort();
+    // its handshake lists no feature `ticks`, so no tick scene is sent to it: the ticks shards are not read
+    const names = fs.readdirSync(dir).filter((f) => SHARD.test(f) && !f.startsWith('ticks-')).sort();
     if (names.length === 0) throw new Error(`no corpus shards (<kind>-NNNN.jsonl.gz) in ${dir}`);
     for (const name of names) {
       const lines = zlib.gunzipSync(fs.readFileSync(path.join(dir, name))).toString('utf8').split('\n');
