@@ -26,12 +26,27 @@ import numpy as np
 from .errors import InvalidScene
 
 
+_WRITTEN: dict[float, float] = {}  # write_f32's answers for nonzero finite Python floats (by value)
+_WRITTEN_LIMIT = 1 << 16
+
+
 def write_f32(x) -> float | str:
+    if type(x) is float:
+        written = _WRITTEN.get(x)  # a scene writes the same few hundred values again and again
+        if written is not None:
+            return written
     v = np.float32(x)
     if not np.isfinite(v):
         return f"0x{int(v.view(np.uint32)):08x}"
+    if v == 0:  # kept out of the memo: -0.0 and 0.0 are one key
+        return -0.0 if np.signbit(v) else 0.0
     # float(repr) keeps the shortest digits: json then prints them unchanged.
-    return float(str(v)) if v != 0 else (-0.0 if np.signbit(v) else 0.0)
+    written = float(str(v))
+    if type(x) is float:  # the answer is a function of x's value (x is nonzero and finite here)
+        if len(_WRITTEN) >= _WRITTEN_LIMIT:
+            _WRITTEN.clear()
+        _WRITTEN[x] = written
+    return written
 
 
 def write_f64(x) -> float:
@@ -207,8 +222,29 @@ class Reader:
                   f"{F32_DIGITS} significant digits, or as its bit pattern '0x{int(f.view(np.uint32)):08x}'")
 
     def vec3(self) -> tuple[float, float, float]:
+        v = self.value
+        if not self.exact and type(v) is list and len(v) == 3:  # the common case, without a Reader per number
+            a, b, c = v
+            if (type(a) is float and type(b) is float and type(c) is float
+                    and -F32_MAX < a < F32_MAX and -F32_MAX < b < F32_MAX and -F32_MAX < c < F32_MAX):
+                return (float(np.float32(a)), float(np.float32(b)), float(np.float32(c)))
         a, b, c = (r.f32() for r in self.list(count=3))
         return (a, b, c)
+
+    def vec3s(self) -> list[tuple[float, float, float]]:
+        """A list of vec3s (``[r.vec3() for r in self.list()]``)."""
+        if not isinstance(self.value, list):
+            self.fail(f"expected a list, got {_kind(self.value)}")
+        return [Reader(v, "", self, i).vec3() for i, v in enumerate(self.value)]
+
+    def ints(self, lo: int, hi: int, count: int | None = None) -> tuple[int, ...]:
+        """A list of integers in [lo, hi] (``tuple(r.int_(lo, hi) for r in self.list(count))``), read
+        without a Reader per number when they all are; a bad one fails as int_ names it."""
+        v = self.value
+        if type(v) is list and (count is None or len(v) == count) and all(
+                type(n) is int and lo <= n <= hi for n in v):
+            return tuple(v)
+        return tuple(r.int_(lo, hi) for r in self.list(count=count))
 
     def int_(self, lo: int | None = None, hi: int | None = None) -> int:
         v = self.value

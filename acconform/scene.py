@@ -147,8 +147,8 @@ class Landblock:
             missing = "terrain" if r.given("heights") else "heights"
             raise InvalidScene(f"{r.path}.{missing}", "missing: a landblock gives both heights and terrain, or "
                                                       "neither (a landblock without terrain, e.g. a dungeon's)")
-        heights = tuple(h.int_(0, 255) for h in r["heights"].list(count=81))
-        terrain = tuple(t.int_(0, 0xFFFF) for t in r["terrain"].list(count=81))
+        heights = r["heights"].ints(0, 255, count=81)
+        terrain = r["terrain"].ints(0, 0xFFFF, count=81)
         return Landblock(lb_id, heights, terrain)
 
 
@@ -163,7 +163,7 @@ class PolygonRec:
     @staticmethod
     def from_json(r: Reader) -> "PolygonRec":
         r.obj({"vertices", "sides_type"})
-        verts = tuple(v.vec3() for v in r["vertices"].list())
+        verts = tuple(r["vertices"].vec3s())
         if len(verts) < 3:
             r["vertices"].fail(f"a polygon needs at least 3 vertices, got {len(verts)}")
         if _newell_area2(verts) <= 1e-12:
@@ -223,7 +223,7 @@ def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
     kind = r["type"].str_()
     if kind == "leaf":
         r.obj({"type", "polygons", "solid", "sphere"})
-        polys = tuple(p.int_(0, npolys - 1) for p in r["polygons"].list())
+        polys = r["polygons"].ints(0, npolys - 1)
         solid = r["solid"].bool_() if r.given("solid") else False
         return BSPLeaf(polys, solid, SphereRec.from_json(r["sphere"], bounding=True))
     if kind == "node":

@@ -3,10 +3,12 @@
     python benchmarks/bench_port.py [--n 60] [--generated 40] [--repeat 3]
     python benchmarks/bench_port.py --against HEAD~3      # old/new ratio, measured in one run
 
-Scenes: the recorded corpus (tests/data/corpus/coreclr/{terrain,bsp,obstacles}-*.jsonl.gz, the first
---n of each kind) and --generated scenes from acconform.strategies.sample_scenes (seed 1).
-Each scene set runs --repeat times through run_scene in exact and fast mode; the best pass is
-reported as ms/scene (process CPU time, see CLOCK). "build%" is the share of that pass spent constructing landblocks
+Scenes: the recorded corpus (tests/data/corpus/coreclr/{terrain,bsp,obstacles,indoor}-*.jsonl.gz, the
+first --n of each kind), the tick scenes of examples/ (a revision that cannot read them shows none)
+and --generated scenes from acconform.strategies.sample_scenes (seed 1).
+Each scene set runs --repeat times through run_scene in exact and fast mode, and in exact mode with
+a branches.Trace as a campaign runs the built-in port ("exact+trace"), computing as .NET 10 does;
+the best pass is reported as ms/scene (process CPU time, see CLOCK). "build%" is the share of that pass spent constructing landblocks
 (Landblock.__init__ and post_init, plus any lazy cell building the port does on first access),
 measured in a separate instrumented pass so the timing pass carries no wrapper cost.
 
@@ -21,6 +23,7 @@ from __future__ import annotations
 import argparse
 import gzip
 import json
+import os
 import subprocess
 import sys
 import tempfile
@@ -28,7 +31,7 @@ import time
 from pathlib import Path
 
 from revision import ROOT, revision_env  # noqa: E402 (benchmarks run as scripts)
-KINDS = ("terrain", "bsp", "obstacles")
+KINDS = ("terrain", "bsp", "obstacles", "indoor")
 # CPU time of this process, not wall time: the port is single-threaded, and the machine is shared
 # (tests and oracles run beside a benchmark), so wall time mostly measured the neighbours.
 CLOCK = time.process_time
@@ -47,6 +50,35 @@ def load_corpus(kind: str, n: int):
                 if len(out) >= n:
                     return out
     return out
+
+
+def load_ticks() -> list:
+    """The tick scenes of examples/ this revision can read."""
+    from acconform.case import parse_document
+
+    out = []
+    for path in sorted((ROOT / "examples").glob("tick_*.json")):
+        try:
+            rec = parse_document(json.loads(path.read_text()))
+        except Exception:  # an older revision has no tick scenes
+            continue
+        out.append(getattr(rec, "scene", rec))
+    return out
+
+
+def _run(scene, mode: str, trace_class) -> None:
+    from acconform.port.run import run_scene
+
+    if trace_class is None:
+        run_scene(scene, mode, runtime="coreclr")
+    else:
+        run_scene(scene, "exact", trace_class(), runtime="coreclr")
+
+
+def _trace_class():
+    from acconform.port.transition.branches import Trace
+
+    return Trace
 
 
 def _build_functions():
@@ -102,20 +134,19 @@ def _clear_caches():
 
 
 def measure(scenes, mode: str, repeat: int) -> dict:
-    from acconform.port.run import run_scene
-
+    trace_class = _trace_class() if mode == "exact+trace" else None
     best = float("inf")
     for _ in range(repeat):
         _clear_caches()  # every pass starts cold: the cache's gain is within a pass
         t0 = CLOCK()
         for s in scenes:
-            run_scene(s, mode)
+            _run(s, mode, trace_class)
         best = min(best, CLOCK() - t0)
     _clear_caches()
     with BuildTimer() as bt:
         t0 = CLOCK()
         for s in scenes:
-            run_scene(s, mode)
+            _run(s, mode, trace_class)
         total = CLOCK() - t0
     return {"ms": best / len(scenes) * 1e3, "build": bt.total / total if total else 0.0}
 
@@ -133,11 +164,14 @@ def generated_scenes(args) -> list:
 
 def run(args) -> dict:
     sets = {k: load_corpus(k, args.n) for k in KINDS}
+    sets["ticks"] = load_ticks()
     if args.generated:
         sets["generated"] = generated_scenes(args)
     results = {}
     for name, scenes in sets.items():
-        for mode in ("exact", "fast"):
+        if not scenes:
+            continue
+        for mode in ("exact", "fast", "exact+trace"):
             results[f"{name}/{mode}"] = measure(scenes, mode, args.repeat) | {"scenes": len(scenes)}
     return results
 
@@ -169,6 +203,7 @@ def main() -> None:
     if args.json:
         print(json.dumps(new))
         return
+    print(f"load average {' '.join(f'{x:.2f}' for x in os.getloadavg())} (1, 5, 15 min) before the runs")
     if old is None:
         print(f"{'scenes/mode':20s} {'n':>4s} {'ms/scene':>9s} {'build%':>7s}")
         for key, r in new.items():
@@ -176,7 +211,10 @@ def main() -> None:
         return
     print(f"{'scenes/mode':20s} {'n':>4s} {'old ms':>8s} {'build%':>7s} {'new ms':>8s} {'build%':>7s} {'old/new':>8s}")
     for key, r in new.items():
-        o = old[key]
+        o = old.get(key)
+        if o is None:
+            print(f"{key:20s} {r['scenes']:4d} {'-':>8s} {'':7s} {r['ms']:8.2f} {r['build'] * 100:6.1f}%")
+            continue
         print(f"{key:20s} {r['scenes']:4d} {o['ms']:8.2f} {o['build'] * 100:6.1f}% {r['ms']:8.2f} "
               f"{r['build'] * 100:6.1f}% {o['ms'] / r['ms']:7.2f}x")
 

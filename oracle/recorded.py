@@ -181,7 +181,8 @@ class RecordedOracle:
         self.entries: list[Entry] = []
         self._index: dict[str, Entry] | None = None  # key -> entry, built when first needed
         self._handed: dict[int, tuple[Scene, Entry, dict]] = {}  # id(scene) -> (scene, entry, outcome JSON)
-        self._handed_keys: dict[str, Entry] = {}  # scene key -> entry, of every scene handed out
+        self._handed_keys: dict[str, Entry] = {}  # scene key -> entry, of every scene handed out and keyed
+        self._unkeyed: list[Entry] = []  # handed out, not keyed yet: keyed when `run` first needs a key
         versions: set[Versions] = set()
         for misnamed in sorted(p for p in self.corpus_dir.glob("*.jsonl.gz") if not SHARD_RE.match(p.name)):
             self._bad(CorpusCorrupt(f"{misnamed}: not read: a shard is named <kind>-NNNN.jsonl.gz (e.g. "
@@ -346,7 +347,7 @@ class RecordedOracle:
         except InvalidScene as e:
             raise CorpusCorrupt(f"{entry.where}: {e}") from None
         if keep:
-            self._handed_keys[_doc_key(doc)] = entry
+            self._unkeyed.append(entry)  # keyed only if `run` is asked for it other than as handed out
             if len(self._handed) >= self.HANDED_OUT:
                 del self._handed[next(iter(self._handed))]
             self._handed[id(scene)] = (scene, entry, doc.get("outcome"))
@@ -359,6 +360,9 @@ class RecordedOracle:
                 return deep.retrying(Outcome.from_json, handed[2], "outcome")
             except InvalidScene as e:
                 raise CorpusCorrupt(f"{handed[1].where}: {e}") from None
+        for unkeyed in self._unkeyed:
+            self._handed_keys[_doc_key(unkeyed.doc())] = unkeyed
+        self._unkeyed.clear()
         entry = self._handed_keys.get(scene_key(scene))  # handed out, but asked for late or as an equal copy
         if entry is not None:
             return self._record(entry).outcome

@@ -4,11 +4,20 @@ GetGfxObj, GetSetup and GetEnvironment read DatManager.PortalDat, GetEnvCell Dat
 a run stands in for both with the DAT databases it fills from the scene (port/dat/portal_dat.py:
 the records acconform/dat.py wrote). GetEnvCell builds the physics EnvCell from the record, as
 ACE's does.
+
+Across runs the port remembers the Environment unpacked from a record's exact bytes
+(`ENVIRONMENTS`, keyed by the bytes and the mode), as ACE's DatDatabase.FileCache keeps every
+record it unpacked for the life of the process: a campaign's indoor scenes draw the same rooms
+again and again, and unpacking an Environment (its structures' polygons and three BSP trees) was
+a third of an indoor run. The answer cannot change: Environment.Unpack is a function of those
+bytes (its floats read in the mode's type), and nothing reads an Environment but EnvCell's
+constructor, which looks a structure up by id (port/cell/cell_struct.py remembers the CellStruct
+built from it, by the same bytes). A record the run does not hold is never remembered.
 """
 
 from __future__ import annotations
 
-from .anchors import anchor
+from .anchors import anchor, harness
 from .dat.env_cell import EnvCell as DatEnvCell
 from .dat.environment import Environment as DatEnvironment
 from .dat.gfx_obj import GfxObj as DatGfxObj
@@ -36,6 +45,25 @@ def get_setup(portal_dat, file_id: int) -> SetupModel:
     return portal_dat.read_from_dat(file_id, SetupModel)
 
 
+ENVIRONMENTS_LIMIT = 256  # remembered Environments before the memory forgets them all
+ENVIRONMENTS: dict[tuple, DatEnvironment] = {}
+
+
 @anchor(None, "DBObj.cs:GetEnvironment")
 def get_environment(portal_dat, file_id: int) -> DatEnvironment:
-    return portal_dat.read_from_dat(file_id, DatEnvironment)
+    data = portal_dat.records.get(file_id)
+    if data is None:
+        return portal_dat.read_from_dat(file_id, DatEnvironment)  # throws, as ACE's does
+    key = (data, portal_dat.mode)
+    environment = ENVIRONMENTS.get(key)
+    if environment is None:
+        environment = portal_dat.read_from_dat(file_id, DatEnvironment)
+        if len(ENVIRONMENTS) >= ENVIRONMENTS_LIMIT:
+            ENVIRONMENTS.clear()
+        ENVIRONMENTS[key] = environment
+    return portal_dat.file_cache.setdefault(file_id, environment)
+
+
+@harness("empties the Environments remembered across runs")
+def clear_environments() -> None:
+    ENVIRONMENTS.clear()

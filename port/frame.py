@@ -36,6 +36,9 @@ def to_degrees(rads):
     return cast_float(rads, (180.0 / math.pi) * float(rads))
 
 
+_IDENTITY: dict = {}  # mode -> (zero Vector3, identity Quaternion), for AFrame.identity
+
+
 @dataclass(slots=True, eq=False)
 class AFrame:
     origin: Vector3
@@ -44,8 +47,12 @@ class AFrame:
     @staticmethod
     @anchor(None, "AFrame.cs:AFrame()", "the default constructor, in the run's mode")
     def identity(mode: Mode) -> "AFrame":
-        """``new AFrame()``: origin zero, orientation identity, in the mode's scalar type."""
-        return AFrame(mode.vec(0, 0, 0), mode.quat(0, 0, 0, 1))
+        """``new AFrame()``: origin zero, orientation identity, in the mode's scalar type (the
+        mode's one zero vector and identity quaternion: both are immutable values)."""
+        parts = _IDENTITY.get(mode)
+        if parts is None:
+            parts = _IDENTITY[mode] = (mode.vec(0, 0, 0), mode.quat(0, 0, 0, 1))
+        return AFrame(*parts)
 
     @staticmethod
     @harness("builds an AFrame from a scene Frame record")

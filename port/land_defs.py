@@ -104,14 +104,33 @@ def adjust_to_outside_pos(pos) -> bool:
     return ok
 
 
+_NO_OFFSET = Vector3(0.0, 0.0, 0.0)
+_BLOCK_OFFSETS: dict[tuple[int, int], Vector3] = {}  # get_block_offset's answers (Vector3 is immutable)
+
+
 @anchor("LandDefs::get_block_offset", "LandDefs.cs:GetBlockOffset")
 def get_block_offset(cell_from: int, cell_to: int) -> Vector3:
     """The offset from cell_from's landblock to cell_to's (Python floats, see the module note).
 
     Raises InvalidOperationException where ACE's ``.Value`` throws: a landblock in column or row 0xFF.
+    The answer depends on the two landblock ids only, so it is remembered (the transition asks
+    for the same few pairs tens of thousands of times); a throwing pair is never remembered.
     """
-    if cell_from >> BLOCK_PART_SHIFT == cell_to >> BLOCK_PART_SHIFT:
-        return Vector3(0.0, 0.0, 0.0)
+    block_from = cell_from >> BLOCK_PART_SHIFT
+    block_to = cell_to >> BLOCK_PART_SHIFT
+    if block_from == block_to:
+        return _NO_OFFSET
+    offset = _BLOCK_OFFSETS.get((block_from, block_to))
+    if offset is None:
+        offset = _block_offset(cell_from, cell_to)
+        if len(_BLOCK_OFFSETS) >= 4096:
+            _BLOCK_OFFSETS.clear()
+        _BLOCK_OFFSETS[(block_from, block_to)] = offset
+    return offset
+
+
+def _block_offset(cell_from: int, cell_to: int) -> Vector3:
+    """GetBlockOffset as ACE writes it, for two different landblocks."""
     local_from = value_of(blockid_to_lcoord(cell_from), "LandDefs.GetBlockOffset")
     local_to = value_of(blockid_to_lcoord(cell_to), "LandDefs.GetBlockOffset")
     return Vector3((local_to[0] - local_from[0]) * SQUARE_LENGTH, (local_to[1] - local_from[1]) * SQUARE_LENGTH, 0.0)

@@ -187,13 +187,17 @@ def add_all_outside_cells_replayed(lscape, position: Position, num_sphere: int, 
     +0 first; a NaN never matches, so it always runs. With no spheres the routine moves
     `position` itself, so that form always runs; so does a call that throws (its adds are
     applied, then the exception goes on, as if it had run in place).
+    Replayed into a CellArray that already holds the same call's cells (the array remembers the
+    last key it replayed until a cell is removed), it adds nothing, so it is skipped.
     """
     if cell_array.added_outside:
         return
     if num_sphere == 0:
         add_all_outside_cells(lscape, position, num_sphere, spheres, cell_array)
         return
-    key = (position.obj_cell_id, tuple((s.center.x, s.center.y, s.radius) for s in spheres))
+    key = (position.obj_cell_id, tuple([(s.center.x, s.center.y, s.radius) for s in spheres]))
+    if cell_array.replayed == key:
+        return
     adds = lscape.outside_cells.get(key)
     if adds is None:
         recorder = _AddedCells()
@@ -206,6 +210,7 @@ def add_all_outside_cells_replayed(lscape, position: Position, num_sphere: int, 
         adds = lscape.outside_cells[key] = recorder.adds
     for cell_id, cell in adds:
         cell_array.add_cell(cell_id, cell)
+    cell_array.replayed = key
 
 
 @anchor("CLandCell::add_all_outside_cells", "LandCell.cs:add_all_outside_cells(Position, int, List<Sphere>, CellArray)")

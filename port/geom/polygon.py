@@ -115,6 +115,21 @@ class Polygon:
         p.make_plane()
         return p
 
+    @harness("make_plane when the plane is first read (a terrain polygon: see make_plane_when_read)")
+    def make_plane_when_read(self) -> None:
+        """Leaves the plane unset: the first read of ``plane`` runs make_plane then (`__getattr__`).
+        Only for a polygon whose vertices no one moves afterwards (a landblock's terrain): its
+        plane is a function of them, so computing it later gives the same bits, and a landblock's
+        128 planes are mostly never read (a transition touches a few of its 64 cells)."""
+        del self.plane
+
+    def __getattr__(self, name: str):
+        # an unset slot: only `plane` is ever left unset (make_plane_when_read)
+        if name != "plane":
+            raise AttributeError(f"'Polygon' object has no attribute {name!r}")
+        self.make_plane()
+        return self.plane
+
     @anchor(None, "Polygon.cs:Init")
     def init(self) -> None:
         self.poly_id = -1

@@ -40,6 +40,19 @@ def split_cuts_se_to_nw(split_dir: int) -> bool:
     return split_dir * SPLIT_SCALE < 0.5  # uint * double literal, compared in double
 
 
+_HEIGHT_TABLES: dict = {}  # (table, mode) -> the table in the mode's scalar type
+
+
+@harness("the land height table in the run's scalar type, converted once per table and mode")
+def height_table_in_mode(table: tuple, mode: Mode) -> tuple:
+    converted = _HEIGHT_TABLES.get((table, mode))
+    if converted is None:
+        if len(_HEIGHT_TABLES) >= 64:
+            _HEIGHT_TABLES.clear()
+        converted = _HEIGHT_TABLES[(table, mode)] = tuple(mode.scalar(h) for h in table)
+    return converted
+
+
 class LandblockStruct:
     """The terrain mesh of one landblock: 81 vertices, 128 triangles, 64 LandCells."""
 
@@ -56,7 +69,7 @@ class LandblockStruct:
         tests/port/land/test_landblock_struct.py).
         """
         self.mode = mode
-        self.land_height_table = tuple(mode.scalar(h) for h in land_height_table)
+        self.land_height_table = height_table_in_mode(tuple(land_height_table), mode)
         self.id = 0
         self.height = tuple(height)
         self.terrain = tuple(terrain)
@@ -121,7 +134,7 @@ class LandblockStruct:
         polygon.vertex_ids[1] = v1
         polygon.vertex_ids[2] = v2
 
-        polygon.make_plane()
+        polygon.make_plane_when_read()  # make_plane(), run when the plane is first read: the vertices are final
 
         polygon.pos_surface = 0
         if polygon.vertices[0].origin.z != 0 or polygon.vertices[1].origin.z != 0 or polygon.vertices[2].origin.z != 0:

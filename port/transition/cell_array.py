@@ -66,6 +66,8 @@ class NetDictionary:
     @harness(".NET Enumerable.ElementAt over Dictionary.Values")
     def value_at(self, i: int):
         """``Cells.Values.ElementAt(i)``."""
+        if not self._free:  # no free slot: the entries are the values, in order
+            return self._entries[i][1]
         for e in self._entries:
             if e is not None:
                 if i == 0:
@@ -80,6 +82,9 @@ class CellArray:
     load_cells: bool = False
     cells: NetDictionary = field(default_factory=NetDictionary)
     num_cells: int = 0
+    # the port's, not ACE's: the key of the last add_all_outside_cells replayed into `cells` since
+    # the last remove_cell (land_cell.add_all_outside_cells_replayed: replaying it again adds nothing)
+    replayed: tuple | None = None
 
     @anchor("CELLARRAY::SetStatic", "CellArray.cs:SetStatic")
     def set_static(self) -> None:
@@ -95,12 +100,13 @@ class CellArray:
 
     @anchor("CELLARRAY::add_cell", "CellArray.cs:add_cell")
     def add_cell(self, cell_id: int, cell) -> None:
-        if cell_id not in self.cells:
+        if cell_id not in self.cells._index:  # `cell_id in self.cells`, without a Python-level call
             self.cells.add(cell_id, cell)
             self.num_cells += 1
 
     @anchor("CELLARRAY::remove_cell", "CellArray.cs:remove_cell")
     def remove_cell(self, cell) -> None:
         if cell.id in self.cells:
+            self.replayed = None
             self.cells.remove(cell.id)
             self.num_cells -= 1

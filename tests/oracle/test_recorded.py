@@ -75,6 +75,22 @@ def test_a_scene_is_found_whatever_its_name(tmp_path):
     assert scene_key(s) == scene_key(s.replace(name="other"))
 
 
+def test_a_handed_out_scene_asked_for_as_an_equal_copy_gets_its_own_answer(tmp_path):
+    """Scenes handed out by `scenes()` are keyed only when `run` meets one it did not hand out
+    (an equal copy, or one asked for late): the copy still gets its record's answer."""
+    keys = [scene_key(s) for s in PROBE.values()]
+    with CorpusWriter(tmp_path) as w:
+        for i, s in enumerate(PROBE.values()):
+            w.add(Record(s, Outcome(ok=True, cell=0xA9B40001 + i)))
+    oracle = RecordedOracle(tmp_path)
+    handed = list(oracle.scenes())
+    assert len(handed) == len(keys) > 2
+    assert oracle.run(handed[0]).cell == 0xA9B40001 + keys.index(scene_key(handed[0]))  # as handed out
+    for scene in handed[1:]:
+        copy = type(scene).from_json(scene.to_json())
+        assert copy is not scene and oracle.run(copy).cell == 0xA9B40001 + keys.index(scene_key(scene))
+
+
 def test_an_unrecorded_scene_raises_a_clear_error(tmp_path):
     with CorpusWriter(tmp_path) as w:
         w.add(Record(PROBE["flat 1-step walk"], Outcome(ok=True)))

@@ -108,6 +108,19 @@ def test_get_block_offset():
         ld.get_block_offset(0xFE000001, 0xFF000001)
 
 
+@pytest.mark.anchor("LandDefs::get_block_offset")
+def test_remembered_block_offsets_are_the_routine_run_every_time_and_a_throwing_pair_throws_each_time():
+    cells = [0xA9B40001, 0xA9B40040, 0xAAB30005, 0x00000001, 0x01FE0009, 0xFE010001, 0x7F7F0100]
+    for _ in range(2):  # the second round is answered from memory
+        for a in cells:
+            for b in cells:
+                want = EXACT.vec(0, 0, 0) if a >> 16 == b >> 16 else ld._block_offset(a, b)
+                assert ld.get_block_offset(a, b) == want
+    for _ in range(2):
+        with pytest.raises(ld.InvalidOperation):
+            ld.get_block_offset(0xA9B40001, 0xA9FF0001)
+
+
 @pytest.mark.anchor("LandDefs::in_block")
 def test_in_block_keeps_radius_from_every_edge():
     assert ld.in_block(EXACT.vec(1, 1, 0), F(1))

@@ -177,6 +177,13 @@ def test_replayed_outside_cells_leave_the_cell_array_as_running_it_again_does():
             calls += 1
         assert direct.cells.keys() == replayed.cells.keys()
         assert direct.num_cells == replayed.num_cells
+        # a removed cell comes back: the array's memory of its last replay ends at remove_cell
+        gone = w.get_landcell(direct.cells.keys()[-1])
+        for ca in (direct, replayed):
+            ca.remove_cell(gone)
+        lc.add_all_outside_cells(w, Position(cell, AFrame.identity(EXACT)), len(spheres), spheres, direct)
+        lc.add_all_outside_cells_replayed(w, Position(cell, AFrame.identity(EXACT)), len(spheres), spheres, replayed)
+        assert direct.cells.keys() == replayed.cells.keys() and direct.num_cells == replayed.num_cells
     assert calls == 800 and len(w.outside_cells) > 50  # the memory was used, and for many inputs
 
 

@@ -187,3 +187,28 @@ def test_indoor_scenes_build_no_terrain():
         assert run_scene(scene).error is None
     (landblock,) = lscape.POOL.idle.values()
     assert not landblock.terrain_built() and landblock.land_cells == {}
+
+
+def _plane_bits(polygon) -> tuple:
+    n, d = polygon.plane.normal, polygon.plane.d
+    return tuple(float(v).hex() for v in (n.x, n.y, n.z, d))  # exact in either mode
+
+
+@pytest.mark.anchor("CLandBlockStruct::AddPolygon")
+@pytest.mark.parametrize("mode", [EXACT, FAST])
+def test_terrain_planes_made_when_first_read_are_the_planes_add_polygon_made(mode, monkeypatch):
+    heights = [(i * 37 + i // 9 * 11) % 256 for i in range(81)]
+    lazy = build(heights=heights, mode=mode)
+    unread = sum(1 for p in lazy.polygons if _unset(p))
+    monkeypatch.setattr(lbs.Polygon, "make_plane_when_read", lbs.Polygon.make_plane)  # as ACE: at AddPolygon
+    eager = build(heights=heights, mode=mode)
+    assert unread == len(lazy.polygons) == 128 and not any(_unset(p) for p in eager.polygons)
+    assert [_plane_bits(p) for p in lazy.polygons] == [_plane_bits(p) for p in eager.polygons]
+
+
+def _unset(polygon) -> bool:
+    try:
+        object.__getattribute__(polygon, "plane")
+    except AttributeError:
+        return True
+    return False
