@@ -35,6 +35,22 @@ def _port_dir() -> Path:
     return Path(importlib.util.find_spec("acconform.port").origin).resolve().parent
 
 
+# `if ... trace is not None` tests only whether the port's own branch trace (port/transition/branches.py's
+# counters, the boundary log) is on: instrumentation ACE has no counterpart of, on in `acconform coverage`
+# and the fast sample's build, off in a replay. Their arc not taken is not reported missing (coverage.py's
+# partial_branches): they are measured as lines.
+TRACE_ONLY = r"\bif\b.*\btrace is not None\b"
+
+
+def _coverage(data_file: str):
+    """coverage.py measuring branches of port/ alone, the trace switch not counted as a branch."""
+    import coverage
+
+    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=data_file, config_file=False)
+    cov.set_option("report:partial_branches", [TRACE_ONLY])
+    return cov
+
+
 CHUNK = 200  # records traced per coverage database when each record's arcs are kept
 
 
@@ -44,8 +60,6 @@ def _replay(args):
     its arcs come back as (the worker's arc names, {scene key: bit mask over them}); the
     worker's data file then holds nothing."""
     corpus, runtime, entries, data_file, per_record = args
-    import coverage
-
     from acconform.compare import compare
     from acconform.oracle.recorded import RecordedOracle, _doc_key
     from acconform.port.run import run_scene
@@ -57,7 +71,7 @@ def _replay(args):
     step = CHUNK if per_record else max(1, len(entries))
     for c in range(0, len(entries), step):
         f = f"{data_file}.chunk{c}" if per_record else data_file
-        cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=f)
+        cov = _coverage(f)
         cov.start()
         try:
             for entry in entries[c:c + step]:
@@ -85,9 +99,7 @@ def _import_port(data_file: str) -> None:
     import importlib
     import pkgutil
 
-    import coverage
-
-    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=data_file)
+    cov = _coverage(data_file)
     cov.start()
     try:
         import acconform.port as port
@@ -103,8 +115,6 @@ def measure(runtime: str, corpus: Path | None, n: int | None, seed: int, workers
             keys: list[str] | None = None, per_record: bool = False):
     """(coverage.Coverage with the combined data, records replayed, records differing, seconds,
     the workers' data files). `keys`: replay only the records with these scene keys."""
-    import coverage
-
     tmp = Path(tempfile.mkdtemp(prefix="acconform-cov-"))
     imports = str(tmp / ".coverage.imports")
     _import_port(imports)  # before anything else imports the port
@@ -137,7 +147,7 @@ def measure(runtime: str, corpus: Path | None, n: int | None, seed: int, workers
         per_record_arcs = ([], {})
         for _, _, arcs in results:
             merge_arcs(per_record_arcs, arcs)
-    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=str(tmp / ".coverage"))
+    cov = _coverage(str(tmp / ".coverage"))
     cov.combine([imports] + [j[3] for j in jobs if not per_record])
     cov.save()
     return cov, sum(r[0] for r in results), sum(r[1] for r in results), seconds, per_record_arcs
@@ -455,6 +465,8 @@ def main(argv=None) -> int:
                     help="trace every record on its own, write the greedy kernel and the floor it measures")
     ap.add_argument("--keys-of", choices=("coreclr", "mono"), default=None,
                     help="with --write-kernel: take the other runtime's kernel records instead of tracing")
+    ap.add_argument("--with", dest="with_shards", nargs="*", default=[], metavar="SHARD",
+                    help="with --write-kernel -n: every record of these shards is a candidate too")
     ap.add_argument("--cache", type=Path, default=None,
                     help="with --write-kernel: per-record arcs kept here between runs (records already traced on "
                          "today's port/ are not traced again)")
@@ -473,10 +485,16 @@ def main(argv=None) -> int:
         corpus = a.corpus or default_corpus(a.runtime)
         oracle = RecordedOracle(corpus)
         every = sorted(oracle.index())
-        if a.n is not None:  # the candidates: a stratified sample and the fast lane's sample
+        if a.n is not None:
+            # the candidates: a stratified sample, the fast lane's sample, the records already traced
+            # (--cache) and every record of the --with shards
             sample = corpus / "fast-sample.json"
+            cached = set(load_arcs(a.cache, a.runtime)[1]) if a.cache else set()
+            shards = {str(Path(w).resolve()) for w in a.with_shards}
             every = sorted({e.key for e in oracle.select(n=a.n, seed=a.seed)}
-                           | ({r[0] for r in json.loads(sample.read_text())["records"]} if sample.exists() else set()))
+                           | ({r[0] for r in json.loads(sample.read_text())["records"]} if sample.exists() else set())
+                           | (cached & set(every))
+                           | {e.key for e in oracle.entries if str(Path(e.where.rsplit(" line ", 1)[0]).resolve()) in shards})
         if a.keys_of:  # the same scenes as another runtime's kernel (the corpora pair up by scene key)
             keys = json.loads(kernel_file(a.keys_of).read_text())["keys"]
         else:
