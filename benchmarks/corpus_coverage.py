@@ -35,28 +35,62 @@ def _port_dir() -> Path:
     return Path(importlib.util.find_spec("acconform.port").origin).resolve().parent
 
 
-def _replay(args):
-    """Worker: replay `keys` of the corpus under coverage; returns (n, differing, data file)."""
-    corpus, runtime, keys, data_file = args
+# `if ... trace is not None` tests only whether the port's own branch trace (port/transition/branches.py's
+# counters, the boundary log) is on: instrumentation ACE has no counterpart of, on in `acconform coverage`
+# and the fast sample's build, off in a replay. Their arc not taken is not reported missing (coverage.py's
+# partial_branches): they are measured as lines.
+TRACE_ONLY = r"\bif\b.*\btrace is not None\b"
+
+
+def _coverage(data_file: str):
+    """coverage.py measuring branches of port/ alone, the trace switch not counted as a branch."""
     import coverage
 
+    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=data_file, config_file=False)
+    cov.set_option("report:partial_branches", [TRACE_ONLY])
+    return cov
+
+
+CHUNK = 200  # records traced per coverage database when each record's arcs are kept
+
+
+def _replay(args):
+    """Worker: replay `entries` of the corpus under coverage; returns (n, differing, per-record
+    arcs). With `per_record`, each record runs in its own coverage context (its scene key), and
+    its arcs come back as (the worker's arc names, {scene key: bit mask over them}); the
+    worker's data file then holds nothing."""
+    corpus, runtime, entries, data_file, per_record = args
     from acconform.compare import compare
-    from acconform.oracle.recorded import RecordedOracle
+    from acconform.oracle.recorded import RecordedOracle, _doc_key
     from acconform.port.run import run_scene
 
     oracle = RecordedOracle(corpus)
-    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=data_file)
     differing = 0
-    cov.start()
-    try:
-        for key in keys:
-            rec = oracle._record(key)
-            if compare(run_scene(rec.scene, runtime=runtime), rec.outcome):
-                differing += 1
-    finally:
-        cov.stop()
-        cov.save()
-    return len(keys), differing
+    names: dict[str, int] = {}
+    masks: dict[str, int] = {}
+    step = CHUNK if per_record else max(1, len(entries))
+    for c in range(0, len(entries), step):
+        f = f"{data_file}.chunk{c}" if per_record else data_file
+        cov = _coverage(f)
+        cov.start()
+        try:
+            for entry in entries[c:c + step]:
+                if per_record:
+                    cov.switch_context(_doc_key(entry.doc()))
+                rec = oracle._record(entry)
+                if compare(run_scene(rec.scene, runtime=runtime), rec.outcome):
+                    differing += 1
+        finally:
+            cov.stop()
+            cov.save()
+        if per_record:
+            for key, arcs in _arcs_by_context([f]).items():
+                m = masks.get(key, 0)
+                for a in arcs:
+                    m |= 1 << names.setdefault(a, len(names))
+                masks[key] = m
+            Path(f).unlink()
+    return len(entries), differing, (list(names), masks) if per_record else None
 
 
 def _import_port(data_file: str) -> None:
@@ -65,9 +99,7 @@ def _import_port(data_file: str) -> None:
     import importlib
     import pkgutil
 
-    import coverage
-
-    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=data_file)
+    cov = _coverage(data_file)
     cov.start()
     try:
         import acconform.port as port
@@ -79,10 +111,10 @@ def _import_port(data_file: str) -> None:
         cov.save()
 
 
-def measure(runtime: str, corpus: Path | None, n: int | None, seed: int, workers: int):
-    """(coverage.Coverage with the combined data, records replayed, records differing, seconds)."""
-    import coverage
-
+def measure(runtime: str, corpus: Path | None, n: int | None, seed: int, workers: int,
+            keys: list[str] | None = None, per_record: bool = False):
+    """(coverage.Coverage with the combined data, records replayed, records differing, seconds,
+    the workers' data files). `keys`: replay only the records with these scene keys."""
     tmp = Path(tempfile.mkdtemp(prefix="acconform-cov-"))
     imports = str(tmp / ".coverage.imports")
     _import_port(imports)  # before anything else imports the port
@@ -90,20 +122,52 @@ def measure(runtime: str, corpus: Path | None, n: int | None, seed: int, workers
     from acconform.oracle.recorded import RecordedOracle
 
     corpus = corpus or default_corpus(runtime)
-    keys = RecordedOracle(corpus).select(n=n, seed=seed, runtime=None)
-    chunks = [keys[w::workers] for w in range(workers)]
-    jobs = [(corpus, runtime, chunk, str(tmp / f".coverage.{w}")) for w, chunk in enumerate(chunks) if chunk]
+    oracle = RecordedOracle(corpus)
+    if keys is not None:
+        index = oracle.index()
+        lacking = [k for k in keys if k not in index]
+        if lacking:
+            raise SystemExit(f"corpus_coverage: the kernel names {len(lacking)} records {corpus} lacks "
+                             f"(first {lacking[0][:16]}): rebuild it (--write-kernel)")
+        entries = [index[k] for k in keys]
+    else:
+        entries = oracle.select(n=n, seed=seed, runtime=None)
+    chunks = [entries[w::workers] for w in range(workers)]
+    jobs = [(corpus, runtime, chunk, str(tmp / f".coverage.{w}"), per_record)
+            for w, chunk in enumerate(chunks) if chunk]
     t0 = time.perf_counter()
-    if workers == 1:
+    if len(jobs) == 1:
         results = [_replay(jobs[0])]
     else:
         with multiprocessing.get_context("fork").Pool(len(jobs)) as pool:
             results = pool.map(_replay, jobs)
     seconds = time.perf_counter() - t0
-    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=str(tmp / ".coverage"))
-    cov.combine([imports] + [j[3] for j in jobs])
+    per_record_arcs = None
+    if per_record:  # the workers' masks, over one list of arc names
+        per_record_arcs = ([], {})
+        for _, _, arcs in results:
+            merge_arcs(per_record_arcs, arcs)
+    cov = _coverage(str(tmp / ".coverage"))
+    cov.combine([imports] + [j[3] for j in jobs if not per_record])
     cov.save()
-    return cov, sum(r[0] for r in results), sum(r[1] for r in results), seconds
+    return cov, sum(r[0] for r in results), sum(r[1] for r in results), seconds, per_record_arcs
+
+
+def _arcs_by_context(data_files: list[str]) -> dict[str, set[str]]:
+    """Each context's (scene key's) arcs, as `module:from->to` (port-relative), read from the
+    workers' coverage databases before they are combined."""
+    import sqlite3
+
+    root = _port_dir()
+    out: dict[str, set[str]] = {}
+    for f in data_files:
+        db = sqlite3.connect(f)
+        files = {i: str(Path(p).resolve().relative_to(root)) for i, p in db.execute("select id, path from file")}
+        contexts = dict(db.execute("select id, context from context"))
+        for file_id, context_id, a, b in db.execute("select file_id, context_id, fromno, tono from arc"):
+            out.setdefault(contexts[context_id], set()).add(f"{files[file_id]}:{a}->{'exit' if b < 0 else b}")
+        db.close()
+    return out
 
 
 def analyse(cov) -> tuple[list[dict], list[str]]:
@@ -154,6 +218,236 @@ def table(rows: list[dict]) -> list[str]:
     return out
 
 
+def port_hash() -> str:
+    """A digest of port/'s source: per-record arcs are valid only for the source they were traced on."""
+    import hashlib
+
+    h = hashlib.sha256()
+    root = _port_dir()
+    for p in sorted(root.rglob("*.py")):
+        h.update(str(p.relative_to(root)).encode() + b"\0" + p.read_bytes())
+    return h.hexdigest()[:16]
+
+
+def _bits(m: int):
+    while m:
+        low = m & -m
+        yield low.bit_length() - 1
+        m ^= low
+
+
+def merge_arcs(into, arcs) -> None:
+    """Add per-record arcs (arc names, {scene key: bit mask over them}) into `into`, remapped to its names."""
+    names, masks = into
+    ix = {a: i for i, a in enumerate(names)}
+    remap = [ix.setdefault(a, len(ix)) for a in arcs[0]]
+    names.extend(list(ix)[len(names):])
+    for key, m in arcs[1].items():
+        out = 0
+        for i in _bits(m):
+            out |= 1 << remap[i]
+        masks[key] = out
+
+
+def load_arcs(path: Path, runtime: str):
+    """The per-record arcs (names, {scene key: mask}) cached at `path` for `runtime` and today's
+    port/ (none if stale or absent)."""
+    import gzip
+
+    if not path.exists():
+        return [], {}
+    doc = json.loads(gzip.decompress(path.read_bytes()))
+    if doc.get("port") != port_hash() or doc.get("runtime") != runtime:
+        return [], {}
+    return doc["arcs"], {k: int(m, 16) for k, m in doc["records"].items()}
+
+
+def save_arcs(path: Path, runtime: str, arcs) -> None:
+    import gzip
+
+    doc = {"port": port_hash(), "runtime": runtime, "arcs": arcs[0],
+           "records": {k: format(m, "x") for k, m in sorted(arcs[1].items())}}
+    path.write_bytes(gzip.compress(json.dumps(doc, separators=(",", ":")).encode()))
+
+
+def greedy_kernel(masks: dict[str, int]) -> list[str]:
+    """A small set of records whose arcs together are every arc any record takes: greedy set
+    cover (the record adding most new arcs first, ties by key), then each record whose arcs the
+    others already take dropped (last picked first)."""
+    import heapq
+
+    left = 0
+    for m in masks.values():
+        left |= m
+    distinct: dict[int, str] = {}  # records with the same arcs are one candidate (the smallest key)
+    for k in sorted(masks):
+        distinct.setdefault(masks[k], k)
+    heap = [(-m.bit_count(), k, m) for m, k in distinct.items()]
+    heapq.heapify(heap)
+    picked: list[str] = []
+    while left and heap:  # lazy greedy: a gain only shrinks, so a stale top is re-scored and pushed back
+        _, k, m = heapq.heappop(heap)
+        now = (m & left).bit_count()
+        if now == 0:
+            continue
+        if heap and now < -heap[0][0]:
+            heapq.heappush(heap, (-now, k, m))
+            continue
+        picked.append(k)
+        left &= ~m
+    for k in reversed(list(picked)):
+        others = 0
+        for o in picked:
+            if o != k:
+                others |= masks[o]
+        if masks[k] & ~others == 0:
+            picked.remove(k)
+    return sorted(picked)
+
+
+UNREACHABLE = Path(__file__).resolve().parents[1] / "tests" / "data" / "unreachable-branches.json"
+
+
+class Unresolved(ValueError):
+    pass
+
+
+def _function_span(tree, qualname: str) -> tuple[int, int]:
+    import ast
+
+    def walk(node, prefix):
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                name = f"{prefix}{child.name}"
+                if name == qualname:
+                    return child
+                found = walk(child, name + ".")
+                if found is not None:
+                    return found
+        return None
+
+    node = walk(tree, "")
+    if node is None:
+        raise Unresolved(f"no function {qualname}")
+    first = min([node.lineno] + [d.lineno for d in getattr(node, "decorator_list", [])])
+    return first, node.end_lineno
+
+
+def _find(lines: list[str], span: tuple[int, int], snippet: str, near: int | None = None) -> int:
+    """The line in `span` whose stripped text starts with `snippet` (nearest after `near`, then
+    nearest before it, when several do); one clear error when none does, or several and no `near`."""
+    hits = [n for n in range(span[0], span[1] + 1) if lines[n - 1].strip().startswith(snippet)]
+    if not hits:
+        raise Unresolved(f"no line starting {snippet!r}")
+    if near is None:
+        if len(hits) > 1:
+            raise Unresolved(f"{len(hits)} lines start {snippet!r} (lines {hits}): quote more of the line")
+        return hits[0]
+    after = [n for n in hits if n > near]
+    return after[0] if after else hits[-1]
+
+
+def resolve(entry: dict, root: Path | None = None) -> tuple[set[str], set[tuple[str, int]]]:
+    """A listed entry's branches today, as (arcs `module:a->b`, lines (module, n) that never run),
+    found by its function and the source text it quotes, not by line numbers (they drift):
+    {"module", "function", "from", "to"} is one branch from the line starting `from` to the line
+    starting `to` (the one nearest after it; "exit" leaves the function);
+    {"module", "function", "from", "through"} says the lines from `from` through `through` (or the
+    function's end, "end") never run, and every branch out of them is listed."""
+    import ast
+
+    root = root or _port_dir()
+    src = (root / entry["module"]).read_text()
+    lines = src.splitlines()
+    span = _function_span(ast.parse(src), entry["function"])
+    a = _find(lines, span, entry["from"])
+    if "to" in entry:
+        b = "exit" if entry["to"] == "exit" else _find(lines, span, entry["to"], near=a)
+        return {f"{entry['module']}:{a}->{b}"}, set()
+    b = span[1] if entry["through"] == "end" else _find(lines, span, entry["through"], near=a)
+    return set(), {(entry["module"], n) for n in range(a, b + 1)}
+
+
+def load_unreachable(path: Path = UNREACHABLE) -> list[dict]:
+    return json.loads(path.read_text())["branches"]
+
+
+def check_unreachable(cov, missed: list[str], entries: list[dict]) -> tuple[list[str], list[str]]:
+    """(problems, missed branches no entry explains). A problem is an entry that no longer
+    resolves, a listed branch the replay took, or a listed line it ran."""
+    problems: list[str] = []
+    missed_s = set(missed)
+    explained: set[str] = set()
+    never: set[tuple[str, int]] = set()
+    for e in entries:
+        label = f"{e['module']} {e['function']} from {e['from']!r}"
+        try:
+            arcs, lines = resolve(e)
+        except Unresolved as err:
+            problems.append(f"{label}: {err}")
+            continue
+        for arc in arcs:
+            if arc not in missed_s:
+                problems.append(f"{label}: {arc} is taken now (or is no branch): take it out of {UNREACHABLE.name}")
+        explained |= arcs
+        never |= lines
+    root = _port_dir()
+    data = cov.get_data()
+    for module in {m for m, _ in never}:
+        ran = set(data.lines(str(root / module)) or ())
+        reached = sorted(n for m, n in never if m == module and n in ran)
+        if reached:
+            problems.append(f"{module}: listed lines {reached} run now: take them out of {UNREACHABLE.name}")
+    for m in missed:
+        module, arc = m.split(":")
+        if int(arc.split("->")[0]) in {n for mm, n in never if mm == module}:
+            explained.add(m)
+    return problems, [m for m in missed if m not in explained]
+
+
+KERNEL_NAME = "coverage-kernel.json"  # beside the corpus it covers: tests/data/corpus/<runtime>/coverage-kernel.json
+KERNEL_FORMAT = "acconform.coverage-kernel/1"
+
+
+def kernel_file(runtime: str, corpus: Path | None = None) -> Path:
+    from acconform.oracle import default_corpus
+
+    return (corpus or default_corpus(runtime)) / KERNEL_NAME
+
+
+def report(runtime: str, cov, n: int, differing: int, seconds: float, workers: int, what: str, summary: bool = False):
+    """Print the per-module table (unless `summary`) and the summary line; (rows, missed, branches, taken, lines)."""
+    rows, missed = analyse(cov)
+    b = sum(r["branches"] for r in rows)
+    t = sum(r["taken"] for r in rows)
+    lines = table(rows)
+    if not summary:
+        print("\n".join(lines))
+    print(f"{runtime}: {n} records ({what}) replayed in {seconds:.0f} s ({workers} workers), {differing} differing; "
+          f"branch coverage of port/ {pct(t, b):.1f} % ({t} of {b}); {len(missed)} branches never taken")
+    return rows, missed, b, t, lines
+
+
+def _trace_kernel(a, every: list[str], workers: int) -> list[str] | None:
+    """Trace each of `every` (scene keys) on its own, cached in --cache; the greedy kernel of their arcs."""
+    arcs = load_arcs(a.cache, a.runtime) if a.cache else ([], {})
+    wanted = set(every)
+    arcs = (arcs[0], {k: m for k, m in arcs[1].items() if k in wanted})
+    todo = [k for k in every if k not in arcs[1]]
+    print(f"{a.runtime}: tracing {len(todo)} records on their own ({len(arcs[1])} cached)", file=sys.stderr)
+    if todo:
+        _, _, differing, _, traced = measure(a.runtime, a.corpus, None, 0, workers, keys=todo, per_record=True)
+        if differing:
+            print(f"corpus_coverage: {differing} records differ: fix the port before writing a kernel", file=sys.stderr)
+            return None
+        merge_arcs(arcs, traced)
+        for k in todo:  # a record that ran no port code (none should) still counts as traced
+            arcs[1].setdefault(k, 0)
+        if a.cache:
+            save_arcs(a.cache, a.runtime, arcs)
+    return greedy_kernel(arcs[1])
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--runtime", choices=("coreclr", "mono"), default="coreclr")
@@ -164,20 +458,82 @@ def main(argv=None) -> int:
     ap.add_argument("--json", type=Path, default=None)
     ap.add_argument("--missed", type=Path, default=None)
     ap.add_argument("--markdown", type=Path, default=None)
+    ap.add_argument("--summary", action="store_true", help="print the summary lines only, not the per-module table")
+    ap.add_argument("--kernel", action="store_true",
+                    help="replay only the coverage kernel; fail below its floor or when a listed-unreachable branch is taken")
+    ap.add_argument("--write-kernel", action="store_true",
+                    help="trace every record on its own, write the greedy kernel and the floor it measures")
+    ap.add_argument("--keys-of", choices=("coreclr", "mono"), default=None,
+                    help="with --write-kernel: take the other runtime's kernel records instead of tracing")
+    ap.add_argument("--with", dest="with_shards", nargs="*", default=[], metavar="SHARD",
+                    help="with --write-kernel -n: every record of these shards is a candidate too")
+    ap.add_argument("--cache", type=Path, default=None,
+                    help="with --write-kernel: per-record arcs kept here between runs (records already traced on "
+                         "today's port/ are not traced again)")
     a = ap.parse_args(argv)
     try:
         import coverage  # noqa: F401
     except ImportError:
         print("corpus_coverage: coverage.py is not installed (pip install coverage)", file=sys.stderr)
         return 2
-    cov, n, differing, seconds = measure(a.runtime, a.corpus, a.n, a.seed, max(1, a.workers))
-    rows, missed = analyse(cov)
-    b = sum(r["branches"] for r in rows)
-    t = sum(r["taken"] for r in rows)
-    lines = table(rows)
-    print("\n".join(lines))
-    print(f"{a.runtime}: {n} records replayed in {seconds:.0f} s ({a.workers} workers), {differing} differing; "
-          f"branch coverage of port/ {pct(t, b):.1f} % ({t} of {b}); {len(missed)} branches never taken")
+    workers = max(1, a.workers)
+    kfile = kernel_file(a.runtime, a.corpus)
+    if a.write_kernel:
+        from acconform.oracle import default_corpus
+        from acconform.oracle.recorded import RecordedOracle
+
+        corpus = a.corpus or default_corpus(a.runtime)
+        oracle = RecordedOracle(corpus)
+        every = sorted(oracle.index())
+        if a.n is not None:
+            # the candidates: a stratified sample, the fast lane's sample, the records already traced
+            # (--cache) and every record of the --with shards
+            sample = corpus / "fast-sample.json"
+            cached = set(load_arcs(a.cache, a.runtime)[1]) if a.cache else set()
+            shards = {str(Path(w).resolve()) for w in a.with_shards}
+            every = sorted({e.key for e in oracle.select(n=a.n, seed=a.seed)}
+                           | ({r[0] for r in json.loads(sample.read_text())["records"]} if sample.exists() else set())
+                           | (cached & set(every))
+                           | {e.key for e in oracle.entries if str(Path(e.where.rsplit(" line ", 1)[0]).resolve()) in shards})
+        if a.keys_of:  # the same scenes as another runtime's kernel (the corpora pair up by scene key)
+            keys = json.loads(kernel_file(a.keys_of).read_text())["keys"]
+        else:
+            keys = _trace_kernel(a, every, workers)
+            if keys is None:
+                return 1
+        kfile.write_text(json.dumps({"format": KERNEL_FORMAT, "runtime": a.runtime, "keys": keys}) + "\n")
+        # the kernel's own figure, from a fresh process: this one has imported port/ already, so what
+        # runs at import would not be measured again
+        import subprocess
+
+        out = Path(tempfile.mkdtemp(prefix="acconform-kernel-")) / "kernel.json"
+        args = [sys.executable, __file__, "--runtime", a.runtime, "--kernel", "--json", str(out)]
+        if a.corpus:
+            args += ["--corpus", str(a.corpus)]
+        subprocess.run(args, check=False)
+        got = json.loads(out.read_text())
+        import math
+
+        n, differing, seconds, b, t = got["records"], got["differing"], got["seconds"], got["branches"], got["taken"]
+        rows, missed = got["modules"], got["missed"]
+        lines = table(rows)
+        floor = math.floor(pct(t, b) * 10) / 10
+        kfile.write_text(json.dumps({
+            "format": KERNEL_FORMAT, "runtime": a.runtime, "port": port_hash(), "corpus_records": len(oracle.index()), "candidates": None if a.keys_of else len(every), "keys_of": a.keys_of,
+            "branches": b, "taken": t, "floor_percent": floor, "seconds": round(seconds), "keys": keys}, indent=1) + "\n")
+        print(f"{kfile}: {len(keys)} records" + (f" ({a.keys_of}'s kernel)" if a.keys_of else
+              f", taking every arc the {len(every)} records traced take") + f"; floor {floor:.1f} %")
+    else:
+        keys = None
+        if a.kernel:
+            if not kfile.exists():
+                print(f"corpus_coverage: no coverage kernel at {kfile}: write one with --write-kernel", file=sys.stderr)
+                return 2
+            kernel = json.loads(kfile.read_text())
+            keys = kernel["keys"]
+        cov, n, differing, seconds, _ = measure(a.runtime, a.corpus, a.n, a.seed, workers, keys=keys)
+        rows, missed, b, t, lines = report(a.runtime, cov, n, differing, seconds, workers,
+                                           "the coverage kernel" if a.kernel else "the corpus", a.summary)
     if a.json:
         a.json.write_text(json.dumps({"runtime": a.runtime, "records": n, "differing": differing, "seconds": seconds,
                                       "branches": b, "taken": t, "modules": rows, "missed": missed}, indent=1) + "\n")
@@ -185,7 +541,23 @@ def main(argv=None) -> int:
         a.missed.write_text("".join(m + "\n" for m in missed))
     if a.markdown:
         a.markdown.write_text("\n".join(lines) + "\n")
-    return 1 if differing else 0
+    if differing:
+        return 1
+    if a.kernel and "floor_percent" in kernel:
+        failed = False
+        problems, unexplained = check_unreachable(cov, missed, load_unreachable())
+        print(f"{len(missed) - len(unexplained)} of the {len(missed)} branches never taken are listed as beyond ACE's "
+              f"reach ({UNREACHABLE.relative_to(UNREACHABLE.parents[2])}); {len(unexplained)} are not listed yet")
+        for problem in problems:
+            print(f"FAIL: {problem}")
+            failed = True
+        if pct(t, b) < kernel["floor_percent"]:
+            print(f"FAIL: branch coverage of port/ by the corpus fell to {pct(t, b):.1f} %, below the recorded floor "
+                  f"{kernel['floor_percent']:.1f} % ({kfile}); reach the branches again, or if port/ changed, rewrite "
+                  f"the kernel: python benchmarks/corpus_coverage.py --runtime {a.runtime} --write-kernel")
+            failed = True
+        return 1 if failed else 0
+    return 0
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 """Print the mutation check's figures: per planted bug, caught or not, scenes to find it, shrunk size.
 
     python tests/runner/mutation_report.py [-j 2] [--budget 1500] [--seed 0] [--only NAME,...] [--json FILE]
-    python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [-j 2] [--only ...]
+    python tests/runner/mutation_report.py --corpus DIR [--runtime mono] [--kernel] [-j 2] [--only ...]
     ACE_ASSEMBLY=... python tests/runner/mutation_report.py --live 4000 [--only ...]
     python tests/runner/mutation_report.py --ticks [--runtime coreclr] [--only ...]
     python tests/runner/mutation_report.py --fast-lane 600 [--lane-tests tests/port,...] [--lane-workers 1 -j 2] [--only ...]
@@ -9,7 +9,8 @@
 Runs the same hunt as test_mutations.py (mutants.hunt: one worker per mutant, no example
 database), mutants spread over -j processes. With --corpus, generates nothing: replays the
 recorded corpus through each mutant against ACE's recorded answers (mutants.corpus_kill) and
-says which mutants the corpus alone kills. With --live N, each mutant is the implementation
+says which mutants the corpus alone kills (--kernel: the corpus's coverage kernel first,
+benchmarks/corpus_coverage.py's, and the whole corpus only for the mutants it leaves). With --live N, each mutant is the implementation
 under test (tests/impl/planted_impl.py, --impl) in `acconform check -n N` against live ACE (the
 configured ACE_ASSEMBLY), one worker, no example database, stopping at its first difference.
 With --fast-sample, each mutant replays only the fast lane's differential sample
@@ -46,8 +47,8 @@ def _one(args):
 
 
 def _replay(args):
-    i, corpus, runtime, seed = args
-    return corpus_kill(i, corpus, runtime, seed)
+    i, corpus, runtime, seed = args[:4]
+    return corpus_kill(i, corpus, runtime, seed, only=args[4] if len(args) > 4 else None)
 
 
 def _sample_replay(args):
@@ -96,6 +97,8 @@ def main(argv=None) -> int:
     p.add_argument("--live", type=int, default=0, metavar="N", help="a live campaign of N cases per mutant instead")
     p.add_argument("--runtime", default="mono", help="with --corpus or --ticks: the records' runtime (mono or coreclr)")
     p.add_argument("--ticks", action="store_true", help="replay the tick records through the tick-loop mutants")
+    p.add_argument("--kernel", action="store_true",
+                   help="with --corpus: the corpus's coverage-kernel.json records first, the whole corpus for their survivors")
     a = p.parse_args(argv)
     names = [m.name for m in MUTATIONS]
     unknown = [n for n in a.only.split(",") if n and n not in names]
@@ -222,7 +225,20 @@ def _ticks_report(picked, a) -> int:
 
 
 def _corpus_report(picked, a) -> int:
-    rows = _rows(_replay, [(i, a.corpus, a.runtime, a.seed) for i in picked], a)
+    if a.kernel:
+        # the corpus's coverage kernel first (a few hundred records taking the branches the corpus takes):
+        # what it kills the corpus kills; only its survivors replay every record
+        kernel = json.loads((Path(a.corpus) / "coverage-kernel.json").read_text())["keys"]
+        first = {r["name"]: r for r in _rows(_replay, [(i, a.corpus, a.runtime, a.seed, kernel) for i in picked], a)}
+        left = [i for i in picked if not first[MUTATIONS[i].name]["killed"]]
+        print(f"{len(picked) - len(left)}/{len(picked)} killed by the coverage kernel's {len(kernel)} records; "
+              f"the other {len(left)} replay the whole corpus", flush=True)
+        rest = {r["name"]: r for r in _rows(_replay, [(i, a.corpus, a.runtime, a.seed) for i in left], a)}
+        rows = [rest.get(MUTATIONS[i].name) or {**first[MUTATIONS[i].name], "records_to_kill": "kernel"} for i in picked]
+        if a.json:
+            Path(a.json).write_text(json.dumps(rows, indent=1))
+    else:
+        rows = _rows(_replay, [(i, a.corpus, a.runtime, a.seed) for i in picked], a)
     print(f"{sum(r['killed'] for r in rows)}/{len(rows)} killed by the corpus replay alone ({a.corpus}, {a.runtime})")
     print(f"{'mutant':42} {'killed':>6} {'after':>6}")
     for r in rows:

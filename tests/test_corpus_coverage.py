@@ -1,0 +1,72 @@
+"""Branch coverage of port/ by the recorded corpus alone (issue 24): each runtime's coverage kernel
+(tests/data/corpus/<runtime>/coverage-kernel.json, a subset of the corpus taking every branch the
+records traced to build it take) replayed under coverage.py stays at or above the floor recorded
+beside it, and every branch listed as beyond ACE's reach (tests/data/unreachable-branches.json)
+still resolves in today's source and is still not taken."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPT = ROOT / "benchmarks" / "corpus_coverage.py"
+sys.path.insert(0, str(SCRIPT.parent))
+
+import corpus_coverage  # noqa: E402
+
+
+def test_every_listed_unreachable_branch_resolves_in_todays_source_with_its_reason():
+    entries = corpus_coverage.load_unreachable()
+    assert entries
+    seen = set()
+    for e in entries:
+        assert e.get("reason") and e.get("ace"), f"{e['module']} {e['function']}: give the reason and ACE's lines"
+        assert ("to" in e) != ("through" in e), f"{e['module']} {e['function']}: an entry has `to` or `through`"
+        arcs, lines = corpus_coverage.resolve(e)  # raises naming the snippet it cannot find
+        assert arcs or lines
+        key = (frozenset(arcs), frozenset(lines))
+        assert key not in seen, f"{e['module']} {e['function']} from {e['from']!r} is listed twice"
+        seen.add(key)
+
+
+def test_an_entry_is_found_by_its_function_and_quoted_source_not_by_line_numbers(tmp_path):
+    (tmp_path / "m.py").write_text("def f(x):\n    if x:\n        return 1\n    return 2\n")
+    entry = {"module": "m.py", "function": "f", "from": "if x:", "to": "return 1"}
+    assert corpus_coverage.resolve(entry, tmp_path) == ({"m.py:2->3"}, set())
+    # lines inserted above the function move it; the entry still names the same branch
+    (tmp_path / "m.py").write_text("import os\n\n\ndef f(x):\n    if x:\n        return 1\n    return 2\n")
+    assert corpus_coverage.resolve(entry, tmp_path) == ({"m.py:5->6"}, set())
+    region = {"module": "m.py", "function": "f", "from": "return 1", "through": "end"}
+    assert corpus_coverage.resolve(region, tmp_path) == (set(), {("m.py", 6), ("m.py", 7)})
+    with pytest.raises(corpus_coverage.Unresolved, match="no line starting 'if y:'"):
+        corpus_coverage.resolve({**entry, "from": "if y:"}, tmp_path)
+    with pytest.raises(corpus_coverage.Unresolved, match="no function g"):
+        corpus_coverage.resolve({**entry, "function": "g"}, tmp_path)
+
+
+@pytest.mark.parametrize("runtime", ["coreclr", "mono"])
+def test_each_runtime_has_a_coverage_kernel_with_a_floor(runtime):
+    doc = json.loads(corpus_coverage.kernel_file(runtime).read_text())
+    assert doc["format"] == corpus_coverage.KERNEL_FORMAT and doc["runtime"] == runtime
+    assert 0 < len(doc["keys"]) < doc["corpus_records"]
+    assert 0 < doc["floor_percent"] <= 100 * doc["taken"] / doc["branches"]
+
+
+def test_the_kernel_greedily_covers_every_arc_with_few_records():
+    masks = {"a": 0b0011, "b": 0b0110, "c": 0b1100, "d": 0b1111, "e": 0b0001}
+    assert corpus_coverage.greedy_kernel(masks) == ["d"]
+    masks = {"a": 0b0011, "b": 0b0110, "c": 0b1100, "e": 0b0001}
+    assert corpus_coverage.greedy_kernel(masks) == ["a", "c"]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("runtime", ["coreclr", "mono"])
+def test_the_corpus_keeps_its_branch_coverage_and_takes_no_listed_unreachable_branch(runtime):
+    pytest.importorskip("coverage", reason="coverage.py measures the replay (pip install coverage)")
+    r = subprocess.run([sys.executable, str(SCRIPT), "--kernel", "--runtime", runtime],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-3000:]
+    assert "branch coverage of port/" in r.stdout
