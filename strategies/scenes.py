@@ -19,6 +19,7 @@ from acconform.scene import (IDENTITY, ContactPlane, CylSphereShape, Frame, Move
 
 
 from . import boundaries as bd
+from . import buildings as bl
 from . import draws as dr
 from . import dungeon as dg
 from . import objects as ob
@@ -163,6 +164,8 @@ def scenes_of(draw, kind: str):
 def draw_scene(draw, kind: str) -> Scene:
     if kind == "indoor":
         return dg.draw_indoor(draw, draw(MOVER_SPHERES), step_heights)
+    if kind == "buildings":
+        return bl.draw_building(draw, draw(MOVER_SPHERES), step_heights)
     bx, by = draw(HOME)
     terrain_policy = draw(TERRAIN_POLICIES) if kind == "terrain" else "free"
     if terrain_policy == "exact_slope":
