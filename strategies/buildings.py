@@ -21,6 +21,8 @@ Policies (the scene's name is ``building:<policy>``):
 - "cellar": from the room down the stairs to the cellar;
 - "border": the house across a cell border, a landblock border or a landblock corner (its origin
   a little inside its landblock, the rest in the neighbours), approached from the neighbour;
+- "static": a static box in the doorway, half inside (placed by init_static_objs' chain, its cells
+  found through the building: the parts overloads), and the mover walking in toward it;
 - "placement": the mover placed (mover.placement, engine client) at a point inside the house
   under the id of the outdoor cell holding it.
 
@@ -36,7 +38,8 @@ from hypothesis import strategies as st
 from acconform.flags import CullMode, PhysicsState, SetPositionFlags, TransientState
 from acconform.numerics import to_f32
 from acconform.scene import (OUTSIDE_CELL, PORTAL_EXACT_MATCH, PORTAL_SIDE_BIT, BSPShape, Building, BuildingPortalRec,
-                             ContactPlane, Frame, Landblock, Mover, Placement, PlaneRec, PolygonRec, Position, Scene)
+                             ContactPlane, Frame, Landblock, Mover, Placement, PlaneRec, PolygonRec, Position, Scene,
+                             StaticObject)
 
 from . import draws as dr
 from . import dungeon as dg
@@ -45,7 +48,11 @@ from .dungeon import Door, Piece, quad_z, rect_x, rect_y
 from .terrain import BLOCK, CELL, cell_of, split_global
 
 POLICIES = st.sampled_from(("in", "in", "in", "out", "out", "wall", "along", "porch", "cellar", "border", "border",
-                            "placement"))
+                            "placement", "static"))
+# a static box standing in the doorway, half in, half out (its placement reaches the building's cells
+# through the parts overloads): its size and how far in it stands
+STATIC_SIZES = dr.f32(0.2, 1.5)
+STATIC_DEPTHS = st.sampled_from((0.0, 0.0, 0.3, -0.3, 1.0))
 HOME_BLOCKS = st.sampled_from(((0xA9, 0xB4), (0x12, 0x34), (0x7F, 0x80)))
 GROUND_INDEX = dr.ints(0, 60)
 WALLS = dr.OneOf(st.sampled_from((0.1, 0.2, 0.3, 0.05)), dr.f32(0.02, 0.6))
@@ -105,17 +112,13 @@ def house_point(d: dg.Dungeon, x: float, y: float, z: float) -> tuple[float, flo
     return (d.origin[0] + rx, d.origin[1] + ry, d.origin[2] + z)
 
 
-def _landblocks(home: tuple[int, int], ground: int, extra=()) -> tuple[Landblock, ...]:
-    """The home landblock and its neighbours (all flat at height index `ground`): every block the
-    scene may reach, so that a path never leaves the defined landblocks."""
+def _landblocks(home: tuple[int, int], ground: int, neighbours: bool) -> tuple[Landblock, ...]:
+    """The home landblock, and with `neighbours` the three toward -x and -y (a "border" house reaches
+    back into them), all flat at height index `ground`."""
     bx, by = home
-    blocks = []
-    for dx in (-1, 0, 1):
-        for dy in (-1, 0, 1):
-            x, y = bx + dx, by + dy
-            if 0 <= x <= 0xFE and 0 <= y <= 0xFE:
-                blocks.append(Landblock((x << 24) | (y << 16) | 0xFFFF, (ground,) * 81, (0,) * 81))
-    return tuple(blocks)
+    reach = ((0, 0), (-1, 0), (0, -1), (-1, -1)) if neighbours else ((0, 0),)
+    return tuple(Landblock(((bx + dx) << 24) | ((by + dy) << 16) | 0xFFFF, (ground,) * 81, (0,) * 81)
+                 for dx, dy in reach)
 
 
 def _outdoor_position(home, p, orientation=(1.0, 0.0, 0.0, 0.0)) -> Position:
@@ -261,6 +264,12 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
                   state=state,
                   transient_state=(int(TransientState.Contact) | int(TransientState.OnWalkable)) if contact else 0,
                   contact_plane=contact, placement=placement)
+    objects = ()
+    if policy == "static":
+        size = draw(STATIC_SIZES)
+        at = tuple(to_f32(c) for c in house_point(d, to_f32(draw(STATIC_DEPTHS)), 0.0, 0.0))
+        where = _outdoor_position(home, at, dg.yaw_quat(yaw))
+        objects = (StaticObject(0x70000000, where, sh.box(size, size, size)),)
     name = f"building:{policy}" + ("" if state & int(PhysicsState.EdgeSlide) else ":no-edge-slide")
-    return Scene(_landblocks(home, ground_index), mover, (), engine_mode=mode, name=name,
+    return Scene(_landblocks(home, ground_index, policy == "border"), mover, objects, engine_mode=mode, name=name,
                  environments=(built.environment,), env_cells=built.env_cells, buildings=(building,))
