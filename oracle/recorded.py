@@ -64,6 +64,8 @@ def scene_key(scene: Scene) -> str:
 
 
 def scene_kind(scene: Scene) -> str:
+    if scene.buildings:
+        return "buildings"
     if scene.env_cells:
         return "indoor"
     kinds = {o.shape.kind for o in scene.objects}

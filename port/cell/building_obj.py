@@ -62,8 +62,10 @@ class BuildingObj(PhysicsObj):
             transition.collision_info.collided_with_environment = True
 
         if transition.trace is not None:
-            transition.trace["building:collisions" if transition_state == TransitionState.OK
-                             else "building:collided"] += 1
+            if transition_state == TransitionState.OK:
+                transition.trace["building:collisions"] += 1
+            else:
+                transition.trace["building:collided"] += 1
         return transition_state
 
     @anchor("CBuildingObj::find_building_transit_cells",
