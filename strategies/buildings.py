@@ -172,8 +172,9 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
         oy = to_f32(inset) if border in ("landblock y", "corner") else to_f32(BLOCK / 2)
         if border == "cell":
             ox = to_f32(4 * CELL + inset)
-        # a house yawed toward -x / -y reaches back over the border into the neighbour
-        yaw = draw(st.sampled_from((180.0, 225.0, 200.0, 270.0, 135.0)))
+        # a house yawed toward -x / -y reaches back over the border into the neighbour; one yawed
+        # 0 / 90 has its door toward the neighbour, so the mover comes from there
+        yaw = draw(st.sampled_from((0.0, 0.0, 90.0, 10.0, 180.0, 225.0, 200.0, 270.0, 135.0)))
     else:
         ox, oy = draw(dg.ORIGIN_XY), draw(dg.ORIGIN_XY)
     origin = (ox, oy, to_f32(ground + lift))

@@ -37,7 +37,8 @@ RULES = {
     "along-shell": lambda s, o, t: s.name.startswith("building:along") and t["building:collided"] > 0,
     "into-wall-beside-door": lambda s, o, t: s.name.startswith("building:wall") and t["building:collided"] > 0
     and o.cell & 0xFFFF < 0x100,
-    "down-cellar-stairs": lambda s, o, t: s.name.startswith("building:cellar") and o.cell & 0xFFFF == 0x103,
+    "down-cellar-stairs": lambda s, o, t: s.name.startswith("building:cellar") and o.cell & 0xFFFF in (0x102, 0x103)
+    and not o.error and o.origin[2] < s.mover.begin.frame.origin[2] - 0.1,
     "border-from-neighbour": lambda s, o, t: s.name.startswith("building:border")
     and s.mover.begin.cell >> 16 != s.buildings[0].landblock >> 16 and t["building:transit_cell"] > 0,
     "placement-into-building": lambda s, o, t: s.name.startswith("building:placement") and o.placement is not None
