@@ -56,10 +56,19 @@ structure index, the frame, the portals (flags, polygon, other cell, other porta
 cells, and its stabs: the scene's static objects whose position.cell is this cell, in scene order,
 each the id `static_records` gives it and the object's frame (Entity/Stab.cs); no restriction
 object. A `LandblockInfo` (cell DAT, ``0xXXYYFFFE``; FileTypes/LandblockInfo.cs) is written for
-each landblock that has EnvCells: NumCells = their number (ACE's AdjustCell loads 0x0100 ..
-0x0100 + NumCells - 1 to find the cell holding a point), no objects, no buildings, PackMask 0.
-The landblock's CellLandblock keeps HasObjects 0 (oracle/pack.landblock_bytes), so ACE's Landblock
-constructor reads no Info: with no stabs and no buildings an Info would add nothing to PostInit.
+each landblock that has EnvCells or buildings: NumCells = the number of its EnvCells (ACE's
+AdjustCell loads 0x0100 .. 0x0100 + NumCells - 1 to find the cell holding a point), no objects,
+its buildings, PackMask 0. A landblock's CellLandblock says HasObjects exactly when it has
+buildings (`has_objects`; oracle/pack.landblock_bytes writes it), so ACE's Landblock constructor
+reads the Info of a landblock with buildings and PostInit builds them (init_buildings); a
+dungeon's Info is read only by AdjustCell, as before.
+
+**Buildings** (`building_records(building, index)`, in the Info `building_info`): the shell is a
+GfxObj, id ``0x01FF0000 + index`` (`BUILDING_GFX_OBJ_BASE`; index = the building's place in
+the scene's list), written as a BSP static's (`gfx_obj_physics`); its BuildInfo (Entity/BuildInfo.cs)
+holds that id as ModelId, the frame, NumLeaves and the portals, each a CBldPortal
+(Entity/CBldPortal.cs: flags, OtherCellId, OtherPortalId, the stab count and stabs as ushorts, then
+zero bytes to the next multiple of 4 counted from the record's start, as AlignBoundary reads).
 """
 
 from __future__ import annotations
@@ -69,12 +78,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .scene import (BSPLeaf, BSPShape, CellBSPLeaf, CellStructRec, CylSphereShape, EnvCell, Environment, Mover,
+from .scene import (BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, CylSphereShape, EnvCell, Environment, Mover,
                     PolygonRec, Scene, SphereShape, StaticObject, ENV_CELL_FIRST, newell_normal)
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
-MAX_OBJECTS = 0xFFFFFF  # ids stay inside their DAT type's range
+MAX_OBJECTS = 0xFEFFFF  # ids stay inside their DAT type's range, below the buildings'
+BUILDING_GFX_OBJ_BASE = 0x01FF0000  # GfxObj id of building 0's shell
+MAX_BUILDINGS = 0xFFFF
 MOVER_GFX_OBJ_ID = 0x01000000  # the mover's part
 MOVER_SETUP_ID = 0x02000000  # the mover's Setup
 
@@ -427,10 +438,43 @@ def env_cell_record(cell: EnvCell, stabs) -> DatRecord:
     return DatRecord(cell.id, "EnvCell", b"".join(out))
 
 
-def landblock_info_record(block: int, num_cells: int) -> DatRecord:
-    """FileTypes/LandblockInfo for landblock `block` (its high word): NumCells, no objects, no buildings, PackMask 0."""
+def building_records(building: Building, index: int) -> ObjectRecords:
+    """The DAT record building number `index` (0-based, scene order) is made from: its shell's GfxObj."""
+    if not 0 <= index < MAX_BUILDINGS:
+        raise ValueError(f"building index {index} outside 0..{MAX_BUILDINGS - 1}")
+    gfx_id = BUILDING_GFX_OBJ_BASE + index
+    return ObjectRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, building.shape)),))
+
+
+def building_info(building: Building, index: int, out: list, length: int) -> int:
+    """Entity/BuildInfo after `length` bytes of the record: ModelId, Frame, NumLeaves, the portals
+    (a uint32 count, then each CBldPortal aligned to 4 from the record's start). Returns the new length."""
+    head = _u32.pack(building_records(building, index).did) + frame(building.frame) + _u32.pack(building.num_leaves)
+    head += _u32.pack(len(building.portals))
+    out.append(head)
+    length += len(head)
+    for p in building.portals:
+        body = struct.pack("<4H", p.flags, p.other_cell, p.other_portal, len(p.stab_list))
+        body += b"".join(_u16.pack(c) for c in p.stab_list)
+        out.append(body)
+        length = _align(out, length + len(body))
+    return length
+
+
+def landblock_info_record(block: int, num_cells: int, buildings=()) -> DatRecord:
+    """FileTypes/LandblockInfo for landblock `block` (its high word): NumCells, no objects, its buildings
+    ((index in the scene, Building) pairs), PackMask 0."""
     info_id = (block << 16) | LANDBLOCK_INFO
-    return DatRecord(info_id, "LandblockInfo", struct.pack("<IIIHH", info_id, num_cells, 0, 0, 0))
+    out = [struct.pack("<IIIHH", info_id, num_cells, 0, len(buildings), 0)]
+    length = 16
+    for index, building in buildings:
+        length = building_info(building, index, out, length)
+    return DatRecord(info_id, "LandblockInfo", b"".join(out))
+
+
+def has_objects(scene: Scene, landblock_id: int) -> bool:
+    """CellLandblock.HasObjects of a scene landblock (0xXXYYFFFF): whether it has buildings."""
+    return any(b.landblock == landblock_id for b in scene.buildings)
 
 
 def env_cell_stabs(scene: Scene) -> dict[int, list]:
@@ -443,14 +487,20 @@ def env_cell_stabs(scene: Scene) -> dict[int, list]:
 
 
 def cell_dat_records(scene: Scene) -> tuple[DatRecord, ...]:
-    """The scene's cell DAT records beside its CellLandblocks: each EnvCell, then each of their
-    landblocks' LandblockInfo."""
+    """The scene's cell DAT records beside its CellLandblocks: each EnvCell, then the LandblockInfo of
+    each landblock with EnvCells (in the order of their first cell), then of each other landblock
+    with buildings (in the order of their first building)."""
     stabs = env_cell_stabs(scene)
     records = [env_cell_record(c, stabs.get(c.id, ())) for c in scene.env_cells]
     counts: dict[int, int] = {}
     for c in scene.env_cells:
         counts[c.id >> 16] = counts.get(c.id >> 16, 0) + 1
-    records += [landblock_info_record(block, n) for block, n in counts.items()]
+    buildings: dict[int, list] = {}
+    for index, b in enumerate(scene.buildings):
+        buildings.setdefault(b.landblock >> 16, []).append((index, b))
+    for block in buildings:
+        counts.setdefault(block, 0)
+    records += [landblock_info_record(block, n, buildings.get(block, ())) for block, n in counts.items()]
     return tuple(records)
 
 
@@ -459,6 +509,12 @@ def environment_records(scene: Scene) -> tuple[DatRecord, ...]:
     return tuple(environment_record(e) for e in scene.environments)
 
 
-__all__ = ["cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
+def building_model_records(scene: Scene) -> tuple[DatRecord, ...]:
+    """The scene's buildings' shells (portal DAT), in scene order."""
+    return tuple(r for index, b in enumerate(scene.buildings) for r in building_records(b, index).records)
+
+
+__all__ = ["building_info", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
+           "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
            "env_cell_stabs", "mover_records", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF", "TAG_PORT"]

@@ -48,7 +48,7 @@ from .outcome import Outcome
 from .scene import Scene
 
 PROTOCOL = "acconform.protocol/1"
-KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor")
+KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
 MODES: tuple[str, ...] = ("exact", "fast")
 
 # Verdict prefixes: the `error` of the outcome the harness records when the implementation fails.
@@ -79,6 +79,9 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "ticks": (lambda s: s.ticks is not None,
               "a tick scene: ACE's per-tick update (update_object or the RequestPos path) moves the mover once per "
               "step, answered with one TickState per step (scene/4, outcome/4)"),
+    "buildings": (lambda s: bool(s.buildings),
+                  "buildings: a landblock's LandblockInfo with BuildInfos (a shell GfxObj, its frame and portals into "
+                  "its EnvCells), built by ACE's Landblock.init_buildings (scene/5)"),
 }
 
 

@@ -1,8 +1,8 @@
 """The scene: everything one transition needs, as immutable records with a versioned JSON form.
 
-A scene is what both the port and the oracle take. Format ``acconform.scene/4`` (README's
-"Scene format" section documents every field); ``/3``, ``/2`` and ``/1`` files still read (a /3
-scene is a /4 scene without ``ticks``; a /2 scene is a /3 scene whose mover has no ``placement``; a
+A scene is what both the port and the oracle take. Format ``acconform.scene/5`` (README's
+"Scene format" section documents every field); ``/4``, ``/3``, ``/2`` and ``/1`` files still read
+(a /4 scene is a /5 scene without ``buildings``; a /3 scene is a /4 scene without ``ticks``; a /2 scene is a /3 scene whose mover has no ``placement``; a
 /1 scene is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with
 terrain). A scene with ``ticks`` is a tick scene: the mover has no ``end``, and ACE's per-tick
 update (`Ticks.driver`) moves it once per step (issue 19). A scene is written in the
@@ -21,7 +21,8 @@ from .codec import Reader, dumps, parse_json_text, write_f32, write_f64, write_i
 from .errors import InvalidScene
 from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
-FORMAT = "acconform.scene/4"
+FORMAT = "acconform.scene/5"
+FORMAT_V4 = "acconform.scene/4"  # what a scene with ticks and no buildings is written as
 FORMAT_V3 = "acconform.scene/3"  # what a scene with a placement and no ticks is written as
 FORMAT_V2 = "acconform.scene/2"  # what a scene without a placement is written as (every /2 reader reads it)
 FORMAT_V1 = "acconform.scene/1"  # what an outdoor scene is written as (every /1 reader reads it)
@@ -476,6 +477,67 @@ def _low_word(r: Reader) -> int:
 
 
 @dataclass(frozen=True, slots=True)
+class BuildingPortalRec:
+    """DatLoader CBldPortal: a building's portal into one of its EnvCells (the landblock's)."""
+
+    other_cell: int    # OtherCellId: the EnvCell's low word (0x0100..)
+    other_portal: int  # OtherPortalId: the index of that cell's portal (0xFFFF: none; ACE skips it)
+    flags: int = 0     # PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT (PortalSide is true when the bit is clear)
+    stab_list: tuple[int, ...] = ()  # StabList: low words of the EnvCells seen through it
+
+    def to_json(self):
+        return {"other_cell": f"0x{self.other_cell:04X}", "other_portal": self.other_portal, "flags": self.flags,
+                "stab_list": [f"0x{c:04X}" for c in self.stab_list]}
+
+    @staticmethod
+    def from_json(r: Reader) -> "BuildingPortalRec":
+        r.obj({"other_cell", "other_portal", "flags", "stab_list"})
+        other = _low_word(r["other_cell"])
+        if not ENV_CELL_FIRST <= other <= ENV_CELL_LAST:
+            r["other_cell"].fail(f"a building's portal leads into one of its EnvCells "
+                                 f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{other:04X}")
+        flags = r["flags"].int_(0, PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT) if r.given("flags") else 0
+        stabs = ()
+        if r.given("stab_list"):
+            stabs = tuple(_low_word(v) for v in r["stab_list"].list(max_count=0xFFFF))
+            for i, v in enumerate(stabs):
+                if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
+                    r["stab_list"][i].fail(f"a stab is an EnvCell's low word "
+                                           f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
+        return BuildingPortalRec(other, r["other_portal"].int_(0, 0xFFFF), flags, stabs)
+
+
+@dataclass(frozen=True, slots=True)
+class Building:
+    """A building of a landblock (DatLoader BuildInfo in its LandblockInfo): the shell, a GfxObj
+    with `shape` as its physics BSP, at `frame` in the landblock (0xXXYYFFFF), and its portals."""
+
+    landblock: int
+    frame: Frame
+    shape: BSPShape
+    portals: tuple[BuildingPortalRec, ...] = ()
+    num_leaves: int = 0
+
+    def to_json(self):
+        return {"landblock": write_id(self.landblock), **self.frame.to_json(), "shape": self.shape.to_json(),
+                "num_leaves": self.num_leaves, "portals": [p.to_json() for p in self.portals]}
+
+    @staticmethod
+    def from_json(r: Reader) -> "Building":
+        r.obj({"landblock", "origin", "orientation", "shape", "num_leaves", "portals"})
+        lb_id = r["landblock"].id_()
+        if lb_id & 0xFFFF != 0xFFFF:
+            r["landblock"].fail(f"a landblock id ends in FFFF (e.g. 0x{lb_id >> 16:04X}FFFF), got {write_id(lb_id)}")
+        frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
+        shape = _shape_from_json(r["shape"])
+        if not isinstance(shape, BSPShape):
+            r["shape"]["kind"].fail(f"a building's shell is a physics BSP (kind 'bsp'), got {shape.kind!r}")
+        portals = tuple(BuildingPortalRec.from_json(p) for p in r["portals"].list()) if r.given("portals") else ()
+        leaves = r["num_leaves"].int_(0, 0xFFFF) if r.given("num_leaves") else 0
+        return Building(lb_id, frame, shape, portals, leaves)
+
+
+@dataclass(frozen=True, slots=True)
 class StaticObject:
     id: int
     position: Position
@@ -741,6 +803,7 @@ class Scene:
     environments: tuple[Environment, ...] = ()
     env_cells: tuple[EnvCell, ...] = ()
     ticks: Ticks | None = None  # a tick scene: ACE's per-tick update moves the mover (scene/4)
+    buildings: tuple[Building, ...] = ()  # scene/5
 
     @property
     def indoor(self) -> bool:
@@ -749,9 +812,12 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/4 for ticks, /3 for a placement, /2 indoors, else /1)."""
-        if self.ticks is not None:
+        """The oldest format that holds the scene (/5 for buildings, /4 for ticks, /3 for a placement, /2
+        indoors, else /1)."""
+        if self.buildings:
             return FORMAT
+        if self.ticks is not None:
+            return FORMAT_V4
         if self.mover.placement is not None:
             return FORMAT_V3
         return FORMAT_V2 if self.indoor else FORMAT_V1
@@ -770,6 +836,8 @@ class Scene:
             d["environments"] = [e.to_json() for e in self.environments]
         if self.env_cells:
             d["env_cells"] = [c.to_json() for c in self.env_cells]
+        if self.buildings:
+            d["buildings"] = [b.to_json() for b in self.buildings]
         d["mover"] = self.mover.to_json()
         if self.ticks is not None:
             d["ticks"] = self.ticks.to_json()
@@ -787,11 +855,15 @@ class Scene:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         indoor = () if v1 else ("environments", "env_cells")
-        ticks_field = ("ticks",) if fmt == FORMAT else ()
+        ticks_field = ("ticks",) if fmt in (FORMAT_V4, FORMAT) else ()
+        buildings_field = ("buildings",) if fmt == FORMAT else ()
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3) and "ticks" in doc:
-            r["ticks"].fail(f"ticks need format {FORMAT!r} (older formats have no ticks)")
-        r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field})
-        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3):
+            r["ticks"].fail(f"ticks need format {FORMAT_V4!r} or later (older formats have no ticks)")
+        if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4) and "buildings" in doc:
+            r["buildings"].fail(f"buildings need format {FORMAT!r} (older formats have no buildings)")
+        r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field,
+               *buildings_field})
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.given("name") else ""
         mode = "server"
@@ -811,9 +883,10 @@ class Scene:
             environments = tuple(Environment.from_json(e) for e in r["environments"].list())
         if r.given("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
+        buildings = tuple(Building.from_json(b) for b in r["buildings"].list()) if r.given("buildings") else ()
         ticks = Ticks.from_json(r["ticks"]) if r.has("ticks") else None
-        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT), ticks=ticks is not None)
-        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks)
+        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT), ticks=ticks is not None)
+        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings)
         check_consistency(scene, path)
         return scene
 
@@ -848,6 +921,7 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         seen[lb.id] = i
     defined = {lb.id >> 16 for lb in scene.landblocks}
     env_cells = _check_indoor(scene, path, defined)
+    _check_buildings(scene, path, env_cells)
 
     def check_landblock(where: str, cell: int) -> None:
         if cell >> 16 not in defined:
@@ -961,6 +1035,37 @@ def _check_indoor(scene: Scene, path: str, defined: set[int]) -> dict[int, EnvCe
                                f"landblock {block:04X}'s EnvCells are numbered from 0x{ENV_CELL_FIRST:04X} without gaps "
                                f"(LandblockInfo.NumCells counts them): 0x{gap:04X} is missing")
     return cells
+
+
+def _check_buildings(scene: Scene, path: str, env_cells: dict[int, EnvCell]) -> None:
+    """A building stands on a landblock with terrain (its LandblockInfo is read because the
+    landblock's CellLandblock says HasObjects); each portal leads into an EnvCell of that landblock
+    the scene defines, names one of that cell's portals (or 0xFFFF, none), and its stab list names
+    EnvCells of that landblock the scene defines."""
+    by_id = {lb.id: lb for lb in scene.landblocks}
+    for i, b in enumerate(scene.buildings):
+        where = _p(path, f"buildings[{i}]")
+        lb = by_id.get(b.landblock)
+        if lb is None:
+            raise InvalidScene(f"{where}.landblock", f"landblock {b.landblock:08X} is not defined in landblocks")
+        if not lb.has_terrain:
+            raise InvalidScene(f"{where}.landblock", f"landblock {b.landblock:08X} has no terrain: a building stands "
+                                                     f"in one of its outdoor cells (give it heights and terrain)")
+        block = b.landblock & 0xFFFF0000
+        for k, portal in enumerate(b.portals):
+            cell = env_cells.get(block | portal.other_cell)
+            if cell is None:
+                raise InvalidScene(f"{where}.portals[{k}].other_cell",
+                                   f"EnvCell {block | portal.other_cell:08X} is not defined in env_cells (a building's "
+                                   f"portal leads into an EnvCell of its own landblock)")
+            if portal.other_portal != 0xFFFF and portal.other_portal >= len(cell.portals):
+                raise InvalidScene(f"{where}.portals[{k}].other_portal",
+                                   f"EnvCell {cell.id:08X} has {len(cell.portals)} portals, got {portal.other_portal} "
+                                   f"(0xFFFF names none)")
+            for m, stab in enumerate(portal.stab_list):
+                if block | stab not in env_cells:
+                    raise InvalidScene(f"{where}.portals[{k}].stab_list[{m}]",
+                                       f"EnvCell {block | stab:08X} is not defined in env_cells")
 
 
 def _check_defined(path: str, cell: int, env_cells: dict, why: str) -> None:

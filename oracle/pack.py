@@ -11,11 +11,11 @@ import struct
 from dataclasses import fields
 
 from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
-from ..dat import cell_dat_records, environment_records, mover_records, static_records
+from ..dat import building_model_records, cell_dat_records, environment_records, has_objects, mover_records, static_records
 from ..scene import DRIVERS, TICK_INPUTS, Landblock, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 7
+PACK_VERSION = 8
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -25,9 +25,10 @@ _3f = struct.Struct("<3f")
 _LB = struct.Struct("<II81H")
 
 
-def landblock_bytes(lb: Landblock) -> bytes:
-    """The CellLandblock DAT layout: Id, HasObjects 0, 81 terrain words, 81 heights, 4-byte aligned."""
-    return _LB.pack(lb.id | 0xFFFF, 0, *lb.terrain) + bytes(lb.heights) + b"\0"  # 251 bytes + 1
+def landblock_bytes(lb: Landblock, objects: bool = False) -> bytes:
+    """The CellLandblock DAT layout: Id, HasObjects (1 for a landblock with buildings: acconform.dat.has_objects),
+    81 terrain words, 81 heights, 4-byte aligned."""
+    return _LB.pack(lb.id | 0xFFFF, 1 if objects else 0, *lb.terrain) + bytes(lb.heights) + b"\0"  # 251 bytes + 1
 
 
 _last_table: list = [None, b""]  # the last land height table and its bytes (scenes mostly share one)
@@ -114,8 +115,8 @@ def pack_scene(scene: Scene) -> bytes:
            struct.pack("<i", len(scene.landblocks))]
     for lb in scene.landblocks:
         out.append(b"\xfc\0\0\0")  # 252: the length of every landblock_bytes
-        out.append(landblock_bytes(lb))
-    out += _record_list(environment_records(scene) + cell_dat_records(scene))
+        out.append(landblock_bytes(lb, has_objects(scene, lb.id | 0xFFFF)))
+    out += _record_list(environment_records(scene) + building_model_records(scene) + cell_dat_records(scene))
     out.append(struct.pack("<i", len(scene.objects)))
     for i, o in enumerate(scene.objects):
         out.append(_object(o, i))

@@ -70,8 +70,10 @@ def scene_kind(scene: Scene) -> str:
 
 
 def geometry_kind(scene: Scene) -> str:
-    """The kind of the scene's world (what an implementation's handshake lists): indoor with EnvCells,
-    bsp with a BSP object, obstacles with only spheres and cylspheres, else terrain."""
+    """The kind of the scene's world (what an implementation's handshake lists):
+    buildings with buildings, indoor with EnvCells, bsp with a BSP object, obstacles with only spheres and cylspheres, else terrain."""
+    if scene.buildings:
+        return "buildings"
     if scene.env_cells:
         return "indoor"
     kinds = {o.shape.kind for o in scene.objects}

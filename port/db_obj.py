@@ -1,6 +1,6 @@
-"""DBObj: GetEnvCell, GetGfxObj, GetSetup, GetEnvironment -- the DAT records the physics asks for by id (ACE's Physics/Common/DBObj.cs).
+"""DBObj: GetEnvCell, GetLandblockInfo, GetGfxObj, GetSetup, GetEnvironment -- the DAT records the physics asks for by id (ACE's Physics/Common/DBObj.cs).
 
-GetGfxObj, GetSetup and GetEnvironment read DatManager.PortalDat, GetEnvCell DatManager.CellDat;
+GetGfxObj, GetSetup and GetEnvironment read DatManager.PortalDat, GetEnvCell and GetLandblockInfo DatManager.CellDat;
 a run stands in for both with the DAT databases it fills from the scene (port/dat/portal_dat.py:
 the records acconform/dat.py wrote). GetEnvCell builds the physics EnvCell from the record, as
 ACE's does.
@@ -21,6 +21,7 @@ from .anchors import anchor, harness
 from .dat.env_cell import EnvCell as DatEnvCell
 from .dat.environment import Environment as DatEnvironment
 from .dat.gfx_obj import GfxObj as DatGfxObj
+from .dat.landblock_info import LandblockInfo
 from .dat.setup_model import SetupModel
 
 
@@ -33,6 +34,11 @@ def get_env_cell(cell_dat, portal_dat, file_id: int):
     env_cell = cell_dat.read_from_dat(file_id, DatEnvCell)
 
     return EnvCell.from_dat(env_cell, portal_dat)
+
+
+@anchor(None, "DBObj.cs:GetLandblockInfo")
+def get_landblock_info(cell_dat, file_id: int) -> LandblockInfo:
+    return cell_dat.read_from_dat(file_id, LandblockInfo)
 
 
 @anchor(None, "DBObj.cs:GetGfxObj")

@@ -185,18 +185,19 @@ class PhysicsObj:
         if self.part_array is not None:
             self.part_array.set_scale_internal(Vector3(scale, scale, scale))
 
-    @staticmethod
+    @classmethod
     @anchor("CPhysicsObj::CPhysicsObj", "PhysicsObj.cs:PhysicsObj()")
-    def create(mode, timer, server: bool = False) -> "PhysicsObj":
+    def create(cls, mode, timer, server: bool = False) -> "PhysicsObj":
         """``new PhysicsObj()``: ACE's defaults (Position cell 0 and identity frame,
         PhysicsGlobals.DefaultState, scale 1, default elasticity and friction, zero velocity,
         acceleration, omega, CachedVelocity and sliding normal, default(Plane) contact plane, an
         empty CellArray, UpdateTime and PhysicsTimer_CurrentTime from the clock `timer`, a
-        RequestPos when PhysicsEngine.Instance.Server (`server`))."""
+        RequestPos when PhysicsEngine.Instance.Server (`server`)). Called on a subclass (BuildingObj),
+        it makes that class's object, as `base()` does."""
         from .transition.cell_array import CellArray
 
         zero = mode.vec(0, 0, 0)
-        obj = PhysicsObj(id=0, state=int(DEFAULT_STATE), position=Position(0, AFrame.identity(mode)),
+        obj = cls(id=0, state=int(DEFAULT_STATE), position=Position(0, AFrame.identity(mode)),
                          velocity=zero, contact_plane=Plane(zero, mode.scalar(0.0)), sliding_normal=zero,
                          scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray(), acceleration=zero, omega=zero,
                          elasticity=mode.scalar(DEFAULT_ELASTICITY), friction=mode.scalar(DEFAULT_FRICTION),

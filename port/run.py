@@ -117,7 +117,7 @@ def place_mover(scene: Scene, mover: PhysicsObj, lscape: LScape, trace) -> Place
     )
 
 
-@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects, mover and Environments, and each static's did")
+@harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects, mover, Environments and buildings, and each static's did")
 def portal_dat_for(scene: Scene, mode, timer: PhysicsTimer | None = None) -> tuple[PortalDat, list[int]]:
     """The PortalDat (carrying the run's clock `timer`) and, per static object in scene order, the
     id makeObject takes."""
@@ -128,7 +128,7 @@ def portal_dat_for(scene: Scene, mode, timer: PhysicsTimer | None = None) -> tup
         dids.append(written.did)
         for dat_record in written.records:
             records[dat_record.id] = dat_record.data
-    for dat_record in environment_records(scene):
+    for dat_record in environment_records(scene) + dat.building_model_records(scene):
         records[dat_record.id] = dat_record.data
     return PortalDat(records, mode, scene.engine_mode == "server", timer), dids
 
@@ -232,19 +232,17 @@ def _run_quietly(scene: Scene, mode, trace) -> Outcome:
 
 
 def _run(scene: Scene, mode, trace) -> Outcome:
-    lscape = LScape(scene, mode)
+    # the clock: at the tick scene's start before anything is made (PhysicsObj() reads it)
+    timer = PhysicsTimer(scene.ticks.start if scene.ticks is not None else 0.0)
+    portal_dat, dids = portal_dat_for(scene, mode, timer)
+    lscape = LScape(scene, mode, portal_dat, cell_dat_for(scene, mode))
     try:
-        return _run_in(scene, mode, trace, lscape)
+        return _run_in(scene, mode, trace, lscape, timer, portal_dat, dids)
     finally:
         lscape.release()
 
 
-def _run_in(scene: Scene, mode, trace, lscape: LScape) -> Outcome:
-    # the clock: at the tick scene's start before anything is made (PhysicsObj() reads it)
-    timer = PhysicsTimer(scene.ticks.start if scene.ticks is not None else 0.0)
-    portal_dat, dids = portal_dat_for(scene, mode, timer)
-    lscape.portal_dat = portal_dat
-    lscape.cell_dat = cell_dat_for(scene, mode)
+def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, portal_dat: PortalDat, dids) -> Outcome:
     statics = [build_static(record, did, portal_dat, lscape) if record.position.cell & 0xFFFF < ENV_CELL_FIRST else None
                for record, did in zip(scene.objects, dids)]
     mover = build_mover(scene, portal_dat, lscape)

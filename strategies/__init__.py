@@ -10,7 +10,9 @@ strategies/objects.py; strategies/placement.py counts them per 1,000 scenes --
 or walls, floors, ramps, steps, platforms, posts, boxes, convex polygons scattered along a path), "obstacles"
 (spheres and cylspheres), "indoor" (dungeons of EnvCells joined by portals -- rooms, corridors,
 T-junctions, ramps at and around FloorZ, stairs, ledges, pits, narrow doorways, seams, turned cell
-frames, statics inside and across cells, portals to outside -- strategies/dungeon.py), "ticks"
+frames, statics inside and across cells, portals to outside -- strategies/dungeon.py), "buildings" (a house shell on terrain over EnvCells
+entered through the building's portal: doors barely wider than the mover, in and out, along the
+walls, porches, cellars, borders, a static in the doorway, placements inside -- strategies/buildings.py), "ticks"
 (any of those worlds with a timeline of ticks: falls, jumps, slides, sledding, presses, crossings,
 portals, quantum-exact clocks, threshold velocities, both drivers -- strategies/ticks.py). DEFAULT_KINDS
 is what the port supports today; grow it as the port does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.

@@ -19,6 +19,7 @@ from acconform.scene import (IDENTITY, ContactPlane, CylSphereShape, Frame, Move
 
 
 from . import boundaries as bd
+from . import buildings as bl
 from . import draws as dr
 from . import dungeon as dg
 from . import objects as ob
@@ -169,6 +170,8 @@ def draw_scene(draw, kind: str, policy: str | None = None) -> Scene:
     OBSTACLE_POLICIES or dungeon.POLICIES entry; strategies/ticks.py asks for ledges, stairs, walls)."""
     if kind == "indoor":
         return dg.draw_indoor(draw, draw(MOVER_SPHERES), step_heights, policy)
+    if kind == "buildings":
+        return bl.draw_building(draw, draw(MOVER_SPHERES), step_heights)
     bx, by = draw(HOME)
     terrain_policy = (policy or draw(TERRAIN_POLICIES)) if kind == "terrain" else "free"
     if terrain_policy == "exact_slope":

@@ -90,8 +90,8 @@ def test_unknown_flag_names_are_refused_listing_the_known_ones():
 
 
 def test_an_unknown_format_version_is_refused():
-    assert "format: unknown format version '5' (this acconform reads acconform.scene/4)" in refused(
-        scene_with(lambda d: d.__setitem__("format", "acconform.scene/5")))
+    assert "format: unknown format version '6' (this acconform reads acconform.scene/5)" in refused(
+        scene_with(lambda d: d.__setitem__("format", "acconform.scene/6")))
     assert "unknown format 'somethingelse/1'" in refused(scene_with(lambda d: d.__setitem__("format", "somethingelse/1")))
 
 

@@ -14,7 +14,7 @@ from acconform.case import parse_document
 from acconform.codec import Reader
 from acconform.errors import InvalidScene
 from acconform.flags import PhysicsState, TransientState
-from acconform.scene import FORMAT, FORMAT_V3, Frame, Position, Scene, Ticks, TickStep, validate_scene
+from acconform.scene import FORMAT_V4 as FORMAT, FORMAT_V3, Frame, Position, Scene, Ticks, TickStep, validate_scene
 
 ROOT = Path(__file__).parent.parent
 EXAMPLES = ROOT / "examples"
@@ -130,7 +130,7 @@ def test_a_scene_without_ticks_is_still_written_in_the_oldest_format_that_holds_
      "engine.mode: a tick scene needs engine mode client: in server mode the mover's change of cell goes through "
      "ACE's change_cell_server -> enter_cell_server"),
     (JUMP, lambda d: d.update(format="acconform.scene/3"),
-     "ticks: ticks need format 'acconform.scene/4' (older formats have no ticks)"),
+     "ticks: ticks need format 'acconform.scene/4' or later (older formats have no ticks)"),
     (JUMP, lambda d: d.pop("ticks"), "mover.end: missing required field"),
 ], ids=["unknown driver", "negative dt", "nan dt", "infinite dt", "dt a string", "no dt", "infinite start", "no start",
         "empty steps", "steps not a list", "clock overflow", "short vector", "vector out of float32", "unknown state flag",

@@ -36,7 +36,8 @@ def test_the_scene_schema_covers_every_field_a_scene_writes_and_the_bsp_tree_rec
 def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(generated):
     scene, _ = generated
     props = scene["properties"]
-    assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2", "acconform.scene/3", "acconform.scene/4"]}
+    assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2", "acconform.scene/3", "acconform.scene/4",
+                                        "acconform.scene/5"]}
     assert {"environments", "env_cells"} <= set(props) and not {"environments", "env_cells"} & set(scene["required"])
     landblock = props["landblocks"]["items"]
     assert landblock["required"] == ["id"] and {"heights", "terrain"} <= set(landblock["properties"])
@@ -45,6 +46,15 @@ def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(g
     assert {"polygon", "other_cell", "other_portal", "flags"} <= set(cell["portals"]["items"]["properties"])
     structure = props["environments"]["items"]["properties"]["cell_structs"]["items"]["properties"]
     assert set(structure) == {"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"}
+
+
+def test_the_scene_schema_names_every_building_field(generated):
+    scene, _ = generated
+    props = scene["properties"]
+    assert "buildings" in props and "buildings" not in scene["required"]
+    building = props["buildings"]["items"]["properties"]
+    assert {"landblock", "origin", "orientation", "shape", "num_leaves", "portals"} <= set(building)
+    assert {"other_cell", "other_portal", "flags", "stab_list"} <= set(building["portals"]["items"]["properties"])
 
 
 def test_the_schemas_name_every_tick_record_field_and_the_tick_formats(generated):

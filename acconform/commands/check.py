@@ -25,7 +25,7 @@ def add_arguments(p) -> None:
                    help=f"scenes to draw (live; default {GENERATIVE_CASES}), or to sample from the corpus (default: all of it)")
     p.add_argument("--seed", type=int, default=None, help="campaign seed: the same seed draws the same scenes "
                    "(or the same corpus sample); default 0")
-    p.add_argument("--kinds", default=None, help="comma-separated scene kinds: terrain, bsp, obstacles, indoor, ticks (default: all of them)")
+    p.add_argument("--kinds", default=None, help="comma-separated scene kinds: terrain, bsp, obstacles, indoor, buildings, ticks (default: what the port supports)")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact", help="exact: float32 bit for bit; fast: port in doubles, ULP tolerance")
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")

@@ -36,7 +36,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 7;
+        public const int PackVersion = 8;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -758,15 +758,35 @@ namespace Acconform.Oracle
             var built = new List<ACE.Server.Physics.Common.Landblock>();
             var ms = (MemoryStream)r.BaseStream;
             var buf = ms.GetBuffer();
-            var sw = Stopwatch.StartNew();
+            // the CellLandblocks' bytes first; they are built after the DAT records are in the FileCaches: a
+            // landblock with HasObjects reads its LandblockInfo (cell DAT) in its constructor and its buildings'
+            // models (portal DAT) in PostInit (init_buildings)
+            var slices = new List<Tuple<int, int>>(nlb);
             for (var i = 0; i < nlb; i++)
             {
                 var len = r.ReadInt32();
                 var off = (int)ms.Position;
                 ms.Position = off + len;
+                slices.Add(Tuple.Create(off, len));
+            }
+
+            // the Environments and buildings' models (portal DAT) and the EnvCells and LandblockInfos (cell DAT): ACE
+            // loads each EnvCell when it first asks for it (LScape.get_landcell -> DBObj.GetEnvCell -> new EnvCell -> PostInit)
+            var ndat = r.ReadInt32();
+            for (var i = 0; i < ndat; i++)
+                ReadRecord(r);
+
+            var sw = Stopwatch.StartNew();
+            foreach (var slice in slices)
+            {
+                var off = slice.Item1;
+                var len = slice.Item2;
                 ACE.Server.Physics.Common.Landblock lb = null;
                 ulong key = 0;
-                if (CacheLandblocks)
+                // a landblock with buildings (HasObjects, the uint after its id) is built from this scene's DAT records:
+                // never cached
+                var cacheable = CacheLandblocks && BitConverter.ToUInt32(buf, off + 4) == 0;
+                if (cacheable)
                 {
                     key = Hash(buf, off, len) ^ ((ulong)(uint)lastTableId * 0x9E3779B97F4A7C15UL);
                     LandblockEntry e;
@@ -780,7 +800,7 @@ namespace Acconform.Oracle
                     clb.Unpack(new BinaryReader(new MemoryStream(bytes)));
                     lb = new ACE.Server.Physics.Common.Landblock(clb);
                     built.Add(lb);
-                    if (CacheLandblocks)
+                    if (cacheable)
                     {
                         if (landblockCache.Count >= CacheLimit) landblockCache.Clear();
                         landblockCache[key] = new LandblockEntry { Bytes = bytes, Table = lastTableId, Landblock = lb };
@@ -797,12 +817,6 @@ namespace Acconform.Oracle
             buildMicros = sw.Elapsed.TotalMilliseconds * 1000.0;
             if (!server)
                 PhysicsEngine.Instance.Server = false;
-
-            // the Environments (portal DAT) and the EnvCells and LandblockInfos (cell DAT): ACE loads each EnvCell
-            // when it first asks for it (LScape.get_landcell -> DBObj.GetEnvCell -> new EnvCell -> PostInit)
-            var ndat = r.ReadInt32();
-            for (var i = 0; i < ndat; i++)
-                ReadRecord(r);
 
             var nobj = r.ReadInt32();
             for (var i = 0; i < nobj; i++)

@@ -1,4 +1,4 @@
-"""EnvCell: EnvCell(DatLoader EnvCell), PostInit, FindEnvCollisions, FindCollisions, build_visible_cells, find_visible_child_cell, GetVisible, find_transit_cells (the parts and sphere overloads), init_static_objects, point_in_cell, handle_move_restriction.
+"""EnvCell: EnvCell(DatLoader EnvCell), PostInit, FindEnvCollisions, FindCollisions, build_visible_cells, find_visible_child_cell, GetVisible, find_transit_cells (the parts and sphere overloads), check_building_transit (the sphere and parts overloads), init_static_objects, point_in_cell, handle_move_restriction.
 
 ACE's Common/EnvCell.cs: an indoor cell (0xXXYY0100 and up), an ObjCell (obj_cell.py) over a
 CellStruct (cell_struct.py) taken from its Environment record. Built by DBObj.GetEnvCell
@@ -299,6 +299,76 @@ class EnvCell(ObjCell):
                             break
         if check_outside:
             land_cell.add_all_outside_cells_replayed(lscape, position, num_sphere, spheres, cell_array)
+
+    @anchor("CEnvCell::check_building_transit",
+            "EnvCell.cs:check_building_transit(ushort, Position, int, List<Sphere>, CellArray, SpherePath)")
+    def check_building_transit(self, portal_id: int, pos, num_sphere: int, spheres, cell_array, path) -> None:
+        """A building's portal into this cell (BuildingObj.find_building_transit_cells): every
+        sphere (all of them, not numSphere) that the cell's tree does not find Outside adds the
+        cell and marks the path as touching an interior cell. The sphere's centre is taken into
+        the cell's frame with Pos.Frame only (no block offset)."""
+        # if (portalId == 0) return; (ACE)
+        if portal_id == 0xFFFF:  # ushort.MaxValue
+            return
+
+        trace = path.trace if path is not None else None
+        for sphere in spheres:
+            glob_sphere = Sphere(self.pos.frame.global_to_local(sphere.center), sphere.radius)
+            if self.cell_structure.sphere_intersects_cell(glob_sphere) == BoundingType.Outside:
+                continue
+
+            if path is not None:
+                path.hits_interior_cell = True
+
+            cell_array.add_cell(self.id, self)
+            if trace is not None:
+                trace["building:transit_cell"] += 1
+
+    @anchor("CEnvCell::check_building_transit",
+            "EnvCell.cs:check_building_transit(int, int, List<PhysicsPart>, CellArray)", "the parts overload")
+    def check_building_transit_parts(self, lscape, portal_id: int, num_parts: int, parts, cell_array) -> None:
+        # if (portalId == 0) return; (ACE)
+        if portal_id == 0xFFFF:  # ushort.MaxValue
+            return
+
+        portal = self.portals[portal_id]
+        portal_poly = self.cell_structure.portals[portal_id]
+
+        for part in parts:
+            if part is None:
+                continue
+
+            bounding_sphere = None
+            if part.gfx_obj.physics_sphere is not None:
+                bounding_sphere = part.gfx_obj.physics_sphere
+            else:
+                bounding_sphere = part.gfx_obj.drawing_sphere
+
+            if bounding_sphere is None:
+                continue
+
+            center = self.pos.local_to_local(part.pos, bounding_sphere.center)
+            rad = bounding_sphere.radius + EPSILON
+
+            diff = dot(center, portal_poly.plane.normal) + portal_poly.plane.d
+            if portal.portal_side:
+                if diff > rad:
+                    continue
+            else:
+                if diff < -rad:
+                    continue
+
+            box = BBox()
+            box.local_to_local(part.get_bounding_box(), part.pos, self.pos)
+            intersect = intersect_box(portal_poly.plane, box)
+            if (intersect == Sidedness.Crossing or intersect == Sidedness.Positive and portal.portal_side
+                    or intersect == Sidedness.Negative and not portal.portal_side):
+                if not self.cell_structure.box_intersects_cell(box):
+                    continue
+
+                cell_array.add_cell(self.id, self)
+                self.find_transit_cells_parts(lscape, num_parts, parts, cell_array)
+                return
 
     @anchor("CEnvCell::init_static_objects", "EnvCell.cs:init_static_objects")
     def init_static_objects(self, lscape) -> None:

@@ -1,9 +1,11 @@
-"""LandblockInfo: Unpack -- a landblock's 0xXXYYFFFE cell-DAT record: how many EnvCells it has and its static objects (ACE.DatLoader FileTypes/LandblockInfo.cs).
+"""LandblockInfo: Unpack -- a landblock's 0xXXYYFFFE cell-DAT record: how many EnvCells it has, its static objects and its buildings (ACE.DatLoader FileTypes/LandblockInfo.cs).
 
-AdjustCell (port/adjust_cell.py) reads NumCells to know which EnvCells a dungeon has. A scene's
-record (acconform/dat.landblock_info_record) holds no buildings and PackMask 0; a record with
-buildings (BuildInfo, CBldPortal) or a restriction table (PackMask bit 0) cannot come from a
-scene, their readers are not ported, and reading one is misuse (AcconformError naming it).
+AdjustCell (port/adjust_cell.py) reads NumCells to know which EnvCells a dungeon has; a
+Landblock whose CellLandblock has HasObjects reads the whole record (DBObj.GetLandblockInfo) and
+builds its buildings from it (Landblock.init_buildings). A scene's record
+(acconform/dat.landblock_info_record) holds PackMask 0: a restriction table (PackMask bit 0, a
+housing barrier's owner per cell) cannot come from a scene, its reader is not ported, and
+reading one is misuse (AcconformError naming it).
 """
 
 from __future__ import annotations
@@ -13,8 +15,9 @@ from dataclasses import dataclass, field
 from acconform.errors import AcconformError
 
 from ..anchors import anchor
+from .build_info import BuildInfo
 from .stab import Stab
-from .unpackable_extensions import unpack_list
+from .unpackable_extensions import unpack_list, unpack_list_fixed
 
 
 @dataclass(slots=True, eq=False)
@@ -23,6 +26,7 @@ class LandblockInfo:
     num_cells: int = 0
     objects: list = field(default_factory=list)  # Stab
     pack_mask: int = 0
+    buildings: list = field(default_factory=list)  # BuildInfo
 
     @staticmethod
     @anchor(None, "ACE.DatLoader/FileTypes/LandblockInfo.cs:Unpack")
@@ -37,9 +41,7 @@ class LandblockInfo:
         num_buildings = reader.read_uint16()
         i.pack_mask = reader.read_uint16()
 
-        if num_buildings != 0:  # ACE: Buildings.Unpack(reader, numBuildings)
-            raise AcconformError(f"LandblockInfo {i.id:08X} holds {num_buildings} building(s): no scene writes a building "
-                                 f"(acconform/dat.landblock_info_record), so BuildInfo and CBldPortal are not ported")
+        i.buildings = unpack_list_fixed(reader, BuildInfo.unpack, num_buildings)
 
         if (i.pack_mask & 1) == 1:  # ACE: RestrictionTables.UnpackPackedHashTable(reader)
             raise AcconformError(f"LandblockInfo {i.id:08X} has PackMask {i.pack_mask:#06x}, a restriction table: no scene "

@@ -1,11 +1,14 @@
-"""Landblock: the constructor from CellLandblock, get_land_limits, init_landcell (PostInit), get_landcell, GetCell, GetZ, get_terrain.
+"""Landblock: the constructor from CellLandblock, get_land_limits, PostInit, init_landcell, init_buildings, init_static_objs, get_landcell, GetCell, GetZ, get_terrain.
 
 ACE's Common/Landblock.cs (a LandblockStruct). The scene's Landblock record stands in for the
-DAT's CellLandblock (Id, Height bytes, Terrain words; HasObjects is false: a scene has no
-LandblockInfo, so Info, buildings and DAT static objects are absent). PostInit's
-init_buildings/init_static_objs then do nothing, and get_land_scenes (scenery generated from the
-region DAT) is not ported: a scene lists its objects explicitly. OnRoad/IsRoad, IsDungeon and
-the server-object lists are not physics and are left out.
+DAT's CellLandblock (Id, Height bytes, Terrain words); HasObjects is set exactly for a landblock
+the scene puts buildings on (acconform/dat.has_objects, which oracle/pack.landblock_bytes writes),
+and then the constructor reads the landblock's LandblockInfo from the run's cell DAT
+(DBObj.GetLandblockInfo) and PostInit's init_buildings builds its buildings from it. The Info a
+scene writes has no objects and no restriction table, so init_static_objs' Info branch places
+nothing; get_land_scenes (scenery generated from the region DAT) is not ported: a scene lists its
+objects explicitly (ACE's UseSceneFiles is off in the oracle). OnRoad/IsRoad, IsDungeon and the
+server-object lists are not physics and are left out.
 
 GetCell (and so GetZ) reaches ACE's static LScape; here the run's LScape is the first argument.
 """
@@ -15,7 +18,8 @@ from __future__ import annotations
 from acconform.numerics import Mode, Vector3, wrap_i32, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.constants import EPSILON
-from acconform.port import land_defs
+from acconform.port import db_obj, land_defs
+from acconform.port.frame import AFrame, Position
 from acconform.port.cell.land_cell import LandCell
 from acconform.port.land_defs import Direction
 from acconform.port.land.landblock_struct import LandblockStruct
@@ -30,8 +34,9 @@ def _int_div(a: int, b: int) -> int:
 
 class Landblock(LandblockStruct):
     @anchor("CLandBlock::CLandBlock", "Landblock.cs:Landblock(CellLandblock)")
-    def __init__(self, record, land_height_table, mode: Mode):
-        """From a scene Landblock record (id 0xXXYYFFFF, 81 heights, 81 terrain words)."""
+    def __init__(self, record, land_height_table, mode: Mode, has_objects: bool = False, cell_dat=None):
+        """From a scene Landblock record (id 0xXXYYFFFF, 81 heights, 81 terrain words) and the
+        CellLandblock's HasObjects; `cell_dat` is DatManager.CellDat, read only when HasObjects."""
         super().__init__(record.id, record.heights, record.terrain, land_height_table, mode, lazy=not record.has_terrain)
         # Landblock.Init
         self.dir = Direction.Unknown
@@ -41,9 +46,13 @@ class Landblock(LandblockStruct):
         self.adjacents = None  # set only by a running server's LandblockManager (SetAdjacents): never here
         self.buildings: list = []
 
+        self.stab_list = None  # StabList: never assigned in ACE (add_to_stablist leaves it null)
+
         self.id = record.id
-        self.block_info_exists = False  # CellLandblock.HasObjects: no LandblockInfo in a scene
+        self.block_info_exists = has_objects  # CellLandblock.HasObjects
         self.info = None
+        if self.block_info_exists:
+            self.info = db_obj.get_landblock_info(cell_dat, wrap_u32(self.id - 1))
         self.block_coord = land_defs.value_of(land_defs.blockid_to_lcoord(record.id), "Landblock(CellLandblock)")
         self.get_land_limits()
 
@@ -85,12 +94,56 @@ class Landblock(LandblockStruct):
         self.max_z = self.land_height_table[max(self.height)]
 
     @anchor(None, "Landblock.cs:PostInit")
-    def post_init(self) -> None:
-        """init_landcell; init_buildings and init_static_objs have nothing to do without Info. A
-        landblock without terrain (built lazily) has no land cells yet: terrain_generated does
-        init_landcell's work on them when they are built."""
+    def post_init(self, lscape=None) -> None:
+        """init_landcell, init_buildings, init_static_objs. `lscape` (the run's world, with its
+        PortalDat) is read only by a landblock with Info. A landblock without terrain (built lazily)
+        has no land cells yet: terrain_generated does init_landcell's work on them when they are
+        built (a scene puts no building on one)."""
         self.post_init_done = True
         self.init_landcell()
+
+        self.init_buildings(lscape)
+        self.init_static_objs(lscape)
+
+    @anchor("CLandBlock::init_buildings", "Landblock.cs:init_buildings")
+    def init_buildings(self, lscape) -> None:
+        from acconform.port.cell.building_obj import BuildingObj
+
+        if self.info is None or self.side_cell_count != 8:
+            return
+
+        max_size, stab_num = 0, 0
+        for info in self.info.buildings:
+            building = BuildingObj.make_building(info.model_id, info.portals, info.num_leaves, lscape.portal_dat)
+            position = Position(self.id, AFrame.from_dat(info.frame))
+            land_defs.adjust_to_outside_pos(position)  # var outside = (ACE: the result is unused)
+            cell = self.get_landcell(position.obj_cell_id)
+            if cell is None:
+                continue
+            building.set_initial_frame(position.frame)
+
+            # hack (ACE)
+            building.part_array.parts[0].pos = position
+            building.position = position
+            cell.building = building
+
+            building.add_to_cell(cell)  # SortCell? (ACE)
+            self.buildings.append(building)
+            self.stab_list, max_size, stab_num = building.add_to_stablist(self.stab_list, max_size, stab_num)
+
+    @anchor("CLandBlock::init_static_objs", "Landblock.cs:init_static_objs")
+    def init_static_objs(self, lscape) -> None:
+        """At PostInit StaticObjects is empty (a scene's outdoor statics are placed after it, as the
+        oracle places them). With Info, its Objects and RestrictionTables: a scene's Info holds
+        neither (acconform/dat.landblock_info_record), and reading one is refused before here
+        (port/dat/landblock_info.py), so the loops below never run; UseSceneFiles is off."""
+        if self.side_cell_count != 8:
+            return
+        if len(self.static_objects) > 0:
+            raise NotImplementedError("adjust_scene_obj_height: a landblock's StaticObjects at PostInit")
+        elif self.info is not None:
+            if self.info.objects:
+                raise NotImplementedError("LandblockInfo objects: a scene writes none")
 
     @harness("init_landcell's work on a lazy landblock's cells, built after PostInit")
     def terrain_generated(self, cells: dict) -> None:

@@ -18,7 +18,10 @@ run_scene reports as the same verdict. Indoor cells (EnvCells, 0x0100 and up) ar
 ACE builds them: get_landcell reads the EnvCell record from the run's cell DAT
 (`lscape.cell_dat`, with `lscape.portal_dat` for its Environment: port/run.py sets both), caches
 it in the landblock's cells and then PostInits it. A pooled landblock never keeps EnvCells
-(they come from the run's DATs, which the pool key does not hold): `release` drops them.
+(they come from the run's DATs, which the pool key does not hold): `release` drops them. A
+landblock with buildings (its CellLandblock's HasObjects, acconform/dat.has_objects) is built
+from the run's DATs too (its LandblockInfo, its buildings' models, and the EnvCells a building
+remembers in get_building_cells), so it is built for the run and never pooled.
 """
 
 from __future__ import annotations
@@ -96,23 +99,33 @@ def clear_landblock_cache() -> None:
 class LScape:
     """The scene's outdoor world for one run (no globals: make one per run)."""
 
-    def __init__(self, scene, mode: Mode):
+    def __init__(self, scene, mode: Mode, portal_dat=None, cell_dat=None):
+        """`portal_dat` and `cell_dat` are the run's DAT databases (port/run.py makes them first: a
+        landblock with buildings reads them when it is built)."""
+        from acconform.dat import has_objects
+
         self.mode = mode
         self.land_height_table = scene.land_height_table
         self.landblocks: dict[int, Landblock] = {}  # the ones built so far
         self.landcells: dict[int, LandCell | None] = {}  # get_landcell's answers so far (see there)
         self.outside_cells: dict[tuple, list] = {}  # land_cell.add_all_outside_cells_replayed's memory
-        self.cell_dat = None  # DatManager.CellDat: the run's cell DAT (port/run.py sets it)
-        self.portal_dat = None  # DatManager.PortalDat: the run's portal DAT (port/run.py sets it)
+        self.cell_dat = cell_dat  # DatManager.CellDat: the run's cell DAT
+        self.portal_dat = portal_dat  # DatManager.PortalDat: the run's portal DAT
         self.adjust_cells: dict = {}  # AdjustCell.AdjustCells (port/adjust_cell.py), per run
         self.records = {record.id | 0xFFFF: record for record in scene.landblocks}
+        self.has_objects = {landblock_id for landblock_id in self.records if has_objects(scene, landblock_id)}
         for landblock_id, record in self.records.items():
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
                 self.build_landblock(landblock_id)
 
     @harness("a scene landblock built (new Landblock, PostInit) or taken from the pool on first use")
     def build_landblock(self, landblock_id: int) -> Landblock:
-        """``new Landblock(CellLandblock)`` then PostInit (pooled), on first use."""
+        """``new Landblock(CellLandblock)`` then PostInit (pooled unless it has buildings), on first use."""
+        if landblock_id in self.has_objects:
+            landblock = Landblock(self.records[landblock_id], self.land_height_table, self.mode, True, self.cell_dat)
+            self.landblocks[landblock_id] = landblock
+            landblock.post_init(self)
+            return landblock
         landblock = POOL.checkout(self.records[landblock_id], self.land_height_table, self.mode)
         self.landblocks[landblock_id] = landblock
         return landblock
@@ -121,6 +134,8 @@ class LScape:
     def release(self) -> None:
         """The run is over: hand the landblocks back to the pool (this LScape is unusable after)."""
         for landblock_id, landblock in self.landblocks.items():
+            if landblock_id in self.has_objects:
+                continue  # built for this run only
             POOL.release(LandblockPool.key(self.records[landblock_id], self.land_height_table, self.mode), landblock)
         self.landblocks = {}
         self.landcells = {}

@@ -82,6 +82,11 @@ BRANCHES: dict[str, str] = {
     "env_cell:unloaded_cell": "a sphere reaches a portal to a cell not visible: its short id added, no cell",
     "find_cell_list:indoor": "the position is in an EnvCell: that cell added (path hits an interior cell)",
     "find_cell_list:pruned": "a cell the position's EnvCell does not see dropped from the CellArray",
+    # buildings: BuildingObj.find_building_collisions (SortCell.FindCollisions of the cell it stands in),
+    # EnvCell.check_building_transit (BuildingObj.find_building_transit_cells through its portals)
+    "building:collisions": "the shell's physics BSP tested the mover (BuildingCheck set): OK",
+    "building:collided": "the shell's physics BSP stopped or moved the mover (not OK)",
+    "building:transit_cell": "a sphere reaches a building's EnvCell through its portal: the cell added, HitsInteriorCell set",
     # placement (a scene's mover.placement): PhysicsObj.SetPositionInternal / CheckPositionInternal,
     # Transition.FindPlacementPosition / FindPlacementPos
     "set_position:no_cell_stored": "AdjustPosition found no cell: the position stored, the mover in no cell, no transition",
@@ -152,6 +157,13 @@ REACHED_BY_INDOOR_SCENES: dict[str, str] = {
     "env_cell:unloaded_cell": "indoors only",
     "find_cell_list:indoor": "indoors only",
     "find_cell_list:pruned": "indoors only",
+}
+
+
+# Branches only the named building scenes reach (tests/port/cell/building_scenes, against ACE's recorded
+# answers on both runtimes); a scene without a building never does.
+REACHED_BY_BUILDING_SCENES: dict[str, str] = {
+    name: "buildings only" for name in BRANCHES if name.split(":")[0] == "building"
 }
 
 

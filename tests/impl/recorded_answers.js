@@ -179,9 +179,9 @@ function main() {
   }
   process.stdout.write(JSON.stringify({
     protocol: 'acconform.protocol/1', name: 'recorded-answers.js', version: '1',
-    kinds: ['terrain', 'bsp', 'obstacles', 'indoor'],
+    kinds: ['terrain', 'bsp', 'obstacles', 'indoor', 'buildings'],
     features: ['engine.client', 'mover.two_spheres', 'mover.scaled', 'object.scaled', 'water', 'indoor.statics',
-      'mover.placement'],
+      'mover.placement', 'buildings'],
     modes: ['exact'],
   }) + '\n');
   const input = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });

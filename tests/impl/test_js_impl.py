@@ -35,7 +35,7 @@ def small_corpus(tmp_path_factory):
     ACE's answers among them hold a -0.0."""
     d = tmp_path_factory.mktemp("corpus")
     negative_zeros = 0
-    for kind in ("terrain", "bsp", "obstacles", "indoor"):
+    for kind in ("terrain", "bsp", "obstacles", "indoor", "buildings"):
         shard = next(s for s in shards(default_corpus("coreclr")) if SHARD_RE.match(s.name)["kind"] == kind)
         with gzip.open(shard, "rt") as f:
             lines = [line for _, line in zip(range(PER_KIND), f)]
@@ -52,7 +52,7 @@ def test_the_javascript_implementation_agrees_with_ace_on_a_corpus_through_the_p
               "--failures", str(tmp_path / "f"), cwd=tmp_path)
     assert r.returncode == 0, r.stdout + r.stderr
     s = json.loads((tmp_path / "s.json").read_text())
-    assert s["cases"]["compared"] == 4 * PER_KIND and s["differences"]["total"] == 0, s["cases"]
+    assert s["cases"]["compared"] == 5 * PER_KIND and s["differences"]["total"] == 0, s["cases"]
     assert s["implementation"]["name"] == "recorded-answers.js"
 
 

@@ -134,9 +134,9 @@ def test_kinds_missing_from_the_handshake_are_skipped_and_do_not_count_toward_n(
               "--failures", str(tmp_path / "f"), "--json", str(tmp_path / "s.json"), cwd=tmp_path)
     assert r.returncode == 0, r.stdout + r.stderr
     s = json.loads((tmp_path / "s.json").read_text())
-    assert s["cases"]["compared"] == 30 and s["kinds_skipped"] == ["bsp", "obstacles", "indoor"]
+    assert s["cases"]["compared"] == 30 and s["kinds_skipped"] == ["bsp", "obstacles", "indoor", "buildings"]
     assert s["cases"]["run"] == s["cases"]["compared"] + s["cases"]["skipped_total"]
-    assert "skipping kinds bsp,obstacles,indoor" in r.stderr and "30 compared" in r.stdout
+    assert "skipping kinds bsp,obstacles,indoor,buildings" in r.stderr and "30 compared" in r.stdout
 
 
 def test_an_implementation_that_sends_no_handshake_is_one_line_and_exit_2(tmp_path, no_ace):

@@ -113,6 +113,12 @@ UNREACHABLE = {
     # r meets that ground as surely as one of 2r: only ground between r and 2r under a sphere that is not
     # on it would tell them apart. Equivalent in practice (the corpus and live ACE, 4,000 cases, agree)
     "check_walkable_halving_inclusive": "CheckWalkable's probe starts on the ground StepDown found: r and 2r meet it alike",
+    # ACE 7b47913 copies CBldPortal.PortalSide into BldPortal and never reads it: check_building_transit's
+    # parts overload reads the EnvCell's own CellPortal.PortalSide (named scenes portal-side-on/off agree)
+    "building_portal_side_unflipped": "ACE's physics never reads BldPortal.PortalSide: equivalent",
+    # get_building_cells is called only by ACE.Server's PositionExtensions (GetCell, AdjustMapCoords),
+    # never by the physics a scene runs
+    "building_cells_not_recursive": "no transition reaches get_building_cells: equivalent for scenes",
 }
 # mutants this hunt misses at its budget and seed, but the recorded corpus kills (not equivalent)
 FOUND_BY_THE_CORPUS = {
