@@ -15,6 +15,8 @@ originals back afterwards. What a wrapper writes depends on the routine's ACE fi
 - any other routine: one ``call`` record at its exit, with its result only.
 
 Records carry the tick (run_ticks' step index) and the FindTransitionalPosition step they ran in.
+A traced run starts cold (the memories of GfxObjs and landblocks across runs emptied first), so its
+trace does not depend on what the process ran before.
 """
 
 from __future__ import annotations
@@ -246,6 +248,14 @@ def installed(recorder: Recorder):
         return w
 
     with _lock:
+        # a traced run starts cold: what the harness remembers across runs (GfxObjs built from the same
+        # bytes, pooled landblocks) would leave out the records of building them, and a trace must not
+        # depend on what the process ran before
+        from .gfx_obj_cache import clear_built
+        from .land.lscape import clear_landblock_cache
+
+        clear_built()
+        clear_landblock_cache()
         try:
             for name, module in list(sys.modules.items()):
                 if module is None or not (name == package or name.startswith(package + ".")):
