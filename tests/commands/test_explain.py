@@ -26,37 +26,15 @@ def cli(*args, cwd=None):
     return subprocess.run([sys.executable, "-m", "acconform.cli", *args], capture_output=True, text=True, cwd=cwd)
 
 
-def killing_records(n: int):
-    """Records of the fast sample where the planted bug differs from ACE's recorded answer and the port does not."""
-    from acconform.oracle import default_corpus
-    from acconform.oracle.recorded import RecordedOracle
-    from acconform.port.run import run_scene
-    from mutants import MUTATIONS, load_mutant
-
-    mutant = load_mutant([m.name for m in MUTATIONS].index(BUG))
-    sample = json.loads((ROOT / "tests/data/corpus/coreclr/fast-sample.json").read_text())
-    halves = sample["branches"].index("transitional_insert:step_down_halves")
-    keys = {k for k, _, branches in sample["records"] if halves in branches}
-    oracle = RecordedOracle(default_corpus())
-    out = []
-    for entry in oracle.select(runtime="coreclr"):
-        if entry.key in keys:
-            rec = oracle._record(entry)
-            got = mutant(rec.scene, runtime="coreclr")
-            if compare(got, rec.outcome) and not compare(run_scene(rec.scene, runtime="coreclr"), rec.outcome):
-                out.append((rec, got))
-                if len(out) == n:
-                    return out
-    return out
-
-
 @pytest.fixture(scope="module")
 def planted_cases(tmp_path_factory):
     folder = tmp_path_factory.mktemp("failures")
     command = f"{sys.executable} {PLANTED} {BUG}"
     hello = Implementation(command).hello
     cases = []
-    for i, (rec, got) in enumerate(killing_records(2)):
+    from mutants import killing_records
+
+    for i, (rec, got) in enumerate(killing_records(BUG, 2, branch="transitional_insert:step_down_halves")):
         diffs = compare(got, rec.outcome)
         case = make_case(rec.scene, got, rec.outcome, diffs, 0, "exact", rec.versions,
                          ImplementationRun(command, str(ROOT), hello))
