@@ -34,6 +34,7 @@ class Explanation:
     theirs: tuple[TraceRecord, ...] = ()  # the implementation's trace
     implementation_outcome: Outcome | None = None
     known: object = None  # a divergences.Known row the first divergence matches, or None
+    reference_name: str = "port"  # whose trace `ours` is: the port's, or ACE's stepped trace
 
 
 def retail_name(ace: str) -> str | None:
@@ -50,8 +51,10 @@ def _implementation_name(backend) -> str:
 
 
 def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "exact",
-            runtime: str = "coreclr") -> Explanation:
-    """Trace `scene` on `backend` and on the port, and name where they first part (module docstring)."""
+            runtime: str = "coreclr", live=None) -> Explanation:
+    """Trace `scene` on `backend` and on the port, and name where they first part (module docstring).
+    Where the port itself differs from ACE and `live` (a LiveOracle) is given, the reference is ACE's
+    own stepped trace (LiveOracle.stepped_trace), compared at its grain: each step."""
     from .port.run import traced_run
     from .runner import guarded
 
@@ -59,10 +62,12 @@ def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "e
     ours_outcome, ours = traced_run(scene, mode, runtime)
     if getattr(backend, "command", None) is None:  # the built-in port itself: its outcome is ACE's or not
         differs = bool(compare(ours_outcome, ace, mode))
+        if differs and live is not None:
+            return _against_ace_steps(scene, live, name, ours, ours_outcome)
         note = ("the port's outcome differs from ACE's here, so the port's trace is no reference; ACE's own "
-                "stepped trace is not recorded" if differs else "the port's outcome is ACE's: nothing to explain")
+                "stepped trace needs a live ACE (--ace)" if differs else "the port's outcome is ACE's: nothing to explain")
         return Explanation(name, f"the port against {ace_source}", differs, None, note, ours, ours, ours_outcome)
-    theirs_outcome, theirs = backend.run_traced(scene)
+    theirs_outcome, theirs, anchors = backend.run_traced(scene)
     differs = bool(compare(theirs_outcome, ace, mode))
     port_vs_ace = compare(ours_outcome, ace, mode)
     if port_vs_ace:
@@ -74,7 +79,7 @@ def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "e
         why = ("the implementation does not trace (its handshake lists no `trace` feature)"
                if not getattr(backend, "traces", False) else f"the implementation gave no trace ({theirs_outcome.error})")
         return Explanation(name, reference, differs, None, why, ours, (), theirs_outcome)
-    d = first_divergence(ours, theirs)
+    d = first_divergence(ours, theirs, anchors)
     note = "" if d is not None else "the traces agree at the implementation's grain"
     known = None
     if d is not None:
@@ -82,6 +87,26 @@ def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "e
 
         known = known_for(d)
     return Explanation(name, reference, differs, d, note, ours, theirs, theirs_outcome, known)
+
+
+def _against_ace_steps(scene, live, name, ours, ours_outcome) -> Explanation:
+    from .oracle.live import SteppedTraceRefused
+
+    try:
+        _, steps = live.stepped_trace(scene)
+    except SteppedTraceRefused as e:
+        return Explanation(name, "none: ACE's stepped trace was refused", True, None,
+                           f"ACE's stepped trace refused: {e}", (), ours, ours_outcome)
+    d = first_divergence(steps, ours)
+    known = None
+    if d is not None:
+        from .divergences import known_for
+
+        known = known_for(d)
+    return Explanation(name, "ACE's stepped trace (checked: the stepped run ends in ACE's own outcome), compared "
+                       "at its grain: each pass of FindTransitionalPosition's loop", True, d,
+                       "" if d is not None else "the port's steps are ACE's: they part after the last step",
+                       steps, ours, ours_outcome, known, "ACE")
 
 
 def triage(found, backend, mode: str, runtime: str, say=None) -> None:
@@ -117,8 +142,9 @@ def _brief(r: TraceRecord | None) -> str:
     return text
 
 
-def render(e: Explanation, ref_name: str = "port") -> list[str]:
+def render(e: Explanation) -> list[str]:
     """The explanation as lines: the reference, the first divergence, the records before it on both sides."""
+    ref_name = e.reference_name
     lines = [f"reference: {e.reference}"]
     d = e.divergence
     if d is None:

@@ -302,7 +302,7 @@ def explain_page(case, e, name: str) -> str:
     lines = render(e)
     known = (f'<p class="known">known: ACE differs from retail here ({html.escape(e.known.name)})</p>'
              if e.known is not None else "")
-    legend = (f'<p class="legend"><span style="color:{REF}">&#9679; reference (the port)</span>'
+    legend = (f'<p class="legend"><span style="color:{REF}">&#9679; reference ({html.escape(e.reference_name)})</span>'
               f'<span style="color:{IMPL}">&#9679; {html.escape(e.implementation)}</span>'
               '<span style="color:#2e9d4b">&#8212; contact plane normal</span>'
               '<span style="color:#d11f1f">&#8212; collision normal</span>'

@@ -169,7 +169,7 @@ class Implementation:
         self._next_id = 0
         self._inflight: deque[tuple[int, Scene]] = deque()  # requests sent, answers not yet read, in order
         self._answers: dict[int, Outcome] = {}
-        self._traces: dict[int, tuple] = {}  # request id -> the trace records its answer carried
+        self._traces: dict[int, tuple] = {}  # request id -> (trace records, declared anchors) its answer carried
         self._traced: set[int] = set()  # request ids sent with "trace": true
         self._stderr_of: dict[int, str] = {}  # request id -> the process's stderr when it failed on it
         self.last_stderr = ""  # of the scene `run` answered last: its stderr if it failed, else ""
@@ -353,13 +353,14 @@ class Implementation:
         return "trace" in self.hello["features"]
 
     def run_traced(self, scene: Scene):
-        """(outcome, trace records) for `scene`, asked with ``"trace": true``; the records are None
-        when the implementation does not trace (no `trace` feature) or failed on the scene."""
+        """(outcome, trace records, the routines its trace declares) for `scene`, asked with
+        ``"trace": true``; records and routines are None when the implementation does not trace (no
+        `trace` feature) or failed on the scene, the routines None when its trace declares none."""
         if not self.traces:
-            return self.run(scene), None
+            return self.run(scene), None, None
         why = self._ensure()
         if why is not None:
-            return self._verdict(why), None
+            return self._verdict(why), None, None
         while self._inflight:  # answers to scenes sent ahead come first
             self._read_answer()
         self._answers.clear()
@@ -371,7 +372,8 @@ class Implementation:
         while rid not in self._answers:
             self._read_answer()
         self._traced.discard(rid)
-        return self._answers.pop(rid), self._traces.pop(rid, None)
+        records, anchors = self._traces.pop(rid, (None, None))
+        return self._answers.pop(rid), records, anchors
 
     def prefetch(self, scene: Scene) -> None:
         """Send `scene` ahead, so the implementation works on it while the harness compares the
@@ -442,9 +444,9 @@ class Implementation:
             if rid in self._traced:
                 if "trace" not in doc:
                     raise ValueError("no \"trace\" field, though the request asked for one (feature trace)")
-                from .trace import trace_from_json
+                from .trace import trace_anchors, trace_from_json
 
-                self._traces[rid] = trace_from_json(doc["trace"], "trace", exact=True)
+                self._traces[rid] = (trace_from_json(doc["trace"], "trace", exact=True), trace_anchors(doc["trace"]))
         except (ValueError, InvalidScene) as e:
             return self._fail_head(f"{PROTOCOL_ERROR}: malformed answer ({e}): {line[:120]!r}")
         self._inflight.popleft()
@@ -477,10 +479,11 @@ class Implementation:
 
 
 def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None,
-          default_runtime: str = DEFAULT_RUNTIME, run_traced=None) -> int:
+          default_runtime: str = DEFAULT_RUNTIME, run_traced=None, trace_anchors=None) -> int:
     """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side);
     a request that names no runtime is computed as `default_runtime`. `run_traced(scene, mode,
-    runtime) -> (outcome, records)` answers a request with ``"trace": true`` (feature `trace`).
+    runtime) -> (outcome, records)` answers a request with ``"trace": true`` (feature `trace`), its
+    trace declaring `trace_anchors` (the routines it records) when given.
 
     A request that cannot be read is answered with an outcome whose error says why (the harness
     counts it as the implementation's verdict); the loop goes on.
@@ -515,7 +518,7 @@ def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=No
         if records is not None:
             from .trace import trace_to_json
 
-            answer["trace"] = trace_to_json(records)
+            answer["trace"] = trace_to_json(records, trace_anchors)
         stdout.write((dumps_compact(answer) + "\n").encode("utf-8"))
         stdout.flush()
     return 0

@@ -135,15 +135,28 @@ class TraceRecord:
             TickState.from_json(r["mover"]) if r.given("mover") else None)
 
 
-def trace_to_json(records) -> dict:
-    return {"format": FORMAT, "records": [r.to_json() for r in records]}
+def trace_to_json(records, anchors=None) -> dict:
+    """A trace document; `anchors`: the routines (ACE methods) the implementation records at enter,
+    exit or call, whether or not this run reached them (absent: those its records name)."""
+    doc = {"format": FORMAT, "records": [r.to_json() for r in records]}
+    if anchors is not None:
+        doc["anchors"] = sorted(anchors)
+    return doc
+
+
+def trace_anchors(doc) -> frozenset | None:
+    """The `anchors` a trace document declares (already read by trace_from_json), or None."""
+    return frozenset(doc["anchors"]) if isinstance(doc, dict) and "anchors" in doc else None
 
 
 def trace_from_json(doc, path: str = "trace", exact: bool = False) -> tuple[TraceRecord, ...]:
     r = Reader(doc, path, exact=exact)
-    r.obj({"format", "records"})
+    r.obj({"format", "records", "anchors"})
     if r["format"].str_() != FORMAT:
         r["format"].fail(f"expected {FORMAT!r}")
+    if r.given("anchors"):
+        for a in r["anchors"].list():
+            a.str_()
     return tuple(TraceRecord.from_json(x) for x in r["records"].list())
 
 
@@ -250,12 +263,20 @@ def _grain(records) -> tuple[set, set]:
     return kinds, present
 
 
-def first_divergence(reference, other) -> Divergence | None:
-    """The first record where `other` parts from `reference`, compared at `other`'s grain (the
-    (anchor, event) kinds it writes, the parts it fills); None when they agree throughout."""
+def first_divergence(reference, other, anchors=None) -> Divergence | None:
+    """The first record where `other` parts from `reference`, compared at `other`'s grain: the
+    (anchor, event) kinds it writes, and the enter, exit and call records of the routines it declares
+    it records (`anchors`, its trace's "anchors": a routine it never reached is then a difference
+    too), and the parts it fills; None when they agree throughout."""
     kinds, present = _grain(other)
-    ref = [(i, r) for i, r in enumerate(reference) if (r.anchor, r.event) in kinds]
-    oth = list(enumerate(other))
+    declared = anchors or frozenset()
+    for r in reference:
+        if r.anchor in declared and r.event in ("enter", "exit", "call"):
+            present.update((r.anchor, r.event, name) for name in PARTS)
+    ref = [(i, r) for i, r in enumerate(reference)
+           if (r.anchor, r.event) in kinds or (r.anchor in declared and r.event in ("enter", "exit", "call"))]
+    ref_kinds = {(r.anchor, r.event) for _, r in ref}
+    oth = [(i, r) for i, r in enumerate(other) if (r.anchor, r.event) in ref_kinds]  # the coarser grain of the two
     for n in range(max(len(ref), len(oth))):
         ia, a = ref[n] if n < len(ref) else (len(reference), None)
         ib, b = oth[n] if n < len(oth) else (len(other), None)

@@ -235,6 +235,13 @@ def traced_run(scene: Scene, mode: str = "exact", runtime: str = "mono"):
     return outcome, tuple(trace.recorder.records)
 
 
+@harness("the routines a traced run records at enter, exit or call: every anchored ACE method")
+def traced_anchors() -> frozenset:
+    from .anchors import load_all
+
+    return frozenset(a.ace for a in load_all().values())
+
+
 @harness("an exception in the port as an outcome's error string, as the oracle reports ACE's")
 def verdict(e: Exception) -> str:
     """Where ACE throws (an AceException): ``"<.NET type>: <message>"``; a member of None is where C#

@@ -7,7 +7,10 @@ trace of a run that ends as ACE's does. Prints the first divergence -- tick, ste
 (ACE's method and the retail name), field, both values and the ulps between them -- and the few
 records before it on both sides, labelled "known" when a registered ACE-versus-retail divergence
 (docs/divergences.md) is where it falls. --html FILE writes the same as one page with a top and a
-side view of the scene. Exit 1 while the case still fails, 0 when it no longer does, 2 for bad input.
+side view of the scene. Where it is the built-in port that differs from ACE, the reference is ACE's own
+stepped trace (a live ACE configured: the facade drives FindTransitionalPosition's loop through ACE's
+public methods, checked to end in ACE's own outcome) at its grain, each step. Exit 1 while the case
+still fails, 0 when it no longer does, 2 for bad input.
 """
 
 from __future__ import annotations
@@ -52,7 +55,14 @@ def run(args) -> int:
     backend.runtime = runtime
     try:
         ace, source = ace_answer(args, doc)
-        e = explain(doc.scene, ace, source, backend, mode, runtime)
+        from ..oracle import live_configured
+
+        live = None
+        if live_configured(args.ace) and getattr(backend, "command", None) is None:  # ACE's own steps
+            from ..oracle import require_live
+
+            live = require_live(args.ace, args.runtime)
+        e = explain(doc.scene, ace, source, backend, mode, runtime, live)
     finally:
         getattr(backend, "close", lambda: None)()
     print(f"{args.file}: {e.implementation} (mode {mode}, {runtime} arithmetic)")

@@ -62,7 +62,8 @@ def main() -> int:
 
     hello = handshake("planted", f"0.0+{args.mutation}")
     hello["kinds"] = args.kinds.split(",")
-    return serve(answer, hello=hello, run_traced=answer_traced)
+    return serve(answer, hello=hello, run_traced=answer_traced,
+                 trace_anchors=importlib.import_module(run.__module__).traced_anchors())
 
 
 if __name__ == "__main__":

@@ -35,8 +35,9 @@ def test_acconform_serve_answers_a_traced_request_with_the_ports_outcome_and_tra
     try:
         assert impl.traces
         scene = example("cliff_edge_slide")
-        outcome, records = impl.run_traced(scene)
+        outcome, records, anchors = impl.run_traced(scene)
         want_outcome, want_records = traced_run(scene, runtime=impl.runtime)
+        assert anchors == {r.anchor for r in records if r.event == "enter"} | anchors and len(anchors) > 400
         assert outcome == want_outcome == run_scene(scene, runtime=impl.runtime)
         assert records == want_records
         assert impl.run(example("flat_walk")) == run_scene(example("flat_walk"), runtime=impl.runtime)  # untraced again
@@ -52,9 +53,9 @@ def test_a_planted_bug_traced_through_the_protocol_parts_from_the_port_in_the_mu
         from acconform.oracle import default_corpus
 
         scene = next(iter(_two_sphere_descent()))
-        _, mutant = impl.run_traced(scene)
+        _, mutant, anchors = impl.run_traced(scene)
         _, port = traced_run(scene, runtime=impl.runtime)
-        d = first_divergence(port, mutant)
+        d = first_divergence(port, mutant, anchors)
         assert d is not None and d.routine == "Transition.cs:TransitionalInsert" and d.field == "args[1]"
     finally:
         impl.close()
@@ -86,8 +87,8 @@ def test_an_implementation_without_the_feature_is_asked_without_it_and_gives_no_
     impl = Implementation(f"{sys.executable} {script}")
     try:
         assert not impl.traces
-        outcome, records = impl.run_traced(example("flat_walk"))
-        assert records is None and outcome == run_scene(example("flat_walk"), runtime=impl.runtime)
+        outcome, records, anchors = impl.run_traced(example("flat_walk"))
+        assert records is None and anchors is None and outcome == run_scene(example("flat_walk"), runtime=impl.runtime)
     finally:
         impl.close()
 
@@ -101,7 +102,7 @@ def test_a_traced_answer_without_its_trace_is_a_protocol_error_verdict(tmp_path)
         "sys.exit(serve(lambda s, m, r: run_scene(s, mode=m, runtime=r)))\n")  # lists trace, never sends one
     impl = Implementation(f"{sys.executable} {script}")
     try:
-        outcome, records = impl.run_traced(example("flat_walk"))
+        outcome, records, _ = impl.run_traced(example("flat_walk"))
         assert records is None and outcome.error.startswith("ImplementationProtocolError")
         assert "trace" in outcome.error
     finally:

@@ -116,6 +116,14 @@ def test_a_trace_at_the_grain_of_steps_parts_from_the_port_at_the_first_differin
     assert (d.index, d.step, d.field) == (2, 2, "path.frames_stationary_fall")
 
 
+def test_a_routine_the_other_side_declares_but_never_ran_is_a_divergence():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    skipped = [r for r in records if r.anchor != "Transition.cs:StepDown"]
+    assert first_divergence(records, skipped) is None  # StepDown then is below the other side's grain
+    d = first_divergence(records, skipped, frozenset({"Transition.cs:StepDown"}))
+    assert d.field == "anchor" and d.a.anchor == "Transition.cs:StepDown"
+
+
 def test_a_missing_record_is_a_divergence_of_the_anchor_and_a_short_trace_ends_in_one():
     _, records = traced_run(scene_of("cliff_edge_slide"))
     i = next(i for i, r in enumerate(records) if r.event == "enter" and r.anchor == "Transition.cs:StepDown")
