@@ -299,8 +299,31 @@ def first_divergence(reference, other, anchors=None) -> Divergence | None:
             vb = fb.get(name)
             if name not in fb or not _same(va, vb):
                 routine = a.anchor if a.event in ("exit", "call") and not name.startswith("args") else inner
+                if name.startswith("args"):
+                    routine = _caller_handed_them(ref, oth, n, routine)
                 return Divergence(n, a, b, name, va, vb, routine, ia, ib)
     return None
+
+
+def _caller_handed_them(ref, oth, n: int, routine: str) -> str:
+    """Different arguments at record n were handed by `routine`; a `call` record is written at its
+    routine's exit, after its callees' records, so when `routine`'s own call record (the next one of
+    it) shows different arguments too, the values came from further up: climb to its caller."""
+    while True:
+        m = next((k for k in range(n + 1, len(ref)) if ref[k][1].anchor == routine and ref[k][1].event == "call"), None)
+        if m is None or m >= len(oth):
+            return routine
+        a, b = ref[m][1], oth[m][1]
+        if (b.anchor, b.event) != (a.anchor, a.event) or a.within is None or _same_args(a.args, b.args):
+            return routine
+        n, routine = m, a.within
+
+
+def _same_args(x, y) -> bool:
+    fx, fy = [], []
+    _flat(x, "args", fx)
+    _flat(y, "args", fy)
+    return len(fx) == len(fy) and all(p == q and _same(u, v) for (p, u), (q, v) in zip(fx, fy))
 
 
 def _flat_part(r: TraceRecord, name: str):

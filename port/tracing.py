@@ -111,6 +111,9 @@ def plain(v, depth: int = 0):
         return _vec_list(v.center) + [_num(v.radius)]
     if hasattr(v, "normal") and hasattr(v, "d") and hasattr(v.normal, "x"):  # a Plane
         return _vec_list(v.normal) + [_num(v.d)]
+    if hasattr(v, "origin") and hasattr(v, "orientation") and hasattr(v.origin, "x"):  # an AFrame: origin, [w, x, y, z]
+        q = v.orientation
+        return _vec_list(v.origin) + [_num(q.w), _num(q.x), _num(q.y), _num(q.z)]
     if hasattr(v, "obj_cell_id") and hasattr(v, "frame"):  # a Position: [cell, origin]
         return [int(v.obj_cell_id)] + _vec_list(v.frame.origin)
     if isinstance(v, (tuple, list)):
