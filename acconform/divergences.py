@@ -3,7 +3,7 @@
 Each `Known` row names the ACE methods (``File.cs:Method``, as trace records name them) where an
 implementation that follows retail parts from ACE, what ACE does, what retail does, where the row
 comes from, and two checks that keep it true: text that must be (and must not be) in ACE's source
-at the pinned commit, and in the port's source (the port follows ACE). tests/test_divergences.py
+at the pinned commit, and in the port's source (the port follows ACE). tests/test_known_divergences.py
 runs both checks and checks that docs/divergences.md holds the table `markdown()` writes.
 
 `known_for(divergence)` is the row a first divergence (acconform.trace.Divergence) matches, if
@@ -40,7 +40,7 @@ class Known:
 
 DERETH = "dereth docs/CORRECTIONS.md, section 2"
 DOCS = "docs/divergences.md (this project)"
-REGISTRY_TEST = "tests/test_divergences.py::test_each_known_divergence_is_in_aces_source_and_in_the_port"
+REGISTRY_TEST = "tests/test_known_divergences.py::test_each_known_divergence_is_in_aces_source_and_in_the_port"
 
 KNOWN: tuple[Known, ...] = (
     Known("terrain_never_walkable", ("LandCell.cs:FindEnvCollisions",),

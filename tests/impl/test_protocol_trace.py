@@ -31,7 +31,7 @@ def test_the_built_in_port_lists_the_trace_feature_in_its_handshake():
 
 @pytest.mark.anchor("CTransition::find_transitional_position")
 def test_acconform_serve_answers_a_traced_request_with_the_ports_outcome_and_trace():
-    impl = Implementation(f"{sys.executable} -m acconform.cli serve")
+    impl = Implementation(f"{sys.executable} -m acconform.cli serve", timeout=120)
     try:
         assert impl.traces
         scene = example("cliff_edge_slide")
@@ -47,7 +47,7 @@ def test_acconform_serve_answers_a_traced_request_with_the_ports_outcome_and_tra
 
 @pytest.mark.anchor("CTransition::transitional_insert")
 def test_a_planted_bug_traced_through_the_protocol_parts_from_the_port_in_the_mutated_routine():
-    impl = Implementation(f"{sys.executable} {PLANTED} step_down_two_halves_made_thirds")
+    impl = Implementation(f"{sys.executable} {PLANTED} step_down_two_halves_made_thirds", timeout=120)
     try:
         from acconform.oracle.recorded import RecordedOracle
         from acconform.oracle import default_corpus
