@@ -13,7 +13,8 @@ cell_dat.py) hold the records dat.py writes and are handed to the LScape (`lscap
 `lscape.cell_dat`), where DBObj reads them. The mover is made by ACE's makeObject from its own records (dat.mover_records)
 with the id acconform.staging.MOVER_ID. Pass a ``collections.Counter`` as
 `trace` to count the branches the run took (names in acconform.port.transition.branches); a
-branches.Trace carrying a tracing.Recorder gets a trace of snapshots too (`traced_run`).
+branches.Trace carrying a tracing.Recorder gets a trace of snapshots too (`traced_run` wraps the
+routines for that run).
 """
 
 from __future__ import annotations
@@ -201,15 +202,6 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
         finally:
             into.update(trace)
     numerics = get_mode(mode, runtime)  # an unknown mode or runtime is misuse, not a verdict
-    if trace is not None and trace.recorder is not None:  # a trace of snapshots: the routines wrapped for this run
-        from .tracing import installed
-
-        with installed(trace.recorder):
-            return _run_scene(scene, numerics, trace)
-    return _run_scene(scene, numerics, trace)
-
-
-def _run_scene(scene: Scene, numerics, trace) -> Outcome:
     try:
         try:
             return _run_quietly(scene, numerics, trace)
@@ -228,10 +220,11 @@ def _run_scene(scene: Scene, numerics, trace) -> Outcome:
 
 @harness("runs a scene with tracing on: its outcome and its trace records (acconform.trace)")
 def traced_run(scene: Scene, mode: str = "exact", runtime: str = "mono"):
-    from .tracing import Recorder
+    from .tracing import Recorder, installed
 
     trace = Trace(Recorder())
-    outcome = run_scene(scene, mode, trace, runtime)
+    with installed(trace.recorder):  # the routines wrapped for this run only
+        outcome = run_scene(scene, mode, trace, runtime)
     return outcome, tuple(trace.recorder.records)
 
 
