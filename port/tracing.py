@@ -4,7 +4,7 @@ Off (the default), nothing here runs: the port's routines are the plain function
 per-step points (each pass of FindTransitionalPosition's loop, each TransitionalInsert attempt,
 each tick of run_ticks) test ``trace is not None and trace.recorder is not None`` once.
 
-On (`run_scene` given a branches.Trace carrying a `Recorder`), `installed` puts a wrapper around
+On (`run.traced_run`: run_scene given a branches.Trace carrying a `Recorder`), `installed` puts a wrapper around
 every routine of the anchor registry (anchors.FUNCTIONS) for the length of that run only: in the
 class that holds it (a method) and in every port module whose globals call it by name; it puts the
 originals back afterwards. What a wrapper writes depends on the routine's ACE file:
