@@ -22,6 +22,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "validate": ("acconform.commands.validate", "check scene, case and record files; exit 2 naming the first bad field"),
     "check": ("acconform.commands.check", "run a differential campaign, port vs ACE (live or recorded); save shrunk cases"),
     "repro": ("acconform.commands.repro", "replay a case file on the port (and live ACE) and print the differences"),
+    "explain": ("acconform.commands.explain", "the first step where a case's implementation parts from the reference "
+                "trace: tick, step, routine, field, both values and their ulps (--html: a page with pictures)"),
+    "report": ("acconform.commands.report", "an HTML index of a failures directory's cases, grouped by first divergence"),
     "show": ("acconform.commands.show", "print a scene, case, record or outcome file readably"),
     "record": ("acconform.commands.record", "run scenes through live ACE and append the records to the recorded-oracle corpus"),
     "coverage": ("acconform.commands.coverage", "how often each port branch fires per 1,000 generated scenes"),
@@ -31,7 +34,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "stress": ("acconform.commands.stress", "numerical stability: ULP nudges, borders, FloorZ, world edges; port vs live ACE"),
     "run": ("acconform.commands.run", "run one scene through the port (or --impl) and print its outcome"),
     "serve": ("acconform.commands.serve", "the built-in port as an implementation speaking acconform.protocol/1 on stdin/stdout"),
-    "schema": ("acconform.commands.schema", "print the JSON Schema of scenes or outcomes, generated from the records"),
+    "schema": ("acconform.commands.schema", "print the JSON Schema of scenes, outcomes or traces, generated from the records"),
 }
 
 

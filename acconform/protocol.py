@@ -85,6 +85,13 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
 }
 
 
+# Features an implementation may offer that no scene needs: it lists them in its handshake too.
+CAPABILITIES: dict[str, str] = {
+    "trace": "answers a request carrying \"trace\": true with its outcome and a \"trace\" of records "
+             "(acconform.trace/1): `acconform explain` finds the first record where it parts from the port",
+}
+
+
 def scene_features(scene: Scene) -> list[str]:
     return [name for name, (needs, _) in FEATURES.items() if needs(scene)]
 
@@ -96,7 +103,7 @@ class ImplementationError(AcconformError):
 def handshake(name: str = "acconform", version: str = __version__) -> dict:
     """The built-in port's handshake: every kind, every feature, both modes."""
     return {"protocol": PROTOCOL, "name": name, "version": version, "kinds": list(KINDS),
-            "features": list(FEATURES), "modes": list(MODES)}
+            "features": list(FEATURES) + list(CAPABILITIES), "modes": list(MODES)}
 
 
 def check_handshake(doc, command: str) -> dict:
@@ -109,7 +116,7 @@ def check_handshake(doc, command: str) -> dict:
         raise bad("expected a JSON object")
     if doc.get("protocol") != PROTOCOL:
         raise bad(f"protocol {doc.get('protocol')!r}; this acconform speaks {PROTOCOL!r}")
-    for key, known in (("kinds", KINDS), ("features", tuple(FEATURES)), ("modes", MODES)):
+    for key, known in (("kinds", KINDS), ("features", tuple(FEATURES) + tuple(CAPABILITIES)), ("modes", MODES)):
         v = doc.get(key)
         if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
             raise bad(f"{key!r} must be a list of strings")
@@ -165,6 +172,8 @@ class Implementation:
         self._next_id = 0
         self._inflight: deque[tuple[int, Scene]] = deque()  # requests sent, answers not yet read, in order
         self._answers: dict[int, Outcome] = {}
+        self._traces: dict[int, tuple] = {}  # request id -> (trace records, declared anchors) its answer carried
+        self._traced: set[int] = set()  # request ids sent with "trace": true
         self._stderr_of: dict[int, str] = {}  # request id -> the process's stderr when it failed on it
         self.last_stderr = ""  # of the scene `run` answered last: its stderr if it failed, else ""
         self._sel = None
@@ -342,6 +351,34 @@ class Implementation:
         self.last_stderr = self._stderr_of.pop(rid, "")
         return self._answers.pop(rid)
 
+    @property
+    def traces(self) -> bool:
+        """Whether its handshake lists the `trace` feature."""
+        return "trace" in self.hello["features"]
+
+    def run_traced(self, scene: Scene):
+        """(outcome, trace records, the routines its trace declares) for `scene`, asked with
+        ``"trace": true``; records and routines are None when the implementation does not trace (no
+        `trace` feature) or failed on the scene, the routines None when its trace declares none."""
+        if not self.traces:
+            return self.run(scene), None, None
+        why = self._ensure()
+        if why is not None:
+            return self._verdict(why), None, None
+        while self._inflight:  # answers to scenes sent ahead come first
+            self._read_answer()
+        self._answers.clear()
+        self._next_id += 1
+        rid = self._next_id
+        self._inflight.append((rid, scene))
+        self._traced.add(rid)
+        self._send(scene, rid)
+        while rid not in self._answers:
+            self._read_answer()
+        self._traced.discard(rid)
+        records, anchors = self._traces.pop(rid, (None, None))
+        return self._answers.pop(rid), records, anchors
+
     def prefetch(self, scene: Scene) -> None:
         """Send `scene` ahead, so the implementation works on it while the harness compares the
         previous answer (a replay knows its next scene). At most two requests are in flight."""
@@ -366,8 +403,10 @@ class Implementation:
             self._next_id += 1
             rid = self._next_id
             self._inflight.append((rid, scene))
-        request = deep.retrying(lambda: dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime,
-                                                       "scene": scene.to_json()})) + "\n"
+        doc = {"id": rid, "mode": self.mode, "runtime": self.runtime, "scene": scene.to_json()}
+        if rid in self._traced:
+            doc["trace"] = True
+        request = deep.retrying(lambda: dumps_compact(doc)) + "\n"
         self._write(request.encode("utf-8"))
         return rid
 
@@ -406,6 +445,12 @@ class Implementation:
             if "outcome" not in doc:
                 raise ValueError("no \"outcome\" field")
             outcome = Outcome.from_json(doc["outcome"], "outcome", exact=True)  # a float must name a float32
+            if rid in self._traced:
+                if "trace" not in doc:
+                    raise ValueError("no \"trace\" field, though the request asked for one (feature trace)")
+                from .trace import trace_anchors, trace_from_json
+
+                self._traces[rid] = (trace_from_json(doc["trace"], "trace", exact=True), trace_anchors(doc["trace"]))
         except (ValueError, InvalidScene) as e:
             return self._fail_head(f"{PROTOCOL_ERROR}: malformed answer ({e}): {line[:120]!r}")
         self._inflight.popleft()
@@ -438,9 +483,11 @@ class Implementation:
 
 
 def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None,
-          default_runtime: str = DEFAULT_RUNTIME) -> int:
+          default_runtime: str = DEFAULT_RUNTIME, run_traced=None, trace_anchors=None) -> int:
     """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side);
-    a request that names no runtime is computed as `default_runtime`.
+    a request that names no runtime is computed as `default_runtime`. `run_traced(scene, mode,
+    runtime) -> (outcome, records)` answers a request with ``"trace": true`` (feature `trace`), its
+    trace declaring `trace_anchors` (the routines it records) when given.
 
     A request that cannot be read is answered with an outcome whose error says why (the harness
     counts it as the implementation's verdict); the loop goes on.
@@ -463,9 +510,19 @@ def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=No
                 raise ValueError(f"unknown mode {mode!r}")
             if runtime not in RUNTIMES:
                 raise ValueError(f"unknown runtime {runtime!r} (known: {', '.join(RUNTIMES)})")
-            outcome = run_scene(deep.retrying(Scene.from_json, req["scene"], "scene"), mode, runtime)
+            scene = deep.retrying(Scene.from_json, req["scene"], "scene")
+            records = None
+            if req.get("trace") is True and run_traced is not None:
+                outcome, records = run_traced(scene, mode, runtime)
+            else:
+                outcome = run_scene(scene, mode, runtime)
         except (ValueError, InvalidScene) as e:
-            outcome = Outcome(error=f"InvalidRequest: {e}")
-        stdout.write((dumps_compact({"id": rid, "outcome": outcome.to_json()}) + "\n").encode("utf-8"))
+            outcome, records = Outcome(error=f"InvalidRequest: {e}"), None
+        answer = {"id": rid, "outcome": outcome.to_json()}
+        if records is not None:
+            from .trace import trace_to_json
+
+            answer["trace"] = trace_to_json(records, trace_anchors)
+        stdout.write((dumps_compact(answer) + "\n").encode("utf-8"))
         stdout.flush()
     return 0

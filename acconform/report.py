@@ -3,8 +3,9 @@
 The JSON summary (``acconform.summary/1``) holds the cases run (compared + skipped), compared
 and skipped (by reason), the scenes shrinking ran besides, the differences by field and by scene
 kind with their case files (each labelled with how it was shrunk), the seed, versions and timings.
-The JUnit file has one testcase per class of difference (the set of differing fields, the
-runner's signature), each naming its case files; a clean campaign is one passing testcase.
+The JUnit file has one testcase per group of differences (their first divergence, routine and field,
+where the implementation traces; else the set of differing fields, the runner's signature), each
+naming its case files; a clean campaign is one passing testcase.
 """
 
 from __future__ import annotations
@@ -36,10 +37,12 @@ class Campaign:
     kinds_skipped: tuple[str, ...] = ()  # asked for, but the implementation's handshake does not list them
 
 
-def _classes(result: Result) -> dict[tuple[str, ...], list]:
-    out: dict[tuple[str, ...], list] = {}
+def _classes(result: Result) -> dict[str, list]:
+    """The differences by group: their first divergence where the implementation traces (`check`'s
+    triage), else the set of fields they differ in."""
+    out: dict[str, list] = {}
     for f in result.found:
-        out.setdefault(f.signature, []).append(f)
+        out.setdefault(f.group_key, []).append(f)
     return out
 
 
@@ -53,6 +56,7 @@ def summary(result: Result, c: Campaign) -> dict:
         by_field.update(f.signature)
         sh = f.case.shrink
         cases.append({"file": str(f.path) if f.path else None, "kind": kind, "fields": list(f.signature),
+                      "group": f.group_key, "known_divergence": f.known or None,
                       "shrunk": f.shrunk, "shrunk_against": sh.against, "shrink_note": sh.note,
                       "bytes_before": sh.bytes_before or None, "bytes_after": sh.bytes_after or None,
                       "differences": list(f.case.differences)})
@@ -72,6 +76,9 @@ def summary(result: Result, c: Campaign) -> dict:
                   "skipped_total": sum(result.skipped.values()), "shrink_runs": result.shrink_runs,
                   "bad_records": len(c.bad_records)},
         "differences": {"total": len(result.found), "kinds_of_difference": len(_classes(result)),
+                        "groups": [{"group": g, "cases": len(fs), "known_divergence": fs[0].known or None,
+                                    "kept": str(next((x for x in fs if x.shrunk), fs[0]).path)}
+                                   for g, fs in _classes(result).items()],
                         "by_field": dict(sorted(by_field.items())),
                         "by_kind": dict(sorted(by_kind.items())), "cases": cases},
         "failures_dir": c.failures_dir,
@@ -94,10 +101,10 @@ def junit(result: Result, c: Campaign) -> ET.Element:
                    ("kinds", ",".join(c.kinds)), ("implementation", c.implementation.get("name", "")),
                    ("cases", str(result.cases)), ("interrupted", str(result.interrupted).lower())):
         ET.SubElement(props, "property", name=k, value=val)
-    for sig, found in classes.items():
+    for group, found in classes.items():
         kinds = sorted({scene_kind(f.case.scene) for f in found})
-        tc = ET.SubElement(suite, "testcase", classname=f"acconform.{'+'.join(kinds)}",
-                           name="differs in " + ", ".join(sig))
+        known = f" (known: ACE differs from retail here: {found[0].known})" if found[0].known else ""
+        tc = ET.SubElement(suite, "testcase", classname=f"acconform.{'+'.join(kinds)}", name=group + known)
         files = [str(f.path) if f.path else "(not written)" for f in found]
         failure = ET.SubElement(tc, "failure", message=f"{len(found)} case{'s' if len(found) != 1 else ''}: "
                                 + ", ".join(files), type="difference")

@@ -107,6 +107,14 @@ class Found:
     case: Case
     path: Path | None = None
     signature: tuple[str, ...] = ()
+    # its first divergence (`check` fills it after the campaign: acconform.explain.triage): the group it
+    # is counted in, and the known ACE-versus-retail divergence it matches, if any
+    group: str = ""
+    known: str = ""
+
+    @property
+    def group_key(self) -> str:
+        return self.group or "differs in " + ", ".join(self.signature)
 
     @property
     def shrunk(self) -> bool:

@@ -24,6 +24,7 @@ from collections import defaultdict
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
 SAMPLE_SEED = 0
 SAMPLE_PER_KIND = 40
+TRACE_SAMPLE_PER_KIND = 3  # a trace has thousands of records: a few scenes show every shape
 HEX_ID = re.compile(r"^0x[0-9A-F]{8}$")
 NONFINITE = {"type": "string", "pattern": "^0x[0-9A-Fa-f]{8}$",
              "description": "a float32's bit pattern (\"0x80000000\" is -0.0); a non-finite float32 is always written so"}
@@ -204,6 +205,21 @@ def schemas() -> tuple[dict, dict]:
             + [x.to_json() for x in _tick_outcomes()])
     outcome = o.finish(o._plain(docs), "acconform outcome", (OUTCOME_FORMAT_V2, OUTCOME_FORMAT_V3, OUTCOME_FORMAT))
     return scene, outcome
+
+
+def trace_schema() -> dict:
+    """The schema of a trace (acconform.trace/1), inferred from the port's traces of a fixed sample:
+    TRACE_SAMPLE_PER_KIND seeded scenes of every kind and the tick scenes made from the first."""
+    from .port.run import traced_run
+    from .strategies import ALL_KINDS, sample_scenes
+    from .trace import FORMAT, trace_to_json
+
+    scenes = []
+    for kind in ALL_KINDS:
+        scenes += list(sample_scenes((kind,), TRACE_SAMPLE_PER_KIND, SAMPLE_SEED))
+    scenes += _tick_scenes(scenes[0])
+    t = _Inferrer(nonfinite_floats=True)
+    return t.finish(t._plain([trace_to_json(traced_run(s)[1]) for s in scenes]), "acconform trace", FORMAT)
 
 
 # ---------------------------------------------------------------- the outcome's fields as a table

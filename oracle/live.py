@@ -106,6 +106,29 @@ class LiveOracle:
             pos += 4 + n
         return out
 
+    def stepped_trace(self, scene: Scene):
+        """(ACE's outcome, ACE's own steps as trace records): the scene run as usual, then again with
+        the facade driving FindTransitionalPosition's loop step by step through ACE's public methods
+        (Facade.Stepped), a `step` record (acconform.trace) taken at the start of each pass. Refused
+        (SteppedTraceRefused, naming why) when the stepped run does not end in exactly ACE's own
+        outcome, or the scene has no single transition to step (a tick scene)."""
+        from ..compare import compare
+
+        if scene.ticks is not None:
+            raise SteppedTraceRefused("a tick scene: ACE's transitions run inside its own update_object, not stepped")
+        plain = self.run(scene)
+        self._facade.Stepped = True
+        try:
+            stepped = self.run(scene)
+            data = bytes(self._facade.Steps())
+        finally:
+            self._facade.Stepped = False
+        diffs = compare(stepped, plain, "exact")
+        if diffs:
+            raise SteppedTraceRefused(f"the stepped run does not end in ACE's own outcome ({diffs[0]}; "
+                                      f"{len(diffs)} field{'s' if len(diffs) != 1 else ''} differ)")
+        return plain, unpack_steps(data)
+
     def set_landblock_cache(self, enabled: bool) -> None:
         """Reuse built landblocks across scenes (default on); off rebuilds every landblock per scene."""
         self._facade.CacheLandblocks = bool(enabled)
@@ -113,6 +136,47 @@ class LiveOracle:
 
     def __repr__(self):
         return f"LiveOracle({str(self.location.assembly)!r}, runtime={self.location.runtime!r})"
+
+
+class SteppedTraceRefused(OracleError):
+    """ACE's stepped trace cannot stand for ACE's run of this scene (the reason says why)."""
+
+
+def unpack_steps(data: bytes) -> tuple:
+    """Facade.Steps(): int count, then per pass of the loop its step number and the transition."""
+    from ..outcome import ContactPlaneState, NormalState, PlaneState
+    from ..trace import PathState, TraceRecord
+
+    pos = 0
+
+    def take(fmt):
+        nonlocal pos
+        v = struct.unpack_from("<" + fmt, data, pos)
+        pos += struct.calcsize("<" + fmt)
+        return v
+
+    def plane():
+        valid, cell, water, nx, ny, nz, d = take("BIBffff")
+        return ContactPlaneState(bool(valid), cell, bool(water), (nx, ny, nz), d)
+
+    if not data:
+        return ()
+    (count,) = take("i")
+    out = []
+    for _ in range(count):
+        step, check_cell, cx, cy, cz, cur_cell, ux, uy, uz, ox, oy, oz = take("iIfffIffffff")
+        contact, last = plane(), plane()
+        cv, cnx, cny, cnz = take("Bfff")
+        sv, snx, sny, snz = take("Bfff")
+        (has_walkable,) = take("B")
+        walkable = PlaneState(take("fff"), take("f")[0]) if has_walkable else None
+        step_up, step_down, collide, neg = take("BBBB")
+        fsf, state = take("iI")
+        out.append(TraceRecord("Transition.cs:FindTransitionalPosition", "step", step=step, path=PathState(
+            check_cell, (cx, cy, cz), cur_cell, (ux, uy, uz), (ox, oy, oz), contact, last,
+            NormalState(bool(cv), (cnx, cny, cnz)), NormalState(bool(sv), (snx, sny, snz)), walkable,
+            bool(step_up), bool(step_down), bool(collide), bool(neg), fsf, state)))
+    return tuple(out)
 
 
 def _load(location):

@@ -30,6 +30,8 @@ class Anchor:
 
 
 REGISTRY: dict[str, Anchor] = {}
+# the registered functions themselves, by the same key (port/tracing.py wraps them for a traced run)
+FUNCTIONS: dict[str, object] = {}
 
 
 def anchor(retail: str | None, ace: str, note: str = ""):
@@ -41,6 +43,7 @@ def anchor(retail: str | None, ace: str, note: str = ""):
         if key in REGISTRY or key in HARNESS:
             raise ValueError(f"{key} is anchored twice")
         REGISTRY[key] = Anchor(key, retail, ace, note)
+        FUNCTIONS[key] = fn
         return fn
 
     return register

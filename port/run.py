@@ -12,7 +12,9 @@ from the stabs of the cell's DAT record. The run's portal DAT and cell DAT (port
 cell_dat.py) hold the records dat.py writes and are handed to the LScape (`lscape.portal_dat`,
 `lscape.cell_dat`), where DBObj reads them. The mover is made by ACE's makeObject from its own records (dat.mover_records)
 with the id acconform.staging.MOVER_ID. Pass a ``collections.Counter`` as
-`trace` to count the branches the run took (names in acconform.port.transition.branches).
+`trace` to count the branches the run took (names in acconform.port.transition.branches); a
+branches.Trace carrying a tracing.Recorder gets a trace of snapshots too (`traced_run` wraps the
+routines for that run).
 """
 
 from __future__ import annotations
@@ -207,11 +209,30 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
             if trace is not None:
                 trace.clear()
                 trace.closest.clear()
+                if trace.recorder is not None:
+                    trace.recorder.clear()
             return deep.call(_run_quietly, scene, numerics, trace, frames=deep.RUN_FRAMES)
     except deep.TooDeep:
         raise  # deeper than the harness runs anything: misuse (exit 2), not a verdict
     except Exception as e:
         return Outcome(error=verdict(e))
+
+
+@harness("runs a scene with tracing on: its outcome and its trace records (acconform.trace)")
+def traced_run(scene: Scene, mode: str = "exact", runtime: str = "mono"):
+    from .tracing import Recorder, installed
+
+    trace = Trace(Recorder())
+    with installed(trace.recorder):  # the routines wrapped for this run only
+        outcome = run_scene(scene, mode, trace, runtime)
+    return outcome, tuple(trace.recorder.records)
+
+
+@harness("the routines a traced run records at enter, exit or call: every anchored ACE method")
+def traced_anchors() -> frozenset:
+    from .anchors import load_all
+
+    return frozenset(a.ace for a in load_all().values())
 
 
 @harness("an exception in the port as an outcome's error string, as the oracle reports ACE's")
@@ -374,7 +395,9 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
     ticks = scene.ticks
     mode = lscape.mode
     states = []
-    for step, time in zip(ticks.steps, ticks.times()):
+    for index, (step, time) in enumerate(zip(ticks.steps, ticks.times())):
+        if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
+            trace.recorder.at_tick(index)
         try:
             apply_inputs(mover, step, mode)
             timer.set(time)
@@ -387,4 +410,6 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             states.append(TickState(error=verdict(e)))
             break
         states.append(tick_state(mover, updated))
+        if trace is not None and trace.recorder is not None:  # tracing: the mover after the tick
+            trace.recorder.at_tick(index, states[-1])
     return tuple(states)

@@ -71,3 +71,17 @@ def test_the_schemas_name_every_tick_record_field_and_the_tick_formats(generated
     assert set(tick["properties"]) == {f.name for f in fields(TickState)}
     assert set(tick["required"]) == {f.name for f in fields(TickState)} - {"error"}  # an errored tick writes the defaults
     assert outcome["properties"]["format"] == {"enum": ["acconform.outcome/2", "acconform.outcome/3", "acconform.outcome/4"]}
+
+
+def test_the_trace_schema_names_every_field_a_trace_record_and_its_snapshot_write():
+    from acconform.schema import trace_schema
+    from acconform.trace import FORMAT, PathState, TraceRecord
+
+    schema = trace_schema()
+    assert schema["properties"]["format"] == {"const": FORMAT}
+    record = schema["properties"]["records"]["items"]
+    assert set(record["properties"]) == {f.name for f in fields(TraceRecord)}
+    assert set(record["required"]) == {"anchor", "event"}
+    path = next(o for o in record["properties"]["path"].get("anyOf", [record["properties"]["path"]])
+                if o.get("type") == "object")
+    assert set(path["properties"]) == {f.name for f in fields(PathState)}

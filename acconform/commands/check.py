@@ -120,6 +120,10 @@ def _campaign(args, port, kinds, workers) -> int:
                           stand_in=stand_in)
     result.skipped.update(presampled)
     result.cases += sum(presampled.values())
+    if result.found and not result.interrupted:  # group the differences by their first divergence
+        from ..explain import triage
+
+        triage(result.found, port, args.mode, runtime, None if args.no_progress else _say)
     bad = bad + result.unreadable
     for line in console_summary(result, bad, keep_going=args.keep_going):
         print(line, flush=True)
@@ -176,20 +180,25 @@ def console_summary(result, bad, keep_going: bool) -> list[str]:
         return out
     by_field: Counter = Counter()
     by_kind: Counter = Counter()
-    groups: dict[tuple, list] = {}
+    groups: dict[str, list] = {}
     for f in result.found:
         by_field.update(f.signature)
         by_kind[scene_kind(f.case.scene)] += 1
-        groups.setdefault(f.signature, []).append(f)
+        groups.setdefault(f.group_key, []).append(f)
+    traced = any(f.group for f in result.found)
+    out.append(f"{_plural(len(result.found), 'difference')}, {len(groups)} distinct "
+               + ("first divergence" + ("s" if len(groups) != 1 else "") if traced else
+                  "set" + ("s" if len(groups) != 1 else "") + " of differing fields (the implementation gives no trace)"))
     out.append("differences by field: " + ", ".join(f"{k} x{n}" for k, n in sorted(by_field.items(), key=lambda kv: (-kv[1], kv[0]))))
     out.append("differences by kind:  " + ", ".join(f"{k} x{n}" for k, n in sorted(by_kind.items(), key=lambda kv: (-kv[1], kv[0]))))
-    for sig, found in groups.items():
-        f = found[0]
-        out.append(f"  {f.path} ({shrink_label(f.case.shrink)}; {f.case.scene.name or 'scene'})")
-        out += [f"    {line}" for line in f.case.differences]
+    for key, found in groups.items():
+        f = next((x for x in found if x.shrunk), found[0])  # one shrunk case per group
+        known = f" -- known: ACE differs from retail here ({f.known})" if f.known else ""
+        out.append(f"  {key}{known}")
+        out.append(f"    {f.path} ({shrink_label(f.case.shrink)}; {f.case.scene.name or 'scene'})")
+        out += [f"      {line}" for line in f.case.differences]
         if len(found) > 1:
-            out.append(f"    + {_plural(len(found) - 1, 'more scene')} differing in the same fields "
-                       f"({', '.join(sig)}), written as recorded beside it (listed in --json)")
+            out.append(f"    + {_plural(len(found) - 1, 'more case')} in this group (listed in --json)")
     return out
 
 

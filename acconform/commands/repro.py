@@ -1,6 +1,7 @@
 """acconform repro FILE: replay a case on the port or --impl (and the live oracle where configured).
 
-Prints the field-by-field difference. Exit 0 when the case no longer fails, 1 when it still
+Prints the field-by-field difference, with, on top, the first divergence (`acconform explain`)
+when the implementation traces (the protocol's `trace` feature). Exit 0 when the case no longer fails, 1 when it still
 does, 2 for a bad file. Without a live ACE the oracle's side is the outcome stored in the case.
 
 A case made with --impl names its implementation (command, directory, handshake): `repro`
@@ -28,44 +29,30 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     from ..case import Case, load_document
     from ..compare import compare, render
-    from ..errors import AcconformError, InvalidScene
-    from ..numerics import runtime_named
-    from ..oracle import live_configured
+    from ..errors import InvalidScene
     from ..runner import guarded
 
     doc = load_document(args.file)
     if not isinstance(doc, Case):
         raise InvalidScene("format", "expected a case file (\"acconform.case/2\"); use `acconform show` for other files", args.file)
     mode = args.mode or doc.mode
-    if live_configured(args.ace):  # the port computes as the ACE it is compared with
-        from ..oracle.config import resolve
-
-        runtime = resolve(args.ace, args.runtime).runtime
-    else:  # ... as the ACE that answered the case
-        runtime = runtime_named(doc.versions.runtime)
-        if args.runtime is not None and args.runtime != runtime:
-            raise AcconformError(f"--runtime {args.runtime}: this case holds the answer of ACE on {runtime}, and "
-                                 f"without a live ACE nothing answers as {args.runtime} (configure ACE, or drop --runtime)")
+    runtime = _runtime(args, doc)
     backend, said = _backend(args, doc, mode)
     backend.runtime = runtime
     try:
         port = guarded(backend, doc.scene)
+        oracle, source = ace_answer(args, doc)
+        first = None
+        if compare(port, oracle, mode) and getattr(backend, "traces", False):  # the first divergence on top
+            from ..explain import explain, render as render_explanation
+
+            first = render_explanation(explain(doc.scene, oracle, source, backend, mode, runtime))
     finally:
         getattr(backend, "close", lambda: None)()
-    if live_configured(args.ace):
-        from ..oracle import require_live
-
-        oracle = guarded(require_live(args.ace, args.runtime).run, doc.scene)
-        source = "live ACE"
-    else:
-        oracle = doc.oracle
-        source = "the oracle outcome recorded in the case (no ACE configured)"
     diffs = compare(port, oracle, mode)
-    if source != "live ACE" and doc.shrink.against == "port":
-        source += "; it is the built-in port's, which stood in for ACE when the case was shrunk"
     who = f"implementation {backend.name!r}" if getattr(backend, "command", None) else "port"
     print(f"{args.file}: {who} (mode {mode}, {runtime} arithmetic) vs {source}")
-    for line in said:
+    for line in said + (first or []):
         print(line)
     if not diffs:
         print("no longer fails: every field agrees")
@@ -74,6 +61,39 @@ def run(args) -> int:
     for line in render(diffs):
         print(f"  {line}")
     return 1
+
+
+def _runtime(args, doc) -> str:
+    """The runtime the case is replayed as: the live ACE's, else the one whose answer the case holds."""
+    from ..errors import AcconformError
+    from ..numerics import runtime_named
+    from ..oracle import live_configured
+
+    if live_configured(args.ace):  # the port computes as the ACE it is compared with
+        from ..oracle.config import resolve
+
+        return resolve(args.ace, args.runtime).runtime
+    runtime = runtime_named(doc.versions.runtime)  # ... as the ACE that answered the case
+    if args.runtime is not None and args.runtime != runtime:
+        raise AcconformError(f"--runtime {args.runtime}: this case holds the answer of ACE on {runtime}, and "
+                             f"without a live ACE nothing answers as {args.runtime} (configure ACE, or drop --runtime)")
+    return runtime
+
+
+def ace_answer(args, doc):
+    """(ACE's outcome for the case's scene, where it comes from): live ACE where configured, else the
+    answer recorded in the case (said so, and whose it is when the case was shrunk against the port)."""
+    from ..oracle import live_configured
+    from ..runner import guarded
+
+    if live_configured(args.ace):
+        from ..oracle import require_live
+
+        return guarded(require_live(args.ace, args.runtime).run, doc.scene), "live ACE"
+    source = "the oracle outcome recorded in the case (no ACE configured)"
+    if doc.shrink.against == "port":
+        source += "; it is the built-in port's, which stood in for ACE when the case was shrunk"
+    return doc.oracle, source
 
 
 def _backend(args, doc, mode):

@@ -15,11 +15,13 @@ def add_arguments(p) -> None:
 
 
 def run(args) -> int:
-    from ..port.run import run_scene
+    from ..port.run import run_scene, traced_anchors, traced_run
     from ..protocol import serve
     from ..runner import campaign_gc
     from . import runtime_or_default
 
     with campaign_gc():  # the collector tuned as for an in-process campaign (runner.GC_THRESHOLDS)
         return serve(lambda scene, mode, runtime: run_scene(scene, mode=mode, runtime=runtime),
-                     default_runtime=runtime_or_default(args.runtime))
+                     default_runtime=runtime_or_default(args.runtime),
+                     run_traced=lambda scene, mode, runtime: traced_run(scene, mode, runtime),
+                     trace_anchors=traced_anchors())

@@ -987,12 +987,139 @@ namespace Acconform.Oracle
             else if ((ts & TransientStateFlags.StationaryStop) != 0) trans.CollisionInfo.FramesStationaryFall = 2;
             else if ((ts & TransientStateFlags.StationaryFall) != 0) trans.CollisionInfo.FramesStationaryFall = 1;
             var sw = Stopwatch.StartNew();
-            var ok = trans.FindValidPosition();
+            var ok = Stepped ? SteppedFindValidPosition(trans) : trans.FindValidPosition();
             sw.Stop();
             fvpMicros = sw.Elapsed.TotalMilliseconds * 1000.0;
             trans.CleanupTransition();
             transitionMicros = whole.Elapsed.TotalMilliseconds * 1000.0;
             return ok;
+        }
+
+        // ------------------------------------------------------------------ ACE's stepped trace
+        /// <summary>When set, the transition's FindValidPosition runs as the loop below: ACE's own
+        /// FindTransitionalPosition, driven step by step through its public methods (CalcNumSteps,
+        /// AdjustOffset, SpherePath.AddOffsetToCheckPos, TransitionalInsert, ValidateTransition), with a
+        /// snapshot of the transition at the start of each pass (Steps()). The Python side checks that a
+        /// stepped run ends in exactly ACE's unstepped outcome before it uses the snapshots.</summary>
+        public static bool Stepped;
+        static readonly MemoryStream stepStream = new MemoryStream();
+        static readonly BinaryWriter stepWriter = new BinaryWriter(stepStream);
+
+        /// <summary>The snapshots of the last stepped run: int count, then per pass its fields.</summary>
+        public static byte[] Steps() => stepStream.ToArray();
+
+        static void WritePlane(BinaryWriter w, bool valid, uint cell, bool water, Plane plane)
+        {
+            w.Write((byte)(valid ? 1 : 0)); w.Write(cell); w.Write((byte)(water ? 1 : 0)); W3(w, plane.Normal); w.Write(plane.D);
+        }
+
+        static void Snapshot(Transition t, int step)
+        {
+            var sp = t.SpherePath;
+            var ci = t.CollisionInfo;
+            var w = stepWriter;
+            w.Write(step);
+            w.Write(sp.CheckCell != null ? sp.CheckCell.ID : 0u); W3(w, sp.CheckPos.Frame.Origin);
+            w.Write(sp.CurCell != null ? sp.CurCell.ID : 0u); W3(w, sp.CurPos.Frame.Origin);
+            W3(w, sp.GlobalOffset);
+            WritePlane(w, ci.ContactPlaneValid, ci.ContactPlaneCellID, ci.ContactPlaneIsWater, ci.ContactPlane);
+            WritePlane(w, ci.LastKnownContactPlaneValid, ci.LastKnownContactPlaneCellID, ci.LastKnownContactPlaneIsWater,
+                       ci.LastKnownContactPlane);
+            w.Write((byte)(ci.CollisionNormalValid ? 1 : 0)); W3(w, ci.CollisionNormal);
+            w.Write((byte)(ci.SlidingNormalValid ? 1 : 0)); W3(w, ci.SlidingNormal);
+            w.Write((byte)(sp.Walkable != null ? 1 : 0));
+            if (sp.Walkable != null) { W3(w, sp.Walkable.Plane.Normal); w.Write(sp.Walkable.Plane.D); }
+            w.Write((byte)(sp.StepUp ? 1 : 0)); w.Write((byte)(sp.StepDown ? 1 : 0));
+            w.Write((byte)(sp.Collide ? 1 : 0)); w.Write((byte)(sp.NegPolyHit ? 1 : 0));
+            w.Write(ci.FramesStationaryFall);
+            w.Write((uint)t.ObjectInfo.State);
+        }
+
+        static bool SteppedFindValidPosition(Transition t)
+        {
+            stepStream.SetLength(0);
+            stepWriter.Write(0);  // the count, written at the end
+            var count = 0;
+            var ok = t.SpherePath.InsertType == InsertType.Transition ? SteppedFindTransitionalPosition(t, ref count)
+                                                                      : t.FindValidPosition();
+            var end = stepStream.Position;
+            stepStream.Position = 0;
+            stepWriter.Write(count);
+            stepStream.Position = end;
+            return ok;
+        }
+
+        // Transition.FindTransitionalPosition's loop, its calls made one by one from here.
+        static bool SteppedFindTransitionalPosition(Transition t, ref int count)
+        {
+            var sp = t.SpherePath;
+            var ci = t.CollisionInfo;
+            var oi = t.ObjectInfo;
+            if (sp.BeginCell == null) return false;
+            var transitionState = TransitionState.OK;
+            var offset = Vector3.Zero;
+            var offsetPerStep = Vector3.Zero;
+            var numSteps = 0;
+            t.CalcNumSteps(ref offset, ref offsetPerStep, ref numSteps);
+            if (numSteps > 1000 && !oi.Object.IsSightObj) return false;
+            if ((oi.State & ObjectInfoState.FreeRotate) != 0)
+                sp.CurPos.Frame.set_rotate(sp.EndPos.Frame.Orientation);
+            sp.SetCheckPos(sp.CurPos, sp.CurCell);
+            var redo = 0;
+            if (numSteps <= 0)
+            {
+                if ((oi.State & ObjectInfoState.FreeRotate) == 0)
+                    sp.CurPos.Frame.set_rotate(sp.EndPos.Frame.Orientation);
+                sp.CellArrayValid = true;
+                sp.HitsInteriorCell = false;
+                ObjCell empty = null;
+                ObjCell.find_cell_list(t.CellArray, ref empty, sp);
+                return true;
+            }
+            for (var step = 0; step < numSteps; step++)
+            {
+                Snapshot(t, step);
+                count++;
+                if ((oi.State & ObjectInfoState.IsViewer) != 0 && step == numSteps - 1)
+                {
+                    var offsetLen = offset.Length();
+                    if (offsetLen > PhysicsGlobals.EPSILON)
+                    {
+                        redo = numSteps - 1;
+                        offsetPerStep = offset * (offsetLen - sp.LocalSphere[0].Radius * (numSteps - 1)) / offsetLen;
+                    }
+                }
+                sp.GlobalOffset = t.AdjustOffset(offsetPerStep);
+                if ((oi.State & ObjectInfoState.IsViewer) == 0 &&
+                    sp.GlobalOffset.LengthSquared() < PhysicsGlobals.EPSILON * PhysicsGlobals.EPSILON)
+                    return step != 0 && transitionState == TransitionState.OK;
+                if ((oi.State & ObjectInfoState.FreeRotate) == 0)
+                {
+                    redo = step + 1;
+                    var delta = (float)redo / numSteps;
+                    sp.CheckPos.Frame.InterpolateRotation(sp.BeginPos.Frame, sp.EndPos.Frame, delta);
+                }
+                ci.SlidingNormalValid = false;
+                ci.ContactPlaneValid = false;
+                ci.ContactPlaneIsWater = false;
+                if (sp.InsertType != InsertType.Transition)
+                {
+                    var insert = t.TransitionalInsert(3);
+                    transitionState = t.ValidatePlacementTransition(insert, ref redo);
+                    if (transitionState == TransitionState.OK) return true;
+                    if (!sp.PlacementAllowsSliding) return false;
+                    sp.AddOffsetToCheckPos(sp.GlobalOffset);
+                }
+                else
+                {
+                    sp.AddOffsetToCheckPos(sp.GlobalOffset);
+                    var transitionInsert = t.TransitionalInsert(3);
+                    transitionState = t.ValidateTransition(transitionInsert, ref redo);
+                    if (ci.FramesStationaryFall > 0) break;
+                }
+                if (ci.CollisionNormalValid && (oi.State & ObjectInfoState.PathClipped) != 0) break;
+            }
+            return transitionState == TransitionState.OK;
         }
 
         // ------------------------------------------------------------------ outcome

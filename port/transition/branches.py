@@ -265,13 +265,15 @@ def _ordered(bits: int) -> int:
 
 class Trace(Counter):
     """A run's branch counts (`trace[branch]`), plus `closest`: per boundary, the fewest float32
-    ulps seen between a compared value and its threshold."""
+    ulps seen between a compared value and its threshold; `recorder` (port/tracing.py's Recorder, or
+    None) asks the run for a trace of snapshots too."""
 
-    __slots__ = ("closest",)
+    __slots__ = ("closest", "recorder")
 
-    def __init__(self):
+    def __init__(self, recorder=None):
         super().__init__()
         self.closest: dict[str, int] = {}
+        self.recorder = recorder
 
     @harness("counts an exact hit of a boundary and keeps its closest approach in ulps")
     def boundary(self, name: str, value, threshold) -> None:

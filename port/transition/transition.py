@@ -356,6 +356,8 @@ class Transition:
             return True
 
         for step in range(num_steps):
+            if self.trace is not None and self.trace.recorder is not None:  # tracing (port/tracing.py)
+                self.trace.recorder.at_step(self, step)
             if oi.state & ObjectInfoState.IsViewer:
                 last_step = num_steps - 1
                 if step == last_step:
@@ -735,6 +737,8 @@ class Transition:
         transit_state = TransitionState.Invalid
 
         for _ in range(num_insertion_attempts):
+            if self.trace is not None and self.trace.recorder is not None:  # tracing (port/tracing.py)
+                self.trace.recorder.at_insert(self)
             transit_state = self.insert_into_cell(sp.check_cell, num_insertion_attempts)
 
             if transit_state == TransitionState.OK:

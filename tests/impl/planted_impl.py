@@ -13,6 +13,7 @@ Lives in tests/, outside the package: the harness sees it only through the proto
 from __future__ import annotations
 
 import argparse
+import importlib
 import os
 import sys
 import time
@@ -43,6 +44,7 @@ def main() -> int:
         from mutants import MUTATIONS, load_mutant
 
         run = load_mutant([m.name for m in MUTATIONS].index(args.mutation))
+    traced = importlib.import_module(run.__module__).traced_run  # its own port's tracing (feature trace)
 
     def answer(scene, mode, runtime):
         kind = scene_kind(scene)
@@ -54,9 +56,14 @@ def main() -> int:
             sys.stdout.buffer.write(b"this is not JSON\n")
         return run(scene, mode=mode, runtime=runtime)
 
+    def answer_traced(scene, mode, runtime):
+        answer(scene, mode, runtime)  # the same crash, hang and garbling
+        return traced(scene, mode, runtime)
+
     hello = handshake("planted", f"0.0+{args.mutation}")
     hello["kinds"] = args.kinds.split(",")
-    return serve(answer, hello=hello)
+    return serve(answer, hello=hello, run_traced=answer_traced,
+                 trace_anchors=importlib.import_module(run.__module__).traced_anchors())
 
 
 if __name__ == "__main__":

@@ -67,7 +67,9 @@ def test_a_planted_bug_is_found_in_the_corpus_and_reported_as_json_and_junit(tmp
     assert all(Path(f).is_file() for f in files)
     suite = ET.parse(tmp_path / "j.xml").getroot().find("testsuite")
     failures = suite.findall("testcase/failure")
-    assert len(failures) == len({tuple(c["fields"]) for c in s["differences"]["cases"]}) >= 1
+    # one planted bug, one group (its first divergence), one testcase, however many fields it spoils
+    assert len(failures) == len(s["differences"]["groups"]) == len({c["group"] for c in s["differences"]["cases"]}) == 1
+    assert s["differences"]["groups"][0]["group"] == "first divergence: Transition.cs:TransitionalInsert args"
     assert set(files) <= {f for fl in failures for f in fl.get("message").split(": ", 1)[1].split(", ")}
 
 

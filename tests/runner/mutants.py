@@ -428,6 +428,37 @@ def hunt(index: int, budget: int = BUDGET, seed: int = SEED, failures_dir=None, 
     return out
 
 
+# ---------------------------------------------------------------- scenes that kill a mutant (explain's tests)
+
+def killing_records(name: str, n: int, runtime: str = "coreclr", branch: str | None = None) -> list:
+    """Up to `n` (record, mutant outcome) pairs from the fast lane's corpus sample of `runtime`, in
+    corpus order, where the named mutant differs from ACE's recorded answer and the real port does
+    not; `branch`: only records that fire it (the sample lists each record's branches)."""
+    import json
+
+    from acconform.compare import compare
+    from acconform.oracle import default_corpus
+    from acconform.oracle.recorded import RecordedOracle
+    from acconform.port.run import run_scene
+    from acconform.runner import guarded
+
+    mutant = load_mutant([m.name for m in MUTATIONS].index(name))
+    sample = json.loads((default_corpus(runtime) / "fast-sample.json").read_text())
+    wanted = sample["branches"].index(branch) if branch is not None else None
+    keys = {k for k, _, branches in sample["records"] if wanted is None or wanted in branches}
+    oracle = RecordedOracle(default_corpus())
+    out = []
+    for entry in oracle.select(runtime=runtime):
+        if entry.key in keys:
+            rec = oracle._record(entry)
+            got = guarded(lambda s: mutant(s, runtime=runtime), rec.scene)
+            if compare(got, rec.outcome) and not compare(run_scene(rec.scene, runtime=runtime), rec.outcome):
+                out.append((rec, got))
+                if len(out) == n:
+                    break
+    return out
+
+
 # ---------------------------------------------------------------- the corpus replay (no generation)
 
 def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED, only=None) -> dict:

@@ -218,7 +218,27 @@ def test_the_console_summary_counts_differences_by_field_and_by_kind():
     assert "shrinking ran 7 more scenes (not counted above)" in lines
     assert "differences by field: walkable x3, cell x1" in lines
     assert "differences by kind:  terrain x2, bsp x1" in lines
-    assert any("+ 1 more scene differing in the same fields (walkable)" in l for l in lines)
+    assert "3 differences, 2 distinct sets of differing fields (the implementation gives no trace)" in lines
+    assert "  differs in walkable" in lines and "  differs in cell, walkable" in lines
+    assert any("+ 1 more case in this group" in l for l in lines)
+
+
+def test_the_console_summary_groups_differences_by_their_first_divergence_and_labels_a_known_one():
+    from acconform.commands.check import console_summary
+
+    scenes = list(sample_scenes(("terrain",), 3, 1))
+    found = []
+    for s, group, known in zip(scenes, ("Transition.cs:StepDown path.check_pos", "Transition.cs:StepDown path.check_pos",
+                                        "PhysicsObj.cs:calc_friction mover.velocity"), ("", "", "sledding_threshold")):
+        a = dataclasses.replace(fake_port(s), walkable=not fake_port(s).walkable)
+        diffs = compare(a, fake_port(s), "exact")
+        found.append(Found(make_case(s, a, fake_port(s), diffs, 0, "exact", None, shrink=Shrink()), Path("c.json"),
+                           signature(diffs), "first divergence: " + group, known))
+    lines = console_summary(Result(cases=3, found=found, elapsed=1.0), [], keep_going=True)
+    assert "3 differences, 2 distinct first divergences" in lines
+    assert "  first divergence: Transition.cs:StepDown path.check_pos" in lines
+    assert ("  first divergence: PhysicsObj.cs:calc_friction mover.velocity -- known: ACE differs from retail here "
+            "(sledding_threshold)") in lines
 
 
 # ---------------------------------------------------------------- time limits and progress

@@ -1,0 +1,75 @@
+"""acconform explain CASE: where the case's implementation first parts from the reference trace.
+
+Traces the case's scene on its implementation (the one it names, or --impl; the feature `trace`
+of docs/protocol.md) and on the port, after checking that the port's outcome equals ACE's for the
+case (the answer recorded in the case, or live ACE where configured): the port's trace is then a
+trace of a run that ends as ACE's does. Prints the first divergence -- tick, step, record, routine
+(ACE's method and the retail name), field, both values and the ulps between them -- and the few
+records before it on both sides, labelled "known" when a registered ACE-versus-retail divergence
+(docs/divergences.md) is where it falls. --html FILE writes the same as one page with a top and a
+side view of the scene. Where it is the built-in port that differs from ACE, the reference is ACE's own
+stepped trace (a live ACE configured: the facade drives FindTransitionalPosition's loop through ACE's
+public methods, checked to end in ACE's own outcome) at its grain, each step. Exit 1 while the case
+still fails, 0 when it no longer does, 2 for bad input.
+"""
+
+from __future__ import annotations
+
+
+def add_arguments(p) -> None:
+    p.add_argument("file", metavar="CASE", help="a case file (from acconform check)")
+    p.add_argument("--html", default=None, metavar="FILE", help="also write one self-contained page: views of the "
+                   "scene with both sides' spheres, the first divergence marked, the trace table")
+    p.add_argument("--mode", choices=("exact", "fast"), default=None, help="override the case's mode")
+    p.add_argument("--ace", default=None, help="ACE assembly for the live oracle")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the ACE compared with (see `acconform repro`)")
+    from ..impl import add_arguments as impl_arguments
+
+    impl_arguments(p)
+
+
+def load_case(path: str):
+    from ..case import Case, load_document
+    from ..errors import InvalidScene
+
+    doc = load_document(path)
+    if not isinstance(doc, Case):
+        raise InvalidScene("format", "expected a case file (\"acconform.case/2\"); use `acconform show` for other files", path)
+    return doc
+
+
+def run(args) -> int:
+    from ..explain import explain, render
+    from .repro import _backend, _runtime, ace_answer
+
+    doc = load_case(args.file)
+    mode = args.mode or doc.mode
+    runtime = _runtime(args, doc)
+    if args.html is not None:
+        from ..html import check_writable
+
+        check_writable(args.html)
+    backend, said = _backend(args, doc, mode)
+    backend.runtime = runtime
+    try:
+        ace, source = ace_answer(args, doc)
+        from ..oracle import live_configured
+
+        live = None
+        if live_configured(args.ace) and getattr(backend, "command", None) is None:  # ACE's own steps
+            from ..oracle import require_live
+
+            live = require_live(args.ace, args.runtime)
+        e = explain(doc.scene, ace, source, backend, mode, runtime, live)
+    finally:
+        getattr(backend, "close", lambda: None)()
+    print(f"{args.file}: {e.implementation} (mode {mode}, {runtime} arithmetic)")
+    for line in said + render(e):
+        print(line)
+    if args.html is not None:
+        from ..html import explain_page, write_page
+
+        print(f"wrote {write_page(args.html, explain_page(doc, e, args.file))}")
+    return 1 if e.outcome_differs else 0

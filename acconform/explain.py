@@ -1,0 +1,170 @@
+"""Explaining a difference: the first record where an implementation's trace parts from the reference's.
+
+`explain(scene, ace, ace_source, backend, mode, runtime)` traces the scene on the implementation
+(an `Implementation` with the protocol's `trace` feature, or the built-in port) and on the
+reference, and names the first divergence (acconform.trace.first_divergence): tick, step, record,
+routine (ACE's method and the retail name), field, both values and the ulps between them.
+
+The reference is the port's trace, and only where the port's outcome is ACE's for this scene
+(`ace`: the recorded or live answer): for any such scene the port's trace is the trace of a run
+that ends as ACE's does. Where the port itself differs from ACE there is no reference trace (ACE's
+own steps would be needed), and the explanation says so instead of naming a divergence.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .compare import _show, compare
+from .outcome import Outcome
+from .scene import Scene
+from .trace import Divergence, TraceRecord, first_divergence
+
+BEFORE = 4  # records shown before the first divergence, on each side
+
+
+@dataclass(frozen=True, slots=True)
+class Explanation:
+    implementation: str  # its name ("acconform port" for the built-in one)
+    reference: str  # which trace is the reference and why it may be
+    outcome_differs: bool  # the implementation's outcome differs from ACE's
+    divergence: Divergence | None
+    note: str  # why no divergence is named, when none is
+    ours: tuple[TraceRecord, ...] = ()  # the reference trace (the port's)
+    theirs: tuple[TraceRecord, ...] = ()  # the implementation's trace
+    implementation_outcome: Outcome | None = None
+    known: object = None  # a divergences.Known row the first divergence matches, or None
+    reference_name: str = "port"  # whose trace `ours` is: the port's, or ACE's stepped trace
+
+
+def retail_name(ace: str) -> str | None:
+    from .port.anchors import load_all
+
+    for a in load_all().values():
+        if a.ace == ace and a.retail:
+            return a.retail
+    return None
+
+
+def _implementation_name(backend) -> str:
+    return backend.name if getattr(backend, "command", None) else "acconform port"
+
+
+def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "exact",
+            runtime: str = "coreclr", live=None) -> Explanation:
+    """Trace `scene` on `backend` and on the port, and name where they first part (module docstring).
+    Where the port itself differs from ACE and `live` (a LiveOracle) is given, the reference is ACE's
+    own stepped trace (LiveOracle.stepped_trace), compared at its grain: each step."""
+    from .port.run import traced_run
+    from .runner import guarded
+
+    name = _implementation_name(backend)
+    ours_outcome, ours = traced_run(scene, mode, runtime)
+    if getattr(backend, "command", None) is None:  # the built-in port itself: its outcome is ACE's or not
+        differs = bool(compare(ours_outcome, ace, mode))
+        if differs and live is not None:
+            return _against_ace_steps(scene, live, name, ours, ours_outcome)
+        note = ("the port's outcome differs from ACE's here, so the port's trace is no reference; ACE's own "
+                "stepped trace needs a live ACE (--ace)" if differs else "the port's outcome is ACE's: nothing to explain")
+        return Explanation(name, f"the port against {ace_source}", differs, None, note, ours, ours, ours_outcome)
+    theirs_outcome, theirs, anchors = backend.run_traced(scene)
+    differs = bool(compare(theirs_outcome, ace, mode))
+    port_vs_ace = compare(ours_outcome, ace, mode)
+    if port_vs_ace:
+        return Explanation(name, f"none: the port's outcome differs from {ace_source} ({port_vs_ace[0]})",
+                           differs, None, "the port differs from ACE here: its trace is no reference", ours,
+                           theirs or (), theirs_outcome)
+    reference = f"the port's trace (checked: the port's outcome for this case equals {ace_source})"
+    if theirs is None:
+        why = ("the implementation does not trace (its handshake lists no `trace` feature)"
+               if not getattr(backend, "traces", False) else f"the implementation gave no trace ({theirs_outcome.error})")
+        return Explanation(name, reference, differs, None, why, ours, (), theirs_outcome)
+    d = first_divergence(ours, theirs, anchors)
+    note = "" if d is not None else "the traces agree at the implementation's grain"
+    known = None
+    if d is not None:
+        from .divergences import known_for
+
+        known = known_for(d)
+    return Explanation(name, reference, differs, d, note, ours, theirs, theirs_outcome, known)
+
+
+def _against_ace_steps(scene, live, name, ours, ours_outcome) -> Explanation:
+    from .oracle.live import SteppedTraceRefused
+
+    try:
+        _, steps = live.stepped_trace(scene)
+    except SteppedTraceRefused as e:
+        return Explanation(name, "none: ACE's stepped trace was refused", True, None,
+                           f"ACE's stepped trace refused: {e}", (), ours, ours_outcome)
+    d = first_divergence(steps, ours)
+    known = None
+    if d is not None:
+        from .divergences import known_for
+
+        known = known_for(d)
+    return Explanation(name, "ACE's stepped trace (checked: the stepped run ends in ACE's own outcome), compared "
+                       "at its grain: each pass of FindTransitionalPosition's loop", True, d,
+                       "" if d is not None else "the port's steps are ACE's: they part after the last step",
+                       steps, ours, ours_outcome, known, "ACE")
+
+
+def triage(found, backend, mode: str, runtime: str, say=None) -> None:
+    """Give each difference found its group: its first divergence (routine and field) where the
+    implementation traces, else the fields it differs in (the built-in port: no reference trace)."""
+    if getattr(backend, "command", None) is None or not getattr(backend, "traces", False):
+        return
+    for n, f in enumerate(found, 1):
+        if say is not None:
+            say(f"tracing difference {n} of {len(found)} for its first divergence")
+        e = explain(f.case.scene, f.case.oracle, "the case's recorded answer", backend, mode, runtime)
+        if e.divergence is not None:
+            f.group = f"first divergence: {e.divergence.key()}"
+            f.known = e.known.name if e.known is not None else ""
+
+
+def _value(field: str, v) -> str:
+    leaf = field.rsplit(".", 1)[-1]
+    return _show(leaf, v) if isinstance(v, (float, int)) and not isinstance(v, bool) else repr(v)
+
+
+def _brief(r: TraceRecord | None) -> str:
+    if r is None:
+        return "(end of trace)"
+    where = "".join(f" {k}{v}" for k, v in (("tick", r.tick), ("step", r.step)) if v is not None)
+    text = f"{r.event:<6} {r.anchor}{where}"
+    if r.result is not None:
+        text += f" -> {str(r.result)[:40]}"
+    if r.path is not None:
+        text += f"  check {r.path.check_cell:08X} {tuple(round(x, 4) for x in r.path.check_pos)}"
+    if r.mover is not None:
+        text += f"  at {r.mover.cell:08X} {tuple(round(x, 4) for x in r.mover.origin)}"
+    return text
+
+
+def render(e: Explanation) -> list[str]:
+    """The explanation as lines: the reference, the first divergence, the records before it on both sides."""
+    ref_name = e.reference_name
+    lines = [f"reference: {e.reference}"]
+    d = e.divergence
+    if d is None:
+        lines.append(f"first divergence: none ({e.note})")
+        return lines
+    r = d.a or d.b
+    retail = retail_name(d.routine)
+    where = ", ".join(f"{k} {v}" for k, v in (("tick", d.tick), ("step", d.step)) if v is not None) or "before the steps"
+    lines.append(f"first divergence: {where}, record {d.a_position} ({r.event} of {r.anchor})")
+    lines.append(f"  in: {d.routine}" + (f" (retail {retail})" if retail else ""))
+    ulps = d.ulps
+    lines.append(f"  field: {d.field}: {ref_name}={_value(d.field, d.a_value)} {e.implementation}="
+                 f"{_value(d.field, d.b_value)}" + (f", {ulps} ulps apart" if ulps is not None else ""))
+    if e.known is not None:
+        lines.append(f"  known: ACE differs from retail here ({e.known.name}: {e.known.ace_does}; "
+                     f"retail {e.known.retail_does})")
+    lines.append(f"records before it ({ref_name} | {e.implementation}):")
+    for side, records, pos in ((ref_name, e.ours, d.a_position), (e.implementation, e.theirs, d.b_position)):
+        lines.append(f"  {side}:")
+        for i in range(max(0, pos - BEFORE), min(pos + 1, len(records) + 1)):
+            mark = ">" if i == pos else " "
+            lines.append(f"   {mark}{i:>6} {_brief(records[i] if i < len(records) else None)}")
+    return lines

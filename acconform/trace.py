@@ -1,0 +1,334 @@
+"""Traces: what a run looked like inside, record by record, and where two traces first part.
+
+Format ``acconform.trace/1``. A trace is the list of `TraceRecord`s one run wrote, in the order it
+wrote them. A record names its place (`anchor`: ACE's ``File.cs:Method``; `event`: ``enter`` or
+``exit`` of an anchored routine, ``call`` for the exit of a routine that keeps no transition
+state, ``step`` for a pass of FindTransitionalPosition's loop, ``insert`` for a TransitionalInsert
+attempt, ``tick`` after a tick scene's step), the tick and step it ran in, the routine's `result`
+at its exit, and a snapshot: `path` (the transition: SpherePath and CollisionInfo) or `mover` (the
+mover's PhysicsObj, a TickState). A field left None was not recorded; a comparison skips it.
+
+The port writes traces (acconform.port.tracing); an implementation answers a request with
+``"trace": true`` with one (docs/protocol.md). `first_divergence(reference, other)` is the first
+record where the two part, at the grain of `other`: only the (anchor, event) kinds `other`
+writes are compared, so an implementation that records only steps or ticks still gets the first
+step or tick that differs.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from .codec import Reader, write_f32, write_id, write_vec
+from .errors import InvalidScene
+from .outcome import ContactPlaneState, NormalState, PlaneState, TickState, _vec_nf
+
+FORMAT = "acconform.trace/1"
+EVENTS = ("enter", "exit", "call", "step", "insert", "tick")
+Vec3 = tuple[float, float, float]
+PARTS = ("args", "result", "path", "mover")  # a record's compared parts, in comparison order
+
+
+@dataclass(frozen=True, slots=True)
+class PathState:
+    """The transition between two of its routines: SpherePath's positions, cells and flags, and
+    CollisionInfo's planes and normals."""
+
+    check_cell: int
+    check_pos: Vec3  # SpherePath.CheckPos.Frame.Origin
+    cur_cell: int
+    cur_pos: Vec3  # SpherePath.CurPos.Frame.Origin
+    global_offset: Vec3
+    contact_plane: ContactPlaneState
+    last_known_contact_plane: ContactPlaneState
+    collision_normal: NormalState
+    sliding_normal: NormalState
+    walkable: PlaneState | None  # the walkable polygon's plane, None when there is none
+    step_up: bool
+    step_down: bool
+    collide: bool
+    neg_poly_hit: bool
+    frames_stationary_fall: int
+    object_info_state: int
+
+    def to_json(self):
+        d = {}
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if f.name in ("check_cell", "cur_cell"):
+                v = write_id(v)
+            elif f.name in ("check_pos", "cur_pos", "global_offset"):
+                v = write_vec(v)
+            elif hasattr(v, "to_json"):
+                v = v.to_json()
+            d[f.name] = v
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "PathState":
+        names = [f.name for f in fields(PathState)]
+        r.obj(set(names))
+        kw = {}
+        for name in names:
+            x = r[name]
+            if name in ("check_cell", "cur_cell"):
+                kw[name] = x.id_()
+            elif name in ("check_pos", "cur_pos", "global_offset"):
+                kw[name] = _vec_nf(x)
+            elif name in ("contact_plane", "last_known_contact_plane"):
+                kw[name] = ContactPlaneState.from_json(x)
+            elif name in ("collision_normal", "sliding_normal"):
+                kw[name] = NormalState.from_json(x)
+            elif name == "walkable":
+                kw[name] = None if x.value is None else PlaneState.from_json(x)
+            elif name in ("frames_stationary_fall", "object_info_state"):
+                kw[name] = x.int_()
+            else:
+                kw[name] = x.bool_()
+        return PathState(**kw)
+
+
+@dataclass(frozen=True, slots=True)
+class TraceRecord:
+    anchor: str  # ACE's File.cs:Method
+    event: str  # one of EVENTS
+    tick: int | None = None  # the tick scene's step index, None outside ticks
+    step: int | None = None  # the FindTransitionalPosition step, None outside its loop
+    within: str | None = None  # the anchor of the routine running when the record was written (the caller
+    # at an enter, exit or call; FindTransitionalPosition at a step): whose body a divergence here is in
+    args: Any = None  # at an enter or call: the routine's arguments as plain JSON (a list)
+    result: Any = None  # at an exit or call: the routine's answer as plain JSON (a float32 as a number)
+    path: PathState | None = None
+    mover: TickState | None = None
+
+    def to_json(self):
+        d: dict = {"anchor": self.anchor, "event": self.event}
+        for name in ("tick", "step", "within", "args", "result"):
+            v = getattr(self, name)
+            if v is not None:
+                d[name] = v
+        if self.path is not None:
+            d["path"] = self.path.to_json()
+        if self.mover is not None:
+            d["mover"] = self.mover.to_json()
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "TraceRecord":
+        r.obj({"anchor", "event", "tick", "step", "within", "args", "result", "path", "mover"})
+        event = r["event"].str_()
+        if event not in EVENTS:
+            r["event"].fail(f"unknown event {event!r} (known: {', '.join(EVENTS)})")
+        return TraceRecord(
+            r["anchor"].str_(), event,
+            r["tick"].int_() if r.given("tick") else None,
+            r["step"].int_() if r.given("step") else None,
+            r["within"].str_() if r.given("within") else None,
+            r["args"].value if r.given("args") else None,
+            r["result"].value if r.given("result") else None,
+            PathState.from_json(r["path"]) if r.given("path") else None,
+            TickState.from_json(r["mover"]) if r.given("mover") else None)
+
+
+def trace_to_json(records, anchors=None) -> dict:
+    """A trace document; `anchors`: the routines (ACE methods) the implementation records at enter,
+    exit or call, whether or not this run reached them (absent: those its records name)."""
+    doc = {"format": FORMAT, "records": [r.to_json() for r in records]}
+    if anchors is not None:
+        doc["anchors"] = sorted(anchors)
+    return doc
+
+
+def trace_anchors(doc) -> frozenset | None:
+    """The `anchors` a trace document declares (already read by trace_from_json), or None."""
+    return frozenset(doc["anchors"]) if isinstance(doc, dict) and "anchors" in doc else None
+
+
+def trace_from_json(doc, path: str = "trace", exact: bool = False) -> tuple[TraceRecord, ...]:
+    r = Reader(doc, path, exact=exact)
+    r.obj({"format", "records", "anchors"})
+    if r["format"].str_() != FORMAT:
+        r["format"].fail(f"expected {FORMAT!r}")
+    if r.given("anchors"):
+        for a in r["anchors"].list():
+            a.str_()
+    return tuple(TraceRecord.from_json(x) for x in r["records"].list())
+
+
+# ---------------------------------------------------------------- comparing two traces
+
+
+def _bits(x: float) -> int:
+    return int(np.float32(x).view(np.uint32))
+
+
+def ulps(a: float, b: float) -> int:
+    """How many float32 values lie between a and b (0 when bit-equal; +0 and -0 are 0 apart)."""
+    from .compare import ulp_distance
+
+    return ulp_distance(a, b)
+
+
+def _flat(value, prefix: str, out: list) -> None:
+    """`value` as (field path, leaf) pairs: records by field, sequences by index."""
+    if value is None:
+        out.append((prefix, None))
+    elif hasattr(value, "__dataclass_fields__"):
+        for f in fields(value):
+            _flat(getattr(value, f.name), f"{prefix}.{f.name}" if prefix else f.name, out)
+    elif isinstance(value, (list, tuple)):
+        if not value:
+            out.append((prefix, ()))
+        for i, x in enumerate(value):
+            _flat(x, f"{prefix}[{i}]", out)
+    else:
+        out.append((prefix, value))
+
+
+def record_fields(record: TraceRecord) -> list[tuple[str, Any]]:
+    out: list = []
+    for name in PARTS:
+        v = getattr(record, name)
+        if v is not None:
+            _flat(v, name, out)
+    return out
+
+
+def _same(a, b) -> bool:
+    if isinstance(a, bool) or isinstance(b, bool):
+        return a is b or (isinstance(a, bool) and isinstance(b, bool) and a == b)
+    if isinstance(a, float) or isinstance(b, float):
+        if not isinstance(a, (int, float)) or not isinstance(b, (int, float)):
+            return False
+        if math.isnan(a) and math.isnan(b):
+            return _bits(a) == _bits(b)
+        return _bits(a) == _bits(b) if abs(a) < 3.5e38 and abs(b) < 3.5e38 else a == b
+    return a == b
+
+
+@dataclass(frozen=True, slots=True)
+class Divergence:
+    """Where two traces first part: the record index in each (after filtering to the shared grain),
+    the record on each side (None past a trace's end), the field and both values, and `routine`:
+    the anchor whose body the two part in -- the record's own routine when its result or the state
+    it left differs; else the routine that was running (the reference record's `within`): the
+    caller that handed different arguments, wrote different records, or changed the state before
+    an enter or a step."""
+
+    index: int
+    a: TraceRecord | None
+    b: TraceRecord | None
+    field: str
+    a_value: Any
+    b_value: Any
+    routine: str
+    a_position: int  # the record's index in a's whole trace (for showing the records before it)
+    b_position: int
+
+    @property
+    def ulps(self) -> int | None:
+        x, y = self.a_value, self.b_value
+        if isinstance(x, float) and isinstance(y, (int, float)) and not isinstance(y, bool):
+            return ulps(x, float(y))
+        return None
+
+    @property
+    def tick(self):
+        return (self.a or self.b).tick
+
+    @property
+    def step(self):
+        return (self.a or self.b).step
+
+    def key(self) -> str:
+        """The group a difference falls in: routine and field, indices dropped (``path.cur_pos``)."""
+        return f"{self.routine} {_INDEX.sub('', self.field)}"
+
+
+_INDEX = re.compile(r"\[\d+\]")
+
+
+def _grain(records) -> tuple[set, set]:
+    kinds = {(r.anchor, r.event) for r in records}
+    present = set()
+    for r in records:
+        for name in PARTS:
+            if getattr(r, name) is not None:
+                present.add((r.anchor, r.event, name))
+    return kinds, present
+
+
+def first_divergence(reference, other, anchors=None) -> Divergence | None:
+    """The first record where `other` parts from `reference`, compared at `other`'s grain: the
+    (anchor, event) kinds it writes, and the enter, exit and call records of the routines it declares
+    it records (`anchors`, its trace's "anchors": a routine it never reached is then a difference
+    too), and the parts it fills; None when they agree throughout."""
+    kinds, present = _grain(other)
+    declared = anchors or frozenset()
+    for r in reference:
+        if r.anchor in declared and r.event in ("enter", "exit", "call"):
+            present.update((r.anchor, r.event, name) for name in PARTS)
+    ref = [(i, r) for i, r in enumerate(reference)
+           if (r.anchor, r.event) in kinds or (r.anchor in declared and r.event in ("enter", "exit", "call"))]
+    ref_kinds = {(r.anchor, r.event) for _, r in ref}
+    oth = [(i, r) for i, r in enumerate(other) if (r.anchor, r.event) in ref_kinds]  # the coarser grain of the two
+    for n in range(max(len(ref), len(oth))):
+        ia, a = ref[n] if n < len(ref) else (len(reference), None)
+        ib, b = oth[n] if n < len(oth) else (len(other), None)
+        inner = (a or b).within or (a or b).anchor
+        if a is None or b is None or (a.anchor, a.event) != (b.anchor, b.event):
+            # a record one side wrote while running a routine whose own end is the other side's record
+            # here: they part inside that routine
+            if a is not None and b is not None and b.within is not None and b.within == a.anchor != a.within:
+                inner = a.anchor
+            elif a is not None and b is not None and a.within is not None and a.within == b.anchor != b.within:
+                inner = b.anchor
+            return Divergence(n, a, b, "anchor", a and f"{a.anchor} {a.event}", b and f"{b.anchor} {b.event}",
+                              inner, ia, ib)
+        if a.tick != b.tick or a.step != b.step:
+            field = "tick" if a.tick != b.tick else "step"
+            return Divergence(n, a, b, field, getattr(a, field), getattr(b, field), inner, ia, ib)
+        fa = dict(x for name in PARTS if (a.anchor, a.event, name) in present for x in _flat_part(a, name))
+        fb = dict(x for name in PARTS for x in _flat_part(b, name))
+        for name, va in fa.items():
+            vb = fb.get(name)
+            if name not in fb or not _same(va, vb):
+                routine = a.anchor if a.event in ("exit", "call") and not name.startswith("args") else inner
+                if name.startswith("args"):
+                    routine = _caller_handed_them(ref, oth, n, routine)
+                return Divergence(n, a, b, name, va, vb, routine, ia, ib)
+    return None
+
+
+def _caller_handed_them(ref, oth, n: int, routine: str) -> str:
+    """Different arguments at record n were handed by `routine`; a `call` record is written at its
+    routine's exit, after its callees' records, so when `routine`'s own call record (the next one of
+    it) shows different arguments too, the values came from further up: climb to its caller."""
+    while True:
+        m = next((k for k in range(n + 1, len(ref)) if ref[k][1].anchor == routine and ref[k][1].event == "call"), None)
+        if m is None or m >= len(oth):
+            return routine
+        a, b = ref[m][1], oth[m][1]
+        if (b.anchor, b.event) != (a.anchor, a.event) or a.within is None or _same_args(a.args, b.args):
+            return routine
+        n, routine = m, a.within
+
+
+def _same_args(x, y) -> bool:
+    fx, fy = [], []
+    _flat(x, "args", fx)
+    _flat(y, "args", fy)
+    return len(fx) == len(fy) and all(p == q and _same(u, v) for (p, u), (q, v) in zip(fx, fy))
+
+
+def _flat_part(r: TraceRecord, name: str):
+    out: list = []
+    v = getattr(r, name)
+    if v is not None:
+        _flat(v, name, out)
+    return out

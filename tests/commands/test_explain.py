@@ -1,0 +1,112 @@
+"""acconform explain, repro's first divergence, check's triage and report: a planted bug run as an
+external implementation is named where it parts from the port, one bug is one group, and bad input
+is one line and exit 2."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from acconform.case import ImplementationRun, write_document
+from acconform.compare import compare
+from acconform.protocol import Implementation
+from acconform.runner import Found, make_case, signature
+
+ROOT = Path(__file__).resolve().parents[2]
+PLANTED = ROOT / "tests" / "impl" / "planted_impl.py"
+BUG = "step_down_two_halves_made_thirds"
+sys.path.insert(0, str(ROOT / "tests" / "runner"))
+
+
+def cli(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "acconform.cli", *args], capture_output=True, text=True, cwd=cwd)
+
+
+@pytest.fixture(scope="module")
+def planted_cases(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("failures")
+    command = f"{sys.executable} {PLANTED} {BUG}"
+    hello = Implementation(command).hello
+    cases = []
+    from mutants import killing_records
+
+    for i, (rec, got) in enumerate(killing_records(BUG, 2, branch="transitional_insert:step_down_halves")):
+        diffs = compare(got, rec.outcome)
+        case = make_case(rec.scene, got, rec.outcome, diffs, 0, "exact", rec.versions,
+                         ImplementationRun(command, str(ROOT), hello))
+        path = folder / f"case-{i:012d}.json"
+        write_document(path, case)
+        cases.append((path, case, diffs))
+    assert len(cases) == 2
+    return folder, cases
+
+
+@pytest.mark.anchor("CTransition::transitional_insert")
+def test_explain_names_the_planted_bugs_routine_field_values_and_ulps_after_checking_the_reference(planted_cases):
+    _, cases = planted_cases
+    r = cli("explain", str(cases[0][0]))
+    assert r.returncode == 1, r.stderr
+    out = r.stdout
+    assert "reference: the port's trace (checked: the port's outcome for this case equals" in out
+    assert "  in: Transition.cs:TransitionalInsert (retail CTransition::transitional_insert)" in out
+    assert "  field: args[1]: port=" in out and "ulps apart" in out
+    assert "enter of Transition.cs:StepDown" in out
+    assert out.count(">") >= 2  # the diverging record marked on both sides
+
+
+@pytest.mark.anchor("CTransition::transitional_insert")
+def test_repro_puts_the_first_divergence_on_top(planted_cases):
+    _, cases = planted_cases
+    r = cli("repro", str(cases[0][0]))
+    assert r.returncode == 1, r.stderr
+    lines = r.stdout.splitlines()
+    first = next(i for i, l in enumerate(lines) if l.startswith("first divergence:"))
+    still = next(i for i, l in enumerate(lines) if l.startswith("still fails"))
+    assert first < still and "Transition.cs:TransitionalInsert" in r.stdout
+
+
+def test_one_planted_bug_is_one_group_however_many_differences(planted_cases):
+    from acconform.explain import triage
+
+    _, cases = planted_cases
+    found = [Found(case, path, signature(diffs)) for path, case, diffs in cases]
+    impl = Implementation(f"{sys.executable} {PLANTED} {BUG}", timeout=60)
+    impl.runtime = "coreclr"
+    try:
+        triage(found, impl, "exact", "coreclr")
+    finally:
+        impl.close()
+    assert {f.group for f in found} == {"first divergence: Transition.cs:TransitionalInsert args"}
+
+
+def test_report_indexes_a_failures_directory_by_first_divergence_with_a_page_per_case(planted_cases, tmp_path):
+    folder, cases = planted_cases
+    r = cli("report", str(folder), "--html", str(tmp_path / "index.html"))
+    assert r.returncode == 0, r.stderr
+    assert "(2 cases, 1 groups)" in r.stdout
+    index = (tmp_path / "index.html").read_text()
+    assert index.count('<section class="group">') == 1 and index.count('<li class="case">') == 2
+    assert "first divergence: Transition.cs:TransitionalInsert args" in index
+    for path, _, _ in cases:
+        page = tmp_path / f"index-{path.stem}.html"
+        assert f'href="{page.name}"' in index and "<svg" in page.read_text()
+
+
+@pytest.mark.parametrize("args, message", [
+    (("explain", "no-such-case.json"), "no such file"),
+    (("explain", "examples/flat_walk.json"), "expected a case file"),
+    (("report", "no-such-dir", "--html", "x.html"), "no such directory"),
+    (("report", "examples", "--html", "x.html"), "holds no case files"),
+])
+def test_bad_input_to_explain_and_report_is_one_line_and_exit_2(args, message):
+    r = cli(*args, cwd=ROOT)
+    assert r.returncode == 2 and message in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
+
+
+def test_explain_html_to_a_missing_directory_is_one_line_and_exit_2_before_running(planted_cases):
+    _, cases = planted_cases
+    r = cli("explain", str(cases[0][0]), "--html", "/no/such/dir/page.html")
+    assert r.returncode == 2 and "does not exist" in r.stderr and len(r.stderr.strip().splitlines()) == 1

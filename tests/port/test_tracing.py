@@ -1,0 +1,148 @@
+"""Traces of a port run (port/tracing.py, acconform/trace.py): the same outcome traced or not,
+nothing left wrapped after a traced run, a record at every step, insert attempt and tick, records
+that survive their JSON, and a first divergence that names the record, field and ulps."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from acconform.case import load_document
+from acconform.port import anchors
+from acconform.port.run import run_scene, traced_run
+from acconform.trace import FORMAT, TraceRecord, first_divergence, trace_from_json, trace_to_json
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = {p.stem: load_document(p) for p in sorted((ROOT / "examples").glob("*.json"))}
+
+
+def scene_of(name):
+    doc = EXAMPLES[name]
+    return getattr(doc, "scene", doc)
+
+
+@pytest.mark.anchor("CTransition::find_transitional_position")
+@pytest.mark.parametrize("name", sorted(EXAMPLES))
+def test_a_traced_run_has_the_outcome_of_an_untraced_one(name):
+    outcome, records = traced_run(scene_of(name))
+    assert outcome == run_scene(scene_of(name))
+    assert records
+
+
+@pytest.mark.anchor("CTransition::step_up")
+def test_after_a_traced_run_every_anchored_routine_is_its_own_function_again():
+    traced_run(scene_of("cliff_edge_slide"))
+    from acconform.port.transition.transition import Transition
+    from acconform.port.physics_obj import PhysicsObj
+
+    import sys
+
+    def is_wrapper(value):
+        raw = getattr(value, "__func__", value)
+        return getattr(getattr(raw, "__code__", None), "co_filename", "").endswith("tracing.py") and hasattr(raw, "__wrapped__")
+
+    assert is_wrapper(next(iter(anchors.FUNCTIONS.values()))) is False
+    seen = 0
+    for mod_name, mod in list(sys.modules.items()):
+        if mod_name.startswith("acconform.port"):
+            for name, value in vars(mod).items():
+                assert not is_wrapper(value), f"{mod_name}.{name} is still wrapped"
+                if isinstance(value, type):
+                    for attr, v in vars(value).items():
+                        seen += 1
+                        assert not is_wrapper(v), f"{mod_name}.{name}.{attr} is still wrapped"
+    assert seen > 400 and Transition.step_up is anchors.FUNCTIONS[f"{Transition.__module__}.Transition.step_up"]
+    assert PhysicsObj.update_object is anchors.FUNCTIONS[f"{PhysicsObj.__module__}.PhysicsObj.update_object"]
+
+
+@pytest.mark.anchor("CTransition::find_transitional_position")
+def test_every_pass_of_the_step_loop_and_every_insert_attempt_writes_a_record_with_its_step():
+    scene = scene_of("cliff_edge_slide")
+    _, records = traced_run(scene)
+    steps = [r for r in records if r.event == "step"]
+    assert [r.step for r in steps] == list(range(len(steps))) and len(steps) > 1
+    assert all(r.path is not None for r in steps)
+    inserts = [r for r in records if r.event == "insert"]
+    assert len(inserts) >= len(steps) and all(r.step is not None for r in inserts)
+    names = {r.anchor for r in records if r.event == "enter"}
+    assert {"Transition.cs:TransitionalInsert", "Transition.cs:AdjustOffset", "Transition.cs:ValidateTransition",
+            "Transition.cs:StepDown"} <= names
+
+
+@pytest.mark.anchor("CPhysicsObj::update_object")
+def test_a_tick_scene_writes_one_tick_record_per_tick_with_the_mover_after_it():
+    scene = scene_of("tick_walk")
+    outcome, records = traced_run(scene)
+    ticks = [r for r in records if r.event == "tick"]
+    assert [r.mover for r in ticks] == list(outcome.ticks)
+    inside = [r for r in records if r.event == "enter" and r.anchor == "PhysicsObj.cs:UpdateObjectInternal"]
+    assert inside and {r.tick for r in inside} <= set(range(len(ticks)))
+    assert all(r.mover is not None for r in inside)
+
+
+def test_trace_records_survive_their_json():
+    _, records = traced_run(scene_of("placement_wall_push"))
+    doc = json.loads(json.dumps(trace_to_json(records)))
+    assert doc["format"] == FORMAT
+    assert trace_from_json(doc) == records
+
+
+def test_the_first_divergence_names_the_record_the_field_both_values_and_the_ulps():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    assert first_divergence(records, records) is None
+    i = next(i for i, r in enumerate(records) if r.event == "exit" and r.anchor == "Transition.cs:StepDown")
+    path = records[i].path
+    x = path.check_pos[2]
+    import numpy as np
+
+    nudged = float(np.nextafter(np.float32(x), np.float32(np.inf)))
+    other = list(records)
+    other[i] = replace(records[i], path=replace(path, check_pos=(path.check_pos[0], path.check_pos[1], nudged)))
+    d = first_divergence(records, other)
+    assert (d.index, d.field, d.a_value, d.b_value, d.ulps) == (i, "path.check_pos[2]", x, nudged, 1)
+    assert d.routine == "Transition.cs:StepDown"
+
+
+def test_a_trace_at_the_grain_of_steps_parts_from_the_port_at_the_first_differing_step():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    steps = [r for r in records if r.event == "step"]
+    assert first_divergence(records, steps) is None
+    late = list(steps)
+    late[2] = replace(late[2], path=replace(late[2].path, frames_stationary_fall=7))
+    d = first_divergence(records, late)
+    assert (d.index, d.step, d.field) == (2, 2, "path.frames_stationary_fall")
+
+
+def test_a_routine_the_other_side_declares_but_never_ran_is_a_divergence():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    skipped = [r for r in records if r.anchor != "Transition.cs:StepDown"]
+    assert first_divergence(records, skipped) is None  # StepDown then is below the other side's grain
+    d = first_divergence(records, skipped, frozenset({"Transition.cs:StepDown"}))
+    assert d.field == "anchor" and d.a.anchor == "Transition.cs:StepDown"
+
+
+def test_a_missing_record_is_a_divergence_of_the_anchor_and_a_short_trace_ends_in_one():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    i = next(i for i, r in enumerate(records) if r.event == "enter" and r.anchor == "Transition.cs:StepDown")
+    d = first_divergence(records, records[:i] + records[i + 1:])
+    assert d.field == "anchor" and d.index == i and d.a == records[i] and d.b == records[i + 1]
+    d = first_divergence(records, records[:i])
+    assert d.field == "anchor" and d.b is None and d.index == i and d.a_position >= i
+
+
+def test_a_trace_names_a_known_event_or_is_refused_naming_the_field():
+    from acconform.errors import InvalidScene
+
+    bad = {"format": FORMAT, "records": [{"anchor": "Transition.cs:StepUp", "event": "left"}]}
+    with pytest.raises(InvalidScene, match=r"records\[0\]\.event"):
+        trace_from_json(bad)
+
+
+def test_every_anchor_in_a_trace_is_a_registered_ace_method():
+    known = {a.ace for a in anchors.load_all().values()}
+    _, records = traced_run(scene_of("two_rooms"))
+    assert {r.anchor for r in records} <= known
+    assert isinstance(records[0], TraceRecord)

@@ -1,0 +1,113 @@
+"""Print issue 21's figure: for how many planted bugs `explain` names the mutated routine.
+
+    python tests/runner/explain_mutants.py [--runtime coreclr] [--only NAME,...] [--json FILE]
+
+Per planted bug (tests/runner/mutants.py): the first record of the fast lane's corpus sample
+(tests/data/corpus/<runtime>/fast-sample.json, in a seeded shuffle) where the mutant differs from
+ACE's recorded answer and the port does not; then the mutant run as an external implementation
+(tests/impl/planted_impl.py through the protocol, feature `trace`) is traced on that scene, and
+acconform.explain names the first divergence from the port's trace. A hit: the routine it names is
+the ACE method of the port function holding the mutated text (a mutant in a constant has none).
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import json
+import random
+import sys
+import time
+import warnings
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+
+def mutated_routine(m) -> str | None:
+    """The ACE method (anchor) of the port function whose body holds the mutation's text."""
+    from acconform.port.anchors import load_all
+    from mutants import PORT_DIR
+
+    text = (PORT_DIR / m.file).read_text()
+    line = text[:text.index(m.old)].count("\n") + 1
+    best = None
+
+    def walk(node, prefix):
+        nonlocal best
+        for ch in ast.iter_child_nodes(node):
+            if isinstance(ch, (ast.FunctionDef, ast.ClassDef)):
+                q = prefix + ch.name
+                if isinstance(ch, ast.FunctionDef) and ch.lineno <= line <= ch.end_lineno:
+                    best = q
+                walk(ch, q + ".")
+
+    walk(ast.parse(text), "")
+    a = load_all().get("acconform.port." + m.file[:-3].replace("/", ".") + "." + best) if best else None
+    return a.ace if a else None
+
+
+def main() -> int:
+    p = argparse.ArgumentParser()
+    p.add_argument("--runtime", default="coreclr")
+    p.add_argument("--only", default=None)
+    p.add_argument("--json", default=None)
+    args = p.parse_args()
+    warnings.simplefilter("ignore")
+
+    from acconform.compare import compare
+    from acconform.explain import explain
+    from acconform.oracle import default_corpus
+    from acconform.oracle.recorded import RecordedOracle
+    from acconform.port.run import run_scene
+    from acconform.protocol import Implementation
+    from acconform.runner import guarded
+    from mutants import MUTATIONS, load_mutant
+
+    sample = json.loads((HERE.parent / "data" / "corpus" / args.runtime / "fast-sample.json").read_text())
+    keys = {k for k, _, _ in sample["records"]}
+    oracle = RecordedOracle(default_corpus())
+    entries = [e for e in oracle.select(runtime=args.runtime) if e.key in keys]
+    random.Random(0).shuffle(entries)
+    only = set(args.only.split(",")) if args.only else None
+    rows = []
+    for i, m in enumerate(MUTATIONS):
+        if only and m.name not in only:
+            continue
+        t0 = time.monotonic()
+        mutant = load_mutant(i)
+        rec = None
+        for e in entries:
+            r = oracle._record(e)
+            if compare(guarded(lambda s: mutant(s, runtime=args.runtime), r.scene), r.outcome, "exact") and \
+                    not compare(run_scene(r.scene, runtime=args.runtime), r.outcome, "exact"):
+                rec = r
+                break
+        row = {"name": m.name, "expected": mutated_routine(m), "killed": rec is not None}
+        if rec is not None:
+            impl = Implementation(f"{sys.executable} {HERE.parent / 'impl' / 'planted_impl.py'} {m.name} "
+                                  f"--kinds terrain,bsp,obstacles,indoor", timeout=120)
+            impl.runtime = args.runtime
+            try:
+                e = explain(rec.scene, rec.outcome, "ACE's recorded answer", impl, "exact", args.runtime)
+            finally:
+                impl.close()
+            d = e.divergence
+            row.update(routine=d.routine if d else None, field=d.field if d else None, note=e.note,
+                       known=e.known.name if e.known else None, hit=bool(d and d.routine == row["expected"]))
+        row["seconds"] = round(time.monotonic() - t0, 1)
+        rows.append(row)
+        print(json.dumps(row), flush=True)
+    named = [r for r in rows if r["killed"] and r["expected"]]
+    print(f"explain names the mutated routine for {sum(r['hit'] for r in named)} of {len(named)} planted bugs "
+          f"killed by the {args.runtime} fast sample whose text lies in an anchored routine "
+          f"({len(rows)} run; {sum(not r['killed'] for r in rows)} not killed by the sample; "
+          f"{sum(r['killed'] and not r['expected'] for r in rows)} in a constant)")
+    if args.json:
+        Path(args.json).write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
