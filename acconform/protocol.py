@@ -403,10 +403,10 @@ class Implementation:
             self._next_id += 1
             rid = self._next_id
             self._inflight.append((rid, scene))
-        doc = {"id": rid, "mode": self.mode, "runtime": self.runtime, "scene": scene.to_json()}
-        if rid in self._traced:
-            doc["trace"] = True
-        request = deep.retrying(lambda: dumps_compact(doc)) + "\n"
+        extra = {"trace": True} if rid in self._traced else {}
+        # the scene's JSON inside the retry: a BSP thousands of levels deep needs the deep stack to write
+        request = deep.retrying(lambda: dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime,
+                                                       "scene": scene.to_json(), **extra})) + "\n"
         self._write(request.encode("utf-8"))
         return rid
 
