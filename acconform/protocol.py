@@ -49,6 +49,9 @@ from .scene import Scene
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
+# A campaign's kinds (`--kinds`, a corpus shard's): the worlds above, and "ticks", tick scenes over any
+# of those worlds, offered to an implementation that lists the world's kind and the feature `ticks`.
+CAMPAIGN_KINDS: tuple[str, ...] = KINDS + ("ticks",)
 MODES: tuple[str, ...] = ("exact", "fast")
 
 # Verdict prefixes: the `error` of the outcome the harness records when the implementation fails.

@@ -29,15 +29,11 @@ from acconform.errors import AcconformError
 from .draws import OneOf
 from .scenes import scenes_of
 
+from acconform.protocol import CAMPAIGN_KINDS as ALL_KINDS
 from acconform.protocol import KINDS as GEOMETRY_KINDS
 
-# "ticks" (strategies/ticks.py): tick scenes over every other kind's geometry, ACE's per-tick update
-# moving the mover (issue 19). An implementation is offered one when its handshake lists the
-# scene's geometry kind and the feature `ticks`; otherwise it is skipped, counted, and another drawn.
-ALL_KINDS: tuple[str, ...] = GEOMETRY_KINDS + ("ticks",)
-
 # The kinds a campaign draws (and a corpus replay runs) when --kinds is not given: what the port
-# supports, all of them since the port went indoors (issue 12) and ticked (issue 19): a fifth of a
+# supports, all of them since the port went indoors (issue 12) and ticked (issue 19): a sixth of a
 # live campaign's scenes are tick scenes, and a replay runs the ticks shards with the others.
 DEFAULT_KINDS: tuple[str, ...] = ALL_KINDS
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections import Counter, defaultdict
 from contextlib import contextmanager
 
-from ..protocol import KINDS
+from ..protocol import CAMPAIGN_KINDS as KINDS
 
 
 def add_arguments(p) -> None:
