@@ -251,13 +251,17 @@ def installed(recorder: Recorder):
         return w
 
     with _lock:
-        # a traced run starts cold: what the harness remembers across runs (GfxObjs built from the same
-        # bytes, pooled landblocks) would leave out the records of building them, and a trace must not
+        # a traced run starts cold: what the harness remembers across runs (GfxObjs, Environments and CellStructs
+        # built from the same bytes, pooled landblocks) would leave out the records of building them, and a trace must not
         # depend on what the process ran before
+        from .cell.cell_struct import clear_built as clear_cell_structs
+        from .db_obj import clear_environments
         from .gfx_obj_cache import clear_built
         from .land.lscape import clear_landblock_cache
 
         clear_built()
+        clear_cell_structs()
+        clear_environments()
         clear_landblock_cache()
         try:
             for name, module in list(sys.modules.items()):

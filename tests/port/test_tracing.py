@@ -32,6 +32,14 @@ def test_a_traced_run_has_the_outcome_of_an_untraced_one(name):
     assert records
 
 
+@pytest.mark.anchor("CEnvCell::UnPack")
+def test_a_traced_run_records_the_same_whatever_the_process_built_before_it():
+    # the Environments, CellStructs and GfxObjs an earlier run built from the same bytes are not reused
+    cold = traced_run(scene_of("two_rooms"))[1]
+    run_scene(scene_of("two_rooms"))
+    assert traced_run(scene_of("two_rooms"))[1] == cold
+
+
 @pytest.mark.anchor("CTransition::step_up")
 def test_after_a_traced_run_every_anchored_routine_is_its_own_function_again():
     traced_run(scene_of("cliff_edge_slide"))
