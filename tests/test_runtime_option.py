@@ -39,7 +39,8 @@ def test_every_command_that_runs_scenes_takes_the_same_runtime_option():
         assert option is not None, f"`acconform {name}` takes no --runtime"
         assert option.type("mono") == "mono" and option.default is None, name
         assert "else coreclr (.NET 10" in option.help, name
-    assert set(COMMANDS) - NO_RUNTIME == {"check", "repro", "record", "coverage", "bench", "stress", "run", "serve"}
+    assert set(COMMANDS) - NO_RUNTIME == {"check", "repro", "explain", "report", "record", "coverage", "bench",
+                                                  "stress", "run", "serve"}
 
 
 @pytest.mark.parametrize("command", sorted(set(COMMANDS) - NO_RUNTIME))

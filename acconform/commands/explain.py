@@ -40,17 +40,13 @@ def load_case(path: str):
     return doc
 
 
-def run(args) -> int:
-    from ..explain import explain, render
+def explain_case(args, doc, mode):
+    """(the Explanation of case `doc` replayed as `mode`, lines saying which implementation and why,
+    the runtime it computed as): explain's and report's one way to explain a case."""
+    from ..explain import explain
     from .repro import _backend, _runtime, ace_answer
 
-    doc = load_case(args.file)
-    mode = args.mode or doc.mode
     runtime = _runtime(args, doc)
-    if args.html is not None:
-        from ..html import check_writable
-
-        check_writable(args.html)
     backend, said = _backend(args, doc, mode)
     backend.runtime = runtime
     try:
@@ -62,9 +58,21 @@ def run(args) -> int:
             from ..oracle import require_live
 
             live = require_live(args.ace, args.runtime)
-        e = explain(doc.scene, ace, source, backend, mode, runtime, live)
+        return explain(doc.scene, ace, source, backend, mode, runtime, live), said, runtime
     finally:
         getattr(backend, "close", lambda: None)()
+
+
+def run(args) -> int:
+    from ..explain import render
+
+    doc = load_case(args.file)
+    mode = args.mode or doc.mode
+    if args.html is not None:
+        from ..html import check_writable
+
+        check_writable(args.html)
+    e, said, runtime = explain_case(args, doc, mode)
     print(f"{args.file}: {e.implementation} (mode {mode}, {runtime} arithmetic)")
     for line in said + render(e):
         print(line)

@@ -1,7 +1,7 @@
 """acconform report DIR --html FILE: an index of a failures directory's cases, grouped by first divergence.
 
 Each case file in DIR (``case-*.json``, as `check` writes them) is explained as `acconform explain`
-does (on the implementation it names, against the answer recorded in it) and gets its own page
+does (on the implementation it names, against live ACE where configured, else the answer recorded in it) and gets its own page
 beside FILE (``FILE``'s name, then the case's); the index lists the cases under their first
 divergence (or, where there is no trace, the fields they differ in), each linked to its page.
 """
@@ -14,17 +14,18 @@ def add_arguments(p) -> None:
     p.add_argument("--html", required=True, metavar="FILE", help="the index page to write")
     p.add_argument("--timeout", type=float, default=60.0, metavar="S",
                    help="seconds an implementation may take for one traced scene (default 60)")
+    p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (as `acconform explain`)")
+    from . import add_runtime_argument
+
+    add_runtime_argument(p, "the ACE compared with (see `acconform repro`)")
 
 
 def run(args) -> int:
     from pathlib import Path
 
     from ..errors import AcconformError
-    from ..explain import explain
     from ..html import check_writable, explain_page, report_page, write_page
-    from ..numerics import runtime_named
-    from .explain import load_case
-    from .repro import _backend
+    from .explain import explain_case, load_case
 
     folder = Path(args.dir)
     if not folder.is_dir():
@@ -35,15 +36,10 @@ def run(args) -> int:
     check_writable(args.html)
     index = Path(args.html)
     entries = []
+    args.impl = None  # each case on the implementation it names
     for path in files:
         case = load_case(str(path))
-        args.impl = None
-        backend, _ = _backend(args, case, case.mode)
-        backend.runtime = runtime_named(case.versions.runtime)
-        try:
-            e = explain(case.scene, case.oracle, "the answer recorded in the case", backend, case.mode, backend.runtime)
-        finally:
-            getattr(backend, "close", lambda: None)()
+        e = explain_case(args, case, case.mode)[0]
         d = e.divergence
         group = (f"first divergence: {d.key()}" if d is not None
                  else "differs in " + ", ".join(sorted({x.split(':', 1)[0] for x in case.differences})))

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from acconform.flags import PhysicsState, TransientState
-from acconform.strategies import sample_scenes
+from acconform.strategies import GEOMETRY_KINDS, sample_scenes
 from acconform.strategies.objects import BSP_STATE, EPS
 from acconform.strategies.shapes import REACH_SLACK, object_reach
 from acconform.strategies.terrain import BLOCK, CELL
@@ -35,7 +35,8 @@ def bsp_scenes():
 
 @pytest.fixture(scope="module")
 def default_scenes():
-    return list(sample_scenes(None, 240, 23))  # seed 22 drew no moving velocity at all after issue 14b's policies
+    # single transitions of every world kind (a tick scene's path is its timeline: tests/strategies/test_ticks.py)
+    return list(sample_scenes(GEOMETRY_KINDS, 240, 23))  # seed 22 drew no moving velocity at all after issue 14b's policies
 
 
 @pytest.fixture(scope="module")
