@@ -103,7 +103,10 @@ class Landblock(LandblockStruct):
         self.init_landcell()
 
         self.init_buildings(lscape)
-        self.init_static_objs(lscape)
+        # a lazy landblock has no Info and no StaticObjects yet, so init_static_objs would do nothing
+        # but read SideCellCount, which builds the terrain an indoor scene never reads
+        if self.terrain_built() or self.info is not None:
+            self.init_static_objs(lscape)
 
     @anchor("CLandBlock::init_buildings", "Landblock.cs:init_buildings")
     def init_buildings(self, lscape) -> None:
