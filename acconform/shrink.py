@@ -99,10 +99,14 @@ SIMPLE_DT = 1 / 30
 SIMPLE_START = 1000.0
 
 
+def _inputs(step) -> bool:
+    return any(getattr(step, name) is not None for name in TICK_INPUTS)
+
+
 def _ticks(scene: Scene) -> Iterator[Scene]:
-    """Fewer ticks (the first half, all but the last, one fewer anywhere), fewer inputs (each input
-    of each step; a request_pos driver's RequestPos stays), simpler time steps (every dt, then
-    each dt, 1/30 s; the clock's start 1000 s)."""
+    """Fewer ticks (the first half, all but the last, runs of ticks left out or merged into one,
+    halves first), fewer inputs (each input of each step; a request_pos driver's RequestPos stays),
+    simpler time steps (every dt, then each dt, 1/30 s; the clock's start 1000 s)."""
     t = scene.ticks
     steps = t.steps
 
@@ -112,8 +116,19 @@ def _ticks(scene: Scene) -> Iterator[Scene]:
     if len(steps) > 1:
         yield with_(steps=steps[: len(steps) // 2])
         yield with_(steps=steps[:-1])
-        for i in reversed(range(len(steps) - 1)):
-            yield with_(steps=_without(steps, i))
+        # runs of ticks left out, or merged into one tick of their time steps where only the run's
+        # first tick has inputs (update_object cuts a long tick into quanta, so the mover often goes
+        # the same way in fewer ticks): halves, then quarters, ... then single ticks and pairs, as
+        # delta debugging does, so a difference deep in a long walk comes down to a few ticks
+        k = len(steps) // 2
+        while k >= 1:
+            for start in range(0, len(steps) - k, k):
+                yield with_(steps=steps[:start] + steps[start + k:])
+            for start in range(0, len(steps) - k, k):
+                run = steps[start:start + k + 1]
+                if not any(_inputs(st) for st in run[1:]):
+                    yield with_(steps=steps[:start] + (replace(run[0], dt=sum(st.dt for st in run)),) + steps[start + k + 1:])
+            k //= 2
     for i, step in enumerate(steps):
         for name in TICK_INPUTS:
             if name != "request_pos" and getattr(step, name) is not None:
