@@ -218,19 +218,9 @@ def test_live_an_exception_in_a_tick_is_that_ticks_error_and_ends_the_scene(live
 # ---------------------------------------------------------------- recording
 
 
-def _record() -> None:
-    from acconform.oracle.live import LiveOracle
-
-    oracle = LiveOracle()
-    runtime = oracle.location.runtime
-    doc = json.loads(DATA.read_text()) if DATA.exists() else {"ace": "7b47913, live oracle", "outcomes": {}}
-    doc["outcomes"][runtime] = {name: oracle.run(scene).to_json() for name, scene in SCENES.items()}
-    DATA.parent.mkdir(parents=True, exist_ok=True)
-    DATA.write_text(json.dumps(doc, indent=1, sort_keys=True) + "\n")
-    print(f"{len(SCENES)} tick outcomes from ACE on {runtime} -> {DATA}")
-
-
 if __name__ == "__main__":
     if sys.argv[1:] != ["--record"]:
         sys.exit(__doc__)
-    _record()
+    from live_answers import record_outcomes  # beside this file: the directory a script runs from
+
+    record_outcomes(SCENES, DATA, "tick")
