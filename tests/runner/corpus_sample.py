@@ -2,6 +2,8 @@
 
     python tests/runner/corpus_sample.py [--size 1500] [--runtime mono|coreclr]
         rebuild tests/data/corpus/<runtime>/fast-sample.json (default: both runtimes' samples)
+    python tests/runner/corpus_sample.py --add SHARD... [--runtime mono|coreclr]
+        add a new recording's shards to the samples, running only their records
 
 Runs every record of a runtime's corpus through the port (computing as that runtime does) with a
 branch trace, then picks, deterministically
@@ -85,16 +87,84 @@ def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
     }
 
 
+def add(doc: dict, corpus_dir, shard_names, per_branch: int = PER_BRANCH, per_kind: int = 100) -> dict:
+    """`doc` (a runtime's sample) with the records of the corpus shards `shard_names` added, running
+    only those through the port: each branch's corpus count grows by the new records that fire it, a
+    branch fired by fewer than `per_branch` sample records gets new ones (rarest first), and each new
+    kind gets up to `per_kind` more, spread as `build` spreads them. What a new recording needs,
+    without the hour a rebuild takes; a rebuild (`build`) picks afresh from the whole corpus."""
+    from acconform.numerics import runtime_named
+    from acconform.oracle.recorded import RecordedOracle, scene_kind
+    from acconform.port.run import run_scene
+    from acconform.scene import Scene
+
+    warnings.simplefilter("ignore", RuntimeWarning)
+    oracle = RecordedOracle(corpus_dir)
+    runtime = runtime_named(oracle.versions.runtime)
+    names = set(shard_names)
+    fires: dict[str, tuple[str, frozenset]] = {}
+    for key, (where, _kind, _rt) in sorted(oracle._where.items()):
+        if Path(where.rsplit(" line ", 1)[0]).name.split(".")[0] not in names:
+            continue
+        scene = Scene.from_json(json.loads(oracle._lines[key])["scene"])
+        trace: Counter = Counter()
+        run_scene(scene, trace=trace, runtime=runtime)
+        fires[key] = (scene_kind(scene), frozenset(trace))
+    old_names = doc["branches"]
+    records = {key: (kind, frozenset(old_names[i] for i in idx)) for key, kind, idx in doc["records"]}
+    if records.keys() & fires.keys():
+        raise SystemExit(f"the sample already holds records of {sorted(names)}: rebuild it instead")
+    counts = Counter(doc["corpus_branches"])
+    in_sample = Counter(b for _, branches in records.values() for b in branches)
+    by_branch: dict[str, list[str]] = defaultdict(list)
+    for key, (_, branches) in fires.items():
+        for b in branches:
+            counts[b] += 1
+            by_branch[b].append(key)
+    for b in sorted(by_branch, key=lambda b: (counts[b], b)):
+        for key in by_branch[b]:
+            if in_sample[b] >= per_branch:
+                break
+            if key not in records:
+                records[key] = fires[key]
+                in_sample.update(fires[key][1])
+    by_kind: dict[str, list[str]] = defaultdict(list)
+    for key, (kind, _) in fires.items():
+        if key not in records:
+            by_kind[kind].append(key)
+    for kind, keys in sorted(by_kind.items()):
+        have = sum(1 for k, _ in records.values() if k == kind)
+        for key in keys[: max(0, per_kind - have)]:
+            records[key] = fires[key]
+    branches = sorted(counts)
+    borders = {"boundary:cell_border", "boundary:landblock_border"}
+    return {
+        **doc,
+        "made_by": f"{doc['made_by']}, then --add {' '.join(sorted(names))}",
+        "corpus_records": doc["corpus_records"] + len(fires),
+        "boundary_records": doc["boundary_records"] + sum(
+            any(b.startswith("boundary:") and b not in borders for b in br) for _, br in fires.values()),
+        "corpus_branches": {b: counts[b] for b in branches},
+        "branches": branches,
+        "records": [[key, kind, sorted(branches.index(b) for b in br)] for key, (kind, br) in records.items()],
+    }
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--size", type=int, default=SIZE)
     p.add_argument("--runtime", choices=("mono", "coreclr"), action="append",
                    help="the runtime whose corpus to sample (repeatable; default both)")
+    p.add_argument("--add", nargs="+", metavar="SHARD", help="add the records of these shards (names such as "
+                   "ticks-0000) to the existing sample, running only them through the port")
     args = p.parse_args(argv)
     from acconform.oracle import default_corpus
 
     for runtime in args.runtime or ("coreclr", "mono"):
-        doc = build(default_corpus(runtime), args.size)
+        if args.add:
+            doc = add(load_sample(runtime), default_corpus(runtime), args.add)
+        else:
+            doc = build(default_corpus(runtime), args.size)
         sample_file(runtime).write_text(json.dumps(doc, separators=(",", ":")) + "\n")
         kinds = Counter(r[1] for r in doc["records"])
         print(f"{len(doc['records'])} of {doc['corpus_records']} records ({dict(kinds)}; "
