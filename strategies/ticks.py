@@ -1,11 +1,12 @@
 """Tick scenes: every kind's geometry with a timeline of ticks (issue 19; kind "ticks").
 
-    draw_tick_scene(draw)     a tick scene: a policy's geometry, a motion, a clock and a driver
+    draw_tick_scene(draw, world=None, policy=None)     a tick scene: a policy's geometry, a motion, a clock and a driver
 
-A tick scene is one of the other kinds' scenes (strategies/scenes.py, strategies/dungeon.py: the
-same terrain, BSP objects, obstacles and dungeons of EnvCells with statics) whose mover, instead of
-one transition from `begin` to `end`, is moved by ACE's per-tick update along that path. The
-policy picks the geometry and what the ticks do there:
+A tick scene is one of the other kinds' scenes (strategies/scenes.py, strategies/dungeon.py,
+strategies/buildings.py: the same terrain, BSP objects, obstacles, dungeons of EnvCells with statics
+and houses) whose mover, instead of one transition from `begin` to `end`, is moved by ACE's per-tick update along that path. The
+policy picks the geometry and what the ticks do there (`draw_tick_scene(draw, world)`: only the
+policies and sites on one world, campaign kind ``ticks:<world>``):
 
 - ``walk``: any kind's path, walked (a held velocity for as many ticks as the path takes, then
   coasting; root motion through the Sequence; or one push);
@@ -21,7 +22,15 @@ policy picks the geometry and what the ticks do there:
 - ``cross``: a diagonal walk across a landblock corner (four landblocks);
 - ``portal``: out of a dungeon through its portal to the outside, and back in through it;
 - ``velocity``: velocities at MaxVelocity and SmallVelocity exactly and an ulp either side, and
-  at the squared speed nearest SmallVelocity's EPSILON test.
+  at the squared speed nearest SmallVelocity's EPSILON test;
+- through a house (strategies/buildings.py; ``walk`` walks any of its paths but a placement too):
+  ``enter``, in at its door from outside (straight, at an angle, grazing a jamb, from across a
+  border, past a static in the doorway; or out of it), by a held velocity, the Sequence's
+  velocity or a push; ``porch``, out onto the porch and off its edge; ``cellar``, down the cellar
+  stairs or over a hatch in the room's floor into the cellar below; ``shell``, along the outer
+  walls and into the wall beside the door, the velocity held every tick. A porch or cellar walk
+  has ticks enough for its whole path at the drawn speed and a second's fall (REACH_FALL), no
+  root motion (its ground flags, kept each tick, would hold the mover up) and EdgeSlide mostly off.
 
 Clocks (orthogonal to the policy): fixed steps of 30, 250, 60, 10 or 4 fps; irregular steps; or
 steps exactly at MinQuantum (= TickRate), MaxQuantum and HugeQuantum and one double ulp either
