@@ -51,7 +51,8 @@ def acconform_campaign(request, tmp_path):
     from .oracle import get_oracle, live_configured
     from .report import Campaign, summary
     from .runner import run_campaign
-    from .strategies import check_kinds
+    from .protocol import CAMPAIGN_KINDS
+    from .strategies import check_kinds, kind_supported
 
     started = []
 
@@ -59,7 +60,7 @@ def acconform_campaign(request, tmp_path):
         impl = impl or request.config.getoption("acconform_impl")
         port = make_backend(impl, mode, timeout)
         started.append(port)
-        kinds = tuple(k for k in check_kinds(kinds) if k in getattr(port, "kinds", check_kinds(kinds)))
+        kinds = tuple(k for k in check_kinds(kinds) if kind_supported(k, getattr(port, "kinds", CAMPAIGN_KINDS)))
         oracle = get_oracle()
         port.runtime = runtime_named(oracle.versions.runtime)  # the port computes as the ACE it is compared with
         replay = None

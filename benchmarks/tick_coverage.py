@@ -3,12 +3,16 @@ driver and threshold velocity is drawn, and how often the port's tick branches a
 boundaries fire (port/transition/branches.py), plus the ticks that end in ACE's errors as the port
 reproduces them.
 
-    python benchmarks/tick_coverage.py [-n 1000] [--seed 0] [--runtime coreclr]
+    python benchmarks/tick_coverage.py [-n 1000] [--seed 0] [--runtime coreclr] [--kinds ticks:buildings]
 
-Scenes come from `sample_scenes(("ticks",), n, seed)` (strategies/ticks.py) and run through the
+Scenes come from `sample_scenes(("ticks",), n, seed)` (strategies/ticks.py; `--kinds ticks:<world>`:
+tick scenes over that world only, e.g. through houses) and run through the
 built-in port with a branch Trace, in process; nothing is timed. A boundary is "hit" when a compared
 value is bit-equal to its threshold, "near" within 4 float32 ulps (the ulps are measured for the
-float boundaries only; the clock's are compared in double and counted when equal).
+float boundaries only; the clock's are compared in double and counted when equal). Scenes through a
+house get the building branches too (port/transition/branches.py: the shell, the building's portal
+cells, the EnvCells), and how many of them fell over their ticks: a drop of more than 5 cm below
+where the mover began (off a porch, down a cellar's stairs or through its hatch).
 """
 
 from __future__ import annotations
@@ -27,6 +31,9 @@ TICK_BRANCH_PREFIXES = ("update_object", "update_object_internal", "update_objec
 TICK_BOUNDARIES = ("tick_rate", "huge_quantum", "max_quantum", "min_quantum", "max_velocity", "small_velocity",
                    "sledding_stop_speed", "sledding_glide_speed", "sledding_flat_z")
 NEAR_ULPS = 4
+# branches of the world a tick scene through a house goes through: its shell, its portal, its cells
+BUILDING_BRANCH_PREFIXES = ("building", "env_cell", "find_cell_list")
+FELL = 0.05  # metres below the start: the mover fell
 
 
 def labels(scene) -> list[str]:
@@ -57,6 +64,8 @@ def labels(scene) -> list[str]:
         out.append(f"slide slope {m.group(1)}")
     kind = parts[2] if len(parts) > 2 else "?"
     out.append(f"world {kind}")
+    if kind == "building":
+        out.append(f"house {parts[1]} {parts[3]}" + (" (no EdgeSlide)" if ":no-edge-slide" in name else ""))
     if scene.env_cells and any(o.position.cell & 0xFFFF >= 0x100 for o in scene.objects):
         out.append("world indoor with statics in EnvCells")
     return out
@@ -67,18 +76,20 @@ def main(argv=None) -> int:
     p.add_argument("-n", type=int, default=1000)
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--runtime", choices=("mono", "coreclr"), default="coreclr")
+    p.add_argument("--kinds", default="ticks", help="ticks (default), or ticks:<world> for tick scenes over one world")
     a = p.parse_args(argv)
 
     from acconform.port.run import run_scene
     from acconform.port.transition.branches import BRANCHES, MEASURED_IN_ULPS, Trace
-    from acconform.strategies import sample_scenes
+    from acconform.strategies import check_kinds, sample_scenes
 
     t0 = time.perf_counter()
-    scenes = list(sample_scenes(("ticks",), a.n, a.seed))
+    scenes = list(sample_scenes(check_kinds(a.kinds), a.n, a.seed))
     gen = time.perf_counter() - t0
     drawn: Counter = Counter()
     present: Counter = Counter()
     errors: Counter = Counter()
+    in_house: Counter = Counter()  # branches in the scenes through a house
     ticks = 0
     t1 = time.perf_counter()
     for s in scenes:
@@ -88,13 +99,18 @@ def main(argv=None) -> int:
         o = run_scene(s, trace=trace, runtime=a.runtime)
         present.update(trace.keys())
         present.update(f"near:{b}" for b, ulps in trace.closest.items() if ulps <= NEAR_ULPS)
+        if s.buildings:
+            in_house.update(trace.keys())
+            zs = [t.origin[2] for t in o.ticks if t.cell]
+            if zs and min(zs) < s.mover.begin.frame.origin[2] - FELL:
+                drawn[f"house {s.name.split(':')[1]} {s.name.split(':')[3]}: fell"] += 1
         err = next((t.error for t in o.ticks if t.error), o.error)
         if err:
             errors[f"{s.ticks.driver}: {err.split(':', 1)[0]}"] += 1
     run = time.perf_counter() - t1
     per = 1000.0 / len(scenes)
 
-    print(f"tick strategies: {len(scenes)} scenes (seed {a.seed}), {ticks / len(scenes):.1f} ticks each on average; "
+    print(f"tick strategies ({a.kinds}): {len(scenes)} scenes (seed {a.seed}), {ticks / len(scenes):.1f} ticks each on average; "
           f"{a.runtime} arithmetic; drawn in {gen:.1f} s, run through the port in {run:.1f} s")
     print("\n| drawn | per 1,000 scenes |\n|---|---:|")
     for k in sorted(drawn):
@@ -103,6 +119,12 @@ def main(argv=None) -> int:
     for b in sorted(BRANCHES):
         if b.split(":")[0] in TICK_BRANCH_PREFIXES:
             print(f"| {b} | {present.get(b, 0) * per:.1f} |")
+    if any(s.buildings for s in scenes):
+        houses = sum(1 for s in scenes if s.buildings)
+        print(f"\n| building branch, in the {houses} scenes through a house | per 1,000 of them |\n|---|---:|")
+        for b in sorted(BRANCHES):
+            if b.split(":")[0] in BUILDING_BRANCH_PREFIXES:
+                print(f"| {b} | {in_house.get(b, 0) * 1000.0 / houses:.1f} |")
     print("\n| tick boundary | hit per 1,000 | within 4 ulps per 1,000 |\n|---|---:|---:|")
     for b in TICK_BOUNDARIES:
         near = f"{present.get(f'near:{b}', 0) * per:.1f}" if b in MEASURED_IN_ULPS else "(compared in double)"

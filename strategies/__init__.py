@@ -14,7 +14,9 @@ frames, statics inside and across cells, portals to outside -- strategies/dungeo
 entered through the building's portal: doors barely wider than the mover, in and out, along the
 walls, porches, cellars, borders, a static in the doorway, placements inside -- strategies/buildings.py), "ticks"
 (any of those worlds with a timeline of ticks: falls, jumps, slides, sledding, presses, crossings,
-portals, quantum-exact clocks, threshold velocities, both drivers -- strategies/ticks.py). DEFAULT_KINDS
+portals, quantum-exact clocks, threshold velocities, both drivers -- strategies/ticks.py), and
+"ticks:<world>" (tick scenes over that world only, e.g. "ticks:buildings": through a house's door,
+off its porch, down its cellar, along its shell; recorded as "ticks"). DEFAULT_KINDS
 is what the port supports today; grow it as the port does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
 """
 
@@ -38,6 +40,17 @@ from acconform.protocol import KINDS as GEOMETRY_KINDS
 DEFAULT_KINDS: tuple[str, ...] = ALL_KINDS
 
 
+# "ticks:<world>": tick scenes over one world (a geometry kind)
+TICK_WORLD_KINDS: tuple[str, ...] = tuple(f"ticks:{k}" for k in GEOMETRY_KINDS)
+
+
+def kind_supported(kind: str, supported) -> bool:
+    """Whether a campaign kind is among an implementation's `supported` campaign kinds: "ticks:<world>"
+    when it lists "ticks" and the world."""
+    base, _, world = kind.partition(":")
+    return base in supported and (not world or world in supported)
+
+
 def check_kinds(kinds) -> tuple[str, ...]:
     if kinds is None:
         return DEFAULT_KINDS
@@ -51,8 +64,9 @@ def check_kinds(kinds) -> tuple[str, ...]:
         if not k:
             raise AcconformError(f"--kinds {given!r}: an empty kind name between commas "
                                  f"(known: {', '.join(ALL_KINDS)})")
-        if k not in ALL_KINDS:
-            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)})")
+        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS:
+            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, or ticks:<world> for "
+                                 f"tick scenes over one of {', '.join(GEOMETRY_KINDS)})")
     if len(set(kinds)) != len(kinds):
         twice = next(k for k in kinds if kinds.count(k) > 1)
         raise AcconformError(f"--kinds {given!r}: {twice!r} is named twice")

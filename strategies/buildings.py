@@ -19,6 +19,9 @@ Policies (the scene's name is ``building:<policy>``):
 - "porch": the house floor raised above the ground, its floor reaching out past the door (a lip):
   from inside out onto the porch and off its edge;
 - "cellar": from the room down the stairs to the cellar;
+- "hatch": the room's floor open over a cellar pit below it (a pit piece: strategies/dungeon.py),
+  the mover walking from the room's near end over the hatch (drawn by the tick strategies, which
+  let it fall in over ticks: strategies/ticks.py; the `buildings` kind's own draws leave it out);
 - "border": the house across a cell border, a landblock border or a landblock corner (its origin
   a little inside its landblock, the rest in the neighbours), approached from the neighbour;
 - "static": a static box in the doorway, half inside (placed by init_static_objs' chain, its cells
@@ -71,6 +74,10 @@ LATERAL = dr.OneOf(st.sampled_from((0.0, 0.0, 0.5, -0.5, 1.0, -1.0, 0.999, -0.99
 HEADINGS = dr.OneOf(st.sampled_from((0.0, 0.0, 10.0, -10.0, 30.0, -45.0, 60.0)), dr.floats(-75.0, 75.0))
 ALONG_GAPS = st.sampled_from((0.0, 0.001, 0.01, 0.05, -0.01, 0.2))
 EDGE_SLIDE = st.sampled_from((True, True, True, False))
+# a cellar hatch: the opening's length along the room past the mover's diameter (under it: the mover
+# bridges it), and the cellar's depth below the floor
+HATCH_SLACK = dr.OneOf(st.sampled_from((0.5, 1.0, 0.2, 0.05, -0.1)), dr.f32(0.0, 2.0))
+HATCH_DEPTHS = dr.OneOf(st.sampled_from((2.0, 2.5, 3.0)), dr.f32(0.5, 4.0))
 SPHERE_STEP_SITE, STEP_DOWN_SITE = dr.Site("building step-up height"), dr.Site("building step-down height")
 
 
@@ -145,6 +152,11 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
                  floor_cull=vest.floor_cull, lip=to_f32(dr.take(draw, PORCH_LIPS)) if policy == "porch" else 0.0)
     room = dg._plain(draw, "room", inner, r)
     room = Piece("room", room.length, room.width, room.height, floor_cull=room.floor_cull)
+    if policy == "hatch":  # the hatch from the room's middle on: the room at least twice its length
+        hatch = to_f32(max(2 * r + dr.take(draw, HATCH_SLACK), 0.2))
+        length = max(room.length, to_f32(2 * hatch + 0.2))
+        room = Piece("pit", length, room.width, room.height, "pit", feature_at=0.0, pit_length=hatch,
+                     pit_depth=to_f32(dr.take(draw, HATCH_DEPTHS)), floor_cull=room.floor_cull)
     inner = Door(min(inner.width, vest.width, room.width), min(inner.height, vest.height, room.height), 0.0, 1,
                  inner.faces_out)
     pieces, doors = [vest, room], [inner]
@@ -183,7 +195,7 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
     g0 = built.geometry[0]
     entry_portal = next(k for k, (which, _) in enumerate(g0.portal_doors) if which == "entry")
     # the shell: down to the ground (a porch's sill is above it), or to the cellar's floor
-    bottom = min(-lift - 0.5, min(d.bases) - 0.5)
+    bottom = min(-lift - 0.5, min(d.bases) - 0.5, -room.pit_depth - 0.5)
     shell_shape = shell(d, built, entry, wall, draw(ROOF_GAPS), draw(SHELL_SIDES), bottom)
     cells = tuple(c.id & 0xFFFF for c in built.env_cells)
     portal = BuildingPortalRec(dg.FIRST_CELL, entry_portal, draw(BLD_FLAGS), cells)
@@ -199,7 +211,7 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
     lateral = dr.take(draw, LATERAL) * free
     floor_z = 0.0  # house-frame z of the vestibule's floor
     out_z = to_f32(-lift)  # the ground outside, in the house frame
-    start_inside = policy in ("out", "porch", "cellar")
+    start_inside = policy in ("out", "porch", "cellar", "hatch")
     if policy == "wall":
         lateral = draw(st.sampled_from((1.0, -1.0))) * to_f32(entry.width / 2 + r * draw(st.sampled_from((0.0, 0.5, 1.0, 2.0))))
     if policy == "along":
@@ -215,6 +227,12 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
             sx = max(sx, d.starts[1] + r + 0.01)
             heading = draw(st.sampled_from((0.0, 0.0, 5.0, -5.0)))
             sy = draw(dg.LATERAL) * max(d.pieces[1].width / 2 - r - 0.01, 0.0)
+        elif policy == "hatch":  # in the room, short of the hatch (its near edge at the room's middle)
+            i = 1
+            edge = d.starts[1] + room.length / 2
+            sx = max(edge - before - 0.01, d.starts[1] + r + 0.01)
+            heading = draw(st.sampled_from((0.0, 0.0, 5.0, -5.0, 20.0)))
+            sy = draw(dg.LATERAL) * max(room.width / 2 - r - 0.01, 0.0)
         else:
             i = 0
             sx = max(min(to_f32(before + r), vest.length - r - 0.01), r + 0.01)
@@ -227,10 +245,13 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
         sy = lateral - (wall + r + before) * math.tan(rad) if abs(heading) < 80 else lateral
         sz = out_z
     rad = math.radians(heading)
-    if policy == "cellar":
+    if policy == "hatch":  # to the hatch's middle and on
+        length = d.starts[1] + room.length / 2 + room.pit_length / 2 - sx + past
+    elif policy == "cellar":
         length = sum(p.length for p in d.pieces[1:]) - (sx - d.starts[1]) + past
     elif start_inside:
-        length = sx + wall + r + past + (dr.take(draw, PORCH_LIPS) if policy == "porch" else 0.0)
+        # a porch's path goes past its edge (the vestibule's floor reaching `lip` out of the door)
+        length = sx + wall + r + past + (max(dr.take(draw, PORCH_LIPS), vest.lip) if policy == "porch" else 0.0)
     elif policy == "along":
         length = vest.length + room.length + 2 * wall + past
     else:
@@ -248,7 +269,8 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
 
     # grounded on the floor or the flat ground (normal +z) where it starts
     contact = ContactPlane(begin_pos.cell, PlaneRec((0.0, 0.0, 1.0), to_f32(-begin_pos.frame.origin[2])))
-    steps = step_heights([lift, abs(pieces[-1].rise) if policy == "cellar" else r / 2, r / 2])
+    steps = step_heights([lift, abs(pieces[-1].rise) if policy == "cellar" else room.pit_depth if policy == "hatch"
+                          else r / 2, r / 2])
     up = dr.one_of(draw, SPHERE_STEP_SITE, *steps)
     down = dr.one_of(draw, STEP_DOWN_SITE, lambda draw: draw(sh.f32s(r, 2 * r)), *steps)
     placement = None

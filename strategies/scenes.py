@@ -158,20 +158,21 @@ OBJECT_ANGLES = st.sampled_from((0, 0, 90, 45, 10, -30))
 
 @st.composite
 def scenes_of(draw, kind: str):
-    if kind == "ticks":
+    if kind == "ticks" or kind.startswith("ticks:"):  # tick scenes, over any world or one
         from .ticks import draw_tick_scene
 
-        return draw_tick_scene(draw)
+        return draw_tick_scene(draw, kind.partition(":")[2] or None)
     return with_placement(draw, draw_scene(draw, kind))
 
 
 def draw_scene(draw, kind: str, policy: str | None = None) -> Scene:
     """A scene of `kind`, with its policy drawn (or the one given: a TERRAIN_POLICIES, BSP_POLICIES,
-    OBSTACLE_POLICIES or dungeon.POLICIES entry; strategies/ticks.py asks for ledges, stairs, walls)."""
+    OBSTACLE_POLICIES, dungeon.POLICIES or buildings.POLICIES entry; strategies/ticks.py asks for ledges,
+    stairs, walls, porches, cellars)."""
     if kind == "indoor":
         return dg.draw_indoor(draw, draw(MOVER_SPHERES), step_heights, policy)
     if kind == "buildings":
-        return bl.draw_building(draw, draw(MOVER_SPHERES), step_heights)
+        return bl.draw_building(draw, draw(MOVER_SPHERES), step_heights, policy)
     bx, by = draw(HOME)
     terrain_policy = (policy or draw(TERRAIN_POLICIES)) if kind == "terrain" else "free"
     if terrain_policy == "exact_slope":

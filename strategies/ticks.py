@@ -1,11 +1,12 @@
 """Tick scenes: every kind's geometry with a timeline of ticks (issue 19; kind "ticks").
 
-    draw_tick_scene(draw)     a tick scene: a policy's geometry, a motion, a clock and a driver
+    draw_tick_scene(draw, world=None, policy=None)     a tick scene: a policy's geometry, a motion, a clock and a driver
 
-A tick scene is one of the other kinds' scenes (strategies/scenes.py, strategies/dungeon.py: the
-same terrain, BSP objects, obstacles and dungeons of EnvCells with statics) whose mover, instead of
-one transition from `begin` to `end`, is moved by ACE's per-tick update along that path. The
-policy picks the geometry and what the ticks do there:
+A tick scene is one of the other kinds' scenes (strategies/scenes.py, strategies/dungeon.py,
+strategies/buildings.py: the same terrain, BSP objects, obstacles, dungeons of EnvCells with statics
+and houses) whose mover, instead of one transition from `begin` to `end`, is moved by ACE's per-tick update along that path. The
+policy picks the geometry and what the ticks do there (`draw_tick_scene(draw, world)`: only the
+policies and sites on one world, campaign kind ``ticks:<world>``):
 
 - ``walk``: any kind's path, walked (a held velocity for as many ticks as the path takes, then
   coasting; root motion through the Sequence; or one push);
@@ -21,7 +22,15 @@ policy picks the geometry and what the ticks do there:
 - ``cross``: a diagonal walk across a landblock corner (four landblocks);
 - ``portal``: out of a dungeon through its portal to the outside, and back in through it;
 - ``velocity``: velocities at MaxVelocity and SmallVelocity exactly and an ulp either side, and
-  at the squared speed nearest SmallVelocity's EPSILON test.
+  at the squared speed nearest SmallVelocity's EPSILON test;
+- through a house (strategies/buildings.py; ``walk`` walks any of its paths but a placement too):
+  ``enter``, in at its door from outside (straight, at an angle, grazing a jamb, from across a
+  border, past a static in the doorway; or out of it), by a held velocity, the Sequence's
+  velocity or a push; ``porch``, out onto the porch and off its edge; ``cellar``, down the cellar
+  stairs or over a hatch in the room's floor into the cellar below; ``shell``, along the outer
+  walls and into the wall beside the door, the velocity held every tick. A porch or cellar walk
+  has ticks enough for its whole path at the drawn speed and a second's fall (REACH_FALL), no
+  root motion (its ground flags, kept each tick, would hold the mover up) and EdgeSlide mostly off.
 
 Clocks (orthogonal to the policy): fixed steps of 30, 250, 60, 10 or 4 fps; irregular steps; or
 steps exactly at MinQuantum (= TickRate), MaxQuantum and HugeQuantum and one double ulp either
@@ -60,19 +69,52 @@ from . import terrain as tr
 from .terrain import BLOCK, CELL, cell_of, split_global
 
 # the plainest first: Hypothesis shrinks toward it
-POLICIES = st.sampled_from(("walk", "walk", "fall", "fall", "jump", "jump", "slide", "sled", "sled", "press", "press",
-                            "cross", "portal", "velocity", "velocity"))
-WALK_KINDS = st.sampled_from(("terrain", "bsp", "obstacles", "indoor"))
-FALLS = st.sampled_from((("bsp", "ledge"), ("bsp", "ledge"), ("indoor", "ledge"), ("indoor", "pit"),
-                         ("indoor", "fall"), ("terrain", None), ("bsp", "slope")))
-JUMPS = st.sampled_from((("bsp", "stairs"), ("bsp", "stairs"), ("indoor", "stairs"), ("indoor", "cross"),
-                         ("bsp", "ledge"), ("bsp", "seam"), ("obstacles", "sphere_contact")))
-PRESSES = st.sampled_from((("bsp", "wall"), ("bsp", "wall"), ("indoor", "wall"), ("indoor", "doorway"),
-                           ("bsp", "touch"), ("obstacles", "tangent"), ("indoor", "static")))
+POLICY_NAMES = ("walk", "walk", "fall", "fall", "jump", "jump", "slide", "sled", "sled", "press", "press", "cross",
+                "portal", "velocity", "velocity", "enter", "porch", "cellar", "shell")
+POLICIES = st.sampled_from(POLICY_NAMES)
+WALK_SITES = (("terrain", None), ("bsp", None), ("obstacles", None), ("indoor", None), ("buildings", None))
+FALL_SITES = (("bsp", "ledge"), ("bsp", "ledge"), ("indoor", "ledge"), ("indoor", "pit"), ("indoor", "fall"),
+              ("terrain", None), ("bsp", "slope"))
+JUMP_SITES = (("bsp", "stairs"), ("bsp", "stairs"), ("indoor", "stairs"), ("indoor", "cross"), ("bsp", "ledge"),
+              ("bsp", "seam"), ("obstacles", "sphere_contact"))
+PRESS_SITES = (("bsp", "wall"), ("bsp", "wall"), ("indoor", "wall"), ("indoor", "doorway"), ("bsp", "touch"),
+               ("obstacles", "tangent"), ("indoor", "static"))
+# through a house (strategies/buildings.py): in at its door from outside (straight, at an angle,
+# grazing a jamb; across a border; past a static in the doorway) or out of it; out onto its porch
+# and off the edge; down its cellar (the stairs, or through a hatch in the room's floor); along
+# its shell and into the wall beside the door
+ENTER_SITES = (("buildings", "in"), ("buildings", "in"), ("buildings", "in"), ("buildings", "border"),
+               ("buildings", "static"), ("buildings", "out"))
+PORCH_SITES = (("buildings", "porch"),)
+CELLAR_SITES = (("buildings", "hatch"), ("buildings", "hatch"), ("buildings", "cellar"))
+SHELL_SITES = (("buildings", "along"), ("buildings", "along"), ("buildings", "wall"))
+SITES = {"walk": WALK_SITES, "fall": FALL_SITES, "jump": JUMP_SITES, "press": PRESS_SITES, "enter": ENTER_SITES,
+         "porch": PORCH_SITES, "cellar": CELLAR_SITES, "shell": SHELL_SITES,
+         # the policies drawing their own worlds: the worlds they draw on
+         "slide": (("terrain", None),), "sled": (("terrain", None), ("bsp", None)), "cross": (("terrain", None),),
+         "portal": (("indoor", None),), "velocity": (("terrain", None),)}
+WORLDS = ("terrain", "bsp", "obstacles", "indoor", "buildings")
+# off a porch's edge or into a cellar hatch: EdgeSlide (which stops the mover at the edge) mostly off
+EDGE_SLIDE_KEPT = st.sampled_from(("off", "off", "off", "kept"))
+# a walk through a house: any of its policies but a placement (a tick scene's mover starts where it is)
+HOUSE_WALKS = st.sampled_from(("in", "out", "wall", "along", "porch", "cellar", "hatch", "border", "static"))
+
+
+def _sites_over(world: str | None):
+    """{policy: a strategy of its (world kind, world policy) sites}, all of them or those on `world`."""
+    return {p: st.sampled_from(tuple(s for s in sites if world is None or s[0] == world)) for p, sites in SITES.items()
+            if world is None or any(s[0] == world for s in sites)}
+
+
+# per world (None: every world): the policies drawing on it, and each one's sites there
+SITES_OVER = {w: _sites_over(w) for w in (None,) + WORLDS}
+POLICIES_OVER = {None: POLICIES} | {w: st.sampled_from(tuple(p for p in POLICY_NAMES if p in SITES_OVER[w]))
+                                    for w in WORLDS}
 
 # ticks per scene: a few, a second or so, or two; mean about 27 (issue 19 asks for 20 or more)
 TICK_COUNTS = dr.OneOf(dr.ints(1, 10), dr.ints(10, 40), dr.ints(20, 60), dr.ints(20, 60))
 LONG_TICK_COUNTS = dr.OneOf(dr.ints(20, 40), dr.ints(40, 90))  # pressing and sliding: many ticks
+REACH_FALL, REACH_MAX_TICKS = 1.0, 150  # off a porch, into a cellar: the path walked and a second to fall
 
 # clocks
 CLOCKS = st.sampled_from(("fps", "fps", "fps", "irregular", "quanta"))
@@ -113,6 +155,8 @@ DRIVERS = st.sampled_from(("update_object", "update_object", "update_object", "r
 
 # motion along a path
 MOTIONS = st.sampled_from(("held", "held", "root", "push"))
+# walking off an edge to fall: no root motion (its ground flags, kept each tick, hold the mover up)
+FALL_MOTIONS = st.sampled_from(("held", "held", "held", "push"))
 SPEEDS = dr.OneOf(st.sampled_from((3.0, 1.0, 4.0, 2.5, 1.25, 6.0, 11.0)), dr.f32(0.05, 12.0))
 JUMP_UPS = dr.OneOf(st.sampled_from((6.0, 4.0, 2.0, 8.0, 10.0)), dr.f32(0.5, 12.0))
 JUMP_FORWARD = dr.OneOf(st.sampled_from((2.0, 0.0, 4.0, 1.0)), dr.f32(0.0, 6.0))
@@ -241,7 +285,8 @@ def _tick_scene(scene: Scene, start: float, dts: list[float], inputs: list[dict]
     return scene.replace(mover=mover, engine_mode="client", ticks=Ticks(driver, float(start), steps), name=name)
 
 
-def _walk_inputs(draw, n: int, dts: list[float], g0, g1, motion: str) -> tuple[list[dict], str]:
+def _walk_inputs(draw, n: int, dts: list[float], g0, g1, motion: str,
+                 speed: float | None = None) -> tuple[list[dict], str]:
     """Inputs moving the mover from g0 toward g1: a held velocity for the ticks the path takes at the
     drawn speed (then nothing: it coasts, falls, slides), root motion (a Sequence velocity, Active
     and the ground flags kept by the scene each tick, as a MovementManager would), or one push."""
@@ -249,7 +294,7 @@ def _walk_inputs(draw, n: int, dts: list[float], g0, g1, motion: str) -> tuple[l
     dx, dy, dz = (b - a for a, b in zip(g0, g1))
     ux, uy = _unit(dx, dy)
     length = math.hypot(dx, dy)
-    speed = float(dr.take(draw, SPEEDS))
+    speed = float(dr.take(draw, SPEEDS)) if speed is None else speed
     v = _vec(ux * speed, uy * speed, 0.0)
     if motion == "push" or length == 0.0:
         inputs[0]["velocity"] = v
@@ -280,36 +325,56 @@ def _driver_for(draw, scene: Scene, n: int, g0, g1) -> tuple[str, list[Position]
 
 # ---------------------------------------------------------------- policies
 
-def draw_tick_scene(draw) -> Scene:
+def draw_tick_scene(draw, world: str | None = None, policy: str | None = None) -> Scene:
+    """A tick scene; over `world` (a geometry kind: campaign kind ``ticks:<world>``) when given, of
+    `policy` when given (one drawing on that world)."""
     from .scenes import draw_scene
 
-    policy = draw(POLICIES)
+    policy = policy or draw(POLICIES_OVER[world])
+    sites = SITES_OVER[world][policy]
     if policy == "sled":
-        return _sled(draw)
+        return _sled(draw, draw(sites)[0])
     if policy == "velocity":
         return _velocity(draw, draw_scene)
     if policy == "cross":
         return _walk(draw, _diagonal(draw), "cross", long=False)
-    if policy == "walk":
-        return _walk(draw, draw_scene(draw, draw(WALK_KINDS)), "walk")
-    if policy == "fall":
-        kind, sub = draw(FALLS)
-        return _walk(draw, draw_scene(draw, kind, sub), "fall")
-    if policy == "press":
-        kind, sub = draw(PRESSES)
-        return _walk(draw, draw_scene(draw, kind, sub), "press", long=True, held_all=True)
     if policy == "slide":
         return _walk(draw, draw_scene(draw, "terrain", "exact_slope"), "slide", long=True)
     if policy == "portal":
         return _portal(draw, draw_scene(draw, "indoor", "outside"))
-    kind, sub = draw(JUMPS)
-    return _jump(draw, draw_scene(draw, kind, sub))
+    kind, sub = draw(sites)
+    if kind == "buildings" and sub is None:
+        sub = draw(HOUSE_WALKS)
+    base = draw_scene(draw, kind, sub)
+    if policy in ("walk", "enter"):
+        return _walk(draw, base, policy)
+    if policy in ("porch", "cellar"):  # off the edge (EdgeSlide mostly off), long enough to fall and land
+        m = base.mover
+        if m.state & int(PhysicsState.EdgeSlide) and draw(EDGE_SLIDE_KEPT) == "off":
+            base = base.replace(mover=replace(m, state=m.state & ~int(PhysicsState.EdgeSlide)),
+                                name=base.name + ":no-edge-slide")
+        return _walk(draw, base, policy, long=True, reach=True)
+    if policy == "fall":
+        return _walk(draw, base, policy)
+    if policy in ("press", "shell"):
+        return _walk(draw, base, policy, long=True, held_all=True)
+    return _jump(draw, base)
 
 
-def _walk(draw, base: Scene, label: str, long: bool = False, held_all: bool = False) -> Scene:
+def _walk(draw, base: Scene, label: str, long: bool = False, held_all: bool = False, reach: bool = False) -> Scene:
+    """`reach`: ticks enough to walk the whole path at the drawn speed and fall for REACH_FALL seconds
+    after it (the clock's last step repeated, up to REACH_MAX_TICKS ticks in all)."""
     n = dr.take(draw, LONG_TICK_COUNTS if long else TICK_COUNTS)
     start, dts, clock = _clock(draw, n)
     g0, g1 = _path(base)
+    speed = None
+    if reach:
+        speed = float(dr.take(draw, SPEEDS))
+        need = math.hypot(g1[0] - g0[0], g1[1] - g0[1]) / speed + REACH_FALL
+        step = dts[-1] if dts[-1] > 0 else 1 / 30
+        while sum(dts) < need and len(dts) < REACH_MAX_TICKS:
+            dts.append(step)
+        n = len(dts)
     if held_all:  # pressing: the velocity held every tick
         dx, dy = g1[0] - g0[0], g1[1] - g0[1]
         ux, uy = _unit(dx, dy)
@@ -317,7 +382,7 @@ def _walk(draw, base: Scene, label: str, long: bool = False, held_all: bool = Fa
         inputs = [{"velocity": _vec(ux * speed, uy * speed, 0.0)} for _ in range(n)]
         motion = "held-all"
     else:
-        inputs, motion = _walk_inputs(draw, n, dts, g0, g1, draw(MOTIONS))
+        inputs, motion = _walk_inputs(draw, n, dts, g0, g1, draw(FALL_MOTIONS if reach else MOTIONS), speed)
     driver, requests = _driver_for(draw, base, n, g0, g1)
     name = f"ticks:{label}:{base.name}:{motion}:{clock}:{driver}"
     return _tick_scene(base, start, dts, inputs, driver, requests, name)
@@ -429,7 +494,7 @@ CROSS_PAST = dr.OneOf(st.sampled_from((2.0, 1.0, 4.0)), dr.f32(0.2, 6.0))
 CROSS_JITTER = st.sampled_from((0.0, 0.0, 0.0, 10.0, -10.0, 30.0, -30.0))
 
 
-def _sled(draw) -> Scene:
+def _sled(draw, world: str = "terrain") -> Scene:
     """Sledding (or a plain mover, for comparison) down a slope whose normal.z is ACE's sledding
     threshold exactly or an ulp either side -- a BSP wedge (boundaries.SLED_WEDGES), or a one-cell
     terrain rise at the threshold itself (boundaries.SLED_TERRAIN_RISE) -- or over flat ground
@@ -437,7 +502,7 @@ def _sled(draw) -> Scene:
     side, and around) on the first tick, for many ticks."""
     from .scenes import draw_scene
 
-    where = draw(SLED_WHERE)
+    where = "wedge" if world == "bsp" else draw(SLED_WHERE)
     if where == "wedge":
         base = draw_scene(draw, "bsp", "sled_slope")
     else:
@@ -457,7 +522,7 @@ def _sled(draw) -> Scene:
     return _tick_scene(base, start, dts, inputs, "update_object", None, f"ticks:{label}:{base.name}:{clock}")
 
 
-SLED_WHERE = st.sampled_from(("wedge", "wedge", "terrain", "flat"))
+SLED_WHERE = st.sampled_from(("terrain", "flat"))  # on a BSP wedge: the world bsp
 
 
 def _sled_terrain(draw, sloped: bool) -> Scene:

@@ -290,7 +290,9 @@ def run(args) -> int:
         check_output_file(args.json, "--json")  # before the run, not after it
     run, impls = _implementation(args, kinds)
     if impls:
-        kinds = tuple(k for k in kinds if k in impls["exact"].kinds)
+        from ..strategies import kind_supported
+
+        kinds = tuple(k for k in kinds if kind_supported(k, impls["exact"].kinds))
         if not kinds:
             raise AcconformError(f"implementation {impls['exact'].name!r} supports none of the kinds asked for")
     try:

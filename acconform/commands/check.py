@@ -90,7 +90,10 @@ def _campaign(args, port, kinds, workers) -> int:
     from ..runner import DEFAULT_DATABASE, run_campaign
 
     impl_info = {"name": port.name, "version": (port.hello or {}).get("version", ""), "command": args.impl or ""}
-    unsupported_kinds = [k for k in kinds if k not in getattr(port, "kinds", kinds)]
+    from ..protocol import CAMPAIGN_KINDS
+    from ..strategies import kind_supported
+
+    unsupported_kinds = [k for k in kinds if not kind_supported(k, getattr(port, "kinds", CAMPAIGN_KINDS))]
     run_kinds = tuple(k for k in kinds if k not in unsupported_kinds)
     if unsupported_kinds:
         if not run_kinds:
@@ -241,6 +244,10 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
             return PerProcessOracle(args.ace, args.runtime), None, []
         return get_oracle(args.ace, args.runtime), None, []
     # replaying: options that only a generative campaign uses are refused, not ignored
+    one_world = [k for k in kinds if ":" in k]
+    if one_world:
+        raise AcconformError(f"--kinds {one_world[0]}: draws tick scenes over one world in a live campaign; a recorded "
+                             "corpus is replayed by its shards' kinds (--kinds ticks)")
     if args.database is not None:
         raise AcconformError("--database keeps the failing scenes of live campaigns; replaying the "
                              "recorded corpus uses none (no ACE is configured)")

@@ -417,8 +417,9 @@ def run(args) -> int:
     from ..strategies import GEOMETRY_KINDS
 
     kinds = check_kinds(args.kinds or ",".join(GEOMETRY_KINDS))
-    if "ticks" in kinds:
-        raise AcconformError("--kinds ticks: stress nudges a transition's begin and end, and a tick scene has no end "
+    ticked = next((k for k in kinds if k.partition(":")[0] == "ticks"), None)
+    if ticked:
+        raise AcconformError(f"--kinds {ticked}: stress nudges a transition's begin and end, and a tick scene has no end "
                              "(check --kinds ticks runs tick scenes)")
     if args.cases < 1 or args.ulps < 1:
         raise AcconformError(f"--cases and --ulps must be at least 1, got {args.cases} and {args.ulps}")

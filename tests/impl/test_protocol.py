@@ -141,6 +141,18 @@ def test_kinds_missing_from_the_handshake_are_skipped_and_do_not_count_toward_n(
     assert "skipping kinds bsp,obstacles,indoor,buildings" in r.stderr and "30 compared" in r.stdout
 
 
+def test_tick_scenes_over_one_world_need_the_ticks_feature_and_that_world_in_the_handshake(tmp_path, no_ace):
+    """--kinds ticks:buildings: an implementation without the kind buildings supports none of it; one with
+    it gets past the gate, and then, ACE not configured, the replay says a corpus has no such shards."""
+    r = check("--impl", planted("none", "--kinds", "terrain"), "--kinds", "ticks:buildings", "-n", "5", "--seed", "1",
+              cwd=tmp_path)
+    assert r.returncode == 2 and "supports none of the kinds asked for (ticks:buildings)" in r.stderr, r.stderr
+    r = check("--impl", planted("none", "--kinds", "terrain,buildings"), "--kinds", "ticks:buildings", "-n", "5",
+              "--seed", "1", cwd=tmp_path)
+    assert r.returncode == 2 and "Traceback" not in r.stderr, r.stderr
+    assert "--kinds ticks:buildings: draws tick scenes over one world in a live campaign" in r.stderr.splitlines()[-1]
+
+
 def test_an_implementation_that_sends_no_handshake_is_one_line_and_exit_2(tmp_path, no_ace):
     r = check("--impl", f"{sys.executable} -c pass", "-n", "5", "--seed", "1", cwd=tmp_path)
     assert r.returncode == 2

@@ -1,6 +1,7 @@
 """The named tick scenes (issue 19): dereth's 13 required trace-gate scenarios under dereth's own names
 (dereth-network/dereth, core/physics/src/trace.rs, REQUIRED_SCENARIOS, each with the behaviour dereth
-says it exercises) and the acceptance list's six, as scene data.
+says it exercises), the acceptance list's six, and issue 20's two through a house (in at its door,
+down its cellar hatch), as scene data.
 
 NAMED is the list (name, behaviour, builder); `python tests/oracle/named_scenes.py --write` writes each
 scene to examples/named/<name>.json, where `acconform run examples/named/<name>.json` runs it (on the
@@ -270,6 +271,58 @@ def skid_from_over_max_velocity():
     return scene("skid_from_over_max_velocity", [land(), land(0xAAB40000)], m, idle(10, 0.05))
 
 
+# ---------------------------------------------------------------- through a house (issue 20's ticks)
+
+HOUSE_ORIGIN = (100.0, 100.0, GROUND)
+
+
+def _house(room):
+    """A house on the flat ground (strategies/buildings.py's, laid out by hand): its door 1.2 m wide and
+    2.2 m high in the -x wall at x = 100 (the shell 0.2 m thick outside it), a vestibule 2 m long and
+    2 m wide behind it (EnvCell 0x0100), then `room` (0x0101) through a doorway like it. The
+    building's one portal leads into the vestibule, PortalSide on. (Building, the EnvCells' Environment
+    and EnvCells)."""
+    from acconform.flags import CullMode
+    from acconform.scene import OUTSIDE_CELL, Building, BuildingPortalRec
+    from acconform.strategies import buildings as bl
+    from acconform.strategies import dungeon as dg
+
+    door = dg.Door(1.2, 2.2, 0.0, OUTSIDE_CELL)
+    inner = dg.Door(1.2, 2.2, 0.0, 1)
+    d = dg.lay_out(A9B4 >> 16, [dg.Piece("room", 2.0, 2.0, 2.6), room], [inner], door, (), 0.0, HOUSE_ORIGIN)
+    built = dg.build(d)
+    entry = next(k for k, (which, _) in enumerate(built.geometry[0].portal_doors) if which == "entry")
+    shell = bl.shell(d, built, door, 0.2, 0.2, int(CullMode.Clockwise), -0.5 - room.pit_depth)
+    portal = BuildingPortalRec(dg.FIRST_CELL, entry, 0, tuple(c.id & 0xFFFF for c in built.env_cells))
+    building = Building(A9B4 | 0xFFFF, Frame(HOUSE_ORIGIN, dg.yaw_quat(0.0)), shell, (portal,))
+    return building, built.environment, built.env_cells
+
+
+def walk_into_house_over_ticks():
+    """From the grass 2.5 m before the door, root motion at 3 m/s for 40 ticks of 0.05 s: through the
+    door (0.12 m to spare either side of the mover) and the vestibule into the room (x 102..105)."""
+    from acconform.strategies.dungeon import Piece
+
+    building, env, cells = _house(Piece("room", 3.0, 2.0, 2.6))
+    m = mover((97.5, 100.0, GROUND))
+    return scene("walk_into_house_over_ticks", [land()], m, walk(40, 0.05, (3.0, 0.0, 0.0)), buildings=(building,),
+                 environments=(env,), env_cells=cells)
+
+
+def fall_down_cellar_hatch():
+    """The room 4 m long (x 102..106) with a hatch in its floor from its middle, 1.5 m long, over a
+    cellar 2.5 m deep (a pit in the room's cell); the mover (no EdgeSlide) in the room 0.8 m short of
+    the hatch, its velocity set to 2 m/s toward it for 12 ticks of 0.05 s, then left to fall."""
+    from acconform.strategies.dungeon import Piece
+
+    room = Piece("pit", 4.0, 2.0, 2.6, "pit", feature_at=0.0, pit_length=1.5, pit_depth=2.5)
+    building, env, cells = _house(room)
+    m = mover((103.2, 100.0, GROUND), state=GRAVITY, cell=cells[1].id)
+    steps = tuple(TickStep(0.05, velocity=(2.0, 0.0, 0.0)) for _ in range(12)) + idle(28, 0.05)
+    return scene("fall_down_cellar_hatch", [land()], m, steps, buildings=(building,), environments=(env,),
+                 env_cells=cells)
+
+
 # ---------------------------------------------------------------- the list
 
 NAMED: tuple[tuple[str, str, object], ...] = (
@@ -295,6 +348,8 @@ NAMED: tuple[tuple[str, str, object], ...] = (
     ("huge_quantum_skip", "update_object skips a tick over HugeQuantum", huge_quantum_skip),
     ("block_dist_refusal", "UpdateObjectInternalServer refuses a RequestPos two landblocks away", block_dist_refusal),
     ("skid_from_over_max_velocity", "the velocity clamp comes before friction", skid_from_over_max_velocity),
+    ("walk_into_house_over_ticks", "a walk in through a building's door: its portal, its cells", walk_into_house_over_ticks),
+    ("fall_down_cellar_hatch", "a fall through a hatch in a house's floor into its cellar", fall_down_cellar_hatch),
 )
 DERETH = tuple(name for name, _, _ in NAMED[:13])
 

@@ -1,5 +1,5 @@
 """The named tick scenes (tests/oracle/named_scenes.py, files in examples/named/): dereth's 13 required
-trace-gate scenarios, the acceptance list's six and one for a planted bug, with live ACE's answers recorded on both runtimes,
+trace-gate scenarios, the acceptance list's six, one for a planted bug and two through a house, with live ACE's answers recorded on both runtimes,
 the port against them every tick bit for bit, and what each scene shows.
 
 data/ace_named_outcomes.json holds live ACE's outcomes (ACE 7b47913 on mono and on .NET 10 through the
@@ -51,12 +51,13 @@ def recorded(runtime: str) -> dict[str, Outcome]:
 # ---------------------------------------------------------------- the list and the files
 
 
-def test_the_named_scenes_are_derets_thirteen_by_name_and_the_acceptance_lists_six_and_one_more():
+def test_the_named_scenes_are_derets_thirteen_by_name_the_acceptance_lists_six_and_three_more():
     assert DERETH == DERETH_REQUIRED
     assert {name for name, _, _ in NAMED} - set(DERETH) == {
         "fall_landing_on_lower_floor", "walk_off_ledge_with_edge_slide", "walk_off_ledge_without_edge_slide",
         "bounce_with_elasticity", "remainder_carried_across_ticks", "huge_quantum_skip", "block_dist_refusal",
-        "skid_from_over_max_velocity"}  # the last for a planted tick-loop bug (tests/runner/mutants.py)
+        "skid_from_over_max_velocity",  # for a planted tick-loop bug (tests/runner/mutants.py)
+        "walk_into_house_over_ticks", "fall_down_cellar_hatch"}  # issue 20's ticks through a house
     assert all(behaviour for _, behaviour, _ in NAMED)
 
 
@@ -203,6 +204,27 @@ def test_ace_clamps_a_start_velocity_over_max_velocity_before_friction():
 def test_ace_zeroes_the_cached_velocity_when_the_walk_is_stopped_by_the_object():
     ticks = _ticks("collide_with_moving_object")
     assert ticks[0].cached_velocity[0] > 0.0 and ticks[-1].cached_velocity == (0.0, 0.0, 0.0)
+
+
+@pytest.mark.anchor("CBuildingObj::find_building_transit_cells")
+@pytest.mark.parametrize("runtime", RUNTIMES)
+def test_ace_walks_the_mover_in_through_the_house_door_over_ticks_vestibule_then_room(runtime):
+    """Outdoors, then the vestibule (0x0100, reached through the building's portal), then the room."""
+    cells = [t.cell for t in _ticks("walk_into_house_over_ticks", runtime)]
+    assert cells[0] & 0xFFFF < 0x100 and cells[-1] == 0xA9B40101
+    firsts = [c for i, c in enumerate(cells) if i == 0 or cells[i - 1] != c]
+    assert [c & 0xFFFF for c in firsts[1:]] == [0x100, 0x101]
+    assert _trace("walk_into_house_over_ticks")["building:transit_cell"]
+
+
+@pytest.mark.parametrize("runtime", RUNTIMES)
+def test_ace_drops_the_mover_through_the_hatch_onto_the_cellar_floor_in_free_fall_between(runtime):
+    """Pushed over the hatch's edge (x 104) without EdgeSlide, it leaves the floor, falls the 2.5 m to the
+    cellar floor (z 17.5) in the room's cell, and stands there."""
+    ticks = _ticks("fall_down_cellar_hatch", runtime)
+    assert ticks[0].origin[2] == 20.0 and ticks[-1].origin[2] == 17.5 and ticks[-1].cell == 0xA9B40101
+    assert any(17.5 < t.origin[2] < 20.0 and not t.transient_state & TransientState.Contact for t in ticks)
+    assert ticks[-1].transient_state & ON_GROUND == ON_GROUND and 104.0 < ticks[-1].origin[0] < 105.5
 
 
 # ---------------------------------------------------------------- live

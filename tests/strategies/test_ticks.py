@@ -1,5 +1,6 @@
 """The tick strategies (strategies/ticks.py): valid tick scenes of every policy, every world, both
-drivers, quantum-exact clocks and threshold velocities, solved sledding slopes."""
+drivers, quantum-exact clocks and threshold velocities, solved sledding slopes; tick scenes through
+houses (campaign kind ticks:buildings): in at the door, off the porch, down the cellar, along the shell."""
 
 from __future__ import annotations
 
@@ -23,7 +24,7 @@ N = 300
 
 @pytest.fixture(scope="module")
 def tick_scenes():
-    return list(sample_scenes(("ticks",), N, 19))
+    return list(sample_scenes(("ticks",), N, 20))
 
 
 def test_tick_scenes_are_their_own_kind_in_every_default_campaign():
@@ -34,7 +35,7 @@ def test_every_tick_scene_validates_runs_in_client_mode_and_has_no_end(tick_scen
     for s in tick_scenes:
         assert validate_scene(s) == s
         assert s.engine_mode == "client" and s.mover.end is None and s.ticks.steps
-        assert scene_kind(s) == "ticks" and geometry_kind(s) in ("terrain", "bsp", "obstacles", "indoor")
+        assert scene_kind(s) == "ticks" and geometry_kind(s) in ("terrain", "bsp", "obstacles", "indoor", "buildings")
 
 
 def test_tick_scenes_average_twenty_ticks_or_more(tick_scenes):
@@ -44,13 +45,14 @@ def test_tick_scenes_average_twenty_ticks_or_more(tick_scenes):
 def test_every_policy_world_and_driver_is_drawn(tick_scenes):
     policies = Counter(s.name.split(":")[1].split("-")[0] for s in tick_scenes)
     assert set(policies) >= {"walk", "fall", "jump", "slide", "sled", "press", "cross", "portal", "velocity"}
-    assert {geometry_kind(s) for s in tick_scenes} == {"terrain", "bsp", "obstacles", "indoor"}
+    assert set(policies) & {"enter", "porch", "cellar", "shell"}  # through houses: each one below
+    assert {geometry_kind(s) for s in tick_scenes} == {"terrain", "bsp", "obstacles", "indoor", "buildings"}
     assert {s.ticks.driver for s in tick_scenes} == {"update_object", "request_pos"}
 
 
-def test_indoor_tick_scenes_hold_env_cells_and_statics(tick_scenes):
-    indoor = [s for s in tick_scenes if s.env_cells]
-    assert indoor and any(any(o.position.cell & 0xFFFF >= 0x100 for o in s.objects) for s in indoor)
+def test_indoor_tick_scenes_hold_env_cells_and_statics():
+    indoor = list(sample_scenes(("ticks:indoor",), 80, 19))
+    assert all(s.env_cells for s in indoor) and any(any(o.position.cell & 0xFFFF >= 0x100 for o in s.objects) for s in indoor)
 
 
 def test_every_clock_is_drawn_fixed_steps_at_each_rate(tick_scenes):
@@ -96,3 +98,103 @@ def test_the_tick_scenes_reach_the_tick_loops_branches_and_its_exact_boundaries(
               "calc_friction:sledding_stop", "handle_all_collisions:elastic_bounce",
               "boundary:tick_rate", "boundary:min_quantum", "boundary:huge_quantum", "boundary:sledding_flat_z"):
         assert seen[b], b
+
+
+# ---------------------------------------------------------------- through houses (ticks:buildings)
+
+
+HOUSE_POLICIES = ("walk", "enter", "porch", "cellar", "shell")
+
+
+def _house_draws(policy: str, n: int, seed: int) -> list:
+    """n tick scenes through houses of one policy, drawn as sample_scenes draws (seeded, generation only)."""
+    from hypothesis import HealthCheck, Phase, given, settings
+    from hypothesis import seed as hseed
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+
+    out = []
+
+    @hseed(seed)
+    @settings(max_examples=n, database=None, phases=[Phase.generate], deadline=None,
+              suppress_health_check=list(HealthCheck))
+    @given(st.composite(lambda draw: tk.draw_tick_scene(draw, "buildings", policy))())
+    def collect(scene):
+        out.append(scene)
+
+    with pinned_constants():
+        collect()
+    return out
+
+
+@pytest.fixture(scope="module")
+def house_scenes():
+    """40 of each policy through a house, and 60 as a ticks:buildings campaign draws them."""
+    return [s for p in HOUSE_POLICIES for s in _house_draws(p, 40, 20)] + list(sample_scenes(("ticks:buildings",), 60, 20))
+
+
+def test_a_ticks_world_campaign_kind_draws_tick_scenes_over_that_world_only(house_scenes):
+    for s in house_scenes:
+        assert validate_scene(s) == s and s.engine_mode == "client" and s.mover.end is None
+        assert scene_kind(s) == "ticks" and geometry_kind(s) == "buildings" and s.buildings
+        assert s.mover.placement is None
+    for world in ("terrain", "indoor"):
+        assert {geometry_kind(s) for s in sample_scenes((f"ticks:{world}",), 15, 3)} == {world}
+
+
+def test_every_house_policy_and_house_walk_is_drawn_over_ticks(house_scenes):
+    drawn = Counter((s.name.split(":")[1], s.name.split(":")[3]) for s in house_scenes)
+    assert {("enter", "in"), ("porch", "porch"), ("cellar", "hatch"), ("cellar", "cellar"), ("shell", "along"),
+            ("shell", "wall")} <= set(drawn)
+    assert {p for p, _ in drawn} == {"walk", "enter", "porch", "cellar", "shell"}
+    walks = [s for s in house_scenes if s.name.split(":")[1] == "enter"]
+    assert any(st.sequence_velocity for s in walks for st in s.ticks.steps)  # root motion through the door
+    assert any(st.velocity for s in walks for st in s.ticks.steps)  # a velocity set toward it
+
+
+def test_a_house_fall_walks_its_whole_path_and_a_second_more_without_root_motion(house_scenes):
+    """Off the porch and into the cellar: ticks for the path at the drawn speed and a fall (up to 150),
+    held velocity or a push (root motion's ground flags would hold the mover up), EdgeSlide mostly off."""
+    falls = [s for s in house_scenes if s.name.split(":")[1] in ("porch", "cellar")]
+    assert falls and not any(st.sequence_velocity for s in falls for st in s.ticks.steps)
+    assert all(len(s.ticks.steps) <= tk.REACH_MAX_TICKS for s in falls)
+    assert sum(":no-edge-slide" in s.name for s in falls) > len(falls) / 2
+
+
+def test_the_cellar_hatch_is_a_pit_in_the_rooms_floor_the_mover_starts_in_the_room_short_of_it(house_scenes):
+    hatches = [s for s in house_scenes if ":hatch" in s.name]
+    assert hatches
+    for s in hatches:
+        room = s.env_cells[1]
+        struct = s.environments[0].cell_structs[room.cell_structure]
+        assert min(v[2] for p in struct.physics_polygons for v in p.vertices) < -0.4  # the cellar below the floor
+        assert s.mover.begin.cell == room.id
+
+
+@pytest.mark.anchor("CBuildingObj::find_building_transit_cells")
+def test_tick_scenes_through_houses_reach_the_building_branches_and_fall_in_the_cellar(house_scenes):
+    seen, fell = Counter(), Counter()
+    for s in house_scenes:
+        t = Trace()
+        o = run_scene(s, trace=t, runtime="coreclr")
+        seen.update(t.keys())
+        zs = [k.origin[2] for k in o.ticks if k.cell]
+        if zs and min(zs) < s.mover.begin.frame.origin[2] - 0.05:
+            fell[s.name.split(":")[3]] += 1
+    for b in ("building:collisions", "building:collided", "building:transit_cell", "env_cell:outside_portal",
+              "find_cell_list:indoor", "update_object:remainder_step"):
+        assert seen[b], b
+    assert fell["hatch"] and fell["porch"]
+
+
+def test_a_ticks_world_kind_names_a_known_world_and_is_supported_with_ticks_and_that_world():
+    from acconform.errors import AcconformError
+    from acconform.strategies import check_kinds, kind_supported
+
+    assert check_kinds("ticks:buildings,terrain") == ("ticks:buildings", "terrain")
+    with pytest.raises(AcconformError, match=r"unknown scene kind 'ticks:walls' .*ticks:<world>.*buildings"):
+        check_kinds("ticks:walls")
+    assert kind_supported("ticks:buildings", ("terrain", "buildings", "ticks"))
+    assert not kind_supported("ticks:buildings", ("terrain", "buildings"))
+    assert not kind_supported("ticks:buildings", ("terrain", "ticks"))
