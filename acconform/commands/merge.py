@@ -52,6 +52,15 @@ def _load(path: Path) -> dict:
     return doc
 
 
+def _found(file: str | None, summary: Path) -> str | None:
+    """A case file a summary names: a relative one is looked for beside the summary (where `check`
+    wrote both, as a CI artifact keeps them), then from here."""
+    if not file or Path(file).is_absolute():
+        return file
+    beside = summary.parent / file
+    return str(beside) if beside.is_file() else file
+
+
 def merge(docs: list[tuple[Path, dict]], failures: Path) -> dict:
     """The merged summary of the parts `docs` ((path, summary) in any order), their case files
     copied into `failures`; AcconformError (one line) on bad input, before anything is written."""
@@ -85,6 +94,7 @@ def merge(docs: list[tuple[Path, dict]], failures: Path) -> dict:
     cases, kept_files, kept_kinds = [], set(), set()
     for path, doc in sorted(docs, key=lambda d: d[1]["shard"]["part"]):
         for c in doc["differences"].get("cases", []):
+            c = dict(c, file=_found(c.get("file"), path))
             name = Path(c["file"]).name if c.get("file") else None
             kind = tuple(c.get("fields", ()))
             if (name is not None and name in kept_files) or (live and kind in kept_kinds):

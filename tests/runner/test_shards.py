@@ -132,3 +132,24 @@ def test_bad_input_to_merge_is_one_line_and_exit_2(tmp_path, setup, says):
     r = acconform("merge", *args, cwd=tmp_path)
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1 and says in r.stderr, r.stderr
     assert not (tmp_path / "failures").exists()
+
+
+def test_merge_finds_a_parts_case_files_beside_its_summary(tmp_path):
+    """As CI artifacts keep them: each part's summary and its failures/ folder in a folder of their own."""
+    from acconform.commands.merge import merge
+
+    docs = []
+    for k in (1, 2):
+        d = tmp_path / f"part-{k}" / "failures"
+        d.mkdir(parents=True)
+        (d / f"case-{k}.json").write_text("{}")
+        docs.append((tmp_path / f"part-{k}" / "s.json", {
+            "format": "acconform.summary/1", "ok": False, "oracle": "recorded", "mode": "exact", "seed": None,
+            "kinds": ["bsp"], "implementation": {}, "versions": {"runtime": "coreclr"},
+            "shard": {"part": k, "parts": 2, "cases_asked": None, "workers": 1},
+            "cases": {"run": 1, "compared": 1, "skipped": {}},
+            "differences": {"cases": [{"file": f"failures/case-{k}.json", "fields": [f"f{k}"], "group": "g"}]},
+            "timings": {"elapsed_s": 1.0}}))
+    out = merge(docs, tmp_path / "merged")
+    assert sorted(p.name for p in (tmp_path / "merged").iterdir()) == ["case-1.json", "case-2.json"]
+    assert out["differences"]["total"] == 2
