@@ -443,6 +443,14 @@ class Implementation:
         when the answer is read (an exit code, or no answer in time)."""
         fd = self._proc.stdin.fileno()
         view = memoryview(data)
+        try:  # most requests fit in the pipe at once
+            view = view[os.write(fd, view):]
+        except BlockingIOError:
+            pass
+        except (BrokenPipeError, ConnectionResetError):
+            return
+        if not view:
+            return
         deadline = time.monotonic() + self.timeout
         with selectors.DefaultSelector() as sel:
             sel.register(fd, selectors.EVENT_WRITE)
