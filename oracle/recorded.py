@@ -152,7 +152,9 @@ class Entry:
         scene, outcome); None for a line laid out otherwise."""
         line = self.line
         head = _HEAD.match(line)
-        end = len(line.rstrip())
+        end = len(line)
+        while end and line[end - 1] in " \t\r\n":  # (not rstrip(): that copies the line)
+            end -= 1
         cut = line.rfind(_OUTCOME, 0, end)
         if head is None or cut < head.end() or line[end - 1] != "}":
             return None
