@@ -240,7 +240,7 @@ def jsonl_lines(path: str | Path):
         opener = gzip.open if path.name.endswith(".gz") else open
         with opener(path, "rt", encoding="utf-8") as f:
             for lineno, line in enumerate(f, 1):
-                if line.strip():
+                if not line.isspace():  # (not strip(): that copies every line, a third of loading a corpus)
                     yield lineno, line
     except FileNotFoundError:
         raise InvalidScene("", "no such file", str(path)) from None

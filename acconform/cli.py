@@ -21,6 +21,8 @@ from .errors import AcconformError
 COMMANDS: dict[str, tuple[str, str]] = {
     "validate": ("acconform.commands.validate", "check scene, case and record files; exit 2 naming the first bad field"),
     "check": ("acconform.commands.check", "run a differential campaign, port vs ACE (live or recorded); save shrunk cases"),
+    "merge": ("acconform.commands.merge", "join the --json summaries and case files of a campaign's parts "
+              "(`check --shard K/N`) into one"),
     "repro": ("acconform.commands.repro", "replay a case file on the port (and live ACE) and print the differences"),
     "explain": ("acconform.commands.explain", "the first step where a case's implementation parts from the reference "
                 "trace: tick, step, routine, field, both values and their ulps (--html: a page with pictures)"),

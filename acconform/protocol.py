@@ -43,7 +43,7 @@ from .codec import dumps_compact, loads_answer
 from .errors import AcconformError, InvalidScene
 from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
-from .oracle.recorded import geometry_kind
+from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
 from .scene import Scene
 
@@ -195,6 +195,12 @@ class Implementation:
         """The campaign kinds it can run: its handshake's, and "ticks" when it lists the feature."""
         return tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in self.hello["features"] else ())
 
+    @property
+    def runs_every_scene(self) -> bool:
+        """Whether its handshake lists every kind and every feature: no scene is skipped, so a scene
+        need not be read to be sent (a replay sends a recorded scene as its text: `run_text`)."""
+        return set(KINDS) <= set(self.hello["kinds"]) and set(FEATURES) <= set(self.hello["features"])
+
     def unsupported(self, scene: Scene) -> str | None:
         kind = geometry_kind(scene)  # a tick scene's too: the ticks themselves are a feature
         if kind not in self.hello["kinds"]:
@@ -343,6 +349,18 @@ class Implementation:
         if why is not None:
             self.last_stderr = ""
             return self._verdict(why)
+        return self._answer(scene)
+
+    def run_text(self, recorded: RecordedText) -> Outcome | None:
+        """The implementation's outcome for a recorded scene sent as its JSON text; None when the
+        answer is the recorded outcome's text itself (ACE's answer, so nothing to read or compare)."""
+        why = self._ensure()
+        if why is not None:
+            self.last_stderr = ""
+            return self._verdict(why)
+        return self._answer(recorded)
+
+    def _answer(self, scene: "Scene | RecordedText") -> Outcome | None:
         rid = next((r for r, s in self._inflight if s is scene), None)
         if rid is None:
             rid = self._send(scene)
@@ -382,10 +400,12 @@ class Implementation:
         records, anchors = self._traces.pop(rid, (None, None))
         return self._answers.pop(rid), records, anchors
 
-    def prefetch(self, scene: Scene) -> None:
+    def prefetch(self, scene: "Scene | RecordedText") -> None:
         """Send `scene` ahead, so the implementation works on it while the harness compares the
-        previous answer (a replay knows its next scene). At most two requests are in flight."""
-        if len(self._inflight) < 2 and self.unsupported(scene) is None and self._ensure() is None:
+        previous answer (a replay knows its next scene). At most two requests are in flight. A
+        recorded scene's text is sent only to an implementation that `runs_every_scene`."""
+        if (len(self._inflight) < 2 and self._ensure() is None
+                and (self.runs_every_scene if isinstance(scene, RecordedText) else self.unsupported(scene) is None)):
             self._send(scene)
 
     def _ensure(self) -> str | None:
@@ -401,11 +421,15 @@ class Implementation:
                 return f"{CRASH}: could not restart: {e}"
         return None
 
-    def _send(self, scene: Scene, rid: int | None = None) -> int:
+    def _send(self, scene: "Scene | RecordedText", rid: int | None = None) -> int:
         if rid is None:
             self._next_id += 1
             rid = self._next_id
             self._inflight.append((rid, scene))
+        if isinstance(scene, RecordedText):  # the scene's JSON as the harness wrote it when it was recorded
+            self._write(f'{{"id":{rid},"mode":"{self.mode}","runtime":"{self.runtime}","scene":{scene.scene}}}\n'
+                        .encode("utf-8"))
+            return rid
         extra = {"trace": True} if rid in self._traced else {}
         # the scene's JSON inside the retry: a BSP thousands of levels deep needs the deep stack to write
         request = deep.retrying(lambda: dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime,
@@ -419,6 +443,14 @@ class Implementation:
         when the answer is read (an exit code, or no answer in time)."""
         fd = self._proc.stdin.fileno()
         view = memoryview(data)
+        try:  # most requests fit in the pipe at once
+            view = view[os.write(fd, view):]
+        except BlockingIOError:
+            pass
+        except (BrokenPipeError, ConnectionResetError):
+            return
+        if not view:
+            return
         deadline = time.monotonic() + self.timeout
         with selectors.DefaultSelector() as sel:
             sel.register(fd, selectors.EVENT_WRITE)
@@ -433,12 +465,21 @@ class Implementation:
                     return
 
     def _read_answer(self) -> None:
-        """Read the answer to the oldest request in flight, or give it a verdict and restart."""
-        rid = self._inflight[0][0]
+        """Read the answer to the oldest request in flight, or give it a verdict and restart. The
+        answer to a recorded scene's text that is the recorded outcome's text, byte for byte, is
+        stored as None: it is ACE's answer as recorded, so there is nothing to read or compare."""
+        rid, sent = self._inflight[0]
         try:
             line = self._readline(self.timeout)
         except _Failed as e:
             return self._fail_head(e.args[0])
+        if isinstance(sent, RecordedText):
+            head = f'{{"id":{rid},"outcome":'
+            if (line.startswith(head) and line.endswith("}") and len(line) == len(head) + len(sent.outcome) + 1
+                    and line[len(head):-1] == sent.outcome):
+                self._inflight.popleft()
+                self._answers[rid] = None
+                return
         try:
             doc = loads_answer(line)  # -0 is negative zero
             if not isinstance(doc, dict):

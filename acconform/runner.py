@@ -509,45 +509,83 @@ def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices:
     `keep_going`, else the replay stops. A port that can take a scene ahead (`port.prefetch`, an
     implementation process) is sent the next scene before the current answer is read, so it
     computes while this process compares.
+
+    Recorded scenes (`items.text(i)`) through an implementation process that runs every scene are
+    sent as their recorded JSON text, unparsed; an answer that is the recorded outcome's text is
+    counted as agreeing without reading either. Only a scene whose answer differs in its text is
+    read, run through the oracle and compared, so its case is what the slower path would write.
     """
     indices = iter(indices)
     stop = [False]
+    texts = getattr(items, "text", None) if getattr(port, "runs_every_scene", False) else None
+
+    def load(i):
+        try:
+            return items[i]
+        except AcconformError as e:
+            r.unreadable.append(str(e))
+            if not keep_going:
+                stop[0] = True
+            return None
 
     def take():
+        """(index, what to send: the recorded text or the scene), or None at the end."""
         for i in indices:
-            try:
-                return items[i]
-            except AcconformError as e:
-                r.unreadable.append(str(e))
-                if not keep_going:
-                    stop[0] = True
-                    return None
+            if texts is not None:
+                text = texts(i)
+                if text is not None:
+                    return i, text
+            scene = load(i)
+            if scene is not None:
+                return i, scene
+            if stop[0]:
+                return None
         return None
 
     prefetch = getattr(port, "prefetch", None)
-    unsupported = getattr(port, "unsupported", None)
-    scene = take()
-    if prefetch is not None and scene is not None:
-        prefetch(scene)
-    while scene is not None and not should_stop():
+    unsupported = getattr(port, "unsupported", None) if texts is None else None
+    cur = take()
+    if prefetch is not None and cur is not None:
+        prefetch(cur[1])
+    while cur is not None and not should_stop():
         nxt = None if stop[0] else take()
         if prefetch is not None and nxt is not None:
-            prefetch(nxt)
-        why = unsupported(scene) if unsupported is not None else None
-        if why:
+            prefetch(nxt[1])
+        i, scene = cur
+        cur = nxt
+        if not isinstance(scene, Scene):  # a recorded text: compared as text first
+            t0 = time.perf_counter()
+            a = guarded(port.run_text, scene)
+            r.timings["port"] += time.perf_counter() - t0
+            if a is None:
+                r.cases += 1
+                tick(1)
+                continue
+            scene = load(i)
+            if scene is None:
+                if stop[0]:
+                    break
+                continue
+            t1 = time.perf_counter()
+            b = guarded(oracle, scene)
+            t2 = time.perf_counter()
+            diffs = compare(a, b, mode)
+            r.timings["oracle"] += t2 - t1
+            r.timings["compare"] += time.perf_counter() - t2
+        elif unsupported is not None and (why := unsupported(scene)):
             r.skipped[why] += 1
             r.cases += 1
             tick(1)
+            continue
         else:
             a, b, diffs = run_case(port, oracle, scene, mode, r.timings)
-            r.cases += 1
-            tick(1)
-            if diffs:
-                case = make_case(scene, a, b, diffs, seed, mode, versions, implementation_run(port), REPLAYED)
-                r.found.append(Found(case, None, signature(diffs)))
-                if not keep_going:
-                    break
-        scene = nxt
+        r.cases += 1
+        tick(1)
+        if diffs:
+            case = make_case(scene, a, b, diffs, seed, mode, versions, implementation_run(port), REPLAYED)
+            r.found.append(Found(case, None, signature(diffs)))
+            if not keep_going:
+                break
 
 
 def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: str, budget: int) -> None:
@@ -638,10 +676,24 @@ def _worker_campaign(w: int, s: dict, r: Result, tick) -> None:
                 keep_going=s["keep_going"], tick=tick, should_stop=lambda: stop.is_set(), versions=s["versions"],
                 seed=s["seed"])
         return
-    n = s["n"] // s["workers"] + (1 if w < s["n"] % s["workers"] else 0)
-    _generative(s["port"], s["oracle"], r, kinds=s["kinds"], n=n, seed=s["seed"] * 1000 + w, mode=s["mode"],
+    stream = s["first_stream"] + w
+    _generative(s["port"], s["oracle"], r, kinds=s["kinds"], n=_stream_cases(s["n"], stream, s["streams"]),
+                seed=s["seed"] * 1000 + stream, mode=s["mode"],
                 keep_going=s["keep_going"], database=s["database"], tick=tick, should_stop=lambda: stop.is_set(),
                 versions=s["versions"])
+
+
+def _stream_cases(n: int, stream: int, streams: int) -> int:
+    """The cases of one stream of a live campaign of `n` cases drawn as `streams` streams."""
+    return n // streams + (1 if stream < n % streams else 0)
+
+
+def parse_shard(text: str) -> tuple[int, int]:
+    """`--shard K/N` as (K, N), 1 <= K <= N; AcconformError (one line, exit 2) otherwise."""
+    k, slash, n = text.partition("/")
+    if not slash or not k.isdigit() or not n.isdigit() or not 1 <= int(k) <= int(n):
+        raise AcconformError(f"--shard {text!r}: expected K/N with 1 <= K <= N, e.g. --shard 2/4")
+    return int(k), int(n)
 
 
 def _merge(result: Result, outs: list[dict], mode: str, generative: bool) -> None:
@@ -671,8 +723,13 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                  keep_going: bool = False, failures_dir: str | Path | None = "failures",
                  database: str | Path | None = DEFAULT_DATABASE, workers: int = 1, progress: bool = False,
                  replay: Sequence[Scene] | Iterable[Scene] | None = None, stand_in: Backend | None = None,
-                 shrink_budget: int | None = None) -> Result:
+                 shrink_budget: int | None = None, shard: tuple[int, int] = (1, 1)) -> Result:
     """Compare `n` scenes (or replay `replay`) through port and oracle; see the module doc.
+
+    `shard` (K, N): this run is part K of N disjoint parts of the campaign. Replaying, it takes
+    the items K-1, K-1+N, K-1+2N, ...; live, the campaign is drawn as N x `workers` streams
+    (worker w of part K draws stream (K-1) x workers + w, with seed x 1000 + its stream), so the N
+    parts together draw exactly what one run with N x `workers` workers draws.
 
     `replay` is a sequence of scenes (or an iterable, listed first); a lazy one (a corpus sample)
     is loaded item by item in the worker that replays it. `stand_in` is what replayed differences
@@ -688,9 +745,15 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
     per_process = getattr(getattr(oracle, "__self__", oracle), "per_process", False)
     versions = None if per_process and workers > 1 else versions_of(port, oracle)
     items = None if replay is None else replay if isinstance(replay, Sequence) else list(replay)
+    part, parts = shard
+    if items is not None and parts > 1:
+        items = items[part - 1::parts]
     total = len(items) if items is not None else n
+    if items is None and parts > 1:
+        total = sum(_stream_cases(n, s, parts * workers) for s in range((part - 1) * workers, part * workers))
     bar = Progress(total, progress)
     start = time.monotonic()
+    streams, first_stream = workers * parts, (part - 1) * workers  # a sharded live campaign's streams
     workers = max(1, min(workers, total or 1))
     result = Result(source="replay" if items is not None else "generative", versions=versions)
 
@@ -706,9 +769,14 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                 if items is not None:
                     _replay(port, oracle, result, items, range(len(items)), mode=mode, keep_going=keep_going,
                             tick=tick, should_stop=lambda: False, versions=versions, seed=seed)
-                else:
+                elif parts == 1:
                     _generative(port, oracle, result, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
                                 database=database, tick=tick, should_stop=lambda: False, versions=versions)
+                else:  # part K of a sharded campaign on one worker: its first stream (its only one with cases)
+                    _generative(port, oracle, result, kinds=kinds, n=_stream_cases(n, first_stream, streams),
+                                seed=seed * 1000 + first_stream, mode=mode,
+                                keep_going=keep_going, database=database, tick=tick, should_stop=lambda: False,
+                                versions=versions)
         except KeyboardInterrupt:
             result.interrupted = True
     else:
@@ -717,7 +785,7 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
         stop = ctx.Event()
         _SHARED.update(port=port, oracle=oracle, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
                        database=database, versions=versions, replay=items, workers=workers, counter=counter,
-                       stop=stop)
+                       stop=stop, first_stream=first_stream, streams=streams if parts > 1 else workers)
         try:
             with ctx.Pool(workers, initializer=_ignore_sigint) as pool:
                 pending = pool.map_async(_worker, range(workers))

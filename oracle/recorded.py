@@ -117,6 +117,19 @@ def _versions(v) -> Versions:
     return Versions(str(v.get("acconform", "")), str(v.get("ace", "")), str(v.get("runtime", "")))
 
 
+@dataclass(frozen=True, slots=True)
+class RecordedText:
+    """A record's scene and outcome as the JSON text `record` wrote (what the harness writes for
+    them), not parsed: a replay through an implementation process sends the scene as it is and
+    compares the answer with the outcome's text first (acconform.protocol, `run_text`)."""
+
+    scene: str
+    outcome: str
+
+
+_OUTCOME = ',"outcome":'
+
+
 @dataclass(frozen=True, slots=True, eq=False)
 class Entry:
     """One corpus record, not parsed yet: where it is ("SHARD line N"), its kind (from the
@@ -133,6 +146,19 @@ class Entry:
 
     def doc(self) -> dict:
         return record_doc(self.line, self.where)
+
+    def text(self) -> RecordedText | None:
+        """Its scene's and outcome's text, cut from the line as CorpusWriter lays it out (versions,
+        scene, outcome); None for a line laid out otherwise."""
+        line = self.line
+        head = _HEAD.match(line)
+        end = len(line)
+        while end and line[end - 1] in " \t\r\n":  # (not rstrip(): that copies the line)
+            end -= 1
+        cut = line.rfind(_OUTCOME, 0, end)
+        if head is None or cut < head.end() or line[end - 1] != "}":
+            return None
+        return RecordedText(line[head.end():cut], line[cut + len(_OUTCOME):end - 1])
 
     @property
     def key(self) -> str:
@@ -156,6 +182,10 @@ class Scenes(Sequence):
         if isinstance(i, slice):
             return Scenes(self.oracle, self.entries[i])
         return self.oracle._hand_out(self.entries[i])
+
+    def text(self, i: int) -> RecordedText | None:
+        """The i-th record's scene and outcome as written, unparsed (None: a line laid out otherwise)."""
+        return self.entries[i].text()
 
     def __iter__(self):
         for e in self.entries:

@@ -19,8 +19,8 @@ from acconform.oracle.recorded import shards
 from acconform.outcome import Outcome
 from acconform.port.run import run_scene
 
-# commands that run no scene and compare with no ACE (runtime-diff reads both runtimes' corpora)
-NO_RUNTIME = {"validate", "show", "schema", "runtime-diff"}
+# commands that run no scene and compare with no ACE (runtime-diff reads both runtimes' corpora; merge joins summaries)
+NO_RUNTIME = {"validate", "show", "schema", "runtime-diff", "merge"}
 
 
 def _subparsers():

@@ -41,6 +41,9 @@ def add_arguments(p) -> None:
     p.add_argument("--corpus", default=None, metavar="DIR", help="recorded corpus to replay when no ACE is configured "
                    "(default: the committed corpus of --runtime)")
     impl_arguments(p)
+    p.add_argument("--shard", default=None, metavar="K/N", help="run part K of N disjoint parts of the campaign (a "
+                   "replay's records, or a live campaign's seeds as N x workers streams); `acconform merge` joins "
+                   "the parts' --json summaries and --failures directories")
     p.add_argument("--json", default=None, metavar="FILE", help="write a JSON summary (cases, differences by field and kind, seed, versions, timings)")
     p.add_argument("--junit", default=None, metavar="FILE", help="write JUnit XML: one testcase per class of difference")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
@@ -57,6 +60,9 @@ def run(args) -> int:
     from ..strategies import check_kinds
 
     kinds = check_kinds(args.kinds)
+    from ..runner import parse_shard
+
+    args.shard = parse_shard(args.shard) if args.shard is not None else (1, 1)
     if args.cases is not None and args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
     if args.workers < 0:
@@ -105,8 +111,18 @@ def _campaign(args, port, kinds, workers) -> int:
     database = None if args.no_database else (args.database or DEFAULT_DATABASE)
     seed = args.seed if args.seed is not None else 0
     who = f"implementation {port.name!r} ({args.impl})" if args.impl else "port"
+    part, parts = args.shard
+    if parts > 1:
+        who += f", shard {part}/{parts}"
+        # the scenes passed over before the campaign are counted once over the parts: in their part
+        presampled_all = dict(presampled)
+        presampled.clear()
+        for why, count in presampled_all.items():
+            presampled[why] = len(range(part - 1, count, parts))
     if replay is not None:
-        source = f"recorded corpus ({len(replay)} scenes" + (f", a sample by kind, seed {seed}" if args.cases else "") + ")"
+        source = f"recorded corpus ({len(range(part - 1, len(replay), parts))} of {len(replay)} scenes" \
+            if parts > 1 else f"recorded corpus ({len(replay)} scenes"
+        source += (f", a sample by kind, seed {seed}" if args.cases else "") + ")"
         _say(f"{who} vs {source}, mode {args.mode}, {runtime} arithmetic, {workers} worker{'s' if workers != 1 else ''}")
     else:
         _say(f"{who} vs {getattr(oracle, 'name', 'oracle')} oracle, mode {args.mode}, {runtime} arithmetic, "
@@ -120,7 +136,7 @@ def _campaign(args, port, kinds, workers) -> int:
     result = run_campaign(port, oracle.run, kinds=run_kinds, n=args.cases or GENERATIVE_CASES, seed=seed,
                           mode=args.mode, keep_going=args.keep_going, failures_dir=args.failures,
                           database=database, workers=workers, progress=not args.no_progress, replay=replay,
-                          stand_in=stand_in)
+                          stand_in=stand_in, shard=args.shard)
     result.skipped.update(presampled)
     result.cases += sum(presampled.values())
     if result.found and not result.interrupted:  # group the differences by their first divergence
@@ -138,6 +154,9 @@ def _campaign(args, port, kinds, workers) -> int:
     # a report whose directory went away during the run goes to a temporary file, named here
     if args.json:
         doc = summary(result, campaign)
+        if parts > 1:  # what `acconform merge` needs to join the parts
+            doc["shard"] = {"part": part, "parts": parts, "cases_asked": None if replay is not None else
+                            (args.cases or GENERATIVE_CASES), "workers": workers}
         warned = save_output(args.json, "--json", lambda p: write_json(p, doc))
         if warned:
             print(f"warning: {warned}")

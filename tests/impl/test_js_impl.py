@@ -1,7 +1,8 @@
 """A JavaScript implementation speaks the protocol: tests/impl/recorded_answers.js answers each scene
-with ACE's recorded outcome, looked up in the corpus it is given by the recorded oracle's scene key,
-and writes -0 as its bit pattern. Through `acconform check --impl` it agrees with the corpus; the
-whole corpus is the slow lane (and a step of .ci/run where node is installed)."""
+with ACE's recorded outcome, looked up in the corpus it is given (by the scene's text as sent, else by
+the recorded oracle's scene key), as recorded or built with JSON.stringify writing -0 as its bit
+pattern. Through `acconform check --impl` it agrees with the corpus; the whole corpus is the slow
+lane (and a step of .ci/run where node is installed)."""
 
 from __future__ import annotations
 
@@ -54,6 +55,16 @@ def test_the_javascript_implementation_agrees_with_ace_on_a_corpus_through_the_p
     s = json.loads((tmp_path / "s.json").read_text())
     assert s["cases"]["compared"] == 5 * PER_KIND and s["differences"]["total"] == 0, s["cases"]
     assert s["implementation"]["name"] == "recorded-answers.js"
+
+
+def test_answers_built_with_json_stringify_and_negative_zero_as_its_bit_pattern_agree_with_ace(small_corpus, tmp_path,
+                                                                                                no_ace):
+    corpus, _ = small_corpus
+    r = check("--corpus", str(corpus), "--impl", f"node {JS} --stringify {corpus}", "--json", str(tmp_path / "s.json"),
+              "--failures", str(tmp_path / "f"), cwd=tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    s = json.loads((tmp_path / "s.json").read_text())
+    assert s["cases"]["compared"] == 5 * PER_KIND and s["differences"]["total"] == 0, s["cases"]
 
 
 def test_negative_zero_written_as_json_stringify_writes_it_is_caught(small_corpus, tmp_path, no_ace):

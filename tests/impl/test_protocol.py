@@ -209,3 +209,26 @@ def test_indoor_scenes_are_the_kind_indoor_and_statics_inside_env_cells_a_featur
     assert Implementation.unsupported(impl, room_with_static()) == "feature indoor.statics"
     impl.hello["kinds"] = ["terrain"]
     assert Implementation.unsupported(impl, two_rooms()) == "kind indoor"
+
+
+@pytest.mark.parametrize("runtime", ["coreclr", "mono"])
+def test_a_recorded_scene_sent_as_its_text_is_what_the_harness_writes_for_the_scene(runtime):
+    """A replay through an implementation sends a record's scene text unread (RecordedText): the
+    committed records hold their scenes exactly as the harness writes them, so an implementation
+    receives the same request either way."""
+    from acconform.codec import dumps_compact
+    from acconform.oracle import default_corpus
+    from acconform.oracle.recorded import RecordedOracle
+    from acconform.scene import Scene
+
+    oracle = RecordedOracle(default_corpus(runtime))
+    by_shard: dict[str, list] = {}
+    for e in oracle.entries:
+        by_shard.setdefault(e.where.rsplit(" line ", 1)[0], []).append(e)
+    assert len(by_shard) >= 20
+    for entries in by_shard.values():
+        for e in entries[:: max(1, len(entries) // 8)]:
+            text = e.text()
+            assert text is not None, e.where
+            assert dumps_compact(Scene.from_json(json.loads(text.scene)).to_json()) == text.scene, e.where
+            assert json.loads(text.outcome) == e.doc()["outcome"], e.where

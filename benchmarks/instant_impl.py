@@ -1,0 +1,44 @@
+"""An implementation of acconform.protocol/1 that answers at once: ACE's recorded outcome for the
+scene, found by the scene's JSON text as the harness sends it (the text the corpus holds). For
+benchmarks/bench_runner.py --impl: it measures the harness, not an implementation.
+
+    PYTHON benchmarks/instant_impl.py CORPUS_DIR
+
+Its handshake is the built-in port's, taken from the acconform of the Python that runs it, so any
+install can be measured with it. A scene it does not hold ends it with one line (exit 3).
+"""
+
+from __future__ import annotations
+
+import gzip
+import sys
+from pathlib import Path
+
+
+def main() -> int:
+    from acconform.codec import dumps_compact
+    from acconform.protocol import handshake
+
+    out = sys.stdout.buffer
+    out.write((dumps_compact(handshake("instant", "1")) + "\n").encode())
+    out.flush()
+    answers: dict[bytes, bytes] = {}
+    unread = sorted(Path(sys.argv[1]).glob("*-[0-9][0-9][0-9][0-9].jsonl.gz"))
+    for raw in sys.stdin.buffer:
+        cut = raw.find(b',"scene":')
+        rid, scene = raw[6:raw.find(b",")], raw[cut + 9:raw.rstrip().rfind(b"}")]
+        while scene not in answers and unread:  # shards read as needed
+            for line in gzip.open(unread.pop(0)):
+                s = line.find(b',"scene":') + 9
+                o = line.rfind(b',"outcome":')
+                answers[line[s:o]] = line[o + 11:line.rstrip().rfind(b"}")]
+        if scene not in answers:
+            sys.stderr.write("instant_impl.py: no recorded answer for this scene\n")
+            return 3
+        out.write(b'{"id":' + rid + b',"outcome":' + answers[scene] + b"}\n")
+        out.flush()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
