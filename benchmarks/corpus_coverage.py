@@ -361,14 +361,16 @@ def resolve(entry: dict, root: Path | None = None) -> tuple[set[str], set[tuple[
     {"module", "function", "from", "to"} is one branch from the line starting `from` to the line
     starting `to` (the one nearest after it; "exit" leaves the function);
     {"module", "function", "from", "through"} says the lines from `from` through `through` (or the
-    function's end, "end") never run, and every branch out of them is listed."""
+    function's end, "end") never run, and every branch out of them is listed. An optional "after"
+    quotes a line before `from`, for a `from` line that occurs more than once in the function."""
     import ast
 
     root = root or _port_dir()
     src = (root / entry["module"]).read_text()
     lines = src.splitlines()
     span = _function_span(ast.parse(src), entry["function"])
-    a = _find(lines, span, entry["from"])
+    # "after": when several lines start with the `from` quote, the one nearest after the line it quotes
+    a = _find(lines, span, entry["from"], near=_find(lines, span, entry["after"]) if "after" in entry else None)
     if "to" in entry:
         b = "exit" if entry["to"] == "exit" else _find(lines, span, entry["to"], near=a)
         return {f"{entry['module']}:{a}->{b}"}, set()
