@@ -36,18 +36,24 @@ def _port_dir() -> Path:
 
 
 # `if ... trace is not None` tests only whether the port's own branch trace (port/transition/branches.py's
-# counters, the boundary log) is on: instrumentation ACE has no counterpart of, on in `acconform coverage`
-# and the fast sample's build, off in a replay. Their arc not taken is not reported missing (coverage.py's
-# partial_branches): they are measured as lines.
+# counters, the boundary log, port/tracing.py's recorder) is on: instrumentation ACE has no counterpart
+# of, on in `acconform coverage`, `acconform explain` and the fast sample's build, off in a replay. Such a
+# block (every one holds trace calls only, and none has an else) is not measured (coverage.py's
+# exclude_lines), nor are the modules that are instrumentation through and through (INSTRUMENTATION).
 TRACE_ONLY = r"\bif\b.*\btrace is not None\b"
+# port/tracing.py (a traced run's snapshots), port/anchors.py (the anchor registry's decorators, run at
+# import) and port/transition/branches.py (the named branches and the Trace counter): no ACE code.
+INSTRUMENTATION = ("tracing.py", "anchors.py", "transition/branches.py")
 
 
 def _coverage(data_file: str):
-    """coverage.py measuring branches of port/ alone, the trace switch not counted as a branch."""
+    """coverage.py measuring branches of port/ alone, without the port's own instrumentation."""
     import coverage
 
-    cov = coverage.Coverage(branch=True, source=[str(_port_dir())], data_file=data_file, config_file=False)
-    cov.set_option("report:partial_branches", [TRACE_ONLY])
+    root = _port_dir()
+    cov = coverage.Coverage(branch=True, source=[str(root)], data_file=data_file, config_file=False,
+                            omit=[str(root / m) for m in INSTRUMENTATION])
+    cov.set_option("report:exclude_lines", [TRACE_ONLY])
     return cov
 
 
@@ -180,6 +186,8 @@ def analyse(cov) -> tuple[list[dict], list[str]]:
         if root not in p.parents:
             continue
         name = str(p.relative_to(root))
+        if name in INSTRUMENTATION:
+            continue
         a = cov._analyze(path)
         n = a.numbers
         rows.append({"module": name, "statements": n.n_statements, "missed_statements": n.n_missing,
@@ -190,7 +198,7 @@ def analyse(cov) -> tuple[list[dict], list[str]]:
     # modules never imported by the replay still count: every statement and branch missed
     for p in sorted(root.rglob("*.py")):
         name = str(p.relative_to(root))
-        if not any(r["module"] == name for r in rows):
+        if name not in INSTRUMENTATION and not any(r["module"] == name for r in rows):
             a = cov._analyze(str(p))
             n = a.numbers
             rows.append({"module": name, "statements": n.n_statements, "missed_statements": n.n_statements,
@@ -353,14 +361,16 @@ def resolve(entry: dict, root: Path | None = None) -> tuple[set[str], set[tuple[
     {"module", "function", "from", "to"} is one branch from the line starting `from` to the line
     starting `to` (the one nearest after it; "exit" leaves the function);
     {"module", "function", "from", "through"} says the lines from `from` through `through` (or the
-    function's end, "end") never run, and every branch out of them is listed."""
+    function's end, "end") never run, and every branch out of them is listed. An optional "after"
+    quotes a line before `from`, for a `from` line that occurs more than once in the function."""
     import ast
 
     root = root or _port_dir()
     src = (root / entry["module"]).read_text()
     lines = src.splitlines()
     span = _function_span(ast.parse(src), entry["function"])
-    a = _find(lines, span, entry["from"])
+    # "after": when several lines start with the `from` quote, the one nearest after the line it quotes
+    a = _find(lines, span, entry["from"], near=_find(lines, span, entry["after"]) if "after" in entry else None)
     if "to" in entry:
         b = "exit" if entry["to"] == "exit" else _find(lines, span, entry["to"], near=a)
         return {f"{entry['module']}:{a}->{b}"}, set()
@@ -486,10 +496,12 @@ def main(argv=None) -> int:
         oracle = RecordedOracle(corpus)
         every = sorted(oracle.index())
         if a.n is not None:
-            # the candidates: a stratified sample, the fast lane's sample, the records already traced
-            # (--cache) and every record of the --with shards
+            # the candidates: a stratified sample, the fast lane's sample, the kernel written before,
+            # the records already traced (--cache) and every record of the --with shards
             sample = corpus / "fast-sample.json"
             cached = set(load_arcs(a.cache, a.runtime)[1]) if a.cache else set()
+            if kfile.exists():
+                cached |= set(json.loads(kfile.read_text())["keys"])
             shards = {str(Path(w).resolve()) for w in a.with_shards}
             every = sorted({e.key for e in oracle.select(n=a.n, seed=a.seed)}
                            | ({r[0] for r in json.loads(sample.read_text())["records"]} if sample.exists() else set())

@@ -41,6 +41,14 @@ def test_an_entry_is_found_by_its_function_and_quoted_source_not_by_line_numbers
     assert corpus_coverage.resolve(entry, tmp_path) == ({"m.py:5->6"}, set())
     region = {"module": "m.py", "function": "f", "from": "return 1", "through": "end"}
     assert corpus_coverage.resolve(region, tmp_path) == (set(), {("m.py", 6), ("m.py", 7)})
+    # a `from` line that occurs twice is told apart by the line it follows ("after")
+    (tmp_path / "m.py").write_text("def f(x, y):\n    a = x\n    if a:\n        return 1\n    a = y\n    if a:\n"
+                                   "        return 2\n    return 3\n")
+    twice = {"module": "m.py", "function": "f", "from": "if a:", "to": "return"}
+    with pytest.raises(corpus_coverage.Unresolved, match="2 lines start 'if a:'"):
+        corpus_coverage.resolve(twice, tmp_path)
+    assert corpus_coverage.resolve({**twice, "after": "a = y"}, tmp_path) == ({"m.py:6->7"}, set())
+    (tmp_path / "m.py").write_text("def f(x):\n    if x:\n        return 1\n    return 2\n")
     with pytest.raises(corpus_coverage.Unresolved, match="no line starting 'if y:'"):
         corpus_coverage.resolve({**entry, "from": "if y:"}, tmp_path)
     with pytest.raises(corpus_coverage.Unresolved, match="no function g"):
