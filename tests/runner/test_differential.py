@@ -23,7 +23,6 @@ import pytest
 from acconform.numerics import RUNTIMES, runtime_named
 from acconform.oracle import get_oracle, live_configured
 from acconform.port.run import run_scene
-from acconform.port.transition.branches import REACHED_BY_TICK_SCENES
 from corpus_sample import SAMPLE_NAME, load_sample
 
 SHARDS = 4
@@ -109,20 +108,11 @@ def test_the_sample_spans_every_kind_and_every_branch_the_corpus_reaches(runtime
 
 
 # Branches the generated corpus does not reach (hand-made scenes in tests/port reach them), and why.
+# (The tick corpus, the tick variants and the house ticks reach every tick branch, the blocked
+# slide, the parallel cliff planes and the stationary falls, which were listed here before.)
 CORPUS_MISSES = {
-    "adjust_offset:slide_blocked": "a sliding normal and a crease too small to move along: not drawn yet",
-    "cliff_slide:parallel_planes": "contact and last-known planes parallel during a cliff slide: not drawn yet",
     "land_cell:entirely_water_block": "strategies keep water smaller than a landblock (a whole-water block collides all)",
-    "validate_transition:stationary_fall_2": "needs FramesStationaryFall already 1, which a scene cannot seed",
-    "validate_transition:stationary_fall_3": "needs FramesStationaryFall already 2, which a scene cannot seed",
 }
-# the tick's branches the example tick scenes reach (tests/port/test_tick_scenes.py): the corpus holds no tick
-# scene yet (issue 19's tick corpus); handle_all_collisions' bounce is reached by its placements already
-CORPUS_MISSES.update({
-    name: "a tick branch: no tick scene in the corpus yet (the example tick scenes reach it)"
-    for name in REACHED_BY_TICK_SCENES
-    if name != "handle_all_collisions:elastic_bounce"
-})
 
 
 @pytest.mark.slow
