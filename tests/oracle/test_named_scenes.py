@@ -25,6 +25,7 @@ from acconform.flags import PhysicsState, TransientState
 from acconform.outcome import Outcome
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from oracle.live_answers import record_outcomes, recorded_outcomes  # noqa: E402
 from oracle.named_scenes import DERETH, NAMED, build, load  # noqa: E402
 
 DATA = Path(__file__).resolve().parent / "data" / "ace_named_outcomes.json"
@@ -40,12 +41,7 @@ DERETH_REQUIRED = ("walk_up_48_degree_slope", "sled_9_degree_slope", "sled_11_de
 
 
 def recorded(runtime: str) -> dict[str, Outcome]:
-    if not DATA.exists():
-        pytest.fail(f"no recorded ACE answers at {DATA}: record them with the live oracle (see the module note)")
-    doc = json.loads(DATA.read_text())
-    if runtime not in doc["outcomes"]:
-        pytest.fail(f"{DATA} has no answers from ACE on {runtime}: record them (see the module note)")
-    return {name: Outcome.from_json(o) for name, o in doc["outcomes"][runtime].items()}
+    return recorded_outcomes(DATA, runtime)
 
 
 # ---------------------------------------------------------------- the list and the files
@@ -242,6 +238,4 @@ def test_live_ace_answers_each_named_scene_as_recorded(live, name):
 if __name__ == "__main__":
     if sys.argv[1:] != ["--record"]:
         sys.exit(__doc__)
-    from live_answers import record_outcomes  # beside this file: the directory a script runs from
-
     record_outcomes(SCENES, DATA, "named")

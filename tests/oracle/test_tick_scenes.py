@@ -26,6 +26,9 @@ from acconform.flags import TransientState
 from acconform.outcome import FORMAT, Outcome
 from acconform.scene import Frame, Position, Scene, TickStep
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from oracle.live_answers import record_outcomes, recorded_outcomes  # noqa: E402
+
 ROOT = Path(__file__).resolve().parents[2]
 DATA = Path(__file__).resolve().parent / "data" / "ace_tick_outcomes.json"
 RUNTIMES = ("mono", "coreclr")
@@ -34,12 +37,7 @@ ON_GROUND = TransientState.Contact | TransientState.OnWalkable
 
 
 def recorded(runtime: str) -> dict[str, Outcome]:
-    if not DATA.exists():
-        pytest.fail(f"no recorded ACE answers at {DATA}: record them with the live oracle (see the module note)")
-    doc = json.loads(DATA.read_text())
-    if runtime not in doc["outcomes"]:
-        pytest.fail(f"{DATA} has no answers from ACE on {runtime}: record them (see the module note)")
-    return {name: Outcome.from_json(o) for name, o in doc["outcomes"][runtime].items()}
+    return recorded_outcomes(DATA, runtime)
 
 
 # ---------------------------------------------------------------- the recorded answers
@@ -221,6 +219,4 @@ def test_live_an_exception_in_a_tick_is_that_ticks_error_and_ends_the_scene(live
 if __name__ == "__main__":
     if sys.argv[1:] != ["--record"]:
         sys.exit(__doc__)
-    from live_answers import record_outcomes  # beside this file: the directory a script runs from
-
     record_outcomes(SCENES, DATA, "tick")
