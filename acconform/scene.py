@@ -457,13 +457,7 @@ class EnvCell:
             r["id"].fail(f"an EnvCell id is 0xXXYY{ENV_CELL_FIRST:04X} to 0xXXYY{ENV_CELL_LAST:04X}, got {write_id(cell_id)}")
         frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
         portals = tuple(CellPortalRec.from_json(p) for p in r["portals"].list(max_count=0xFF)) if r.given("portals") else ()
-        visible = ()
-        if r.given("visible_cells"):
-            visible = tuple(_low_word(v) for v in r["visible_cells"].list(max_count=0xFFFF))
-            for i, v in enumerate(visible):
-                if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
-                    r["visible_cells"][i].fail(f"a visible cell is an EnvCell's low word "
-                                               f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
+        visible = _env_cell_words(r["visible_cells"], "a visible cell") if r.given("visible_cells") else ()
         return EnvCell(cell_id, frame, r["environment"].id_(), r["cell_structure"].int_(0, 0xFFFF), portals, visible,
                        r["seen_outside"].bool_() if r.given("seen_outside") else False)
 
@@ -474,6 +468,15 @@ def _low_word(r: Reader) -> int:
     if v > 0xFFFF:
         r.fail(f"expected a cell's low word like '0x0101', got {r.value!r}")
     return v
+
+
+def _env_cell_words(r: Reader, what: str) -> tuple[int, ...]:
+    """A list of EnvCells' low words (visible cells, a building portal's stab list); `what` names one."""
+    words = tuple(_low_word(v) for v in r.list(max_count=0xFFFF))
+    for i, v in enumerate(words):
+        if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
+            r[i].fail(f"{what} is an EnvCell's low word (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
+    return words
 
 
 @dataclass(frozen=True, slots=True)
@@ -497,13 +500,7 @@ class BuildingPortalRec:
             r["other_cell"].fail(f"a building's portal leads into one of its EnvCells "
                                  f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{other:04X}")
         flags = r["flags"].int_(0, PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT) if r.given("flags") else 0
-        stabs = ()
-        if r.given("stab_list"):
-            stabs = tuple(_low_word(v) for v in r["stab_list"].list(max_count=0xFFFF))
-            for i, v in enumerate(stabs):
-                if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
-                    r["stab_list"][i].fail(f"a stab is an EnvCell's low word "
-                                           f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
+        stabs = _env_cell_words(r["stab_list"], "a stab") if r.given("stab_list") else ()
         return BuildingPortalRec(other, r["other_portal"].int_(0, 0xFFFF), flags, stabs)
 
 
