@@ -38,7 +38,12 @@ def load_sample(runtime: str) -> dict:
     return json.loads(sample_file(runtime).read_text())
 
 
-def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
+BORDERS = {"boundary:cell_border", "boundary:landblock_border"}
+
+
+def _fires(corpus_dir, wanted=lambda where: True) -> dict[str, tuple[str, frozenset]]:
+    """{scene key: (kind, the branches its port run fires)} for the corpus's records whose
+    "SHARD line N" `wanted` accepts, each run computing as the corpus's runtime does."""
     from acconform.numerics import runtime_named
     from acconform.oracle.recorded import RecordedOracle, scene_kind
     from acconform.port.run import run_scene
@@ -48,11 +53,24 @@ def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
     oracle = RecordedOracle(corpus_dir)
     runtime = runtime_named(oracle.versions.runtime)
     fires: dict[str, tuple[str, frozenset]] = {}
-    for key in sorted(oracle._lines):
+    for key, (where, _kind, _rt) in sorted(oracle._where.items()):
+        if not wanted(where):
+            continue
         scene = Scene.from_json(json.loads(oracle._lines[key])["scene"])
         trace: Counter = Counter()
         run_scene(scene, trace=trace, runtime=runtime)
         fires[key] = (scene_kind(scene), frozenset(trace))
+    return fires
+
+
+def _boundary_records(fires) -> int:
+    # records whose port run hits an exact boundary other than a cell or landblock border
+    # (branches.BOUNDARIES; `acconform record --boundaries` keeps only those)
+    return sum(any(b.startswith("boundary:") and b not in BORDERS for b in branches) for _, branches in fires.values())
+
+
+def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
+    fires = _fires(corpus_dir)
     by_branch: dict[str, list[str]] = defaultdict(list)
     for key, (_, branches) in fires.items():
         for b in branches:
@@ -73,14 +91,10 @@ def build(corpus_dir, size: int = SIZE, per_branch: int = PER_BRANCH) -> dict:
             picked[by_kind[k].pop(0)] = None
         i += 1
     names = sorted(by_branch)
-    borders = {"boundary:cell_border", "boundary:landblock_border"}
     return {
         "made_by": "python tests/runner/corpus_sample.py",
         "corpus_records": len(fires),
-        # records whose port run hits an exact boundary other than a cell or landblock border
-        # (branches.BOUNDARIES; `acconform record --boundaries` keeps only those)
-        "boundary_records": sum(any(b.startswith("boundary:") and b not in borders for b in branches)
-                                for _, branches in fires.values()),
+        "boundary_records": _boundary_records(fires),
         "corpus_branches": {b: len(by_branch[b]) for b in names},
         "branches": names,
         "records": [[key, fires[key][0], sorted(names.index(b) for b in fires[key][1])] for key in picked],
@@ -93,23 +107,8 @@ def add(doc: dict, corpus_dir, shard_names, per_branch: int = PER_BRANCH, per_ki
     branch fired by fewer than `per_branch` sample records gets new ones (rarest first), and each new
     kind gets up to `per_kind` more, spread as `build` spreads them. What a new recording needs,
     without the hour a rebuild takes; a rebuild (`build`) picks afresh from the whole corpus."""
-    from acconform.numerics import runtime_named
-    from acconform.oracle.recorded import RecordedOracle, scene_kind
-    from acconform.port.run import run_scene
-    from acconform.scene import Scene
-
-    warnings.simplefilter("ignore", RuntimeWarning)
-    oracle = RecordedOracle(corpus_dir)
-    runtime = runtime_named(oracle.versions.runtime)
     names = set(shard_names)
-    fires: dict[str, tuple[str, frozenset]] = {}
-    for key, (where, _kind, _rt) in sorted(oracle._where.items()):
-        if Path(where.rsplit(" line ", 1)[0]).name.split(".")[0] not in names:
-            continue
-        scene = Scene.from_json(json.loads(oracle._lines[key])["scene"])
-        trace: Counter = Counter()
-        run_scene(scene, trace=trace, runtime=runtime)
-        fires[key] = (scene_kind(scene), frozenset(trace))
+    fires = _fires(corpus_dir, lambda where: Path(where.rsplit(" line ", 1)[0]).name.split(".")[0] in names)
     old_names = doc["branches"]
     records = {key: (kind, frozenset(old_names[i] for i in idx)) for key, kind, idx in doc["records"]}
     if records.keys() & fires.keys():
@@ -137,13 +136,11 @@ def add(doc: dict, corpus_dir, shard_names, per_branch: int = PER_BRANCH, per_ki
         for key in keys[: max(0, per_kind - have)]:
             records[key] = fires[key]
     branches = sorted(counts)
-    borders = {"boundary:cell_border", "boundary:landblock_border"}
     return {
         **doc,
         "made_by": f"{doc['made_by']}, then --add {' '.join(sorted(names))}",
         "corpus_records": doc["corpus_records"] + len(fires),
-        "boundary_records": doc["boundary_records"] + sum(
-            any(b.startswith("boundary:") and b not in borders for b in br) for _, br in fires.values()),
+        "boundary_records": doc["boundary_records"] + _boundary_records(fires),
         "corpus_branches": {b: counts[b] for b in branches},
         "branches": branches,
         "records": [[key, kind, sorted(branches.index(b) for b in br)] for key, (kind, br) in records.items()],
