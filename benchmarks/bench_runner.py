@@ -4,7 +4,8 @@
     python benchmarks/bench_runner.py --impl CMD [--corpus DIR] [--workers 2] [LABEL=PYTHON ...]
 
 Oracle "live" is the real thing: ACE through pythonnet (ACE_ASSEMBLY or --ace), one runtime per
-worker. "port" runs the port against itself -- it isolates the harness's own cost; "recorded"
+worker. Against ACE, live or recorded, the port computes as the runtime ACE runs (ran) on, as `check`
+does (`acconform.oracle.port_runtime`). "port" runs the port against itself -- it isolates the harness's own cost; "recorded"
 replays the corpus (the oracle is then a lookup).
 Prints cases/s for the whole campaign and the split: generation (Hypothesis drawing scenes,
 measured separately), port, oracle, comparison.
@@ -97,19 +98,27 @@ def main() -> None:
     list(sample_scenes(kinds, min(a.n, 500), 1))
     gen_rate = min(a.n, 500) / (time.perf_counter() - t)
 
-    if a.oracle == "recorded":
-        from acconform.oracle import get_oracle
+    from acconform.impl import BuiltinPort
+    from acconform.oracle import port_runtime
 
-        oracle = get_oracle()
+    if a.oracle == "recorded":
+        from acconform.oracle import default_corpus
+        from acconform.oracle.recorded import RecordedOracle
+
+        oracle = RecordedOracle(default_corpus())
         replay = list(oracle.scenes())[: a.n]
-        r = run_campaign(run_scene, oracle.run, replay=replay, failures_dir=None, workers=a.workers, keep_going=True)
+        # the port computes as the ACE it is compared with, as `check` does
+        port = BuiltinPort("exact", port_runtime(oracle))
+        r = run_campaign(port, oracle.run, replay=replay, failures_dir=None, workers=a.workers, keep_going=True)
     elif a.oracle == "live":
         from acconform.oracle import PerProcessOracle
 
         oracle = PerProcessOracle(a.ace)
-        r = run_campaign(run_scene, oracle.run, kinds=kinds, n=a.n, seed=0, failures_dir=None, database=None,
+        port = BuiltinPort("exact", port_runtime(oracle))
+        r = run_campaign(port, oracle.run, kinds=kinds, n=a.n, seed=0, failures_dir=None, database=None,
                          workers=a.workers, keep_going=True)
     else:
+        port = BuiltinPort("exact")
         r = run_campaign(run_scene, run_scene, kinds=kinds, n=a.n, seed=0, failures_dir=None, database=None,
                          workers=a.workers, keep_going=True)
     rate = r.cases / r.elapsed
@@ -117,7 +126,7 @@ def main() -> None:
     t = r.timings
     gen = busy - sum(t.values()) if r.source == "generative" else 0.0
     print(f"{r.cases} cases in {r.elapsed:.1f} s on {a.workers} workers: {rate:.0f} cases/s end to end "
-          f"(oracle={a.oracle}, {len(r.found)} differences)")
+          f"(oracle={a.oracle}, port computing as {port.runtime}, {len(r.found)} differences)")
     print(f"  generation alone: {gen_rate:.0f} scenes/s on one core")
     for name, secs in (("generation+hypothesis", gen), ("port", t["port"]), ("oracle", t["oracle"]),
                        ("comparison", t["compare"])):

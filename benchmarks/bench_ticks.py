@@ -67,7 +67,7 @@ def main(argv=None) -> int:
     a = p.parse_args(argv)
 
     from acconform.case import load_document
-    from acconform.oracle import live_configured
+    from acconform.oracle import live_configured, port_runtime
     from acconform.port.run import run_scene
 
     oracle = None
@@ -76,7 +76,7 @@ def main(argv=None) -> int:
         from acconform.oracle.live import LiveOracle
 
         oracle = LiveOracle()
-        runtime = oracle.location.runtime
+        runtime = port_runtime(oracle)
     print(f"tick scene vs N single transitions over its path; medians of {a.r}; port as {runtime}"
           + (f"; ACE live on {runtime}" if oracle else "; no ACE configured (port only)"))
     print(f"{'scene':40} {'N':>3} {'sub':>4} {'port ticks ms':>13} {'singles ms':>10} {'ratio':>6}"

@@ -80,7 +80,8 @@ class PerProcessOracle:
     def __init__(self, ace=None, runtime: str | None = None):
         from .config import resolve
 
-        if resolve(ace, runtime) is None:
+        self.location = resolve(ace, runtime)  # the build and the runtime it runs on, checked on disk
+        if self.location is None:
             from .config import HOW_TO_SET
 
             raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {HOW_TO_SET}")
@@ -105,6 +106,19 @@ class PerProcessOracle:
         return self._live().run(scene)
 
 
+def port_runtime(oracle, runtime: str | None = None) -> str:
+    """The runtime key ("mono" or "coreclr") whose arithmetic the port computes to be compared with
+    `oracle`: a live oracle's, the runtime its build runs on (read from the build on disk: a
+    PerProcessOracle's parent loads no runtime); a recorded one's, the runtime its records come
+    from (`runtime`, --runtime, picks among a corpus's). `check` and the benchmarks ask here."""
+    location = getattr(oracle, "location", None)  # LiveOracle and PerProcessOracle
+    if location is not None:
+        return location.runtime
+    from ..numerics import runtime_named
+
+    return runtime_named(runtime or oracle.versions.runtime)
+
+
 def require_live(ace=None, runtime: str | None = None):
     """The live oracle, or OracleUnavailable saying that no ACE is configured (commands exit 2)."""
     from .config import HOW_TO_SET
@@ -116,5 +130,5 @@ def require_live(ace=None, runtime: str | None = None):
     return LiveOracle(ace, runtime)
 
 
-__all__ = ["Oracle", "PerProcessOracle", "get_oracle", "require_live", "live_configured", "CORPUS_ROOT",
+__all__ = ["Oracle", "PerProcessOracle", "get_oracle", "port_runtime", "require_live", "live_configured", "CORPUS_ROOT",
            "DEFAULT_RUNTIME", "default_corpus"]

@@ -93,6 +93,7 @@ def _campaign(args, port, kinds, workers) -> int:
     from ..errors import AcconformError
     from ..impl import BuiltinPort
     from ..report import Campaign, junit, summary, write_json, write_junit
+    from ..oracle import port_runtime
     from ..runner import DEFAULT_DATABASE, run_campaign
 
     impl_info = {"name": port.name, "version": (port.hello or {}).get("version", ""), "command": args.impl or ""}
@@ -107,7 +108,7 @@ def _campaign(args, port, kinds, workers) -> int:
                                  f"({','.join(kinds)}); its handshake lists {','.join(port.kinds)}")
     presampled: Counter = Counter()  # corpus scenes passed over before the campaign (never sent)
     oracle, replay, bad = _oracle(args, workers, kinds, run_kinds, port, presampled)
-    port.runtime = runtime = _port_runtime(args, oracle)
+    port.runtime = runtime = port_runtime(oracle, args.runtime)
     database = None if args.no_database else (args.database or DEFAULT_DATABASE)
     seed = args.seed if args.seed is not None else 0
     who = f"implementation {port.name!r} ({args.impl})" if args.impl else "port"
@@ -233,18 +234,6 @@ def shrink_label(shrink) -> str:
     if shrink.against == "port":
         return f"shrunk against the built-in port standing in for ACE{sizes}"
     return shrink.note or "not shrunk"
-
-
-def _port_runtime(args, oracle) -> str:
-    """The runtime whose arithmetic the port computes: the live oracle's (from the build, or
-    --runtime), else the one the replayed records come from (--runtime picks them)."""
-    from ..numerics import runtime_named
-
-    if getattr(oracle, "name", "") == "live":
-        from ..oracle.config import resolve
-
-        return resolve(args.ace, args.runtime).runtime
-    return runtime_named(args.runtime or oracle.versions.runtime)
 
 
 def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
