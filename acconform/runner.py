@@ -9,10 +9,10 @@ Two kinds of campaign:
 - generative (a live oracle, or any callable pair): Hypothesis draws scenes from
   acconform.strategies.scenes(kinds); a difference fails the example, Hypothesis shrinks it to a
   minimal scene, and the minimal scene is written as a case file. The campaign's database (a
-  directory, `SavedFailures`) remembers each shrunk failing scene, so the next run of the same
-  kinds and mode tries them first, as explicit examples; one that no longer fails is forgotten.
-  Hypothesis' own example database is not used: with one, Hypothesis keeps a Pareto front of every
-  target() score, which cost 40-50% of a live campaign's time.
+  Hypothesis example database: a directory, or one shared through GitHub Actions artifacts;
+  `SavedFailures`) remembers each shrunk failing scene, so the next run of the same kinds and
+  mode -- on this machine or, sharing the database, another shard's -- tries them first, as
+  explicit examples; one that no longer fails is forgotten.
 - replay (a recorded oracle): Hypothesis cannot ask a recording about scenes it never saw, so
   the recorded scenes are replayed as they are. The first difference of each kind is then shrunk
   (acconform.shrink) with a *stand-in* for ACE -- the built-in port, computing as the recorded
@@ -62,42 +62,69 @@ Backend = Callable[[Scene], Outcome]
 DEFAULT_DATABASE = Path(".hypothesis") / "acconform"
 
 
+def example_database(spec):
+    """The Hypothesis example database (hypothesis.database) a live campaign keeps its failing scenes
+    in, named by `spec` (--database): an ExampleDatabase as it is; ``github:OWNER/REPO[/ARTIFACT]``
+    the scenes a GitHub Actions artifact holds (the latest of that name, default Hypothesis'
+    "hypothesis-example-db"; read-only, a GitHubArtifactDatabase; GITHUB_TOKEN for a private
+    repository) beside DEFAULT_DATABASE, the directory this run keeps its own in; anything else a
+    directory (DirectoryBasedExampleDatabase)."""
+    from hypothesis.database import (DirectoryBasedExampleDatabase, ExampleDatabase, GitHubArtifactDatabase,
+                                     MultiplexedDatabase, ReadOnlyDatabase)
+
+    if isinstance(spec, ExampleDatabase):
+        return spec
+    text = os.fspath(spec)
+    if text.startswith("github:"):
+        owner, _, rest = text[len("github:"):].partition("/")
+        repo, _, artifact = rest.partition("/")
+        if not owner or not repo or "/" in artifact:
+            raise AcconformError(f"--database {text!r}: expected github:OWNER/REPO or github:OWNER/REPO/ARTIFACT")
+        shared = GitHubArtifactDatabase(owner, repo, *([artifact] if artifact else []))
+        return MultiplexedDatabase(DirectoryBasedExampleDatabase(DEFAULT_DATABASE), ReadOnlyDatabase(shared))
+    return DirectoryBasedExampleDatabase(text)
+
+
+def failure_key(kinds, mode: str) -> bytes:
+    """The key a campaign's failing scenes are kept under in the database: one per campaign shape
+    (kinds and mode), so runs of other kinds or modes do not mix."""
+    return f"acconform:{','.join(kinds)}:{mode}".encode()
+
+
 class SavedFailures:
-    """Failing scenes kept across campaigns: one JSON file per scene under DIR/<campaign shape>/.
+    """Failing scenes kept across campaigns, and shared between shards and machines, in a Hypothesis
+    example database (`example_database`): under the campaign's `failure_key`, one value per
+    shrunk scene, its JSON.
 
-    Each file is written whole then renamed, so workers sharing the directory never read half a
-    scene; a file that does not read as a scene (another version, a partial copy) is skipped."""
+    The values are scenes, not Hypothesis' choice sequences: the campaign hands them to Hypothesis
+    as explicit examples, so they replay whatever the strategies draw today, and Hypothesis itself
+    runs without a database (with one it keeps a Pareto front of every target() score, which cost
+    40-50% of a live campaign's time). A directory database writes each value whole then renames it,
+    so workers and shards sharing one never read half a scene; a value that does not read as a
+    scene (another version) is skipped."""
 
-    def __init__(self, root, shape: str):
-        self.dir = Path(root) / hashlib.sha256(shape.encode()).hexdigest()[:16]
-
-    @staticmethod
-    def _name(scene: Scene) -> str:
-        return hashlib.sha256(scene.dumps().encode()).hexdigest()[:24] + ".json"
+    def __init__(self, database, key: bytes):
+        self.db = example_database(database)
+        self.key = key
 
     def scenes(self) -> list[Scene]:
         found = []
-        for path in sorted(self.dir.glob("*.json")) if self.dir.is_dir() else ():
+        for value in sorted(self.db.fetch(self.key)):  # sorted: the same order whoever wrote them
             try:
-                found.append(Scene.loads(path.read_text()))
-            except (OSError, ValueError, AcconformError):
+                found.append(Scene.loads(value.decode()))
+            except (UnicodeDecodeError, ValueError, AcconformError):
                 continue
         return found
 
     def save(self, scene: Scene) -> None:
-        try:
-            self.dir.mkdir(parents=True, exist_ok=True)
-            tmp = self.dir / f".{os.getpid()}.tmp"
-            tmp.write_text(scene.dumps())
-            tmp.replace(self.dir / self._name(scene))
-        except OSError as e:  # the difference is still reported and written as a case file
-            print(f"acconform: cannot keep the failing scene in {self.dir}: {e.strerror or e}", file=sys.stderr)
+        value = scene.dumps().encode()
+        self.db.save(self.key, value)
+        if value not in set(self.db.fetch(self.key)):  # Hypothesis' databases drop a failed write silently
+            # the difference is still reported and written as a case file
+            print(f"acconform: cannot keep the failing scene in {self.db!r}", file=sys.stderr)
 
     def forget(self, scene: Scene) -> None:
-        try:
-            (self.dir / self._name(scene)).unlink(missing_ok=True)
-        except OSError:
-            pass
+        self.db.delete(self.key, scene.dumps().encode())
 
 
 @dataclass(slots=True)
@@ -422,8 +449,7 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
     from .strategies.determinism import pinned_constants
 
     kinds = check_kinds(kinds)
-    # one store per campaign shape, so runs of other kinds or modes do not mix
-    saved = SavedFailures(database, f"acconform:{','.join(kinds)}:{mode}") if database else None
+    saved = SavedFailures(database, failure_key(kinds, mode)) if database else None
     known: set[tuple[str, ...]] = set()
     if hasattr(port, "trace_boundaries"):  # the built-in port: aim the search at exact boundaries
         port.trace_boundaries = True

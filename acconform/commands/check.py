@@ -30,7 +30,10 @@ def add_arguments(p) -> None:
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")
     p.add_argument("--failures", default="failures", metavar="DIR", help="where case files go (default ./failures)")
-    p.add_argument("--database", default=None, metavar="DIR", help="where failing scenes are kept and retried first next run (default .hypothesis/acconform; live only)")
+    p.add_argument("--database", default=None, metavar="DIR", help="the Hypothesis example database where a live campaign "
+                   "keeps its failing scenes and retries them first next run, shared by the shards and runs that "
+                   "name it: a directory (default .hypothesis/acconform), or github:OWNER/REPO[/ARTIFACT], the ones "
+                   "a GitHub Actions artifact holds (read-only) beside the default directory")
     p.add_argument("--no-database", action="store_true", help="do not read or write the saved failing scenes")
     p.add_argument("-j", "--workers", type=int, default=0, help="worker processes (default: all cores)")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
@@ -94,7 +97,7 @@ def _campaign(args, port, kinds, workers) -> int:
     from ..impl import BuiltinPort
     from ..report import Campaign, junit, summary, write_json, write_junit
     from ..oracle import port_runtime
-    from ..runner import DEFAULT_DATABASE, run_campaign
+    from ..runner import DEFAULT_DATABASE, example_database, run_campaign
 
     impl_info = {"name": port.name, "version": (port.hello or {}).get("version", ""), "command": args.impl or ""}
     from ..protocol import CAMPAIGN_KINDS
@@ -109,7 +112,7 @@ def _campaign(args, port, kinds, workers) -> int:
     presampled: Counter = Counter()  # corpus scenes passed over before the campaign (never sent)
     oracle, replay, bad = _oracle(args, workers, kinds, run_kinds, port, presampled)
     port.runtime = runtime = port_runtime(oracle, args.runtime)
-    database = None if args.no_database else (args.database or DEFAULT_DATABASE)
+    database = None if args.no_database else example_database(args.database or DEFAULT_DATABASE)
     seed = args.seed if args.seed is not None else 0
     who = f"implementation {port.name!r} ({args.impl})" if args.impl else "port"
     part, parts = args.shard

@@ -73,19 +73,62 @@ def test_worker_processes_split_the_campaign_and_stop_at_the_first_difference(tm
     assert len(r.found) == 1 and r.found[0].path.exists()
 
 
+def kept(db) -> list:
+    """The failing scenes a default campaign (all kinds, exact) keeps in the directory database `db`."""
+    from acconform.runner import SavedFailures, failure_key
+    from acconform.strategies import check_kinds
+
+    return SavedFailures(db, failure_key(check_kinds(None), "exact")).scenes()
+
+
 def test_the_example_database_replays_a_saved_failure_first(tmp_path):
     db = tmp_path / "db"
     first = run_campaign(buggy_when_long, fake_port, n=300, seed=7, failures_dir=None, database=db)
     again = run_campaign(buggy_when_long, fake_port, n=300, seed=99, failures_dir=None, database=db)
-    assert any(db.rglob("*")) and again.found[0].case.scene == first.found[0].case.scene
+    assert kept(db) == [first.found[0].case.scene] and again.found[0].case.scene == first.found[0].case.scene
+
+
+def test_a_shards_failure_is_replayed_first_by_another_shard_sharing_its_hypothesis_database(tmp_path):
+    from hypothesis.database import DirectoryBasedExampleDatabase
+
+    from acconform.runner import example_database
+
+    db = tmp_path / "shared"
+    assert isinstance(example_database(db), DirectoryBasedExampleDatabase)
+    first = run_campaign(buggy_when_long, fake_port, n=300, seed=7, failures_dir=tmp_path / "f1", database=db,
+                         shard=(1, 2))
+    seen = []
+
+    def watched(scene):
+        seen.append(scene)
+        return buggy_when_long(scene)
+
+    second = run_campaign(watched, fake_port, n=300, seed=7, failures_dir=tmp_path / "f2", database=db, shard=(2, 2))
+    shrunk = first.found[0].case.scene
+    assert seen[0] == shrunk, "the other shard's failing scene is the first one run"
+    assert second.found[0].case.scene == shrunk and second.cases == 1
+    # the shrunk case files users reproduce are still written, by each shard
+    assert len(list((tmp_path / "f1").glob("case-*.json"))) == len(list((tmp_path / "f2").glob("case-*.json"))) == 1
+
+
+def test_a_campaign_can_share_failures_through_a_github_artifact_read_only_beside_its_own_directory():
+    from hypothesis.database import GitHubArtifactDatabase, MultiplexedDatabase, ReadOnlyDatabase
+
+    from acconform.runner import DEFAULT_DATABASE, example_database
+
+    db = example_database("github:someorg/someport/acconform-failures")
+    assert isinstance(db, MultiplexedDatabase)
+    local, shared = db._wrapped
+    assert local.path == DEFAULT_DATABASE and isinstance(shared, ReadOnlyDatabase)
+    assert shared._wrapped == GitHubArtifactDatabase("someorg", "someport", "acconform-failures")
 
 
 def test_a_kept_failing_scene_that_passes_now_is_forgotten(tmp_path):
     db = tmp_path / "db"
     first = run_campaign(buggy_when_long, fake_port, n=300, seed=7, failures_dir=None, database=db)
-    assert len(list(db.rglob("*.json"))) == 1
+    assert len(kept(db)) == 1
     fixed = run_campaign(fake_port, fake_port, n=20, seed=8, failures_dir=None, database=db)
-    assert fixed.ok and first.found and not list(db.rglob("*.json"))
+    assert fixed.ok and first.found and not kept(db)
 
 
 def test_an_unwritable_database_loses_no_difference(tmp_path, capsys):
