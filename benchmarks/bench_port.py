@@ -8,7 +8,9 @@ first --n of each kind), the tick scenes of examples/ (a revision that cannot re
 and --generated scenes from acconform.strategies.sample_scenes (seed 1).
 Each scene set runs --repeat times through run_scene in exact and fast mode, and in exact mode with
 a branches.Trace as a campaign runs the built-in port ("exact+trace"), computing as .NET 10 does;
-the best pass is reported as ms/scene (process CPU time, see CLOCK). "build%" is the share of that pass spent constructing landblocks
+the best pass is reported as ms/scene (process CPU time, see CLOCK), with the garbage collector
+tuned as `check` runs the port (runner.campaign_gc; --gc default: Python's own, where collections
+of the benchmark's heap cost about as much as the port). "build%" is the share of that pass spent constructing landblocks
 (Landblock.__init__ and post_init, plus any lazy cell building the port does on first access),
 measured in a separate instrumented pass so the timing pass carries no wrapper cost.
 
@@ -133,7 +135,24 @@ def _clear_caches():
         clear()
 
 
-def measure(scenes, mode: str, repeat: int) -> dict:
+def _collector(gc_setting: str):
+    """The garbage collector as `check` runs the port (runner.campaign_gc: frozen heap, rare
+    collections), or Python's default ("default")."""
+    import contextlib
+
+    if gc_setting == "default":
+        return contextlib.nullcontext()
+    from acconform.runner import campaign_gc
+
+    return campaign_gc()
+
+
+def measure(scenes, mode: str, repeat: int, gc_setting: str = "campaign") -> dict:
+    with _collector(gc_setting):
+        return _measure(scenes, mode, repeat)
+
+
+def _measure(scenes, mode: str, repeat: int) -> dict:
     trace_class = _trace_class() if mode == "exact+trace" else None
     best = float("inf")
     for _ in range(repeat):
@@ -172,7 +191,7 @@ def run(args) -> dict:
         if not scenes:
             continue
         for mode in ("exact", "fast", "exact+trace"):
-            results[f"{name}/{mode}"] = measure(scenes, mode, args.repeat) | {"scenes": len(scenes)}
+            results[f"{name}/{mode}"] = measure(scenes, mode, args.repeat, args.gc) | {"scenes": len(scenes)}
     return results
 
 
@@ -182,6 +201,8 @@ def main() -> None:
     ap.add_argument("--generated", type=int, default=40)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) and print old/new")
+    ap.add_argument("--gc", choices=("campaign", "default"), default="campaign",
+                    help="the collector as check runs the port (runner.campaign_gc; default) or Python's default")
     ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
     ap.add_argument("--scenes", help=argparse.SUPPRESS)  # generated scenes as JSON (the parent's draw)
     args = ap.parse_args()
@@ -193,7 +214,7 @@ def main() -> None:
             scenes.write_text(json.dumps([s.to_json() for s in generated_scenes(args)] if args.generated else []))
             args.scenes = str(scenes)  # both runs time the same draw (strategies change between revisions)
             cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--n", str(args.n),
-                   "--generated", str(args.generated), "--repeat", str(args.repeat), "--scenes", str(scenes)]
+                   "--generated", str(args.generated), "--repeat", str(args.repeat), "--scenes", str(scenes), "--gc", args.gc]
             old = json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout)
             # this tree in a fresh process too: the parent holds the strategies' draw (hypothesis and
             # all), whose heap made every collection slower and the new side look ~15% slower
@@ -203,7 +224,8 @@ def main() -> None:
     if args.json:
         print(json.dumps(new))
         return
-    print(f"load average {' '.join(f'{x:.2f}' for x in os.getloadavg())} (1, 5, 15 min) before the runs")
+    print(f"load average {' '.join(f'{x:.2f}' for x in os.getloadavg())} (1, 5, 15 min) before the runs; "
+          f"collector: {'as check runs the port (campaign_gc)' if args.gc == 'campaign' else 'Python default'}")
     if old is None:
         print(f"{'scenes/mode':20s} {'n':>4s} {'ms/scene':>9s} {'build%':>7s}")
         for key, r in new.items():

@@ -80,7 +80,9 @@ class Polygon:
     @anchor("CPolygon::UnPack", "Polygon.cs:Polygon(DatLoader.Entity.Polygon, CVertexArray)", "the DAT constructor")
     def from_dat(cls, polygon, vertex_array) -> "Polygon":
         """``new Polygon(DatLoader.Entity.Polygon, CVertexArray)``: no Init (PolyID stays 0), the
-        DAT vertices by id (VertexCache is off: a new Vertex each), then make_plane."""
+        DAT vertices by id (VertexCache is off: a new Vertex each), then make_plane, run when the
+        plane is first read (make_plane_when_read: no one moves a DAT polygon's vertices, and most
+        of a cell's or an object's planes are never read in a run)."""
         p = cls.__new__(cls)
         p.poly_id = 0
         p.neg_surface = polygon.neg_surface
@@ -96,7 +98,7 @@ class Polygon:
                 raise KeyNotFoundException(f"The given key '{vertex_idx & 0xFFFF}' was not present in the dictionary.")
             p.vertices.append(Vertex.from_dat(sw_vertex))
         p.plane = None
-        p.make_plane()
+        p.make_plane_when_read()
         return p
 
     @classmethod
@@ -118,9 +120,10 @@ class Polygon:
     @harness("make_plane when the plane is first read (a terrain polygon: see make_plane_when_read)")
     def make_plane_when_read(self) -> None:
         """Leaves the plane unset: the first read of ``plane`` runs make_plane then (`__getattr__`).
-        Only for a polygon whose vertices no one moves afterwards (a landblock's terrain): its
-        plane is a function of them, so computing it later gives the same bits, and a landblock's
-        128 planes are mostly never read (a transition touches a few of its 64 cells)."""
+        Only for a polygon whose vertices no one moves afterwards (a landblock's terrain, a DAT
+        polygon): its plane is a function of them, so computing it later gives the same bits, and
+        most planes are never read (a transition touches a few of a landblock's 64 cells, and a
+        few leaves of a cell's or an object's BSP)."""
         del self.plane
 
     def __getattr__(self, name: str):
