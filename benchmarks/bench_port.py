@@ -17,7 +17,8 @@ measured in a separate instrumented pass so the timing pass carries no wrapper c
 --against REV checks REV out into a temporary git worktree, runs this same script there in a
 subprocess (imports resolve to the worktree through a shim on sys.path) and prints old, new and
 old/new side by side. Both runs see the same scenes (the corpus of this tree, and this tree's
-generated draw passed to both runs as JSON); each side runs in a fresh subprocess, the new one second.
+generated draw passed to both runs as JSON); each side runs in a fresh subprocess, the new one
+second; --rounds R runs each side R times, alternately, and keeps the best of each.
 """
 
 from __future__ import annotations
@@ -195,12 +196,18 @@ def run(args) -> dict:
     return results
 
 
+def _best(a: dict, b: dict) -> dict:
+    """Per scene set and mode, the faster of two runs' figures."""
+    return {k: min((r for r in (a.get(k), v) if r is not None), key=lambda r: r["ms"]) for k, v in b.items()}
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, default=60, help="corpus scenes per kind")
     ap.add_argument("--generated", type=int, default=40)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--against", metavar="REV", help="also run REV (a git revision) and print old/new")
+    ap.add_argument("--rounds", type=int, default=1, help="with --against: runs of each side, alternately (the best of each)")
     ap.add_argument("--gc", choices=("campaign", "default"), default="campaign",
                     help="the collector as check runs the port (runner.campaign_gc; default) or Python's default")
     ap.add_argument("--json", action="store_true", help=argparse.SUPPRESS)
@@ -215,10 +222,12 @@ def main() -> None:
             args.scenes = str(scenes)  # both runs time the same draw (strategies change between revisions)
             cmd = [sys.executable, str(Path(__file__).resolve()), "--json", "--n", str(args.n),
                    "--generated", str(args.generated), "--repeat", str(args.repeat), "--scenes", str(scenes), "--gc", args.gc]
-            old = json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout)
-            # this tree in a fresh process too: the parent holds the strategies' draw (hypothesis and
-            # all), whose heap made every collection slower and the new side look ~15% slower
-            new = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
+            old, new = {}, {}
+            for _ in range(args.rounds):  # alternately: a neighbour's burst falls on both sides
+                old = _best(old, json.loads(subprocess.run(cmd, env=env, check=True, capture_output=True, text=True).stdout))
+                # this tree in a fresh process too: the parent holds the strategies' draw (hypothesis and
+                # all), whose heap made every collection slower and the new side look ~15% slower
+                new = _best(new, json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout))
     else:
         new = run(args)
     if args.json:
