@@ -14,7 +14,8 @@ polygons' planes and the trees is about 40% of an indoor run. The answer cannot 
 CellStruct(DatLoader CellStruct) is a function of those bytes, and nothing after construction
 writes to a CellStruct, its polygons, vertices or BSP nodes (sharing one between cells is
 unobservable: nothing compares polygons or nodes by identity). A record the run does not hold is
-never remembered.
+never remembered. The drawing tree, which ACE builds and its physics never reads, is built when
+first read (a tenth of an indoor run's building); what would throw building it throws at once.
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ BUILT: dict[tuple, "CellStruct"] = {}
 
 class CellStruct:
     __slots__ = ("cell_struct_id", "vertex_array", "polygons", "physics_polygons", "portals",
-                 "drawing_bsp", "physics_bsp", "cell_bsp")
+                 "drawing_bsp", "physics_bsp", "cell_bsp", "_drawing")
 
     @classmethod
     @anchor("CCellStruct::UnPack", "CellStruct.cs:CellStruct(DatLoader.Entity.CellStruct)", "the DAT constructor")
@@ -64,12 +65,25 @@ class CellStruct:
         if cell_struct.cell_bsp is not None:
             c.cell_bsp = BSPTree.from_dat(cell_struct.cell_bsp, cell_struct.physics_polygons, cell_struct.vertex_array, mode)
 
+        c._drawing = None
         if cell_struct.drawing_bsp is not None:
-            c.drawing_bsp = BSPTree.from_dat(cell_struct.drawing_bsp, cell_struct.polygons, cell_struct.vertex_array, mode)
+            # BSPTree.from_dat(...), run when drawing_bsp is first read (`__getattr__`): the physics never
+            # reads it. What could throw while building it throws here, as ACE's build would: a
+            # polygon id the polygons lack (its polygons' vertices were found building c.polygons).
+            _check_polygon_ids(cell_struct.drawing_bsp.root_node, cell_struct.polygons)
+            c._drawing = (cell_struct.drawing_bsp, cell_struct.polygons, cell_struct.vertex_array, mode)
+            del c.drawing_bsp
         if cell_struct.physics_bsp is not None:
             c.physics_bsp = BSPTree.from_dat(cell_struct.physics_bsp, cell_struct.physics_polygons,
                                              cell_struct.vertex_array, mode)
         return c
+
+    def __getattr__(self, name: str):
+        # an unset slot: only `drawing_bsp` is ever left unset (from_dat), until it is first read
+        if name != "drawing_bsp" or self._drawing is None:
+            raise AttributeError(f"'CellStruct' object has no attribute {name!r}")
+        self.drawing_bsp = BSPTree.from_dat(*self._drawing)
+        return self.drawing_bsp
 
     @anchor("CCellStruct::box_intersects_cell", "CellStruct.cs:box_intersects_cell")
     def box_intersects_cell(self, bbox) -> bool:
@@ -82,6 +96,18 @@ class CellStruct:
     @anchor("CCellStruct::point_in_cell", "CellStruct.cs:point_in_cell")
     def point_in_cell(self, point) -> bool:
         return self.cell_bsp.point_inside_cell_bsp(point)
+
+
+def _check_polygon_ids(root, polys: dict) -> None:
+    """KeyNotFoundException for the first node (in BSPNode.from_dat's order: node, front, back)
+    naming a polygon id `polys` lacks, as BSPNode.from_dat raises it."""
+    stack = [root]
+    while stack:
+        node = stack.pop()
+        for poly in node.in_polys or ():
+            if poly not in polys:
+                raise KeyNotFoundException(f"The given key '{poly}' was not present in the dictionary.")
+        stack.extend(child for child in (node.neg_node, node.pos_node) if child is not None)
 
 
 @harness("CellStruct(DatLoader CellStruct) for an Environment's structure, remembered across runs by the record's bytes")

@@ -91,3 +91,39 @@ def test_dat_polygon_planes_made_when_first_read_are_the_planes_the_dat_construc
                                                                      list(y.polygons.values()) + list(y.physics_polygons.values()))]
     assert unread and len(unread) == len(polygons)
     assert [_plane_bits(a) for a, _ in polygons] == [_plane_bits(b) for _, b in polygons]
+
+
+def _tree(node) -> tuple:
+    """A BSP node's whole subtree as plain values: kind, plane, sphere, polygons' vertices."""
+    if node is None:
+        return ()
+    plane = node.splitting_plane
+    return (type(node).__name__, float(plane.d), float(plane.normal.x), float(plane.normal.y), float(plane.normal.z),
+            None if node.sphere is None else (float(node.sphere.radius), float(node.sphere.center.x)),
+            tuple(tuple(float(v.origin.x) for v in p.vertices) for p in node.polygons or ()),
+            _tree(node.pos_node), _tree(node.neg_node))
+
+
+@pytest.mark.anchor("CCellStruct::UnPack")
+@pytest.mark.anchor("BSPTREE::UnPack")
+def test_a_drawing_tree_built_when_first_read_is_the_tree_the_constructor_would_build():
+    from acconform.port.geom.bsp import BSPTree
+
+    env, _ = two_rooms()
+    structs = DatEnvironment.unpack(BinaryReader(dat.environment_record(env).data, EXACT)).cells
+    for s in structs.values():
+        c = cell_struct.CellStruct.from_dat(s, EXACT)
+        eager = BSPTree.from_dat(s.drawing_bsp, s.polygons, s.vertex_array, EXACT)
+        assert _tree(c.drawing_bsp.root_node) == _tree(eager.root_node) != ()
+
+
+@pytest.mark.anchor("CCellStruct::UnPack")
+def test_a_drawing_tree_naming_a_missing_polygon_throws_when_the_structure_is_built():
+    from acconform.port.errors import KeyNotFoundException
+
+    env, _ = two_rooms()
+    s = next(iter(DatEnvironment.unpack(BinaryReader(dat.environment_record(env).data, EXACT)).cells.values()))
+    node = s.drawing_bsp.root_node
+    node.in_polys = list(node.in_polys) + [999]
+    with pytest.raises(KeyNotFoundException, match="'999'"):
+        cell_struct.CellStruct.from_dat(s, EXACT)
