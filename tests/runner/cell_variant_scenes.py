@@ -1,4 +1,4 @@
-"""Indoor and building scenes of the recorded corpus with one DAT field varied (issue 24), for
+"""Scenes of the recorded corpus with one DAT field or place varied (issue 24), for
 `acconform record`.
 
     python tests/runner/cell_variant_scenes.py OUT_DIR [-n 3] [--seed 2425]
@@ -13,7 +13,8 @@ cell DAT does not hold (ReadFromDat throws), BuildingObj.makeBuilding's LeafCell
 building whose cell is not its landblock's, check_building_transit's portal 0xFFFF, the parts'
 transit through portals for a part with no physics sphere (a sphere static in a cell or a doorway),
 and LandCell.add_all_outside_cells / add_cell_block / add_outside_cell past the world's edge (a
-mover heading over it, statics on it). Each variant below is applied to N records of the coreclr
+mover heading over it, statics on it), and DatLoader's compressed counts of two bytes (a GfxObj of
+128 physics polygons or more). Each variant below is applied to N records of the coreclr
 corpus drawn with `--seed` (of those it applies to), one scene file each, named after the record
 with the kind and the variant appended.
 """
@@ -112,6 +113,13 @@ def variants():
         return replace(s, objects=tuple(replace(o, position=at_x(o.position, 0.3)) if e else o
                                         for o, e in zip(s.objects, edge)))
 
+    def many_polygons(s):
+        """Every BSP static's GfxObj with 130 more physics polygons (copies of its first, in no
+        leaf): DatLoader reads their count as a compressed uint of two bytes (128 and up)."""
+        return replace(s, objects=tuple(
+            replace(o, shape=replace(o.shape, polygons=o.shape.polygons + (o.shape.polygons[0],) * 130))
+            if o.shape.kind == "bsp" else o for o in s.objects))
+
     def outdoors(s):
         return s.ticks is None and not s.buildings and not s.env_cells and s.mover.end is not None
 
@@ -141,6 +149,8 @@ def variants():
         ("statics_on_the_world_edge", "obstacles", static_in_column_0, statics_on_the_edge),
         ("sphere_statics", "indoor", in_cells, sphere),
         ("sphere_statics", "buildings", lambda s: bool(s.objects), sphere),
+        ("many_polygons", "bsp", lambda s: outdoors(s) and any(o.shape.kind == "bsp" for o in s.objects),
+         many_polygons),
     ]
 
 
@@ -156,11 +166,14 @@ def main(argv=None) -> int:
     a = ap.parse_args(argv)
     a.out.mkdir(parents=True, exist_ok=True)
     oracle = RecordedOracle(default_corpus("coreclr"))
+    names = tuple(f":{name}" for name, *_ in variants())
     by_kind = {}
     for e in sorted(oracle.entries, key=lambda e: e.key):
-        for kind in ("indoor", "buildings", "terrain", "obstacles"):
+        for kind in ("indoor", "buildings", "terrain", "obstacles", "bsp"):
             if f"/{kind}-" in e.where:
-                by_kind.setdefault(kind, []).append((e.key, Scene.from_json(e.doc()["scene"])))
+                s = Scene.from_json(e.doc()["scene"])
+                if not s.name.endswith(names):  # not a variant recorded before
+                    by_kind.setdefault(kind, []).append((e.key, s))
     rng = random.Random(a.seed)
     written = 0
     for name, kind, applies, make in variants():
