@@ -24,7 +24,7 @@ from dataclasses import replace
 from pathlib import Path
 
 
-VARIANT_SHARDS = ("obstacles-0007", "buildings-0003", "bsp-0007", "obstacles-0008", "terrain-0007")  # the corpus shards this script's scenes were recorded into
+VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008")  # the corpus shards this script's scenes were recorded into
 
 
 def variants():
