@@ -9,7 +9,10 @@ arms for the other flags and inputs (PhysicsObj.UpdateObjectInternal's Hidden an
 calc_acceleration without Gravity, handle_all_collisions' Inelastic stop, CheckEthereal's
 set_ethereal, StationaryStuck, report_object_collision and the collision table of a non-static
 obstacle, a step's state / local_velocity / omega, a Frozen or Static mover, a step that clears
-Active) no recorded scene took. Each variant below is
+Active) no recorded scene took; then (ticks-0025) an ethereal mover asking CheckEthereal every step
+beside obstacles (set_ethereal's collision search through the cells' shadows, check_collision of a
+non-static obstacle), a RequestPos two landblocks away (GetBlockDist's refusal) or with a quaternion
+of length 2 (set_frame's repair of an invalid heading). Each variant below is
 applied to N tick records of the coreclr corpus drawn with `--seed` (for the obstacle variants,
 those with statics outdoors), one scene file each, named after the record with the variant appended.
 """
@@ -23,9 +26,19 @@ from dataclasses import replace
 from pathlib import Path
 
 
+VARIANT_SHARDS = ("ticks-0024", "ticks-0025")  # the corpus shards this script's scenes were recorded into
+
+
+def _outdoors(request_pos) -> bool:
+    return request_pos is not None and request_pos.cell & 0xFFFF < 0x100
+
+
 def variants():
-    """(name, needs statics, scene -> scene): each one flag or input the tick strategies never draw."""
+    """(name, pool, scene -> scene): each one flag or input the tick strategies never draw; the pool is
+    True for the records with statics outdoors, "request_pos" for those of the legacy player path with
+    a RequestPos outdoors."""
     from acconform.flags import PhysicsState as P, TransientState as T
+    from acconform.scene import Landblock
 
     def mover(**kw):
         return lambda s: replace(s, mover=replace(s.mover, **{k: f(s.mover) for k, f in kw.items()}))
@@ -45,6 +58,30 @@ def variants():
 
     def statics(state):
         return lambda s: replace(s, objects=tuple(replace(o, state=state(o.state)) for o in s.objects))
+
+    def every_step_ethereal(s):
+        flags = int(T.Contact | T.OnWalkable | T.Active | T.CheckEthereal)
+        s = mover(state=lambda m: m.state | P.Ethereal)(s)
+        steps = tuple(replace(st, transient_state=flags) for st in s.ticks.steps)
+        return replace(s, ticks=replace(s.ticks, steps=steps))
+
+    def request_far(s):
+        """The first RequestPos two landblocks east of the mover (a landblock the scene adds)."""
+        steps = list(s.ticks.steps)
+        i = next(i for i, st in enumerate(steps) if _outdoors(st.request_pos))
+        cell = s.ticks.steps[i].request_pos.cell
+        far = cell + (2 << 24)
+        lbs = s.landblocks if any(lb.id == far | 0xFFFF for lb in s.landblocks) else (
+            s.landblocks + (Landblock(far | 0xFFFF, has_terrain=False),))
+        steps[i] = replace(steps[i], request_pos=replace(steps[i].request_pos, cell=far))
+        return replace(s, landblocks=lbs, ticks=replace(s.ticks, steps=tuple(steps)))
+
+    def request_orientation(q):
+        def apply(s):
+            steps = tuple(replace(st, request_pos=replace(st.request_pos, frame=replace(st.request_pos.frame, orientation=q)))
+                          if st.request_pos is not None else st for st in s.ticks.steps)
+            return replace(s, ticks=replace(s.ticks, steps=steps))
+        return apply
 
     return [
         ("hidden", False, mover(state=lambda m: m.state | P.Hidden)),
@@ -70,6 +107,15 @@ def variants():
         ("ethereal_ignore", True, mover(state=lambda m: m.state | P.Ethereal | P.IgnoreCollisions)),
         ("step_inactive", False, every_other_step(transient_state=int(T.Contact | T.OnWalkable))),
         ("sled_align", False, mover(state=lambda m: m.state | P.Sledding | P.AlignPath)),
+        # issue 24, second round (ticks-0025)
+        # an ethereal mover asking CheckEthereal again every step (set_ethereal(false) looks for a collision
+        # in the cells its shadows are in), beside obstacles static or not
+        ("ethereal_recheck", True, every_step_ethereal),
+        ("ethereal_recheck_not_static", True, lambda s: statics(lambda st: st & ~P.Static)(every_step_ethereal(s))),
+        ("ethereal_recheck_bsp", True, lambda s: statics(lambda st: st & ~P.Static)(
+            mover(state=lambda m: m.state | P.HasPhysicsBSP)(every_step_ethereal(s)))),
+        ("request_far", "request_pos", request_far),
+        ("request_unnormalized", "request_pos", request_orientation((0.0, 0.0, 0.0, 2.0))),
     ]
 
 
@@ -82,18 +128,27 @@ def main(argv=None) -> int:
     ap.add_argument("out", type=Path)
     ap.add_argument("-n", type=int, default=12, help="tick records per variant")
     ap.add_argument("--seed", type=int, default=2424)
+    ap.add_argument("--only", default=None, help="comma-separated variant names to write (the draws stay those of all)")
     a = ap.parse_args(argv)
     a.out.mkdir(parents=True, exist_ok=True)
     oracle = RecordedOracle(default_corpus("coreclr"))
-    ticks = sorted((e for e in oracle.entries if "/ticks-" in e.where), key=lambda e: e.key)
+    # the drawn tick records, not the variants of them written here before
+    ticks = sorted((e for e in oracle.entries if "/ticks-" in e.where
+                    and not any(f"/{shard}." in e.where for shard in VARIANT_SHARDS)), key=lambda e: e.key)
     scenes = [(e.key, Scene.from_json(e.doc()["scene"])) for e in ticks]
     # an EnvCell's statics are DAT stabs, which carry no state: the obstacle variants are outdoors
     with_statics = [(k, s) for k, s in scenes if s.objects and not s.env_cells]
+    pools = {False: scenes, True: with_statics,
+             "request_pos": [(k, s) for k, s in scenes if any(_outdoors(st.request_pos) for st in s.ticks.steps)]}
+    only = set(a.only.split(",")) if a.only else None
     rng = random.Random(a.seed)
     written = 0
-    for name, needs_statics, make in variants():
-        pool = with_statics if needs_statics else scenes
-        for key, s in rng.sample(pool, min(a.n, len(pool))):
+    for name, pool_name, make in variants():
+        pool = pools[pool_name]
+        drawn = rng.sample(pool, min(a.n, len(pool)))
+        if only is not None and name not in only:
+            continue
+        for key, s in drawn:
             v = make(s)
             (a.out / f"{key[:16]}-{name}.json").write_text(json.dumps(replace(v, name=f"{s.name}:{name}").to_json()))
             written += 1

@@ -1,0 +1,123 @@
+"""Transition and placement scenes of the recorded corpus with one thing varied (issue 24), for
+`acconform record`.
+
+    python tests/runner/transition_variant_scenes.py OUT_DIR [-n 100] [--seed 2425] [--only NAMES]
+
+The placement strategies (strategies/set_position.py) place a mover that is neither Static nor
+Active, so PhysicsObj.prepare_to_enter_world's arms for those flags were never taken; the obstacle
+strategies never make a sphere or cylsphere static both non-static and ethereal beside a
+two-sphere mover, so the second sphere's test in the ethereal-obstruction arm of
+Sphere.IntersectsSphere / CylSphere.IntersectsSphere was never reached; and no scene lies at the
+world's edge, where LandDefs' range tests refuse a land coordinate below 0 or past the last
+landblock (a west edge at landblock column 0x00; an east one at 0xFE; a neighbour in column 0xFF is
+past LandLength and makes ACE's Landblock constructor throw). Each variant below is
+applied to N records of the coreclr corpus drawn with `--seed` from its pool, one scene file each,
+named after the record with the variant appended (the tick scenes have tick_variant_scenes.py).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import random
+from dataclasses import replace
+from pathlib import Path
+
+
+VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008")  # the corpus shards this script's scenes were recorded into
+
+
+def variants():
+    """(name, pool, scene -> scene): "placement" draws from the placement records, "statics" from
+    the transition records with statics outdoors and a one-sphere mover, "outdoor" from the outdoor
+    transition records."""
+    from acconform.flags import PhysicsState as P, TransientState as T
+    from acconform.numerics import to_f32
+
+    def mover(**kw):
+        return lambda s: replace(s, mover=replace(s.mover, **{k: f(s.mover) for k, f in kw.items()}))
+
+    def head_sphere(m):
+        """A second sphere of the same radius stacked above the first (strategies/scenes.py's form)."""
+        low = m.spheres[0]
+        return (low, replace(low, center=(0.0, 0.0, to_f32(low.radius * 2.6))))
+
+    def ethereal_obstacles(s):
+        return replace(s, objects=tuple(replace(o, state=(o.state & ~P.Static) | P.Ethereal) for o in s.objects))
+
+    def at_world_edge(bx: int, by: int, dx: float, dy: float):
+        """The scene moved whole to the landblock column/row (bx, by) (its landblocks, mover and
+        statics keep their places relative to each other), the mover's end `dx`, `dy` metres from
+        its begin: off the world's edge (land coordinates below 0, or past 2040 where the
+        landblock ids end; a landblock west of column 0x00 wraps to 0xFF, as a uint cell id does)."""
+        def apply(s):
+            b = s.mover.begin.cell
+            shift = ((bx - (b >> 24)) << 24) + ((by - (b >> 16 & 0xFF)) << 16)
+
+            def cell(c: int) -> int:
+                return (c + shift) & 0xFFFFFFFF
+
+            m = s.mover
+            o = m.begin.frame.origin
+            mover = replace(m, begin=replace(m.begin, cell=cell(m.begin.cell)),
+                            end=replace(m.begin, cell=cell(m.begin.cell),
+                                        frame=replace(m.begin.frame, origin=(o[0] + dx, o[1] + dy, o[2]))),
+                            contact_plane=m.contact_plane and replace(m.contact_plane, cell=cell(m.contact_plane.cell)))
+            return replace(s, mover=mover, landblocks=tuple(replace(lb, id=cell(lb.id)) for lb in s.landblocks),
+                           objects=tuple(replace(o, position=replace(o.position, cell=cell(o.position.cell)))
+                                         for o in s.objects))
+        return apply
+
+    return [
+        ("placement_active", "placement", mover(transient_state=lambda m: m.transient_state | T.Active)),
+        ("placement_static", "placement", mover(state=lambda m: m.state | P.Static)),
+        ("two_spheres_ethereal_obstacles", "statics", lambda s: ethereal_obstacles(mover(spheres=head_sphere)(s))),
+        ("world_edge_west", "outdoor", at_world_edge(0x00, 0x80, -200.0, 0.0)),
+        ("world_edge_east", "outdoor", at_world_edge(0xFE, 0x80, 200.0, 0.0)),
+    ]
+
+
+def main(argv=None) -> int:
+    from acconform.oracle import default_corpus
+    from acconform.oracle.recorded import RecordedOracle
+    from acconform.scene import Scene
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out", type=Path)
+    ap.add_argument("-n", type=int, default=100, help="records per variant")
+    ap.add_argument("--seed", type=int, default=2425)
+    ap.add_argument("--only", default=None, help="comma-separated variant names to write (the draws stay those of all)")
+    a = ap.parse_args(argv)
+    a.out.mkdir(parents=True, exist_ok=True)
+    oracle = RecordedOracle(default_corpus("coreclr"))
+    # the drawn transition records, not the variants of them written here before
+    records = sorted((e for e in oracle.entries if "/ticks-" not in e.where
+                      and not any(f"/{shard}." in e.where for shard in VARIANT_SHARDS)), key=lambda e: e.key)
+    scenes = [(e.key, Scene.from_json(e.doc()["scene"])) for e in records]
+    pools = {
+        "placement": [(k, s) for k, s in scenes if s.mover.placement is not None],
+        # an EnvCell's statics are DAT stabs, which carry no state: the obstacle variant is outdoors
+        "statics": [(k, s) for k, s in scenes if s.objects and not s.env_cells and s.mover.placement is None
+                    and len(s.mover.spheres) == 1],
+        # outdoors, one landblock column either side of the mover's (so that moving the scene to the
+        # world's edge keeps every landblock id a landblock id)
+        "outdoor": [(k, s) for k, s in scenes if not s.env_cells and not s.buildings and s.mover.placement is None
+                    and all(abs((lb.id >> 24) - (s.mover.begin.cell >> 24)) <= 1 for lb in s.landblocks)],
+    }
+    only = set(a.only.split(",")) if a.only else None
+    rng = random.Random(a.seed)
+    written = 0
+    for name, pool_name, make in variants():
+        pool = pools[pool_name]
+        drawn = rng.sample(pool, min(a.n, len(pool)))
+        if only is not None and name not in only:
+            continue
+        for key, s in drawn:
+            (a.out / f"{key[:16]}-{name}.json").write_text(json.dumps(replace(make(s), name=f"{s.name}:{name}").to_json()))
+            written += 1
+    print(f"{written} scenes in {a.out} ({', '.join(f'{len(p)} {k}' for k, p in pools.items())} records)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
