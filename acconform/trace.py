@@ -305,15 +305,15 @@ def first_divergence(reference, other, anchors=None, reference_kinds=None) -> Di
     return None
 
 
-def _running(records, i: int) -> list[str]:
-    """The routines running at record i, outermost first, ending with the record's own: each caller
-    is the `within` of the record that ends the routine it called (its exit, or its call record,
-    written at its exit); enter and exit records of a routine are paired, so recursion climbs right."""
+def _running(records, i: int) -> list[tuple[str, object]]:
+    """The routines running at record i, outermost first, ending with the record's own, each with the
+    arguments it was called with: each caller is the `within` of the record that ends the routine it
+    called (its exit, or its call record, written at its exit); enter and exit records of a routine
+    are paired, so recursion climbs right."""
     r = records[i]
-    chain = [r.anchor]
+    chain = [(r.anchor, r.args if r.event != "exit" else _entered_with(records, i))]
     routine, start = r.within, (i if r.event == "enter" else i + 1)
     while routine is not None:
-        chain.append(routine)
         depth, end = 0, None
         for k in range(start, len(records)):
             x = records[k]
@@ -328,23 +328,44 @@ def _running(records, i: int) -> list[str]:
                 if x.event == "exit":
                     depth -= 1
         if end is None:
+            chain.append((routine, None))
             break
-        routine, start = records[end].within, end + 1
+        x = records[end]
+        chain.append((routine, x.args if x.event == "call" else _entered_with(records, end)))
+        routine, start = x.within, end + 1
     return chain[::-1]
+
+
+def _entered_with(records, exit_at: int):
+    """The arguments of the enter record an exit record closes."""
+    anchor, depth = records[exit_at].anchor, 0
+    for k in range(exit_at - 1, -1, -1):
+        x = records[k]
+        if x.anchor == anchor:
+            if x.event == "exit":
+                depth += 1
+            elif x.event == "enter":
+                if depth == 0:
+                    return x.args
+                depth -= 1
+    return None
 
 
 def _parted_in(reference, ia: int, other, ib: int) -> str | None:
     """Where two traces that write different records at ia and ib part: the innermost routine both
-    were still running (from both sides' `within`), whose body went on differently; None when the
-    other side records no `within` to tell."""
+    were still running (from both sides' `within`) that both sides called with the same arguments,
+    whose body then went on differently (a routine handed different arguments went differently
+    because its caller did); None when the other side records no `within` to tell."""
     if other[ib].within is None and reference[ia].within is not None:
         return None
-    common = None
-    for x, y in zip(_running(reference, ia), _running(other, ib)):
+    common = []
+    for (x, xargs), (y, yargs) in zip(_running(reference, ia), _running(other, ib)):
         if x != y:
             break
-        common = x
-    return common
+        common.append((x, xargs is None or yargs is None or _same_args(xargs, yargs)))
+    while len(common) > 1 and not common[-1][1]:
+        common.pop()
+    return common[-1][0] if common else None
 
 
 def _caller_handed_them(ref, oth, n: int, routine: str) -> str:

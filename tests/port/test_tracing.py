@@ -158,6 +158,23 @@ def test_records_that_part_inside_a_callee_name_the_innermost_routine_both_sides
     assert d.field == "anchor" and d.routine == "Transition.cs:StepDown"
 
 
+def test_records_that_part_inside_a_routine_handed_different_arguments_name_the_caller_that_handed_them():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    # a routine written as one call record at its exit, after its callees' records: its arguments are seen late
+    j = next(j for j, r in enumerate(records) if r.event == "call" and r.args and records[j - 1].within == r.anchor
+             and r.within is not None)
+    k = j - 1
+    while records[k - 1].within == records[j].anchor:
+        k -= 1
+    stray = replace(records[k], anchor=next(r.anchor for r in records if r.event == "call"
+                                           and r.anchor not in (records[k].anchor, records[j].anchor)))
+    handed = replace(records[j], args=list(records[j].args) + [1.0])
+    other = records[:k] + (stray,) + records[k + 1:j] + (handed,) + records[j + 1:]
+    d = first_divergence(records, other)
+    assert (d.index, d.field) == (k, "anchor")
+    assert d.routine == records[j].within  # not the routine it ran in: the one that called it so
+
+
 @pytest.mark.anchor("BBox.cs:LocalToGlobal")
 def test_a_bounding_box_is_traced_by_its_corners():
     from acconform.port.bbox import BBox
