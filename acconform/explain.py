@@ -56,7 +56,7 @@ def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "e
     Where the port itself differs from ACE and `live` (a LiveOracle) is given, the reference is ACE's
     own stepped trace (LiveOracle.stepped_trace), compared at its grain: each step."""
     from .port.run import traced_run
-    from .runner import guarded
+    from .port.tracing import record_kinds
 
     name = _implementation_name(backend)
     ours_outcome, ours = traced_run(scene, mode, runtime)
@@ -79,7 +79,7 @@ def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "e
         why = ("the implementation does not trace (its handshake lists no `trace` feature)"
                if not getattr(backend, "traces", False) else f"the implementation gave no trace ({theirs_outcome.error})")
         return Explanation(name, reference, differs, None, why, ours, (), theirs_outcome)
-    d = first_divergence(ours, theirs, anchors)
+    d = first_divergence(ours, theirs, anchors, record_kinds())
     note = "" if d is not None else "the traces agree at the implementation's grain"
     known = None
     if d is not None:

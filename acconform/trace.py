@@ -263,11 +263,13 @@ def _grain(records) -> tuple[set, set]:
     return kinds, present
 
 
-def first_divergence(reference, other, anchors=None) -> Divergence | None:
+def first_divergence(reference, other, anchors=None, reference_kinds=None) -> Divergence | None:
     """The first record where `other` parts from `reference`, compared at `other`'s grain: the
     (anchor, event) kinds it writes, and the enter, exit and call records of the routines it declares
     it records (`anchors`, its trace's "anchors": a routine it never reached is then a difference
-    too), and the parts it fills; None when they agree throughout."""
+    too), and the parts it fills; None when they agree throughout. `reference_kinds`: every kind the
+    reference can write (the port's tracing.record_kinds()), not only those it wrote this run: a
+    routine only `other` ran is then a difference too, where it was first entered, not later."""
     kinds, present = _grain(other)
     declared = anchors or frozenset()
     for r in reference:
@@ -276,18 +278,16 @@ def first_divergence(reference, other, anchors=None) -> Divergence | None:
     ref = [(i, r) for i, r in enumerate(reference)
            if (r.anchor, r.event) in kinds or (r.anchor in declared and r.event in ("enter", "exit", "call"))]
     ref_kinds = {(r.anchor, r.event) for _, r in ref}
+    if reference_kinds is not None:
+        ref_kinds |= kinds & reference_kinds
     oth = [(i, r) for i, r in enumerate(other) if (r.anchor, r.event) in ref_kinds]  # the coarser grain of the two
     for n in range(max(len(ref), len(oth))):
         ia, a = ref[n] if n < len(ref) else (len(reference), None)
         ib, b = oth[n] if n < len(oth) else (len(other), None)
         inner = (a or b).within or (a or b).anchor
         if a is None or b is None or (a.anchor, a.event) != (b.anchor, b.event):
-            # a record one side wrote while running a routine whose own end is the other side's record
-            # here: they part inside that routine
-            if a is not None and b is not None and b.within is not None and b.within == a.anchor != a.within:
-                inner = a.anchor
-            elif a is not None and b is not None and a.within is not None and a.within == b.anchor != b.within:
-                inner = b.anchor
+            if a is not None and b is not None:
+                inner = _parted_in(reference, ia, other, ib) or inner
             return Divergence(n, a, b, "anchor", a and f"{a.anchor} {a.event}", b and f"{b.anchor} {b.event}",
                               inner, ia, ib)
         if a.tick != b.tick or a.step != b.step:
@@ -303,6 +303,69 @@ def first_divergence(reference, other, anchors=None) -> Divergence | None:
                     routine = _caller_handed_them(ref, oth, n, routine)
                 return Divergence(n, a, b, name, va, vb, routine, ia, ib)
     return None
+
+
+def _running(records, i: int) -> list[tuple[str, object]]:
+    """The routines running at record i, outermost first, ending with the record's own, each with the
+    arguments it was called with: each caller is the `within` of the record that ends the routine it
+    called (its exit, or its call record, written at its exit); enter and exit records of a routine
+    are paired, so recursion climbs right."""
+    r = records[i]
+    chain = [(r.anchor, r.args if r.event != "exit" else _entered_with(records, i))]
+    routine, start = r.within, (i if r.event == "enter" else i + 1)
+    while routine is not None:
+        depth, end = 0, None
+        for k in range(start, len(records)):
+            x = records[k]
+            if x.anchor != routine:
+                continue
+            if x.event == "enter":
+                depth += 1
+            elif x.event in ("exit", "call"):
+                if depth == 0:
+                    end = k
+                    break
+                if x.event == "exit":
+                    depth -= 1
+        if end is None:
+            chain.append((routine, None))
+            break
+        x = records[end]
+        chain.append((routine, x.args if x.event == "call" else _entered_with(records, end)))
+        routine, start = x.within, end + 1
+    return chain[::-1]
+
+
+def _entered_with(records, exit_at: int):
+    """The arguments of the enter record an exit record closes."""
+    anchor, depth = records[exit_at].anchor, 0
+    for k in range(exit_at - 1, -1, -1):
+        x = records[k]
+        if x.anchor == anchor:
+            if x.event == "exit":
+                depth += 1
+            elif x.event == "enter":
+                if depth == 0:
+                    return x.args
+                depth -= 1
+    return None
+
+
+def _parted_in(reference, ia: int, other, ib: int) -> str | None:
+    """Where two traces that write different records at ia and ib part: the innermost routine both
+    were still running (from both sides' `within`) that both sides called with the same arguments,
+    whose body then went on differently (a routine handed different arguments went differently
+    because its caller did); None when the other side records no `within` to tell."""
+    if other[ib].within is None and reference[ia].within is not None:
+        return None
+    common = []
+    for (x, xargs), (y, yargs) in zip(_running(reference, ia), _running(other, ib)):
+        if x != y:
+            break
+        common.append((x, xargs is None or yargs is None or _same_args(xargs, yargs)))
+    while len(common) > 1 and not common[-1][1]:
+        common.pop()
+    return common[-1][0] if common else None
 
 
 def _caller_handed_them(ref, oth, n: int, routine: str) -> str:

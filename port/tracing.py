@@ -114,6 +114,8 @@ def plain(v, depth: int = 0):
     if hasattr(v, "origin") and hasattr(v, "orientation") and hasattr(v.origin, "x"):  # an AFrame: origin, [w, x, y, z]
         q = v.orientation
         return _vec_list(v.origin) + [_num(q.w), _num(q.x), _num(q.y), _num(q.z)]
+    if hasattr(v, "min") and hasattr(v, "max") and hasattr(v.min, "x"):  # a BBox: its corners, min then max
+        return _vec_list(v.min) + _vec_list(v.max)
     if hasattr(v, "obj_cell_id") and hasattr(v, "frame"):  # a Position: [cell, origin]
         return [int(v.obj_cell_id)] + _vec_list(v.frame.origin)
     if isinstance(v, (tuple, list)):
@@ -231,6 +233,17 @@ def _wrap(fn, anchor, recorder: Recorder, transition_type):
     traced.__name__ = fn.__name__
     traced.__qualname__ = fn.__qualname__
     return traced
+
+
+@harness("every (anchor, event) kind of record a traced run of this port can write: its grain")
+def record_kinds() -> frozenset:
+    kinds = {(FTP, "step"), (TI, "insert"), (TICK, "tick")}
+    for a in load_all().values():
+        file = a.ace.split(":", 1)[0]
+        events = ("enter", "exit") if file in PATH_FILES else ("enter", "exit", "call") if file == MOVER_FILE \
+            else ("call",)
+        kinds.update((a.ace, e) for e in events)
+    return frozenset(kinds)
 
 
 @contextmanager

@@ -132,6 +132,58 @@ def test_a_routine_the_other_side_declares_but_never_ran_is_a_divergence():
     assert d.field == "anchor" and d.a.anchor == "Transition.cs:StepDown"
 
 
+def test_a_routine_only_the_other_side_entered_parts_where_it_entered_it_in_the_routine_both_were_running():
+    from acconform.port.tracing import PATH_FILES, record_kinds
+
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    i = next(i for i, r in enumerate(records) if r.event == "enter" and r.anchor == "Transition.cs:StepDown")
+    ran = {r.anchor for r in records}
+    never = sorted(a for a, e in record_kinds() if e == "enter" and a not in ran and a.split(":")[0] in PATH_FILES)[0]
+    other = records[:i] + (replace(records[i], anchor=never),) + records[i:]
+    late = first_divergence(records, other)  # at the port's grain of this run only, the record is not seen
+    assert late is None or late.index > i
+    d = first_divergence(records, other, reference_kinds=record_kinds())
+    assert (d.index, d.field, d.b.anchor) == (i, "anchor", never)
+    assert d.routine == records[i].within  # StepDown's caller went on differently
+
+
+def test_records_that_part_inside_a_callee_name_the_innermost_routine_both_sides_were_still_running():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    i = next(i for i, r in enumerate(records) if r.event == "enter" and r.anchor == "Transition.cs:StepDown")
+    j = next(j for j in range(i + 1, len(records)) if records[j].anchor == "Transition.cs:StepDown"
+             and records[j].event == "exit")
+    inner = next(k for k in range(i + 1, j) if records[k].within != "Transition.cs:StepDown")  # a callee's callee
+    other = records[:inner] + records[j:]  # StepDown's body cut short inside a routine it called
+    d = first_divergence(records, other)
+    assert d.field == "anchor" and d.routine == "Transition.cs:StepDown"
+
+
+def test_records_that_part_inside_a_routine_handed_different_arguments_name_the_caller_that_handed_them():
+    _, records = traced_run(scene_of("cliff_edge_slide"))
+    # a routine written as one call record at its exit, after its callees' records: its arguments are seen late
+    j = next(j for j, r in enumerate(records) if r.event == "call" and r.args and records[j - 1].within == r.anchor
+             and r.within is not None)
+    k = j - 1
+    while records[k - 1].within == records[j].anchor:
+        k -= 1
+    stray = replace(records[k], anchor=next(r.anchor for r in records if r.event == "call"
+                                           and r.anchor not in (records[k].anchor, records[j].anchor)))
+    handed = replace(records[j], args=list(records[j].args) + [1.0])
+    other = records[:k] + (stray,) + records[k + 1:j] + (handed,) + records[j + 1:]
+    d = first_divergence(records, other)
+    assert (d.index, d.field) == (k, "anchor")
+    assert d.routine == records[j].within  # not the routine it ran in: the one that called it so
+
+
+@pytest.mark.anchor("BBox.cs:LocalToGlobal")
+def test_a_bounding_box_is_traced_by_its_corners():
+    from acconform.port.bbox import BBox
+    from acconform.port.tracing import plain
+    from acconform.numerics import Vector3
+
+    assert plain(BBox(Vector3(1.0, 2.0, 3.0), Vector3(4.0, 5.0, 6.5))) == [1.0, 2.0, 3.0, 4.0, 5.0, 6.5]
+
+
 def test_a_missing_record_is_a_divergence_of_the_anchor_and_a_short_trace_ends_in_one():
     _, records = traced_run(scene_of("cliff_edge_slide"))
     i = next(i for i, r in enumerate(records) if r.event == "enter" and r.anchor == "Transition.cs:StepDown")

@@ -3,8 +3,11 @@
     python tests/runner/explain_mutants.py [--runtime coreclr] [--only NAME,...] [--json FILE]
 
 Per planted bug (tests/runner/mutants.py): the first record of the fast lane's corpus sample
-(tests/data/corpus/<runtime>/fast-sample.json, in a seeded shuffle) where the mutant differs from
-ACE's recorded answer and the port does not; then the mutant run as an external implementation
+(tests/data/corpus/<runtime>/fast-sample.json, in a seeded shuffle, single transitions before tick
+scenes) where the mutant differs from
+ACE's recorded answer and the port does not, else the first such record of the whole corpus among
+the scene kinds the mutant is hunted on (its `kinds`, in the same shuffle; `--sample-only` skips
+this); then the mutant run as an external implementation
 (tests/impl/planted_impl.py through the protocol, feature `trace`) is traced on that scene, and
 acconform.explain names the first divergence from the port's trace. A hit: the routine it names is
 the ACE method of the port function holding the mutated text (a mutant in a constant has none).
@@ -43,8 +46,17 @@ def mutated_routine(m) -> str | None:
                     best = q
                 walk(ch, q + ".")
 
-    walk(ast.parse(text), "")
-    a = load_all().get("acconform.port." + m.file[:-3].replace("/", ".") + "." + best) if best else None
+    tree = ast.parse(text)
+    walk(tree, "")
+    module = "acconform.port." + m.file[:-3].replace("/", ".") + "."
+    registry = load_all()
+    a = registry.get(module + best) if best else None
+    if a is None and best is not None and best.startswith("_"):
+        # a private helper (e.g. GetBlockOffset's uncached half) is part of the one anchored routine that calls it
+        callers = {module + f.name for f in ast.walk(tree) if isinstance(f, ast.FunctionDef) and f.name != best
+                   and any(isinstance(n, ast.Name) and n.id == best for n in ast.walk(f))}
+        anchored = [registry[c] for c in callers if c in registry]
+        a = anchored[0] if len(anchored) == 1 else None
     return a.ace if a else None
 
 
@@ -53,6 +65,7 @@ def main() -> int:
     p.add_argument("--runtime", default="coreclr")
     p.add_argument("--only", default=None)
     p.add_argument("--json", default=None)
+    p.add_argument("--sample-only", action="store_true", help="look for a killing record in the fast sample only")
     args = p.parse_args()
     warnings.simplefilter("ignore")
 
@@ -61,15 +74,17 @@ def main() -> int:
     from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle
     from acconform.port.run import run_scene
-    from acconform.protocol import Implementation
+    from acconform.protocol import KINDS, Implementation
     from acconform.runner import guarded
     from mutants import MUTATIONS, load_mutant
 
     sample = json.loads((HERE.parent / "data" / "corpus" / args.runtime / "fast-sample.json").read_text())
     keys = {k for k, _, _ in sample["records"]}
     oracle = RecordedOracle(default_corpus())
-    entries = [e for e in oracle.select(runtime=args.runtime) if e.key in keys]
-    random.Random(0).shuffle(entries)
+    everything = oracle.select(runtime=args.runtime)
+    random.Random(0).shuffle(everything)
+    everything.sort(key=lambda e: e.kind == "ticks")  # single transitions first: a tick scene's trace is tens of them
+    entries = [e for e in everything if e.key in keys]
     only = set(args.only.split(",")) if args.only else None
     rows = []
     for i, m in enumerate(MUTATIONS):
@@ -77,17 +92,21 @@ def main() -> int:
             continue
         t0 = time.monotonic()
         mutant = load_mutant(i)
-        rec = None
-        for e in entries:
-            r = oracle._record(e)
-            if compare(guarded(lambda s: mutant(s, runtime=args.runtime), r.scene), r.outcome, "exact") and \
-                    not compare(run_scene(r.scene, runtime=args.runtime), r.outcome, "exact"):
-                rec = r
+        rest = [] if args.sample_only else [e for e in everything if e.key not in keys and e.kind in m.kinds]
+        rec, where = None, None
+        for source, candidates in (("fast sample", entries), ("corpus", rest)):
+            for e in candidates:
+                r = oracle._record(e)
+                if compare(guarded(lambda s: mutant(s, runtime=args.runtime), r.scene), r.outcome, "exact") and \
+                        not compare(run_scene(r.scene, runtime=args.runtime), r.outcome, "exact"):
+                    rec, where = r, source
+                    break
+            if rec is not None:
                 break
-        row = {"name": m.name, "expected": mutated_routine(m), "killed": rec is not None}
+        row = {"name": m.name, "expected": mutated_routine(m), "killed": rec is not None, "killed_in": where}
         if rec is not None:
             impl = Implementation(f"{sys.executable} {HERE.parent / 'impl' / 'planted_impl.py'} {m.name} "
-                                  f"--kinds terrain,bsp,obstacles,indoor", timeout=120)
+                                  f"--kinds {','.join(KINDS)}", timeout=600)
             impl.runtime = args.runtime
             try:
                 e = explain(rec.scene, rec.outcome, "ACE's recorded answer", impl, "exact", args.runtime)
@@ -101,8 +120,8 @@ def main() -> int:
         print(json.dumps(row), flush=True)
     named = [r for r in rows if r["killed"] and r["expected"]]
     print(f"explain names the mutated routine for {sum(r['hit'] for r in named)} of {len(named)} planted bugs "
-          f"killed by the {args.runtime} fast sample whose text lies in an anchored routine "
-          f"({len(rows)} run; {sum(not r['killed'] for r in rows)} not killed by the sample; "
+          f"killed by the {args.runtime} corpus whose text lies in an anchored routine "
+          f"({len(rows)} run; {sum(not r['killed'] for r in rows)} not killed by it; "
           f"{sum(r['killed'] and not r['expected'] for r in rows)} in a constant)")
     if args.json:
         Path(args.json).write_text(json.dumps(rows, indent=1))
