@@ -119,18 +119,42 @@ def variants():
     ]
 
 
+def arguments(doc: str, n: int, seed: int, argv=None):
+    """A variant script's command line: the output directory, records per variant, the seed, --only."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    ap.add_argument("out", type=Path)
+    ap.add_argument("-n", type=int, default=n, help="records per variant")
+    ap.add_argument("--seed", type=int, default=seed)
+    ap.add_argument("--only", default=None, help="comma-separated variant names to write (the draws stay those of all)")
+    a = ap.parse_args(argv)
+    a.out.mkdir(parents=True, exist_ok=True)
+    return a
+
+
+def write_variants(a, variants, pools) -> int:
+    """Each variant (name, pool, make) drawn from its pool in turn, -n records with one seeded
+    generator, and its changed scenes written (only the --only ones; every variant still draws, so
+    a variant's scenes do not depend on which are written); how many were written."""
+    only = set(a.only.split(",")) if a.only else None
+    rng = random.Random(a.seed)
+    written = 0
+    for name, pool_name, make in variants:
+        pool = pools[pool_name]
+        drawn = rng.sample(pool, min(a.n, len(pool)))
+        if only is not None and name not in only:
+            continue
+        for key, s in drawn:
+            (a.out / f"{key[:16]}-{name}.json").write_text(json.dumps(replace(make(s), name=f"{s.name}:{name}").to_json()))
+            written += 1
+    return written
+
+
 def main(argv=None) -> int:
     from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle
     from acconform.scene import Scene
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=12, help="tick records per variant")
-    ap.add_argument("--seed", type=int, default=2424)
-    ap.add_argument("--only", default=None, help="comma-separated variant names to write (the draws stay those of all)")
-    a = ap.parse_args(argv)
-    a.out.mkdir(parents=True, exist_ok=True)
+    a = arguments(__doc__, 12, 2424, argv)
     oracle = RecordedOracle(default_corpus("coreclr"))
     # the drawn tick records, not the variants of them written here before
     ticks = sorted((e for e in oracle.entries if "/ticks-" in e.where
@@ -140,18 +164,7 @@ def main(argv=None) -> int:
     with_statics = [(k, s) for k, s in scenes if s.objects and not s.env_cells]
     pools = {False: scenes, True: with_statics,
              "request_pos": [(k, s) for k, s in scenes if any(_outdoors(st.request_pos) for st in s.ticks.steps)]}
-    only = set(a.only.split(",")) if a.only else None
-    rng = random.Random(a.seed)
-    written = 0
-    for name, pool_name, make in variants():
-        pool = pools[pool_name]
-        drawn = rng.sample(pool, min(a.n, len(pool)))
-        if only is not None and name not in only:
-            continue
-        for key, s in drawn:
-            v = make(s)
-            (a.out / f"{key[:16]}-{name}.json").write_text(json.dumps(replace(v, name=f"{s.name}:{name}").to_json()))
-            written += 1
+    written = write_variants(a, variants(), pools)
     print(f"{written} scenes in {a.out} ({len(with_statics)} of {len(scenes)} tick records have statics outdoors)")
     return 0
 

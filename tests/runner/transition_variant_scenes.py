@@ -17,11 +17,9 @@ named after the record with the variant appended (the tick scenes have tick_vari
 
 from __future__ import annotations
 
-import argparse
-import json
-import random
 from dataclasses import replace
-from pathlib import Path
+
+from tick_variant_scenes import arguments, write_variants
 
 
 VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008")  # the corpus shards this script's scenes were recorded into
@@ -82,13 +80,7 @@ def main(argv=None) -> int:
     from acconform.oracle.recorded import RecordedOracle
     from acconform.scene import Scene
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=100, help="records per variant")
-    ap.add_argument("--seed", type=int, default=2425)
-    ap.add_argument("--only", default=None, help="comma-separated variant names to write (the draws stay those of all)")
-    a = ap.parse_args(argv)
-    a.out.mkdir(parents=True, exist_ok=True)
+    a = arguments(__doc__, 100, 2425, argv)
     oracle = RecordedOracle(default_corpus("coreclr"))
     # the drawn transition records, not the variants of them written here before
     records = sorted((e for e in oracle.entries if "/ticks-" not in e.where
@@ -104,17 +96,7 @@ def main(argv=None) -> int:
         "outdoor": [(k, s) for k, s in scenes if not s.env_cells and not s.buildings and s.mover.placement is None
                     and all(abs((lb.id >> 24) - (s.mover.begin.cell >> 24)) <= 1 for lb in s.landblocks)],
     }
-    only = set(a.only.split(",")) if a.only else None
-    rng = random.Random(a.seed)
-    written = 0
-    for name, pool_name, make in variants():
-        pool = pools[pool_name]
-        drawn = rng.sample(pool, min(a.n, len(pool)))
-        if only is not None and name not in only:
-            continue
-        for key, s in drawn:
-            (a.out / f"{key[:16]}-{name}.json").write_text(json.dumps(replace(make(s), name=f"{s.name}:{name}").to_json()))
-            written += 1
+    written = write_variants(a, variants(), pools)
     print(f"{written} scenes in {a.out} ({', '.join(f'{len(p)} {k}' for k, p in pools.items())} records)")
     return 0
 
