@@ -1,4 +1,4 @@
-"""tests/port: makes the shared helpers here (numerics_replay, dat_shapes) and the scene data in objects/ importable from every subdirectory."""
+"""tests/port: makes the shared helpers here (numerics_replay, dat_shapes, lazy_planes) and the scene data in objects/ importable from every subdirectory."""
 
 import sys
 from pathlib import Path

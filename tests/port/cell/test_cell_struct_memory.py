@@ -17,6 +17,7 @@ from acconform.port.run import run_scene
 from acconform.scene import Environment
 from dungeon_scenes import SCENES as DUNGEON_SCENES
 from indoor_rooms import ENV_ID, SCENES as ROOM_SCENES, room_struct, two_rooms
+from lazy_planes import plane_bits, plane_unset
 
 SCENES = [s for s, _ in list(ROOM_SCENES.values()) + list(DUNGEON_SCENES.values())]
 
@@ -63,19 +64,6 @@ def test_a_structure_from_a_record_the_run_does_not_hold_is_not_remembered():
     assert cell_struct.BUILT == {}
 
 
-def _plane_bits(polygon) -> tuple:
-    n, d = polygon.plane.normal, polygon.plane.d
-    return tuple(float(v).hex() for v in (n.x, n.y, n.z, d))  # exact in either mode
-
-
-def _unset(polygon) -> bool:
-    try:
-        object.__getattribute__(polygon, "plane")
-    except AttributeError:
-        return True
-    return False
-
-
 @pytest.mark.anchor("CPolygon::UnPack")
 @pytest.mark.parametrize("mode", [EXACT, FAST])
 def test_dat_polygon_planes_made_when_first_read_are_the_planes_the_dat_constructor_made(mode, monkeypatch):
@@ -84,13 +72,13 @@ def test_dat_polygon_planes_made_when_first_read_are_the_planes_the_dat_construc
     env, _ = two_rooms()
     structs = DatEnvironment.unpack(BinaryReader(dat.environment_record(env).data, mode)).cells
     lazy = [cell_struct.CellStruct.from_dat(s, mode) for s in structs.values()]
-    unread = [p for c in lazy for p in list(c.polygons.values()) + list(c.physics_polygons.values()) if _unset(p)]
+    unread = [p for c in lazy for p in list(c.polygons.values()) + list(c.physics_polygons.values()) if plane_unset(p)]
     monkeypatch.setattr(Polygon, "make_plane_when_read", Polygon.make_plane)  # as ACE: in the constructor
     eager = [cell_struct.CellStruct.from_dat(s, mode) for s in structs.values()]
     polygons = [(a, b) for x, y in zip(lazy, eager) for a, b in zip(list(x.polygons.values()) + list(x.physics_polygons.values()),
                                                                      list(y.polygons.values()) + list(y.physics_polygons.values()))]
     assert unread and len(unread) == len(polygons)
-    assert [_plane_bits(a) for a, _ in polygons] == [_plane_bits(b) for _, b in polygons]
+    assert [plane_bits(a) for a, _ in polygons] == [plane_bits(b) for _, b in polygons]
 
 
 def _tree(node) -> tuple:

@@ -15,6 +15,7 @@ from acconform.port.land_defs import WaterType
 from acconform.port.land.landblock import Landblock
 
 from land_helpers import WATER, landblock
+from lazy_planes import plane_bits, plane_unset
 
 F = np.float32
 TABLE = tuple(2.0 * i for i in range(256))
@@ -189,26 +190,13 @@ def test_indoor_scenes_build_no_terrain():
     assert not landblock.terrain_built() and landblock.land_cells == {}
 
 
-def _plane_bits(polygon) -> tuple:
-    n, d = polygon.plane.normal, polygon.plane.d
-    return tuple(float(v).hex() for v in (n.x, n.y, n.z, d))  # exact in either mode
-
-
 @pytest.mark.anchor("CLandBlockStruct::AddPolygon")
 @pytest.mark.parametrize("mode", [EXACT, FAST])
 def test_terrain_planes_made_when_first_read_are_the_planes_add_polygon_made(mode, monkeypatch):
     heights = [(i * 37 + i // 9 * 11) % 256 for i in range(81)]
     lazy = build(heights=heights, mode=mode)
-    unread = sum(1 for p in lazy.polygons if _unset(p))
+    unread = sum(1 for p in lazy.polygons if plane_unset(p))
     monkeypatch.setattr(lbs.Polygon, "make_plane_when_read", lbs.Polygon.make_plane)  # as ACE: at AddPolygon
     eager = build(heights=heights, mode=mode)
-    assert unread == len(lazy.polygons) == 128 and not any(_unset(p) for p in eager.polygons)
-    assert [_plane_bits(p) for p in lazy.polygons] == [_plane_bits(p) for p in eager.polygons]
-
-
-def _unset(polygon) -> bool:
-    try:
-        object.__getattribute__(polygon, "plane")
-    except AttributeError:
-        return True
-    return False
+    assert unread == len(lazy.polygons) == 128 and not any(plane_unset(p) for p in eager.polygons)
+    assert [plane_bits(p) for p in lazy.polygons] == [plane_bits(p) for p in eager.polygons]
