@@ -1,6 +1,7 @@
 """Draw cost side by side: ms per drawn scene, per kind, for this tree and for another revision.
 
-    python benchmarks/bench_draw.py [--against d257643] [-n 300] [--rounds 3] [--seed 0]
+    python benchmarks/bench_draw.py [--against 298b4e3] [--kinds terrain,bsp,obstacles,indoor,buildings] [-n 300]
+                                    [--rounds 3] [--seed 0]
 
 Each measurement is its own subprocess (one revision's `acconform` imported per process: this
 tree's, or REV's through benchmarks/revision.py's shim), drawing n scenes of one kind with
@@ -33,8 +34,6 @@ got = list(sample_scenes((kind,), n, seed))
 print(json.dumps({"ms": (time.perf_counter() - t) * 1000 / len(got)}))
 """
 
-KINDS = ("terrain", "bsp", "obstacles")
-
 
 def _time(env, kind: str, n: int, seed: int) -> float:
     r = subprocess.run([sys.executable, "-c", CHILD, kind, str(n), str(seed)], env=env, capture_output=True,
@@ -46,24 +45,28 @@ def _time(env, kind: str, n: int, seed: int) -> float:
 
 def main() -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--against", default="d257643")
+    p.add_argument("--against", default="298b4e3")  # issue 22's baseline
+    p.add_argument("--kinds", default="terrain,bsp,obstacles,indoor,buildings",
+                   help="kinds drawn (a kind the other revision cannot draw fails with its own error line)")
     p.add_argument("-n", type=int, default=300)
     p.add_argument("--rounds", type=int, default=3)
     p.add_argument("--seed", type=int, default=0)
     a = p.parse_args()
+    kinds = a.kinds.split(",")
     here = dict(os.environ)
     here.pop("PYTHONPATH", None)
-    times = {(rev, k): [] for rev in ("this", a.against) for k in KINDS}
+    times = {(rev, k): [] for rev in ("this", a.against) for k in kinds}
     with revision_env(a.against) as old:
         for _ in range(a.rounds):
-            for k in KINDS:
+            for k in kinds:
                 times[("this", k)].append(_time(here, k, a.n, a.seed))
                 times[(a.against, k)].append(_time(old, k, a.n, a.seed))
-    print(f"ms per drawn scene ({a.n} scenes, fastest of {a.rounds} rounds; slowest in brackets)")
+    print(f"ms per drawn scene ({a.n} scenes, fastest of {a.rounds} rounds; slowest in brackets); "
+          f"load average {os.getloadavg()[0]:.1f}; ratio = {a.against} / this tree")
     print(f"{'kind':10} {'this tree':>18} {a.against:>18} {'ratio':>7}")
-    for k in KINDS:
+    for k in kinds:
         t, o = times[("this", k)], times[(a.against, k)]
-        print(f"{k:10} {min(t):8.2f} ({max(t):6.2f}) {min(o):8.2f} ({max(o):6.2f}) {min(t) / min(o):7.2f}")
+        print(f"{k:10} {min(t):8.2f} ({max(t):6.2f}) {min(o):8.2f} ({max(o):6.2f}) {min(o) / min(t):7.2f}")
     return 0
 
 

@@ -26,6 +26,7 @@ ground below the cells: a landblock without terrain, as a dungeon's is.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -269,6 +270,11 @@ def physics_bsp(physics: list, max_depth: int = 4) -> BSPNode | BSPLeaf:
     cell) is solid. Node and leaf spheres bound the polygons below them. Below `max_depth` nodes
     a leaf holds what is left (a deeper tree costs both sides more per scene, and the corpus more
     bytes, for the same polygons)."""
+    return _physics_bsp(tuple(physics), max_depth)
+
+
+@functools.lru_cache(maxsize=4096)  # a piece's shape recurs across scenes; its tree is an immutable record
+def _physics_bsp(physics: tuple, max_depth: int) -> BSPNode | BSPLeaf:
     polys = [rec for rec, _ in physics]
     planes = [plane_of(rec.vertices) for rec in polys]
     boundary = [b for _, b in physics]
@@ -277,14 +283,20 @@ def physics_bsp(physics: list, max_depth: int = 4) -> BSPNode | BSPLeaf:
         pts = [v for i in ids for v in polys[i].vertices]
         return sh.bounding_sphere(pts) if pts else SphereRec((0.0, 0.0, 0.0), 0.0)
 
+    # which side of each plane each polygon reaches, once per plane (a node only picks among them)
+    reach = {}
+    for k, pl in enumerate(planes):
+        if pl not in reach:
+            ds = [[plane_distance(pl, v) for v in rec.vertices] for rec in polys]
+            reach[pl] = ([max(d) > -SPLIT_TOL for d in ds], [min(d) < SPLIT_TOL for d in ds])
+
     def build(ids, candidates, solid, depth):
         # the plane that splits best (the larger side smallest); a leaf when none splits
         best = None
         for k in candidates:
-            pl = planes[k]
-            dists = [[plane_distance(pl, v) for v in polys[i].vertices] for i in ids]
-            front = [i for i, ds in zip(ids, dists) if max(ds) > -SPLIT_TOL]
-            back = [i for i, ds in zip(ids, dists) if min(ds) < SPLIT_TOL]
+            in_front, behind = reach[planes[k]]
+            front = [i for i in ids if in_front[i]]
+            back = [i for i in ids if behind[i]]
             size = max(len(front), len(back))
             if (len(front) < len(ids) or len(back) < len(ids)) and (best is None or size < best[0]):
                 best = (size, k, front, back)
