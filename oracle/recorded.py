@@ -12,7 +12,9 @@ as `Entry`s, and `scenes(entries)` is a lazy sequence that parses each record wh
 for, so a replay's first case starts at once and each worker parses only its own records. A
 scene handed out by `scenes` is answered by `run` from the record it came from (by identity, or
 by key when asked for late); any other scene is looked up by key, in an index of every record
-built the first time one is needed (that parses the whole corpus: tens of seconds).
+built the first time one is needed. Keying parses the whole corpus (tens of seconds), so each
+shard's keys are kept in the user's cache ($XDG_CACHE_HOME/acconform/corpus-keys-1, named by the
+shard's SHA-256) and later runs read them instead.
 
 A shard that cannot be read (truncated or corrupt gzip) or a line that is not a record raises
 `CorpusCorrupt` naming the shard and the line -- when loading, or when the record is parsed; with
@@ -25,8 +27,10 @@ from __future__ import annotations
 import gzip
 import hashlib
 import json
+import os
 import random
 import re
+import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -215,6 +219,7 @@ class RecordedOracle:
         self._handed: dict[int, tuple[Scene, Entry, dict]] = {}  # id(scene) -> (scene, entry, outcome JSON)
         self._handed_keys: dict[str, Entry] = {}  # scene key -> entry, of every scene handed out and keyed
         self._unkeyed: list[Entry] = []  # handed out, not keyed yet: keyed when `run` first needs a key
+        self._spans: list[tuple[Path, int, int]] = []  # each shard's entries: (shard, first, end)
         versions: set[Versions] = set()
         for misnamed in sorted(p for p in self.corpus_dir.glob("*.jsonl.gz") if not SHARD_RE.match(p.name)):
             self._bad(CorpusCorrupt(f"{misnamed}: not read: a shard is named <kind>-NNNN.jsonl.gz (e.g. "
@@ -223,6 +228,7 @@ class RecordedOracle:
             kind = SHARD_RE.match(shard.name)["kind"]
             if progress is not None:
                 progress(f"loading {shard.name} ({len(self.entries)} records so far)")
+            first = len(self.entries)
             try:
                 for lineno, line in shard_lines(shard):
                     where = f"{shard} line {lineno}"
@@ -236,6 +242,7 @@ class RecordedOracle:
                     versions.add(v)
             except CorpusCorrupt as e:
                 self._bad(e)
+            self._spans.append((shard, first, len(self.entries)))
         if not self.entries:
             raise CorpusMissing(f"the recorded-oracle corpus at {self.corpus_dir} holds no records "
                                 "(record some with `acconform record`)")
@@ -263,13 +270,25 @@ class RecordedOracle:
             if self.progress is not None and progress is None:
                 self.progress(f"indexing {len(self.entries)} records by scene key")
             index: dict[str, Entry] = {}
-            for i, e in enumerate(self.entries):
-                if progress is not None and i % 500 == 0:
-                    progress(i, len(self.entries))
-                try:
-                    index.setdefault(_doc_key(e.doc()), e)
-                except CorpusCorrupt as err:
-                    self._bad(err)
+            for shard, first, end in self._spans:
+                keys = _kept_keys(shard, end - first)
+                fresh = keys is None
+                if fresh:
+                    keys = []
+                for i in range(first, end):
+                    if progress is not None and i % 500 == 0:
+                        progress(i, len(self.entries))
+                    e = self.entries[i]
+                    if fresh:
+                        try:
+                            keys.append(_doc_key(e.doc()))
+                        except CorpusCorrupt as err:
+                            self._bad(err)
+                            keys.append(None)
+                    if keys[i - first] is not None:
+                        index.setdefault(keys[i - first], e)
+                if fresh and None not in keys:
+                    _keep_keys(shard, keys)
             if progress is not None:
                 progress(len(self.entries), len(self.entries))
             self._index = index
@@ -406,6 +425,42 @@ def _doc_key(doc) -> str:
     scene.pop("name", None)
     # the same canonical form scene_key hashes: the stored scene JSON is what Scene.to_json wrote
     return hashlib.sha256(_canonical(scene).encode()).hexdigest()
+
+
+# the cached key lists (`_kept_keys`) are named by this and by the shard's bytes: change it when the
+# key's canonical form (`_canonical`) changes
+KEYS_CACHE = "corpus-keys-1"
+
+
+def _keys_file(shard: Path) -> Path:
+    from .config import cache_dir
+
+    return cache_dir() / KEYS_CACHE / (hashlib.sha256(shard.read_bytes()).hexdigest() + ".json")
+
+
+def _kept_keys(shard: Path, n: int) -> list[str] | None:
+    """The scene keys of a shard's n records, as a run before this one found them, or None. Keying
+    parses and re-serialises every scene (tens of seconds for the committed corpus); a shard's keys
+    follow from its bytes alone, so they are kept in the user's cache under the shard's SHA-256."""
+    try:
+        keys = json.loads(_keys_file(shard).read_text())
+    except (OSError, ValueError):
+        return None
+    ok = isinstance(keys, list) and len(keys) == n and all(isinstance(k, str) and len(k) == 64 for k in keys)
+    return keys if ok else None
+
+
+def _keep_keys(shard: Path, keys: list[str]) -> None:
+    """Keep a shard's keys for the next run; a cache that cannot be written costs only that."""
+    try:
+        path = _keys_file(shard)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+        with os.fdopen(fd, "w") as f:
+            json.dump(keys, f)
+        os.replace(tmp, path)  # whole or not at all, whatever other processes key the same shard
+    except OSError:
+        pass
 
 
 def _canonical(scene_json: dict) -> str:
