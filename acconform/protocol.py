@@ -172,6 +172,7 @@ class Implementation:
         self._proc = None
         self._pid = None
         self._buf = bytearray()
+        self._out = bytearray()  # requests' bytes the process's stdin has not taken yet
         self._next_id = 0
         self._inflight: deque[tuple[int, Scene]] = deque()  # requests sent, answers not yet read, in order
         self._answers: dict[int, Outcome] = {}
@@ -220,6 +221,7 @@ class Implementation:
             raise ImplementationError(f"cannot start implementation {self.command!r}: {e.strerror or e}") from None
         self._pid = os.getpid()
         self._buf = bytearray()
+        self._out = bytearray()
         self._sel = selectors.DefaultSelector()
         self._sel.register(self._proc.stdout.fileno(), selectors.EVENT_READ)
         os.set_blocking(self._proc.stdin.fileno(), False)
@@ -277,6 +279,8 @@ class Implementation:
         return f"; stderr: {(named or lines)[-1][:200]}{KEPT}"
 
     def _readline(self, timeout: float) -> str:
+        """The next answer line, writing what is left of the requests sent meanwhile (a big scene
+        waits in `_out` while the process works on the one before it)."""
         deadline = time.monotonic() + timeout
         fd = self._proc.stdout.fileno()
         while True:
@@ -286,16 +290,22 @@ class Implementation:
                 del self._buf[:nl + 1]
                 return line.decode("utf-8", "replace")
             left = deadline - time.monotonic()
-            if left <= 0 or not self._sel.select(left):
+            events = self._sel.select(left) if left > 0 else []
+            if not events:
                 raise _Failed(f"{TIMEOUT}: no answer within {timeout:g} s; the process was killed and restarted")
-            data = os.read(fd, 1 << 16)
-            if not data:
-                code = self._proc.wait()
-                raise _Failed(f"{CRASH}: the process exited with code {code}{self._stderr_tail()}")
-            self._buf += data
+            for key, _ in events:
+                if key.fd != fd:
+                    self._flush()
+                    continue
+                data = os.read(fd, 1 << 16)
+                if not data:
+                    code = self._proc.wait()
+                    raise _Failed(f"{CRASH}: the process exited with code {code}{self._stderr_tail()}")
+                self._buf += data
 
     def _kill(self) -> None:
         p, self._proc = self._proc, None
+        self._out = bytearray()
         if p is None:
             return
         if self._sel is not None:
@@ -438,31 +448,29 @@ class Implementation:
         return rid
 
     def _write(self, data: bytes) -> None:
-        """Write without ever blocking for longer than the time limit: a process that stops reading
-        (a hang) would otherwise hold the harness on a full pipe. Whatever goes wrong here shows up
-        when the answer is read (an exit code, or no answer in time)."""
+        """Send a request without ever blocking: a process busy with the request before it (or hung)
+        stops reading, and a request longer than the pipe holds would otherwise hold the harness,
+        or be cut off half-written, the next one's text appended to it. What does not fit waits in
+        `_out` and is written as the pipe drains, while the harness waits for answers (`_readline`)."""
+        self._out += data
+        self._flush()
+
+    def _flush(self) -> None:
+        """Write what the pipe takes of `_out`; watch the pipe for room while anything is left. A
+        process that has gone shows up when its answer is read (its exit code)."""
         fd = self._proc.stdin.fileno()
-        view = memoryview(data)
-        try:  # most requests fit in the pipe at once
-            view = view[os.write(fd, view):]
+        try:
+            while self._out:
+                del self._out[:os.write(fd, self._out)]
         except BlockingIOError:
             pass
         except (BrokenPipeError, ConnectionResetError):
-            return
-        if not view:
-            return
-        deadline = time.monotonic() + self.timeout
-        with selectors.DefaultSelector() as sel:
-            sel.register(fd, selectors.EVENT_WRITE)
-            while view:
-                try:
-                    view = view[os.write(fd, view):]
-                except BlockingIOError:
-                    left = deadline - time.monotonic()
-                    if left <= 0 or not sel.select(left):
-                        return
-                except (BrokenPipeError, ConnectionResetError):
-                    return
+            self._out.clear()
+        watching = fd in self._sel.get_map()
+        if self._out and not watching:
+            self._sel.register(fd, selectors.EVENT_WRITE)
+        elif not self._out and watching:
+            self._sel.unregister(fd)
 
     def _read_answer(self) -> None:
         """Read the answer to the oldest request in flight, or give it a verdict and restart. The

@@ -232,3 +232,46 @@ def test_a_recorded_scene_sent_as_its_text_is_what_the_harness_writes_for_the_sc
             assert text is not None, e.where
             assert dumps_compact(Scene.from_json(json.loads(text.scene)).to_json()) == text.scene, e.where
             assert json.loads(text.outcome) == e.doc()["outcome"], e.where
+
+
+# answers Outcome(ok=True) to every request; its first process (no file at sys.argv[2] yet) waits
+# sys.argv[1] seconds before its first answer, reading nothing meanwhile
+SLOW_FIRST = """
+import json, os, sys, time
+from acconform.codec import dumps_compact
+from acconform.outcome import Outcome
+from acconform.protocol import handshake
+print(dumps_compact(handshake("slow-first", "1")), flush=True)
+first = not os.path.exists(sys.argv[2])
+open(sys.argv[2], "w").close()
+for n, line in enumerate(sys.stdin):
+    if n == 0 and first:
+        time.sleep(float(sys.argv[1]))
+    print(dumps_compact({"id": json.loads(line)["id"], "outcome": Outcome(ok=True).to_json()}), flush=True)
+"""
+
+
+def test_a_request_longer_than_the_pipe_sent_ahead_to_a_stalled_process_is_never_cut_off(tmp_path):
+    """The harness sends the next scene while the process works on the one before. A scene longer
+    than the pipe holds waits, whole, until the process reads it: when the process stalls past the
+    time limit, the scene it stalled on is the timeout and the one behind it goes whole to the
+    restarted process. (It was written in part and given up on, and the next request's text then
+    followed the half-written one.)"""
+    from acconform.case import jsonl_lines
+    from acconform.oracle import default_corpus
+    from acconform.outcome import Outcome
+    from acconform.scene import Scene
+
+    big = next(Scene.from_json(json.loads(line)["scene"]) for shard in sorted(default_corpus().glob("ticks-*.jsonl.gz"))
+               for _, line in jsonl_lines(shard) if len(line) > 140_000)
+    small = Scene.from_json(json.loads(next(jsonl_lines(default_corpus() / "terrain-0000.jsonl.gz"))[1])["scene"])
+    impl = Implementation(f"{sys.executable} -c '{SLOW_FIRST}' 1.6 {tmp_path / 'started'}", timeout=1)
+    try:
+        impl.prefetch(small)
+        impl.prefetch(big)  # more than the pipe takes, while the process sleeps on `small`
+        assert impl(small).error.startswith(TIMEOUT)
+        assert impl(big) == Outcome(ok=True)
+        assert impl(small.replace(name="after the big one")) == Outcome(ok=True)
+        assert impl.restarts == 1
+    finally:
+        impl.close()
