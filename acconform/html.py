@@ -69,7 +69,9 @@ def _terrain(scene) -> list[tuple[tuple, ...]]:
             if not lb.has_terrain:
                 continue
             block = lscape.get_landblock(lb.id)
-            for poly in getattr(block, "polygons", None) or ():
+            # cell by cell (each built as it is read: a landblock makes a cell's polygons with it)
+            polygons = [p for key, cell in block.land_cells.items() if key < 0x100 for p in cell.polygons]
+            for poly in polygons:
                 pts = [v.origin for v in poly.vertices if v is not None]
                 if len(pts) == 3:
                     tris.append(tuple(_glob(lb.id, (float(p.x), float(p.y), float(p.z))) for p in pts))

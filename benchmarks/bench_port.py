@@ -3,9 +3,9 @@
     python benchmarks/bench_port.py [--n 60] [--generated 40] [--repeat 3]
     python benchmarks/bench_port.py --against HEAD~3      # old/new ratio, measured in one run
 
-Scenes: the recorded corpus (tests/data/corpus/coreclr/{terrain,bsp,obstacles,indoor}-*.jsonl.gz, the
-first --n of each kind), the tick scenes of examples/ (a revision that cannot read them shows none)
-and --generated scenes from acconform.strategies.sample_scenes (seed 1).
+Scenes: the recorded corpus (tests/data/corpus/coreclr/{terrain,bsp,obstacles,indoor,buildings,ticks}-*.jsonl.gz,
+the first --n of each kind; a revision that cannot read a kind's records shows none of them) and
+--generated scenes from acconform.strategies.sample_scenes (seed 1).
 Each scene set runs --repeat times through run_scene in exact and fast mode, and in exact mode with
 a branches.Trace as a campaign runs the built-in port ("exact+trace"), computing as .NET 10 does;
 the best pass is reported as ms/scene (process CPU time, see CLOCK), with the garbage collector
@@ -34,13 +34,15 @@ import time
 from pathlib import Path
 
 from revision import ROOT, revision_env  # noqa: E402 (benchmarks run as scripts)
-KINDS = ("terrain", "bsp", "obstacles", "indoor")
+KINDS = ("terrain", "bsp", "obstacles", "indoor", "buildings", "ticks")
 # CPU time of this process, not wall time: the port is single-threaded, and the machine is shared
 # (tests and oracles run beside a benchmark), so wall time mostly measured the neighbours.
 CLOCK = time.process_time
 
 
 def load_corpus(kind: str, n: int):
+    """The first n records of the kind that this revision can read (an older one reads no building or
+    tick records)."""
     from acconform.case import parse_document
     from acconform.oracle import default_corpus
 
@@ -48,24 +50,13 @@ def load_corpus(kind: str, n: int):
     for path in sorted(default_corpus().glob(f"{kind}-*.jsonl.gz")):
         with gzip.open(path, "rt", encoding="utf-8") as f:
             for line in f:
-                rec = parse_document(json.loads(line))
+                try:
+                    rec = parse_document(json.loads(line))
+                except Exception:  # a record format this revision does not know
+                    continue
                 out.append(getattr(rec, "scene", rec))
                 if len(out) >= n:
                     return out
-    return out
-
-
-def load_ticks() -> list:
-    """The tick scenes of examples/ this revision can read."""
-    from acconform.case import parse_document
-
-    out = []
-    for path in sorted((ROOT / "examples").glob("tick_*.json")):
-        try:
-            rec = parse_document(json.loads(path.read_text()))
-        except Exception:  # an older revision has no tick scenes
-            continue
-        out.append(getattr(rec, "scene", rec))
     return out
 
 
@@ -192,7 +183,6 @@ def generated_scenes(args) -> list:
 
 def run(args) -> dict:
     sets = {k: load_corpus(k, args.n) for k in KINDS}
-    sets["ticks"] = load_ticks()
     if args.generated:
         sets["generated"] = generated_scenes(args)
     results = {}

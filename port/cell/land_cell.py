@@ -28,7 +28,8 @@ TERRAIN_POLYS_LIMIT = 256  # remembered points per cell before the cell forgets 
 class LandCell(SortCell):
     """One 24 m outdoor cell: two terrain triangles over the ObjCell state the physics reads."""
 
-    __slots__ = ("polygons", "in_view", "terrain_polys")
+    # `_steps`: the construction an unbuilt cell still owes (see unbuilt_land_cell); unset once built
+    __slots__ = ("polygons", "in_view", "terrain_polys", "_steps")
 
     @anchor("CLandCell::CLandCell", "LandCell.cs:LandCell(uint)")
     def __init__(self, cell_id: int, mode: Mode):
@@ -154,6 +155,77 @@ class LandCell(SortCell):
         normal = Vector3(offset.x, offset.y, s(0.0))
         transition.collision_info.set_collision_normal(normal)
         return True
+
+
+# ---------------------------------------------------------------- cells built when first read
+
+
+class _UnbuiltLandCell(LandCell):
+    """A LandCell its landblock has made but not yet built: the first read or write of any of its
+    fields or methods builds it (`_build`), and it is a plain LandCell from then on (its class is
+    swapped; the layout is LandCell's). Equality, hashing and dictionary keys go by identity, so a
+    cell held unbuilt in a CellArray or a memory is the same cell once built."""
+
+    __slots__ = ()
+
+    def __getattribute__(self, name: str):
+        _build(self)
+        return object.__getattribute__(self, name)
+
+    def __setattr__(self, name: str, value) -> None:
+        _build(self)
+        object.__setattr__(self, name, value)
+
+
+_STEPS = LandCell._steps  # the slot's descriptor: reads and writes it without the unbuilt class's hooks
+
+
+def _build(cell: LandCell) -> None:
+    """Runs the steps an unbuilt cell owes, in the order its landblock's construction made them."""
+    steps = _STEPS.__get__(cell)
+    object.__setattr__(cell, "__class__", LandCell)
+    del cell._steps
+    for owner, name, args in steps:
+        if owner is None:
+            setattr(cell, name, args)  # a field assignment
+        else:
+            getattr(owner if owner is not _SELF else cell, name)(*args)  # looked up now: tracing may wrap it
+
+
+_SELF = object()  # a step's owner: the cell itself
+
+
+@harness("a LandCell whose construction (the constructor, then what its landblock does to it) runs when it is first read")
+def unbuilt_land_cell(cell_id: int, mode: Mode) -> LandCell:
+    """``new LandCell(cellID)``, run when the cell is first read, with every step `when_built` or
+    `assign_when_built` adds after it. A landblock makes 64 cells and a transition reads a few: the
+    rest are never built. Every step reads only what its landblock fixed at construction (its
+    vertices, polygons and ids), so building later builds the same cell (pinned in
+    tests/port/land/test_landblock_struct.py)."""
+    cell = _UnbuiltLandCell.__new__(_UnbuiltLandCell)
+    _STEPS.__set__(cell, [(_SELF, "__init__", (cell_id, mode))])
+    return cell
+
+
+@harness("whether a LandCell is built (an unbuilt one builds when first read)")
+def is_built(cell) -> bool:
+    return type(cell) is not _UnbuiltLandCell
+
+
+@harness("owner.name(*args) on a LandCell's behalf: now if the cell is built, else when it is built")
+def when_built(cell: LandCell, owner, name: str, *args) -> None:
+    if type(cell) is _UnbuiltLandCell:
+        _STEPS.__get__(cell).append((owner, name, args))
+    else:
+        getattr(owner, name)(*args)
+
+
+@harness("cell.field = value: now if the cell is built, else when it is built")
+def assign_when_built(cell: LandCell, field: str, value) -> None:
+    if type(cell) is _UnbuiltLandCell:
+        _STEPS.__get__(cell).append((None, field, value))
+    else:
+        setattr(cell, field, value)
 
 
 # ---------------------------------------------------------------- static helpers

@@ -22,9 +22,12 @@ BSP_TYPE_PHYSICS = 1
 BSP_TYPE_CELL = 2
 
 
+_ASCII = bytes(range(0x80)) + b"?" * 0x80  # Encoding.ASCII: a byte above 0x7F decodes as '?'
+
+
 @harness(".NET Encoding.ASCII.GetString(bytes) then ACE's string Reverse (a byte above 0x7F reads '?')")
 def read_tag(reader) -> str:
-    return "".join(chr(b) if b < 0x80 else "?" for b in reader.read_bytes(4))[::-1]
+    return reader.read_bytes(4).translate(_ASCII).decode("ascii")[::-1]
 
 
 @dataclass(slots=True, eq=False)

@@ -20,7 +20,7 @@ from acconform.port.anchors import anchor, harness
 from acconform.port.constants import EPSILON
 from acconform.port import db_obj, land_defs
 from acconform.port.frame import AFrame, Position
-from acconform.port.cell.land_cell import LandCell
+from acconform.port.cell.land_cell import LandCell, assign_when_built
 from acconform.port.land_defs import Direction
 from acconform.port.land.landblock_struct import LandblockStruct
 from acconform.port.vec import dot2d
@@ -152,12 +152,12 @@ class Landblock(LandblockStruct):
     def terrain_generated(self, cells: dict) -> None:
         if self.__dict__.get("post_init_done"):
             for land_cell in cells.values():
-                land_cell.cur_landblock = self
+                assign_when_built(land_cell, "cur_landblock", self)
 
     @anchor("CLandBlock::init_landcell", "Landblock.cs:init_landcell")
     def init_landcell(self) -> None:
         for land_cell in self.land_cells.values():
-            land_cell.cur_landblock = self
+            assign_when_built(land_cell, "cur_landblock", self)  # now, or when the cell is built
 
     @anchor("CLandBlock::GetZ", "Landblock.cs:GetZ")
     def get_z(self, lscape, point: Vector3):

@@ -7,6 +7,11 @@ cached vertices/polygons when VertexCache/PolygonCache are Enabled, which ACE le
 ported. Init's 64 throwaway LandCells (replaced by InitPVArrays before anyone sees them) are
 not built either.
 
+The 64 LandCells are made unbuilt (land_cell.unbuilt_land_cell): what InitPVArrays,
+ConstructPolygons and CalcWater do to a cell (its constructor, its two polygons, id, frame and
+water type) runs when the cell is first read, in that order; the landblock's own fields (vertices,
+water type) are built at once.
+
 The land height table is ACE's static LandDefs.LandHeightTable; here it comes with the
 constructor (the scene carries it), converted to the run's scalar type.
 """
@@ -20,7 +25,7 @@ from ..constants import WATER_DEPTH_PARTIAL_WATER, WATER_DEPTH_DRY
 from acconform.port.anchors import anchor, harness
 from acconform.port.geom.polygon import Polygon, Vertex
 from acconform.port import land_defs
-from acconform.port.cell.land_cell import LandCell
+from acconform.port.cell.land_cell import LandCell, assign_when_built, unbuilt_land_cell, when_built
 from acconform.port.land_defs import Direction, WaterType
 
 # SurfChar: 1 for the five water terrain types (0x10..0x14), indexed by (terrain >> 2) & 0x1F
@@ -123,7 +128,10 @@ class LandblockStruct:
 
     @anchor("CLandBlockStruct::AddPolygon", "LandblockStruct.cs:AddPolygon")
     def add_polygon(self, poly_idx: int, _v0: int, _v1: int, _v2: int) -> Polygon:
-        polygon = self.polygons[poly_idx]
+        """The polygon is InitPVArrays' ``new Polygon(idx, 3, CullMode.Landblock)``, made here: each
+        index is added once, by ConstructPolygons right after InitPVArrays (a scene never regenerates),
+        and only when its cell is first read."""
+        polygon = self.polygons[poly_idx] = Polygon(poly_idx, 3, CullMode.Landblock)
         v0, v1, v2 = _v0, _v1, _v2  # (short) casts: indices below 81
 
         polygon.vertices[0] = self.vertex_array[v0]
@@ -171,16 +179,16 @@ class LandblockStruct:
             for x in range(self.side_cell_count):
                 for y in range(self.side_cell_count):
                     cell_has_water, cell_fully_flooded = self.calc_cell_water(x, y)
-                    cell = self.land_cells[x * self.side_cell_count + y]
+                    cell = self.land_cells[x * self.side_cell_count + y]  # its field set when it is built
                     if cell_has_water:
                         has_water = True
                         if cell_fully_flooded:
-                            cell.water_type = WaterType.EntirelyWater
+                            assign_when_built(cell, "water_type", WaterType.EntirelyWater)
                         else:
-                            cell.water_type = WaterType.PartiallyWater
+                            assign_when_built(cell, "water_type", WaterType.PartiallyWater)
                             waterblock = False
                     else:
-                        cell.water_type = WaterType.NotWater
+                        assign_when_built(cell, "water_type", WaterType.NotWater)
                         waterblock = False
         if has_water:
             self.water_type = WaterType.EntirelyWater if waterblock else WaterType.PartiallyWater
@@ -206,57 +214,9 @@ class LandblockStruct:
             origin_x = poly_num
 
             for y in range(self.side_cell_count):
-                lcoord_y = ly + y
-                magic_b = seed_b
-                magic_a = wrap_u32(seed_a + 1813693831)
-
-                for i in range(vpc):
-                    idx_i = vertex_cnt + i
-                    idx_j = col_vertex_cnt
-
-                    for j in range(vpc):
-                        # int * uint is long arithmetic in C#; the (uint) cast keeps the low 32 bits
-                        split_dir = wrap_u32((ly * vpc + idx_j) * magic_a - magic_b - 1369149221)
-                        poly_idx = (vpc * i + j) * 2
-
-                        cell_idx = x * self.side_cell_count + y
-                        vert_idx = idx_i * self.side_vertex_count + idx_j
-                        first_vertex = (idx_i * self.side_poly_count + idx_j) * 2
-                        next_vert_idx = (idx_i + 1) * self.side_vertex_count + idx_j
-
-                        lcell = self.land_cells[cell_idx]
-
-                        if split_cuts_se_to_nw(split_dir):
-                            #  2    1---0
-                            #  | \   \  |
-                            #  |  \   \ |
-                            #  0---1    2
-                            self.sw_to_ne_cut[cell_idx] = False
-                            lcell.polygons[poly_idx] = self.add_polygon(first_vertex, vert_idx, next_vert_idx, vert_idx + 1)
-                            lcell.polygons[poly_idx + 1] = self.add_polygon(
-                                first_vertex + 1, next_vert_idx + 1, vert_idx + 1, next_vert_idx
-                            )
-                        else:
-                            #     2   2---1
-                            #    / |  |  /
-                            #   /  |  | /
-                            #  0---1  0
-                            self.sw_to_ne_cut[cell_idx] = True
-                            lcell.polygons[poly_idx] = self.add_polygon(first_vertex, vert_idx, next_vert_idx, next_vert_idx + 1)
-                            lcell.polygons[poly_idx + 1] = self.add_polygon(first_vertex + 1, vert_idx, next_vert_idx + 1, vert_idx + 1)
-                        idx_j += 1
-                    magic_a = wrap_u32(magic_a + 214614067)
-                    magic_b = wrap_u32(magic_b + 1109124029)
-
-                cell_id = wrap_u32(land_defs.lcoord_to_gid(lcoord_x, lcoord_y, self.mode.runtime))
-                land_cell = self.land_cells[x * self.side_cell_count + y]
-                land_cell.id = cell_id
-                land_cell.pos.obj_cell_id = cell_id
-                s = self.mode.scalar
-                origin = land_cell.pos.frame.origin
-                origin = origin.with_x(s(origin_x * land_defs.HALF_SQUARE_LENGTH))
-                origin = origin.with_y(s(origin_y * land_defs.HALF_SQUARE_LENGTH))
-                land_cell.pos.frame.origin = origin
+                # the cell's polygons, id and frame: built when the cell is first read (land_cell.unbuilt_land_cell)
+                when_built(self.land_cells[x * self.side_cell_count + y], self, "construct_cell_polygons",
+                           x, y, lcoord_x, ly, seed_a, seed_b, vertex_cnt, col_vertex_cnt, origin_x, origin_y)
 
                 origin_y += 2
                 col_vertex_cnt += vpc
@@ -264,6 +224,64 @@ class LandblockStruct:
             seed_b = wrap_u32(seed_b + 1109124029 * vpc)
             seed_a = wrap_u32(seed_a + 214614067 * vpc)
             poly_num += 2
+
+    @harness("ConstructPolygons' work on one cell (the body of its loop over y), run when the cell is first read")
+    def construct_cell_polygons(self, x: int, y: int, lcoord_x, ly: int, seed_a: int, seed_b: int,
+                                vertex_cnt: int, col_vertex_cnt: int, origin_x: int, origin_y: int) -> None:
+        """ACE's lines, with the loop's counters as construct_polygons had them for this cell. Its
+        SWtoNEcut entry is set here too, so only a built cell's is (nothing in ACE's physics reads them)."""
+        vpc = land_defs.VERTEX_PER_CELL
+        lcoord_y = ly + y
+        magic_b = seed_b
+        magic_a = wrap_u32(seed_a + 1813693831)
+
+        for i in range(vpc):
+            idx_i = vertex_cnt + i
+            idx_j = col_vertex_cnt
+
+            for j in range(vpc):
+                # int * uint is long arithmetic in C#; the (uint) cast keeps the low 32 bits
+                split_dir = wrap_u32((ly * vpc + idx_j) * magic_a - magic_b - 1369149221)
+                poly_idx = (vpc * i + j) * 2
+
+                cell_idx = x * self.side_cell_count + y
+                vert_idx = idx_i * self.side_vertex_count + idx_j
+                first_vertex = (idx_i * self.side_poly_count + idx_j) * 2
+                next_vert_idx = (idx_i + 1) * self.side_vertex_count + idx_j
+
+                lcell = self.land_cells[cell_idx]
+
+                if split_cuts_se_to_nw(split_dir):
+                    #  2    1---0
+                    #  | \   \  |
+                    #  |  \   \ |
+                    #  0---1    2
+                    self.sw_to_ne_cut[cell_idx] = False
+                    lcell.polygons[poly_idx] = self.add_polygon(first_vertex, vert_idx, next_vert_idx, vert_idx + 1)
+                    lcell.polygons[poly_idx + 1] = self.add_polygon(
+                        first_vertex + 1, next_vert_idx + 1, vert_idx + 1, next_vert_idx
+                    )
+                else:
+                    #     2   2---1
+                    #    / |  |  /
+                    #   /  |  | /
+                    #  0---1  0
+                    self.sw_to_ne_cut[cell_idx] = True
+                    lcell.polygons[poly_idx] = self.add_polygon(first_vertex, vert_idx, next_vert_idx, next_vert_idx + 1)
+                    lcell.polygons[poly_idx + 1] = self.add_polygon(first_vertex + 1, vert_idx, next_vert_idx + 1, vert_idx + 1)
+                idx_j += 1
+            magic_a = wrap_u32(magic_a + 214614067)
+            magic_b = wrap_u32(magic_b + 1109124029)
+
+        cell_id = wrap_u32(land_defs.lcoord_to_gid(lcoord_x, lcoord_y, self.mode.runtime))
+        land_cell = self.land_cells[x * self.side_cell_count + y]
+        land_cell.id = cell_id
+        land_cell.pos.obj_cell_id = cell_id
+        s = self.mode.scalar
+        origin = land_cell.pos.frame.origin
+        origin = origin.with_x(s(origin_x * land_defs.HALF_SQUARE_LENGTH))
+        origin = origin.with_y(s(origin_y * land_defs.HALF_SQUARE_LENGTH))
+        land_cell.pos.frame.origin = origin
 
     @anchor("CLandBlockStruct::ConstructVertices", "LandblockStruct.cs:ConstructVertices")
     def construct_vertices(self) -> None:
@@ -328,9 +346,11 @@ class LandblockStruct:
         num_cells = self.side_cell_count * self.side_cell_count
 
         self.vertex_array = [Vertex(index=i) for i in range(num_verts)]
-        self.polygons = [Polygon(i, 3, CullMode.Landblock) for i in range(num_squares * 2)]
+        self.polygons = [None] * (num_squares * 2)  # each new Polygon(...) made by add_polygon, with its cell
         self.sw_to_ne_cut = [False] * num_squares
-        self.land_cells = {i: LandCell(wrap_u32((self.id & land_defs.BLOCK_MASK) + i), self.mode) for i in range(num_cells)}
+        # new LandCell(...), built when first read (most of a landblock's cells never are)
+        self.land_cells = {i: unbuilt_land_cell(wrap_u32((self.id & land_defs.BLOCK_MASK) + i), self.mode)
+                           for i in range(num_cells)}
 
     @anchor("CLandBlockStruct::calc_water_depth", "LandblockStruct.cs:calc_water_depth")
     def calc_water_depth(self, block_cell_id: int, point: Vector3):

@@ -32,7 +32,7 @@ from acconform.numerics import Mode
 from acconform.port.anchors import anchor, harness
 from acconform.port.errors import NullReferenceException
 from acconform.port import db_obj, land_defs
-from acconform.port.cell.land_cell import LandCell
+from acconform.port.cell.land_cell import LandCell, is_built
 from acconform.port.land.landblock import Landblock
 
 
@@ -65,7 +65,8 @@ class LandblockPool:
             landblock.post_init()
             return landblock
         for cell in landblock.land_cells.values():
-            cell.reset_for_pool()
+            if is_built(cell):  # an unbuilt cell has no run's state
+                cell.reset_for_pool()
         landblock.server_objects = []  # the last run's mover (Landblock.add_server_object)
         return landblock
 

@@ -54,6 +54,8 @@ def test_a_solved_land_height_table_gives_every_triangle_of_the_rise_the_target_
         field = tr.Field(0, (tr.Feature("step", a=-ax, b=-ay, c=-(ax * 4 + ay * 4), k=1),))
         rec = field.landblock(0, 0)
         lb = Landblock(rec, bd.exact_slope_table(rise), EXACT)
+        for cell in lb.land_cells.values():
+            cell.polygons  # a land cell (and its polygons) is built when first read
         sloped = [p for p in lb.polygons if len({float(v.origin.z) for v in p.vertices}) > 1]
         assert len(sloped) == 2 * 8, (name, len(sloped))  # one row of 8 cells, two triangles each
         assert {f32_bits(p.plane.normal.z) for p in sloped} == {bd.Z_BOUNDARIES[name]}, name

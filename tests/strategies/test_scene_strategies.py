@@ -82,6 +82,8 @@ def test_split_direction_matches_the_ports_landblock_construction():
     for bx, by in [(0x02, 0x03), (0xA9, 0xB4), (0x7F, 0x80), (0xFC, 0x11)]:
         rec = tr.Field(100, ()).landblock(bx, by)
         lb = port_landblock.Landblock(rec, tuple(2.0 * i for i in range(256)), EXACT)
+        for cell in lb.land_cells.values():
+            cell.polygons  # a land cell (and its SWtoNEcut entry) is built when first read
         ours = [tr.sw_to_ne_cut(bx, by, cx, cy) for cx in range(8) for cy in range(8)]
         assert ours == list(lb.sw_to_ne_cut)
 

@@ -727,11 +727,13 @@ def _ace_lb(ctx, i):
 
 def port_landblock_struct(ctx, args, m):
     lb, _ = PORT_LB.get(ctx, args[0], m)
+    # the cells first: a land cell (its polygons, its SWtoNEcut entry) is built when first read
+    cells = [(c.id, c.pos.frame.origin, int(c.water_type)) for c in (lb.land_cells[i] for i in range(64))]
     return {
         "vertices": [v.origin for v in lb.vertex_array],
         "polygons": [(tuple(p.vertex_ids), p.plane, p.pos_surface) for p in lb.polygons],
         "sw_to_ne_cut": list(lb.sw_to_ne_cut),
-        "cells": [(c.id, c.pos.frame.origin, int(c.water_type)) for c in (lb.land_cells[i] for i in range(64))],
+        "cells": cells,
         "water_type": int(lb.water_type), "min_z": lb.min_z, "max_z": lb.max_z,
     }
 

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from acconform.numerics import EXACT, FAST, f32_bits
+from acconform.port.cell.land_cell import is_built
 from acconform.port.land import landblock_struct as lbs
 from acconform.port.land_defs import WaterType
 from acconform.port.land.landblock import Landblock
@@ -50,7 +51,9 @@ def test_construct_polygons_hashes_global_cell_coordinates_with_csharp_wraparoun
     monkeypatch.setattr(lbs, "split_cuts_se_to_nw", lambda s: seen.append(s) or s * lbs.SPLIT_SCALE < 0.5)
     lb = build(((gx >> 3) << 24) | ((gy >> 3) << 16) | 0xFFFF)
     idx = (gx & 7) * 8 + (gy & 7)
-    assert seen[idx] == MONO_SPLITS[(gx, gy)]
+    assert seen == []  # a cell's polygons are made when the cell is first read
+    lb.land_cells[idx].polygons
+    assert seen == [MONO_SPLITS[(gx, gy)]]
     assert lb.sw_to_ne_cut[idx] is (not MONO_SPLITS[(gx, gy)] * 2.3283064e-10 < 0.5)
 
 
@@ -74,6 +77,7 @@ def test_polygons_follow_the_cut_and_cells_get_ids_and_centres():
     v = lambda x, y: x * 9 + y  # noqa: E731
     assert ids == [[v(7, 7), v(8, 7), v(7, 8)], [v(8, 8), v(7, 8), v(8, 7)]]
     lb0 = build(0x0000FFFF)  # global (0, 0): second branch (mono)
+    lb0.land_cells[0].id  # built when first read, its SWtoNEcut entry with it
     assert lb0.sw_to_ne_cut[0] is True
     assert [p.vertex_ids for p in lb0.land_cells[0].polygons] == [[v(0, 0), v(1, 0), v(1, 1)], [v(0, 0), v(1, 1), v(0, 1)]]
     assert lb0.land_cells[0].polygons[0].vertices[2] is lb0.vertex_array[v(1, 1)]  # shared, as ACE's class refs
@@ -155,7 +159,7 @@ def _terrain(lb):
         return ([v(x.origin) for x in p.vertices], v(p.plane.normal), float(p.plane.d), p.pos_surface)
 
     cells = [(k, c.id, c.water_type, v(c.pos.frame.origin), [poly(p) for p in c.polygons], c.cur_landblock is lb)
-             for k, c in lb.land_cells.items()]
+             for k, c in lb.land_cells.items()]  # first: a polygon is made when its cell is first read
     return ([v(x.origin) for x in lb.vertex_array], [poly(p) for p in lb.polygons], list(lb.sw_to_ne_cut), cells,
             lb.water_type, lb.side_cell_count, lb.side_vertex_count, lb.side_poly_count, lb.trans_dir, lb.id)
 
@@ -195,8 +199,31 @@ def test_indoor_scenes_build_no_terrain():
 def test_terrain_planes_made_when_first_read_are_the_planes_add_polygon_made(mode, monkeypatch):
     heights = [(i * 37 + i // 9 * 11) % 256 for i in range(81)]
     lazy = build(heights=heights, mode=mode)
+    for cell in lazy.land_cells.values():
+        cell.polygons  # built: AddPolygon has run on every polygon
     unread = sum(1 for p in lazy.polygons if plane_unset(p))
     monkeypatch.setattr(lbs.Polygon, "make_plane_when_read", lbs.Polygon.make_plane)  # as ACE: at AddPolygon
     eager = build(heights=heights, mode=mode)
+    for cell in eager.land_cells.values():
+        cell.polygons
     assert unread == len(lazy.polygons) == 128 and not any(plane_unset(p) for p in eager.polygons)
     assert [plane_bits(p) for p in lazy.polygons] == [plane_bits(p) for p in eager.polygons]
+
+
+@pytest.mark.anchor("CLandBlockStruct::ConstructPolygons")
+@pytest.mark.parametrize("mode", [EXACT, FAST])
+def test_land_cells_are_built_when_first_read_and_any_order_builds_the_same_cells(mode):
+    heights = [(i * 37 + i // 9 * 11) % 256 for i in range(81)]
+    terrain = [WATER if i % 7 < 3 else 0 for i in range(81)]
+    in_order = build(0x7F7FFFFF, heights, terrain, mode)
+    assert not any(is_built(c) for c in in_order.land_cells.values())
+    for cell in in_order.land_cells.values():  # every cell read at once, in ACE's order: as ACE builds them
+        cell.id
+    in_order.post_init()
+    later = build(0x7F7FFFFF, heights, terrain, mode)
+    later.post_init()
+    assert later.get_landcell(0x7F7F0026) is later.land_cells[37]
+    assert [k for k, c in later.land_cells.items() if is_built(c)] == [37]
+    for k in reversed(list(later.land_cells)):
+        later.land_cells[k].polygons
+    assert _terrain(later) == _terrain(in_order)
