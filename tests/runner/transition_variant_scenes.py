@@ -13,7 +13,9 @@ landblock (a west edge at landblock column 0x00; an east one at 0xFE; a neighbou
 past LandLength and makes ACE's Landblock constructor throw); and no sphere or cylsphere obstacle stood
 where Transition.CheckWalkable's probe looks (the step-down below an EdgeSlide mover leaving a BSP
 ledge or step), so the probe's arm of Sphere.IntersectsSphere / CylSphere.IntersectsSphere (and the
-step-down past a Missile obstacle) was never taken. Each variant below is
+step-down past a Missile obstacle) was never taken; nor did a placement that may slide place a mover
+whose sphere is 4 m or more across in radius (FindPlacementPos gives up before its first step).
+Each variant below is
 applied to N records of the coreclr corpus drawn with `--seed` from its pool, one scene file each,
 named after the record with the variant appended (the tick scenes have tick_variant_scenes.py).
 """
@@ -26,14 +28,15 @@ from dataclasses import replace
 from tick_variant_scenes import arguments, write_variants
 
 
-VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008", "bsp-0011")  # the corpus shards this script's scenes were recorded into
+VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008", "bsp-0011", "buildings-0011")  # the corpus shards this script's scenes were recorded into
 
 
 def variants():
     """(name, pool, scene -> scene): "placement" draws from the placement records, "statics" from
     the transition records with statics outdoors and a one-sphere mover, "outdoor" from the outdoor
     transition records."""
-    from acconform.flags import PhysicsState as P, TransientState as T
+    from acconform.flags import PhysicsState as P, SetPositionFlags, TransientState as T
+    from acconform.scene import SphereRec
     from acconform.numerics import to_f32
 
     CELL = 24.0  # an outdoor cell's side (port/constants.py's CELL_LENGTH)
@@ -77,7 +80,7 @@ def variants():
         random (seeded by the scene's name and place) within 0.9 m of the mover's end across and `dz`
         above it; one in three Missile too (a creature to Sphere.IntersectsSphere). An obstacle whose
         place would leave the end's outdoor cell is left out."""
-        from acconform.scene import CylSphereShape, Frame, Position, SphereRec, SphereShape, StaticObject
+        from acconform.scene import CylSphereShape, Frame, Position, SphereShape, StaticObject
 
         def apply(s):
             rng = random.Random(f"{s.name}:{s.mover.end.cell}:{s.mover.end.frame.origin}")
@@ -107,6 +110,9 @@ def variants():
         # issue 24, third round (bsp-0011)
         ("probe_obstacles", "ledges", probe_obstacles((-0.9, 1.0), False)),
         ("probe_obstacles_two_spheres", "ledges", probe_obstacles((0.2, 1.0), True)),
+        ("placement_large_sphere", "placement", lambda s: mover(
+            spheres=lambda m: (SphereRec((0.0, 0.0, 4.0), 4.0),), scale=lambda m: 1.0,
+            placement=lambda m: replace(m.placement, flags=m.placement.flags | SetPositionFlags.Slide))(s)),
     ]
 
 
