@@ -14,7 +14,8 @@ past LandLength and makes ACE's Landblock constructor throw); and no sphere or c
 where Transition.CheckWalkable's probe looks (the step-down below an EdgeSlide mover leaving a BSP
 ledge or step), so the probe's arm of Sphere.IntersectsSphere / CylSphere.IntersectsSphere (and the
 step-down past a Missile obstacle) was never taken; nor did a placement that may slide place a mover
-whose sphere is 4 m or more across in radius (FindPlacementPos gives up before its first step).
+whose sphere is 4 m or more across in radius (FindPlacementPos gives up before its first step); nor
+did a mover start on a vertical contact plane (AdjustOffset's SnapToPlane leaves the offset as it is).
 Each variant below is
 applied to N records of the coreclr corpus drawn with `--seed` from its pool, one scene file each,
 named after the record with the variant appended (the tick scenes have tick_variant_scenes.py).
@@ -28,7 +29,7 @@ from dataclasses import replace
 from tick_variant_scenes import arguments, write_variants
 
 
-VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008", "bsp-0011", "buildings-0011")  # the corpus shards this script's scenes were recorded into
+VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008", "bsp-0011", "buildings-0011", "terrain-0011")  # the corpus shards this script's scenes were recorded into
 
 
 def variants():
@@ -101,6 +102,15 @@ def variants():
             return replace(s, mover=mover, objects=tuple(objects))
         return apply
 
+    def vertical_contact_plane(s):
+        """The mover's contact plane turned vertical (normal +x, through its begin) and its end 1 m
+        along +x: the first step's offset leaves the plane."""
+        m = s.mover
+        o = m.begin.frame.origin
+        plane = replace(m.contact_plane.plane, normal=(1.0, 0.0, 0.0), d=to_f32(-o[0]))
+        end = replace(m.begin, frame=replace(m.begin.frame, origin=(to_f32(o[0] + 1.0), o[1], o[2])))
+        return replace(s, mover=replace(m, contact_plane=replace(m.contact_plane, plane=plane), end=end))
+
     return [
         ("placement_active", "placement", mover(transient_state=lambda m: m.transient_state | T.Active)),
         ("placement_static", "placement", mover(state=lambda m: m.state | P.Static)),
@@ -113,6 +123,7 @@ def variants():
         ("placement_large_sphere", "placement", lambda s: mover(
             spheres=lambda m: (SphereRec((0.0, 0.0, 4.0), 4.0),), scale=lambda m: 1.0,
             placement=lambda m: replace(m.placement, flags=m.placement.flags | SetPositionFlags.Slide))(s)),
+        ("vertical_contact_plane", "contact", vertical_contact_plane),
     ]
 
 
@@ -138,6 +149,10 @@ def main(argv=None) -> int:
                     and all(abs((lb.id >> 24) - (s.mover.begin.cell >> 24)) <= 1 for lb in s.landblocks)],
         # an outdoor mover on a BSP ledge, step or slope (strategies/objects.py's policies), whose
         # step-down probes below it (the probe looks only under a mover standing on a BSP polygon)
+        # outdoors on the ground, with a contact plane, in the middle of a cell (1 m along +x stays in it)
+        "contact": [(k, s) for k, s in scenes if not s.env_cells and not s.buildings and not s.objects
+                    and s.mover.placement is None and s.mover.contact_plane is not None
+                    and 2.0 < s.mover.begin.frame.origin[0] % 24.0 < 22.0],
         "ledges": [(k, s) for k, s in scenes if s.name.startswith(("bsp:ledge", "bsp:stairs", "bsp:slope", "bsp:touch"))
                    and s.mover.end is not None and not s.env_cells and s.mover.placement is None
                    and len(s.mover.spheres) == 1],
