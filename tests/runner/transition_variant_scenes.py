@@ -15,7 +15,8 @@ where Transition.CheckWalkable's probe looks (the step-down below an EdgeSlide m
 ledge or step), so the probe's arm of Sphere.IntersectsSphere / CylSphere.IntersectsSphere (and the
 step-down past a Missile obstacle) was never taken; nor did a placement that may slide place a mover
 whose sphere is 4 m or more across in radius (FindPlacementPos gives up before its first step); nor
-did a mover start on a vertical contact plane (AdjustOffset's SnapToPlane leaves the offset as it is).
+did a mover start on a vertical contact plane (AdjustOffset's SnapToPlane leaves the offset as it is),
+or Sliding with a sliding normal (get_object_info's InitSlidingNormal).
 Each variant below is
 applied to N records of the coreclr corpus drawn with `--seed` from its pool, one scene file each,
 named after the record with the variant appended (the tick scenes have tick_variant_scenes.py).
@@ -124,6 +125,8 @@ def variants():
             spheres=lambda m: (SphereRec((0.0, 0.0, 4.0), 4.0),), scale=lambda m: 1.0,
             placement=lambda m: replace(m.placement, flags=m.placement.flags | SetPositionFlags.Slide))(s)),
         ("vertical_contact_plane", "contact", vertical_contact_plane),
+        ("sliding", "contact", mover(transient_state=lambda m: m.transient_state | T.Sliding,
+                                     sliding_normal=lambda m: (-1.0, 0.0, 0.0))),
     ]
 
 
