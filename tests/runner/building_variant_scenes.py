@@ -27,6 +27,8 @@ scene told apart the branches of ACE that only a solid shell or a low lintel rea
   `cylsphere_static_in_doorway` makes the doorway's static a cylsphere (EnvCell.check_building_transit
   without a path); `cylsphere_static_in_house` stands it in the house's first cell under that
   cell's id (find_cell_list from an EnvCell without a path).
+- No drawn placement lies outside the world: `placement_off_the_world` places the mover 10 m west
+  of its edge, where AdjustToOutside gives cell id 0 and GetVisible finds no cell.
 
 Each variant is applied to N records of the coreclr corpus's buildings shards drawn with `--seed`
 from its pool, one scene file each, named after the record with the variant appended.
@@ -44,7 +46,7 @@ VARIANT_SHARDS = ("buildings-0005", "buildings-0006")  # the corpus shards this 
 def variants():
     """(name, pool, scene -> scene): "yaw0" draws from the "in" records of a house of yaw 0,
     "two_spheres" from the "in" records with a two-sphere mover and the floor at the ground, "static"
-    from the records with a static in the doorway."""
+    from the records with a static in the doorway, "placement" from the placement records."""
     from acconform.numerics import to_f32
     from acconform.scene import BSPLeaf, BSPNode, BSPShape, CylSphereShape, Frame, Placement, Position, SphereRec
     from acconform.strategies import dungeon as dg
@@ -142,12 +144,22 @@ def variants():
             return replace(s, objects=(replace(o, position=at, shape=CylSphereShape((0.0, 0.0, 0.0), 0.5, 1.0)),))
         return apply
 
+    def placed_off_the_world(s):
+        """The mover placed 10 m west of the world's edge (its begin's x in its landblock's frame
+        that far below landblock column 0x00): LandDefs.AdjustToOutside refuses it, so
+        AdjustPosition's GetVisible meets cell id 0."""
+        m = s.mover
+        o = m.begin.frame.origin
+        x = to_f32(-(m.begin.cell >> 24) * BLOCK - 10.0)
+        return replace(s, mover=replace(m, begin=replace(m.begin, frame=replace(m.begin.frame, origin=(x,) + o[1:]))))
+
     return [
         ("doorway_placement", "yaw0", doorway(False)),
         ("doorway_placement_head_ahead", "yaw0", doorway(True)),
         ("low_lintel_airborne", "two_spheres", low_lintel_airborne),
         ("cylsphere_static_in_doorway", "static", cylsphere_static(False)),
         ("cylsphere_static_in_house", "static", cylsphere_static(True)),
+        ("placement_off_the_world", "placement", placed_off_the_world),
     ]
 
 
@@ -169,6 +181,7 @@ def main(argv=None) -> int:
         "two_spheres": [(k, s) for k, s in walks_in if len(s.mover.spheres) == 2
                         and s.mover.begin.frame.origin[2] == s.buildings[0].frame.origin[2]],
         "static": [(k, s) for k, s in scenes if s.name.split(":")[1] == "static"],
+        "placement": [(k, s) for k, s in scenes if s.name.split(":")[1] == "placement"],
     }
     written = write_variants(a, variants(), pools)
     print(f"{written} scenes in {a.out} ({', '.join(f'{len(p)} {k}' for k, p in pools.items())} records)")
