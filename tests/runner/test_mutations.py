@@ -74,6 +74,16 @@ adjust_position_seen_outside_ignored at 215 (indoor; one landblock, no object, n
 Survivors everywhere: the UNREACHABLE below (equivalent in practice: their boundary cannot be
 drawn, for the reasons given).
 
+Building mutants (issue 20, kinds ("buildings",)): the hunt (BUDGET 1,500, seed 0) catches none of
+the six. building_portal_side_unflipped and building_cells_not_recursive are in UNREACHABLE; the
+other four are FOUND_BY_THE_CORPUS: no drawn building record (3,509, and 11 named scenes) kills them,
+the 8 records of shard buildings-0005 (tests/runner/building_variant_scenes.py) do, against ACE's
+recorded answers on both runtimes: building_check_ignored and building_hits_interior_cell_never_set
+by 6 of them (a placement in the doorway of a shell solid inside), building_transit_first_sphere_only
+by 3 (the second sphere alone reaching the house), building_collisions_before_terrain by 2 (a low
+lintel over an airborne two-sphere mover). In the whole mono corpus's seeded shuffle (29,878 records)
+they come at records 2,159 to 27,498, so this test replays that shard alone (KILLED_IN_SHARD).
+
 Tick-loop mutants (issue 19, kinds ("ticks",)): `python tests/runner/mutation_report.py --ticks
 --runtime coreclr` (and mono, the same figures): 9 of 9 killed by the tick records (no ticks-* corpus
 shards yet: the 5 example, 8 hand-written and 21 named tick scenes), each shrunk (the ticks up to the
@@ -141,7 +151,7 @@ FOUND_BY_THE_CORPUS = {
                                           "sets the contact plane before the shell answers Collided (low_lintel_airborne)",
 }
 # the shard holding the records that kill a FOUND_BY_THE_CORPUS mutant, where the rest of the corpus
-# holds none (the whole corpus's seeded shuffle meets its first one only after ~5,800 records)
+# holds none (the whole corpus's seeded shuffle meets the first of them only after thousands of records)
 KILLED_IN_SHARD = {name: "buildings-0005" for name in ("building_check_ignored", "building_hits_interior_cell_never_set",
                                                         "building_transit_first_sphere_only",
                                                         "building_collisions_before_terrain")}
