@@ -476,7 +476,7 @@ def main(argv=None) -> int:
     ap.add_argument("--keys-of", choices=("coreclr", "mono"), default=None,
                     help="with --write-kernel: take the other runtime's kernel records instead of tracing")
     ap.add_argument("--with", dest="with_shards", nargs="*", default=[], metavar="SHARD",
-                    help="with --write-kernel -n: every record of these shards is a candidate too")
+                    help="with --write-kernel -n: every record of these shards (paths, or names in the corpus) is a candidate too")
     ap.add_argument("--cache", type=Path, default=None,
                     help="with --write-kernel: per-record arcs kept here between runs (records already traced on "
                          "today's port/ are not traced again)")
@@ -493,6 +493,14 @@ def main(argv=None) -> int:
         from acconform.oracle.recorded import RecordedOracle
 
         corpus = a.corpus or default_corpus(a.runtime)
+        shards = set()
+        for w in a.with_shards:  # a shard's path, or its name in the corpus (bsp-0011 or bsp-0011.jsonl.gz)
+            found = next((f for f in (Path(w), corpus / w, corpus / f"{w}.jsonl.gz") if f.is_file()), None)
+            if found is None:
+                print(f"corpus_coverage: --with {w}: no such shard (a path, or a shard's name in {corpus})",
+                      file=sys.stderr)
+                return 2
+            shards.add(str(found.resolve()))
         oracle = RecordedOracle(corpus)
         every = sorted(oracle.index())
         if a.n is not None:
@@ -502,7 +510,6 @@ def main(argv=None) -> int:
             cached = set(load_arcs(a.cache, a.runtime)[1]) if a.cache else set()
             if kfile.exists():
                 cached |= set(json.loads(kfile.read_text())["keys"])
-            shards = {str(Path(w).resolve()) for w in a.with_shards}
             every = sorted({e.key for e in oracle.select(n=a.n, seed=a.seed)}
                            | ({r[0] for r in json.loads(sample.read_text())["records"]} if sample.exists() else set())
                            | (cached & set(every))
@@ -573,4 +580,10 @@ def main(argv=None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from acconform.errors import AcconformError
+
+    try:
+        sys.exit(main())
+    except AcconformError as e:  # a corpus missing or corrupt: one line, as every command says it
+        print(f"corpus_coverage: {e}", file=sys.stderr)
+        sys.exit(2)

@@ -78,3 +78,12 @@ def test_the_corpus_keeps_its_branch_coverage_and_takes_no_listed_unreachable_br
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-3000:]
     assert "branch coverage of port/" in r.stdout
+
+
+def test_write_kernel_refuses_a_with_shard_the_corpus_lacks_and_writes_nothing(tmp_path, capsys):
+    """--with names shards to add to the candidates; a name that matches none was once taken
+    silently, so the kernel left out every new shard. Nothing is written when it is refused."""
+    kernel = tmp_path / "coverage-kernel.json"
+    assert corpus_coverage.main(["--write-kernel", "-n", "1", "--corpus", str(tmp_path),
+                                 "--with", "terrain-0042"]) == 2
+    assert "--with terrain-0042: no such shard" in capsys.readouterr().err and not kernel.exists()
