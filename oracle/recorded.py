@@ -24,6 +24,7 @@ instead. `record` never writes a scene twice, so a corpus holds each scene once.
 
 from __future__ import annotations
 
+import contextlib
 import gzip
 import hashlib
 import json
@@ -271,7 +272,8 @@ class RecordedOracle:
                 self.progress(f"indexing {len(self.entries)} records by scene key")
             index: dict[str, Entry] = {}
             for shard, first, end in self._spans:
-                keys = _kept_keys(shard, end - first)
+                kept = _keys_file(shard)
+                keys = _kept_keys(kept, end - first)
                 fresh = keys is None
                 if fresh:
                     keys = []
@@ -288,7 +290,7 @@ class RecordedOracle:
                     if keys[i - first] is not None:
                         index.setdefault(keys[i - first], e)
                 if fresh and None not in keys:
-                    _keep_keys(shard, keys)
+                    _keep_keys(kept, keys)
             if progress is not None:
                 progress(len(self.entries), len(self.entries))
             self._index = index
@@ -432,35 +434,43 @@ def _doc_key(doc) -> str:
 KEYS_CACHE = "corpus-keys-1"
 
 
-def _keys_file(shard: Path) -> Path:
+def _keys_file(shard: Path) -> Path | None:
+    """Where a shard's keys are kept: named by the shard's SHA-256 (None if the shard cannot be read)."""
     from .config import cache_dir
 
-    return cache_dir() / KEYS_CACHE / (hashlib.sha256(shard.read_bytes()).hexdigest() + ".json")
+    try:
+        return cache_dir() / KEYS_CACHE / (hashlib.sha256(shard.read_bytes()).hexdigest() + ".json")
+    except OSError:
+        return None
 
 
-def _kept_keys(shard: Path, n: int) -> list[str] | None:
+def _kept_keys(kept: Path | None, n: int) -> list[str] | None:
     """The scene keys of a shard's n records, as a run before this one found them, or None. Keying
     parses and re-serialises every scene (tens of seconds for the committed corpus); a shard's keys
     follow from its bytes alone, so they are kept in the user's cache under the shard's SHA-256."""
     try:
-        keys = json.loads(_keys_file(shard).read_text())
+        keys = json.loads(kept.read_text()) if kept is not None else None
     except (OSError, ValueError):
         return None
     ok = isinstance(keys, list) and len(keys) == n and all(isinstance(k, str) and len(k) == 64 for k in keys)
     return keys if ok else None
 
 
-def _keep_keys(shard: Path, keys: list[str]) -> None:
+def _keep_keys(kept: Path | None, keys: list[str]) -> None:
     """Keep a shard's keys for the next run; a cache that cannot be written costs only that."""
+    if kept is None:
+        return
+    tmp = None
     try:
-        path = _keys_file(shard)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+        kept.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=kept.parent, suffix=".tmp")
         with os.fdopen(fd, "w") as f:
             json.dump(keys, f)
-        os.replace(tmp, path)  # whole or not at all, whatever other processes key the same shard
+        os.replace(tmp, kept)  # whole or not at all, whatever other processes key the same shard
     except OSError:
-        pass
+        if tmp is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
 
 
 def _canonical(scene_json: dict) -> str:

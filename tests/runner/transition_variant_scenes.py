@@ -150,12 +150,12 @@ def main(argv=None) -> int:
         # world's edge keeps every landblock id a landblock id)
         "outdoor": [(k, s) for k, s in scenes if not s.env_cells and not s.buildings and s.mover.placement is None
                     and all(abs((lb.id >> 24) - (s.mover.begin.cell >> 24)) <= 1 for lb in s.landblocks)],
-        # an outdoor mover on a BSP ledge, step or slope (strategies/objects.py's policies), whose
-        # step-down probes below it (the probe looks only under a mover standing on a BSP polygon)
         # outdoors on the ground, with a contact plane, in the middle of a cell (1 m along +x stays in it)
         "contact": [(k, s) for k, s in scenes if not s.env_cells and not s.buildings and not s.objects
                     and s.mover.placement is None and s.mover.contact_plane is not None
                     and 2.0 < s.mover.begin.frame.origin[0] % 24.0 < 22.0],
+        # an outdoor mover on a BSP ledge, step or slope (strategies/objects.py's policies), whose
+        # step-down probes below it (the probe looks only under a mover standing on a BSP polygon)
         "ledges": [(k, s) for k, s in scenes if s.name.startswith(("bsp:ledge", "bsp:stairs", "bsp:slope", "bsp:touch"))
                    and s.mover.end is not None and not s.env_cells and s.mover.placement is None
                    and len(s.mover.spheres) == 1],
