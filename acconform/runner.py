@@ -437,10 +437,14 @@ def aim_at_boundaries(trace) -> None:
 
 
 def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, seed: int, mode: str,
-                keep_going: bool, database, tick, should_stop, versions: Versions) -> None:
+                keep_going: bool, database, tick, should_stop, versions: Versions,
+                shrink_budget: int | None = None) -> None:
     """Compare up to `n` scenes drawn by Hypothesis; add each new kind of difference (shrunk) to
     `r.found`. Scenes the port cannot run are rejected (Hypothesis draws another: they do not count
-    toward `n`) and counted in `r.skipped`; the scenes shrinking runs go to `r.shrink_runs`."""
+    toward `n`) and counted in `r.skipped`; the scenes shrinking runs go to `r.shrink_runs`.
+    `shrink_budget`: at most that many smaller scenes are run per difference (None: Hypothesis'
+    own limits); past it every candidate passes unrun, so Hypothesis' shrinker soon ends with
+    the smallest failing scene it ran; 0: differences are written as drawn."""
     from hypothesis import HealthCheck, Phase, Verbosity, example, given, reject, settings
     from hypothesis import seed as hseed
 
@@ -461,6 +465,7 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
         last: list = []
         failing = [0]  # the size of the first failing scene this round; then Hypothesis is shrinking
         ran = [0]
+        shrinking = [0]  # the smaller scenes run this round
         explicit = saved.scenes()[:n - compared] if saved is not None else []
         replayed = {id(s): s for s in explicit}
 
@@ -473,9 +478,14 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
                     r.skipped[why] += 1
                     r.cases += 1
                 reject()
+            if failing[0] and shrink_budget is not None and shrinking[0] >= shrink_budget:
+                if scene == last[0]:  # Hypothesis runs its smallest failing scene once more, to report it
+                    raise _Mismatch(signature(last[3]))
+                return
             ran_case = run_case(port, oracle, scene, mode, r.timings)
             if failing[0]:
                 r.shrink_runs += 1
+                shrinking[0] += 1
             else:
                 ran[0] += 1
                 r.cases += 1
@@ -494,7 +504,9 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
         for scene in explicit:
             differential = example(scene)(differential)
         budget = n - compared - len(explicit)  # explicit examples do not count toward max_examples
-        phases = [Phase.explicit, Phase.generate, Phase.target, Phase.shrink] if budget > 0 else [Phase.explicit]
+        phases = [Phase.explicit, Phase.generate, Phase.target] if budget > 0 else [Phase.explicit]
+        if shrink_budget != 0:
+            phases.append(Phase.shrink)
         differential = settings(max_examples=max(budget, 1), database=None, deadline=None, verbosity=Verbosity.quiet,
                                 suppress_health_check=list(HealthCheck), report_multiple_bugs=False,
                                 phases=phases)(hseed(seed * 7919 + round_)(given(scenes(kinds))(differential)))
@@ -631,6 +643,9 @@ def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: s
         first[f.signature] = scene_hash(c.scene)[:12]
         if stand_in is None:
             continue
+        if budget == 0:
+            f.case = replace(c, shrink=Shrink("none", "written as recorded, not shrunk: the shrink budget is 0"))
+            continue
         ref = guarded(stand_in, c.scene)
         r.shrink_runs += 1
         off = compare(ref, c.oracle, "exact")
@@ -706,7 +721,7 @@ def _worker_campaign(w: int, s: dict, r: Result, tick) -> None:
     _generative(s["port"], s["oracle"], r, kinds=s["kinds"], n=_stream_cases(s["n"], stream, s["streams"]),
                 seed=s["seed"] * 1000 + stream, mode=s["mode"],
                 keep_going=s["keep_going"], database=s["database"], tick=tick, should_stop=lambda: stop.is_set(),
-                versions=s["versions"])
+                versions=s["versions"], shrink_budget=s["shrink_budget"])
 
 
 def _stream_cases(n: int, stream: int, streams: int) -> int:
@@ -797,12 +812,13 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                             tick=tick, should_stop=lambda: False, versions=versions, seed=seed)
                 elif parts == 1:
                     _generative(port, oracle, result, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
-                                database=database, tick=tick, should_stop=lambda: False, versions=versions)
+                                database=database, tick=tick, should_stop=lambda: False, versions=versions,
+                                shrink_budget=shrink_budget)
                 else:  # part K of a sharded campaign on one worker: its first stream (its only one with cases)
                     _generative(port, oracle, result, kinds=kinds, n=_stream_cases(n, first_stream, streams),
                                 seed=seed * 1000 + first_stream, mode=mode,
                                 keep_going=keep_going, database=database, tick=tick, should_stop=lambda: False,
-                                versions=versions)
+                                versions=versions, shrink_budget=shrink_budget)
         except KeyboardInterrupt:
             result.interrupted = True
     else:
@@ -811,7 +827,8 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
         stop = ctx.Event()
         _SHARED.update(port=port, oracle=oracle, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
                        database=database, versions=versions, replay=items, workers=workers, counter=counter,
-                       stop=stop, first_stream=first_stream, streams=streams if parts > 1 else workers)
+                       stop=stop, first_stream=first_stream, streams=streams if parts > 1 else workers,
+                       shrink_budget=shrink_budget)
         try:
             with ctx.Pool(workers, initializer=_ignore_sigint) as pool:
                 pending = pool.map_async(_worker, range(workers))

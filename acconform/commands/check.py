@@ -29,6 +29,9 @@ def add_arguments(p) -> None:
     p.add_argument("--mode", choices=("exact", "fast"), default="exact", help="exact: float32 bit for bit; fast: port in doubles, ULP tolerance")
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")
+    p.add_argument("--shrink-budget", type=int, default=None, metavar="N", help="at most N smaller scenes run "
+                   "per kind of difference while shrinking it (each runs both sides; a hang costs --timeout); 0: "
+                   "write differences as found (default: Hypothesis' own limits live, 300 replaying)")
     p.add_argument("--failures", default="failures", metavar="DIR", help="where case files go (default ./failures)")
     p.add_argument("--database", default=None, metavar="DIR", help="the Hypothesis example database where a live campaign "
                    "keeps its failing scenes and retries them first next run, shared by the shards and runs that "
@@ -68,6 +71,8 @@ def run(args) -> int:
     args.shard = parse_shard(args.shard) if args.shard is not None else (1, 1)
     if args.cases is not None and args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
+    if args.shrink_budget is not None and args.shrink_budget < 0:
+        raise AcconformError(f"--shrink-budget must be 0 (no shrinking) or more, got {args.shrink_budget}")
     if args.workers < 0:
         raise AcconformError(f"--workers must be 0 (all cores) or more, got {args.workers}")
     if args.workers > default_workers():
@@ -140,7 +145,7 @@ def _campaign(args, port, kinds, workers) -> int:
     result = run_campaign(port, oracle.run, kinds=run_kinds, n=args.cases or GENERATIVE_CASES, seed=seed,
                           mode=args.mode, keep_going=args.keep_going, failures_dir=args.failures,
                           database=database, workers=workers, progress=not args.no_progress, replay=replay,
-                          stand_in=stand_in, shard=args.shard)
+                          stand_in=stand_in, shard=args.shard, shrink_budget=args.shrink_budget)
     result.skipped.update(presampled)
     result.cases += sum(presampled.values())
     if result.found and not result.interrupted:  # group the differences by their first divergence

@@ -122,6 +122,10 @@ def test_negative_worker_counts_are_refused(no_ace):
     one_line_exit_2(cli("check", "-j", "-3"), "--workers", "-3")
 
 
+def test_a_negative_shrink_budget_is_refused(no_ace):
+    one_line_exit_2(cli("check", "--shrink-budget", "-1"), "--shrink-budget", "-1")
+
+
 def test_replay_refuses_options_it_would_ignore(no_ace):
     one_line_exit_2(cli("check", "--database", "db"), "--database", "replaying")
     one_line_exit_2(cli("check", "--seed", "4"), "--seed", "-n")
@@ -369,6 +373,7 @@ CATALOGUE = {
         run_cli(acconform("bench", "-n", "1", "--json", "/nonexistent-dir/figures.json")), 2, ["--json", "no directory"]),
     "coverage -n 0": lambda t: (run_cli(acconform("coverage", "-n", "0")), 2, ["--cases must be at least 1"]),
     "negative workers": lambda t: (run_cli(acconform("check", "-j", "-3")), 2, ["--workers", "-3"]),
+    "a negative shrink budget": lambda t: (run_cli(acconform("check", "--shrink-budget", "-1")), 2, ["--shrink-budget"]),
     "--database while replaying": lambda t: (run_cli(acconform("check", "--database", "db")), 2, ["--database"]),
 }
 

@@ -89,6 +89,23 @@ def test_a_planted_bug_is_found_and_shrunk_in_a_generative_campaign(tmp_path):
     assert str(r.found[0].path) in (tmp_path / "j.xml").read_text()
 
 
+def test_a_shrink_budget_bounds_the_smaller_scenes_a_live_campaign_runs_and_keeps_the_smallest_failing_one(tmp_path):
+    impl = Implementation(planted(BUG))
+    try:
+        r = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=0, failures_dir=tmp_path, database=None,
+                         shrink_budget=3)
+        assert r.shrink_runs == 3 and len(r.found) == 1
+        shrink = r.found[0].case.shrink
+        assert shrink.bytes_after < shrink.bytes_before  # one of the three smaller scenes still failed
+        case = r.found[0].case
+        assert impl(case.scene) == case.port and BuiltinPort()(case.scene) == case.oracle  # the case as written replays
+        r0 = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=0, failures_dir=None, database=None,
+                          shrink_budget=0)
+        assert r0.shrink_runs == 0 and r0.found[0].case.shrink.bytes_after == shrink.bytes_before
+    finally:
+        impl.close()
+
+
 def test_a_crash_is_a_verdict_and_the_process_is_restarted(corpus_scenes):
     impl = Implementation(planted("none", "--crash-on", "bsp"))
     try:
@@ -122,13 +139,17 @@ def test_a_malformed_answer_is_a_verdict_and_the_process_is_restarted(corpus_sce
 
 
 def test_crashes_and_hangs_in_a_campaign_come_out_as_differences_never_a_harness_crash(tmp_path, no_ace):
+    """Shrinking included: a few smaller scenes each (--shrink-budget), every one that still crashes or
+    hangs costing a restart (and the time limit)."""
     r = check("--impl", planted("none", "--crash-on", "bsp", "--hang-on", "obstacles"), "--timeout", "1",
-              "-n", "6", "--seed", "3", "-j", "1", "--keep-going", "--failures", str(tmp_path / "f"),
+              "-n", "6", "--seed", "3", "-j", "1", "--keep-going", "--shrink-budget", "5", "--failures", str(tmp_path / "f"),
               "--json", str(tmp_path / "s.json"), cwd=tmp_path)
     assert r.returncode == 1, r.stdout + r.stderr
     assert "Traceback" not in r.stderr
-    errors = [d for c in json.loads((tmp_path / "s.json").read_text())["differences"]["cases"] for d in c["differences"]]
+    cases = json.loads((tmp_path / "s.json").read_text())["differences"]["cases"]
+    errors = [d for c in cases for d in c["differences"]]
     assert any(CRASH in d for d in errors) and any(TIMEOUT in d for d in errors)
+    assert all(c["shrink_note"].endswith("5 smaller scenes tried") for c in cases)
 
 
 def test_kinds_missing_from_the_handshake_are_skipped_and_do_not_count_toward_n(tmp_path, no_ace):
