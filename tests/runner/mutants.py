@@ -499,10 +499,10 @@ def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED,
 
 # ---------------------------------------------------------------- the tick records (issue 19)
 
-def tick_records(runtime: str):
+def tick_records(runtime: str, first: tuple[str, ...] = ()):
     """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the
-    corpus's tick shards (ticks-NNNN.jsonl.gz) when present, then the example tick scenes, the
-    hand-written ones and the named ones (tests/oracle/data)."""
+    corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first), then the
+    example tick scenes, the hand-written ones and the named ones (tests/oracle/data)."""
     import json
 
     from acconform.case import load_document
@@ -517,7 +517,7 @@ def tick_records(runtime: str):
         # the coverage kernel's records first: they take every branch the tick records take, so a
         # tick-loop bug's killing record is most often among them; then the rest, in corpus order
         kernel = set(json.loads((corpus / "coverage-kernel.json").read_text())["keys"])
-        for e in sorted(oracle.select(kinds=("ticks",), runtime=runtime), key=lambda e: e.key not in kernel):
+        for e in sorted(oracle.select(kinds=("ticks",), runtime=runtime), key=lambda e: (e.key not in first, e.key not in kernel)):
             rec = oracle._record(e)
             yield e.where, rec.scene, rec.outcome
     root = PORT_DIR.parent
@@ -533,12 +533,13 @@ def tick_records(runtime: str):
         yield f"examples/named/{p.name}", load_document(p), Outcome.from_json(named[p.stem])
 
 
-def tick_kill(index: int, runtime: str = "coreclr", budget: int = 150) -> dict:
+def tick_kill(index: int, runtime: str = "coreclr", budget: int = 150, first: tuple[str, ...] = ()) -> dict:
     """Replay the tick records through the mutant against ACE's recorded answers, in order, until one
     where the mutant differs from ACE and the real port does not; then shrink that scene against the
     real port (standing in for ACE, as `check` shrinks without ACE): first to the ticks up to the first
     one that differs (a tick's state depends only on the ticks before it), then acconform.shrink's
-    scene shrinking. Says whether the records kill the mutant, after how many, and how small it got."""
+    scene shrinking. Says whether the records kill the mutant, after how many, and how small it got.
+    `first`: scene keys of records to try before the others (tick_records)."""
     import dataclasses
     import time
     import warnings
@@ -553,7 +554,7 @@ def tick_kill(index: int, runtime: str = "coreclr", budget: int = 150) -> dict:
     t0 = time.monotonic()
     out = {"name": MUTATIONS[index].name, "killed": False, "records_to_kill": None}
     n = 0
-    for n, (where, scene, ace) in enumerate(tick_records(runtime), 1):
+    for n, (where, scene, ace) in enumerate(tick_records(runtime, first), 1):
         got = guarded(lambda s: mutant(s, runtime=runtime), scene)
         if not compare(got, ace, "exact") or compare(run_scene(scene, runtime=runtime), ace, "exact"):
             continue
