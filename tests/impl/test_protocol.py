@@ -76,12 +76,13 @@ def test_a_planted_bug_is_found_in_the_corpus_and_reported_as_json_and_junit(tmp
 def test_a_planted_bug_is_found_and_shrunk_in_a_generative_campaign(tmp_path):
     impl = Implementation(planted(BUG))
     try:
-        r = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=0, failures_dir=tmp_path, database=None)
+        # seed 1 finds it in the 9th scene and shrinks it in 37 runs; seed 0 takes 183 and 397, to the same end
+        r = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=1, failures_dir=tmp_path, database=None)
     finally:
         impl.close()
     assert r.found and r.found[0].shrunk and r.found[0].path.is_file()
     assert r.found[0].case.differences
-    c = Campaign("live", "exact", 0, ("terrain",), {"name": "planted", "version": "", "command": impl.command}, str(tmp_path))
+    c = Campaign("live", "exact", 1, ("terrain",), {"name": "planted", "version": "", "command": impl.command}, str(tmp_path))
     write_json(tmp_path / "s.json", summary(r, c))
     write_junit(tmp_path / "j.xml", junit(r, c))
     s = json.loads((tmp_path / "s.json").read_text())
@@ -92,14 +93,14 @@ def test_a_planted_bug_is_found_and_shrunk_in_a_generative_campaign(tmp_path):
 def test_a_shrink_budget_bounds_the_smaller_scenes_a_live_campaign_runs_and_keeps_the_smallest_failing_one(tmp_path):
     impl = Implementation(planted(BUG))
     try:
-        r = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=0, failures_dir=tmp_path, database=None,
+        r = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=1, failures_dir=tmp_path, database=None,
                          shrink_budget=3)
         assert r.shrink_runs == 3 and len(r.found) == 1
         shrink = r.found[0].case.shrink
         assert shrink.bytes_after < shrink.bytes_before  # one of the three smaller scenes still failed
         case = r.found[0].case
         assert impl(case.scene) == case.port and BuiltinPort()(case.scene) == case.oracle  # the case as written replays
-        r0 = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=0, failures_dir=None, database=None,
+        r0 = run_campaign(impl, BuiltinPort(), kinds=("terrain",), n=400, seed=1, failures_dir=None, database=None,
                           shrink_budget=0)
         assert r0.shrink_runs == 0 and r0.found[0].case.shrink.bytes_after == shrink.bytes_before
     finally:
