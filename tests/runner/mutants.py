@@ -9,6 +9,8 @@ never edited and keeps working in the same process (it is the oracle in the muta
 
 from __future__ import annotations
 
+import functools
+
 import importlib
 import shutil
 import sys
@@ -499,27 +501,41 @@ def corpus_kill(index: int, corpus_dir, runtime: str = "mono", seed: int = SEED,
 
 # ---------------------------------------------------------------- the tick records (issue 19)
 
-def tick_records(runtime: str, first: tuple[str, ...] = ()):
-    """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the
-    corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first), then the
-    example tick scenes, the hand-written ones and the named ones (tests/oracle/data)."""
+@functools.lru_cache(maxsize=2)
+def _tick_entries(runtime: str) -> tuple:
+    """The corpus's tick records on `runtime` as (scene key, entry), the coverage kernel's first (they
+    take every branch the tick records take, so a tick-loop bug's killing record is most often among
+    them), then the rest in corpus order; () when the corpus has no tick shards. Read once per process
+    (keys from the oracle's kept index): every tick mutant walks them."""
     import json
 
-    from acconform.case import load_document
     from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle, shards
+
+    corpus = default_corpus(runtime)
+    if not any(p.name.startswith("ticks-") for p in shards(corpus)):
+        return ()
+    oracle = RecordedOracle(corpus)
+    key_of = {id(e): k for k, e in oracle.index().items()}
+    kernel = set(json.loads((corpus / "coverage-kernel.json").read_text())["keys"])
+    keyed = [(key_of[id(e)], e) for e in oracle.select(kinds=("ticks",), runtime=runtime)]
+    return tuple(sorted(keyed, key=lambda ke: ke[0] not in kernel))
+
+
+def tick_records(runtime: str, first: tuple[str, ...] = ()):
+    """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the
+    corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first, then as
+    _tick_entries orders them), then the example tick scenes, the hand-written ones and the named ones
+    (tests/oracle/data)."""
+    import json
+
+    from acconform.case import Record, load_document
     from acconform.outcome import Outcome
     from acconform.scene import Scene
 
-    corpus = default_corpus(runtime)
-    if any(p.name.startswith("ticks-") for p in shards(corpus)):
-        oracle = RecordedOracle(corpus)
-        # the coverage kernel's records first: they take every branch the tick records take, so a
-        # tick-loop bug's killing record is most often among them; then the rest, in corpus order
-        kernel = set(json.loads((corpus / "coverage-kernel.json").read_text())["keys"])
-        for e in sorted(oracle.select(kinds=("ticks",), runtime=runtime), key=lambda e: (e.key not in first, e.key not in kernel)):
-            rec = oracle._record(e)
-            yield e.where, rec.scene, rec.outcome
+    for _, e in sorted(_tick_entries(runtime), key=lambda ke: ke[0] not in first):
+        rec = Record.from_json(e.doc())
+        yield e.where, rec.scene, rec.outcome
     root = PORT_DIR.parent
     data = root / "tests" / "oracle" / "data"
     examples = json.loads((data / "ace_tick_outcomes.json").read_text())["outcomes"][runtime]
