@@ -60,9 +60,9 @@ def _rotate(q, v):
 def _terrain(scene) -> list[tuple[tuple, ...]]:
     """The terrain triangles in world metres, built by the port as both sides build them."""
     from .numerics import get_mode
-    from .port.land.lscape import LScape
+    from .port.run import scene_world
 
-    lscape = LScape(scene, get_mode("exact", "coreclr"))
+    lscape = scene_world(scene, get_mode("exact", "coreclr"))[0]
     tris = []
     try:
         for lb in scene.landblocks:

@@ -140,6 +140,14 @@ def cell_dat_for(scene: Scene, mode) -> CellDat:
     return CellDat({r.id: r.data for r in cell_dat_records(scene)}, mode)
 
 
+@harness("the run's world: its portal and cell DATs and the LScape that reads them (release it after)")
+def scene_world(scene: Scene, mode, timer: PhysicsTimer | None = None) -> tuple[LScape, PortalDat, list[int]]:
+    """(the LScape, the portal DAT, each static's did): a landblock with buildings reads both DATs
+    when it is built, so anything that builds the scene's landblocks starts here."""
+    portal_dat, dids = portal_dat_for(scene, mode, timer)
+    return LScape(scene, mode, portal_dat, cell_dat_for(scene, mode)), portal_dat, dids
+
+
 @harness("reads a static's cells: an outdoor static's ShadowObjects, or, for a static in an EnvCell, those of the object its loaded cell made from the static's did")
 def static_cells(record: StaticObject, did: int, obj: PhysicsObj | None, lscape: LScape) -> tuple[int, ...]:
     """What the oracle reads: the ShadowObjects keys, in order, of the static's PhysicsObj. A static
@@ -255,8 +263,7 @@ def _run_quietly(scene: Scene, mode, trace) -> Outcome:
 def _run(scene: Scene, mode, trace) -> Outcome:
     # the clock: at the tick scene's start before anything is made (PhysicsObj() reads it)
     timer = PhysicsTimer(scene.ticks.start if scene.ticks is not None else 0.0)
-    portal_dat, dids = portal_dat_for(scene, mode, timer)
-    lscape = LScape(scene, mode, portal_dat, cell_dat_for(scene, mode))
+    lscape, portal_dat, dids = scene_world(scene, mode, timer)
     try:
         return _run_in(scene, mode, trace, lscape, timer, portal_dat, dids)
     finally:

@@ -110,3 +110,30 @@ def test_explain_html_to_a_missing_directory_is_one_line_and_exit_2_before_runni
     _, cases = planted_cases
     r = cli("explain", str(cases[0][0]), "--html", "/no/such/dir/page.html")
     assert r.returncode == 2 and "does not exist" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.anchor("CLandBlock::init_buildings")
+def test_explain_html_draws_a_case_among_buildings_with_the_terrain_the_landblock_builds(tmp_path):
+    """A landblock with buildings reads the scene's DATs as it is built: the page's terrain is built so."""
+    import gzip
+    import json
+
+    from acconform.case import Record
+    from acconform.oracle import default_corpus
+    from acconform.runner import guarded
+    from mutants import MUTATIONS, load_mutant
+
+    name = "building_check_ignored"  # killed by buildings-0005 (test_mutations' KILLED_IN_SHARD)
+    mutant = load_mutant([m.name for m in MUTATIONS].index(name))
+    command = f"{sys.executable} {PLANTED} {name}"
+    with gzip.open(default_corpus("coreclr") / "buildings-0005.jsonl.gz", "rt") as f:
+        recs = [Record.from_json(json.loads(line)) for line in f]
+    rec, got = next((r, g) for r in recs if compare(g := guarded(lambda s: mutant(s, runtime="coreclr"), r.scene), r.outcome))
+    assert rec.scene.buildings
+    case = make_case(rec.scene, got, rec.outcome, compare(got, rec.outcome), 0, "exact", rec.versions,
+                     ImplementationRun(command, str(ROOT), Implementation(command).hello))
+    write_document(tmp_path / "case.json", case)
+    r = cli("explain", str(tmp_path / "case.json"), "--html", str(tmp_path / "page.html"))
+    assert r.returncode == 1 and "Traceback" not in r.stderr, r.stderr
+    page = (tmp_path / "page.html").read_text()
+    assert page.count('class="terrain"') > 2  # the two views' groups, and triangles in them
