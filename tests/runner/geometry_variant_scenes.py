@@ -142,6 +142,29 @@ def variants():
         s = static(replace(s, mover=m), (c1[0] + r, c1[1], c1[2]), SphereShape(SphereRec((0.0, 0.0, 0.0), 0.05)))
         return static(s, (c0[0] + r + 0.8 * (r + 0.3), c0[1], c0[2]), SphereShape(SphereRec((0.0, 0.0, 0.0), 0.3)))
 
+    def tiny_step_down_onto_cylsphere(s):
+        """The mover lifted 0.5 m off the ground (Contact and OnWalkable), walking 5 cm level along
+        its contact plane (across the slope), its step-down height 1.9e-4 m (below EPSILON); a
+        cylsphere (radius 0.5, 0.3 m high) under its first sphere, its top 0.95e-4 m further below
+        than CylSphere.CollidesWithSphere reaches: the step finds no contact plane, so Transition
+        steps down 1.9e-4 m, meets the cylsphere, and StepSphereDown finds the step too short to
+        scale (StepDownAmt * WalkInterp below EPSILON)."""
+        m = s.mover
+        b = m.begin.frame.origin
+        n = m.contact_plane.plane.normal
+        across = math.hypot(n[0], n[1])
+        dx, dy = (n[1] / across, -n[0] / across) if across > 1e-6 else (1.0, 0.0)  # cross(n, +z): level, in the plane
+        up = (b[0], b[1], to_f32(b[2] + 0.5))
+        end = (to_f32(up[0] + 0.05 * dx), to_f32(up[1] + 0.05 * dy), up[2])
+        m = replace(m, step_down_height=1.9e-4, transient_state=m.transient_state | T.Contact | T.OnWalkable,
+                    begin=replace(m.begin, frame=replace(m.begin.frame, origin=up)),
+                    end=replace(m.begin, frame=replace(m.begin.frame, origin=end)))
+        c = sphere_centre(m, 0)
+        r = m.spheres[0].radius * m.scale
+        height = 0.3
+        low = c[2] - (r + height - 2e-4 + 0.95e-4)
+        return static(replace(s, mover=m), (c[0], c[1], low), CylSphereShape((0.0, 0.0, 0.0), 0.5, height))
+
     def head_inside_solid(s):
         """A two-sphere mover (the second 2.4 radii above the first) whose EnvCell's structure is
         given a physics BSP of one node, the plane z = h of the cell's frame midway between the
@@ -193,6 +216,8 @@ def variants():
         ("cylsphere_axis_ground_slide", "ground", onto_axis(1.0, 0.5, step_up=0.01)),         # StepSphereUp -> SlideSphere
         ("cylsphere_axis_head_ground", "ground", onto_axis(0.6, 0.3, head=True)),             # SlideSphere, sphere 1
         ("cylsphere_axis_ground_step", "ground", onto_axis(1.0, 0.9, step_up=0.5)),           # StepSphereUp's own normal
+        # added after the first recording (appended: the draws above stay those recorded)
+        ("cylsphere_tiny_step_down", "ground", tiny_step_down_onto_cylsphere),                # StepSphereDown: a step too short
     ]
 
 
