@@ -4,10 +4,10 @@
     python tests/runner/geometry_variant_scenes.py OUT_DIR [-n 4] [--seed 2426] [--only NAMES]
 
 The obstacle strategies place obstacles at random, so none stood with its centre where a mover's
-sphere centre is (within EPSILON), nor right above it along the contact plane's normal: the arms of Sphere.LandOnSphere,
-CollideWithPoint, SlideSphere (both overloads) and StepSphereUp that find the collision normal
-too small to normalise, or parallel to the contact plane's, were never taken. A cylsphere's
-normal is horizontal and longer than the radii's sum less EPSILON, or vertical: it is too small
+sphere centre is (within EPSILON, or exactly), nor right above it along the contact plane's
+normal: the arms of Sphere.LandOnSphere, CollideWithPoint, SlideSphere (all three overloads) and
+StepSphereUp that find the collision normal too small to normalise, zero, or parallel to the
+contact plane's, were never taken. A cylsphere's normal is horizontal and longer than the radii's sum less EPSILON, or vertical: it is too small
 only when the mover's sphere and the cylsphere have radii summing below 2 EPSILON, with the
 sphere's centre just outside the sum's circle before the step that collides; these scenes make
 such a mover (one sphere of radius 3.5e-4, or a second one above it) step across such a
@@ -16,7 +16,8 @@ CylSphere.LandOnCylinder, CollideWithPoint, SlideSphere and StepSphereUp each me
 Nor did an obstacle meet a two-sphere mover's second sphere alone where Sphere.IntersectsSphere's
 Collide arm (after a landing) or CylSphere.IntersectsSphere's ethereal arm tests it, nor did a
 placement put a second sphere wholly inside a solid BSP leaf, touching none of its polygons
-(BSPTree.placement_insert's second-sphere test with no polygon to push it out by).
+(BSPTree.placement_insert's second-sphere test with no polygon to push it out by), nor did a
+mover step down less than EPSILON onto a cylsphere (CylSphere.StepSphereDown's too-short step).
 
 Each variant below is applied to N records of the coreclr corpus drawn with `--seed` from its
 pool, one scene file each, named after the record with the variant appended.
@@ -30,7 +31,7 @@ from dataclasses import replace
 from tick_variant_scenes import arguments, write_variants
 
 
-VARIANT_SHARDS = ("obstacles-0012", "indoor-0012", "buildings-0012")  # the shards this script's scenes were recorded into
+VARIANT_SHARDS = ("obstacles-0012", "buildings-0012")  # the shards this script's scenes were recorded into
 
 # a mover sphere's and a cylsphere's radii summing below 2 EPSILON (port/constants.py's EPSILON 0.0002);
 # the mover's is more than EPSILON, else each of its steps is shorter than EPSILON and vanishes
@@ -61,7 +62,7 @@ def variants():
     def sphere_centre(m, k):
         """Mover sphere k's centre at its begin, in the landblock's frame."""
         o = m.begin.frame.origin
-        c = _rotate(m.begin.frame.orientation, tuple(x * m.scale for x in m.spheres[k].center))
+        c = _rotate(m.begin.frame.orientation, tuple(to_f32(x * m.scale) for x in m.spheres[k].center))
         return tuple(o[i] + c[i] for i in range(3))
 
     def static(s, at, shape, state=P.Static):
@@ -205,6 +206,7 @@ def variants():
         ("sphere_on_head_ground", "ground", on_sphere(1, 0.05, two=True)),                    # SlideSphere(checkPos), sphere 1
         ("sphere_on_centre_ground", "ground", on_sphere(0, 2.0)),                             # StepSphereUp -> SlideSphere(disp)
         ("sphere_overhead_ground", "ground", on_sphere(0, 0.5, above=0.6, step_up=0.05)),     # SlideSphere(disp): normal along the plane's
+        ("sphere_on_centre_step_up", "ground", on_sphere(0, 0.05, step_up=5.0)),             # StepSphereUp -> StepUpSlide: a zero normal
         ("sphere_on_head_after_landing", "ground", head_after_landing),                       # IntersectsSphere's collide arm, sphere 1
         ("cylsphere_ethereal_on_head", "ground", ethereal_cylsphere_on_head),                 # IntersectsSphere's ethereal arm, sphere 1
         # BSP: a placement whose second sphere is inside a solid leaf, touching no polygon
@@ -216,7 +218,6 @@ def variants():
         ("cylsphere_axis_ground_slide", "ground", onto_axis(1.0, 0.5, step_up=0.01)),         # StepSphereUp -> SlideSphere
         ("cylsphere_axis_head_ground", "ground", onto_axis(0.6, 0.3, head=True)),             # SlideSphere, sphere 1
         ("cylsphere_axis_ground_step", "ground", onto_axis(1.0, 0.9, step_up=0.5)),           # StepSphereUp's own normal
-        # added after the first recording (appended: the draws above stay those recorded)
         ("cylsphere_tiny_step_down", "ground", tiny_step_down_onto_cylsphere),                # StepSphereDown: a step too short
     ]
 
