@@ -17,7 +17,9 @@ Nor did an obstacle meet a two-sphere mover's second sphere alone where Sphere.I
 Collide arm (after a landing) or CylSphere.IntersectsSphere's ethereal arm tests it, nor did a
 placement put a second sphere wholly inside a solid BSP leaf, touching none of its polygons
 (BSPTree.placement_insert's second-sphere test with no polygon to push it out by), nor did a
-mover step down less than EPSILON onto a cylsphere (CylSphere.StepSphereDown's too-short step).
+mover step down less than EPSILON onto a cylsphere (CylSphere.StepSphereDown's too-short step),
+nor was a mover placed with an orientation of length 2 (AFrame.IsValid's length test on mono,
+where no tick record's RequestPos reaches set_frame unnormalised).
 
 Each variant below is applied to N records of the coreclr corpus drawn with `--seed` from its
 pool, one scene file each, named after the record with the variant appended.
@@ -31,7 +33,7 @@ from dataclasses import replace
 from tick_variant_scenes import arguments, write_variants
 
 
-VARIANT_SHARDS = ("obstacles-0012", "buildings-0012")  # the shards this script's scenes were recorded into
+VARIANT_SHARDS = ("obstacles-0012", "buildings-0012", "bsp-0012", "terrain-0012")  # the shards this script's scenes were recorded into
 
 # a mover sphere's and a cylsphere's radii summing below 2 EPSILON (port/constants.py's EPSILON 0.0002);
 # the mover's is more than EPSILON, else each of its steps is shorter than EPSILON and vanishes
@@ -51,7 +53,8 @@ def _rotate(q, v):
 
 def variants():
     """(name, pool, scene -> scene): "ground" draws from the outdoor transition records of a mover
-    on the ground in the middle of a cell, "indoor_placement" from the placements in an EnvCell."""
+    on the ground in the middle of a cell, "indoor_placement" from the placements in an EnvCell,
+    "placement" from the outdoor placements."""
     from acconform.flags import PhysicsState as P, TransientState as T
     from acconform.numerics import to_f32
     from acconform.scene import (BSPLeaf, BSPNode, CylSphereShape, Frame, PlaneRec, PolygonRec, Position,
@@ -166,6 +169,13 @@ def variants():
         low = c[2] - (r + height - 2e-4 + 0.95e-4)
         return static(replace(s, mover=m), (c[0], c[1], low), CylSphereShape((0.0, 0.0, 0.0), 0.5, height))
 
+    def quaternion_times_2(s):
+        """The mover's begin orientation doubled (length 2): the placement's set_frame finds the frame
+        invalid except for its heading (AFrame.IsValid's length test)."""
+        m = s.mover
+        q = tuple(to_f32(2.0 * v) for v in m.begin.frame.orientation)
+        return replace(s, mover=replace(m, begin=replace(m.begin, frame=replace(m.begin.frame, orientation=q))))
+
     def head_inside_solid(s):
         """A two-sphere mover (the second 2.4 radii above the first) whose EnvCell's structure is
         given a physics BSP of one node, the plane z = h of the cell's frame midway between the
@@ -219,6 +229,8 @@ def variants():
         ("cylsphere_axis_head_ground", "ground", onto_axis(0.6, 0.3, head=True)),             # SlideSphere, sphere 1
         ("cylsphere_axis_ground_step", "ground", onto_axis(1.0, 0.9, step_up=0.5)),           # StepSphereUp's own normal
         ("cylsphere_tiny_step_down", "ground", tiny_step_down_onto_cylsphere),                # StepSphereDown: a step too short
+        # AFrame.IsValid: a placed mover's orientation of length 2 (set_frame zeroes it), on mono too
+        ("placement_quaternion_length_2", "placement", quaternion_times_2),
     ]
 
 
@@ -250,6 +262,7 @@ def main(argv=None) -> int:
                 and any(c.id == m.begin.cell for c in s.env_cells))
 
     pools = {"ground": [(k, s) for k, s in scenes if ground(s)],
+             "placement": [(k, s) for k, s in scenes if s.mover.placement is not None and not s.env_cells and not s.buildings],
              "indoor_placement": [(k, s) for k, s in scenes if indoor_placement(s)]}
     written = write_variants(a, variants(), pools)
     print(f"{written} scenes in {a.out} ({', '.join(f'{len(p)} {k}' for k, p in pools.items())} records)")
