@@ -196,7 +196,7 @@ def get_outside_lcoord(block_cell_id: int, _x, _y):
         if x < 0 or y < 0 or x >= LAND_LENGTH or y >= LAND_LENGTH:
             return None
         return (x, y)
-    return None
+    return None  # a cell id out of range
 
 
 @anchor("LandDefs::cell_in_range", "LandDefs.cs:cell_in_range")
