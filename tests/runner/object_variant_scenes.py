@@ -9,8 +9,12 @@ ShadowObj under key 1 in CurCell's place that no cell's shadow list holds
 ArgumentException when it adds that shadow a second time (a mover's second step). No static stood
 so far off its landblock that LandDefs.AdjustToOutside fails (its cell id 0 then makes ACE's
 Landblock.get_landcell throw: gid_to_lcoord(0).Value), or in the next landblock's ground (ACE's
-init_static_objs drops it: get_landcell finds another id in the slot). No EnvCell held two statics of different shapes (the harness reads
-the second one's shadows past the first), nor did a static stand in an EnvCell ACE never loads.
+init_static_objs drops it: get_landcell finds another id in the slot). No EnvCell held two statics
+of different shapes (the harness reads the second one's shadows past the first), nor did a static
+stand in an EnvCell ACE never loads. No tick mover began with an orientation of length 2 (set_frame
+zeroes it, and NaN frames follow: a transition ending in no cell, change_cell_server from no cell,
+handle_visible_cells' EnvCell arm, and in landblock 0x018A a next transition with no begin cell),
+and no mover was in Contact and StationaryStuck (the stationary fall's Contact arm).
 Each variant below is applied to N records of the coreclr corpus drawn with `--seed` from its pool,
 one scene file each, named after the record with the variant appended (tick_variant_scenes.py's
 helpers).
@@ -29,14 +33,19 @@ VARIANT_SHARDS = ("bsp-0013", "buildings-0013", "indoor-0013", "obstacles-0013",
 def variants():
     """(name, pool, scene -> scene): "statics" draws from the outdoor transition records with
     statics, "placement" from the placement records, "ticks" and "tick_statics" from the tick
-    records (with statics outdoors), "indoor_statics" from the records with a static in an EnvCell."""
-    from acconform.flags import PhysicsState as P
+    records (with statics outdoors), "request_pos_indoor" from the request_pos tick records with a
+    RequestPos in an EnvCell, "gravity_moves" from the transition records of a mover with Gravity,
+    "indoor_statics" from the records with a static in an EnvCell."""
+    from acconform.flags import PhysicsState as P, TransientState as T
     from acconform.scene import Position, SphereRec, SphereShape, StaticObject
 
     PE = P.ParticleEmitter
 
     def mover_state(flag):
         return lambda s: replace(s, mover=replace(s.mover, state=s.mover.state | flag))
+
+    def mover_transient(flags):
+        return lambda s: replace(s, mover=replace(s.mover, transient_state=s.mover.transient_state | flags))
 
     def statics_state(flag):
         return lambda s: replace(s, objects=tuple(replace(o, state=o.state | flag) for o in s.objects))
@@ -116,12 +125,16 @@ def variants():
         ("unnormalized_mover", "ticks", unnormalized_mover),
         ("unnormalized_mover_indoor", "request_pos_indoor", unnormalized_mover),
         ("unnormalized_mover_018a", "request_pos_indoor", lambda s: unnormalized_mover(in_landblock_018a(s))),
+        # a mover in Contact and StationaryStuck (FramesStationaryFall 3 from the start): the
+        # stationary fall's contact plane set without a collision normal
+        ("contact_stationary_stuck", "gravity_moves", mover_transient(T.Contact | T.StationaryStuck)),
     ]
 
 
 def main(argv=None) -> int:
     from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle
+    from acconform.flags import PhysicsState as P
     from acconform.scene import Scene
 
     from tick_variant_scenes import VARIANT_SHARDS as TICK_SHARDS
@@ -144,6 +157,7 @@ def main(argv=None) -> int:
         "tick_statics": [(k, s) for k, s in ticks if outdoor_statics(s)],
         "request_pos_indoor": [(k, s) for k, s in ticks if s.ticks.driver == "request_pos"
                                and any(st.request_pos.cell & 0xFFFF >= 0x100 for st in s.ticks.steps)],
+        "gravity_moves": [(k, s) for k, s in moves if s.mover.placement is None and s.mover.state & P.Gravity],
         "indoor_statics": [(k, s) for k, s in moves if any(o.position.cell & 0xFFFF >= 0x100 for o in s.objects)],
     }
     written = write_variants(a, variants(), pools)
