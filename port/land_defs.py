@@ -74,11 +74,14 @@ def value_of(lcoord, where: str):
 
 
 @anchor("LandDefs::adjust_to_outside", "LandDefs.cs:AdjustToOutside")
-def adjust_to_outside(block_cell_id: int, loc: Vector3) -> tuple[bool, int, Vector3]:
+def adjust_to_outside(block_cell_id: int, loc: Vector3, runtime: Runtime) -> tuple[bool, int, Vector3]:
     """AdjustToOutside(ref blockCellID, ref loc): returns (result, new blockCellID, new loc).
 
     Note ACE snaps |x|,|y| < EPSILON to 0 before it knows whether it succeeds, so a failed
-    call still hands back the snapped loc (with blockCellID 0).
+    call still hands back the snapped loc (with blockCellID 0). `runtime` makes lcoord_to_gid's
+    ``(int)`` casts: a NaN loc passes get_outside_lcoord's range test, and ``(int)NaN`` is
+    int.MinValue on mono (no cell: 0) but 0 on .NET 10 (land coordinate 0: landblock 0x0000's
+    first cell).
     """
     cell_id = block_cell_id & CELL_ID_MASK
     if cell_in_range(cell_id):
@@ -90,7 +93,7 @@ def adjust_to_outside(block_cell_id: int, loc: Vector3) -> tuple[bool, int, Vect
 
         lcoord = get_outside_lcoord(block_cell_id, loc.x, loc.y)
         if lcoord is not None:
-            block_cell_id = wrap_u32(lcoord_to_gid(lcoord[0], lcoord[1]))
+            block_cell_id = wrap_u32(lcoord_to_gid(lcoord[0], lcoord[1], runtime))
             loc = loc.with_x(loc.x - cast_float(loc.x, cs_floor(loc.x / BLOCK_LENGTH)) * BLOCK_LENGTH)
             loc = loc.with_y(loc.y - cast_float(loc.y, cs_floor(loc.y / BLOCK_LENGTH)) * BLOCK_LENGTH)
             return True, block_cell_id, loc
@@ -99,8 +102,10 @@ def adjust_to_outside(block_cell_id: int, loc: Vector3) -> tuple[bool, int, Vect
 
 @anchor("LandDefs::adjust_to_outside", "LandDefs.cs:AdjustToOutside(Position)")
 def adjust_to_outside_pos(pos) -> bool:
-    """AdjustToOutside(Position): updates pos.obj_cell_id and pos.frame.origin in place."""
-    ok, pos.obj_cell_id, pos.frame.origin = adjust_to_outside(pos.obj_cell_id, pos.frame.origin)
+    """AdjustToOutside(Position): updates pos.obj_cell_id and pos.frame.origin in place (computing as
+    the runtime whose arithmetic made the frame's orientation)."""
+    ok, pos.obj_cell_id, pos.frame.origin = adjust_to_outside(pos.obj_cell_id, pos.frame.origin,
+                                                              pos.frame.orientation.runtime)
     return ok
 
 
@@ -191,7 +196,7 @@ def get_outside_lcoord(block_cell_id: int, _x, _y):
         if x < 0 or y < 0 or x >= LAND_LENGTH or y >= LAND_LENGTH:
             return None
         return (x, y)
-    return None
+    return None  # a cell id out of range
 
 
 @anchor("LandDefs::cell_in_range", "LandDefs.cs:cell_in_range")

@@ -1,4 +1,4 @@
-"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, report_object_collision_end, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_particle_shadow_to_cell, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, report_object_collision_end, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
 The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
 record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
@@ -39,6 +39,7 @@ from .frame import AFrame, Position
 from . import land_defs
 from .cell import obj_cell
 from .part_array import PLACEMENT_FRAME_ID, PartArray
+from .errors import ArgumentException
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
@@ -474,7 +475,7 @@ class PhysicsObj:
                 self.remove_shadows_from_cells()
                 self.add_shadows_to_cell(transition.cell_array)
                 return True
-        return True
+        return True  # no CurCell, or no cells to shadow
 
     @anchor("CPhysicsObj::prepare_to_enter_world", "PhysicsObj.cs:prepare_to_enter_world")
     def prepare_to_enter_world(self) -> None:
@@ -881,23 +882,39 @@ class PhysicsObj:
         for child in self.children:
             child.remove_shadows_from_cells()
 
+    @anchor("CPhysicsObj::add_particle_shadow_to_cell", "PhysicsObj.cs:add_particle_shadow_to_cell")
+    def add_particle_shadow_to_cell(self) -> None:
+        """One ShadowObj in CurCell under key 1, which the cell's shadow list never holds (so no
+        transition meets it). ShadowObjects.Add throws when key 1 is there already: the second
+        call for one object (remove_shadows_from_cells keeps the keys)."""
+        self.num_shadow_objects = 1
+
+        shadow_obj = ShadowObj.create(self, self.cur_cell)
+        if 1 in self.shadow_objects:
+            raise ArgumentException("An item with the same key has already been added. Key: 1")
+        self.shadow_objects[1] = shadow_obj
+
+        if self.part_array is not None:
+            self.part_array.add_parts_shadow(self.cur_cell, 1)
+
     @anchor("CPhysicsObj::add_shadows_to_cell", "PhysicsObj.cs:add_shadows_to_cell(CellArray)")
     def add_shadows_to_cell(self, cell_array) -> None:
         if self.state & PhysicsState.ParticleEmitter:
-            raise NotImplementedError("particle emitters (add_particle_shadow_to_cell) are not ported")
-        for cell in cell_array.cells.values():
-            if cell is None:
-                continue  # fixme (ACE)
+            self.add_particle_shadow_to_cell()
+        else:
+            for cell in cell_array.cells.values():
+                if cell is None:
+                    continue  # fixme (ACE)
 
-            shadow_obj = ShadowObj.create(self, cell)
-            # ShadowObjects.Add or overwrite: a .NET Dictionary keeps the key's slot either way
-            self.shadow_objects[cell.id] = shadow_obj
+                shadow_obj = ShadowObj.create(self, cell)
+                # ShadowObjects.Add or overwrite: a .NET Dictionary keeps the key's slot either way
+                self.shadow_objects[cell.id] = shadow_obj
 
-            if cell is not None:
-                cell.add_shadow_object(shadow_obj)
+                if cell is not None:
+                    cell.add_shadow_object(shadow_obj)
 
-            if self.part_array is not None:
-                self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
+                if self.part_array is not None:
+                    self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
         for child in self.children:
             child.add_shadows_to_cell(cell_array)
 

@@ -298,7 +298,7 @@ def add_all_outside_cells(lscape, position: Position, num_sphere: int, spheres, 
 
     if num_sphere != 0:
         for sphere in spheres:
-            ok, cell_point, center = land_defs.adjust_to_outside(position.obj_cell_id, sphere.center)
+            ok, cell_point, center = land_defs.adjust_to_outside(position.obj_cell_id, sphere.center, lscape.mode.runtime)
             if not ok:
                 break
 

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from acconform.numerics import EXACT, FAST
+from acconform.numerics import EXACT, FAST, MONO, NET10
 from acconform.port.constants import EPSILON
 from acconform.port import land_defs as ld
 
@@ -73,31 +73,40 @@ def test_get_outside_lcoord_floors_in_float32():
 
 @pytest.mark.anchor("LandDefs::adjust_to_outside")
 def test_adjust_to_outside_moves_across_block_edges():
-    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(-0.5, 10, 3))
+    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(-0.5, 10, 3), EXACT.runtime)
     assert ok and cell == 0xA8B40039 and loc == EXACT.vec(191.5, 10, 3)
-    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(192, 10, 0))
+    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(192, 10, 0), EXACT.runtime)
     assert ok and cell == 0xAAB40001 and loc == EXACT.vec(0, 10, 0)
-    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(30, 200, 0))
+    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(30, 200, 0), EXACT.runtime)
     assert ok and cell == 0xA9B50009 and loc == EXACT.vec(30, 8, 0)
-    ok, cell, loc = ld.adjust_to_outside(0xA9B4FFFF, EXACT.vec(100, 100, 0))  # a block id works too
+    ok, cell, loc = ld.adjust_to_outside(0xA9B4FFFF, EXACT.vec(100, 100, 0), EXACT.runtime)  # a block id works too
     assert ok and cell == 0xA9B40025
 
 
 @pytest.mark.anchor("LandDefs::adjust_to_outside")
 def test_adjust_to_outside_snaps_below_epsilon_to_zero_but_not_at_epsilon():
     just_under = np.nextafter(F(-EPSILON), F(0))
-    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(just_under, 5, 0))
+    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(just_under, 5, 0), EXACT.runtime)
     assert ok and cell == 0xA9B40001 and loc.x == 0 and not np.signbit(loc.x)
-    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(-EPSILON, 5, 0))
+    ok, cell, loc = ld.adjust_to_outside(0xA9B40001, EXACT.vec(-EPSILON, 5, 0), EXACT.runtime)
     assert ok and cell == 0xA8B40039 and loc.x == F(192) - F(EPSILON)
 
 
 @pytest.mark.anchor("LandDefs::adjust_to_outside")
 def test_adjust_to_outside_fails_with_cell_zero_and_keeps_the_snapped_point():
-    ok, cell, loc = ld.adjust_to_outside(0x00000001, EXACT.vec(-5, F(1e-5), 0))
+    ok, cell, loc = ld.adjust_to_outside(0x00000001, EXACT.vec(-5, F(1e-5), 0), EXACT.runtime)
     assert (ok, cell) == (False, 0) and loc.y == 0
-    ok, cell, _ = ld.adjust_to_outside(0xA9B40041, EXACT.vec(5, 5, 0))
+    ok, cell, _ = ld.adjust_to_outside(0xA9B40041, EXACT.vec(5, 5, 0), EXACT.runtime)
     assert (ok, cell) == (False, 0)
+
+
+@pytest.mark.anchor("LandDefs::adjust_to_outside")
+def test_adjust_to_outside_of_a_nan_point_names_no_cell_on_mono_and_landblock_column_0_on_net10():
+    # NaN passes get_outside_lcoord's range test; lcoord_to_gid's (int)NaN is int.MinValue on mono
+    # (no cell: 0) and 0 on .NET 10 (land x 0: landblock 0x00YY)
+    nan = EXACT.vec(math.nan, 5, 0)
+    assert ld.adjust_to_outside(0xA9B40001, nan, MONO)[:2] == (True, 0)
+    assert ld.adjust_to_outside(0xA9B40001, nan, NET10)[:2] == (True, 0x00B40001)
 
 
 @pytest.mark.anchor("LandDefs::get_block_offset")

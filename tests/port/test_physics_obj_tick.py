@@ -517,3 +517,25 @@ def test_a_collision_record_ends_a_second_after_its_touch_or_at_once_if_ethereal
     obj.timer.set(up(11.0))
     obj.report_collision_end(False)
     assert obj.collision_table == {}
+
+
+@pytest.mark.anchor("CPhysicsObj::add_particle_shadow_to_cell")
+@pytest.mark.anchor("CPhysicsObj::add_shadows_to_cell")
+def test_a_particle_emitter_shadows_its_cell_under_key_1_outside_the_cells_list_and_a_second_add_throws():
+    # PhysicsObj.cs add_particle_shadow_to_cell: NumShadowObjects = 1; ShadowObjects.Add(1, new
+    # ShadowObj(this, CurCell)) -- the cell's ShadowObjectList is not touched, so no transition meets
+    # it -- and Dictionary.Add throws ArgumentException for key 1 the second time (remove_shadows_from_cells
+    # keeps the keys)
+    from acconform.port.errors import ArgumentException
+    from acconform.port.transition.cell_array import CellArray
+
+    obj = mover()
+    obj.state = int(PhysicsState.ParticleEmitter)
+    cells = CellArray()
+    cells.add_cell(0xA9B40002, ObjCell(0xA9B40002, EXACT))
+    obj.add_shadows_to_cell(cells)
+    assert list(obj.shadow_objects) == [1] and obj.num_shadow_objects == 1
+    assert obj.shadow_objects[1].cell is obj.cur_cell and obj.cur_cell.shadow_object_list == []
+    obj.remove_shadows_from_cells()
+    with pytest.raises(ArgumentException):
+        obj.add_shadows_to_cell(cells)

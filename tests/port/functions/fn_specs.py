@@ -865,7 +865,7 @@ SPECS: dict[str, Spec] = {s.name: s for s in [
     _simple("get_block_offset", "LandDefs::get_block_offset", g_block_offset,
             lambda a, m: ace_error(lambda: land_defs.get_block_offset(a[0], a[1]))),
     _simple("adjust_to_outside", "LandDefs::adjust_to_outside", g_adjust_to_outside,
-            lambda a, m: land_defs.adjust_to_outside(a[0], vec(a[1]))),
+            lambda a, m: land_defs.adjust_to_outside(a[0], vec(a[1]), m.runtime)),
     _simple("blockid_to_lcoord", "LandDefs::blockid_to_lcoord", g_cell, lambda a, m: _lcoord(land_defs.blockid_to_lcoord(a[0]))),
     _simple("gid_to_lcoord", "LandDefs::gid_to_lcoord", g_gid_to_lcoord, lambda a, m: _lcoord(land_defs.gid_to_lcoord(a[0], a[1]))),
     _simple("get_outside_lcoord", "LandDefs::get_outside_lcoord", g_get_outside_lcoord,
