@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from enum import IntEnum
 
-from acconform.numerics import MONO, Runtime, Vector3, cast_float, cs_floor, wrap_i32, wrap_u32
+from acconform.numerics import Runtime, Vector3, cast_float, cs_floor, wrap_i32, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.constants import EPSILON
 from acconform.port.errors import InvalidOperationException
@@ -208,12 +208,12 @@ def cell_in_range(cell_id: int) -> bool:
     )
 
 
-@anchor("LandDefs::lcoord_to_gid", "LandDefs.cs:lcoord_to_gid", note="(int) casts follow mono")
-def lcoord_to_gid(_x, _y, runtime: Runtime = MONO) -> int:
+@anchor("LandDefs::lcoord_to_gid", "LandDefs.cs:lcoord_to_gid", note="(int) casts as the runtime makes them")
+def lcoord_to_gid(_x, _y, runtime: Runtime) -> int:
     """The cell id (as C# int: negative from landblock column 0x80 on) of a land coordinate, or 0.
 
     A NaN coordinate gets here from get_outside_lcoord (NaN passes its range test); mono's
-    ``(int)NaN`` is int.MinValue, so the answer is 0.
+    ``(int)NaN`` is int.MinValue, so the answer is 0; .NET 10's is 0, landblock 0x0000's first cell.
     """
     x = runtime.to_int32(_x)
     y = runtime.to_int32(_y)

@@ -25,6 +25,7 @@ def test_every_listed_unreachable_branch_resolves_in_todays_source_with_its_reas
     for e in entries:
         assert e.get("reason") and e.get("ace"), f"{e['module']} {e['function']}: give the reason and ACE's lines"
         assert ("to" in e) != ("through" in e), f"{e['module']} {e['function']}: an entry has `to` or `through`"
+        assert e.get("runtime", "mono") in ("coreclr", "mono"), f"{e['module']} {e['function']}: runtime coreclr or mono"
         arcs, lines = corpus_coverage.resolve(e)  # raises naming the snippet it cannot find
         assert arcs or lines
         key = (frozenset(arcs), frozenset(lines))
@@ -61,6 +62,15 @@ def test_each_runtime_has_a_coverage_kernel_with_a_floor(runtime):
     assert doc["format"] == corpus_coverage.KERNEL_FORMAT and doc["runtime"] == runtime
     assert 0 < len(doc["keys"]) < doc["corpus_records"]
     assert 0 < doc["floor_percent"] <= 100 * doc["taken"] / doc["branches"]
+
+
+def test_an_entry_naming_a_runtime_holds_on_that_runtime_only(tmp_path):
+    both = {"module": "m.py", "function": "f", "from": "if x:", "to": "return 1"}
+    net10 = {**both, "from": "if y:", "runtime": "coreclr"}
+    (tmp_path / "u.json").write_text(json.dumps({"branches": [both, net10]}))
+    assert corpus_coverage.load_unreachable(tmp_path / "u.json", runtime="coreclr") == [both, net10]
+    assert corpus_coverage.load_unreachable(tmp_path / "u.json", runtime="mono") == [both]
+    assert corpus_coverage.load_unreachable(tmp_path / "u.json") == [both, net10]
 
 
 def test_the_kernel_greedily_covers_every_arc_with_few_records():
