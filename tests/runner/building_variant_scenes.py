@@ -38,7 +38,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from tick_variant_scenes import arguments, write_variants
+from tick_variant_scenes import arguments, drawn_records, write_variants
 
 VARIANT_SHARDS = ("buildings-0005", "buildings-0006")  # the corpus shards this script's scenes were recorded into
 
@@ -164,17 +164,9 @@ def variants():
 
 
 def main(argv=None) -> int:
-    from acconform.oracle import default_corpus
-    from acconform.oracle.recorded import RecordedOracle
-    from acconform.scene import Scene
-
     a = arguments(__doc__, 12, 2426, argv)
-    oracle = RecordedOracle(default_corpus("coreclr"))
     # the drawn building records, not the variants of them written here or by the other scripts
-    records = sorted((e for e in oracle.entries if "/buildings-" in e.where
-                      and not any(f"/{shard}." in e.where for shard in ("buildings-0003", "buildings-0004")
-                                  + VARIANT_SHARDS)), key=lambda e: e.key)
-    scenes = [(e.key, Scene.from_json(e.doc()["scene"])) for e in records]
+    scenes = drawn_records(lambda where: "/buildings-" in where, ("buildings-0003", "buildings-0004") + VARIANT_SHARDS)
     walks_in = [(k, s) for k, s in scenes if s.name.split(":")[1] == "in"]
     pools = {
         "yaw0": [(k, s) for k, s in walks_in if s.buildings[0].frame.orientation == (1.0, 0.0, 0.0, 0.0)],

@@ -30,7 +30,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from tick_variant_scenes import arguments, write_variants
+from tick_variant_scenes import arguments, drawn_records, write_variants
 
 
 VARIANT_SHARDS = ("obstacles-0012", "buildings-0012", "bsp-0012", "terrain-0012")  # the shards this script's scenes were recorded into
@@ -235,16 +235,9 @@ def variants():
 
 
 def main(argv=None) -> int:
-    from acconform.oracle import default_corpus
-    from acconform.oracle.recorded import RecordedOracle
-    from acconform.scene import Scene
-
     a = arguments(__doc__, 4, 2426, argv)
-    oracle = RecordedOracle(default_corpus("coreclr"))
     # the drawn transition records, not the variants of them written here before
-    records = sorted((e for e in oracle.entries if "/ticks-" not in e.where
-                      and not any(f"/{shard}." in e.where for shard in VARIANT_SHARDS)), key=lambda e: e.key)
-    scenes = [(e.key, Scene.from_json(e.doc()["scene"])) for e in records]
+    scenes = drawn_records(lambda where: "/ticks-" not in where, VARIANT_SHARDS)
 
     def ground(s) -> bool:
         """Outdoors on the ground, one sphere, in the middle of a cell near the landblock's corner

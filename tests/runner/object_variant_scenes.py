@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from tick_variant_scenes import arguments, write_variants
+from tick_variant_scenes import arguments, drawn_records, write_variants
 
 
 VARIANT_SHARDS = ("bsp-0013", "buildings-0013", "indoor-0013", "obstacles-0013", "ticks-0013")  # the corpus shards this script's scenes were recorded into
@@ -132,20 +132,14 @@ def variants():
 
 
 def main(argv=None) -> int:
-    from acconform.oracle import default_corpus
-    from acconform.oracle.recorded import RecordedOracle
     from acconform.flags import PhysicsState as P
-    from acconform.scene import Scene
 
     from tick_variant_scenes import VARIANT_SHARDS as TICK_SHARDS
     from transition_variant_scenes import VARIANT_SHARDS as TRANSITION_SHARDS
 
     a = arguments(__doc__, 20, 2426, argv)
-    oracle = RecordedOracle(default_corpus("coreclr"))
-    mine = VARIANT_SHARDS + TICK_SHARDS + TRANSITION_SHARDS
     # the drawn records, not the variants of them written before
-    records = sorted((e for e in oracle.entries if not any(f"/{shard}." in e.where for shard in mine)), key=lambda e: e.key)
-    scenes = [(e.key, Scene.from_json(e.doc()["scene"])) for e in records]
+    scenes = drawn_records(lambda where: True, VARIANT_SHARDS + TICK_SHARDS + TRANSITION_SHARDS)
     ticks = [(k, s) for k, s in scenes if s.ticks is not None]
     moves = [(k, s) for k, s in scenes if s.ticks is None]
     outdoor_statics = lambda s: s.objects and all(o.position.cell & 0xFFFF < 0x100 for o in s.objects) and not s.env_cells

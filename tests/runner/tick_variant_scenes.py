@@ -149,17 +149,24 @@ def write_variants(a, variants, pools) -> int:
     return written
 
 
-def main(argv=None) -> int:
+def drawn_records(keep, excluded: tuple[str, ...]) -> list:
+    """(scene key, scene) of the coreclr corpus's records whose place `keep` takes (e.g. "/ticks-" in
+    it), but none of the `excluded` shards' (variants written before), in scene-key order: a variant
+    script's pools, the same draw each time it runs over the same corpus."""
     from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle
     from acconform.scene import Scene
 
-    a = arguments(__doc__, 12, 2424, argv)
     oracle = RecordedOracle(default_corpus("coreclr"))
+    records = sorted((e for e in oracle.entries if keep(e.where)
+                      and not any(f"/{shard}." in e.where for shard in excluded)), key=lambda e: e.key)
+    return [(e.key, Scene.from_json(e.doc()["scene"])) for e in records]
+
+
+def main(argv=None) -> int:
+    a = arguments(__doc__, 12, 2424, argv)
     # the drawn tick records, not the variants of them written here before
-    ticks = sorted((e for e in oracle.entries if "/ticks-" in e.where
-                    and not any(f"/{shard}." in e.where for shard in VARIANT_SHARDS)), key=lambda e: e.key)
-    scenes = [(e.key, Scene.from_json(e.doc()["scene"])) for e in ticks]
+    scenes = drawn_records(lambda where: "/ticks-" in where, VARIANT_SHARDS)
     # an EnvCell's statics are DAT stabs, which carry no state: the obstacle variants are outdoors
     with_statics = [(k, s) for k, s in scenes if s.objects and not s.env_cells]
     pools = {False: scenes, True: with_statics,

@@ -27,7 +27,7 @@ from __future__ import annotations
 import random
 from dataclasses import replace
 
-from tick_variant_scenes import arguments, write_variants
+from tick_variant_scenes import arguments, drawn_records, write_variants
 
 
 VARIANT_SHARDS = ("obstacles-0009", "buildings-0004", "bsp-0008", "obstacles-0010", "terrain-0008", "bsp-0011", "buildings-0011", "terrain-0011")  # the corpus shards this script's scenes were recorded into
@@ -131,16 +131,9 @@ def variants():
 
 
 def main(argv=None) -> int:
-    from acconform.oracle import default_corpus
-    from acconform.oracle.recorded import RecordedOracle
-    from acconform.scene import Scene
-
     a = arguments(__doc__, 100, 2425, argv)
-    oracle = RecordedOracle(default_corpus("coreclr"))
     # the drawn transition records, not the variants of them written here before
-    records = sorted((e for e in oracle.entries if "/ticks-" not in e.where
-                      and not any(f"/{shard}." in e.where for shard in VARIANT_SHARDS)), key=lambda e: e.key)
-    scenes = [(e.key, Scene.from_json(e.doc()["scene"])) for e in records]
+    scenes = drawn_records(lambda where: "/ticks-" not in where, VARIANT_SHARDS)
     pools = {
         "placement": [(k, s) for k, s in scenes if s.mover.placement is not None],
         # an EnvCell's statics are DAT stabs, which carry no state: the obstacle variant is outdoors
