@@ -518,7 +518,8 @@ def _tick_entries(runtime: str) -> tuple:
     oracle = RecordedOracle(corpus)
     key_of = {id(e): k for k, e in oracle.index().items()}
     kernel = set(json.loads((corpus / "coverage-kernel.json").read_text())["keys"])
-    keyed = [(key_of[id(e)], e) for e in oracle.select(kinds=("ticks",), runtime=runtime)]
+    # (a record whose scene an earlier one repeats is not in the index: keyed on its own)
+    keyed = [(key_of.get(id(e)) or e.key, e) for e in oracle.select(kinds=("ticks",), runtime=runtime)]
     return tuple(sorted(keyed, key=lambda ke: ke[0] not in kernel))
 
 
