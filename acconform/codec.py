@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 import math
+import struct
 from typing import Any
 
 import numpy as np
@@ -75,6 +76,7 @@ def dumps_compact(obj: Any) -> str:
 
 
 F32_MAX = float(np.finfo(np.float32).max)
+_F32x3 = struct.Struct("=3f")
 # every float32 has a decimal of at most this many significant digits that reads back to it
 # (C's "%.9g", .NET's "G9"; the shortest form has fewer)
 F32_DIGITS = 9
@@ -133,6 +135,8 @@ class Reader:
     def obj(self, allowed: set[str] | frozenset[str]) -> "Reader":
         if not isinstance(self.value, dict):
             self.fail(f"expected an object, got {_kind(self.value)}")
+        if self.value.keys() <= allowed:  # the common case, without building sets
+            return self
         unknown = sorted(set(self.value) - set(allowed))
         if unknown:
             self.fail(f"unknown field {unknown[0]!r} (allowed: {', '.join(sorted(allowed))})")
@@ -227,7 +231,7 @@ class Reader:
             a, b, c = v
             if (type(a) is float and type(b) is float and type(c) is float
                     and -F32_MAX < a < F32_MAX and -F32_MAX < b < F32_MAX and -F32_MAX < c < F32_MAX):
-                return (float(np.float32(a)), float(np.float32(b)), float(np.float32(c)))
+                return _F32x3.unpack(_F32x3.pack(a, b, c))  # each rounded to float32 (C's (float) cast)
         a, b, c = (r.f32() for r in self.list(count=3))
         return (a, b, c)
 

@@ -20,6 +20,7 @@ A branch-traced replay costs about 3-4x a plain one.
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import multiprocessing
 import sys
@@ -58,6 +59,9 @@ def _coverage(data_file: str):
 
 
 CHUNK = 200  # records traced per coverage database when each record's arcs are kept
+# the corpus measure() loaded, by directory: its workers (forked, or this process) parse records
+# with it instead of loading the corpus again
+_ORACLES: dict = {}
 
 
 def _replay(args):
@@ -70,7 +74,7 @@ def _replay(args):
     from acconform.oracle.recorded import RecordedOracle, _doc_key
     from acconform.port.run import run_scene
 
-    oracle = RecordedOracle(corpus)
+    oracle = _ORACLES.get(str(corpus)) or RecordedOracle(corpus)
     differing = 0
     names: dict[str, int] = {}
     masks: dict[str, int] = {}
@@ -128,7 +132,7 @@ def measure(runtime: str, corpus: Path | None, n: int | None, seed: int, workers
     from acconform.oracle.recorded import RecordedOracle
 
     corpus = corpus or default_corpus(runtime)
-    oracle = RecordedOracle(corpus)
+    oracle = _ORACLES[str(corpus)] = RecordedOracle(corpus)
     if keys is not None:
         index = oracle.index()
         lacking = [k for k in keys if k not in index]
@@ -355,6 +359,14 @@ def _find(lines: list[str], span: tuple[int, int], snippet: str, near: int | Non
     return after[0] if after else hits[-1]
 
 
+@functools.lru_cache(maxsize=64)
+def _parsed(src: str):
+    """A module's syntax tree, parsed once per text (the list names each module many times)."""
+    import ast
+
+    return ast.parse(src)
+
+
 def resolve(entry: dict, root: Path | None = None) -> tuple[set[str], set[tuple[str, int]]]:
     """A listed entry's branches today, as (arcs `module:a->b`, lines (module, n) that never run),
     found by its function and the source text it quotes, not by line numbers (they drift):
@@ -363,12 +375,10 @@ def resolve(entry: dict, root: Path | None = None) -> tuple[set[str], set[tuple[
     {"module", "function", "from", "through"} says the lines from `from` through `through` (or the
     function's end, "end") never run, and every branch out of them is listed. An optional "after"
     quotes a line before `from`, for a `from` line that occurs more than once in the function."""
-    import ast
-
     root = root or _port_dir()
     src = (root / entry["module"]).read_text()
     lines = src.splitlines()
-    span = _function_span(ast.parse(src), entry["function"])
+    span = _function_span(_parsed(src), entry["function"])
     # "after": when several lines start with the `from` quote, the one nearest after the line it quotes
     a = _find(lines, span, entry["from"], near=_find(lines, span, entry["after"]) if "after" in entry else None)
     if "to" in entry:

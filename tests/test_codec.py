@@ -55,3 +55,18 @@ def test_written_floats_use_the_shortest_decimal():
 def test_a_double_that_is_not_a_float32_reads_as_the_nearest_float32():
     got = Reader(0.1, "x").f32()
     assert got == float(np.float32(0.1)) and not math.isclose(got, 0.1, rel_tol=1e-12)
+
+
+_doubles = st.floats(allow_nan=False, allow_infinity=False, min_value=-3.4028234e38, max_value=3.4028234e38)
+
+
+@settings(max_examples=400)
+@given(st.tuples(_doubles, _doubles, _doubles))
+@example((0.1, -0.0, 1.401298464324817e-45))  # a decimal, -0, the smallest subnormal
+@example((1.0000000596046448, 1.0000001788139343, 7.006492321624085e-46))  # ties to even; half the smallest subnormal
+@example((3.4028235e38, -1.1754942106924411e-38, 5e-324))  # near the largest float32; the smallest normal; a double subnormal
+def test_a_vector_reads_each_component_as_the_nearest_float32_as_a_single_number_does(v):
+    """Reader.vec3's batched rounding (one struct pack of three) is f32()'s numpy rounding, bit for bit."""
+    got = Reader(list(v), "v").vec3()
+    want = tuple(Reader(x, "v").f32() for x in v)
+    assert [struct.pack("<f", x) for x in got] == [struct.pack("<f", x) for x in want]

@@ -12,7 +12,6 @@ nothing.
 
 from __future__ import annotations
 
-import json
 import os
 import warnings
 from collections import Counter
@@ -50,17 +49,19 @@ def _live(oracle) -> bool:
 
 
 def _sample_scenes(oracle, runtime, shard):
-    """This shard's sample records as (scene, branches it fires), from the recorded oracle."""
-    from acconform.scene import Scene
-
+    """This shard's sample records as (their scenes, the branches each fires, where each is). The
+    scenes are the recorded oracle's, parsed as the replay asks for them (so the oracle answers each
+    from the record it handed out, without keying the scene again)."""
     doc = load_sample(runtime)
     names = doc["branches"]
-    out = []
+    index = oracle.index()
+    entries, fired = [], []
     for key, _kind, branches in doc["records"][shard::SHARDS]:
-        line = oracle._lines.get(key)
-        assert line is not None, f"{runtime}/{SAMPLE_NAME} names record {key[:16]}, which the corpus lacks: rebuild it"
-        out.append((Scene.from_json(json.loads(line)["scene"]), {names[i] for i in branches}))
-    return out
+        entry = index.get(key)
+        assert entry is not None, f"{runtime}/{SAMPLE_NAME} names record {key[:16]}, which the corpus lacks: rebuild it"
+        entries.append(entry)
+        fired.append({names[i] for i in branches})
+    return oracle.scenes(entries), fired, [e.where for e in entries]
 
 
 def _run(run_scene, oracle, tmp_path, shard, replay):
@@ -79,7 +80,7 @@ def test_port_agrees_with_ace_on_the_stratified_sample(shard, backends, tmp_path
     if _live(oracle):
         _run(run_scene, oracle, tmp_path, shard, None)
         return
-    sample = _sample_scenes(oracle, runtime, shard)
+    scenes, fired, where = _sample_scenes(oracle, runtime, shard)
     traces = []
 
     def traced(scene):
@@ -87,9 +88,10 @@ def test_port_agrees_with_ace_on_the_stratified_sample(shard, backends, tmp_path
         traces.append(trace)
         return run_scene(scene, trace=trace)
 
-    _run(traced, oracle, tmp_path, shard, [s for s, _ in sample])
+    r = _run(traced, oracle, tmp_path, shard, scenes)
+    assert r.cases == len(traces) == len(fired)
     # the sample file's branch lists are what the port really fires (so its coverage claim holds)
-    wrong = [s.name for (s, want), got in zip(sample, traces) if set(got) != want]
+    wrong = [w for w, want, got in zip(where, fired, traces) if set(got) != want]
     assert not wrong, f"{len(wrong)} sample records fire other branches than {runtime}/{SAMPLE_NAME} says: rebuild it"
 
 

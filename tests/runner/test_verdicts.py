@@ -161,6 +161,36 @@ def test_a_replayed_difference_is_written_as_recorded_when_the_port_disagrees_wi
     assert f.case.scene == scenes[0]
 
 
+def test_the_built_in_port_replays_recorded_text_and_reads_only_an_answer_that_differs(tmp_path):
+    """Exact mode: a record whose answer, written as the corpus writes it, is the recorded text
+    agrees unread (run_text answers None); one whose recorded outcome was altered is read,
+    compared and written as a case holding the recorded outcome. Fast mode reads every answer."""
+    import gzip
+
+    from acconform.oracle import default_corpus
+    from acconform.oracle.recorded import RecordedOracle
+
+    shard = default_corpus("coreclr") / "terrain-0000.jsonl.gz"
+    with gzip.open(shard, "rt", encoding="utf-8") as f:
+        lines = [next(f) for _ in range(6)]
+    altered = lines[3].replace('"ok":true', '"ok":false', 1) if '"ok":true' in lines[3] \
+        else lines[3].replace('"ok":false', '"ok":true', 1)
+    assert altered != lines[3]
+    corpus_dir = tmp_path / "corpus"
+    corpus_dir.mkdir()
+    with gzip.open(corpus_dir / "terrain-0000.jsonl.gz", "wt", encoding="utf-8") as f:
+        f.writelines(lines[:3] + [altered] + lines[4:])
+    corpus = RecordedOracle(corpus_dir)
+    port = BuiltinPort("exact", "coreclr")
+    assert port.runs_every_scene and not BuiltinPort("fast", "coreclr").runs_every_scene
+    answers = [port.run_text(e.text()) for e in corpus.entries]
+    assert [a is None for a in answers] == [True, True, True, False, True, True]
+    r = run_campaign(port, corpus.run, replay=corpus.scenes(), failures_dir=tmp_path / "f", keep_going=True)
+    (f,) = r.found
+    assert r.cases == 6 and f.signature == ("ok",)
+    assert f.case.oracle == Outcome.from_json(json.loads(altered)["outcome"]) and f.case.port == answers[3]
+
+
 # ---------------------------------------------------------------- counting, each once
 
 
