@@ -60,7 +60,7 @@ def _coverage(data_file: str):
 
 CHUNK = 200  # records traced per coverage database when each record's arcs are kept
 # the corpus measure() loaded, by directory: its workers (forked, or this process) parse records
-# with it instead of loading the corpus again
+# with it (`_replay` runs only under measure)
 _ORACLES: dict = {}
 
 
@@ -71,10 +71,10 @@ def _replay(args):
     worker's data file then holds nothing."""
     corpus, runtime, entries, data_file, per_record = args
     from acconform.compare import compare
-    from acconform.oracle.recorded import RecordedOracle, _doc_key
+    from acconform.oracle.recorded import _doc_key
     from acconform.port.run import run_scene
 
-    oracle = _ORACLES.get(str(corpus)) or RecordedOracle(corpus)
+    oracle = _ORACLES[str(corpus)]
     differing = 0
     names: dict[str, int] = {}
     masks: dict[str, int] = {}
