@@ -59,7 +59,19 @@ def write_f64(x) -> float:
     return v
 
 
+_WRITTEN_VECS: dict[bytes, list] = {}  # write_vec's answers for 3-vectors of Python floats, by their bits
+_F64x3 = struct.Struct("=3d")
+
+
 def write_vec(v) -> list:
+    if len(v) == 3 and type(v[0]) is float and type(v[1]) is float and type(v[2]) is float:
+        key = _F64x3.pack(*v)  # the bits: -0.0 and 0.0 are two keys (a vertex recurs, in a scene and across)
+        written = _WRITTEN_VECS.get(key)
+        if written is None:
+            if len(_WRITTEN_VECS) >= _WRITTEN_LIMIT:
+                _WRITTEN_VECS.clear()
+            written = _WRITTEN_VECS[key] = [write_f32(c) for c in v]
+        return list(written)
     return [write_f32(c) for c in v]
 
 

@@ -39,7 +39,7 @@ class BuiltinPort:
         self.runtime = runtime
         self._run = run_scene
         # a generative campaign sets this: each run then keeps its boundaries (a branches.Trace)
-        # in last_trace, for Hypothesis' target() and event()
+        # in last_trace, for the campaign's climb toward exact boundaries (runner.boundary_scores)
         self.trace_boundaries = False
         self.last_trace = None
 

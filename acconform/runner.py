@@ -6,13 +6,16 @@ oracle (acconform.oracle.get_oracle().run) are the default pair, and tests pass 
 
 Two kinds of campaign:
 
-- generative (a live oracle, or any callable pair): Hypothesis draws scenes from
-  acconform.strategies.scenes(kinds); a difference fails the example, Hypothesis shrinks it to a
-  minimal scene, and the minimal scene is written as a case file. The campaign's database (a
-  Hypothesis example database: a directory, or one shared through GitHub Actions artifacts;
-  `SavedFailures`) remembers each shrunk failing scene, so the next run of the same kinds and
-  mode -- on this machine or, sharing the database, another shard's -- tries them first, as
-  explicit examples; one that no longer fails is forgotten.
+- generative (a live oracle, or any callable pair): scenes are drawn from
+  acconform.strategies.scenes(kinds) outside Hypothesis' engine (strategies.fast_draw), a few
+  times cheaper per scene, each with the choice sequence that drew it; in the second half of a
+  round some are the scene that came closest to an exact boundary with one choice moved. A
+  difference is handed to Hypothesis as its choice sequence, Hypothesis shrinks it as one of its
+  own, acconform.shrink then shrinks the scene itself, and the minimal scene is written as a case
+  file. The campaign's database (a Hypothesis example database: a directory, or one shared through
+  GitHub Actions artifacts; `SavedFailures`) remembers each shrunk failing scene, so the next run
+  of the same kinds and mode -- on this machine or, sharing the database, another shard's -- runs
+  them first; one that no longer fails is forgotten.
 - replay (a recorded oracle): Hypothesis cannot ask a recording about scenes it never saw, so
   the recorded scenes are replayed as they are. The first difference of each kind is then shrunk
   (acconform.shrink) with a *stand-in* for ACE -- the built-in port, computing as the recorded
@@ -46,7 +49,7 @@ import sys
 import tempfile
 import time
 from collections import Counter
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable, Iterable, Sequence
 
@@ -96,10 +99,8 @@ class SavedFailures:
     example database (`example_database`): under the campaign's `failure_key`, one value per
     shrunk scene, its JSON.
 
-    The values are scenes, not Hypothesis' choice sequences: the campaign hands them to Hypothesis
-    as explicit examples, so they replay whatever the strategies draw today, and Hypothesis itself
-    runs without a database (with one it keeps a Pareto front of every target() score, which cost
-    40-50% of a live campaign's time). A directory database writes each value whole then renames it,
+    The values are scenes, not Hypothesis' choice sequences: the campaign runs them first, as they
+    are, so they replay whatever the strategies draw today. A directory database writes each value whole then renames it,
     so workers and shards sharing one never read half a scene; a value that does not read as a
     scene (another version) is skipped."""
 
@@ -422,117 +423,230 @@ def campaign_gc():
         gc.unfreeze()
 
 
-def aim_at_boundaries(trace) -> None:
-    """Hypothesis target() on how close the run came to each exact boundary (in ulps, log-scaled
-    so the last few ulps weigh as much as the first thousands) and event() per boundary hit."""
+def boundary_scores(trace) -> dict[str, float]:
+    """How close the run came to each exact boundary, as a score to raise: -log2(1 + ulps), so
+    the last few ulps weigh as much as the first thousands."""
     if trace is None:
-        return
-    from hypothesis import event, target
+        return {}
+    return {name: -math.log2(1 + ulps) for name, ulps in trace.closest.items()}
 
-    for name, ulps in trace.closest.items():
-        target(-math.log2(1 + ulps), label=f"closeness to {name}")
-    for key in trace:
-        if key.startswith("boundary:"):
-            event(key)
+
+# After this share of a round's budget, half the scenes are the closest scene yet to a boundary with
+# one choice moved (Hypothesis' own targeting starts at half its budget too).
+TARGET_AFTER = 0.5
+HANDOFF_KEY = b"acconform:handoff"  # the in-memory database that hands a found difference to Hypothesis
+
+
+def _nudged(choices: tuple, rng) -> tuple:
+    """`choices` with one changed a little: an integer by 1 or a power of 2, a float by a relative
+    power of 2 (down to float32's last bits), a boolean flipped."""
+    if not choices:
+        return choices
+    i = rng.randrange(len(choices))
+    v = choices[i]
+    if type(v) is bool:
+        v = not v
+    elif type(v) is int:
+        v += rng.choice((-1, 1)) * (1 << rng.randrange(0, 9) if rng.random() < 0.5 else 1)
+    else:
+        v += rng.choice((-1.0, 1.0)) * (abs(v) or 1.0) * 2.0 ** -rng.randrange(1, 26)
+    return choices[:i] + (v,) + choices[i + 1:]
 
 
 def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, seed: int, mode: str,
                 keep_going: bool, database, tick, should_stop, versions: Versions,
                 shrink_budget: int | None = None) -> None:
-    """Compare up to `n` scenes drawn by Hypothesis; add each new kind of difference (shrunk) to
-    `r.found`. Scenes the port cannot run are rejected (Hypothesis draws another: they do not count
-    toward `n`) and counted in `r.skipped`; the scenes shrinking runs go to `r.shrink_runs`.
-    `shrink_budget`: at most that many smaller scenes are run per difference (None: Hypothesis'
-    own limits); past it every candidate passes unrun, so Hypothesis' shrinker soon ends with
-    the smallest failing scene it ran; 0: differences are written as drawn."""
-    from hypothesis import HealthCheck, Phase, Verbosity, example, given, reject, settings
-    from hypothesis import seed as hseed
+    """Compare up to `n` drawn scenes; add each new kind of difference (shrunk) to `r.found`.
+
+    Scenes are drawn outside Hypothesis' engine (strategies.fast_draw: the strategies and
+    Hypothesis' own choice distribution, without its per-choice bookkeeping), from a Random
+    seeded by `seed` and the round; past TARGET_AFTER of the budget half of them are the scene
+    that came closest to some exact boundary with one choice moved (hill climbing on
+    `boundary_scores`). Hypothesis' generation mutator (a span's choices copied over another's)
+    is left out: with it 5 of 6 scenes were mutations, and the project's mutants took 3x the
+    scenes to find (tests/runner/mutation_report.py: median 138 against 40). A difference is handed to Hypothesis as the choice sequence that drew
+    it, and Hypothesis shrinks it as one of its own. Scenes the port cannot run are skipped (another
+    is drawn: they do not count toward `n`) and counted in `r.skipped`; the scenes shrinking runs
+    go to `r.shrink_runs`. `shrink_budget`: at most that many smaller scenes are run per
+    difference (None: Hypothesis' own limits); past it every candidate passes unrun, so
+    Hypothesis' shrinker soon ends with the smallest failing scene it ran; 0: differences are
+    written as drawn."""
+    import random
 
     from .shrink import scene_bytes
     from .strategies import check_kinds, scenes
     from .strategies.determinism import pinned_constants
+    from .strategies.fast_draw import FastDrawer
 
     kinds = check_kinds(kinds)
+    strategy = scenes(kinds)
     saved = SavedFailures(database, failure_key(kinds, mode)) if database else None
     known: set[tuple[str, ...]] = set()
     if hasattr(port, "trace_boundaries"):  # the built-in port: aim the search at exact boundaries
         port.trace_boundaries = True
     unsupported = getattr(port, "unsupported", None)
     against = shrunk_against(oracle)
-    compared = 0
-    round_ = 0
-    while compared < n:
-        last: list = []
-        failing = [0]  # the size of the first failing scene this round; then Hypothesis is shrinking
-        ran = [0]
-        shrinking = [0]  # the smaller scenes run this round
-        explicit = saved.scenes()[:n - compared] if saved is not None else []
-        replayed = {id(s): s for s in explicit}
+    what = "live ACE" if against == "ace" else "the built-in port"
 
-        def differential(scene):
-            if should_stop():
-                raise _Stop
-            why = unsupported(scene) if unsupported is not None else None
-            if why:
-                if not failing[0]:
-                    r.skipped[why] += 1
-                    r.cases += 1
-                reject()
-            if failing[0] and shrink_budget is not None and shrinking[0] >= shrink_budget:
-                if scene == last[0]:  # Hypothesis runs its smallest failing scene once more, to report it
-                    raise _Mismatch(signature(last[3]))
-                return
-            ran_case = run_case(port, oracle, scene, mode, r.timings)
-            if failing[0]:
-                r.shrink_runs += 1
-                shrinking[0] += 1
-            else:
-                ran[0] += 1
-                r.cases += 1
-                tick(1)
-            aim_at_boundaries(getattr(port, "last_trace", None))
-            a, b, diffs = ran_case
-            if diffs:
-                sig = signature(diffs)
-                if sig not in known:
-                    failing[0] = failing[0] or scene_bytes(scene)
-                    last[:] = [scene, a, b, diffs, implementation_run(port)]
-                    raise _Mismatch(sig)
-            elif id(scene) in replayed:
+    def found(scene, ran_case, impl, shrink: Shrink) -> None:
+        """A difference, with what the implementation said of the run that made it (`impl`)."""
+        a, b, diffs = ran_case
+        sig = signature(diffs)
+        known.add(sig)
+        if saved is not None:
+            saved.save(scene)
+        r.found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions, impl, shrink), None, sig))
+
+    def compared_case(scene):
+        """The scene's case (port, ACE, differences), or None when the port cannot run it (skipped)."""
+        if should_stop():
+            raise _Stop
+        why = unsupported(scene) if unsupported is not None else None
+        if why:
+            r.skipped[why] += 1
+            r.cases += 1
+            return None
+        ran_case = run_case(port, oracle, scene, mode, r.timings)
+        r.cases += 1
+        tick(1)
+        return ran_case
+
+    try:
+        compared = 0
+        # the database's failing scenes first, as they are (each was shrunk when it was found)
+        for scene in saved.scenes()[:n] if saved is not None else ():
+            ran_case = compared_case(scene)
+            if ran_case is None:
+                continue
+            compared += 1
+            if ran_case[2] and signature(ran_case[2]) not in known:
+                found(scene, ran_case, implementation_run(port),
+                      Shrink(against, f"the example database's scene, shrunk by Hypothesis against {what}",
+                             scene_bytes(scene), scene_bytes(scene)))
+                if not keep_going:
+                    return
+            elif not ran_case[2]:
                 saved.forget(scene)
 
-        for scene in explicit:
-            differential = example(scene)(differential)
-        budget = n - compared - len(explicit)  # explicit examples do not count toward max_examples
-        phases = [Phase.explicit, Phase.generate, Phase.target] if budget > 0 else [Phase.explicit]
-        if shrink_budget != 0:
-            phases.append(Phase.shrink)
-        differential = settings(max_examples=max(budget, 1), database=None, deadline=None, verbosity=Verbosity.quiet,
-                                suppress_health_check=list(HealthCheck), report_multiple_bugs=False,
-                                phases=phases)(hseed(seed * 7919 + round_)(given(scenes(kinds))(differential)))
+        round_ = 0
+        with pinned_constants():
+            while compared < n:
+                rng = random.Random(seed * 7919 + round_)
+                drawer = FastDrawer(strategy, rng.getrandbits(64))
+                best: dict[str, tuple[float, tuple]] = {}  # boundary -> (closest score, the choices that drew it)
+                budget = n - compared
+                climb_from = int(budget * TARGET_AFTER)
+                ran = skipped = 0
+                hit = None
+                while ran < budget and skipped < 10 * budget + 100:  # Hypothesis' bound on invalid draws too
+                    prefix = ()
+                    if ran >= climb_from and best and rng.random() < 0.5:
+                        prefix = _nudged(best[rng.choice(sorted(best))][1], rng)
+                    scene, choices = drawer.draw(prefix)
+                    ran_case = compared_case(scene)
+                    if ran_case is None:
+                        skipped += 1
+                        continue
+                    ran += 1
+                    for name, score in boundary_scores(getattr(port, "last_trace", None)).items():
+                        if name not in best or score > best[name][0]:
+                            best[name] = (score, choices)
+                    if ran_case[2] and signature(ran_case[2]) not in known:
+                        hit = (scene, choices, ran_case, implementation_run(port))
+                        break
+                compared += ran
+                round_ += 1
+                if hit is None:  # the budget is spent, or the port can run none of the scenes drawn
+                    break
+                _shrink_found(port, oracle, r, hit, strategy=strategy, mode=mode, known=known, found=found,
+                              shrink_budget=shrink_budget, should_stop=should_stop, what=what, against=against,
+                              seed=seed * 7919 + round_)
+                if not keep_going:
+                    break
+    except _Stop:
+        return
 
-        new = False
-        try:
-            with pinned_constants():
-                differential()
-        except _Mismatch:
-            scene, a, b, diffs, impl = last
-            sig = signature(diffs)
-            known.add(sig)
-            if saved is not None:
-                saved.save(scene)
-            what = "live ACE" if against == "ace" else "the built-in port"
-            shrink = Shrink(against, f"shrunk by Hypothesis against {what}", failing[0], scene_bytes(scene))
-            r.found.append(Found(make_case(scene, a, b, diffs, seed, mode, versions, impl, shrink), None, sig))
-            new = True
-        except _Stop:
+
+def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mode: str, known, found,
+                  shrink_budget, should_stop, what: str, against: str, seed: int) -> None:
+    """Hand a difference to Hypothesis as the choices that drew it: Hypothesis replays them from an
+    in-memory example database and shrinks the scene as one of its own, and `found` gets the case."""
+    from hypothesis import HealthCheck, Phase, Verbosity, given, settings
+    from hypothesis import seed as hseed
+    from hypothesis.database import InMemoryExampleDatabase
+    from hypothesis.database import choices_to_bytes
+
+    from .shrink import DEFAULT_BUDGET, scene_bytes, shrink_scene
+
+    scene0, choices, case0, impl0 = hit
+    size0 = scene_bytes(scene0)
+    sig0 = signature(case0[2])
+    if shrink_budget == 0:
+        found(scene0, case0, impl0, Shrink("none", "written as drawn, not shrunk: the shrink budget is 0", size0, size0))
+        return
+    last: list = []
+    runs = [0]
+
+    def differential(scene):
+        if should_stop():
+            raise _Stop
+        if unsupported is not None and unsupported(scene):
             return
-        compared += ran[0]
-        round_ += 1
-        # stop: first difference and not keep_going; or a clean round (the budget is spent or
-        # Hypothesis ran out of scenes); or a round that compared nothing
-        if (new and not keep_going) or not new or ran[0] == 0:
-            break
+        if shrink_budget is not None and runs[0] >= shrink_budget:
+            if last and scene == last[0]:  # Hypothesis runs its smallest failing scene once more, to report it
+                raise _Mismatch(signature(last[1][2]))
+            return
+        ran_case = run_case(port, oracle, scene, mode, r.timings)
+        r.shrink_runs += 1
+        runs[0] += 1
+        diffs = ran_case[2]
+        if diffs and signature(diffs) not in known:
+            last[:] = [scene, ran_case, implementation_run(port)]
+            raise _Mismatch(signature(diffs))
+
+    unsupported = getattr(port, "unsupported", None)
+    db = InMemoryExampleDatabase()
+    db.save(HANDOFF_KEY + b".secondary", choices_to_bytes(choices))
+    test = given(strategy)(differential)
+    test._hypothesis_internal_database_key = HANDOFF_KEY
+    test = settings(max_examples=1, database=db, deadline=None, verbosity=Verbosity.quiet,
+                    suppress_health_check=list(HealthCheck), report_multiple_bugs=False,
+                    phases=[Phase.reuse, Phase.shrink])(hseed(seed)(test))
+    try:
+        test()
+    except _Mismatch:
+        scene, ran_case, impl = last
+        shrink = Shrink(against, f"shrunk by Hypothesis against {what}", size0)
+    else:  # Hypothesis' replay of the choices did not fail as the draw did
+        scene, ran_case, impl = scene0, case0, impl0
+        shrink = Shrink("none", f"not shrunk: Hypothesis' replay of the drawn scene did not differ ({', '.join(sig0)})",
+                        size0)
+    # then the scene itself (acconform.shrink: fewer objects and cells, a shorter path, ...): Hypothesis
+    # shrinks the choices, and fewer choices can still draw a larger scene
+    sig = signature(ran_case[2])
+    smaller: list = []
+
+    def still_fails(s: Scene) -> bool:
+        if should_stop():
+            raise _Stop
+        if unsupported is not None and unsupported(s):
+            return False
+        c = run_case(port, oracle, s, mode, r.timings)
+        r.shrink_runs += 1
+        runs[0] += 1
+        if c[2] and signature(c[2]) == sig:
+            smaller[:] = [s, c, implementation_run(port)]
+            return True
+        return False
+
+    left = DEFAULT_BUDGET if shrink_budget is None else shrink_budget - runs[0]
+    if left > 0:
+        _, tried = shrink_scene(scene, still_fails, left)
+        if smaller:
+            scene, ran_case, impl = smaller
+            shrink = Shrink(against, f"{shrink.note if shrink.against != 'none' else 'drawn'}, then its scene by "
+                                     f"acconform.shrink against {what} ({tried} smaller scenes tried)", size0)
+    found(scene, ran_case, impl, replace(shrink, bytes_after=scene_bytes(scene)))
 
 
 REPLAYED = Shrink("none", "replayed as recorded: not shrunk")
@@ -629,7 +743,6 @@ def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices:
 def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: str, budget: int) -> None:
     """Shrink the first replayed difference of each kind against `stand_in` (the built-in port
     standing in for ACE), when it agrees bit for bit with ACE's recorded answer on that scene."""
-    from dataclasses import replace
 
     from .shrink import scene_bytes, shrink_scene
 
@@ -784,6 +897,13 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
     if mode not in ("exact", "fast"):
         raise AcconformError(f"unknown mode {mode!r}: choose exact or fast")
     per_process = getattr(getattr(oracle, "__self__", oracle), "per_process", False)
+    if per_process and workers > 1:
+        from .oracle.runtime import loaded_runtime
+
+        if loaded_runtime() is not None:  # a forked worker would start ACE on the parent's runtime and crash
+            raise AcconformError(f"this process has already loaded a .NET runtime ({loaded_runtime()}), which forked "
+                                 f"workers cannot use: run the live campaign with one worker, or from a process "
+                                 f"that has not loaded ACE")
     versions = None if per_process and workers > 1 else versions_of(port, oracle)
     items = None if replay is None else replay if isinstance(replay, Sequence) else list(replay)
     part, parts = shard

@@ -5,7 +5,8 @@
 
 Each measurement is its own subprocess (one revision's `acconform` imported per process: this
 tree's, or REV's through benchmarks/revision.py's shim), drawing n scenes of one kind with
-`sample_scenes` (Hypothesis' engine, generation only) after a warm-up draw of 20. The two
+`sample_scenes` (as a campaign draws its fresh scenes: strategies.fast_draw in this tree, Hypothesis' engine
+before it) after a warm-up draw of 20. The two
 revisions alternate round by round so that load from other processes falls on both; the figure
 is the fastest round (the least disturbed), with the slowest beside it.
 """
@@ -13,15 +14,13 @@ is the fastest round (the least disturbed), with the slowest beside it.
 from __future__ import annotations
 
 import argparse
-import json
 import os
-import subprocess
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from revision import revision_env  # noqa: E402
+from revision import child_ms, revision_env  # noqa: E402
 
 CHILD = """
 import json, sys, time, warnings
@@ -36,11 +35,7 @@ print(json.dumps({"ms": (time.perf_counter() - t) * 1000 / len(got)}))
 
 
 def _time(env, kind: str, n: int, seed: int) -> float:
-    r = subprocess.run([sys.executable, "-c", CHILD, kind, str(n), str(seed)], env=env, capture_output=True,
-                       text=True, cwd="/")
-    if r.returncode != 0:
-        raise SystemExit(f"bench_draw: drawing {kind} failed: {r.stderr.strip().splitlines()[-1:]}")
-    return json.loads(r.stdout.strip().splitlines()[-1])["ms"]
+    return child_ms(env, CHILD, kind, str(n), str(seed), what=f"bench_draw: drawing {kind}")
 
 
 def main() -> int:

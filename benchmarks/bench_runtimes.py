@@ -5,7 +5,7 @@
 
 The scenes are the ones a live campaign runs: a generative campaign of the port against itself
 (`run_campaign`, all kinds, one worker, no example database) with the port tracing its boundaries,
-so Hypothesis' target() steers the draw as `acconform check` does; the scenes it ran are kept.
+so the campaign's climb toward exact boundaries steers the draw as `acconform check` does; the scenes it ran are kept.
 Each pass runs them all, traced as in a campaign, through `run_scene` on one runtime; the
 runtimes alternate pass by pass (the machine is shared: a neighbour's burst hits both) and the
 best of --repeat passes is reported as ms/scene (process CPU time), with coreclr/mono.

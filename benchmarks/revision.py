@@ -36,3 +36,16 @@ def revision_env(rev: str):
         yield dict(os.environ, PYTHONPATH=str(_shim(wt)))
     finally:
         subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)], capture_output=True)
+
+
+def child_ms(env, code: str, *args: str, what: str) -> float:
+    """Run `code` (a script printing a JSON object with "ms" last) in a fresh Python under `env`
+    (this tree's, or a revision's from revision_env) and return its "ms"; its error line ends the
+    benchmark, naming `what` failed."""
+    import json
+    import sys
+
+    r = subprocess.run([sys.executable, "-c", code, *args], env=env, capture_output=True, text=True, cwd="/")
+    if r.returncode != 0:
+        raise SystemExit(f"{what} failed: {r.stderr.strip().splitlines()[-1:]}")
+    return json.loads(r.stdout.strip().splitlines()[-1])["ms"]

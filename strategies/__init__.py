@@ -84,31 +84,14 @@ def scenes(kinds=None) -> st.SearchStrategy:
 def sample_scenes(kinds: tuple[str, ...] | None, n: int, seed: int) -> Iterator:
     """n scenes drawn from scenes(kinds), deterministic for a seed (and a Hypothesis version).
 
-    Draws through Hypothesis' own engine (generation phase only, no database, derandomized
-    by `seed`), so sampled scenes have the same distribution a campaign explores.
+    Drawn as a campaign draws its fresh scenes (strategies.fast_draw: the strategies, with Hypothesis'
+    own choice distribution, from a Random seeded by `seed`), so sampled scenes have the
+    distribution a campaign explores.
     """
-    from hypothesis import HealthCheck, Phase, given, settings
-    from hypothesis import seed as hseed
-
     from .determinism import pinned_constants
+    from .fast_draw import FastDrawer
 
-    strategy = scenes(kinds)
-    out: list = []
-    round_ = 0
-    while len(out) < n:
-        batch: list = []
-
-        @hseed(seed * 1000003 + round_)
-        @settings(max_examples=n - len(out), database=None, phases=[Phase.generate], deadline=None,
-                  suppress_health_check=list(HealthCheck))
-        @given(strategy)
-        def collect(scene):
-            batch.append(scene)
-
-        with pinned_constants():
-            collect()
-        out.extend(batch[: n - len(out)])
-        round_ += 1
-        if not batch:  # pragma: no cover - the strategy never runs dry
-            raise AcconformError("scene generation produced nothing")
+    drawer = FastDrawer(scenes(kinds), seed * 1000003)
+    with pinned_constants():
+        out = [drawer.draw()[0] for _ in range(n)]
     yield from out

@@ -177,6 +177,7 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
     wall = dr.take(draw, WALLS)
     yaw = dr.take(draw, dg.YAWS)
     lift = to_f32(dr.take(draw, PORCH_HEIGHTS)) if policy == "porch" else draw(FLOOR_OFFSETS)
+    border = None
     if policy == "border":
         border = draw(BORDERS)
         inset = dr.take(draw, BORDER_INSET)
@@ -294,5 +295,5 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
         where = _outdoor_position(home, at, dg.yaw_quat(yaw))
         objects = (StaticObject(0x70000000, where, sh.box(size, size, size)),)
     name = f"building:{policy}" + ("" if state & int(PhysicsState.EdgeSlide) else ":no-edge-slide")
-    return Scene(_landblocks(home, ground_index, policy == "border"), mover, objects, engine_mode=mode, name=name,
+    return Scene(_landblocks(home, ground_index, border not in (None, "cell")), mover, objects, engine_mode=mode, name=name,
                  environments=(built.environment,), env_cells=built.env_cells, buildings=(building,))

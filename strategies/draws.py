@@ -22,6 +22,10 @@ draw here makes the spans and labels of the strategy it stands for: `f32` *is*
 labelled as one_of labelled it, and a one_of whose branches exist only during the draw
 (`one_of`) gets spans with labels of their own, as one_of's were (made from its branches, no
 other span shared them). With that, a seed draws byte-for-byte the scenes it drew before.
+
+Campaigns now draw their fresh scenes outside the engine (fast_draw.py), where spans cost nothing
+and mean nothing; what still reads them is Hypothesis' shrinker, which a found difference is handed
+to, and which works span by span (a span deleted, two spans with one label made equal).
 """
 
 from __future__ import annotations

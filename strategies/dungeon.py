@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from hypothesis import strategies as st
 
 from acconform.flags import CullMode, PhysicsState, TransientState
-from acconform.numerics import to_f32
+from acconform.numerics import to_f32, to_f32_3
 from acconform.port.constants import FLOOR_Z
 from acconform.scene import (CellBSPLeaf, CellBSPNode, CellPortalRec, CellStructRec, ContactPlane, EnvCell,
                              Environment, Frame, Landblock, Mover, PlaneRec, PolygonRec, Position, Scene, SphereRec,
@@ -54,8 +54,7 @@ SPLIT_TOL = 0.05
 
 # ---------------------------------------------------------------- geometry in a cell's frame
 
-def _v(p):
-    return tuple(to_f32(c) for c in p)
+_v = to_f32_3  # a point's coordinates rounded to float32
 
 
 def facing(verts, normal) -> tuple:
@@ -279,29 +278,40 @@ def _physics_bsp(physics: tuple, max_depth: int) -> BSPNode | BSPLeaf:
     planes = [plane_of(rec.vertices) for rec in polys]
     boundary = [b for _, b in physics]
 
-    def sphere_of(ids):
-        pts = [v for i in ids for v in polys[i].vertices]
-        return sh.bounding_sphere(pts) if pts else SphereRec((0.0, 0.0, 0.0), 0.0)
+    # polygon sets are bit masks (bit i: polygon i), so a split costs two ANDs per candidate plane
+    spheres = {}  # a set -> its sphere: both sides of a split often keep the same polygons
 
-    # which side of each plane each polygon reaches, once per plane (a node only picks among them)
+    def sphere_of(ids: int):
+        s = spheres.get(ids)
+        if s is None:
+            pts = {v for i in _members(ids) for v in polys[i].vertices}  # a vertex shared by polygons counts once
+            s = spheres[ids] = sh.bounding_sphere(pts) if pts else SphereRec((0.0, 0.0, 0.0), 0.0)
+        return s
+
+    # which polygons reach each side of each plane, once per plane (a node only picks among them)
     reach = {}
     for k, pl in enumerate(planes):
         if pl not in reach:
-            ds = [[plane_distance(pl, v) for v in rec.vertices] for rec in polys]
-            reach[pl] = ([max(d) > -SPLIT_TOL for d in ds], [min(d) < SPLIT_TOL for d in ds])
+            front = back = 0
+            for i, rec in enumerate(polys):
+                d = [plane_distance(pl, v) for v in rec.vertices]
+                if max(d) > -SPLIT_TOL:
+                    front |= 1 << i
+                if min(d) < SPLIT_TOL:
+                    back |= 1 << i
+            reach[pl] = (front, back)
 
-    def build(ids, candidates, solid, depth):
-        # the plane that splits best (the larger side smallest); a leaf when none splits
+    def build(ids: int, candidates, solid, depth):
+        # the plane that splits best (the larger side smallest, the first such); a leaf when none splits
         best = None
         for k in candidates:
             in_front, behind = reach[planes[k]]
-            front = [i for i in ids if in_front[i]]
-            back = [i for i in ids if behind[i]]
-            size = max(len(front), len(back))
-            if (len(front) < len(ids) or len(back) < len(ids)) and (best is None or size < best[0]):
+            front, back = ids & in_front, ids & behind
+            size = max(front.bit_count(), back.bit_count())
+            if (front != ids or back != ids) and (best is None or size < best[0]):
                 best = (size, k, front, back)
         if best is None or depth == max_depth:
-            return BSPLeaf(tuple(ids), solid, sphere_of(ids))
+            return BSPLeaf(_members(ids), solid, sphere_of(ids))
         _, k, front, back = best
         rest = [c for c in candidates if planes[c] != planes[k]]
         return BSPNode(planes[k], sphere_of(ids), build(front, rest, solid, depth + 1),
@@ -310,7 +320,17 @@ def _physics_bsp(physics: tuple, max_depth: int) -> BSPNode | BSPLeaf:
     firsts = {}
     for k, pl in enumerate(planes):
         firsts.setdefault(pl, k)
-    return build(list(range(len(polys))), sorted(firsts.values()), False, 0)
+    return build((1 << len(polys)) - 1, sorted(firsts.values()), False, 0)
+
+
+def _members(mask: int) -> tuple[int, ...]:
+    """The set bits of a mask, lowest first."""
+    out = []
+    while mask:
+        low = mask & -mask
+        out.append(low.bit_length() - 1)
+        mask ^= low
+    return tuple(out)
 
 
 def cell_bsp(p: Piece, g: CellGeometry, order: tuple[int, ...], back_leaves: bool, ramp_floor: bool):

@@ -16,12 +16,12 @@ local frame with z = 0 at the object's base.
 from __future__ import annotations
 
 import math
+from itertools import repeat
 
-import numpy as np
 from hypothesis import strategies as st
 
 from acconform.flags import CullMode
-from acconform.numerics import to_f32
+from acconform.numerics import f32_next_up, to_f32, to_f32_3
 from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, PlaneRec, PolygonRec, SphereRec, newell_normal,
                              SphereShape)
 
@@ -34,8 +34,7 @@ def f32s(lo: float, hi: float):
     return st.floats(to_f32(lo), to_f32(hi), width=32, allow_nan=False, allow_infinity=False)
 
 
-def _v(p):
-    return tuple(to_f32(c) for c in p)
+_v = to_f32_3  # a point's coordinates rounded to float32
 
 
 def _plane(verts) -> PlaneRec:
@@ -47,16 +46,19 @@ def _plane(verts) -> PlaneRec:
     return PlaneRec(_v((nx, ny, nz)), to_f32(-(nx * x0 + ny * y0 + nz * z0)))
 
 
+MIN_RADIUS = to_f32(0.01)  # a bounding sphere's floor (a point or a degenerate polygon still gets one)
+
+
 def bounding_sphere(points) -> SphereRec:
     xs, ys, zs = zip(*points)
     c = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2, (min(zs) + max(zs)) / 2)
     c = _v(c)
-    r = max(math.dist(c, p) for p in points)
-    rf = np.float32(r)
-    if float(rf) < r:
-        rf = np.nextafter(rf, np.float32(np.inf))
-    rf = np.nextafter(rf, np.float32(np.inf))  # one ulp of slack for float32 distance rounding
-    return SphereRec(c, float(max(rf, np.float32(0.01))))
+    r = max(map(math.dist, repeat(c), points))
+    rf = to_f32(r)
+    if rf < r:
+        rf = f32_next_up(rf)
+    rf = f32_next_up(rf)  # one ulp of slack for float32 distance rounding
+    return SphereRec(c, max(rf, MIN_RADIUS))
 
 
 def solid(faces: list[list[tuple[float, float, float]]], sides: int = int(CullMode.Clockwise)) -> BSPShape:

@@ -159,3 +159,44 @@ def test_a_progress_bar_goes_to_stderr(capsys):
     run_campaign(fake_port, fake_port, n=30, seed=1, failures_dir=None, database=None, progress=True)
     err = capsys.readouterr().err
     assert "30/30 cases" in err and "0 differences" in err
+
+
+def test_a_difference_hypothesis_cannot_replay_is_written_as_drawn_and_says_so(tmp_path):
+    # the campaign draws outside Hypothesis and hands a difference over as its choices; a backend
+    # that differs once only (state, not the scene) fails the draw but not Hypothesis' replay
+    calls = {"n": 0}
+
+    def once(scene):
+        calls["n"] += 1
+        o = fake_port(scene)
+        return dataclasses.replace(o, walkable=not o.walkable) if calls["n"] == 3 else o
+
+    r = run_campaign(once, fake_port, n=20, seed=1, failures_dir=tmp_path, database=None)
+    assert len(r.found) == 1 and r.found[0].signature == ("walkable",)
+    shrink = r.found[0].case.shrink
+    assert shrink.against == "none" and "did not differ" in shrink.note
+    assert shrink.bytes_before == shrink.bytes_after > 0 and load_document(r.found[0].path).scene == r.found[0].case.scene
+
+
+def test_the_second_half_of_a_round_climbs_toward_the_closest_boundary(monkeypatch):
+    # past TARGET_AFTER of the budget about half the scenes are the closest scene yet with one choice moved
+    from acconform import runner
+
+    nudges = []
+    real = runner._nudged
+
+    class Traced:
+        trace_boundaries = False
+        last_trace = None
+        runs = 0
+
+        def __call__(self, scene):
+            self.runs += 1
+            self.last_trace = type("T", (), {"closest": {"b": abs(scene.mover.begin.frame.origin[0] - 96.0)}})()
+            return fake_port(scene)
+
+    port = Traced()
+    monkeypatch.setattr(runner, "_nudged", lambda *a: nudges.append(port.runs) or real(*a))
+    r = runner.run_campaign(port, fake_port, n=200, seed=4, failures_dir=None, database=None)
+    assert r.ok and r.cases == 200
+    assert min(nudges) >= 100 and 30 <= len(nudges) <= 70

@@ -30,7 +30,7 @@ IGNORE = int(PhysicsState.IgnoreCollisions)
 @pytest.fixture(scope="module")
 def bsp_scenes():
     # seed 5 drew no back-probe ledge once the touch policy came, seed 6 14 ledges once placements drew faces and solids
-    return list(sample_scenes(("bsp",), 200, 7))
+    return list(sample_scenes(("bsp",), 300, 7))
 
 
 @pytest.fixture(scope="module")
@@ -96,7 +96,7 @@ def test_a_ledge_scene_starts_grounded_on_the_platform_top_near_its_edge(bsp_sce
 
 
 def test_back_probe_ledges_walk_off_at_rest_with_edge_slide_and_a_step_down_short_of_the_drop(bsp_scenes):
-    probes = [s for s in bsp_scenes if s.name.startswith("bsp:ledge-back-probe")]
+    probes = [s for s in _ledges(bsp_scenes) if s.name.startswith("bsp:ledge-back-probe")]
     assert len(probes) >= 5
     for s in probes:
         m, top = s.mover, s.objects[0]
@@ -155,8 +155,10 @@ def test_the_landblock_set_is_no_larger_than_reach_needs(default_scenes):
         inner = all(reach + 0.01 < c < BLOCK - reach - 0.01 for p in pts for c in p[:2])
         far = all(object_reach(o)[1] + REACH_SLACK + 0.01 < min(
             c, BLOCK - c) for o in s.objects for c in object_reach(o)[0][:2])
+        # a "border" house reaches back into its neighbours wherever the mover walks
         if inner and far and m.begin.cell >> 16 == m.end.cell >> 16 and all(
-                o.position.cell >> 16 == m.begin.cell >> 16 for o in s.objects):
+                o.position.cell >> 16 == m.begin.cell >> 16 for o in s.objects) and not s.name.startswith(
+                "building:border"):
             assert len(s.landblocks) == 1, s.name
             singles += 1
     assert singles > 50
