@@ -407,3 +407,24 @@ def test_an_operand_answers_each_runtimes_formula_as_a_fresh_one_does(v, q):
                 got = (rt.transform_by_quaternion(vec, shared), rt.transform_by_matrix(vec, shared_matrix))
                 want = (rt.transform_by_quaternion(vec, fresh), rt.transform_by_matrix(vec, fresh_matrix))
                 assert [_bits(g) for g in got] == [_bits(w) for w in want]
+
+
+def _double_bits(x: float) -> int:
+    return struct.unpack("<Q", struct.pack("<d", x))[0]
+
+
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")  # numpy's overflow warning, on both sides
+@settings(max_examples=3000)
+@given(st.one_of(st.floats(), st.integers(0, 2**64 - 1).map(lambda b: struct.unpack("<d", struct.pack("<Q", b))[0]),
+                 st.floats(min_value=3.4e38, max_value=3.5e38), st.floats(min_value=-1e-44, max_value=1e-44)))
+def test_to_f32_rounds_every_double_as_numpys_float32_cast_does_nan_payloads_and_overflow_included(x):
+    want = float(np.float32(x))
+    got = nx.to_f32(x)
+    assert _double_bits(got) == _double_bits(want)
+    assert nx.to_f32_3((x, -x, x)) == (got, nx.to_f32(-x), got) or math.isnan(x)
+
+
+@given(st.floats(min_value=0.0, max_value=float(np.float32(3.4e38)), width=32))
+def test_f32_next_up_is_numpys_nextafter_toward_infinity_for_non_negative_float32s(x):
+    want = float(np.nextafter(np.float32(x), np.float32(np.inf)))
+    assert nx.f32_next_up(x) == want and nx.f32_next_up(-0.0) == nx.f32_next_up(0.0)
