@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from .errors import InvalidScene
+from .numerics import to_f32_3
 
 
 _WRITTEN: dict[float, float] = {}  # write_f32's answers for nonzero finite Python floats (by value)
@@ -88,7 +89,6 @@ def dumps_compact(obj: Any) -> str:
 
 
 F32_MAX = float(np.finfo(np.float32).max)
-_F32x3 = struct.Struct("=3f")
 # every float32 has a decimal of at most this many significant digits that reads back to it
 # (C's "%.9g", .NET's "G9"; the shortest form has fewer)
 F32_DIGITS = 9
@@ -243,7 +243,7 @@ class Reader:
             a, b, c = v
             if (type(a) is float and type(b) is float and type(c) is float
                     and -F32_MAX < a < F32_MAX and -F32_MAX < b < F32_MAX and -F32_MAX < c < F32_MAX):
-                return _F32x3.unpack(_F32x3.pack(a, b, c))  # each rounded to float32 (C's (float) cast)
+                return to_f32_3(v)  # each rounded to float32 (C's (float) cast)
         a, b, c = (r.f32() for r in self.list(count=3))
         return (a, b, c)
 

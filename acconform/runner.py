@@ -100,9 +100,9 @@ class SavedFailures:
     shrunk scene, its JSON.
 
     The values are scenes, not Hypothesis' choice sequences: the campaign runs them first, as they
-    are, so they replay whatever the strategies draw today. A directory database writes each value whole then renames it,
-    so workers and shards sharing one never read half a scene; a value that does not read as a
-    scene (another version) is skipped."""
+    are, so they replay whatever the strategies draw today. A directory database writes each
+    value whole then renames it, so workers and shards sharing one never read half a scene; a
+    value that does not read as a scene (another version) is skipped."""
 
     def __init__(self, database, key: bytes):
         self.db = example_database(database)
@@ -464,8 +464,9 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
     that came closest to some exact boundary with one choice moved (hill climbing on
     `boundary_scores`). Hypothesis' generation mutator (a span's choices copied over another's)
     is left out: with it 5 of 6 scenes were mutations, and the project's mutants took 3x the
-    scenes to find (tests/runner/mutation_report.py: median 138 against 40). A difference is handed to Hypothesis as the choice sequence that drew
-    it, and Hypothesis shrinks it as one of its own. Scenes the port cannot run are skipped (another
+    scenes to find (tests/runner/mutation_report.py: median 138 against 40). A difference is
+    handed to Hypothesis as the choice sequence that drew it, and Hypothesis shrinks it as one of
+    its own; acconform.shrink then shrinks the scene itself. Scenes the port cannot run are skipped (another
     is drawn: they do not count toward `n`) and counted in `r.skipped`; the scenes shrinking runs
     go to `r.shrink_runs`. `shrink_budget`: at most that many smaller scenes are run per
     difference (None: Hypothesis' own limits); past it every candidate passes unrun, so
@@ -573,8 +574,7 @@ def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, m
     in-memory example database and shrinks the scene as one of its own, and `found` gets the case."""
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
     from hypothesis import seed as hseed
-    from hypothesis.database import InMemoryExampleDatabase
-    from hypothesis.database import choices_to_bytes
+    from hypothesis.database import InMemoryExampleDatabase, choices_to_bytes
 
     from .shrink import DEFAULT_BUDGET, scene_bytes, shrink_scene
 
@@ -586,6 +586,7 @@ def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, m
         return
     last: list = []
     runs = [0]
+    unsupported = getattr(port, "unsupported", None)
 
     def differential(scene):
         if should_stop():
@@ -604,7 +605,6 @@ def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, m
             last[:] = [scene, ran_case, implementation_run(port)]
             raise _Mismatch(signature(diffs))
 
-    unsupported = getattr(port, "unsupported", None)
     db = InMemoryExampleDatabase()
     db.save(HANDOFF_KEY + b".secondary", choices_to_bytes(choices))
     test = given(strategy)(differential)

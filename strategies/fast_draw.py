@@ -21,12 +21,11 @@ choice moved instead.
 
 from __future__ import annotations
 
-import math
 from random import Random
 
 from hypothesis.control import _current_build_context
 from hypothesis.internal.conjecture.providers import HypothesisProvider
-from hypothesis.internal.floats import sign_aware_lte
+from hypothesis.internal.conjecture.choice import choice_permitted
 from hypothesis.strategies._internal.lazy import unwrap_strategies
 
 
@@ -65,6 +64,7 @@ class _ArgLabel:
 
 
 _ARG_LABEL = _ArgLabel()
+_TYPES = {"integer": int, "float": float, "boolean": bool}
 _CONTEXT = _BuildContext()
 
 
@@ -89,18 +89,20 @@ class FastData:
         strategy.validate()
         return unwrap_strategies(strategy).do_draw(self)
 
-    def _replayed(self):
-        """The prefix's next choice, or None once it is used up."""
+    def _replayed(self, choice_type: str, constraints: dict):
+        """The prefix's next choice when this draw can take it (Hypothesis' own test, as its replay
+        of a choice sequence applies it); None when it cannot or the prefix is used up."""
         i = len(self.choices)
-        return self.prefix[i] if i < len(self.prefix) else None
+        if i < len(self.prefix):
+            v = self.prefix[i]
+            if type(v) is _TYPES[choice_type] and choice_permitted(v, constraints):
+                return v
+        return None
 
     def draw_integer(self, min_value=None, max_value=None, *, weights=None, shrink_towards=0, forced=None,
                      observe=True):
         if forced is None and observe and self.prefix:
-            v = self._replayed()
-            if (type(v) is int and (min_value is None or v >= min_value)
-                    and (max_value is None or v <= max_value)):
-                forced = v
+            forced = self._replayed("integer", {"min_value": min_value, "max_value": max_value})
         if forced is None:
             forced = self.provider.draw_integer(min_value, max_value, weights=weights, shrink_towards=shrink_towards)
         if observe:
@@ -109,23 +111,19 @@ class FastData:
 
     def draw_float(self, min_value=-float("inf"), max_value=float("inf"), *, allow_nan=True,
                    smallest_nonzero_magnitude=5e-324, forced=None, observe=True):
+        constraints = {"min_value": min_value, "max_value": max_value, "allow_nan": allow_nan,
+                       "smallest_nonzero_magnitude": smallest_nonzero_magnitude}
         if forced is None and observe and self.prefix:
-            v = self._replayed()
-            if (type(v) is float and not math.isnan(v) and sign_aware_lte(min_value, v)
-                    and sign_aware_lte(v, max_value) and (v == 0.0 or abs(v) >= smallest_nonzero_magnitude)):
-                forced = v
+            forced = self._replayed("float", constraints)
         if forced is None:
-            forced = self.provider.draw_float(min_value=min_value, max_value=max_value, allow_nan=allow_nan,
-                                              smallest_nonzero_magnitude=smallest_nonzero_magnitude)
+            forced = self.provider.draw_float(**constraints)
         if observe:
             self.choices.append(forced)
         return forced
 
     def draw_boolean(self, p=0.5, *, forced=None, observe=True):
         if forced is None and observe and self.prefix:
-            v = self._replayed()
-            if type(v) is bool and (p > 0 or not v) and (p < 1 or v):
-                forced = v
+            forced = self._replayed("boolean", {"p": p})
         if forced is None:
             forced = self.provider.draw_boolean(p)
         if observe:
