@@ -45,6 +45,7 @@ import numpy as np
 
 from .flags import ObjectInfoState, PhysicsState, TransientState, flag_names
 from .outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
+from .numerics import f32_bits
 
 MODES = ("exact", "fast")
 FAST_ULPS = 64  # float32 ULPs allowed between a double run and ACE's float32 run
@@ -71,8 +72,6 @@ class Difference:
         return self.render()
 
 
-def _bits(x: float) -> int:
-    return int(np.float32(x).view(np.uint32))
 
 
 def _show(path: str, v) -> str:
@@ -95,14 +94,16 @@ def _show(path: str, v) -> str:
         return "TickState(error=" + repr(v.error) + ")" if v.error is not None else "a TickState"
     if isinstance(v, float):
         f = np.float32(v)
-        return f"{f!r}"[len("np.float32("):-1] + f" (0x{_bits(v):08x})" if math.isfinite(v) else f"{v} (0x{_bits(v):08x})"
+        return f"{f!r}"[len("np.float32("):-1] + f" (0x{f32_bits(v):08x})" if math.isfinite(v) else f"{v} (0x{f32_bits(v):08x})"
     return repr(v)
 
 
 def float_equal(a: float, b: float, mode: str = "exact") -> bool:
     """Whether two float32 values count as equal under `mode` (see the module docstring)."""
     if mode == "exact":
-        return _bits(a) == _bits(b)
+        if a == b:  # one value, so one float32 rounding: only the sign of a zero can tell them apart
+            return a != 0.0 or math.copysign(1.0, a) == math.copysign(1.0, b)
+        return f32_bits(a) == f32_bits(b)  # NaNs, or two doubles that round to one float32
     fa, fb = np.float32(a), np.float32(b)
     if np.isnan(fa) or np.isnan(fb):
         return bool(np.isnan(fa) and np.isnan(fb))
@@ -117,7 +118,7 @@ def ulp_distance(a: float, b: float) -> int:
     """How many float32 values lie between a and b (0 when equal; +0 and -0 are 0 apart)."""
 
     def ordered(x):
-        i = _bits(x)
+        i = f32_bits(x)
         return i if i < 0x80000000 else 0x80000000 - i  # monotone map of the float32 line to ints
 
     return abs(ordered(a) - ordered(b))
@@ -166,34 +167,56 @@ def _compare_ticks(va, vb, mode: str, out: list) -> None:
         _compare_record(va[i], vb[i], f"ticks[{i}].", mode, out)
 
 
+_TICKS, _DOUBLE, _SHADOW, _PLACEMENT, _STATIC, _ERROR, _VEC, _FLOAT, _OTHER = range(9)
+_RECORDS = (ContactPlaneState, NormalState, PlaneState)
+_PLANS: dict[type, tuple] = {}  # a record type -> its fields in `_order`, each with how it is compared
+
+
+def _plan(record) -> tuple:
+    plan = _PLANS.get(type(record))
+    if plan is None:
+        def how(name):
+            if name == "ticks" and isinstance(record, Outcome):
+                return _TICKS
+            if name in _DOUBLE_FIELDS:
+                return _DOUBLE
+            if name == "shadow_cells":
+                return _SHADOW
+            return {"placement": _PLACEMENT, "static_cells": _STATIC, "error": _ERROR}.get(
+                name, _VEC if name in _VEC_FIELDS else _FLOAT if name in _FLOAT_FIELDS else _OTHER)
+        plan = _PLANS[type(record)] = tuple((name, how(name)) for name in _order(record))
+    return plan
+
+
 def _compare_record(a, b, prefix: str, mode: str, out: list) -> None:
-    for name in _order(a):
-        path = f"{prefix}{name}"
+    for name, how in _plan(a):
         va, vb = getattr(a, name), getattr(b, name)
-        if name == "ticks" and isinstance(a, Outcome):
+        if how == _VEC and mode == "exact" and type(va) is tuple and va == vb and 0.0 not in va:
+            continue  # equal nonzero values round to one float32 each (the common case, decided at once)
+        path = prefix + name
+        if how == _TICKS:
             _compare_ticks(va, vb, mode, out)
-        elif name in _DOUBLE_FIELDS:
+        elif how == _DOUBLE:
             if _double_bits(va) != _double_bits(vb):
                 out.append(Difference(path, va, vb))
-        elif name == "shadow_cells":
+        elif how == _SHADOW:
             if va != vb:
                 out.append(Difference(path, va, vb))
-        elif isinstance(va, (ContactPlaneState, NormalState, PlaneState)) or (
-                isinstance(va, PlacementState) and isinstance(vb, PlacementState)):
+        elif isinstance(va, _RECORDS) or (isinstance(va, PlacementState) and isinstance(vb, PlacementState)):
             _compare_record(va, vb, path + ".", mode, out)
-        elif name == "placement" and (va is None) != (vb is None):
+        elif how == _PLACEMENT and (va is None) != (vb is None):
             out.append(Difference(path, va, vb))
-        elif name == "static_cells":
+        elif how == _STATIC:
             if va is not None and vb is not None and va != vb:
                 out.append(Difference(path, va, vb))
-        elif name == "error":
+        elif how == _ERROR:
             if (va is None) != (vb is None) or (mode == "exact" and va is not None and _etype(va) != _etype(vb)):
                 out.append(Difference(path, va, vb))
-        elif name in _VEC_FIELDS:
+        elif how == _VEC:
             for i, (x, y) in enumerate(zip(va, vb)):
                 if not float_equal(x, y, mode):
                     out.append(Difference(f"{path}[{i}]", x, y))
-        elif name in _FLOAT_FIELDS:
+        elif how == _FLOAT:
             if not float_equal(va, vb, mode):
                 out.append(Difference(path, va, vb))
         elif va != vb or type(va) is not type(vb):

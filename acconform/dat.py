@@ -39,7 +39,7 @@ Records are listed parts first; every record of a scene has a distinct id (the i
 object's place in the scene's list).
 
 **Indoors** (`environment_record`, `env_cell_record`, `landblock_info_record`; `cell_dat_records`
-and `portal_dat_records` gather a scene's): an `Environment` (portal DAT, its scene id
+gathers a scene's cell DAT records, `scene_records` all of them): an `Environment` (portal DAT, its scene id
 ``0x0D00XXXX``) holds its cell structures keyed by index (FileTypes/Environment.cs,
 Entity/CellStruct.cs): per structure one vertex array holding its polygons' and then its physics
 polygons' vertices, deduplicated by exact float32 bits as above; polygons and physics polygons keyed
@@ -113,6 +113,7 @@ _u32 = struct.Struct("<I")
 _i32 = struct.Struct("<i")
 _3f = struct.Struct("<3f")
 _4f = struct.Struct("<4f")
+_LEAF_HEAD = struct.Struct("<Ii")  # a cell or drawing tree's leaf: its tag and LeafIndex
 
 
 @dataclass(frozen=True, slots=True)
@@ -292,7 +293,7 @@ def cell_bsp_node(node, out: list, leaves: list) -> None:
     """A cell BSP tree in DatLoader's BSPType.Cell layout, pre-order: a node's tag (which children
     follow) and splitting plane, then its children; a leaf's tag and LeafIndex (pre-order ordinal)."""
     if isinstance(node, CellBSPLeaf):
-        out.append(struct.pack("<Ii", TAG_LEAF, len(leaves)))
+        out.append(_LEAF_HEAD.pack(TAG_LEAF, len(leaves)))
         leaves.append(node)
         return
     front, back = node.front is not None, node.back is not None
@@ -326,37 +327,41 @@ def _polygon_plane(poly: PolygonRec) -> tuple[float, float, float, float]:
     return nx, ny, nz, -(nx * x + ny * y + nz * z)
 
 
-def _box(poly: PolygonRec, *boxes) -> tuple[float, ...]:
-    """The axis-aligned box (min x, y, z, max x, y, z) around a polygon's vertices and `boxes` (None: empty)."""
+def _box(poly: PolygonRec) -> tuple[float, ...]:
+    """The axis-aligned box (min x, y, z, max x, y, z) around a polygon's vertices."""
     xs, ys, zs = zip(*poly.vertices)
-    lo, hi = [min(xs), min(ys), min(zs)], [max(xs), max(ys), max(zs)]
-    for b in boxes:
-        if b is not None:
-            lo = [min(a, c) for a, c in zip(lo, b[:3])]
-            hi = [max(a, c) for a, c in zip(hi, b[3:])]
-    return (*lo, *hi)
+    return min(xs), min(ys), min(zs), max(xs), max(ys), max(zs)
 
 
-def drawing_bsp_node(rec: CellStructRec, lo: int, hi: int, portal_indices: dict, out: list, leaves: list):
+def _joined(a: tuple, b: tuple | None) -> tuple:
+    """The box around boxes a and b (None: empty)."""
+    if b is None:
+        return a
+    return (a[0] if a[0] <= b[0] else b[0], a[1] if a[1] <= b[1] else b[1], a[2] if a[2] <= b[2] else b[2],
+            a[3] if a[3] >= b[3] else b[3], a[4] if a[4] >= b[4] else b[4], a[5] if a[5] >= b[5] else b[5])
+
+
+def drawing_bsp_node(rec: CellStructRec, lo: int, hi: int, portal_indices: dict, out: list, leaves: list,
+                     boxes: list):
     """The drawing tree over polygon ids lo .. hi - 1 in DatLoader's BSPType.Drawing layout (see
     `drawing_bsp`): an empty range is a leaf (its tag and pre-order LeafIndex); otherwise the node of
     the middle id k: its tag and plane, the front tree (ids below k), the back tree (ids above k),
     its sphere, then ``BPIN``'s polygon ids (count, ids) or ``PORT``'s (polygon count, portal count,
-    ids, then per portal its index and polygon id as two shorts). Returns the box around the
-    subtree's vertices (None for a leaf)."""
+    ids, then per portal its index and polygon id as two shorts). `boxes` holds each polygon's
+    `_box`. Returns the box around the subtree's vertices (None for a leaf)."""
     if lo == hi:
-        out.append(struct.pack("<Ii", TAG_LEAF, len(leaves)))
+        out.append(_LEAF_HEAD.pack(TAG_LEAF, len(leaves)))
         leaves.append(lo)
         return None
     k = (lo + hi) // 2
     portals = portal_indices.get(k, ())
     plane = _polygon_plane(rec.polygons[k])
     out.append(_u32.pack(TAG_PORT if portals else TAG_BPIN) + _pack_4f(*plane))
-    front = drawing_bsp_node(rec, lo, k, portal_indices, out, leaves)
-    back = drawing_bsp_node(rec, k + 1, hi, portal_indices, out, leaves)
-    box = _box(rec.polygons[k], front, back)
-    half = [(box[i + 3] - box[i]) / 2.0 for i in range(3)]
-    out.append(_pack_4f(*(box[i] + half[i] for i in range(3)), (half[0] ** 2 + half[1] ** 2 + half[2] ** 2) ** 0.5))
+    front = drawing_bsp_node(rec, lo, k, portal_indices, out, leaves, boxes)
+    back = drawing_bsp_node(rec, k + 1, hi, portal_indices, out, leaves, boxes)
+    box = _joined(_joined(boxes[k], front), back)
+    h0, h1, h2 = (box[3] - box[0]) / 2.0, (box[4] - box[1]) / 2.0, (box[5] - box[2]) / 2.0
+    out.append(_pack_4f(box[0] + h0, box[1] + h1, box[2] + h2, (h0 ** 2 + h1 ** 2 + h2 ** 2) ** 0.5))
     if portals:
         out.append(_u32.pack(1) + _u32.pack(len(portals)) + _u16.pack(k)
                    + b"".join(struct.pack("<HH", j & 0xFFFF, k) for j in portals))
@@ -376,7 +381,7 @@ def drawing_bsp(rec: CellStructRec, out: list) -> None:
     portal_indices: dict[int, list[int]] = {}
     for j, k in enumerate(rec.portals):
         portal_indices.setdefault(k, []).append(j)
-    drawing_bsp_node(rec, 0, len(rec.polygons), portal_indices, out, [])
+    drawing_bsp_node(rec, 0, len(rec.polygons), portal_indices, out, [], [_box(p) for p in rec.polygons])
 
 
 def _align(out: list, length: int) -> int:
@@ -514,7 +519,36 @@ def building_model_records(scene: Scene) -> tuple[DatRecord, ...]:
     return tuple(r for index, b in enumerate(scene.buildings) for r in building_records(b, index).records)
 
 
+@dataclass(frozen=True, slots=True)
+class SceneRecords:
+    """Every DAT record a scene's world is made from: the mover's, each static's (scene order), the
+    portal DAT's others (Environments, then the buildings' shells) and the cell DAT's
+    (`cell_dat_records`)."""
+
+    mover: ObjectRecords
+    statics: tuple[ObjectRecords, ...]
+    portal: tuple[DatRecord, ...]
+    cell: tuple[DatRecord, ...]
+
+
+_last_written: list = [None, None]  # the last scene `scene_records` wrote, and its records
+
+
+def scene_records(scene: Scene) -> SceneRecords:
+    """The scene's DAT records, written once for the port and ACE's facade both: a campaign hands
+    each of them the same scene in turn, in one process, and an indoor scene's Environments cost
+    more to write than ACE's whole case (docs/oracle.md). Scenes are immutable, so the last one's
+    records are kept (and the scene with them, so its identity cannot pass to another)."""
+    if scene is not _last_written[0]:
+        records = SceneRecords(mover_records(scene.mover),
+                               tuple(static_records(o, index) for index, o in enumerate(scene.objects)),
+                               environment_records(scene) + building_model_records(scene),
+                               cell_dat_records(scene))
+        _last_written[:] = [scene, records]
+    return _last_written[1]
+
+
 __all__ = ["building_info", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
            "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
-           "env_cell_stabs", "mover_records", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
+           "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF", "TAG_PORT"]

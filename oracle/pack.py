@@ -11,7 +11,7 @@ import struct
 from dataclasses import fields
 
 from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
-from ..dat import building_model_records, cell_dat_records, environment_records, has_objects, mover_records, static_records
+from ..dat import has_objects, scene_records
 from ..scene import DRIVERS, TICK_INPUTS, Landblock, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
@@ -65,10 +65,9 @@ def _records(recs) -> list[bytes]:
     return _record_list(recs.records)
 
 
-def _object(o, index: int) -> bytes:
+def _object(o, recs) -> bytes:
     """A static object: its scene id, position, state and scale (applied as WorldObject.InitPhysicsObj
-    does), the DAT id `PhysicsObj.makeObject` takes and its DAT records."""
-    recs = static_records(o, index)
+    does), the DAT id `PhysicsObj.makeObject` takes and its DAT records (`recs`)."""
     head = struct.pack("<I" + _POS + "IfI", o.id, *_pos(o.position), o.state, o.scale, recs.did)
     return b"".join([head] + _records(recs))
 
@@ -116,12 +115,13 @@ def pack_scene(scene: Scene) -> bytes:
     for lb in scene.landblocks:
         out.append(b"\xfc\0\0\0")  # 252: the length of every landblock_bytes
         out.append(landblock_bytes(lb, has_objects(scene, lb.id | 0xFFFF)))
-    out += _record_list(environment_records(scene) + building_model_records(scene) + cell_dat_records(scene))
+    written = scene_records(scene)
+    out += _record_list(written.portal + written.cell)
     out.append(struct.pack("<i", len(scene.objects)))
-    for i, o in enumerate(scene.objects):
-        out.append(_object(o, i))
+    for o, recs in zip(scene.objects, written.statics):
+        out.append(_object(o, recs))
     m = scene.mover
-    recs = mover_records(m)
+    recs = written.mover
     out += _records(recs)
     cp = m.contact_plane
     cpv = (0, 0, 0.0, 0.0, 0.0, 0.0) if cp is None else (1, cp.cell, *cp.plane.normal, cp.plane.d)

@@ -25,7 +25,6 @@ from acconform.flags import TransientState
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from acconform import dat, deep
-from acconform.dat import cell_dat_records, environment_records, static_records
 from acconform.staging import MOVER_ID
 from acconform.scene import ENV_CELL_FIRST, Scene, StaticObject
 
@@ -123,21 +122,19 @@ def place_mover(scene: Scene, mover: PhysicsObj, lscape: LScape, trace) -> Place
 def portal_dat_for(scene: Scene, mode, timer: PhysicsTimer | None = None) -> tuple[PortalDat, list[int]]:
     """The PortalDat (carrying the run's clock `timer`) and, per static object in scene order, the
     id makeObject takes."""
-    records = {r.id: r.data for r in dat.mover_records(scene.mover).records}
-    dids = []
-    for index, record in enumerate(scene.objects):
-        written = static_records(record, index)
-        dids.append(written.did)
-        for dat_record in written.records:
+    written = dat.scene_records(scene)
+    records = {r.id: r.data for r in written.mover.records}
+    for static in written.statics:
+        for dat_record in static.records:
             records[dat_record.id] = dat_record.data
-    for dat_record in environment_records(scene) + dat.building_model_records(scene):
+    for dat_record in written.portal:
         records[dat_record.id] = dat_record.data
-    return PortalDat(records, mode, scene.engine_mode == "server", timer), dids
+    return PortalDat(records, mode, scene.engine_mode == "server", timer), [static.did for static in written.statics]
 
 
 @harness("the run's cell DAT: the EnvCell and LandblockInfo records acconform/dat.py writes for the scene")
 def cell_dat_for(scene: Scene, mode) -> CellDat:
-    return CellDat({r.id: r.data for r in cell_dat_records(scene)}, mode)
+    return CellDat({r.id: r.data for r in dat.scene_records(scene).cell}, mode)
 
 
 @harness("the run's world: its portal and cell DATs and the LScape that reads them (release it after)")

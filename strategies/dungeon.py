@@ -26,7 +26,6 @@ ground below the cells: a landblock without terrain, as a dungeon's is.
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass, field
 
@@ -269,11 +268,6 @@ def physics_bsp(physics: list, max_depth: int = 4) -> BSPNode | BSPLeaf:
     cell) is solid. Node and leaf spheres bound the polygons below them. Below `max_depth` nodes
     a leaf holds what is left (a deeper tree costs both sides more per scene, and the corpus more
     bytes, for the same polygons)."""
-    return _physics_bsp(tuple(physics), max_depth)
-
-
-@functools.lru_cache(maxsize=4096)  # a piece's shape recurs across scenes; its tree is an immutable record
-def _physics_bsp(physics: tuple, max_depth: int) -> BSPNode | BSPLeaf:
     polys = [rec for rec, _ in physics]
     planes = [plane_of(rec.vertices) for rec in polys]
     boundary = [b for _, b in physics]
@@ -459,11 +453,15 @@ def build(d: Dungeon, visible: str = "all", bsp_order=(0, 1, 2, 3, 4, 5), back_l
         physics = [r for r, _ in g.physics]
         rec = CellStructRec(tuple(g.polygons), tuple(g.portals), tuple(physics),
                             physics_bsp(g.physics, bsp_depth), bsp)
-        key = rec
-        if key not in struct_index:
-            struct_index[key] = len(structs)
+        # pieces of one shape share a structure: equal records, found by their polygons first (hashing
+        # a whole record walks both of its trees)
+        same = struct_index.setdefault((rec.polygons, rec.portals, rec.physics_polygons), [])
+        index = next((k for k in same if structs[k] == rec), None)
+        if index is None:
+            index = len(structs)
+            same.append(index)
             structs.append(rec)
-        portals_of[i] = (struct_index[key], g)
+        portals_of[i] = (index, g)
     env = Environment(ENVIRONMENT_ID, tuple(structs))
     # portals: entry (-x), exit (+x), side (+y) as cell_geometry listed them
     env_cells = []

@@ -417,11 +417,12 @@ def _double_bits(x: float) -> int:
 @settings(max_examples=3000)
 @given(st.one_of(st.floats(), st.integers(0, 2**64 - 1).map(lambda b: struct.unpack("<d", struct.pack("<Q", b))[0]),
                  st.floats(min_value=3.4e38, max_value=3.5e38), st.floats(min_value=-1e-44, max_value=1e-44)))
-def test_to_f32_rounds_every_double_as_numpys_float32_cast_does_nan_payloads_and_overflow_included(x):
+def test_to_f32_and_f32_bits_round_every_double_as_numpys_float32_cast_does_nan_payloads_and_overflow_included(x):
     want = float(np.float32(x))
     got = nx.to_f32(x)
     assert _double_bits(got) == _double_bits(want)
     assert nx.to_f32_3((x, -x, x)) == (got, nx.to_f32(-x), got) or math.isnan(x)
+    assert nx.f32_bits(x) == int(np.float32(x).view(np.uint32)) == nx.f32_bits(np.float32(x))
 
 
 @given(st.floats(min_value=0.0, max_value=float(np.float32(3.4e38)), width=32))
