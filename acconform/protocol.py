@@ -412,7 +412,8 @@ class Implementation:
 
     def prefetch(self, scene: "Scene | RecordedText") -> None:
         """Send `scene` ahead, so the implementation works on it while the harness compares the
-        previous answer (a replay knows its next scene). At most two requests are in flight. A
+        previous answer (a replay knows its next scene; a campaign draws it ahead). At most two
+        requests are in flight. A
         recorded scene's text is sent only to an implementation that `runs_every_scene`."""
         if (len(self._inflight) < 2 and self._ensure() is None
                 and (self.runs_every_scene if isinstance(scene, RecordedText) else self.unsupported(scene) is None)):

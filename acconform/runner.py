@@ -486,6 +486,9 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
     if hasattr(port, "trace_boundaries"):  # the built-in port: aim the search at exact boundaries
         port.trace_boundaries = True
     unsupported = getattr(port, "unsupported", None)
+    # a process (acconform.protocol.Implementation) is sent the next scene before the current one runs;
+    # the built-in port climbs on each scene's trace, so it draws after each case
+    ahead_of = getattr(port, "prefetch", None) if not hasattr(port, "trace_boundaries") else None
     against = shrunk_against(oracle)
     what = "live ACE" if against == "ace" else "the built-in port"
 
@@ -539,11 +542,21 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
                 climb_from = int(budget * TARGET_AFTER)
                 ran = skipped = 0
                 hit = None
-                while ran < budget and skipped < 10 * budget + 100:  # Hypothesis' bound on invalid draws too
+
+                def draw():
                     prefix = ()
                     if ran >= climb_from and best and rng.random() < 0.5:
                         prefix = _nudged(best[rng.choice(sorted(best))][1], rng)
-                    scene, choices = drawer.draw(prefix)
+                    drawn = drawer.draw(prefix)
+                    if ahead_of is not None:
+                        ahead_of(drawn[0])
+                    return drawn
+
+                nxt = None
+                while ran < budget and skipped < 10 * budget + 100:  # Hypothesis' bound on invalid draws too
+                    scene, choices = nxt if nxt is not None else draw()
+                    # an implementation that takes scenes ahead works on this one while the next is drawn
+                    nxt = draw() if ahead_of is not None and ran + 1 < budget else None
                     ran_case = compared_case(scene)
                     if ran_case is None:
                         skipped += 1

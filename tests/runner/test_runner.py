@@ -200,3 +200,26 @@ def test_the_second_half_of_a_round_climbs_toward_the_closest_boundary(monkeypat
     r = runner.run_campaign(port, fake_port, n=200, seed=4, failures_dir=None, database=None)
     assert r.ok and r.cases == 200
     assert min(nudges) >= 100 and 30 <= len(nudges) <= 70
+
+
+def test_an_implementation_that_takes_scenes_ahead_is_sent_the_next_scene_before_the_current_one_runs():
+    # a process works on the next scene while the harness draws and compares (acconform.protocol
+    # Implementation.prefetch); the scenes compared are those a port without it is given
+    events = []
+
+    class Ahead:
+        def prefetch(self, scene):
+            events.append(("sent", scene))
+
+        def __call__(self, scene):
+            events.append(("ran", scene))
+            return fake_port(scene)
+
+    plain = []
+    run_campaign(lambda s: plain.append(s) or fake_port(s), fake_port, n=30, seed=5, failures_dir=None, database=None)
+    r = run_campaign(Ahead(), fake_port, n=30, seed=5, failures_dir=None, database=None)
+    ran = [s for what, s in events if what == "ran"]
+    sent = [s for what, s in events if what == "sent"]
+    assert r.ok and r.cases == 30 and ran == plain and sent == plain  # each scene sent once, none beyond the budget
+    for i in range(len(ran) - 1):  # scene i + 1 went out before scene i ran
+        assert events.index(("sent", ran[i + 1])) < events.index(("ran", ran[i]))
