@@ -206,8 +206,9 @@ class Implementation:
         kind = geometry_kind(scene)  # a tick scene's too: the ticks themselves are a feature
         if kind not in self.hello["kinds"]:
             return f"kind {kind}"
-        missing = [f for f in scene_features(scene) if f not in self.hello["features"]]
-        return f"feature {missing[0]}" if missing else None
+        features = self.hello["features"]  # only the features it lacks are looked for in the scene
+        return next((f"feature {name}" for name, (needs, _) in FEATURES.items() if name not in features and needs(scene)),
+                    None)
 
     # ------------------------------------------------------------ process
 
