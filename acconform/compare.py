@@ -72,8 +72,6 @@ class Difference:
         return self.render()
 
 
-
-
 def _show(path: str, v) -> str:
     leaf = path.rsplit(".", 1)[-1].split("[", 1)[0]
     if isinstance(v, bool) or v is None:
