@@ -10,6 +10,8 @@ the runner. Both sides answer at once with the same fixed outcome, so nothing el
   protocol    the implementation under test is a process speaking acconform.protocol/1 that
               answers every scene at once with that outcome (benchmarks/instant_impl.py --fixed):
               the scene packed and sent, the answer read and checked, as `check --impl` does
+  busy MS     the same process working MS ms of CPU on each scene first (--busy MS): wall time
+              per case against MS shows how much of the harness happens while it works
 
 One worker, no example database, `-n` cases per kind, seed 0. Each measurement is its own
 subprocess (this tree's acconform, or REV's through benchmarks/revision.py's shim); the revisions
@@ -41,14 +43,15 @@ kind, n, how, instant = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
 fixed = Outcome(ok=True)
 def at_once(scene):
     return fixed
-port = Implementation(f"{sys.executable} {instant} --fixed") if how == "protocol" else at_once
+busy = f" --busy {how.split()[1]}" if how.startswith("busy") else ""
+port = Implementation(f"{sys.executable} {instant} --fixed{busy}") if how != "in-process" else at_once
 try:
     run_campaign(port, at_once, kinds=(kind,), n=20, seed=1, failures_dir=None, database=None, workers=1)  # warm-up
     t = time.perf_counter()
     r = run_campaign(port, at_once, kinds=(kind,), n=n, seed=0, failures_dir=None, database=None, workers=1)
     ms = (time.perf_counter() - t) * 1000 / r.cases
 finally:
-    if how == "protocol":
+    if how != "in-process":
         port.close()
 assert not r.found, "both sides answer the same outcome"
 print(json.dumps({"ms": ms}))
@@ -65,15 +68,18 @@ def main() -> int:
     p.add_argument("--kinds", default="terrain,bsp,obstacles,indoor,buildings,ticks")
     p.add_argument("-n", type=int, default=600)
     p.add_argument("--rounds", type=int, default=2)
+    p.add_argument("--busy", type=float, default=None, metavar="MS",
+                   help="also through the protocol to an implementation that works MS ms on each scene")
     a = p.parse_args()
     kinds = a.kinds.split(",")
+    hows = ("in-process", "protocol") + ((f"busy {a.busy:g}",) if a.busy else ())
     here = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     revs = ("this", a.against)
-    times = {(rev, k, how): [] for rev in revs for k in kinds for how in ("in-process", "protocol")}
+    times = {(rev, k, how): [] for rev in revs for k in kinds for how in hows}
     with revision_env(a.against) as old:
         for _ in range(a.rounds):
             for k in kinds:
-                for how in ("in-process", "protocol"):
+                for how in hows:
                     for rev, env in (("this", here), (a.against, old)):
                         times[rev, k, how].append(_time(env, k, a.n, how))
     load = os.getloadavg()[0]
@@ -81,7 +87,7 @@ def main() -> int:
           f"n={a.n}, load {load:.1f}")
     print(f"{'kind':10} {'how':11} {'this':>16} {a.against:>16} {'ratio':>7}")
     for k in kinds:
-        for how in ("in-process", "protocol"):
+        for how in hows:
             t, o = times["this", k, how], times[a.against, k, how]
             print(f"{k:10} {how:11} {min(t):7.2f} ({max(t):6.2f}) {min(o):7.2f} ({max(o):6.2f}) "
                   f"{min(o) / min(t):6.2f}x")

@@ -4,6 +4,7 @@ benchmarks/bench_runner.py --impl: it measures the harness, not an implementatio
 
     PYTHON benchmarks/instant_impl.py CORPUS_DIR
     PYTHON benchmarks/instant_impl.py --fixed      # every scene: Outcome(ok=True), whatever it is
+    PYTHON benchmarks/instant_impl.py --fixed --busy MS   # the same after MS milliseconds of work each
 
 With --fixed it answers generated scenes too, all alike (benchmarks/bench_harness.py: the harness's
 cost through the protocol, against an oracle that answers the same).
@@ -50,10 +51,17 @@ def main() -> int:
             loaded.notify_all()
 
     if sys.argv[1] == "--fixed":
+        import time
+
         from acconform.outcome import Outcome
 
         fixed = dumps_compact(Outcome(ok=True).to_json()).encode()
+        busy = float(sys.argv[3]) / 1000 if sys.argv[2:3] == ["--busy"] else 0.0
         for raw in sys.stdin.buffer:
+            if busy:  # an implementation that computes: the CPU busy for that long (not a sleep)
+                end = time.perf_counter() + busy
+                while time.perf_counter() < end:
+                    pass
             out.write(b'{"id":' + raw[6:raw.find(b",")] + b',"outcome":' + fixed + b"}\n")
             out.flush()
         return 0
