@@ -29,8 +29,8 @@ Each variant takes one record of the coreclr corpus, named by its scene key, and
 * `tall_spheres_request_pos` (ticks-0025, a RequestPos mover with an orientation of length 2 in a
   dungeon): the requests' orientation made the identity and the spheres' centres 4 times as high,
   as length 2 makes them on .NET 10: the check position's spheres leave every cell, CheckOtherCells
-  leaves no CheckCell, and the neg-poly slide's next insertion meets InsertIntoCell with no cell. On
-  mono the length-2 record does not get there.
+  leaves no CheckCell, and after the neg-poly step-up fails, StepUpSlide's state makes a next
+  insertion, which meets InsertIntoCell with no cell. On mono the length-2 record does not get there.
 * `sphere_turned_out_of_world` (ticks-0000, a RequestPos mover outdoors): moved to landblock row 0xFE
   (the world's north edge), one sphere 100 m behind its origin and 50 m up, then three requests at its
   own origin turned 180 degrees: the transitions have no step, so FindTransitionalPosition rebuilds the
