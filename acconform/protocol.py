@@ -95,8 +95,10 @@ CAPABILITIES: dict[str, str] = {
 }
 
 
-def scene_features(scene: Scene) -> list[str]:
-    return [name for name, (needs, _) in FEATURES.items() if needs(scene)]
+def scene_features(scene: Scene, names=FEATURES) -> list[str]:
+    """The features among `names` (default: all) the scene needs, in FEATURES' order; an
+    implementation's unsupported() asks only of those it lacks (none, for most)."""
+    return [name for name in names if FEATURES[name][0](scene)]
 
 
 class ImplementationError(AcconformError):
@@ -206,9 +208,8 @@ class Implementation:
         kind = geometry_kind(scene)  # a tick scene's too: the ticks themselves are a feature
         if kind not in self.hello["kinds"]:
             return f"kind {kind}"
-        features = self.hello["features"]  # only the features it lacks are looked for in the scene
-        return next((f"feature {name}" for name, (needs, _) in FEATURES.items() if name not in features and needs(scene)),
-                    None)
+        missing = scene_features(scene, [f for f in FEATURES if f not in self.hello["features"]])
+        return f"feature {missing[0]}" if missing else None
 
     # ------------------------------------------------------------ process
 
