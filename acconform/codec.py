@@ -20,6 +20,7 @@ from __future__ import annotations
 import json
 import math
 import struct
+from contextvars import ContextVar
 from typing import Any
 
 import numpy as np
@@ -80,12 +81,100 @@ def write_id(n: int) -> str:
     return f"0x{n:08X}"
 
 
+# ---------------------------------------------------------------- records written straight to text
+# A scene goes to an implementation (and into its hash) as compact JSON. A dungeon's or a building's
+# cell structures and BSPs are most of that text, and building their dicts for json to walk costs
+# three times what writing their text costs. So while `compact` writes, the records that hold them
+# (Environment, BSPShape) write their own text (`json_text`) and answer to_json() with a placeholder
+# string, which `compact` replaces in json's text. That text is byte for byte what dumps_compact
+# writes of their to_json() (tests/test_codec.py: every kind of scene, and the corpus).
+
+
+class _Writing:
+    __slots__ = ("texts",)
+
+    def __init__(self):
+        self.texts: list[str] = []
+
+
+_TEXT: ContextVar[_Writing | None] = ContextVar("acconform_codec_text", default=None)
+
+
+def as_text(record) -> str | None:
+    """While `compact` writes: the record's text (``record.json_text()``) is kept, and a placeholder
+    for it answered. Else None."""
+    writing = _TEXT.get()
+    if writing is None:
+        return None
+    writing.texts.append(record.json_text())
+    return f"\x00{len(writing.texts) - 1}\x00"
+
+
+def compact(make) -> str:
+    """``dumps_compact(make())``, where the records make() writes may write their own text (`as_text`)."""
+    writing = _Writing()
+    token = _TEXT.set(writing)
+    try:
+        doc = make()
+    finally:
+        _TEXT.reset(token)
+    text = dumps_compact(doc)
+    holders = [f'"\\u0000{k}\\u0000"' for k in range(len(writing.texts))]  # json's text of each placeholder
+    if any(text.count(h) != 1 for h in holders):  # a string of the doc's own looks like one: json writes all
+        return dumps_compact(make())
+    for holder, record_text in zip(holders, writing.texts):
+        text = text.replace(holder, record_text, 1)
+    return text
+
+
+_ascii = json.encoder.encode_basestring_ascii  # how json writes a key or a string (ensure_ascii)
+_TEXTS: dict[float, str] = {}  # f32_text's answers for nonzero finite Python floats (by value)
+
+
+def f32_text(x) -> str:
+    """The JSON text of write_f32(x)."""
+    if type(x) is float and x != 0.0 and x == x:  # -0.0 and 0.0 are one key; a NaN finds none
+        text = _TEXTS.get(x)
+        if text is None:
+            if len(_TEXTS) >= _WRITTEN_LIMIT:
+                _TEXTS.clear()
+            text = _TEXTS[x] = _scalar_text(write_f32(x))
+        return text
+    return _scalar_text(write_f32(x))
+
+
+def _scalar_text(w) -> str:
+    return float.__repr__(w) if type(w) is float else _ascii(w)
+
+
+_VEC_TEXTS: dict[bytes, str] = {}  # vec_text's answers for 3-vectors of Python floats, by their bits
+
+
+def vec_text(v) -> str:
+    """The JSON text of write_vec(v)."""
+    if len(v) == 3 and type(v[0]) is float and type(v[1]) is float and type(v[2]) is float:
+        key = _F64x3.pack(*v)
+        text = _VEC_TEXTS.get(key)
+        if text is None:
+            if len(_VEC_TEXTS) >= _WRITTEN_LIMIT:
+                _VEC_TEXTS.clear()
+            text = _VEC_TEXTS[key] = "[" + ",".join(map(f32_text, v)) + "]"
+        return text
+    return "[" + ",".join(map(f32_text, v)) + "]"
+
+
+def ints_text(seq) -> str:
+    """The JSON text of a list of ints."""
+    return "[" + ",".join(map(int.__repr__, seq)) + "]"
+
+
 def dumps(obj: Any) -> str:
     return json.dumps(obj, indent=1, allow_nan=False)
 
 
-def dumps_compact(obj: Any) -> str:
-    return json.dumps(obj, separators=(",", ":"), allow_nan=False)
+# what JSON the codec writes holds no cycles (records and outcomes are trees), so the encoder
+# skips its check for them (a sixth of the time of a large scene)
+dumps_compact = json.JSONEncoder(separators=(",", ":"), allow_nan=False, check_circular=False).encode
 
 
 F32_MAX = float(np.finfo(np.float32).max)

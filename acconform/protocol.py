@@ -39,7 +39,7 @@ import time
 from collections.abc import Callable
 
 from . import __version__, deep
-from .codec import dumps_compact, loads_answer
+from .codec import compact, dumps_compact, loads_answer
 from .errors import AcconformError, InvalidScene
 from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
@@ -445,8 +445,8 @@ class Implementation:
             return rid
         extra = {"trace": True} if rid in self._traced else {}
         # the scene's JSON inside the retry: a BSP thousands of levels deep needs the deep stack to write
-        request = deep.retrying(lambda: dumps_compact({"id": rid, "mode": self.mode, "runtime": self.runtime,
-                                                       "scene": scene.to_json(), **extra})) + "\n"
+        request = deep.retrying(lambda: compact(lambda: {"id": rid, "mode": self.mode, "runtime": self.runtime,
+                                                         "scene": scene.to_json(), **extra})) + "\n"
         self._write(request.encode("utf-8"))
         return rid
 

@@ -173,11 +173,10 @@ class Result:
 
 
 def scene_hash(scene: Scene) -> str:
-    from .codec import dumps_compact
-
     from . import deep
+    from .codec import compact
 
-    return hashlib.sha256(deep.retrying(lambda: dumps_compact(scene.to_json())).encode()).hexdigest()
+    return hashlib.sha256(deep.retrying(compact, scene.to_json).encode()).hexdigest()
 
 
 def signature(diffs: list[Difference]) -> tuple[str, ...]:

@@ -17,7 +17,8 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Union
 
-from .codec import Reader, dumps, parse_json_text, write_f32, write_f64, write_id, write_vec
+from .codec import (Reader, as_text, dumps, f32_text, ints_text, parse_json_text, vec_text, write_f32, write_f64,
+                    write_id, write_vec)
 from .errors import InvalidScene
 from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
@@ -85,6 +86,9 @@ class PlaneRec:
     def to_json(self):
         return {"normal": write_vec(self.normal), "d": write_f32(self.d)}
 
+    def json_text(self) -> str:
+        return '{"normal":' + vec_text(self.normal) + ',"d":' + f32_text(self.d) + "}"
+
     @staticmethod
     def from_json(r: Reader) -> "PlaneRec":
         r.obj({"normal", "d"})
@@ -98,6 +102,9 @@ class SphereRec:
 
     def to_json(self):
         return {"center": write_vec(self.center), "radius": write_f32(self.radius)}
+
+    def json_text(self) -> str:
+        return '{"center":' + vec_text(self.center) + ',"radius":' + f32_text(self.radius) + "}"
 
     @staticmethod
     def from_json(r: Reader, bounding: bool = False) -> "SphereRec":
@@ -161,6 +168,10 @@ class PolygonRec:
     def to_json(self):
         return {"vertices": [write_vec(v) for v in self.vertices], "sides_type": _CULL_BY_VALUE[CullMode(self.sides_type)]}
 
+    def json_text(self) -> str:
+        return ('{"vertices":[' + ",".join(map(vec_text, self.vertices)) + '],"sides_type":"'
+                + _CULL_BY_VALUE[CullMode(self.sides_type)] + '"}')
+
     @staticmethod
     def from_json(r: Reader) -> "PolygonRec":
         r.obj({"vertices", "sides_type"})
@@ -205,6 +216,10 @@ class BSPLeaf:
     def to_json(self):
         return {"type": "leaf", "polygons": list(self.polygons), "solid": self.solid, "sphere": self.sphere.to_json()}
 
+    def json_text(self) -> str:
+        return ('{"type":"leaf","polygons":' + ints_text(self.polygons) + ',"solid":'
+                + ("true" if self.solid else "false") + ',"sphere":' + self.sphere.json_text() + "}")
+
 
 @dataclass(frozen=True, slots=True)
 class BSPNode:
@@ -216,6 +231,10 @@ class BSPNode:
     def to_json(self):
         return {"type": "node", "plane": self.plane.to_json(), "sphere": self.sphere.to_json(),
                 "front": self.front.to_json(), "back": self.back.to_json()}
+
+    def json_text(self) -> str:
+        return ('{"type":"node","plane":' + self.plane.json_text() + ',"sphere":' + self.sphere.json_text()
+                + ',"front":' + self.front.json_text() + ',"back":' + self.back.json_text() + "}")
 
 
 def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
@@ -253,8 +272,12 @@ class BSPShape:
     kind: str = field(default="bsp", init=False)
 
     def to_json(self):
-        return {"kind": "bsp", "polygons": [p.to_json() for p in self.polygons],
+        return as_text(self) or {"kind": "bsp", "polygons": [p.to_json() for p in self.polygons],
                 "root": self.root.to_json(), "sphere": self.sphere.to_json()}
+
+    def json_text(self) -> str:
+        return ('{"kind":"bsp","polygons":[' + ",".join([p.json_text() for p in self.polygons]) + '],"root":'
+                + self.root.json_text() + ',"sphere":' + self.sphere.json_text() + "}")
 
 
 @dataclass(frozen=True, slots=True)
@@ -312,6 +335,9 @@ class CellBSPLeaf:
     def to_json(self):
         return {"type": "leaf"}
 
+    def json_text(self) -> str:
+        return '{"type":"leaf"}'
+
 
 @dataclass(frozen=True, slots=True)
 class CellBSPNode:
@@ -329,6 +355,14 @@ class CellBSPNode:
         if self.back is not None:
             d["back"] = self.back.to_json()
         return d
+
+    def json_text(self) -> str:
+        text = '{"type":"node","plane":' + self.plane.json_text()
+        if self.front is not None:
+            text += ',"front":' + self.front.json_text()
+        if self.back is not None:
+            text += ',"back":' + self.back.json_text()
+        return text + "}"
 
 
 def _cell_bsp_from_json(r: Reader) -> "CellBSPNode | CellBSPLeaf":
@@ -366,6 +400,13 @@ class CellStructRec:
                 "physics_bsp": None if self.physics_bsp is None else self.physics_bsp.to_json(),
                 "cell_bsp": None if self.cell_bsp is None else self.cell_bsp.to_json()}
 
+    def json_text(self) -> str:
+        return ('{"polygons":[' + ",".join([p.json_text() for p in self.polygons]) + '],"portals":'
+                + ints_text(self.portals) + ',"physics_polygons":['
+                + ",".join([p.json_text() for p in self.physics_polygons]) + '],"physics_bsp":'
+                + ("null" if self.physics_bsp is None else self.physics_bsp.json_text()) + ',"cell_bsp":'
+                + ("null" if self.cell_bsp is None else self.cell_bsp.json_text()) + "}")
+
     @staticmethod
     def from_json(r: Reader) -> "CellStructRec":
         """Both trees are required: a DAT CellStruct always holds a cell BSP and a physics BSP."""
@@ -385,7 +426,10 @@ class Environment:
     cell_structs: tuple[CellStructRec, ...]
 
     def to_json(self):
-        return {"id": write_id(self.id), "cell_structs": [c.to_json() for c in self.cell_structs]}
+        return as_text(self) or {"id": write_id(self.id), "cell_structs": [c.to_json() for c in self.cell_structs]}
+
+    def json_text(self) -> str:
+        return '{"id":"' + write_id(self.id) + '","cell_structs":[' + ",".join([c.json_text() for c in self.cell_structs]) + "]}"
 
     @staticmethod
     def from_json(r: Reader) -> "Environment":

@@ -268,53 +268,54 @@ def physics_bsp(physics: list, max_depth: int = 4) -> BSPNode | BSPLeaf:
     cell) is solid. Node and leaf spheres bound the polygons below them. Below `max_depth` nodes
     a leaf holds what is left (a deeper tree costs both sides more per scene, and the corpus more
     bytes, for the same polygons)."""
-    polys = [rec for rec, _ in physics]
-    planes = [plane_of(rec.vertices) for rec in polys]
+    verts = [rec.vertices for rec, _ in physics]
+    planes = [plane_of(vs) for vs in verts]
     boundary = [b for _, b in physics]
-
     # polygon sets are bit masks (bit i: polygon i), so a split costs two ANDs per candidate plane
-    spheres = {}  # a set -> its sphere: both sides of a split often keep the same polygons
+    spheres = {0: SphereRec((0.0, 0.0, 0.0), 0.0)}  # a set -> its sphere: both sides of a split often keep the same polygons
 
     def sphere_of(ids: int):
         s = spheres.get(ids)
         if s is None:
-            pts = {v for i in _members(ids) for v in polys[i].vertices}  # a vertex shared by polygons counts once
-            s = spheres[ids] = sh.bounding_sphere(pts) if pts else SphereRec((0.0, 0.0, 0.0), 0.0)
+            # a vertex shared by polygons counts once (the set's order picks the sign of a zero bound)
+            s = spheres[ids] = sh.bounding_sphere({v for i in _members(ids) for v in verts[i]})
         return s
 
-    # which polygons reach each side of each plane, once per plane (a node only picks among them)
-    reach = {}
+    # which polygons reach each side of each plane, once per plane (a node only picks among them);
+    # a plane is named by its first polygon, so the tree's candidates are those polygons
+    firsts = {}
     for k, pl in enumerate(planes):
-        if pl not in reach:
-            front = back = 0
-            for i, rec in enumerate(polys):
-                d = [plane_distance(pl, v) for v in rec.vertices]
-                if max(d) > -SPLIT_TOL:
-                    front |= 1 << i
-                if min(d) < SPLIT_TOL:
-                    back |= 1 << i
-            reach[pl] = (front, back)
+        firsts.setdefault(pl, k)
+    reach = {}
+    for k in firsts.values():
+        (a, b, c), d = planes[k].normal, planes[k].d
+        front = back = 0
+        for i, vs in enumerate(verts):
+            ds = [a * x + b * y + c * z + d for x, y, z in vs]
+            if max(ds) > -SPLIT_TOL:
+                front |= 1 << i
+            if min(ds) < SPLIT_TOL:
+                back |= 1 << i
+        reach[k] = (front, back)
 
     def build(ids: int, candidates, solid, depth):
         # the plane that splits best (the larger side smallest, the first such); a leaf when none splits
         best = None
-        for k in candidates:
-            in_front, behind = reach[planes[k]]
-            front, back = ids & in_front, ids & behind
-            size = max(front.bit_count(), back.bit_count())
-            if (front != ids or back != ids) and (best is None or size < best[0]):
-                best = (size, k, front, back)
-        if best is None or depth == max_depth:
+        if depth < max_depth:
+            for k in candidates:
+                in_front, behind = reach[k]
+                front, back = ids & in_front, ids & behind
+                size = max(front.bit_count(), back.bit_count())
+                if (front != ids or back != ids) and (best is None or size < best[0]):
+                    best = (size, k, front, back)
+        if best is None:
             return BSPLeaf(_members(ids), solid, sphere_of(ids))
         _, k, front, back = best
-        rest = [c for c in candidates if planes[c] != planes[k]]
+        rest = [c for c in candidates if c != k]
         return BSPNode(planes[k], sphere_of(ids), build(front, rest, solid, depth + 1),
                        build(back, rest, solid or boundary[k], depth + 1))
 
-    firsts = {}
-    for k, pl in enumerate(planes):
-        firsts.setdefault(pl, k)
-    return build((1 << len(polys)) - 1, sorted(firsts.values()), False, 0)
+    return build((1 << len(verts)) - 1, sorted(firsts.values()), False, 0)
 
 
 def _members(mask: int) -> tuple[int, ...]:

@@ -70,3 +70,54 @@ def test_a_vector_reads_each_component_as_the_nearest_float32_as_a_single_number
     got = Reader(list(v), "v").vec3()
     want = tuple(Reader(x, "v").f32() for x in v)
     assert [struct.pack("<f", x) for x in got] == [struct.pack("<f", x) for x in want]
+
+
+@settings(max_examples=2000)
+@given(st.integers(0, 0xFFFFFFFF), st.integers(0, 0xFFFFFFFF), st.integers(0, 0xFFFFFFFF))
+@example(0x80000000, 0x00000000, 0x7FC00000)  # -0, +0, NaN
+@example(0x7F800000, 0xFF800000, 0x00000001)  # both infinities, the smallest subnormal
+def test_float_and_vector_texts_are_what_json_writes_of_their_written_values(a, b, c):
+    """f32_text and vec_text (the text `compact` writes for records) are json's text of write_f32 and
+    write_vec, bit patterns of non-finite values, signed zeros and a repeated value included."""
+    from acconform.codec import dumps_compact, f32_text, vec_text, write_vec
+
+    v = tuple(struct.unpack("<f", struct.pack("<I", bits))[0] for bits in (a, b, c))
+    for _ in range(2):  # the second time from the memos
+        assert [f32_text(x) for x in v] == [dumps_compact(write_f32(x)) for x in v]
+        assert vec_text(v) == dumps_compact(write_vec(v))
+        assert vec_text(v + (v[0],)) == dumps_compact(write_vec(v + (v[0],)))  # a quaternion: no memo
+
+
+def test_compact_writes_every_kind_of_scene_as_json_writes_its_dict():
+    """The records `compact` writes straight to text (Environment, BSPShape and what they hold) give
+    the bytes dumps_compact gives their to_json(), in generated scenes of every kind and in the
+    committed corpus (leaf roots, cell structures without a physics BSP, recorded shapes)."""
+    import gzip
+    from pathlib import Path
+
+    from acconform.case import parse_document
+    from acconform.codec import compact, dumps_compact
+    from acconform.protocol import CAMPAIGN_KINDS
+    from acconform.strategies import sample_scenes
+
+    scenes = [s for kind in CAMPAIGN_KINDS for s in sample_scenes((kind,), 12, 5)]
+    corpus = Path(__file__).parent / "data" / "corpus" / "coreclr"
+    for shard in sorted(corpus.glob("*.jsonl.gz")):
+        with gzip.open(shard, "rt", encoding="utf-8") as f:
+            scenes += [parse_document(json.loads(line)).scene for line, _ in zip(f, range(2))]
+    assert len(scenes) > 100 and any(s.environments for s in scenes) and any(s.buildings for s in scenes)
+    for scene in scenes:
+        assert compact(scene.to_json) == dumps_compact(scene.to_json()), scene.name
+    assert compact(lambda: {"scene": scenes[-1].to_json(), "id": 7}) == dumps_compact({"scene": scenes[-1].to_json(), "id": 7})
+
+
+def test_compact_writes_a_scene_whose_name_looks_like_its_placeholder_as_json_does():
+    """A string of the document's own that reads like the placeholder `compact` puts where a record's
+    text goes is never taken for it."""
+    from acconform.codec import compact, dumps_compact
+    from acconform.strategies import sample_scenes
+
+    scene = next(s for s in sample_scenes(("indoor",), 5, 1) if s.environments)
+    for name in ("\x000\x00", "\x001\x00", "\\u00000\\u0000"):
+        named = scene.replace(name=name)
+        assert compact(named.to_json) == dumps_compact(named.to_json())
