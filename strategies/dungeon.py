@@ -415,7 +415,8 @@ class Dungeon:
 
 def _turned(p: Piece, verts):
     """Vertices in the dungeon-aligned piece frame -> the cell's own frame (turned by -p.turn)."""
-    return tuple((to_f32(_rot(-p.turn, x, y)[0]), to_f32(_rot(-p.turn, x, y)[1]), z) for x, y, z in verts)
+    turned = [(_rot(-p.turn, x, y), z) for x, y, z in verts]
+    return tuple((to_f32(x), to_f32(y), z) for (x, y), z in turned)
 
 
 @dataclass(frozen=True)
