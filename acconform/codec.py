@@ -39,10 +39,11 @@ def write_f32(x) -> float | str:
         if written is not None:
             return written
     v = np.float32(x)
-    if not np.isfinite(v):
+    f = float(v)  # exact: a float32's value is a double's (math's tests cost a tenth of numpy's on a scalar)
+    if not math.isfinite(f):
         return f"0x{int(v.view(np.uint32)):08x}"
-    if v == 0:  # kept out of the memo: -0.0 and 0.0 are one key
-        return -0.0 if np.signbit(v) else 0.0
+    if f == 0:  # kept out of the memo: -0.0 and 0.0 are one key
+        return math.copysign(0.0, f)
     # float(repr) keeps the shortest digits: json then prints them unchanged.
     written = float(str(v))
     if type(x) is float:  # the answer is a function of x's value (x is nonzero and finite here)
