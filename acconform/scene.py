@@ -17,8 +17,8 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Union
 
-from .codec import (Reader, as_text, dumps, f32_text, ints_text, parse_json_text, vec_text, write_f32, write_f64,
-                    write_id, write_vec)
+from .codec import (Reader, as_text, dumps, dumps_compact, f32_text, ints_text, parse_json_text, vec_text, write_f32,
+                    write_f64, write_id, write_vec)
 from .errors import InvalidScene
 from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
@@ -690,6 +690,20 @@ class TickStep:
             d["request_pos"] = self.request_pos.to_json()
         return d
 
+    def json_text(self) -> str:
+        text = '{"dt":' + float.__repr__(write_f64(self.dt))
+        if self.state is not None:
+            text += ',"state":' + dumps_compact(flag_names(PhysicsState, self.state))
+        if self.transient_state is not None:
+            text += ',"transient_state":' + dumps_compact(flag_names(TransientState, self.transient_state))
+        for name in _TICK_VECTORS:
+            v = getattr(self, name)
+            if v is not None:
+                text += ',"' + name + '":' + vec_text(v)
+        if self.request_pos is not None:
+            text += ',"request_pos":' + dumps_compact(self.request_pos.to_json())
+        return text + "}"
+
     @staticmethod
     def from_json(r: Reader, driver: str) -> "TickStep":
         """`driver`: the scene's driver (request_pos needs a RequestPos on every step, update_object refuses one)."""
@@ -737,7 +751,12 @@ class Ticks:
         return tuple(out)
 
     def to_json(self):
-        return {"driver": self.driver, "start": write_f64(self.start), "steps": [s.to_json() for s in self.steps]}
+        return as_text(self) or {"driver": self.driver, "start": write_f64(self.start),
+                                 "steps": [s.to_json() for s in self.steps]}
+
+    def json_text(self) -> str:
+        return ('{"driver":' + dumps_compact(self.driver) + ',"start":' + float.__repr__(write_f64(self.start))
+                + ',"steps":[' + ",".join([s.json_text() for s in self.steps]) + "]}")
 
     @staticmethod
     def from_json(r: Reader) -> "Ticks":
