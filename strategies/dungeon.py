@@ -288,10 +288,9 @@ def physics_bsp(physics: list, max_depth: int = 4) -> BSPNode | BSPLeaf:
         firsts.setdefault(pl, k)
     reach = {}
     for k in firsts.values():
-        (a, b, c), d = planes[k].normal, planes[k].d
         front = back = 0
         for i, vs in enumerate(verts):
-            ds = [a * x + b * y + c * z + d for x, y, z in vs]
+            ds = [plane_distance(planes[k], v) for v in vs]
             if max(ds) > -SPLIT_TOL:
                 front |= 1 << i
             if min(ds) < SPLIT_TOL:

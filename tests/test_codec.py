@@ -89,7 +89,7 @@ def test_float_and_vector_texts_are_what_json_writes_of_their_written_values(a, 
 
 
 def test_compact_writes_every_kind_of_scene_as_json_writes_its_dict():
-    """The records `compact` writes straight to text (Environment, BSPShape and what they hold) give
+    """The records `compact` writes straight to text (Environment, BSPShape and what they hold, Ticks) give
     the bytes dumps_compact gives their to_json(), in generated scenes of every kind and in the
     committed corpus (leaf roots, cell structures without a physics BSP, recorded shapes)."""
     import gzip
