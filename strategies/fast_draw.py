@@ -5,8 +5,8 @@ choice itself (spans, the data tree, the choice nodes, the observer): half a liv
 worker time went there (benchmarks/bench_runner.py). `FastData` stands in for Hypothesis'
 ConjectureData while a strategy draws: the strategies' own `do_draw` run unchanged (composites,
 sampled_from, one_of, floats of width 32, ...), every choice comes from Hypothesis' own provider
-(`HypothesisProvider`: the same distribution of each fresh choice, boundary constants, near-bound
-weights), and nothing else is kept but the choices made. Those choices are a choice sequence in
+(`HypothesisProvider`, with what it derives from a draw's bounds kept: the same distribution of
+each fresh choice, boundary constants, near-bound weights), and nothing else is kept but the choices made. Those choices are a choice sequence in
 Hypothesis' sense: `ConjectureData.for_choices(choices)` draws the same scene from them, so a
 difference found this way is handed to Hypothesis, which shrinks it as it would have shrunk one
 of its own (runner.py); `tests/strategies/test_fast_draw.py` checks that replay scene for scene.
@@ -21,11 +21,13 @@ choice moved instead.
 
 from __future__ import annotations
 
+import math
 from random import Random
 
 from hypothesis.control import _current_build_context
-from hypothesis.internal.conjecture.providers import HypothesisProvider
 from hypothesis.internal.conjecture.choice import choice_permitted
+from hypothesis.internal.conjecture.providers import INTEGERS_DISTRIBUTION, SIGNALING_NAN, HypothesisProvider
+from hypothesis.internal.floats import clamp, float_to_int, make_float_clamper, next_down, next_up
 from hypothesis.strategies._internal.lazy import unwrap_strategies
 
 
@@ -150,13 +152,81 @@ class FastData:
         return None
 
 
+class _Provider(HypothesisProvider):
+    """HypothesisProvider with what it works out from a draw's bounds alone kept per bounds: its
+    boundary floats and float clamper, its integer distribution's CDF at the bounds. Scenes draw
+    from a few hundred bounds again and again, and working them out each time cost a tenth of an
+    outdoor scene's drawing. The same random numbers are taken and the same choices made
+    (tests/strategies/test_fast_draw.py draws beside HypothesisProvider, choice for choice)."""
+
+    KEPT = 4096  # bounds drawn from earlier draws' values keep coming: what is kept is cleared past this
+
+    def __init__(self, seed: int):
+        super().__init__(None)
+        self._random = Random(seed)
+        self._floats: dict = {}
+        self._integers: dict = {}
+
+    def draw_integer(self, min_value=None, max_value=None, *, weights=None, shrink_towards=0) -> int:
+        if weights is not None or min_value is None or max_value is None:
+            return super().draw_integer(min_value, max_value, weights=weights, shrink_towards=shrink_towards)
+        constant = self._maybe_draw_constant("integer", {"min_value": min_value, "max_value": max_value,
+                                                         "weights": None, "shrink_towards": shrink_towards})
+        if constant is not None:
+            return constant
+        span = self._integers.get((min_value, max_value))
+        if span is None:
+            if len(self._integers) >= self.KEPT:
+                self._integers.clear()
+            try:
+                lo, hi = INTEGERS_DISTRIBUTION.cdf(min_value - 0.5), INTEGERS_DISTRIBUTION.cdf(max_value + 0.5)
+            except OverflowError:
+                lo = hi = 0.0
+            span = self._integers[min_value, max_value] = (lo, hi - lo) if hi - lo >= 1e-13 else None
+            if span is None:
+                return self._random.randint(min_value, max_value)
+        lo, width = span
+        while (p := lo + self._random.random() * width) in {0, 1}:
+            pass  # pragma: no cover
+        return clamp(min_value, round(INTEGERS_DISTRIBUTION.inverse_cdf(p)), max_value)
+
+    def draw_float(self, *, min_value=-math.inf, max_value=math.inf, allow_nan=True,
+                   smallest_nonzero_magnitude: float) -> float:
+        constraints = {"min_value": min_value, "max_value": max_value, "allow_nan": allow_nan,
+                       "smallest_nonzero_magnitude": smallest_nonzero_magnitude}
+        constant = self._maybe_draw_constant("float", constraints, p=0.15)
+        if constant is not None:
+            return constant
+        key = (float_to_int(min_value), float_to_int(max_value), allow_nan, smallest_nonzero_magnitude)
+        known = self._floats.get(key)
+        if known is None:
+            if len(self._floats) >= self.KEPT:
+                self._floats.clear()
+            weird = [f for f in (0.0, -0.0, math.inf, -math.inf, math.nan, -math.nan, SIGNALING_NAN, -SIGNALING_NAN,
+                                 min_value, next_up(min_value), min_value + 1, max_value - 1, next_down(max_value),
+                                 max_value)
+                     if choice_permitted(f, constraints)]
+            known = self._floats[key] = (weird, make_float_clamper(min_value, max_value, allow_nan=allow_nan,
+                                                                  smallest_nonzero_magnitude=smallest_nonzero_magnitude))
+        weird, clamper = known
+        if weird and self._random.random() < 0.05:
+            return self._random.choice(weird)
+        result = self._draw_float()
+        if allow_nan and math.isnan(result):
+            clamped = result  # pragma: no cover
+        else:
+            clamped = clamper(result)
+        if float_to_int(clamped) != float_to_int(result) and not (math.isnan(result) and allow_nan):
+            result = clamped
+        return result
+
+
 class FastDrawer:
     """Draws values of one strategy from a seeded Random, each with its choice sequence."""
 
     def __init__(self, strategy, seed: int):
         self.strategy = strategy
-        self.provider = HypothesisProvider(None)
-        self.provider._random = Random(seed)
+        self.provider = _Provider(seed)
 
     def draw(self, prefix: tuple = ()):
         """(value, choices): a fresh value, or with `prefix` the value those choices draw (a choice
