@@ -26,7 +26,6 @@ from typing import Any
 import numpy as np
 
 from .errors import InvalidScene
-from .numerics import to_f32_3
 
 
 _WRITTEN: dict[float, float] = {}  # write_f32's answers for nonzero finite Python floats (by value)
@@ -64,6 +63,7 @@ def write_f64(x) -> float:
 
 _WRITTEN_VECS: dict[bytes, list] = {}  # write_vec's answers for 3-vectors of Python floats, by their bits
 _F64x3 = struct.Struct("=3d")
+_F32xN = {3: struct.Struct("=3f"), 4: struct.Struct("=4f")}  # Reader.f32s: a vector's or a quaternion's float32s
 
 
 def write_vec(v) -> list:
@@ -330,15 +330,21 @@ class Reader:
         self.fail(f"{v!r} is not a float32 (the nearest is {str(f)}): write a float32 exactly, in at most "
                   f"{F32_DIGITS} significant digits, or as its bit pattern '0x{int(f.view(np.uint32)):08x}'")
 
-    def vec3(self) -> tuple[float, float, float]:
+    def f32s(self, count: int, allow_nonfinite: bool = False) -> tuple[float, ...]:
+        """A list of `count` float32s (``tuple(r.f32(allow_nonfinite) for r in self.list(count))``)."""
         v = self.value
-        if not self.exact and type(v) is list and len(v) == 3:  # the common case, without a Reader per number
-            a, b, c = v
-            if (type(a) is float and type(b) is float and type(c) is float
-                    and -F32_MAX < a < F32_MAX and -F32_MAX < b < F32_MAX and -F32_MAX < c < F32_MAX):
-                return to_f32_3(v)  # each rounded to float32 (C's (float) cast)
-        a, b, c = (r.f32() for r in self.list(count=3))
-        return (a, b, c)
+        if type(v) is list and len(v) == count and count in _F32xN:  # the common case, without a Reader per number
+            for x in v:
+                if type(x) is not float or not -F32_MAX < x < F32_MAX:
+                    break
+            else:
+                rounded = _F32xN[count].unpack(_F32xN[count].pack(*v))  # each rounded to float32 (C's (float) cast)
+                if not self.exact or rounded == tuple(v):  # exact: each already names its float32
+                    return rounded
+        return tuple(r.f32(allow_nonfinite) for r in self.list(count=count))
+
+    def vec3(self) -> tuple[float, float, float]:
+        return self.f32s(3)
 
     def vec3s(self) -> list[tuple[float, float, float]]:
         """A list of vec3s (``[r.vec3() for r in self.list()]``)."""

@@ -8,6 +8,7 @@ import numpy as np
 from hypothesis import example, given, settings, strategies as st
 
 from acconform.codec import Reader, write_f32
+from acconform.errors import InvalidScene
 
 finite_f32_bits = st.integers(0, 0xFFFFFFFF).filter(lambda b: (b >> 23) & 0xFF != 0xFF)
 
@@ -70,6 +71,36 @@ def test_a_vector_reads_each_component_as_the_nearest_float32_as_a_single_number
     got = Reader(list(v), "v").vec3()
     want = tuple(Reader(x, "v").f32() for x in v)
     assert [struct.pack("<f", x) for x in got] == [struct.pack("<f", x) for x in want]
+
+
+def _f32_of_bits(bits: int) -> float:
+    return struct.unpack("<f", struct.pack("<I", bits))[0]
+
+
+# what an implementation may write for one float of an answer: a float32 exactly, a short decimal
+# naming one, a decimal naming none, an integer, a bit pattern, a value past float32's range
+_answer_numbers = st.one_of(st.integers(0, 0xFFFFFFFF).map(_f32_of_bits).filter(math.isfinite),
+                            st.sampled_from([0.1, 1e-45, 0.30000001, 0.123456789012, 3.4028236e38, -0.0, 7, -3,
+                                             "0x7fc00000", "0x80000000", 1e300]),
+                            _doubles)
+
+
+@settings(max_examples=600)
+@given(st.integers(3, 4).flatmap(lambda n: st.lists(_answer_numbers, min_size=n, max_size=n)), st.booleans(),
+       st.booleans())
+def test_a_batched_read_of_float32s_takes_and_refuses_what_one_at_a_time_does(values, exact, nonfinite):
+    """Reader.f32s (an outcome's vectors and quaternions, a scene's vectors) gives f32()'s values,
+    bit for bit, or the same refusal, in exact (an implementation's answer) and plain reading."""
+    def read(how):
+        try:
+            got = how()
+        except InvalidScene as e:
+            return str(e)
+        return [struct.pack("<f", x) for x in got]
+
+    batched = read(lambda: Reader(list(values), "v", exact=exact).f32s(len(values), allow_nonfinite=nonfinite))
+    one_by_one = read(lambda: [r.f32(nonfinite) for r in Reader(list(values), "v", exact=exact).list(count=len(values))])
+    assert batched == one_by_one
 
 
 @settings(max_examples=2000)
