@@ -235,8 +235,7 @@ def cell_geometry(p: Piece, entry: Door | None, exit_: Door | None, side: Door |
     g.ztop = top
     # a wall with a doorway in it bounds nothing: the space beyond its plane is the neighbour's
     doorways = [plane_of(g.polygons[k].vertices) for k in g.portals]
-    g.physics = [(rec, boundary and not any(_coplanar(plane_of(rec.vertices), d) for d in doorways))
-                 for rec, boundary in g.physics]
+    g.physics = [(rec, boundary and not _in_a_doorway(plane_of(rec.vertices), doorways)) for rec, boundary in g.physics]
     # a portal polygon faces the neighbour when its door says so (PortalSide), else into the cell
     for k, (which, door) in zip(g.portals, g.portal_doors):
         if door.faces_out:
@@ -253,6 +252,10 @@ def _coplanar(a: PlaneRec, b: PlaneRec) -> bool:
     """The same plane, facing either way."""
     dot = sum(x * y for x, y in zip(a.normal, b.normal))
     return abs(abs(dot) - 1) < 1e-6 and abs(a.d - (b.d if dot > 0 else -b.d)) < 1e-4
+
+
+def _in_a_doorway(plane: PlaneRec, doorways) -> bool:
+    return any(_coplanar(plane, d) for d in doorways)
 
 
 def plane_distance(plane: PlaneRec, p) -> float:
