@@ -196,16 +196,22 @@ def loads_answer(text: str) -> Any:
     return json.loads(text, parse_int=_parse_int)
 
 
+_NAMED: dict[float, bool] = {}  # names_a_float32's answers for floats that are not float32s (by value)
+
+
 def names_a_float32(v: float | int, r: float) -> bool:
     """Whether the number `v` read from JSON names the float32 `r` it rounds to: `r` exactly, or
     written in at most F32_DIGITS significant digits (what a double computation's 17 digits are not)."""
     if v == r:
         return True
     if isinstance(v, int):
-        digits = str(abs(v)).rstrip("0")
-    else:
-        digits = repr(v).lstrip("-").split("e", 1)[0].replace(".", "").strip("0")
-    return len(digits) <= F32_DIGITS
+        return len(str(abs(v)).rstrip("0")) <= F32_DIGITS
+    named = _NAMED.get(v)  # an answer's floats recur, tick after tick and answer after answer
+    if named is None:
+        if len(_NAMED) >= _WRITTEN_LIMIT:
+            _NAMED.clear()
+        named = _NAMED[v] = len(repr(v).lstrip("-").split("e", 1)[0].replace(".", "").strip("0")) <= F32_DIGITS
+    return named
 
 
 class Reader:
@@ -339,7 +345,7 @@ class Reader:
                     break
             else:
                 rounded = _F32xN[count].unpack(_F32xN[count].pack(*v))  # each rounded to float32 (C's (float) cast)
-                if not self.exact or rounded == tuple(v):  # exact: each already names its float32
+                if not self.exact or all(map(names_a_float32, v, rounded)):  # exact: each names its float32
                     return rounded
         return tuple(r.f32(allow_nonfinite) for r in self.list(count=count))
 
@@ -395,12 +401,13 @@ class Reader:
         return self.value
 
     def flags(self, enum) -> int:
+        members = enum.__members__  # a copy per call for a FlagSet: taken once
         value = 0
         for r in self.list():
             name = r.str_()
-            if name not in enum.__members__:
-                r.fail(f"unknown {enum.__name__} flag {name!r} (known: {', '.join(enum.__members__)})")
-            value |= enum[name].value
+            if name not in members:
+                r.fail(f"unknown {enum.__name__} flag {name!r} (known: {', '.join(members)})")
+            value |= int(members[name])
         return value
 
 
