@@ -162,9 +162,18 @@ class InsertType(IntEnum):
     InitialPlacement = 0x2
 
 
+_NAMES_OF: dict[tuple, tuple[str, ...]] = {}  # flag_names' answers: a handful of values recur in every outcome
+
+
 def flag_names(enum: FlagSet, value: int) -> list[str]:
     """The member names set in `value`, in value order (the JSON form of a flag set)."""
-    return [m.name for m in enum if m.value & value and m.value.bit_count() == 1]
+    key = (enum, int(value))
+    names = _NAMES_OF.get(key)
+    if names is None:
+        if len(_NAMES_OF) >= 4096:
+            _NAMES_OF.clear()
+        names = _NAMES_OF[key] = tuple(m.name for m in enum if m.value & value and m.value.bit_count() == 1)
+    return list(names)
 
 
 def flags_from_names(enum: FlagSet, names) -> int:

@@ -159,32 +159,15 @@ class TickState:
     error: str | None = _field(None, "", "what this step threw (later steps are not run); absent when nothing was raised")
 
     def to_json(self):
-        d = {}
-        for f in fields(self):
-            v = getattr(self, f.name)
-            if f.name in _TICK_IDS:
-                v = write_id(v)
-            elif f.name in _TICK_VECS:
-                v = write_vec(v)
-            elif f.name == "update_time":
-                v = _write_double(v)
-            elif f.name == "state":
-                v = flag_names(PhysicsState, v)
-            elif f.name == "transient_state":
-                v = flag_names(TransientState, v)
-            elif f.name == "shadow_cells":
-                v = [write_id(c) for c in v]
-            elif f.name == "contact_plane":
-                v = v.to_json()
-            elif f.name == "error" and v is None:
-                continue
-            d[f.name] = v
+        d = {name: write(getattr(self, name)) for name, write, _ in _TICK_CODECS}
+        if self.error is not None:
+            d["error"] = self.error
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "TickState":
         r.obj(_TICK_ALLOWED)
-        kw = {name: read(r[name]) for name, read in _TICK_READERS}  # a missing field: the first in declaration order
+        kw = {name: read(r[name]) for name, _, read in _TICK_CODECS}  # a missing field: the first in declaration order
         if r.has("error"):
             kw["error"] = r["error"].str_()
         return TickState(**kw)
@@ -218,30 +201,30 @@ def _read_double(r: Reader) -> float:
     return r.f64()
 
 
-def _tick_field_reader(name: str):
-    """How TickState.from_json reads the field `name` (all but `error`, which may be left out)."""
+def _tick_field_codec(name: str):
+    """How a TickState's field `name` is written and read (all but `error`, which may be left out)."""
     if name in _TICK_IDS:
-        return Reader.id_
+        return write_id, Reader.id_
     if name == "orientation":
-        return lambda x: x.f32s(4, allow_nonfinite=True)
+        return write_vec, lambda x: x.f32s(4, allow_nonfinite=True)
     if name in _TICK_VECS:
-        return _vec_nf
+        return write_vec, _vec_nf
     if name == "update_time":
-        return _read_double
+        return _write_double, _read_double
     if name == "state":
-        return lambda x: x.flags(PhysicsState)
+        return lambda v: flag_names(PhysicsState, v), lambda x: x.flags(PhysicsState)
     if name == "transient_state":
-        return lambda x: x.flags(TransientState)
+        return lambda v: flag_names(TransientState, v), lambda x: x.flags(TransientState)
     if name == "shadow_cells":
-        return lambda x: tuple(c.id_() for c in x.list())
+        return lambda v: [write_id(c) for c in v], lambda x: tuple(c.id_() for c in x.list())
     if name == "contact_plane":
-        return PlaneState.from_json
-    return Reader.bool_
+        return PlaneState.to_json, PlaneState.from_json
+    return bool, Reader.bool_
 
 
-# one per field, looked up once: an outcome holds a TickState per tick, and the field-by-field
-# dispatch was a fifth of reading one
-_TICK_READERS = tuple((name, _tick_field_reader(name)) for name in _TICK_FIELDS if name != "error")
+# (name, write, read) per field, in declaration order, looked up once: an outcome holds a
+# TickState per tick, and dispatching field by field was a fifth of writing or reading one
+_TICK_CODECS = tuple((name, *_tick_field_codec(name)) for name in _TICK_FIELDS if name != "error")
 
 
 @dataclass(frozen=True, slots=True)
