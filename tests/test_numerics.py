@@ -1,5 +1,6 @@
 """Exact mode is binary32 after every operation; C# scalar rules; constants pinned by bits."""
 
+import functools
 import math
 import struct
 
@@ -263,6 +264,7 @@ def test_a_record_or_oracle_runtime_string_names_the_arithmetic_to_use():
 # ---------------------------------------------------------------- fused multiply-add (.NET 10)
 
 
+@functools.cache  # find_library runs ldconfig: once per example, it was nearly all of these tests' time
 def _libm_fma():
     import ctypes
     import ctypes.util
