@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from .errors import InvalidScene
+from .numerics import to_f32s
 
 
 _WRITTEN: dict[float, float] = {}  # write_f32's answers for nonzero finite Python floats (by value)
@@ -63,7 +64,6 @@ def write_f64(x) -> float:
 
 _WRITTEN_VECS: dict[bytes, list] = {}  # write_vec's answers for 3-vectors of Python floats, by their bits
 _F64x3 = struct.Struct("=3d")
-_F32xN = {3: struct.Struct("=3f"), 4: struct.Struct("=4f")}  # Reader.f32s: a vector's or a quaternion's float32s
 
 
 def write_vec(v) -> list:
@@ -339,12 +339,12 @@ class Reader:
     def f32s(self, count: int, allow_nonfinite: bool = False) -> tuple[float, ...]:
         """A list of `count` float32s (``tuple(r.f32(allow_nonfinite) for r in self.list(count))``)."""
         v = self.value
-        if type(v) is list and len(v) == count and count in _F32xN:  # the common case, without a Reader per number
+        if type(v) is list and len(v) == count and count in (3, 4):  # the common case, without a Reader per number
             for x in v:
                 if type(x) is not float or not -F32_MAX < x < F32_MAX:
                     break
             else:
-                rounded = _F32xN[count].unpack(_F32xN[count].pack(*v))  # each rounded to float32 (C's (float) cast)
+                rounded = to_f32s(v)  # each rounded to float32 (C's (float) cast)
                 if not self.exact or all(map(names_a_float32, v, rounded)):  # exact: each names its float32
                     return rounded
         return tuple(r.f32(allow_nonfinite) for r in self.list(count=count))

@@ -35,7 +35,6 @@ D = np.float64  # C# double spots (Math.Sqrt results, double literals)
 
 
 _F32 = struct.Struct("=f")
-_F32x3 = struct.Struct("=3f")
 _U32 = struct.Struct("=I")
 
 
@@ -61,10 +60,14 @@ def to_f32(x) -> float:
         return float(np.float32(x))
 
 
-def to_f32_3(p) -> tuple[float, float, float]:
-    """to_f32 of each of three numbers, in one struct pack."""
+_F32xN = {3: struct.Struct("=3f"), 4: struct.Struct("=4f")}  # a point's or a quaternion's float32s
+
+
+def to_f32s(p) -> tuple[float, ...]:
+    """to_f32 of each of three or four numbers (a point, a quaternion), in one struct pack."""
     try:
-        return _F32x3.unpack(_F32x3.pack(*p))
+        st = _F32xN[len(p)]
+        return st.unpack(st.pack(*p))
     except OverflowError:
         return tuple(to_f32(c) for c in p)
 

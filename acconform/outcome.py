@@ -53,6 +53,10 @@ def _vec_nf(r: Reader) -> Vec3:
     return r.f32s(3, allow_nonfinite=True)
 
 
+def _quat_nf(r: Reader) -> tuple[float, float, float, float]:
+    return r.f32s(4, allow_nonfinite=True)
+
+
 @dataclass(frozen=True, slots=True)
 class ContactPlaneState:
     valid: bool = _field(False, "", "whether the plane is set (CollisionInfo.ContactPlaneValid / LastKnownContactPlaneValid)")
@@ -111,7 +115,7 @@ class PlacementState:
         if name not in SetPositionError.__members__:
             r["result"].fail(f"unknown SetPositionError {name!r} (known: {', '.join(SetPositionError.__members__)})")
         return PlacementState(int(SetPositionError[name]), r["cell"].id_(), _vec_nf(r["origin"]),
-                              r["orientation"].f32s(4, allow_nonfinite=True),
+                              _quat_nf(r["orientation"]),
                               r["cur_cell"].id_(), r["transient_state"].flags(TransientState),
                               tuple(c.id_() for c in r["shadow_cells"].list()))
 
@@ -206,7 +210,7 @@ def _tick_field_codec(name: str):
     if name in _TICK_IDS:
         return write_id, Reader.id_
     if name == "orientation":
-        return write_vec, lambda x: x.f32s(4, allow_nonfinite=True)
+        return write_vec, _quat_nf
     if name in _TICK_VECS:
         return write_vec, _vec_nf
     if name == "update_time":
@@ -289,7 +293,7 @@ class Outcome:
         names = _OUTCOME_FIELDS
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
-        allowed = set(names) - {"static_cells"} if v1 else set(names)
+        allowed = _OUTCOME_ALLOWED - {"static_cells"} if v1 else _OUTCOME_ALLOWED
         if fmt not in (FORMAT, FORMAT_V3):
             allowed = allowed - {"placement"}
         if fmt != FORMAT:
@@ -309,7 +313,7 @@ class Outcome:
             elif name in ("origin", "velocity"):
                 kw[name] = _vec_nf(x)
             elif name == "orientation":
-                kw[name] = x.f32s(4, allow_nonfinite=True)
+                kw[name] = _quat_nf(x)
             elif name == "object_info_state":
                 kw[name] = x.flags(ObjectInfoState)
             elif name in ("contact_plane", "last_known_contact_plane"):
@@ -332,3 +336,4 @@ class Outcome:
 
 
 _OUTCOME_FIELDS = tuple(f.name for f in fields(Outcome))  # in declaration order: a missing field is named the same every run
+_OUTCOME_ALLOWED = frozenset(_OUTCOME_FIELDS)

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from hypothesis import strategies as st
 
 from acconform.flags import CullMode, PhysicsState, TransientState
-from acconform.numerics import to_f32, to_f32_3
+from acconform.numerics import to_f32, to_f32s
 from acconform.port.constants import FLOOR_Z
 from acconform.scene import (CellBSPLeaf, CellBSPNode, CellPortalRec, CellStructRec, ContactPlane, EnvCell,
                              Environment, Frame, Landblock, Mover, PlaneRec, PolygonRec, Position, Scene, SphereRec,
@@ -53,7 +53,7 @@ SPLIT_TOL = 0.05
 
 # ---------------------------------------------------------------- geometry in a cell's frame
 
-_v = to_f32_3  # a point's coordinates rounded to float32
+_v = to_f32s  # a point's coordinates rounded to float32
 
 
 def facing(verts, normal) -> tuple:

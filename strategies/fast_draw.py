@@ -6,10 +6,11 @@ worker time went there (benchmarks/bench_runner.py). `FastData` stands in for Hy
 ConjectureData while a strategy draws: the strategies' own `do_draw` run unchanged (composites,
 sampled_from, one_of, floats of width 32, ...), every choice comes from Hypothesis' own provider
 (`HypothesisProvider`, with what it derives from a draw's bounds kept: the same distribution of
-each fresh choice, boundary constants, near-bound weights), and nothing else is kept but the choices made. Those choices are a choice sequence in
-Hypothesis' sense: `ConjectureData.for_choices(choices)` draws the same scene from them, so a
-difference found this way is handed to Hypothesis, which shrinks it as it would have shrunk one
-of its own (runner.py); `tests/strategies/test_fast_draw.py` checks that replay scene for scene.
+each fresh choice, boundary constants, near-bound weights), and nothing else is kept but the
+choices made. Those choices are a choice sequence in Hypothesis' sense:
+`ConjectureData.for_choices(choices)` draws the same scene from them, so a difference found this
+way is handed to Hypothesis, which shrinks it as it would have shrunk one of its own (runner.py);
+`tests/strategies/test_fast_draw.py` checks that replay scene for scene.
 
 What it leaves out is Hypothesis' mutation of earlier scenes during generation (copying a
 span's choices over another span with the same label, up to 5 times after each fresh scene).
@@ -174,17 +175,19 @@ class _Provider(HypothesisProvider):
                                                          "weights": None, "shrink_towards": shrink_towards})
         if constant is not None:
             return constant
-        span = self._integers.get((min_value, max_value))
-        if span is None:
+        key = (min_value, max_value)
+        if key not in self._integers:
             if len(self._integers) >= self.KEPT:
                 self._integers.clear()
             try:
                 lo, hi = INTEGERS_DISTRIBUTION.cdf(min_value - 0.5), INTEGERS_DISTRIBUTION.cdf(max_value + 0.5)
             except OverflowError:
                 lo = hi = 0.0
-            span = self._integers[min_value, max_value] = (lo, hi - lo) if hi - lo >= 1e-13 else None
-            if span is None:
-                return self._random.randint(min_value, max_value)
+            # None: bounds too wide for the CDF to sample between, so Hypothesis draws uniformly
+            self._integers[key] = (lo, hi - lo) if hi - lo >= 1e-13 else None
+        span = self._integers[key]
+        if span is None:
+            return self._random.randint(min_value, max_value)
         lo, width = span
         while (p := lo + self._random.random() * width) in {0, 1}:
             pass  # pragma: no cover

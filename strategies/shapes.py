@@ -21,7 +21,7 @@ from itertools import repeat
 from hypothesis import strategies as st
 
 from acconform.flags import CullMode
-from acconform.numerics import f32_next_up, to_f32, to_f32_3
+from acconform.numerics import f32_next_up, to_f32, to_f32s
 from acconform.scene import (BSPLeaf, BSPNode, BSPShape, CylSphereShape, PlaneRec, PolygonRec, SphereRec, newell_normal,
                              SphereShape)
 
@@ -34,7 +34,7 @@ def f32s(lo: float, hi: float):
     return st.floats(to_f32(lo), to_f32(hi), width=32, allow_nan=False, allow_infinity=False)
 
 
-_v = to_f32_3  # a point's coordinates rounded to float32
+_v = to_f32s  # a point's coordinates rounded to float32
 
 
 def _plane(verts) -> PlaneRec:

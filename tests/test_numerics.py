@@ -423,7 +423,8 @@ def test_to_f32_and_f32_bits_round_every_double_as_numpys_float32_cast_does_nan_
     want = float(np.float32(x))
     got = nx.to_f32(x)
     assert _double_bits(got) == _double_bits(want)
-    assert nx.to_f32_3((x, -x, x)) == (got, nx.to_f32(-x), got) or math.isnan(x)
+    assert nx.to_f32s((x, -x, x)) == (got, nx.to_f32(-x), got) or math.isnan(x)
+    assert nx.to_f32s((x, -x, x, -x)) == (got, nx.to_f32(-x), got, nx.to_f32(-x)) or math.isnan(x)
     assert nx.f32_bits(x) == int(np.float32(x).view(np.uint32)) == nx.f32_bits(np.float32(x))
 
 
