@@ -47,6 +47,7 @@ import os
 import signal
 import sys
 import tempfile
+import threading
 import time
 from collections import Counter
 from dataclasses import dataclass, field, replace
@@ -813,6 +814,33 @@ def _ignore_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
+@contextlib.contextmanager
+def _ctrl_c_as_a_flag():
+    """While the parent waits for its workers, the first Ctrl-C appends to the list it yields
+    instead of raising KeyboardInterrupt; a second one raises it (stop at once, no summary).
+
+    A KeyboardInterrupt raised at an arbitrary point of the waiting loop can land between a lock's
+    acquire and its release -- the shared counter's (then every worker blocks on its next tick) or
+    the pool's result condition (then the result never arrives) -- and the campaign hangs. Set
+    before the pool forks, so a worker that takes the signal before its initializer ignores it
+    only sets its own copy of the flag."""
+    if threading.current_thread() is not threading.main_thread():  # signal handlers are the main thread's
+        yield []
+        return
+    pressed: list = []
+
+    def on_sigint(signum, frame):
+        if pressed:
+            raise KeyboardInterrupt
+        pressed.append(signum)
+
+    previous = signal.signal(signal.SIGINT, on_sigint)
+    try:
+        yield pressed
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
 def _worker(w: int) -> dict:
     s = _SHARED
     counter, stop = s["counter"], s["stop"]
@@ -962,19 +990,16 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                        stop=stop, first_stream=first_stream, streams=streams if parts > 1 else workers,
                        shrink_budget=shrink_budget)
         try:
-            with ctx.Pool(workers, initializer=_ignore_sigint) as pool:
+            with _ctrl_c_as_a_flag() as ctrl_c, ctx.Pool(workers, initializer=_ignore_sigint) as pool:
                 pending = pool.map_async(_worker, range(workers))
-                while True:
-                    try:
-                        while not pending.ready():
-                            pending.wait(0.2)
-                            bar.update(counter.value, None)
-                        outs = pending.get()
-                        break
-                    except KeyboardInterrupt:
+                while not pending.ready():
+                    pending.wait(0.2)
+                    if ctrl_c and not result.interrupted:
                         # tell the workers to stop; they return what they have so far
                         result.interrupted = True
                         stop.set()
+                    bar.update(counter.value, None)
+                outs = pending.get()
         finally:
             _SHARED.clear()
         _merge(result, outs, mode, generative=items is None)

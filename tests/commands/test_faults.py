@@ -166,6 +166,28 @@ def test_ctrl_c_prints_a_partial_summary_and_no_worker_lines(tmp_path, no_ace):
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
 
 
+def test_while_workers_run_the_first_ctrl_c_only_asks_them_to_stop_and_a_second_stops_at_once():
+    # The first Ctrl-C must not raise in the waiting parent: an exception between a lock's acquire
+    # and release (the shared counter's, the pool's result condition) hangs the campaign.
+    from acconform.runner import _ctrl_c_as_a_flag
+
+    before = signal.getsignal(signal.SIGINT)
+    first = second = None
+    try:
+        with _ctrl_c_as_a_flag() as pressed:
+            try:
+                signal.raise_signal(signal.SIGINT)
+            except KeyboardInterrupt:
+                first = "raised"
+            else:
+                first = list(pressed)
+            signal.raise_signal(signal.SIGINT)
+    except KeyboardInterrupt:
+        second = "raised"
+    assert (first, second) == ([signal.SIGINT], "raised")
+    assert signal.getsignal(signal.SIGINT) is before
+
+
 def test_stress_without_ace_does_not_speak_of_ace_not_raising():
     from acconform.commands.stress import KindStats, render
 
