@@ -5,9 +5,10 @@ terrain, bsp, obstacles, indoor, or ticks for tick scenes over any of them), one
 Records are keyed by `scene_key`: the SHA-256 of the scene's canonical JSON (sorted keys, no
 whitespace), so an equal scene finds its record whatever its name or field order.
 
-Loading reads the shards' lines and each record's versions, nothing more (about a second for the
-21,491 committed records): a record's kind comes from its shard's name and its versions from the
-head of its line. `select` picks records (a stratified, seeded sample by kind; a kind; a runtime)
+Loading reads the shards once and keeps each record's place and versions, not its text (under a
+second for the 30,004 committed records): a record's kind comes from its shard's name and its
+versions from the head of its line; its line is read from the shard again when it is asked for
+(`ShardLines`). `select` picks records (a stratified, seeded sample by kind; a kind; a runtime)
 as `Entry`s, and `scenes(entries)` is a lazy sequence that parses each record when it is asked
 for, so a replay's first case starts at once and each worker parses only its own records. A
 scene handed out by `scenes` is answered by `run` from the record it came from (by identity, or
@@ -135,15 +136,80 @@ class RecordedText:
 _OUTCOME = ',"outcome":'
 
 
+class ShardLines:
+    """A shard's lines, read again from the shard when a record is asked for: a loaded corpus
+    holds each record's place, not its text.
+
+    Keeping every line (385 MB of text for the committed corpus) made loading three times slower
+    than reading the shards -- the time went to the memory's first touch -- and every replay paid
+    it before its first case. Records are mostly asked for in corpus order (a replay, a worker's
+    part of it, a selection, the key index), so one pass through the gzip stream serves them; a
+    line before the last one read starts the pass again, and a shard read out of order a second
+    time is then kept whole. A process forked after a read never touches its parent's open
+    stream: it opens its own."""
+
+    __slots__ = ("path", "_lines", "_at", "_pid", "_recent", "_passes", "_whole")
+
+    RECENT = 8  # lines kept, for a record read twice in a row (its text, then its document)
+
+    def __init__(self, path: Path):
+        self.path = path
+        self._lines = None  # the open pass: an iterator of (line number, line)
+        self._at = 0  # the line number it last gave
+        self._pid = 0
+        self._recent: dict[int, str] = {}
+        self._passes = 0
+        self._whole: dict[int, str] | None = None  # every line, once the shard is read out of order
+
+    def line(self, lineno: int) -> str:
+        line = self._recent.get(lineno)
+        if line is None and self._whole is not None:
+            line = self._whole.get(lineno)
+        if line is not None:
+            return line
+        if self._lines is None or self._pid != os.getpid() or lineno <= self._at:
+            self._passes += 1
+            if self._passes > 2:
+                self._lines = None
+                self._whole = dict(shard_lines(self.path))
+                line = self._whole.get(lineno)
+                if line is None:
+                    raise self._gone(lineno)
+                return line
+            self._lines, self._at, self._pid = shard_lines(self.path), 0, os.getpid()
+        for n, line in self._lines:
+            self._at = n
+            if n == lineno:
+                if len(self._recent) >= self.RECENT:
+                    self._recent.clear()
+                self._recent[n] = line
+                return line
+            if n > lineno:
+                break
+        self._lines = None
+        raise self._gone(lineno)
+
+    def _gone(self, lineno: int) -> "CorpusCorrupt":
+        return CorpusCorrupt(f"{self.path} line {lineno}: no longer there (the shard changed after it was loaded)")
+
+
 @dataclass(frozen=True, slots=True, eq=False)
 class Entry:
-    """One corpus record, not parsed yet: where it is ("SHARD line N"), its kind (from the
-    shard's name), the versions it was recorded with, and its line."""
+    """One corpus record, not parsed yet: its shard and line number, its kind (from the shard's
+    name) and the versions it was recorded with; its line is read from the shard when asked for."""
 
-    where: str
+    shard: ShardLines
+    lineno: int
     kind: str
     versions: Versions
-    line: str
+
+    @property
+    def where(self) -> str:
+        return f"{self.shard.path} line {self.lineno}"
+
+    @property
+    def line(self) -> str:
+        return self.shard.line(self.lineno)
 
     @property
     def runtime(self) -> str:
@@ -222,6 +288,7 @@ class RecordedOracle:
         self._unkeyed: list[Entry] = []  # handed out, not keyed yet: keyed when `run` first needs a key
         self._spans: list[tuple[Path, int, int]] = []  # each shard's entries: (shard, first, end)
         versions: set[Versions] = set()
+        by_head: dict[str, Versions] = {}  # a line's head names its versions: a corpus has a few heads
         for misnamed in sorted(p for p in self.corpus_dir.glob("*.jsonl.gz") if not SHARD_RE.match(p.name)):
             self._bad(CorpusCorrupt(f"{misnamed}: not read: a shard is named <kind>-NNNN.jsonl.gz (e.g. "
                                     f"terrain-0000.jsonl.gz); rename it"))
@@ -230,17 +297,22 @@ class RecordedOracle:
             if progress is not None:
                 progress(f"loading {shard.name} ({len(self.entries)} records so far)")
             first = len(self.entries)
+            lines = ShardLines(shard)
             try:
                 for lineno, line in shard_lines(shard):
-                    where = f"{shard} line {lineno}"
                     head = _HEAD.match(line)
-                    try:
-                        v = _versions(json.loads(head[1]) if head else record_doc(line, where).get("versions"))
-                    except (CorpusCorrupt, ValueError) as e:
-                        self._bad(e if isinstance(e, CorpusCorrupt) else CorpusCorrupt(f"{where}: not JSON ({e})"))
-                        continue
-                    self.entries.append(Entry(where, kind, v, line))
-                    versions.add(v)
+                    v = by_head.get(head[1]) if head else None
+                    if v is None:
+                        where = f"{shard} line {lineno}"
+                        try:
+                            v = _versions(json.loads(head[1]) if head else record_doc(line, where).get("versions"))
+                        except (CorpusCorrupt, ValueError) as e:
+                            self._bad(e if isinstance(e, CorpusCorrupt) else CorpusCorrupt(f"{where}: not JSON ({e})"))
+                            continue
+                        if head:
+                            by_head[head[1]] = v
+                        versions.add(v)
+                    self.entries.append(Entry(lines, lineno, kind, v))
             except CorpusCorrupt as e:
                 self._bad(e)
             self._spans.append((shard, first, len(self.entries)))
@@ -370,22 +442,30 @@ class RecordedOracle:
         chosen: set[int] = set()
         for kind in sorted(by_kind):
             order = rng.sample(by_kind[kind], len(by_kind[kind]))
-            got = 0
-            for i in order:
-                if got == take[kind]:
-                    break
+            got = at = 0
+            while got < take[kind] and at < len(order):
+                # the records still wanted, next in the seeded order: read in corpus order (one pass
+                # through each shard), then taken or passed over in the seeded order
+                batch = order[at:at + take[kind] - got]
+                at += len(batch)
+                verdicts = {}
                 if unsupported is not None:
-                    try:
-                        why = unsupported(self._hand_out(entries[i], keep=False))
-                    except CorpusCorrupt as err:
-                        self._bad(err)
+                    for i in sorted(batch):
+                        try:
+                            verdicts[i] = unsupported(self._hand_out(entries[i], keep=False))
+                        except CorpusCorrupt as err:
+                            verdicts[i] = err
+                for i in batch:
+                    why = verdicts.get(i)
+                    if isinstance(why, CorpusCorrupt):
+                        self._bad(why)
                         continue
                     if why:
                         if skipped is not None:
                             skipped[why] += 1
                         continue
-                chosen.add(i)
-                got += 1
+                    chosen.add(i)
+                    got += 1
         return [e for i, e in enumerate(entries) if i in chosen]
 
     def scenes(self, entries=None) -> Scenes:

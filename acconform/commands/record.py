@@ -126,7 +126,7 @@ def run(args) -> int:
     oracle = require_live(args.ace, args.runtime)
     out = Path(args.out) if args.out else default_out(runtime_named(oracle.versions.runtime))
     try:
-        known = set(RecordedOracle(out)._lines)
+        known = set(RecordedOracle(out).index())
     except AcconformError:
         known = set()
     t0 = time.perf_counter()

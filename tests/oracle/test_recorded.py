@@ -169,3 +169,96 @@ def test_live_record_command_then_recorded_oracle_replays_the_same_outcomes(live
         assert rec.run(s) == live.run(s)
     assert main(["record", "-q", "--out", str(tmp_path / "corpus"), *files]) == 0  # all skipped
     assert len(RecordedOracle(tmp_path / "corpus")) == 5
+
+
+def _small_corpus(tmp_path, n_shards=2, per_shard=7):
+    """A corpus of real records (the first of a committed shard's), a blank line after each."""
+    src = [line for line in gzip.decompress(shards(default_corpus())[0].read_bytes()).decode().splitlines() if line]
+    corpus = tmp_path / "c"
+    corpus.mkdir()
+    lines = iter(src)
+    for k in range(n_shards):
+        text = "\n\n".join(next(lines) for _ in range(per_shard)) + "\n"
+        (corpus / f"terrain-{k:04d}.jsonl.gz").write_bytes(gzip.compress(text.encode()))
+    return corpus
+
+
+def test_a_loaded_corpus_reads_each_records_line_from_its_shard_in_any_order(tmp_path):
+    from acconform.case import jsonl_lines
+
+    corpus = _small_corpus(tmp_path)
+    want = [line for s in shards(corpus) for _, line in jsonl_lines(s)]
+    oracle = RecordedOracle(corpus)
+    entries = oracle.entries
+    assert [e.line for e in entries] == want  # in order: one pass through each shard
+    assert [e.lineno for e in entries[:3]] == [1, 3, 5] and entries[1].where.endswith("terrain-0000.jsonl.gz line 3")
+    order = [5, 0, 13, 2, 2, 9, 1, 0, 6, 12, 3]  # backwards: the pass starts again, then the shard is kept whole
+    assert [entries[i].line for i in order] == [want[i] for i in order]
+
+
+def test_a_forked_process_reads_records_without_moving_its_parents_place_in_a_shard(tmp_path):
+    import os
+
+    corpus = _small_corpus(tmp_path, n_shards=1, per_shard=300)  # more than the gzip reader's buffers hold
+    oracle = RecordedOracle(corpus)
+    e = oracle.entries
+    assert e[0].line  # the parent's pass is open, at line 1
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child reads the rest of the shard through the inherited objects
+        ok = all(x.line.startswith('{"format"') for x in e[1:])
+        os.write(w, b"1" if ok else b"0")
+        os._exit(0)
+    os.waitpid(pid, 0)
+    assert os.read(r, 1) == b"1"
+    assert [x.doc()["scene"] for x in e[1:]] == [json.loads(x.line)["scene"] for x in RecordedOracle(corpus).entries[1:]]
+
+
+def test_a_shard_cut_short_after_loading_names_the_record_it_no_longer_holds(tmp_path):
+    from acconform.oracle.recorded import CorpusCorrupt
+
+    corpus = _small_corpus(tmp_path, n_shards=1)
+    oracle = RecordedOracle(corpus)
+    shard = shards(corpus)[0]
+    first = gzip.decompress(shard.read_bytes()).decode().split("\n", 1)[0] + "\n"
+    shard.write_bytes(gzip.compress(first.encode()))
+    assert oracle.entries[0].line == first
+    with pytest.raises(CorpusCorrupt, match=r"terrain-0000\.jsonl\.gz line 13: no longer there"):
+        oracle.entries[-1].line
+
+
+def test_a_selection_passing_over_unsupported_scenes_takes_what_the_seeded_order_takes():
+    """select reads the records it weighs in corpus order (one pass per shard), and takes or passes
+    them over in the seeded order: the same records as weighing them one by one in that order."""
+    import random
+    from collections import Counter
+
+    oracle = RecordedOracle(default_corpus())
+
+    def unsupported(scene):
+        return "odd" if len(scene.objects) % 2 else None
+
+    for n, seed in ((12, 0), (40, 3)):
+        skipped = Counter()
+        got = oracle.select(n=n, seed=seed, unsupported=unsupported, skipped=skipped)
+        # the reference: every kind's records weighed one at a time in the seeded order
+        entries = oracle.entries
+        by_kind = {}
+        for i, e in enumerate(entries):
+            by_kind.setdefault(e.kind, []).append(i)
+        take = Counter(e.kind for e in got)
+        rng = random.Random(seed)
+        want, passed = set(), Counter()
+        for kind in sorted(by_kind):
+            taken = 0
+            for i in rng.sample(by_kind[kind], len(by_kind[kind])):
+                if taken == take[kind]:
+                    break
+                why = unsupported(oracle._hand_out(entries[i], keep=False))
+                if why:
+                    passed[why] += 1
+                    continue
+                want.add(i)
+                taken += 1
+        assert [e.where for e in got] == [entries[i].where for i in sorted(want)]
+        assert skipped == passed and sum(take.values()) == n and skipped["odd"] > 0
