@@ -19,6 +19,8 @@ routines for that run).
 
 from __future__ import annotations
 
+import gc
+
 import numpy as np
 
 from acconform.flags import TransientState
@@ -221,6 +223,13 @@ def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mon
         raise  # deeper than the harness runs anything: misuse (exit 2), not a verdict
     except Exception as e:
         return Outcome(error=verdict(e))
+    finally:
+        # A run's world holds cycles (a cell and its landblock, a PhysicsObj and its PartArray), so
+        # only the collector frees it. Collected as the run ends, it is freed young, in one pass;
+        # left to the thresholds, the collector walks it while it is alive, promotes it and walks
+        # it again later: runs took 7-20% longer (corpus scenes of four kinds, under campaign_gc).
+        if gc.isenabled():
+            gc.collect(1)
 
 
 @harness("runs a scene with tracing on: its outcome and its trace records (acconform.trace)")
