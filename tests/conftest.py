@@ -1,5 +1,7 @@
 """Fixtures shared across the test folders."""
 
+import gc
+
 import pytest
 from hypothesis import settings
 
@@ -7,6 +9,18 @@ from hypothesis import settings
 # deadline is a timed test that fails on a loaded machine, so it is off for every suite here.
 settings.register_profile("acconform", deadline=None)
 settings.load_profile("acconform")
+
+
+def pytest_collection_finish(session):
+    """The collector as a campaign tunes it (runner.campaign_gc): what the suite has built once
+    its tests are collected (modules, Hypothesis' caches) frozen, and collections less often. The
+    port's and the strategies' tests ran 20-30% faster (alternating, one run); each xdist worker
+    does the same."""
+    from acconform.runner import GC_THRESHOLDS
+
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(*GC_THRESHOLDS)
 
 
 @pytest.fixture
