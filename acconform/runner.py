@@ -684,20 +684,29 @@ def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices:
     stop = [False]
     texts = getattr(items, "text", None) if getattr(port, "runs_every_scene", False) else None
 
+    def unreadable(e: AcconformError) -> None:
+        r.unreadable.append(str(e))
+        if not keep_going:
+            stop[0] = True
+
     def load(i):
         try:
             return items[i]
         except AcconformError as e:
-            r.unreadable.append(str(e))
-            if not keep_going:
-                stop[0] = True
+            unreadable(e)
             return None
 
     def take():
         """(index, what to send: the recorded text or the scene), or None at the end."""
         for i in indices:
             if texts is not None:
-                text = texts(i)
+                try:
+                    text = texts(i)  # read from its shard now: a shard cut short since loading fails here
+                except AcconformError as e:
+                    unreadable(e)
+                    if stop[0]:
+                        return None
+                    continue
                 if text is not None:
                     return i, text
             scene = load(i)

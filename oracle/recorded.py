@@ -148,7 +148,7 @@ class ShardLines:
     time is then kept whole. A process forked after a read never touches its parent's open
     stream: it opens its own."""
 
-    __slots__ = ("path", "_lines", "_at", "_pid", "_recent", "_passes", "_whole")
+    __slots__ = ("path", "_lines", "_at", "_pid", "_recent", "_passes", "_whole", "_broken")
 
     RECENT = 8  # lines kept, for a record read twice in a row (its text, then its document)
 
@@ -160,6 +160,7 @@ class ShardLines:
         self._recent: dict[int, str] = {}
         self._passes = 0
         self._whole: dict[int, str] | None = None  # every line, once the shard is read out of order
+        self._broken: tuple[int, CorpusCorrupt] | None = None  # (the last line read, why no more can be)
 
     def line(self, lineno: int) -> str:
         line = self._recent.get(lineno)
@@ -167,27 +168,36 @@ class ShardLines:
             line = self._whole.get(lineno)
         if line is not None:
             return line
+        if self._broken is not None and lineno > self._broken[0]:
+            raise self._broken[1]  # cut short since loading: found once, not read again per record
+        if self._whole is not None:
+            raise self._gone(lineno)
         if self._lines is None or self._pid != os.getpid() or lineno <= self._at:
             self._passes += 1
-            if self._passes > 2:
-                self._lines = None
-                self._whole = dict(shard_lines(self.path))
-                line = self._whole.get(lineno)
-                if line is None:
-                    raise self._gone(lineno)
-                return line
             self._lines, self._at, self._pid = shard_lines(self.path), 0, os.getpid()
-        for n, line in self._lines:
-            self._at = n
-            if n == lineno:
-                if len(self._recent) >= self.RECENT:
-                    self._recent.clear()
-                self._recent[n] = line
-                return line
-            if n > lineno:
-                break
+            if self._passes > 2:
+                self._whole = {}
+        try:
+            for n, line in self._lines:
+                self._at = n
+                if self._whole is not None:
+                    self._whole[n] = line
+                elif n == lineno:
+                    if len(self._recent) >= self.RECENT:
+                        self._recent.clear()
+                    self._recent[n] = line
+                    return line
+                elif n > lineno:
+                    break
+        except CorpusCorrupt as e:
+            self._lines = None
+            self._broken = (self._at, e)
+            raise
         self._lines = None
-        raise self._gone(lineno)
+        line = self._whole.get(lineno) if self._whole is not None else None
+        if line is None:
+            raise self._gone(lineno)
+        return line
 
     def _gone(self, lineno: int) -> "CorpusCorrupt":
         return CorpusCorrupt(f"{self.path} line {lineno}: no longer there (the shard changed after it was loaded)")

@@ -227,6 +227,39 @@ def test_a_shard_cut_short_after_loading_names_the_record_it_no_longer_holds(tmp
         oracle.entries[-1].line
 
 
+def test_a_shard_truncated_after_loading_is_read_to_the_cut_once_and_each_later_record_named_unreadable(tmp_path, capsys,
+                                                                                                        monkeypatch):
+    import acconform.oracle.recorded as recorded
+    from acconform.cli import main
+    from acconform.oracle.recorded import CorpusCorrupt
+
+    corpus = _small_corpus(tmp_path, n_shards=2, per_shard=40)
+    shard = shards(corpus)[0]
+    whole = shard.read_bytes()
+    loaded = recorded.RecordedOracle
+
+    def cut_after_loading(*a, **k):
+        oracle = loaded(*a, **k)
+        shard.write_bytes(whole[:len(whole) // 2])
+        return oracle
+
+    monkeypatch.setattr(recorded, "RecordedOracle", cut_after_loading)  # check loads the corpus, then it is cut
+    assert main(["check", "--corpus", str(corpus), "-j", "1", "--no-progress", "--keep-going"]) == 0
+    out, err = capsys.readouterr()
+    replayed = int(out.split(" cases in ", 1)[0].rsplit("\n", 1)[-1])
+    skipped = int(out.split("skipped ", 1)[1].split(" unreadable", 1)[0])
+    assert replayed + skipped == 80 and 0 < skipped < 40 and "truncated after line" in out and "Traceback" not in err
+
+    shard.write_bytes(whole)
+    e = RecordedOracle(corpus).entries
+    shard.write_bytes(whole[:len(whole) // 2])
+    lines = e[0].shard
+    for entry in (e[38], e[39]):  # the shard's last two records: past the cut
+        with pytest.raises(CorpusCorrupt, match="truncated after line"):
+            entry.line
+    assert lines._passes == 1  # the cut is found once, not by a pass per record after it
+
+
 def test_a_selection_passing_over_unsupported_scenes_takes_what_the_seeded_order_takes():
     """select reads the records it weighs in corpus order (one pass per shard), and takes or passes
     them over in the seeded order: the same records as weighing them one by one in that order."""
