@@ -57,14 +57,17 @@ adjust_offset_block_offset_dropped and walkable_allowable_inclusive, which the f
 (--fast-lane) was measured for step_down_walkable_strict only (killed in 87 s, above).
 
 Survivors everywhere: the three UNREACHABLE below (equivalent in practice: the first two because
-their boundary cannot be drawn, the third because its two probe lengths meet the same ground).
+their boundary cannot be drawn, the third because its two probe lengths meet the same ground). The
+second, step_down_interp_floor_raised, is caught by this hunt now (below).
 
 Indoor mutants (issue 12; this hunt on the indoor kind, BUDGET 1,500, seed 0, on the final
 dungeon strategies of issue 12): portal_side_flipped caught at scene 672, point_in_cell_close_is_outside
 at 41, visible_cell_pruning_skipped at 42 (once dungeons could sit just below the ground: before
 that, 1,500 scenes missed it), neighbour_tested_in_own_frame at 1, outside_portal_test_off at 5;
 each shrunk to one landblock, at most one object and a path of about a metre or less.
-cell_bsp_slack_dropped went unnoticed for 1,500 scenes twice (UNREACHABLE says why).
+cell_bsp_slack_dropped went unnoticed for 1,500 scenes twice; on 5e07e0e's strategies (checked
+2026-12-04) this hunt catches it at scene 12 and step_down_interp_floor_raised at scene 62, so
+neither is in UNREACHABLE any more.
 
 Placement mutants (issue 12's mover.placement, ACE's SetPositionInternal; seed 0): placement_slide_flag_ignored
 caught at scene 917 (shrunk to one landblock, one object, a 6 cm path), placement_in_no_cell_left_active
@@ -114,11 +117,6 @@ UNREACHABLE = {
     # dist == -EPSILON exactly cannot be drawn on purpose: a sphere's bottom (center.z - r) lies on
     # the float32 grid of r, and EPSILON's low bits are finer than that grid
     "validate_walkable_contact_test_strict": "boundary (dist == -EPSILON exactly) is unreachable by construction",
-    "step_down_interp_floor_raised": "a step-down overshoot in [-0.1, 0) needs gentle slopes and a sliver step",
-    # the slack only decides whether a neighbour joins the cell list while the sphere is 0-0.01 m short of
-    # its cell BSP; that changes an outcome only if the neighbour has a polygon or static the sphere
-    # reaches from there, i.e. one outside the neighbour's own cell planes, which no drawn dungeon has
-    "cell_bsp_slack_dropped": "a neighbour's polygons lie within its cell BSP: one 0.01 m beyond it is never reached",
     # CheckWalkable probes down from where StepDown just put the sphere on walkable ground, so a probe of
     # r meets that ground as surely as one of 2r: only ground between r and 2r under a sphere that is not
     # on it would tell them apart. Equivalent in practice (the corpus and live ACE, 4,000 cases, agree)
