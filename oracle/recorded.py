@@ -381,16 +381,6 @@ class RecordedOracle:
     def _keyed(self) -> dict[str, Entry]:
         return self.index()
 
-    @property
-    def _lines(self) -> dict[str, str]:
-        """Every record's line by scene key (builds the key index)."""
-        return {k: e.line for k, e in self._keyed().items()}
-
-    @property
-    def _where(self) -> dict[str, tuple[str, str, str]]:
-        """Every record's ("shard line N", kind, runtime) by scene key (builds the key index)."""
-        return {k: (e.where, e.kind, e.runtime) for k, e in self._keyed().items()}
-
     def __contains__(self, scene: Scene) -> bool:
         return scene_key(scene) in self._keyed()
 

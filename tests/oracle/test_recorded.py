@@ -31,7 +31,7 @@ def test_the_corpus_root_holds_one_corpus_per_runtime_and_the_default_is_coreclr
 def test_the_coreclr_corpus_records_the_same_scenes_as_the_mono_corpus():
     """The two corpora pair up by scene key (the runtime difference table compares them)."""
     mono, coreclr = RecordedOracle(default_corpus("mono")), RecordedOracle(default_corpus("coreclr"))
-    assert set(coreclr._lines) >= set(mono._lines)
+    assert set(coreclr.index()) >= set(mono.index())
 
 
 @pytest.mark.parametrize("runtime", sorted(RUNTIMES))

@@ -53,10 +53,10 @@ def _fires(corpus_dir, wanted=lambda where: True) -> dict[str, tuple[str, frozen
     oracle = RecordedOracle(corpus_dir)
     runtime = runtime_named(oracle.versions.runtime)
     fires: dict[str, tuple[str, frozenset]] = {}
-    for key, (where, _kind, _rt) in sorted(oracle._where.items()):
-        if not wanted(where):
+    for key, entry in sorted(oracle.index().items()):
+        if not wanted(entry.where):
             continue
-        scene = Scene.from_json(json.loads(oracle._lines[key])["scene"])
+        scene = Scene.from_json(entry.doc()["scene"])
         trace: Counter = Counter()
         run_scene(scene, trace=trace, runtime=runtime)
         fires[key] = (scene_kind(scene), frozenset(trace))
