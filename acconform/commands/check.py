@@ -280,7 +280,10 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
     if args.runtime is not None and not oracle.select(runtime=args.runtime):
         raise AcconformError(f"--runtime {args.runtime}: the recorded corpus {corpus} holds no records of that "
                              f"runtime (it holds {', '.join(oracle.runtimes()) or 'none'})")
-    unsupported = getattr(port, "unsupported", None)
+    # a backend that `runs_every_scene` (the built-in port in exact mode, an implementation whose
+    # handshake lists every kind and feature) passes no scene over: select need not read the sample's
+    # scenes to weigh them, so each is read once, when it is replayed
+    unsupported = None if getattr(port, "runs_every_scene", False) else getattr(port, "unsupported", None)
     entries = oracle.select(n=args.cases, seed=args.seed or 0, kinds=set(run_kinds), runtime=args.runtime,
                             unsupported=unsupported if args.cases is not None else None, skipped=presampled)
     if args.cases is None:

@@ -260,6 +260,20 @@ def test_a_shard_truncated_after_loading_is_read_to_the_cut_once_and_each_later_
     assert lines._passes == 1  # the cut is found once, not by a pass per record after it
 
 
+def test_a_sample_replayed_by_the_built_in_port_reads_each_scene_once(tmp_path, capsys, monkeypatch):
+    """`check -n` weighs its sample scene by scene only for an implementation that may pass one over;
+    the built-in port runs every scene, so each sampled scene is parsed once, when it is replayed."""
+    from acconform.cli import main
+    from acconform.scene import Scene
+
+    corpus = _small_corpus(tmp_path, n_shards=2, per_shard=10)
+    parsed = []
+    from_json = Scene.from_json
+    monkeypatch.setattr(Scene, "from_json", staticmethod(lambda doc, path="": parsed.append(1) or from_json(doc, path)))
+    assert main(["check", "--corpus", str(corpus), "-n", "6", "-j", "1", "--no-progress"]) == 0
+    assert "6 cases in" in capsys.readouterr().out and len(parsed) == 6
+
+
 def test_a_selection_passing_over_unsupported_scenes_takes_what_the_seeded_order_takes():
     """select reads the records it weighs in corpus order (one pass per shard), and takes or passes
     them over in the seeded order: the same records as weighing them one by one in that order."""
