@@ -14,15 +14,10 @@ from acconform.flags import InsertType, TransitionState
 from acconform.numerics import Mode, Vector3, dot
 
 from ..anchors import anchor
-from ..frame import Position
+from ..frame import AFrame, Position
+from ..geom.sphere import Sphere
 from .. import land_defs
 from ..vec import unit_z_like, zero_like
-
-
-def _sphere(center, radius):
-    from ..geom.sphere import Sphere
-
-    return Sphere(center, radius)
 
 
 @dataclass(slots=True, eq=False)
@@ -77,8 +72,6 @@ class SpherePath:
 
     def __post_init__(self):
         # the C# constructor: new Positions and Sphere, empty lists, default struct fields
-        from ..frame import AFrame
-
         m = self.mode
         z = m.vec(0, 0, 0)
         s0 = m.scalar(0.0)
@@ -86,7 +79,7 @@ class SpherePath:
         self.cur_pos = Position(0, AFrame.identity(m))
         self.check_pos = Position(0, AFrame.identity(m))
         self.backup_check_pos = Position(0, AFrame.identity(m))
-        self.walkable_check_pos = _sphere(z, s0)
+        self.walkable_check_pos = Sphere(z, s0)
         self.local_low_point = self.global_low_point = self.local_space_low_point = z
         self.local_space_z = self.global_offset = self.step_up_normal = z
         self.walkable_up = self.neg_collision_normal = z
@@ -115,7 +108,7 @@ class SpherePath:
     def init_sphere(self, num_sphere: int, spheres: list, scale) -> None:
         self.num_sphere = num_sphere if num_sphere <= 2 else 2
         for i in range(self.num_sphere):
-            self.local_sphere.append(_sphere(spheres[i].center * scale, spheres[i].radius * scale))
+            self.local_sphere.append(Sphere(spheres[i].center * scale, spheres[i].radius * scale))
         self.local_low_point = self.local_sphere[0].center
         self.local_low_point = self.local_low_point.with_z(self.local_low_point.z - self.local_sphere[0].radius)
 
@@ -137,7 +130,7 @@ class SpherePath:
     @anchor("SPHEREPATH::cache_global_curr_center", "SpherePath.cs:CacheGlobalCurrCenter")
     def cache_global_curr_center(self) -> None:
         while len(self.global_curr_center) < self.num_sphere:
-            self.global_curr_center.append(_sphere(self.mode.vec(0, 0, 0), self.mode.scalar(0.0)))
+            self.global_curr_center.append(Sphere(self.mode.vec(0, 0, 0), self.mode.scalar(0.0)))
         for i in range(self.num_sphere):
             self.global_curr_center[i].center = self.cur_pos.local_to_global(self.local_sphere[i].center)
 
@@ -149,7 +142,7 @@ class SpherePath:
             self.global_low_point = self.global_low_point + offset
         else:
             while len(self.global_sphere) < self.num_sphere:
-                self.global_sphere.append(_sphere(self.mode.vec(0, 0, 0), self.mode.scalar(0.0)))
+                self.global_sphere.append(Sphere(self.mode.vec(0, 0, 0), self.mode.scalar(0.0)))
             for i in range(self.num_sphere):
                 self.global_sphere[i].radius = self.local_sphere[i].radius
                 self.global_sphere[i].center = self.check_pos.local_to_global(self.local_sphere[i].center)
@@ -160,9 +153,9 @@ class SpherePath:
         inv_scale = 1.0 / scale_z
         m = self.mode
         while len(self.local_space_curr_center) < self.num_sphere:
-            self.local_space_curr_center.append(_sphere(m.vec(0, 0, 0), m.scalar(0.0)))
+            self.local_space_curr_center.append(Sphere(m.vec(0, 0, 0), m.scalar(0.0)))
         while len(self.local_space_sphere) < self.num_sphere:
-            self.local_space_sphere.append(_sphere(m.vec(0, 0, 0), m.scalar(0.0)))
+            self.local_space_sphere.append(Sphere(m.vec(0, 0, 0), m.scalar(0.0)))
         for i in range(self.num_sphere):
             self.local_space_curr_center[i].center = pos.local_to_local(self.cur_pos, self.local_sphere[i].center) * inv_scale
             self.local_space_sphere[i].radius = self.local_sphere[i].radius * inv_scale
@@ -175,7 +168,7 @@ class SpherePath:
     def check_walkables(self) -> bool:
         if self.walkable is None:
             return True
-        walk_check_pos = _sphere(self.walkable_check_pos.center, self.walkable_check_pos.radius * 0.5)
+        walk_check_pos = Sphere(self.walkable_check_pos.center, self.walkable_check_pos.radius * 0.5)
         return self.walkable.check_walkable(walk_check_pos, self.walkable_up)
 
     @anchor(None, "SpherePath.cs:GetCurPosCheckPosBlockOffset")
@@ -255,7 +248,7 @@ class SpherePath:
 
     @anchor("SPHEREPATH::set_walkable", "SpherePath.cs:SetWalkable")
     def set_walkable(self, sphere, poly, z_axis: Vector3, local_pos: Position, scale) -> None:
-        self.walkable_check_pos = _sphere(sphere.center, sphere.radius)
+        self.walkable_check_pos = Sphere(sphere.center, sphere.radius)
         self.walkable = poly
         self.walkable_up = z_axis
         self.walkable_pos = local_pos.copy()
@@ -263,7 +256,7 @@ class SpherePath:
 
     @anchor("SPHEREPATH::set_walkable_check_pos", "SpherePath.cs:SetWalkableCheckPos")
     def set_walkable_check_pos(self, sphere) -> None:
-        self.walkable_check_pos = _sphere(sphere.center, sphere.radius)
+        self.walkable_check_pos = Sphere(sphere.center, sphere.radius)
 
     @anchor("SPHEREPATH::step_up_slide", "SpherePath.cs:StepUpSlide")
     def step_up_slide(self, transition) -> TransitionState:
