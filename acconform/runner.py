@@ -156,7 +156,7 @@ class Result:
     found: list[Found] = field(default_factory=list)
     elapsed: float = 0.0
     source: str = "generative"
-    timings: Counter = field(default_factory=Counter)  # seconds in "port", "oracle", "compare"
+    timings: Counter = field(default_factory=Counter)  # seconds in "draw" (a campaign's scenes), "port", "oracle", "compare"
     skipped: Counter = field(default_factory=Counter)  # scenes the port cannot run, by reason
     interrupted: bool = False  # Ctrl-C ended the campaign early
     failures_fallback: str | None = None  # why case files went to a temporary directory instead
@@ -547,7 +547,9 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
                     prefix = ()
                     if ran >= climb_from and best and rng.random() < 0.5:
                         prefix = _nudged(best[rng.choice(sorted(best))][1], rng)
+                    t0 = time.perf_counter()
                     drawn = drawer.draw(prefix)
+                    r.timings["draw"] += time.perf_counter() - t0
                     if ahead_of is not None:
                         ahead_of(drawn[0])
                     return drawn

@@ -35,6 +35,13 @@ def test_a_clean_pair_finds_no_difference(tmp_path):
     assert r.ok and r.cases == 40 and not list(tmp_path.iterdir())
 
 
+def test_a_campaign_times_its_drawing_beside_each_backend_and_a_replay_draws_nothing():
+    r = run_campaign(fake_port, fake_port, n=20, seed=1, failures_dir=None, database=None)
+    assert set(r.timings) == {"draw", "port", "oracle", "compare"} and r.timings["draw"] > 0
+    replayed = run_campaign(fake_port, fake_port, replay=list(sample_scenes(None, 5, 1)), failures_dir=None)
+    assert "draw" not in replayed.timings and replayed.timings["port"] > 0
+
+
 def test_a_difference_is_found_shrunk_and_written_as_a_replayable_case(tmp_path):
     r = run_campaign(buggy_when_long, fake_port, n=300, seed=2, failures_dir=tmp_path, database=None)
     assert len(r.found) == 1
