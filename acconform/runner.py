@@ -667,6 +667,13 @@ def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, m
 REPLAYED = Shrink("none", "replayed as recorded: not shrunk")
 
 
+def scene_filter(port: Backend):
+    """The port's `unsupported(scene)`, or None for a port that `runs_every_scene` (the built-in port
+    in exact mode, an implementation whose handshake lists every kind and feature): it passes no
+    scene over, so no scene need be read to be weighed."""
+    return None if getattr(port, "runs_every_scene", False) else getattr(port, "unsupported", None)
+
+
 def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices: Iterable[int], *, mode: str,
             keep_going: bool, tick, should_stop, versions: Versions, seed) -> None:
     """Replay `items[i]` for i in `indices` as they are; add each difference (unshrunk) to `r.found`.
@@ -719,7 +726,7 @@ def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices:
         return None
 
     prefetch = getattr(port, "prefetch", None)
-    unsupported = getattr(port, "unsupported", None) if texts is None else None
+    unsupported = scene_filter(port)
     cur = take()
     if prefetch is not None and cur is not None:
         prefetch(cur[1])

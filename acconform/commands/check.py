@@ -254,6 +254,7 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
     from ..errors import AcconformError, OracleUnavailable
     from ..oracle import PerProcessOracle, default_corpus, get_oracle, live_configured
     from ..oracle.recorded import CorpusMissing, RecordedOracle
+    from ..runner import scene_filter
 
     if live_configured(args.ace):
         if workers > 1:
@@ -280,10 +281,9 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
     if args.runtime is not None and not oracle.select(runtime=args.runtime):
         raise AcconformError(f"--runtime {args.runtime}: the recorded corpus {corpus} holds no records of that "
                              f"runtime (it holds {', '.join(oracle.runtimes()) or 'none'})")
-    # a backend that `runs_every_scene` (the built-in port in exact mode, an implementation whose
-    # handshake lists every kind and feature) passes no scene over: select need not read the sample's
-    # scenes to weigh them, so each is read once, when it is replayed
-    unsupported = None if getattr(port, "runs_every_scene", False) else getattr(port, "unsupported", None)
+    # the sample's scenes are read to be weighed only when the port may pass one over (else each is
+    # read once, when it is replayed)
+    unsupported = scene_filter(port)
     entries = oracle.select(n=args.cases, seed=args.seed or 0, kinds=set(run_kinds), runtime=args.runtime,
                             unsupported=unsupported if args.cases is not None else None, skipped=presampled)
     if args.cases is None:
