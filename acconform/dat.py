@@ -59,7 +59,7 @@ object. A `LandblockInfo` (cell DAT, ``0xXXYYFFFE``; FileTypes/LandblockInfo.cs)
 each landblock that has EnvCells or buildings: NumCells = the number of its EnvCells (ACE's
 AdjustCell loads 0x0100 .. 0x0100 + NumCells - 1 to find the cell holding a point), no objects,
 its buildings, PackMask 0. A landblock's CellLandblock says HasObjects exactly when it has
-buildings (`has_objects`; oracle/pack.landblock_bytes writes it), so ACE's Landblock constructor
+buildings (`has_objects`; `cell_landblock` writes it), so ACE's Landblock constructor
 reads the Info of a landblock with buildings and PostInit builds them (init_buildings); a
 dungeon's Info is read only by AdjustCell, as before.
 
@@ -69,6 +69,15 @@ the scene's list), written as a BSP static's (`gfx_obj_physics`); its BuildInfo 
 holds that id as ModelId, the frame, NumLeaves and the portals, each a CBldPortal
 (Entity/CBldPortal.cs: flags, OtherCellId, OtherPortalId, the stab count and stabs as ushorts, then
 zero bytes to the next multiple of 4 counted from the record's start, as AlignBoundary reads).
+
+**Landblocks** (`cell_landblock`, FileTypes/CellLandblock.cs): Id ``0xXXYYFFFF``, HasObjects (a
+uint32, 1 with buildings), the 81 terrain words, the 81 height bytes, zero to a multiple of 4.
+
+**A scene's world as records** (`dat_world`, the protocol's feature `dat`, docs/protocol.md): every
+record above in two lists, one per DAT, in the order ACE's facade builds from them (cell: the
+CellLandblocks, LandblockInfos, EnvCells; portal: the buildings' shells, Environments, each static's
+records, the mover's), with what ACE's facade takes for the statics and the mover that no record
+holds (`DatStatic`, `DatMover`) and the land height table.
 """
 
 from __future__ import annotations
@@ -78,8 +87,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .scene import (BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, CylSphereShape, EnvCell, Environment, Mover,
-                    PolygonRec, Scene, SphereShape, StaticObject, ENV_CELL_FIRST, newell_normal)
+from .scene import (BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
+                    Environment, Landblock, Mover, Placement, PolygonRec, Position, Scene, SphereShape, StaticObject,
+                    ENV_CELL_FIRST, newell_normal)
+from .staging import MOVER_ID
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
@@ -121,7 +132,8 @@ class DatRecord:
     """One portal DAT file: its id and the bytes `DatDatabase.ReadFromDat` would unpack."""
 
     id: int
-    kind: str  # the DatLoader FileType: "GfxObj", "Setup", "Environment" (portal DAT); "EnvCell", "LandblockInfo" (cell DAT)
+    kind: str  # the DatLoader FileType class: "GfxObj", "SetupModel", "Environment" (portal DAT); "CellLandblock",
+    # "EnvCell", "LandblockInfo" (cell DAT)
     data: bytes
 
 
@@ -278,7 +290,7 @@ def static_records(obj: StaticObject, index: int) -> ObjectRecords:
         body = setup(setup_id, [gfx_id], cylspheres=[(shape.low_point, shape.radius, shape.height)])
     else:
         raise TypeError(f"static object {obj.id:#010x}: unknown shape {type(shape).__name__}")
-    return ObjectRecords(setup_id, (part, DatRecord(setup_id, "Setup", body)))
+    return ObjectRecords(setup_id, (part, DatRecord(setup_id, "SetupModel", body)))
 
 
 def mover_records(mover: Mover) -> ObjectRecords:
@@ -286,7 +298,7 @@ def mover_records(mover: Mover) -> ObjectRecords:
     part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
     body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
                  step_up=mover.step_up_height, step_down=mover.step_down_height)
-    return ObjectRecords(MOVER_SETUP_ID, (part, DatRecord(MOVER_SETUP_ID, "Setup", body)))
+    return ObjectRecords(MOVER_SETUP_ID, (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body)))
 
 
 def cell_bsp_node(node, out: list, leaves: list) -> None:
@@ -482,6 +494,21 @@ def has_objects(scene: Scene, landblock_id: int) -> bool:
     return any(b.landblock == landblock_id for b in scene.buildings)
 
 
+_CELL_LANDBLOCK = struct.Struct("<II81H")
+
+
+def cell_landblock(lb: Landblock, objects: bool = False) -> bytes:
+    """FileTypes/CellLandblock: Id, HasObjects (1 for a landblock with buildings: `has_objects`), the 81
+    terrain words, the 81 heights, aligned to 4 (251 bytes + 1)."""
+    return _CELL_LANDBLOCK.pack(lb.id | 0xFFFF, 1 if objects else 0, *lb.terrain) + bytes(lb.heights) + b"\0"
+
+
+def cell_landblock_records(scene: Scene) -> tuple[DatRecord, ...]:
+    """Each scene landblock's CellLandblock (cell DAT, 0xXXYYFFFF), in scene order."""
+    return tuple(DatRecord(lb.id | 0xFFFF, "CellLandblock", cell_landblock(lb, has_objects(scene, lb.id | 0xFFFF)))
+                 for lb in scene.landblocks)
+
+
 def env_cell_stabs(scene: Scene) -> dict[int, list]:
     """Per EnvCell id, its stabs: (did, frame) of each static object whose position.cell is it, in scene order."""
     stabs: dict[int, list] = {}
@@ -531,24 +558,89 @@ class SceneRecords:
     cell: tuple[DatRecord, ...]
 
 
-_last_written: list = [None, None]  # the last scene `scene_records` wrote, and its records
+_written: list = []  # (scene, its records) for the last two scenes `scene_records` wrote
 
 
 def scene_records(scene: Scene) -> SceneRecords:
-    """The scene's DAT records, written once for the port and ACE's facade both: a campaign hands
-    each of them the same scene in turn, in one process, and an indoor scene's Environments cost
-    more to write than ACE's whole case (docs/oracle.md). Scenes are immutable, so the last one's
-    records are kept (and the scene with them, so its identity cannot pass to another)."""
-    if scene is not _last_written[0]:
-        records = SceneRecords(mover_records(scene.mover),
-                               tuple(static_records(o, index) for index, o in enumerate(scene.objects)),
-                               environment_records(scene) + building_model_records(scene),
-                               cell_dat_records(scene))
-        _last_written[:] = [scene, records]
-    return _last_written[1]
+    """The scene's DAT records, written once for the port, ACE's facade and a request's `dat`: a
+    campaign hands each of them the same scene in turn, in one process, and an indoor scene's
+    Environments cost more to write than ACE's whole case (docs/oracle.md). Scenes are immutable, so
+    the last two scenes' records are kept (each with its scene, so its identity cannot pass to
+    another): a campaign sends the next scene to an implementation before ACE runs the current one."""
+    for written, records in _written:
+        if written is scene:
+            return records
+    records = SceneRecords(mover_records(scene.mover),
+                           tuple(static_records(o, index) for index, o in enumerate(scene.objects)),
+                           environment_records(scene) + building_model_records(scene),
+                           cell_dat_records(scene))
+    _written.append((scene, records))
+    del _written[:-2]
+    return records
 
 
-__all__ = ["building_info", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
+@dataclass(frozen=True, slots=True)
+class DatStatic:
+    """What ACE's facade takes for a static object beside its records: its PhysicsObj id, the id makeObject
+    takes (`did`), its position, PhysicsState flags and scale."""
+
+    id: int
+    did: int
+    position: Position
+    state: int
+    scale: float
+
+
+@dataclass(frozen=True, slots=True)
+class DatMover:
+    """What ACE's facade takes for the mover beside its records (the Setup holds its spheres and step
+    heights): the scene mover's other fields, its PhysicsObj id and the id makeObject takes."""
+
+    id: int
+    did: int
+    scale: float
+    state: int
+    transient_state: int
+    velocity: tuple[float, float, float]
+    begin: Position
+    end: Position | None
+    contact_plane: ContactPlane | None
+    sliding_normal: tuple[float, float, float] | None
+    placement: Placement | None
+
+
+@dataclass(frozen=True, slots=True)
+class DatWorld:
+    """A scene's world as DAT records (the protocol's `dat`): the cell and portal DATs' records in the
+    order ACE's facade builds from them, the statics and the mover as the facade takes them, and the
+    land height table (a Region's LandDefs.LandHeightTable; no Region record is written)."""
+
+    land_height_table: tuple[float, ...]
+    cell: tuple[DatRecord, ...]
+    portal: tuple[DatRecord, ...]
+    statics: tuple[DatStatic, ...]
+    mover: DatMover
+
+
+def dat_world(scene: Scene) -> DatWorld:
+    """The scene's world as records: cell = CellLandblocks (scene order), LandblockInfos, EnvCells;
+    portal = the buildings' shells, Environments, each static's records (scene order, parts first),
+    the mover's."""
+    written = scene_records(scene)
+    infos = tuple(r for r in written.cell if r.kind == "LandblockInfo")
+    cells = tuple(r for r in written.cell if r.kind == "EnvCell")
+    portal = building_model_records(scene) + environment_records(scene)
+    portal += tuple(r for recs in written.statics for r in recs.records) + written.mover.records
+    m = scene.mover
+    return DatWorld(
+        scene.land_height_table, cell_landblock_records(scene) + infos + cells, portal,
+        tuple(DatStatic(o.id, recs.did, o.position, o.state, o.scale) for o, recs in zip(scene.objects, written.statics)),
+        DatMover(MOVER_ID, written.mover.did, m.scale, m.state, m.transient_state, m.velocity, m.begin, m.end,
+                 m.contact_plane, m.sliding_normal, m.placement))
+
+
+__all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatStatic", "DatWorld",
+           "dat_world", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
            "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
            "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF", "TAG_PORT"]

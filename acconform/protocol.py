@@ -15,6 +15,9 @@
        {"id": 7, "mode": "exact", "scene": {... acconform.scene/2 ...}}
        {"id": 7, "outcome": {... acconform.outcome/1 ...}}
 
+   To an implementation listing the feature ``dat`` the request also carries ``"dat"``: the
+   scene's world as the DAT records ACE's DatLoader reads (`dat_json`, docs/protocol.md).
+
    A physics exception is an outcome with ``error`` set (``"NullReferenceException: ..."``).
 3. The harness closes stdin when it is done; the implementation exits.
 
@@ -27,6 +30,8 @@ built-in port (``acconform serve``).
 
 from __future__ import annotations
 
+import base64
+import binascii
 import json
 import os
 import selectors
@@ -39,13 +44,15 @@ import time
 from collections.abc import Callable
 
 from . import __version__, deep
-from .codec import compact, dumps_compact, loads_answer
+from .codec import Reader, compact, dumps_compact, loads_answer, write_f32, write_id, write_vec
+from .dat import DatMover, DatRecord, DatStatic, DatWorld, dat_world
 from .errors import AcconformError, InvalidScene
+from .flags import PhysicsState, TransientState, flag_names
 from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
-from .scene import Scene
+from .scene import ContactPlane, Placement, Position, Scene
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
@@ -92,7 +99,86 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
 CAPABILITIES: dict[str, str] = {
     "trace": "answers a request carrying \"trace\": true with its outcome and a \"trace\" of records "
              "(acconform.trace/1): `acconform explain` finds the first record where it parts from the port",
+    "dat": "takes with every request the scene's world as DAT records (\"dat\": acconform.dat/1), to build it "
+           "with its own DAT loader",
 }
+
+
+# ---------------------------------------------------------------- the scene's DAT records (feature `dat`)
+
+DAT_FORMAT = "acconform.dat/1"
+# the DatLoader FileType classes each DAT's records may be
+DAT_TYPES = {"cell": ("CellLandblock", "LandblockInfo", "EnvCell"), "portal": ("GfxObj", "SetupModel", "Environment")}
+
+
+def _record_json(rec: DatRecord) -> dict:
+    return {"id": write_id(rec.id), "type": rec.kind, "data": base64.b64encode(rec.data).decode("ascii")}
+
+
+def dat_json(world: DatWorld) -> dict:
+    """A request's ``"dat"``: the scene's world (dat.dat_world) as JSON (docs/protocol.md, "DAT records")."""
+    m = world.mover
+    mover = {"id": write_id(m.id), "did": write_id(m.did), "scale": write_f32(m.scale),
+             "state": flag_names(PhysicsState, m.state), "transient_state": flag_names(TransientState, m.transient_state),
+             "velocity": write_vec(m.velocity), "begin": m.begin.to_json()}
+    if m.end is not None:
+        mover["end"] = m.end.to_json()
+    if m.contact_plane is not None:
+        mover["contact_plane"] = m.contact_plane.to_json()
+    if m.sliding_normal is not None:
+        mover["sliding_normal"] = write_vec(m.sliding_normal)
+    if m.placement is not None:
+        mover["placement"] = m.placement.to_json()
+    return {"format": DAT_FORMAT,
+            "land_height_table": [write_f32(h) for h in world.land_height_table],
+            "cell": [_record_json(r) for r in world.cell],
+            "portal": [_record_json(r) for r in world.portal],
+            "statics": [{"id": write_id(s.id), "did": write_id(s.did), "position": s.position.to_json(),
+                         "state": flag_names(PhysicsState, s.state), "scale": write_f32(s.scale)} for s in world.statics],
+            "mover": mover}
+
+
+def _records_from_json(r: Reader, dat: str) -> tuple[DatRecord, ...]:
+    out = []
+    seen = set()
+    for item in r.list():
+        item.obj({"id", "type", "data"})
+        rid = item["id"].id_()
+        if rid in seen:
+            item["id"].fail(f"a second {dat} DAT record {write_id(rid)}: ids are distinct within a DAT")
+        seen.add(rid)
+        kind = item["type"].str_()
+        if kind not in DAT_TYPES[dat]:
+            item["type"].fail(f"{kind!r} is not a {dat} DAT type (one of {', '.join(DAT_TYPES[dat])})")
+        try:
+            data = base64.b64decode(item["data"].str_(), validate=True)
+        except binascii.Error as e:
+            item["data"].fail(f"not base64: {e}")
+        out.append(DatRecord(rid, kind, data))
+    return tuple(out)
+
+
+def dat_from_json(doc, path: str = "dat") -> DatWorld:
+    """A request's ``"dat"`` read back; InvalidScene naming the field otherwise."""
+    r = Reader(doc, path).obj({"format", "land_height_table", "cell", "portal", "statics", "mover"})
+    if r["format"].value != DAT_FORMAT:
+        r["format"].fail(f"{r['format'].value!r}; this acconform reads {DAT_FORMAT!r}")
+    statics = []
+    for s in r["statics"].list():
+        s.obj({"id", "did", "position", "state", "scale"})
+        statics.append(DatStatic(s["id"].id_(), s["did"].id_(), Position.from_json(s["position"]),
+                                 s["state"].flags(PhysicsState), s["scale"].f32()))
+    m = r["mover"].obj({"id", "did", "scale", "state", "transient_state", "velocity", "begin", "end", "contact_plane",
+                        "sliding_normal", "placement"})
+    mover = DatMover(m["id"].id_(), m["did"].id_(), m["scale"].f32(), m["state"].flags(PhysicsState),
+                     m["transient_state"].flags(TransientState), m["velocity"].vec3(), Position.from_json(m["begin"]),
+                     Position.from_json(m["end"]) if m.has("end") else None,
+                     ContactPlane.from_json(m["contact_plane"]) if m.has("contact_plane") else None,
+                     m["sliding_normal"].vec3() if m.has("sliding_normal") else None,
+                     Placement.from_json(m["placement"]) if m.has("placement") else None)
+    return DatWorld(r["land_height_table"].f32s(256),
+                    _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
+                    tuple(statics), mover)
 
 
 def scene_features(scene: Scene, names=FEATURES) -> list[str]:
@@ -300,8 +386,12 @@ class Implementation:
                     self._flush()
                     continue
                 data = os.read(fd, 1 << 16)
-                if not data:
-                    code = self._proc.wait()
+                if not data:  # it closed its stdout: it exits, or it lives on and can never answer
+                    try:
+                        code = self._proc.wait(max(deadline - time.monotonic(), 0.1))
+                    except subprocess.TimeoutExpired:
+                        raise _Failed(f"{CRASH}: the process closed its output and did not exit within "
+                                      f"{timeout:g} s; it was killed and restarted{self._stderr_tail()}") from None
                     raise _Failed(f"{CRASH}: the process exited with code {code}{self._stderr_tail()}")
                 self._buf += data
 
@@ -389,6 +479,11 @@ class Implementation:
         """Whether its handshake lists the `trace` feature."""
         return "trace" in self.hello["features"]
 
+    @property
+    def takes_dat(self) -> bool:
+        """Whether its handshake lists the `dat` feature: each request then carries the scene's DAT records."""
+        return "dat" in self.hello["features"]
+
     def run_traced(self, scene: Scene):
         """(outcome, trace records, the routines its trace declares) for `scene`, asked with
         ``"trace": true``; records and routines are None when the implementation does not trace (no
@@ -440,15 +535,22 @@ class Implementation:
             rid = self._next_id
             self._inflight.append((rid, scene))
         if isinstance(scene, RecordedText):  # the scene's JSON as the harness wrote it when it was recorded
-            self._write(f'{{"id":{rid},"mode":"{self.mode}","runtime":"{self.runtime}","scene":{scene.scene}}}\n'
+            records = ""
+            if self.takes_dat:  # the records are written from the scene, so it is read here (a deep BSP on the deep stack)
+                records = ',"dat":' + deep.retrying(lambda: compact(lambda: dat_json(dat_world(Scene.loads(scene.scene)))))
+            self._write(f'{{"id":{rid},"mode":"{self.mode}","runtime":"{self.runtime}","scene":{scene.scene}{records}}}\n'
                         .encode("utf-8"))
             return rid
         extra = {"trace": True} if rid in self._traced else {}
-        # the scene's JSON inside the retry: a BSP thousands of levels deep needs the deep stack to write
+        # the scene's JSON and records inside the retry: a BSP thousands of levels deep needs the deep stack to write
         request = deep.retrying(lambda: compact(lambda: {"id": rid, "mode": self.mode, "runtime": self.runtime,
-                                                         "scene": scene.to_json(), **extra})) + "\n"
+                                                         "scene": scene.to_json(), **extra, **self._dat(scene)})) + "\n"
         self._write(request.encode("utf-8"))
         return rid
+
+    def _dat(self, scene: Scene) -> dict:
+        """A request's ``"dat"`` for an implementation that takes it (`takes_dat`), else nothing."""
+        return {"dat": dat_json(dat_world(scene))} if self.takes_dat else {}
 
     def _write(self, data: bytes) -> None:
         """Send a request without ever blocking: a process busy with the request before it (or hung)
@@ -499,7 +601,7 @@ class Implementation:
                 raise ValueError(f"answer id {doc.get('id')!r}, expected {rid}")
             if "outcome" not in doc:
                 raise ValueError("no \"outcome\" field")
-            outcome = Outcome.from_json(doc["outcome"], "outcome", exact=True)  # a float must name a float32
+            outcome = Outcome.from_json(doc["outcome"], "outcome")  # a float must name a float32
             if rid in self._traced:
                 if "trace" not in doc:
                     raise ValueError("no \"trace\" field, though the request asked for one (feature trace)")
@@ -538,11 +640,13 @@ class Implementation:
 
 
 def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=None, hello: dict | None = None,
-          default_runtime: str = DEFAULT_RUNTIME, run_traced=None, trace_anchors=None) -> int:
+          default_runtime: str = DEFAULT_RUNTIME, run_traced=None, trace_anchors=None, run_dat=None) -> int:
     """Answer protocol requests from `stdin` on `stdout` until stdin closes (the built-in port's side);
     a request that names no runtime is computed as `default_runtime`. `run_traced(scene, mode,
     runtime) -> (outcome, records)` answers a request with ``"trace": true`` (feature `trace`), its
-    trace declaring `trace_anchors` (the routines it records) when given.
+    trace declaring `trace_anchors` (the routines it records) when given. `run_dat(scene, world,
+    mode, runtime) -> outcome` answers a request carrying ``"dat"`` (feature `dat`: `world` is the
+    request's records, read by `dat_from_json`).
 
     A request that cannot be read is answered with an outcome whose error says why (the harness
     counts it as the implementation's verdict); the loop goes on.
@@ -569,6 +673,8 @@ def serve(run_scene: Callable[[Scene, str, str], Outcome], stdin=None, stdout=No
             records = None
             if req.get("trace") is True and run_traced is not None:
                 outcome, records = run_traced(scene, mode, runtime)
+            elif "dat" in req and run_dat is not None:
+                outcome = run_dat(scene, dat_from_json(req["dat"]), mode, runtime)
             else:
                 outcome = run_scene(scene, mode, runtime)
         except (ValueError, InvalidScene) as e:

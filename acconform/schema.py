@@ -9,6 +9,9 @@ objects keep every key seen (required: those in every sample); an object with a 
 numbers of one length everywhere is a fixed-length vector; ``0x`` + 8 hex digits is an id; an
 outcome's floats may be written as their float32 bit pattern (``"0x80000000"``; a non-finite one
 always is). `acconform schema scene|outcome` prints them; docs/protocol.md says how they are used.
+`dat_schema()` is a request's ``"dat"`` (the protocol's feature `dat`), inferred the same way from
+what acconform sends for the sample (`acconform schema dat`); a record's ``type`` names its
+definition.
 
 `outcome_fields_markdown()` is docs/protocol.md's table of outcome fields: each field's path and
 JSON type from the outcome schema, its unit and meaning from the record's own field metadata
@@ -220,6 +223,24 @@ def trace_schema() -> dict:
     scenes += _tick_scenes(scenes[0])
     t = _Inferrer(nonfinite_floats=True)
     return t.finish(t._plain([trace_to_json(traced_run(s)[1]) for s in scenes]), "acconform trace", FORMAT)
+
+
+def dat_schema() -> dict:
+    """The schema of a request's "dat" (acconform.dat/1), inferred from what acconform sends for the fixed
+    sample of scenes of every kind, the variants writing every optional field, and the tick scenes."""
+    from .dat import dat_world
+    from .protocol import DAT_FORMAT, DAT_TYPES, dat_json
+    from .strategies import GEOMETRY_KINDS, sample_scenes
+
+    scenes = []
+    for kind in GEOMETRY_KINDS:
+        scenes += list(sample_scenes((kind,), SAMPLE_PER_KIND, SAMPLE_SEED))
+    scenes += _every_optional_field(scenes[0]) + _tick_scenes(scenes[0])
+    d = _Inferrer(nonfinite_floats=False)
+    schema = d.finish(d._plain([dat_json(dat_world(s)) for s in scenes]), "acconform DAT records", DAT_FORMAT)
+    for dat, types in DAT_TYPES.items():  # each DAT's list holds its own types only (finish widens to every type)
+        schema["properties"][dat]["items"] = {"oneOf": [{"$ref": f"#/$defs/type:{name}"} for name in types]}
+    return schema
 
 
 # ---------------------------------------------------------------- the outcome's fields as a table

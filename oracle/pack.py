@@ -11,8 +11,8 @@ import struct
 from dataclasses import fields
 
 from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
-from ..dat import has_objects, scene_records
-from ..scene import DRIVERS, TICK_INPUTS, Landblock, Position, Frame, Scene, Ticks
+from ..dat import cell_landblock, has_objects, scene_records
+from ..scene import DRIVERS, TICK_INPUTS, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
 PACK_VERSION = 8
@@ -20,15 +20,6 @@ PACK_VERSION = 8
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
 _3f = struct.Struct("<3f")
-
-
-_LB = struct.Struct("<II81H")
-
-
-def landblock_bytes(lb: Landblock, objects: bool = False) -> bytes:
-    """The CellLandblock DAT layout: Id, HasObjects (1 for a landblock with buildings: acconform.dat.has_objects),
-    81 terrain words, 81 heights, 4-byte aligned."""
-    return _LB.pack(lb.id | 0xFFFF, 1 if objects else 0, *lb.terrain) + bytes(lb.heights) + b"\0"  # 251 bytes + 1
 
 
 _last_table: list = [None, b""]  # the last land height table and its bytes (scenes mostly share one)
@@ -48,7 +39,7 @@ _POS = "I3f4f"
 
 
 # the DatLoader FileType the facade unpacks each record as; 0-2 go to the portal DAT, 3-4 to the cell DAT
-_RECORD_KIND = {"GfxObj": 0, "Setup": 1, "Environment": 2, "EnvCell": 3, "LandblockInfo": 4}
+_RECORD_KIND = {"GfxObj": 0, "SetupModel": 1, "Environment": 2, "EnvCell": 3, "LandblockInfo": 4}
 
 
 def _record_list(records) -> list[bytes]:
@@ -113,8 +104,8 @@ def pack_scene(scene: Scene) -> bytes:
            _table_bytes(scene.land_height_table),
            struct.pack("<i", len(scene.landblocks))]
     for lb in scene.landblocks:
-        out.append(b"\xfc\0\0\0")  # 252: the length of every landblock_bytes
-        out.append(landblock_bytes(lb, has_objects(scene, lb.id | 0xFFFF)))
+        out.append(b"\xfc\0\0\0")  # 252: the length of every CellLandblock (acconform.dat.cell_landblock)
+        out.append(cell_landblock(lb, has_objects(scene, lb.id | 0xFFFF)))
     written = scene_records(scene)
     out += _record_list(written.portal + written.cell)
     out.append(struct.pack("<i", len(scene.objects)))

@@ -11,7 +11,10 @@ EnvCell by ACE's EnvCell.init_static_objects when the cell loads (LScape.get_lan
 from the stabs of the cell's DAT record. The run's portal DAT and cell DAT (port/dat/portal_dat.py,
 cell_dat.py) hold the records dat.py writes and are handed to the LScape (`lscape.portal_dat`,
 `lscape.cell_dat`), where DBObj reads them. The mover is made by ACE's makeObject from its own records (dat.mover_records)
-with the id acconform.staging.MOVER_ID. Pass a ``collections.Counter`` as
+with the id acconform.staging.MOVER_ID. Given a request's DAT records instead (the protocol's feature
+`dat`: an acconform.dat.DatWorld), the world is built from them alone: the DATs hold the request's
+records, the landblocks are its CellLandblocks (read through the cell DAT), the statics and the mover
+are the request's (`dat_landscape`); of the scene only its engine mode and ticks are read. Pass a ``collections.Counter`` as
 `trace` to count the branches the run took (names in acconform.port.transition.branches); a
 branches.Trace carrying a tracing.Recorder gets a trace of snapshots too (`traced_run` wraps the
 routines for that run).
@@ -20,6 +23,7 @@ routines for that run).
 from __future__ import annotations
 
 import gc
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -28,12 +32,13 @@ from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
-from acconform.scene import ENV_CELL_FIRST, Scene, StaticObject
+from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, Scene, StaticObject
 
 from .anchors import anchor, harness
 from .constants import BLOCK_LENGTH, CELL_LENGTH
 from .errors import AceException, NullReferenceException
 from .dat.cell_dat import CellDat
+from .dat.cell_landblock import CellLandblock
 from .dat.portal_dat import PortalDat
 from .frame import AFrame, Position
 from . import land_defs
@@ -58,17 +63,16 @@ def _plane_state(valid: bool, cell: int, is_water: bool, plane: Plane) -> Contac
 
 
 @harness("builds the mover from its DAT records and the scene, as the oracle's facade does")
-def build_mover(scene: Scene, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj:
-    """The mover as the oracle builds it (docs/oracle.md's audit): ``makeObject(mover Setup,
-    MOVER_ID, dynamic)`` over dat.mover_records (its spheres and step heights, one empty mesh
+def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj:
+    """The mover as the oracle builds it (docs/oracle.md's audit): ``makeObject(did, obj_id,
+    dynamic)`` over dat.mover_records (its Setup: its spheres and step heights, one empty mesh
     part), then SetScaleStatic(scale), State, TransientState, Velocity, the contact plane (and its
-    cell) and the sliding normal as the scene gives them, Position = begin, CurCell = the begin
-    cell. It is not entered in any cell. With a placement, Position and CurCell stay as makeObject
-    left them: `place_mover` places it."""
+    cell) and the sliding normal as `m` gives them (the scene's Mover, or a request's
+    dat.DatMover), Position = begin, CurCell = the begin cell. It is not entered in any cell.
+    With a placement, Position and CurCell stay as makeObject left them: `place_mover` places it."""
     mode = lscape.mode
-    m = scene.mover
     s = mode.scalar
-    obj = PhysicsObj.make_object(dat.MOVER_SETUP_ID, MOVER_ID, True, portal_dat)
+    obj = PhysicsObj.make_object(did, obj_id, True, portal_dat)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
     obj.transient_state = m.transient_state
@@ -85,16 +89,17 @@ def build_mover(scene: Scene, portal_dat: PortalDat, lscape: LScape) -> PhysicsO
 
 
 @harness("places the mover as the oracle's facade does: PhysicsObj.SetPosition's body around SetPositionInternal(Position, SetPosition, Transition)")
-def place_mover(scene: Scene, mover: PhysicsObj, lscape: LScape, trace) -> PlacementState:
+def place_mover(m, mover: PhysicsObj, lscape: LScape, trace) -> PlacementState:
     """The begin position (its cell id first replaced by Position.GetCell when the placement asks),
     then what PhysicsObj.SetPosition does: MakeTransition, InitObject(this, ObjectInfoState.Default),
     InitSphere (the Setup's spheres at Scale, or the dummy sphere at 1), SetPositionInternal(pos,
     setPos, transition), CleanupTransition. SetPosition itself goes through SetPositionInternal(
     SetPosition, Transition), which answers GeneralFailure for an object without a WorldObject; for
-    one without a ScatterPos it makes exactly the call made here (docs/oracle.md's audit table)."""
+    one without a ScatterPos it makes exactly the call made here (docs/oracle.md's audit table).
+    `m` is the mover's record (the scene's Mover, or a request's dat.DatMover)."""
     mode = lscape.mode
-    placement = scene.mover.placement
-    pos = Position.from_record(scene.mover.begin, mode)
+    placement = m.placement
+    pos = Position.from_record(m.begin, mode)
     if placement.get_cell:
         pos.obj_cell_id = pos.get_cell(pos.obj_cell_id, mode.runtime, lscape)
 
@@ -145,6 +150,37 @@ def scene_world(scene: Scene, mode, timer: PhysicsTimer | None = None) -> tuple[
     when it is built, so anything that builds the scene's landblocks starts here."""
     portal_dat, dids = portal_dat_for(scene, mode, timer)
     return LScape(scene, mode, portal_dat, cell_dat_for(scene, mode)), portal_dat, dids
+
+
+@dataclass(frozen=True, slots=True)
+class _Land:
+    """What an LScape reads of its world: the landblocks and the land height table."""
+
+    landblocks: tuple
+    land_height_table: tuple
+
+
+@harness("the run's world from a request's DAT records (the protocol's feature dat): its DATs, and an LScape of its CellLandblocks")
+def dat_landscape(world: dat.DatWorld, server: bool, mode, timer: PhysicsTimer) -> tuple[LScape, PortalDat]:
+    """(the LScape, the portal DAT) from the request's records alone: the portal and cell DATs hold
+    them, the landblocks are the CellLandblocks in `cell` order, read through the cell DAT
+    (DBObj.GetCellLandblock), with HasObjects as they say and the request's land height table. A
+    CellLandblock of 81 zero heights and terrain words (a dungeon's) is a landblock without terrain,
+    as the scene's record reads (its terrain is built when first read)."""
+    portal_dat = PortalDat({r.id: r.data for r in world.portal}, mode, server, timer)
+    cell_dat = CellDat({r.id: r.data for r in world.cell}, mode)
+    landblocks, with_objects = [], set()
+    for record in world.cell:
+        if record.kind != "CellLandblock":
+            continue
+        c = cell_dat.read_from_dat(record.id, CellLandblock)
+        heights, terrain = tuple(c.height), tuple(c.terrain)
+        landblocks.append(Landblock(c.id, heights, terrain) if heights != NO_TERRAIN or terrain != NO_TERRAIN
+                          else Landblock(c.id, has_terrain=False))
+        if c.has_objects:
+            with_objects.add(c.id | 0xFFFF)
+    land = _Land(tuple(landblocks), world.land_height_table)
+    return LScape(land, mode, portal_dat, cell_dat, with_objects), portal_dat
 
 
 @harness("reads a static's cells: an outdoor static's ShadowObjects, or, for a static in an EnvCell, those of the object its loaded cell made from the static's did")
@@ -198,27 +234,28 @@ def border_boundaries(origin, trace: Trace) -> None:
 
 
 @anchor(None, "PhysicsObj.cs:transition", "the scene -> outcome driver around PhysicsObj.transition")
-def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mono") -> Outcome:
+def run_scene(scene: Scene, mode: str = "exact", trace=None, runtime: str = "mono", world: dat.DatWorld | None = None) -> Outcome:
     """Run the scene's transition in the port, computing as ACE on `runtime` ("mono" or "coreclr",
     .NET 10) does; `trace` (a Counter, or a branches.Trace to keep the closest approach to each
-    boundary too) is incremented in place."""
+    boundary too) is incremented in place. `world`: a request's DAT records (feature `dat`), to build
+    the world from instead of the scene."""
     if trace is not None and not isinstance(trace, Trace):
         into, trace = trace, Trace()
         try:
-            return run_scene(scene, mode, trace, runtime)
+            return run_scene(scene, mode, trace, runtime, world)
         finally:
             into.update(trace)
     numerics = get_mode(mode, runtime)  # an unknown mode or runtime is misuse, not a verdict
     try:
         try:
-            return _run_quietly(scene, numerics, trace)
+            return _run_quietly(scene, numerics, trace, world)
         except RecursionError:  # a BSP deeper than Python's default stack allows: again on a deep one
             if trace is not None:
                 trace.clear()
                 trace.closest.clear()
                 if trace.recorder is not None:
                     trace.recorder.clear()
-            return deep.call(_run_quietly, scene, numerics, trace, frames=deep.RUN_FRAMES)
+            return deep.call(_run_quietly, scene, numerics, trace, world, frames=deep.RUN_FRAMES)
     except deep.TooDeep:
         raise  # deeper than the harness runs anything: misuse (exit 2), not a verdict
     except Exception as e:
@@ -261,40 +298,49 @@ def verdict(e: Exception) -> str:
     return f"{type(e).__name__}: {e}"
 
 
-def _run_quietly(scene: Scene, mode, trace) -> Outcome:
+def _run_quietly(scene: Scene, mode, trace, world: dat.DatWorld | None) -> Outcome:
     with np.errstate(all="ignore"):  # IEEE results (inf, NaN) are C#'s too; no warnings
-        return _run(scene, mode, trace)
+        return _run(scene, mode, trace, world)
 
 
-def _run(scene: Scene, mode, trace) -> Outcome:
+def _run(scene: Scene, mode, trace, world: dat.DatWorld | None) -> Outcome:
     # the clock: at the tick scene's start before anything is made (PhysicsObj() reads it)
     timer = PhysicsTimer(scene.ticks.start if scene.ticks is not None else 0.0)
-    lscape, portal_dat, dids = scene_world(scene, mode, timer)
+    if world is None:
+        lscape, portal_dat, dids = scene_world(scene, mode, timer)
+        objects, mover, mover_did, mover_id = scene.objects, scene.mover, dat.MOVER_SETUP_ID, MOVER_ID
+    else:
+        lscape, portal_dat = dat_landscape(world, scene.engine_mode == "server", mode, timer)
+        objects, dids = world.statics, [s.did for s in world.statics]
+        mover, mover_did, mover_id = world.mover, world.mover.did, world.mover.id
     try:
-        return _run_in(scene, mode, trace, lscape, timer, portal_dat, dids)
+        return _run_in(scene, mode, trace, lscape, timer, portal_dat, objects, dids, mover, mover_did, mover_id)
     finally:
         lscape.release()
 
 
-def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, portal_dat: PortalDat, dids) -> Outcome:
+def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, portal_dat: PortalDat, objects, dids,
+            m, mover_did: int, mover_id: int) -> Outcome:
+    """`objects`: the statics (the scene's, or a request's dat.DatStatic records) and `dids` the ids
+    makeObject takes for them; `m` the mover's record (the scene's Mover, or a dat.DatMover)."""
     statics = [build_static(record, did, portal_dat, lscape) if record.position.cell & 0xFFFF < ENV_CELL_FIRST else None
-               for record, did in zip(scene.objects, dids)]
-    mover = build_mover(scene, portal_dat, lscape)
+               for record, did in zip(objects, dids)]
+    mover = build_mover(m, mover_did, mover_id, portal_dat, lscape)
     placement = None
-    if scene.mover.placement is not None:
-        placement = place_mover(scene, mover, lscape, trace)
+    if m.placement is not None:
+        placement = place_mover(m, mover, lscape, trace)
     if scene.ticks is not None:
         ticks = run_ticks(scene, mover, timer, lscape, trace)
         return Outcome(placement=placement, ticks=ticks,
                        static_cells=tuple(static_cells(record, did, obj, lscape)
-                                          for record, did, obj in zip(scene.objects, dids, statics)))
+                                          for record, did, obj in zip(objects, dids, statics)))
     if placement is not None:
         if mover.cur_cell is None:  # placed in no cell: no transition (the oracle writes the same record)
             return Outcome(velocity=_vec(mover.velocity), placement=placement,
                            static_cells=tuple(static_cells(record, did, obj, lscape)
-                                              for record, did, obj in zip(scene.objects, dids, statics)))
+                                              for record, did, obj in zip(objects, dids, statics)))
     old_pos = mover.position.copy()
-    new_pos = Position.from_record(scene.mover.end, mode)
+    new_pos = Position.from_record(m.end, mode)
     trans, ok = mover.transition(old_pos, new_pos, False, lscape, trace)
     if trace is not None:
         border_boundaries(trans.sphere_path.cur_pos.frame.origin, trace)
@@ -322,7 +368,7 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
         step_up=bool(sp.step_up),
         neg_poly_hit=bool(sp.neg_poly_hit),
         static_cells=tuple(static_cells(record, did, obj, lscape)
-                           for record, did, obj in zip(scene.objects, dids, statics)),
+                           for record, did, obj in zip(objects, dids, statics)),
         placement=placement,
     )
 

@@ -175,7 +175,7 @@ def test_a_sphere_is_a_setup_with_one_part_whose_mesh_is_the_spheres_box():
     obj = StaticObject(0x70000002, Position(0xA9B40001, Frame((15.0, 12.0, 20.0))),
                        SphereShape(SphereRec((0.0, 0.0, 0.5), f32(1.1))))
     recs = dat.static_records(obj, 2)
-    assert recs.did == 0x02000003 and [(r.id, r.kind) for r in recs.records] == [(0x01000003, "GfxObj"), (0x02000003, "Setup")]
+    assert recs.did == 0x02000003 and [(r.id, r.kind) for r in recs.records] == [(0x01000003, "GfxObj"), (0x02000003, "SetupModel")]
     s = read_setup(recs.records[1].data)
     assert s["parts"] == [0x01000003] and s["flags"] == 0 and s["cylspheres"] == []
     assert s["spheres"] == [(0.0, 0.0, 0.5, f32(1.1))]
@@ -224,7 +224,7 @@ def test_the_mover_is_a_setup_with_its_spheres_and_step_heights_and_one_empty_me
     m = Mover(spheres, Position(0xA9B40001, Frame((12.0, 12.0, 20.0))), Position(0xA9B40001, Frame((13.0, 12.0, 20.0))),
               f32(0.4), f32(1.5))
     recs = dat.mover_records(m)
-    assert recs.did == 0x02000000 and [(r.id, r.kind) for r in recs.records] == [(0x01000000, "GfxObj"), (0x02000000, "Setup")]
+    assert recs.did == 0x02000000 and [(r.id, r.kind) for r in recs.records] == [(0x01000000, "GfxObj"), (0x02000000, "SetupModel")]
     s = read_setup(recs.records[1].data)
     assert s["parts"] == [0x01000000] and s["cylspheres"] == []
     assert s["spheres"] == [(0.0, 0.0, f32(0.48), f32(0.48)), (0.0, 0.0, f32(1.35), f32(0.48))]

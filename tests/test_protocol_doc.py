@@ -44,3 +44,50 @@ def test_a_field_without_a_unit_and_meaning_stops_the_table():
     schema = {"properties": {"ok": {"type": "boolean"}, "surprise": {"type": "boolean"}}}
     with pytest.raises(ValueError, match="surprise has no unit and meaning"):
         outcome_fields_markdown(schema)
+
+
+def _block_after(marker: str) -> str:
+    """The fenced JSON block following `marker` in docs/protocol.md, its indentation removed."""
+    text = DOC.read_text()
+    assert text.count(marker) == 1, marker
+    block = text.split(marker, 1)[1].split("```json\n", 1)[1].split("```", 1)[0]
+    return "\n".join(line.strip() for line in block.splitlines())
+
+
+def _flat_walk():
+    from acconform.scene import Scene
+
+    return Scene.loads((DOC.parent.parent / "examples" / "flat_walk.json").read_text())
+
+
+def test_the_protocol_doc_gives_a_complete_answer_with_every_outcome_field_as_the_port_answers_flat_walk():
+    import json
+
+    from acconform.port.run import run_scene
+
+    answer = json.loads(_block_after("<!-- complete outcome:"))
+    outcome = Outcome.from_json(answer["outcome"], "outcome")  # every field, each a float32
+    assert set(answer["outcome"]) == {"format"} | {f.name for f in fields(Outcome)} - {"placement", "ticks"}
+    assert outcome == run_scene(_flat_walk(), runtime="coreclr") == run_scene(_flat_walk(), runtime="mono")
+
+
+def test_the_protocol_doc_gives_an_error_answer_carrying_every_field_as_aces_error_outcome_holds_them():
+    import json
+
+    answer = json.loads(_block_after("<!-- error outcome:"))
+    outcome = Outcome.from_json(answer["outcome"], "outcome")
+    assert set(answer["outcome"]) == {"format"} | {f.name for f in fields(Outcome)} - {"placement", "ticks"}
+    assert outcome == Outcome(error=outcome.error) and outcome.error.startswith("NullReferenceException: ")
+
+
+def test_the_protocol_doc_s_dat_example_is_what_acconform_sends_for_flat_walk():
+    import json
+
+    from acconform import dat
+    from acconform.protocol import DAT_TYPES, dat_json
+
+    sent = dat_json(dat.dat_world(_flat_walk()))
+    shown = _block_after("<!-- dat example:").replace('[0.0, 2.0, 4.0, ..., 510.0]', json.dumps(sent["land_height_table"]))
+    assert json.loads(shown) == json.loads(json.dumps(sent))
+    text = DOC.read_text().split("## DAT records (feature `dat`)", 1)[1].split("\n## ", 1)[0]
+    assert all(f"`{name}`" in text for names in DAT_TYPES.values() for name in names)

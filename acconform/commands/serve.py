@@ -24,4 +24,6 @@ def run(args) -> int:
         return serve(lambda scene, mode, runtime: run_scene(scene, mode=mode, runtime=runtime),
                      default_runtime=runtime_or_default(args.runtime),
                      run_traced=lambda scene, mode, runtime: traced_run(scene, mode, runtime),
-                     trace_anchors=traced_anchors())
+                     trace_anchors=traced_anchors(),
+                     run_dat=lambda scene, world, mode, runtime: run_scene(scene, mode=mode, runtime=runtime,
+                                                                           world=world))

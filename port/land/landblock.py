@@ -2,7 +2,7 @@
 
 ACE's Common/Landblock.cs (a LandblockStruct). The scene's Landblock record stands in for the
 DAT's CellLandblock (Id, Height bytes, Terrain words); HasObjects is set exactly for a landblock
-the scene puts buildings on (acconform/dat.has_objects, which oracle/pack.landblock_bytes writes),
+the scene puts buildings on (acconform/dat.has_objects, which acconform/dat.cell_landblock writes),
 and then the constructor reads the landblock's LandblockInfo from the run's cell DAT
 (DBObj.GetLandblockInfo) and PostInit's init_buildings builds its buildings from it. The Info a
 scene writes has no objects and no restriction table, so init_static_objs' Info branch places

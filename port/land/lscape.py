@@ -100,9 +100,11 @@ def clear_landblock_cache() -> None:
 class LScape:
     """The scene's outdoor world for one run (no globals: make one per run)."""
 
-    def __init__(self, scene, mode: Mode, portal_dat=None, cell_dat=None):
+    def __init__(self, scene, mode: Mode, portal_dat=None, cell_dat=None, with_objects=None):
         """`portal_dat` and `cell_dat` are the run's DAT databases (port/run.py makes them first: a
-        landblock with buildings reads them when it is built)."""
+        landblock with buildings reads them when it is built). `scene` gives the landblocks and the
+        land height table; `with_objects`, the ids of the landblocks whose CellLandblock says
+        HasObjects (default: the scene's, dat.has_objects)."""
         from acconform.dat import has_objects
 
         self.mode = mode
@@ -114,7 +116,8 @@ class LScape:
         self.portal_dat = portal_dat  # DatManager.PortalDat: the run's portal DAT
         self.adjust_cells: dict = {}  # AdjustCell.AdjustCells (port/adjust_cell.py), per run
         self.records = {record.id | 0xFFFF: record for record in scene.landblocks}
-        self.has_objects = {landblock_id for landblock_id in self.records if has_objects(scene, landblock_id)}
+        self.has_objects = (set(with_objects) if with_objects is not None else
+                            {landblock_id for landblock_id in self.records if has_objects(scene, landblock_id)})
         for landblock_id, record in self.records.items():
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
                 self.build_landblock(landblock_id)
