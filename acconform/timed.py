@@ -8,11 +8,14 @@ from this one (made there by `make()`, so a .NET runtime loads in the child, nev
 waits at most `limit` seconds for each outcome. A scene past the limit gets an outcome whose
 error is ``SceneTimeout: ...`` (a verdict for that scene); the child is killed and the next
 scene starts a fresh one.
+
+`process_age()`: how long this process has run, for a summary that says where its wall time went.
 """
 
 from __future__ import annotations
 
 import multiprocessing
+import os
 import signal
 from typing import Callable
 
@@ -123,3 +126,16 @@ class TimedBackend:
         if self._proc is not None:
             self._proc.join(2)
         self._kill()
+
+
+def process_age() -> float | None:
+    """Seconds since this process started, interpreter start-up included (the kernel's start time,
+    /proc on Linux, in clock ticks); None where that cannot be read."""
+    try:
+        with open("/proc/self/stat") as f:
+            started = int(f.read().rsplit(")", 1)[1].split()[19])  # field 22, starttime
+        with open("/proc/uptime") as f:
+            uptime = float(f.read().split()[0])
+    except (OSError, ValueError, IndexError):
+        return None
+    return max(uptime - started / os.sysconf("SC_CLK_TCK"), 0.0)

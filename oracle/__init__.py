@@ -16,6 +16,7 @@ from ..case import Versions
 from ..errors import OracleUnavailable
 from ..outcome import Outcome
 from ..scene import Scene
+from .loading import to_stderr
 
 _ROOT = Path(__file__).resolve().parent.parent  # a checkout's root, or the installed acconform package
 # The recorded corpora: tests/data/corpus in a checkout (and an editable install); an installed
@@ -53,12 +54,13 @@ def live_configured(ace=None) -> bool:
     return configured_setting(ace) is not None
 
 
-def get_oracle(ace=None, runtime: str | None = None, corpus=None) -> Oracle:
-    """Live when ACE is configured (misconfiguration raises OracleUnavailable), else recorded."""
+def get_oracle(ace=None, runtime: str | None = None, corpus=None, say=to_stderr) -> Oracle:
+    """Live when ACE is configured (misconfiguration raises OracleUnavailable), else recorded.
+    `say`: where loading ACE says what it is doing (oracle/loading.py; None: silent)."""
     if live_configured(ace):
         from .live import LiveOracle
 
-        return LiveOracle(ace, runtime)
+        return LiveOracle(ace, runtime, say)
     from .recorded import RecordedOracle
 
     path = Path(corpus) if corpus is not None else default_corpus(runtime)
@@ -77,7 +79,7 @@ class PerProcessOracle:
     name = "live"
     per_process = True
 
-    def __init__(self, ace=None, runtime: str | None = None):
+    def __init__(self, ace=None, runtime: str | None = None, say=to_stderr):
         from .config import resolve
 
         self.location = resolve(ace, runtime)  # the build and the runtime it runs on, checked on disk
@@ -85,7 +87,7 @@ class PerProcessOracle:
             from .config import HOW_TO_SET
 
             raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {HOW_TO_SET}")
-        self._args = (ace, runtime)
+        self._args = (ace, runtime, say)
         self._pid = None
         self._oracle = None
 
@@ -119,7 +121,7 @@ def port_runtime(oracle, runtime: str | None = None) -> str:
     return runtime_named(runtime or oracle.versions.runtime)
 
 
-def require_live(ace=None, runtime: str | None = None):
+def require_live(ace=None, runtime: str | None = None, say=to_stderr):
     """The live oracle, or OracleUnavailable saying that no ACE is configured (commands exit 2)."""
     from .config import HOW_TO_SET
 
@@ -127,7 +129,7 @@ def require_live(ace=None, runtime: str | None = None):
         raise OracleUnavailable(f"this command needs the live oracle (ACE's physics) and no ACE assembly is configured; {HOW_TO_SET}")
     from .live import LiveOracle
 
-    return LiveOracle(ace, runtime)
+    return LiveOracle(ace, runtime, say)
 
 
 __all__ = ["Oracle", "PerProcessOracle", "get_oracle", "port_runtime", "require_live", "live_configured", "CORPUS_ROOT",

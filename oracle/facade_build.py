@@ -7,19 +7,25 @@ runtime. mono: ``mcs`` (Debian: mono-mcs). CoreCLR: the SDK of the .NET installa
 builds a throw-away class library referencing the ACE assemblies, for the target framework of
 their runtimeconfig, offline (its project names no package source).
 When no compiler is present, or compiling fails, `build` returns None and the reason, and the
-live oracle refuses to start with that reason (the facade is the one scene builder).
+live oracle refuses to start with that reason (the facade is the one scene builder). A build is a
+step of the oracle's `Loading` (oracle/loading.py): said when it starts and every 2 s while the
+compiler runs.
 """
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
 import shutil
+import signal
 import subprocess
+import threading
 from pathlib import Path
 
 from . import dotnet_host
 from .config import cache_dir
+from .loading import Loading
 from .runtime import ACE_ASSEMBLIES, LoadedAce, dotnet_root
 
 SOURCE_DIR = Path(__file__).with_name("facade")
@@ -39,16 +45,56 @@ def cache_key(ace: LoadedAce) -> str:
     return h.hexdigest()[:20]
 
 
-def build(ace: LoadedAce) -> tuple[Path | None, str]:
-    """(path of the compiled facade or None, how it was obtained or why not)."""
+def build(ace: LoadedAce, loading: Loading | None = None) -> tuple[Path | None, str]:
+    """(path of the compiled facade or None, how it was obtained or why not); compiling is the
+    step "facade build" of `loading`."""
+    loading = loading or Loading(None)
     out_dir = cache_dir() / "facade" / cache_key(ace)
     dll = out_dir / DLL_NAME
     if dll.is_file():
         return dll, f"cached {dll}"
     out_dir.mkdir(parents=True, exist_ok=True)
-    if ace.location.runtime == "mono":
-        return _build_mcs(ace, dll)
-    return _build_dotnet(ace, dll)
+    compiler = "mcs" if ace.location.runtime == "mono" else "the .NET SDK (10-15 s)"
+    with loading.step("facade build", f"compiling the C# facade against this ACE build with {compiler}, once per "
+                                      f"build (cached in {out_dir.parent})"):
+        # the workers of a campaign load ACE at once: one compiles, the others wait for its facade
+        # (two SDK builds at once on two cores take twice as long, for the same file)
+        with open(out_dir.with_name(out_dir.name + ".lock"), "w") as lock, _terminated_as_an_exit():
+            _wait_for(lock)
+            if dll.is_file():
+                return dll, f"compiled by another process into {dll}"
+            return _build_mcs(ace, dll) if ace.location.runtime == "mono" else _build_dotnet(ace, dll)
+
+
+@contextlib.contextmanager
+def _terminated_as_an_exit():
+    """SIGTERM raises SystemExit while the compiler runs, so the compiler is killed and its folder
+    removed on the way out. A campaign ends a worker still loading ACE a second after Ctrl-C
+    (runner.STOP_GRACE) with SIGTERM; by default the worker would die at once and leave the
+    compiler running for its 10-30 s, deaf to Ctrl-C (a worker ignores SIGINT, and so do its
+    children)."""
+    if threading.current_thread() is not threading.main_thread():  # signal handlers are the main thread's
+        yield
+        return
+
+    def exit_(signum, frame):
+        raise SystemExit(128 + signum)
+
+    previous = signal.signal(signal.SIGTERM, exit_)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _wait_for(lock) -> None:
+    """Hold `lock` (an open file) exclusively, waiting for whoever holds it. Windows has no flock:
+    there each process compiles its own, as before the lock."""
+    try:
+        import fcntl
+    except ImportError:
+        return
+    fcntl.flock(lock, fcntl.LOCK_EX)
 
 
 def _build_mcs(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
@@ -64,16 +110,17 @@ def _build_mcs(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
     tmp = tmp_dir / DLL_NAME
     cmd = [mcs, "-target:library", "-optimize+", "-debug-", "-nowarn:0618", f"-out:{tmp}"]
     cmd += [f"-r:{r}" for r in refs] + [str(s) for s in sources()]
-    try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
-    except (OSError, subprocess.TimeoutExpired) as e:
-        return None, f"mcs failed to run: {e}"
-    if p.returncode != 0 or not tmp.is_file():
+    try:  # the temporary directory goes however the build ends
+        try:
+            p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+        except (OSError, subprocess.TimeoutExpired) as e:
+            return None, f"mcs failed to run: {e}"
+        if p.returncode != 0 or not tmp.is_file():
+            return None, "mcs could not compile the facade: " + (p.stdout + p.stderr).strip()[:600]
+        tmp.replace(dll)
+        return dll, f"compiled with mcs into {dll}"
+    finally:
         shutil.rmtree(tmp_dir, ignore_errors=True)
-        return None, "mcs could not compile the facade: " + (p.stdout + p.stderr).strip()[:600]
-    tmp.replace(dll)
-    shutil.rmtree(tmp_dir, ignore_errors=True)
-    return dll, f"compiled with mcs into {dll}"
 
 
 _CSPROJ = """<Project Sdk="Microsoft.NET.Sdk">
@@ -130,17 +177,17 @@ def _build_dotnet(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
     # no build servers left running in the user's session: no node reuse, no shared compiler
     cmd = [str(dotnet_host.dotnet_cli(root.path)), "build", str(proj_dir), "-c", "Release", "-o", str(proj_dir / "out"),
            "-nologo", "-nodeReuse:false", "-p:UseSharedCompilation=false", "-v:q"]
-    try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=600, env=env, cwd=proj_dir)
-    except (OSError, subprocess.TimeoutExpired) as e:
+    try:  # the project folder goes however the build ends (a Ctrl-C stops `dotnet build` with it)
+        try:
+            p = subprocess.run(cmd, capture_output=True, text=True, timeout=600, env=env, cwd=proj_dir)
+        except (OSError, subprocess.TimeoutExpired) as e:
+            return None, f"dotnet build failed to run: {e}"
+        built = proj_dir / "out" / DLL_NAME
+        if p.returncode != 0 or not built.is_file():
+            errors = [ln.strip() for ln in (p.stdout + p.stderr).splitlines() if "error" in ln]
+            return None, (f"dotnet build ({tfm}, SDK {', '.join(sdks)}) could not compile the facade: "
+                          + ("; ".join(dict.fromkeys(errors)) or (p.stdout + p.stderr).strip())[:600])
+        built.replace(dll)
+        return dll, f"compiled with the .NET SDK ({tfm}) into {dll}"
+    finally:
         shutil.rmtree(proj_dir, ignore_errors=True)
-        return None, f"dotnet build failed to run: {e}"
-    built = proj_dir / "out" / DLL_NAME
-    if p.returncode != 0 or not built.is_file():
-        errors = [ln.strip() for ln in (p.stdout + p.stderr).splitlines() if "error" in ln]
-        shutil.rmtree(proj_dir, ignore_errors=True)
-        return None, (f"dotnet build ({tfm}, SDK {', '.join(sdks)}) could not compile the facade: "
-                      + ("; ".join(dict.fromkeys(errors)) or (p.stdout + p.stderr).strip())[:600])
-    built.replace(dll)
-    shutil.rmtree(proj_dir, ignore_errors=True)
-    return dll, f"compiled with the .NET SDK ({tfm}) into {dll}"

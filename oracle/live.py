@@ -4,6 +4,8 @@
 then runs each scene in one call into acconform's C# facade (oracle/facade/Facade.cs, compiled
 against the user's ACE on first use), the one place where a scene becomes ACE's objects. Every
 scene starts from fresh ACE global state; an exception ACE raises is the verdict `Outcome(error=...)`.
+Loading says what it is doing through `say` (oracle/loading.py; None: silent) and keeps each step's
+seconds in `load_seconds`.
 """
 
 from __future__ import annotations
@@ -18,26 +20,30 @@ from ..outcome import Outcome
 from ..scene import Scene
 from . import config
 from . import runtime as _rt
+from .loading import Loading, Say, to_stderr
 from .pack import pack_scene, unpack_outcome
 
 
 class LiveOracle:
     name = "live"
 
-    def __init__(self, assembly=None, runtime: str | None = None):
+    def __init__(self, assembly=None, runtime: str | None = None, say: Say | None = to_stderr):
         location = config.resolve(assembly, runtime)
         if location is None:
             raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {config.HOW_TO_SET}")
         self.location = location
-        self.ace = _load(location)
+        loading = Loading(say)
+        self.ace = _rt.load(location, loading)
         label = config.ace_label()
         ace = f"{label} ({self.ace.ace_version})" if label else self.ace.ace_version
         self.versions = Versions(acconform=__version__, ace=ace, runtime=self.ace.runtime_version)
-        self._facade, self.facade_status = _load_facade(self.ace)
+        self._facade, self.facade_status = _load_facade(self.ace, loading)
         if self._facade is None:
             raise OracleUnavailable(f"the C# facade is unavailable: {self.facade_status}")
-        self._facade.Init()
         self._buffers()
+        self.load_seconds = dict(loading.seconds)  # step -> seconds (oracle/loading.py), for a campaign's summary
+        if say is not None:
+            say(loading.summary())
         entry = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_int)
         self._run_pinned = entry(int(self._facade.RunPinnedAddress))
         self._run_many_pinned = entry(int(self._facade.RunManyPinnedAddress))
@@ -179,21 +185,20 @@ def unpack_steps(data: bytes) -> tuple:
     return tuple(out)
 
 
-def _load(location):
-    return _rt.load(location)
-
-
-def _load_facade(ace):
+def _load_facade(ace, loading: Loading):
+    """(the facade's class, initialised, or None; how it was obtained or why not)."""
     from .facade_build import build
 
-    dll, status = build(ace)
+    dll, status = build(ace, loading)
     if dll is None:
         return None, status
-    try:
-        import clr
+    with loading.step("facade", f"loading the C# facade ({status})"):
+        try:
+            import clr
 
-        clr.AddReference(str(dll))
-        from Acconform.Oracle import Facade  # type: ignore[import-not-found]
-    except Exception as e:
-        return None, f"cannot load the compiled facade {dll}: {type(e).__name__}: {e}"
+            clr.AddReference(str(dll))
+            from Acconform.Oracle import Facade  # type: ignore[import-not-found]
+        except Exception as e:
+            return None, f"cannot load the compiled facade {dll}: {type(e).__name__}: {e}"
+        Facade.Init()
     return Facade, status

@@ -106,7 +106,9 @@ def shard_lines(shard: Path):
 def record_doc(line: str, where: str) -> dict:
     """A corpus line's JSON, checked enough to key it (a record with a scene); CorpusCorrupt otherwise."""
     try:
-        doc = deep.retrying(json.loads, line)
+        doc = deep.loads(line)
+    except deep.TooDeep as e:
+        raise CorpusCorrupt(str(e.in_file(where))) from None
     except ValueError as e:
         raise CorpusCorrupt(f"{where}: not JSON ({e})") from None
     if not isinstance(doc, dict) or doc.get("format") != RECORD_FORMAT or not isinstance(doc.get("scene"), dict):
@@ -293,7 +295,7 @@ class RecordedOracle:
         self.bad: list[str] = []  # what keep_going skipped, each naming shard and line
         self.entries: list[Entry] = []
         self._index: dict[str, Entry] | None = None  # key -> entry, built when first needed
-        self._handed: dict[int, tuple[Scene, Entry, dict]] = {}  # id(scene) -> (scene, entry, outcome JSON)
+        self._handed: dict[int, tuple[Scene, Entry, dict]] = {}  # id(scene) -> (scene, entry, its outcome)
         self._handed_keys: dict[str, Entry] = {}  # scene key -> entry, of every scene handed out and keyed
         self._unkeyed: list[Entry] = []  # handed out, not keyed yet: keyed when `run` first needs a key
         self._spans: list[tuple[Path, int, int]] = []  # each shard's entries: (shard, first, end)
@@ -473,26 +475,26 @@ class RecordedOracle:
         return Scenes(self, list(self.entries) if entries is None else list(entries))
 
     def _hand_out(self, entry: Entry, keep: bool = True) -> Scene:
-        """The entry's scene, parsed; kept (with the entry's answer) for `run` when `keep`."""
+        """The entry's scene, parsed; kept (with the entry's answer) for `run` when `keep`. Its
+        outcome is read here too: a record without a readable answer (none, a NaN written as a
+        number) is an unreadable record, refused or skipped as one, never a difference with ACE."""
         doc = entry.doc()
         try:
-            scene = deep.retrying(Scene.from_json, doc["scene"], "scene")
+            record = deep.retrying(Record.from_json, doc)
         except InvalidScene as e:
             raise CorpusCorrupt(f"{entry.where}: {e}") from None
+        scene, outcome = record.scene, record.outcome
         if keep:
             self._unkeyed.append(entry)  # keyed only if `run` is asked for it other than as handed out
             if len(self._handed) >= self.HANDED_OUT:
                 del self._handed[next(iter(self._handed))]
-            self._handed[id(scene)] = (scene, entry, doc.get("outcome"))
+            self._handed[id(scene)] = (scene, entry, outcome)
         return scene
 
     def run(self, scene: Scene) -> Outcome:
         handed = self._handed.pop(id(scene), None)
         if handed is not None and handed[0] is scene:
-            try:
-                return deep.retrying(Outcome.from_json, handed[2], "outcome")
-            except InvalidScene as e:
-                raise CorpusCorrupt(f"{handed[1].where}: {e}") from None
+            return handed[2]
         for unkeyed in self._unkeyed:
             self._handed_keys[_doc_key(unkeyed.doc())] = unkeyed
         self._unkeyed.clear()
@@ -558,8 +560,15 @@ def _canonical(scene_json: dict) -> str:
     return deep.retrying(json.dumps, scene_json, sort_keys=True, separators=(",", ":"))
 
 
+class CorpusWriteFailed(AcconformError):
+    """A shard could not be written (a full disk): the shards finished before it are kept, the
+    unfinished ones removed; the message says so and names the corpus."""
+
+
 class CorpusWriter:
-    """Appends records to a corpus as new shards (never rewrites an existing shard)."""
+    """Appends records to a corpus as new shards (never rewrites an existing shard). A shard is
+    written as <name>.tmp and renamed when finished, so a shard that cannot be finished (the disk
+    filled, the writer was stopped) never appears half-written: its .tmp is removed."""
 
     def __init__(self, corpus_dir, shard_size: int = SHARD_SIZE):
         self.dir = Path(corpus_dir)
@@ -580,24 +589,62 @@ class CorpusWriter:
             if f is not None:
                 self._close(kind)
             path = self.dir / f"{kind}-{self._next_index(kind):04d}.jsonl.gz"
-            tmp = path.with_name(path.name + ".tmp")
-            f = gzip.GzipFile(tmp, "wb", compresslevel=9, mtime=0)
+            try:
+                f = gzip.GzipFile(path.with_name(path.name + ".tmp"), "wb", compresslevel=9, mtime=0)
+            except OSError as e:
+                raise self._failed(e) from None
             count = 0
-        f.write((deep.retrying(lambda: dumps_compact(record.to_json())) + "\n").encode("utf-8"))
+        self._open[kind] = (f, path, count)
+        line = (deep.retrying(lambda: dumps_compact(record.to_json())) + "\n").encode("utf-8")
+        try:
+            f.write(line)
+        except OSError as e:
+            self._abandon(kind)
+            raise self._failed(e) from None
         self._open[kind] = (f, path, count + 1)
         self.written[kind] = self.written.get(kind, 0) + 1
 
     def _close(self, kind: str) -> None:
+        f, path, _ = self._open[kind]
+        try:
+            f.close()
+            path.with_name(path.name + ".tmp").replace(path)
+        except OSError as e:
+            self._abandon(kind)
+            raise self._failed(e) from None
+        del self._open[kind]
+
+    def _abandon(self, kind: str) -> None:
+        """Remove a shard that cannot be finished (its .tmp)."""
         f, path, _ = self._open.pop(kind)
-        f.close()
-        path.with_name(path.name + ".tmp").replace(path)
+        try:
+            f.close()
+        except OSError:
+            pass  # what it could not write is lost with the shard
+        path.with_name(path.name + ".tmp").unlink(missing_ok=True)
+
+    def _failed(self, e: OSError) -> CorpusWriteFailed:
+        return CorpusWriteFailed(f"{self.dir}: cannot write a shard ({e.strerror or e}); the shards finished are "
+                                 "kept, a shard that could not be finished is removed: make room and record again "
+                                 "(the scenes already recorded are skipped)")
 
     def close(self) -> None:
+        """Finish every open shard; CorpusWriteFailed (after trying them all) when one cannot be."""
+        failed = None
         for kind in list(self._open):
-            self._close(kind)
+            try:
+                self._close(kind)
+            except CorpusWriteFailed as e:
+                failed = failed or e
+        if failed is not None:
+            raise failed
 
     def __enter__(self):
         return self
 
-    def __exit__(self, *exc):
-        self.close()
+    def __exit__(self, exc_type, exc, tb):
+        try:
+            self.close()  # on Ctrl-C too: what was recorded is kept
+        except CorpusWriteFailed:
+            if exc_type is None:
+                raise

@@ -12,6 +12,10 @@ hit it exactly, and those that came within 4 ulps of it.
 
 It takes no --impl: branches and anchors are counted inside the built-in port, in process; an
 implementation behind the protocol is a black box (its own tools must count its branches).
+
+A scene on which the port raises (an ACE exception the port reproduces, or a port bug) is written
+as a scene file under --errors (made only then) and listed on stderr with the exception's message,
+so `acconform run FILE` replays it.
 """
 
 from __future__ import annotations
@@ -22,6 +26,7 @@ from collections import Counter
 
 KEY_PREFIXES = ("edge_slide", "cliff_slide", "precipice_slide", "step_up", "step_down")
 NEAR_ULPS = 4
+DEFAULT_ERRORS = "coverage-errors"
 
 
 def add_arguments(p) -> None:
@@ -30,8 +35,12 @@ def add_arguments(p) -> None:
                    "(with --branches, both tables)")
     p.add_argument("-n", "--cases", type=int, default=1000, help="scenes to draw (default 1000)")
     p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: what the port supports)")
+    from ..protocol import CAMPAIGN_KINDS  # strategies.DEFAULT_KINDS, what check_kinds(None) runs
+
+    p.add_argument("--kinds", default=None, help=f"comma-separated scene kinds (default: all, {','.join(CAMPAIGN_KINDS)})")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact")
+    p.add_argument("--errors", default=DEFAULT_ERRORS, metavar="DIR", help="where a scene the port raises on is "
+                   f"written, to replay with `acconform run` (default ./{DEFAULT_ERRORS}, made only then)")
     from . import add_runtime_argument
 
     add_runtime_argument(p, "whose System.Numerics arithmetic the port computes (branches can fire differently)")
@@ -44,9 +53,10 @@ def known_branches() -> list[str]:
 
 
 def measure(kinds, n: int, seed: int, mode: str = "exact", runtime: str | None = None):
-    """(per-scene branch presence Counter, total fires Counter, generation s, port s, errors Counter).
+    """(per-scene branch presence Counter, total fires Counter, generation s, port s, errors).
     A boundary hit counts as "boundary:<name>"; one within NEAR_ULPS of it as "near:<name>".
-    `runtime`: the arithmetic computed (commands.runtime_or_default)."""
+    `errors`: (index of the scene among the n drawn, the scene, the outcome's error) per scene the
+    port raised on. `runtime`: the arithmetic computed (commands.runtime_or_default)."""
     from ..port.run import run_scene
     from . import runtime_or_default
 
@@ -59,13 +69,13 @@ def measure(kinds, n: int, seed: int, mode: str = "exact", runtime: str | None =
     gen = time.perf_counter() - t0
     present: Counter = Counter()
     total: Counter = Counter()
-    errors: Counter = Counter()
+    errors = []
     t1 = time.perf_counter()
-    for s in scenes:
+    for i, s in enumerate(scenes):
         trace = Trace()
         o = run_scene(s, mode=mode, trace=trace, runtime=runtime)
         if o.error:
-            errors[o.error.split(":", 1)[0]] += 1
+            errors.append((i, s, o.error))
         total.update(trace)
         present.update(trace.keys())
         present.update(f"near:{b}" for b, ulps in trace.closest.items() if ulps <= NEAR_ULPS)
@@ -82,6 +92,9 @@ def run(args) -> int:
         from ..errors import AcconformError
 
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
+    from ..runner import check_failures_dir
+
+    check_failures_dir(args.errors, "--errors")
     warnings.simplefilter("ignore", RuntimeWarning)
     from contextlib import nullcontext
 
@@ -111,8 +124,49 @@ def run(args) -> int:
     if args.anchors:
         print("\n".join(render_table(counted.calls, counted.unwrapped)))
     if errors:
-        print("port errors: " + ", ".join(f"{k} x{v}" for k, v in errors.most_common()), file=sys.stderr)
+        options = "".join(f" --{k} {v}" for k, v in (("mode", args.mode), ("runtime", args.runtime))
+                          if v is not None and v != "exact")
+        for line in report_errors(errors, args.errors, args.seed, n, options):
+            print(line, file=sys.stderr)
     return 0
+
+
+def report_errors(errors, directory, seed: int, n: int, options: str = "") -> list[str]:
+    """Each scene the port raised on written under `directory` (a temporary directory when that
+    cannot be written, said so), and the lines naming them: the count by exception type, then each
+    distinct message with its first scene's file and how many more scenes raised it. `options`: the
+    `run` options that replay it as coverage ran it (" --runtime mono")."""
+    import tempfile
+    from pathlib import Path
+
+    from ..case import write_document
+    from ..runner import scene_hash
+
+    by_type = Counter(e.split(":", 1)[0] for _, _, e in errors)
+    out = ["port errors: " + ", ".join(f"{k} x{v}" for k, v in by_type.most_common())]
+    target, fallback = Path(directory), None
+    by_message: dict[str, list] = {}
+    for i, scene, error in errors:
+        path = target / f"scene-{scene_hash(scene)[:12]}.json"
+        try:
+            write_document(path, scene)
+        except OSError as e:
+            if fallback is not None:
+                raise
+            fallback = f"could not write to {target} ({e.strerror or e}); the scenes are in "
+            target = Path(tempfile.mkdtemp(prefix="acconform-coverage-errors-"))
+            fallback += str(target)
+            path = write_document(target / path.name, scene)
+        by_message.setdefault(error, []).append((i, scene, path))
+    for error, found in by_message.items():
+        i, scene, path = found[0]
+        more = f"; {len(found) - 1} more scene{'s' if len(found) > 2 else ''} raised it" if len(found) > 1 else ""
+        out.append(f"  {error}")
+        out.append(f"    scene {i + 1} of {n} (seed {seed}, {scene.name or 'unnamed'}): {path} -- replay it with "
+                   f"`acconform run {path}{options}`{more}")
+    if fallback:
+        out.append(f"warning: {fallback}")
+    return out
 
 
 def boundary_names() -> list[str]:

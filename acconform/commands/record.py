@@ -48,10 +48,10 @@ def add_arguments(p) -> None:
                    "under the working directory, <runtime> the one ACE runs on; a checkout's committed corpus is "
                    "tests/data/corpus/<runtime>)")
     p.add_argument("--ace", default=None, metavar="PATH", help="ACE.Server.dll or its directory (else ACE_ASSEMBLY, else the config file)")
-    from . import add_runtime_argument
+    from . import add_runtime_argument, positive_int
 
     add_runtime_argument(p, "the .NET runtime to load the build on")
-    p.add_argument("--batch", type=int, default=256, help="scenes per call into ACE (default 256)")
+    p.add_argument("--batch", type=positive_int, default=256, help="scenes per call into ACE (default 256)")
     p.add_argument("--boundaries", action="store_true",
                    help="keep only scenes whose port run hits an exact boundary (not a cell/landblock border)")
     p.add_argument("-q", "--quiet", action="store_true", help="print only the summary")
@@ -86,21 +86,34 @@ def _scenes(args, runtime: str):
             if not args.boundaries or hits_boundary(scene, runtime):
                 yield scene
     if args.n > 0:
-        from acconform.strategies import sample_scenes
+        from acconform.strategies import check_kinds
 
-        kinds = tuple(k for k in args.kinds.split(",") if k) if args.kinds else None
+        kinds = check_kinds(args.kinds)
         if not args.boundaries:
-            yield from sample_scenes(kinds, args.n, args.seed)
+            yield from spread_over_kinds(kinds, args.n, args.seed)
             return
         kept = 0
         for round_ in range(BOUNDARY_ROUNDS):
             # rounds of N draws, each seeded apart, until N boundary scenes are kept
-            for scene in sample_scenes(kinds, args.n, args.seed * 1009 + round_):
+            for scene in spread_over_kinds(kinds, args.n, args.seed * 1009 + round_):
                 if hits_boundary(scene, runtime):
                     yield scene
                     kept += 1
                     if kept >= args.n:
                         return
+
+
+def spread_over_kinds(kinds: tuple[str, ...], n: int, seed: int):
+    """`n` scenes spread evenly over `kinds` (the first n % len(kinds) kinds one more), interleaved;
+    each kind's drawn with sample_scenes((kind,), its share, seed), as bench and stress draw per kind.
+    A draw across the kinds at once (scenes(kinds), one choice of kind per scene) can give a small
+    -n none of a kind named."""
+    from itertools import chain, zip_longest
+
+    from acconform.strategies import sample_scenes
+
+    per_kind = [list(sample_scenes((k,), n // len(kinds) + (i < n % len(kinds)), seed)) for i, k in enumerate(kinds)]
+    return [s for s in chain.from_iterable(zip_longest(*per_kind)) if s is not None]
 
 
 def run(args) -> int:
@@ -120,10 +133,14 @@ def run(args) -> int:
 
         check_kinds(args.kinds)
     if args.out is not None:
+        from ..paths import refuse_output_over_input
         from ..runner import check_writable
 
+        refuse_output_over_input(args.out, args.files, "--out")
         check_writable(args.out, "--out")
-    oracle = require_live(args.ace, args.runtime)
+    from ..oracle.loading import to_stderr
+
+    oracle = require_live(args.ace, args.runtime, say=None if args.quiet else to_stderr)
     out = Path(args.out) if args.out else default_out(runtime_named(oracle.versions.runtime))
     try:
         known = set(RecordedOracle(out).index())

@@ -38,7 +38,7 @@ def test_record_without_out_writes_into_the_working_directory_and_says_where(tmp
         def run_many(self, scenes):
             return [(recorded.run(s), 0) for s in scenes]
 
-    monkeypatch.setattr(acconform.oracle, "require_live", lambda ace=None, runtime=None: LiveStandIn())
+    monkeypatch.setattr(acconform.oracle, "require_live", lambda ace=None, runtime=None, say=None: LiveStandIn())
     work = tmp_path / "work"
     work.mkdir()
     monkeypatch.chdir(work)
