@@ -1,28 +1,34 @@
 """Case files (a shrunk difference, replayable) and oracle records (ACE's answer to a scene).
 
-``acconform.case/2``: the scene, both outcomes, the field-by-field differences, the seed that
+``acconform.case/3``: the scene, both outcomes (``impl``: the implementation under test's, the
+built-in port's or --impl's; ``oracle``: ACE's), the field-by-field differences, the seed that
 found it, the versions of the port and of ACE, which implementation answered on the port's side
 (an `ImplementationRun`: the --impl command, its handshake and its stderr when it failed; absent
 for the built-in port) and how the scene was shrunk (`Shrink`: against live ACE, against the
-built-in port standing in for a recorded ACE, or not, and why). ``acconform.case/1`` files (no
-implementation, no shrink label) are still read. ``acconform.record/1``: one scene with the
-outcome ACE gave, its version and runtime -- data only, ACE's answers, never its code.
+built-in port standing in for a recorded ACE, or not, and why). ``acconform.case/2`` files (the
+same, with the implementation's outcome under ``port``, a name that elsewhere means the built-in
+port) and ``acconform.case/1`` files (``port`` too; no implementation, no shrink label) are still
+read. ``acconform.record/1``: one scene with the outcome ACE gave, its version and runtime -- data
+only, ACE's answers, never its code.
 `load_document` reads any acconform JSON file and dispatches on its "format".
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from .codec import Reader, dumps, dumps_compact, json_line, parse_json_text
+from .compare import MODES
 from .errors import InvalidScene
 from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V1 as OUTCOME_FORMAT_V1, FORMAT_V2 as OUTCOME_FORMAT_V2,
                       FORMAT_V3 as OUTCOME_FORMAT_V3, Outcome)
 from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
                     FORMAT_V3 as SCENE_FORMAT_V3, FORMAT_V4 as SCENE_FORMAT_V4, Scene, check_format)
 
-CASE_FORMAT = "acconform.case/2"
+CASE_FORMAT = "acconform.case/3"
+CASE_FORMAT_V2 = "acconform.case/2"  # read, never written: the implementation's outcome under "port"
 CASE_FORMAT_V1 = "acconform.case/1"
 RECORD_FORMAT = "acconform.record/1"
 
@@ -39,7 +45,15 @@ class Versions:
     @staticmethod
     def from_json(r: Reader) -> "Versions":
         r.obj({"acconform", "ace", "runtime"})
-        return Versions(*(r[k].str_() if r.given(k) else "" for k in ("acconform", "ace", "runtime")))
+        v = Versions(*(r[k].str_() if r.given(k) else "" for k in ("acconform", "ace", "runtime")))
+        # the runtime decides whose arithmetic a replay computes with (numerics.runtime_named): a
+        # runtime it cannot name is refused here, not met as an error when the case is replayed
+        from .numerics import RUNTIMES
+
+        if v.runtime.strip() and not {part.split()[0] for part in v.runtime.split(";") if part.strip()} <= set(RUNTIMES):
+            r["runtime"].fail(f"unknown runtime {v.runtime!r}: it starts with one of {', '.join(sorted(RUNTIMES))} "
+                              "(e.g. \"mono 6.8.0.105\"), or is empty when not recorded")
+        return v
 
 
 # How much of an implementation's stderr a case keeps: all of it up to this many characters; past
@@ -120,9 +134,9 @@ class Shrink:
 @dataclass(frozen=True, slots=True)
 class Case:
     scene: Scene
-    port: Outcome
+    port: Outcome  # the implementation under test's outcome ("impl" in the file; "port" before case/3)
     oracle: Outcome
-    differences: tuple[str, ...] = ()  # human-readable "field: port=... oracle=..." lines
+    differences: tuple[str, ...] = ()  # human-readable "field: port=... oracle=..." lines (impl=... for --impl)
     seed: str = ""
     mode: str = "exact"
     versions: Versions = field(default_factory=Versions)
@@ -136,29 +150,47 @@ class Case:
             d["implementation"] = self.implementation.to_json()
         d["shrunk"] = self.shrink.to_json()
         d.update({"differences": list(self.differences), "scene": self.scene.to_json(),
-                  "port": self.port.to_json(), "oracle": self.oracle.to_json()})
+                  "impl": self.port.to_json(), "oracle": self.oracle.to_json()})
         return d
 
     @staticmethod
     def from_json(doc, path: str = "") -> "Case":
         r = Reader(doc, path)
-        v1 = isinstance(doc, dict) and doc.get("format") == CASE_FORMAT_V1
-        r.obj({"format", "seed", "mode", "versions", "differences", "scene", "port", "oracle",
+        fmt = doc.get("format") if isinstance(doc, dict) else None
+        v1 = fmt == CASE_FORMAT_V1
+        tested = "port" if fmt in (CASE_FORMAT_V1, CASE_FORMAT_V2) else "impl"  # the key of the tested side's outcome
+        r.obj({"format", "seed", "mode", "versions", "differences", "scene", tested, "oracle",
                *(() if v1 else ("implementation", "shrunk"))})
         if not v1:
-            check_format(r, CASE_FORMAT)
+            check_format(r, CASE_FORMAT_V2 if fmt == CASE_FORMAT_V2 else CASE_FORMAT)
         return Case(
             scene=Scene.from_json(r["scene"].value, r["scene"].path),
-            port=Outcome.from_json(r["port"].value, r["port"].path),
+            port=Outcome.from_json(r[tested].value, r[tested].path),
             oracle=Outcome.from_json(r["oracle"].value, r["oracle"].path),
             differences=tuple(d.str_() for d in r["differences"].list()) if r.given("differences") else (),
-            seed=r["seed"].str_() if r.given("seed") else "",
-            mode=r["mode"].str_() if r.given("mode") else "exact",
+            seed=_seed(r["seed"]) if r.given("seed") else "",
+            mode=_mode(r["mode"]) if r.given("mode") else "exact",
             versions=Versions.from_json(r["versions"]) if r.given("versions") else Versions(),
             implementation=ImplementationRun.from_json(r["implementation"]) if r.given("implementation") else None,
             shrink=Shrink.from_json(r["shrunk"]) if r.given("shrunk") else Shrink(),
-            format=CASE_FORMAT_V1 if v1 else CASE_FORMAT,
+            format=fmt if fmt in (CASE_FORMAT_V1, CASE_FORMAT_V2) else CASE_FORMAT,
         )
+
+
+def _seed(r: Reader) -> str:
+    """A case's seed: the campaign seed that drew its scene, a whole number written as a string
+    (`check --seed`), or "" when none did."""
+    seed = r.str_()
+    if seed and not re.fullmatch(r"-?[0-9]+", seed):
+        r.fail(f"expected a whole number written as a string (the campaign's --seed), or \"\", got {seed!r}")
+    return seed
+
+
+def _mode(r: Reader) -> str:
+    mode = r.str_()
+    if mode not in MODES:
+        r.fail(f"expected one of {', '.join(MODES)}, got {mode!r}")
+    return mode
 
 
 @dataclass(frozen=True, slots=True)
@@ -185,7 +217,7 @@ _READERS = {SCENE_FORMAT_V1: Scene.from_json, SCENE_FORMAT_V2: Scene.from_json, 
             SCENE_FORMAT_V4: Scene.from_json, SCENE_FORMAT: Scene.from_json,
             OUTCOME_FORMAT_V1: Outcome.from_json, OUTCOME_FORMAT_V2: Outcome.from_json, OUTCOME_FORMAT_V3: Outcome.from_json,
             OUTCOME_FORMAT: Outcome.from_json,
-            CASE_FORMAT_V1: Case.from_json, CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
+            CASE_FORMAT_V1: Case.from_json, CASE_FORMAT_V2: Case.from_json, CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
 
 
 def parse_document(doc, source: str | None = None):
@@ -229,24 +261,29 @@ def is_lines_file(path: str | Path) -> bool:
 def jsonl_lines(path: str | Path):
     """(line number, line) for each non-empty line of a JSON-lines file, gzip'd when it ends in .gz.
 
-    InvalidScene names the file and the last line read when it is missing, truncated or corrupt.
+    InvalidScene names the file and the last line read when it is missing, truncated or corrupt,
+    and names a file that holds no document (a 0-byte shard reads as an empty gzip stream).
     """
     import gzip
     import zlib
 
     path = Path(path)
     lineno = 0
+    documents = False
     try:
         opener = gzip.open if path.name.endswith(".gz") else open
         with opener(path, "rt", encoding="utf-8") as f:
             for lineno, line in enumerate(f, 1):
                 if not line.isspace():  # (not strip(): that copies every line, a third of loading a corpus)
+                    documents = True
                     yield lineno, line
     except FileNotFoundError:
         raise InvalidScene("", "no such file", str(path)) from None
     except (OSError, EOFError, zlib.error, UnicodeDecodeError) as e:
         why = "truncated" if isinstance(e, EOFError) else f"corrupt ({e})"
         raise InvalidScene("", f"{why} after line {lineno}; the rest cannot be read", str(path)) from None
+    if not documents:
+        raise InvalidScene("", f"empty: no document in it ({path.stat().st_size} bytes)", str(path))
 
 
 def iter_documents(path: str | Path):

@@ -1,8 +1,9 @@
 """The `acconform` command: one entry point, one subcommand per job.
 
 Exit codes: 0 success; 1 the job ran and found differences (or a case still fails);
-2 bad input or configuration (a malformed file, no ACE configured, an unknown option) --
-always one line naming what is wrong, never a traceback.
+2 bad input or configuration (a malformed file, no ACE configured, an unknown option, no
+command, an output that cannot be written) -- always one line naming what is wrong, never a
+traceback.
 
 Subcommands live in their own modules, imported only when chosen, each with
 `add_arguments(parser)` and `run(args) -> int`.
@@ -74,12 +75,17 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "command", None):
-        parser.print_help()
-        return 2
-    if sys.stdout is sys.__stdout__ and sys.stdout is not None and args.command not in STOP_WHEN_READER_GOES:
-        sys.stdout = _ReaderMayGo(sys.stdout)
+        # as argparse answers a missing required argument: the usage and one line on stderr, exit 2.
+        # A bare `acconform` is a command line short of its command, not a request for help
+        # (`acconform --help` is), and a script that forgot the command must not pass.
+        parser.print_usage(sys.stderr)
+        parser.error(f"choose a command: {', '.join(COMMANDS)}")
+    if sys.stdout is sys.__stdout__ and sys.stdout is not None:
+        sys.stdout = _Stdout(sys.stdout, stop_when_reader_goes=args.command in STOP_WHEN_READER_GOES)
     try:
-        return int(importlib.import_module(args._module).run(args) or 0)
+        code = int(importlib.import_module(args._module).run(args) or 0)
+        sys.stdout.flush()  # what is still buffered fails here, as one line, not at exit (a full disk)
+        return code
     except AcconformError as e:
         print(f"acconform {args.command}: error: {e}", file=sys.stderr)
         return 2
@@ -94,31 +100,55 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:
         _silence_stdout()
         return 0
+    except OSError as e:  # a file a command writes, on a full disk or gone read-only during the run
+        where = f"{e.filename}: " if e.filename else ""
+        print(f"acconform {args.command}: error: {where}{e.strerror or e}", file=sys.stderr)
+        return 2
 
 
-class _ReaderMayGo:
-    """The process's stdout, for a command whose exit code is a verdict: when the reader of a pipe
-    goes away, what is written after that goes to /dev/null and the command runs on to its end."""
+class OutputFailed(AcconformError):
+    """Standard output cannot be written (a full disk, /dev/full): the job's output is lost, so it
+    is bad input's exit 2, not a verdict."""
 
-    def __init__(self, stream):
+
+class _Stdout:
+    """The process's stdout. When the reader of a pipe goes away, a command in STOP_WHEN_READER_GOES
+    stops (the BrokenPipeError reaches `main`: exit 0); any other goes on with what it writes after
+    that sent to /dev/null, to its verdict's exit code. Any other failure to write is OutputFailed."""
+
+    def __init__(self, stream, stop_when_reader_goes: bool):
         self._stream = stream
+        self._stop = stop_when_reader_goes
 
     def write(self, text: str) -> int:
         try:
             return self._stream.write(text)
         except BrokenPipeError:
             _silence_stdout()
+            if self._stop:
+                raise
             return len(text)
+        except OSError as e:
+            raise _failed(e) from None
 
     def flush(self) -> None:
         try:
             self._stream.flush()
         except BrokenPipeError:
             _silence_stdout()
+            if self._stop:
+                raise
             self._stream.flush()  # what was buffered goes to /dev/null now
+        except OSError as e:
+            raise _failed(e) from None
 
     def __getattr__(self, name):
         return getattr(self._stream, name)
+
+
+def _failed(e: OSError) -> OutputFailed:
+    _silence_stdout()  # what is still buffered goes to /dev/null: the exit-time flush cannot fail again
+    return OutputFailed(f"cannot write to standard output ({e.strerror or e}); its output is lost")
 
 
 def _silence_stdout() -> None:

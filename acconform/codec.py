@@ -429,7 +429,7 @@ def parse_json_text(text: str, source: str | None = None) -> Any:
     from . import deep
 
     try:
-        return deep.retrying(json.loads, text)
+        return deep.loads(text)
     except deep.TooDeep as e:
         raise e.in_file(source) if source else e from None
     except json.JSONDecodeError as e:
@@ -441,7 +441,7 @@ def json_line(line: str, where: str) -> Any:
     from . import deep
 
     try:
-        return deep.retrying(json.loads, line)
+        return deep.loads(line)
     except deep.TooDeep as e:
         raise e.in_file(where) from None
     except ValueError as e:

@@ -20,7 +20,11 @@ not compared.
 
 Errors: their presence must match in every mode, and in exact mode also the exception type
 (the text before the first colon); the messages are free text (ACE's come from .NET, the
-port's name the missing piece) and are shown but never compared.
+port's name the missing piece) and are shown but never compared. An outcome's `error` is compared
+first, so a verdict (an exception, an implementation's crash, timeout or protocol error) heads the
+list. When only one side has an error, that side gave no answer: its other fields are defaults,
+not values, so the error is the one difference listed (likewise a tick with an error on one side
+only: later ticks do not exist on that side).
 
 `ticks` (a tick scene's outcome) is compared tick by tick, each `TickState` field by field
 (``ticks[7].origin[0]``), right after `placement` and before `static_cells` (which are read after
@@ -128,6 +132,8 @@ def compare(a: Outcome, b: Outcome, mode: str = "exact") -> list["Difference"]:
         from .errors import AcconformError
 
         raise AcconformError(f"unknown comparison mode {mode!r}: choose one of {', '.join(MODES)}")
+    if (a.error is None) != (b.error is None):  # one side's fields are defaults, not an answer
+        return [Difference("error", a.error, b.error)]
     out: list[Difference] = []
     _compare_record(a, b, "", mode, out)
     return out
@@ -138,10 +144,13 @@ def _double_bits(x: float) -> int:
 
 
 def _order(record) -> list[str]:
-    """The fields of `record` in comparison order: an Outcome's `placement` and `ticks` come before
-    `static_cells` (read after the transition or the last tick); every other record in field order."""
+    """The fields of `record` in comparison order: an Outcome's `error` first (a verdict heads the
+    list), its `placement` and `ticks` before `static_cells` (read after the transition or the last
+    tick); every other record in field order."""
     names = [f.name for f in fields(record)]
     if isinstance(record, Outcome):
+        names.remove("error")
+        names.insert(0, "error")
         names.remove("static_cells")
         names.append("static_cells")
     return names
@@ -161,6 +170,9 @@ def _compare_ticks(va, vb, mode: str, out: list) -> None:
     for i in range(max(len(va), len(vb))):
         if i >= len(va) or i >= len(vb):
             out.append(Difference(f"ticks[{i}]", va[i] if i < len(va) else None, vb[i] if i < len(vb) else None))
+            return
+        if (va[i].error is None) != (vb[i].error is None):  # that tick's fields are defaults on one side
+            out.append(Difference(f"ticks[{i}].error", va[i].error, vb[i].error))
             return
         _compare_record(va[i], vb[i], f"ticks[{i}].", mode, out)
 

@@ -5,11 +5,13 @@ the port (which follows ACE's decomposition) and the JSON readers. Python's defa
 (1,000) stops them near 1,000 levels, where ACE goes on. `retrying(fn, ...)` calls `fn` as it is
 (the fast path every ordinary scene takes) and, only when that raises RecursionError, calls it
 again in a thread with a large stack and a raised recursion limit. A document nested deeper than
-MAX_DEPTH even there is refused with one line (`TooDeep`, exit 2), never a traceback.
+MAX_DEPTH levels (`loads` counts them exactly) is refused with one line (`TooDeep`, exit 2), never
+a traceback.
 """
 
 from __future__ import annotations
 
+import json
 import sys
 import threading
 
@@ -80,3 +82,29 @@ def retrying(fn, *args, **kwargs):
     except RecursionError:
         pass  # outside the handler: the traceback of the shallow attempt is not kept alive
     return call(fn, *args, **kwargs)
+
+
+def loads(text: str):
+    """JSON text parsed (json.loads, on a deep stack when it nests deeply); TooDeep when it nests
+    more than MAX_DEPTH levels (``[[]]`` is 2), counted exactly: the deep stack's frame limit alone
+    lets a few hundred more through. ValueError when it is not JSON."""
+    value = retrying(json.loads, text)
+    # a text holding no more than MAX_DEPTH brackets cannot nest deeper: most are measured by a count
+    if text.count("[") + text.count("{") > MAX_DEPTH and nesting(value) > MAX_DEPTH:
+        raise TooDeep()
+    return value
+
+
+def nesting(value) -> int:
+    """How many levels a parsed JSON value nests: 0 for a number or string, 1 for ``[]`` or ``{}``,
+    one more for each container inside (walked with a list, not recursion: it may be 20,000 deep)."""
+    deepest = 0
+    todo = [(value, 1)]
+    while todo:
+        v, level = todo.pop()
+        children = v.values() if isinstance(v, dict) else v if isinstance(v, list) else None
+        if children is None:
+            continue
+        deepest = max(deepest, level)
+        todo.extend((c, level + 1) for c in children if isinstance(c, (dict, list)))
+    return deepest

@@ -20,7 +20,9 @@ def add_arguments(p) -> None:
     p.add_argument("--impl", default=None, metavar="CMD",
                    help="the implementation under test: a command speaking acconform.protocol/1 "
                         "(docs/protocol.md); default: the built-in port, in process")
-    p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, metavar="S",
+    from .commands import positive_seconds
+
+    p.add_argument("--timeout", type=positive_seconds, default=DEFAULT_TIMEOUT, metavar="S",
                    help=f"seconds --impl may take for one scene before it is a hang verdict (default {DEFAULT_TIMEOUT:g}), "
                         f"and to start and write its handshake (at least {HANDSHAKE_TIMEOUT_MIN:g})")
 

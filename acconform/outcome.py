@@ -287,9 +287,11 @@ class Outcome:
         return d
 
     @staticmethod
-    def from_json(doc, path: str = "", exact: bool = False) -> "Outcome":
-        """`exact` (an implementation's answer): every float must name a float32 (codec.Reader.f32)."""
-        r = Reader(doc, path, exact=exact)
+    def from_json(doc, path: str = "") -> "Outcome":
+        """Every float must name a float32 (codec.Reader.f32), as every writer of an outcome writes
+        it (the harness, an implementation): a double's digits there (0.30000000000000004) are a
+        file acconform did not write, refused naming the field rather than rounded without a word."""
+        r = Reader(doc, path, exact=True)
         names = _OUTCOME_FIELDS
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1

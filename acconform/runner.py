@@ -219,12 +219,21 @@ def run_case(port: Backend, oracle: Backend, scene: Scene, mode: str, timings: C
 
 def make_case(scene, a: Outcome, b: Outcome, diffs, seed, mode, versions, implementation=None,
               shrink: Shrink | None = None) -> Case:
-    """The case of a difference; a tick scene's first differing tick and field is its first line."""
+    """The case of a difference; a tick scene's first differing tick and field is its first line. The
+    values of an implementation under test (--impl) are labelled `impl=`, the built-in port's `port=`."""
     first = first_tick_difference(diffs)
     if first is not None:
         diffs = [first] + [d for d in diffs if d is not first]
-    return Case(scene=scene, port=a, oracle=b, differences=tuple(render(diffs)), seed=str(seed), mode=mode,
+    lines = render(diffs, tested_label(implementation))
+    return Case(scene=scene, port=a, oracle=b, differences=tuple(lines), seed=str(seed), mode=mode,
                 versions=versions, implementation=implementation, shrink=shrink or Shrink())
+
+
+def tested_label(implementation) -> str:
+    """How the tested side's values are labelled where a human reads them: "impl" for an
+    implementation under test (an `ImplementationRun`, or a backend with a command), "port" for
+    the built-in port, which is what "port" means everywhere else."""
+    return "port" if implementation is None or getattr(implementation, "command", None) is None else "impl"
 
 
 def implementation_run(port: Backend):
@@ -253,8 +262,8 @@ def check_writable(directory: str | Path, what: str = "--failures") -> Path:
     _no_file_in_the_way(d, what)
     try:
         d.mkdir(parents=True, exist_ok=True)
-        with tempfile.NamedTemporaryFile(dir=d, prefix=".acconform-probe-"):
-            pass
+        with tempfile.NamedTemporaryFile(dir=d, prefix=".acconform-probe-", buffering=0) as probe:
+            probe.write(b"\n")  # a full disk takes a new empty file, not a byte
     except OSError as e:
         raise AcconformError(f"{what} {d}: cannot write there ({e.strerror or e}); choose a writable directory") from None
     return d
@@ -344,7 +353,8 @@ class Progress:
     terminal (at most 5 times a second); otherwise (piped, a log file) a line every
     `PIPE_EVERY` seconds and one at the end. `check`, `bench` and `runtime-diff` use it.
 
-    `update(done, found)`: `found` (differences so far) is shown when not None."""
+    `update(done, found)`: `found` (differences so far) is shown when not None; `doing` (e.g. what
+    shrinking a difference has run so far) is shown in place of the rate and ETA while it lasts."""
 
     PIPE_EVERY = 5.0
 
@@ -359,7 +369,7 @@ class Progress:
         self.last = 0.0
         self.last_line = self.start  # when a piped line was last written
 
-    def line(self, done: int, found: int | None = None, now: float | None = None) -> str:
+    def line(self, done: int, found: int | None = None, now: float | None = None, doing: str = "") -> str:
         now = time.monotonic() if now is None else now
         elapsed = max(now - self.start, 1e-9)
         frac = min(done / self.total, 1.0)
@@ -369,6 +379,8 @@ class Progress:
         text = f"{self.label}[{bar}] {done}/{self.total} {self.unit}"
         if found is not None:
             text += f"  {found} difference{'s' if found != 1 else ''}"
+        if doing:
+            return f"{text}  {doing}"
         text += f"  {rate:.1f} {self.unit}/s" if rate < 10 else f"  {rate:.0f} {self.unit}/s"
         if done >= self.total:
             text += f"  took {_duration(elapsed)}"
@@ -376,7 +388,7 @@ class Progress:
             text += f"  ETA {_duration((self.total - done) / rate)}"
         return text
 
-    def update(self, done: int, found: int | None = None, force: bool = False) -> None:
+    def update(self, done: int, found: int | None = None, force: bool = False, doing: str = "") -> None:
         if not self.enabled:
             return
         now = time.monotonic()
@@ -384,11 +396,11 @@ class Progress:
             return
         self.last = now
         if self.tty:
-            self.stream.write("\r" + self.line(done, found, now) + "\033[K")
+            self.stream.write("\r" + self.line(done, found, now, doing) + "\033[K")
             self.stream.flush()
         elif force or now - self.last_line >= self.PIPE_EVERY:
             self.last_line = now
-            self.stream.write(self.line(done, found, now) + "\n")
+            self.stream.write(self.line(done, found, now, doing) + "\n")
             self.stream.flush()
 
     def close(self, done: int, found: int | None = None) -> None:
@@ -396,6 +408,40 @@ class Progress:
         if self.enabled and self.tty:
             self.stream.write("\n")
             self.stream.flush()
+
+
+class Status:
+    """One line saying what a job is doing before its cases start (loading a corpus, ...): on a
+    terminal `say` redraws it in place (at most 5 times a second) and `done` leaves its summary; piped
+    (a log file), nothing until `done`'s one line, unless a wait goes on past `Progress.PIPE_EVERY`
+    seconds: then one line every so often says what it is still doing."""
+
+    def __init__(self, enabled: bool, stream=None, prefix: str = ""):
+        self.enabled = enabled
+        self.stream = stream or sys.stderr
+        self.tty = hasattr(self.stream, "isatty") and self.stream.isatty()
+        self.prefix = prefix
+        self.last = 0.0
+        self.last_line = time.monotonic()
+
+    def say(self, text: str) -> None:
+        if not self.enabled:
+            return
+        now = time.monotonic()
+        if self.tty and now - self.last >= 0.2:
+            self.last = now
+            self.stream.write(f"\r{self.prefix}{text}\033[K")
+            self.stream.flush()
+        elif not self.tty and now - self.last_line >= Progress.PIPE_EVERY:
+            self.last_line = now
+            self.stream.write(f"{self.prefix}{text}\n")
+            self.stream.flush()
+
+    def done(self, text: str) -> None:
+        if not self.enabled:
+            return
+        self.stream.write(("\r" if self.tty else "") + f"{self.prefix}{text}" + ("\033[K\n" if self.tty else "\n"))
+        self.stream.flush()
 
 
 # ---------------------------------------------------------------- one worker's campaign
@@ -455,7 +501,7 @@ def _nudged(choices: tuple, rng) -> tuple:
 
 def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, seed: int, mode: str,
                 keep_going: bool, database, tick, should_stop, versions: Versions,
-                shrink_budget: int | None = None) -> None:
+                shrink_budget: int | None = None, shrinking=None) -> None:
     """Compare up to `n` drawn scenes; add each new kind of difference (shrunk) to `r.found`.
 
     Scenes are drawn outside Hypothesis' engine (strategies.fast_draw: the strategies and
@@ -468,7 +514,8 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
     handed to Hypothesis as the choice sequence that drew it, and Hypothesis shrinks it as one of
     its own; acconform.shrink then shrinks the scene itself. Scenes the port cannot run are skipped (another
     is drawn: they do not count toward `n`) and counted in `r.skipped`; the scenes shrinking runs
-    go to `r.shrink_runs`. `shrink_budget`: at most that many smaller scenes are run per
+    go to `r.shrink_runs`, and each is told to `shrinking(1)` (the progress line; `shrinking(-k)` when a
+    shrink of k runs ends). `shrink_budget`: at most that many smaller scenes are run per
     difference (None: Hypothesis' own limits); past it every candidate passes unrun, so
     Hypothesis' shrinker soon ends with the smallest failing scene it ran; 0: differences are
     written as drawn."""
@@ -576,15 +623,45 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
                     break
                 _shrink_found(port, oracle, r, hit, strategy=strategy, mode=mode, known=known, found=found,
                               shrink_budget=shrink_budget, should_stop=should_stop, what=what, against=against,
-                              seed=seed * 7919 + round_)
+                              seed=seed * 7919 + round_, shrinking=shrinking or (lambda k: None))
                 if not keep_going:
                     break
     except _Stop:
         return
 
 
-def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mode: str, known, found,
-                  shrink_budget, should_stop, what: str, against: str, seed: int) -> None:
+def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, shrinking, **how) -> None:
+    """`_shrink_hit`, telling `shrinking(1)` of each scene it runs and `shrinking(-k)` when its k runs end
+    (however it ends: a Ctrl-C, a stop): the progress line shows a shrink while it lasts."""
+    ran = [0]
+
+    def counted(k: int) -> None:
+        ran[0] += k
+        shrinking(k)
+
+    kept = len(r.found)
+    # shrinking's runs are timed as shrinking, not as the cases' port and ACE time
+    t0, cases_time = time.perf_counter(), {k: r.timings[k] for k in ("port", "oracle", "compare")}
+    try:
+        _shrink_hit(port, oracle, r, hit, shrinking=counted, **how)
+    except (_Stop, KeyboardInterrupt):  # stopped mid-shrink (Ctrl-C): the difference is kept, as drawn
+        if len(r.found) == kept:
+            from .shrink import scene_bytes
+
+            scene0, _choices, case0, impl0 = hit
+            size = scene_bytes(scene0)
+            how["found"](scene0, case0, impl0, Shrink("none", "not shrunk: the campaign was stopped while it was "
+                                                      "being shrunk", size, size))
+        raise
+    finally:
+        shrinking(-ran[0])
+        for k, v in cases_time.items():
+            r.timings[k] = v
+        r.timings["shrink"] += time.perf_counter() - t0
+
+
+def _shrink_hit(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mode: str, known, found,
+                shrink_budget, should_stop, what: str, against: str, seed: int, shrinking) -> None:
     """Hand a difference to Hypothesis as the choices that drew it: Hypothesis replays them from an
     in-memory example database and shrinks the scene as one of its own, and `found` gets the case."""
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
@@ -615,6 +692,7 @@ def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, m
         ran_case = run_case(port, oracle, scene, mode, r.timings)
         r.shrink_runs += 1
         runs[0] += 1
+        shrinking(1)
         diffs = ran_case[2]
         if diffs and signature(diffs) not in known:
             last[:] = [scene, ran_case, implementation_run(port)]
@@ -649,6 +727,7 @@ def _shrink_found(port: Backend, oracle: Backend, r: Result, hit, *, strategy, m
         c = run_case(port, oracle, s, mode, r.timings)
         r.shrink_runs += 1
         runs[0] += 1
+        shrinking(1)
         if c[2] and signature(c[2]) == sig:
             smaller[:] = [s, c, implementation_run(port)]
             return True
@@ -771,9 +850,11 @@ def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices:
                 break
 
 
-def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: str, budget: int) -> None:
+def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: str, budget: int,
+                     shrinking=lambda k: None) -> None:
     """Shrink the first replayed difference of each kind against `stand_in` (the built-in port
-    standing in for ACE), when it agrees bit for bit with ACE's recorded answer on that scene."""
+    standing in for ACE), when it agrees bit for bit with ACE's recorded answer on that scene;
+    `shrinking` hears of each scene run (1) and of each shrink's end (-its runs), as in `_shrink_found`."""
 
     from .shrink import scene_bytes, shrink_scene
 
@@ -800,11 +881,14 @@ def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: s
             continue
         before = scene_bytes(c.scene)
         last: list = []
+        runs = [0]
 
         def still_fails(s: Scene) -> bool:
             if unsupported is not None and unsupported(s):
                 return False
             r.shrink_runs += 1
+            runs[0] += 1
+            shrinking(1)
             a, b = guarded(port, s), guarded(stand_in, s)
             d = compare(a, b, mode)
             if d and signature(d) == f.signature:
@@ -812,7 +896,10 @@ def _shrink_replayed(r: Result, port: Backend, stand_in: Backend | None, mode: s
                 return True
             return False
 
-        small, tried = shrink_scene(c.scene, still_fails, budget)
+        try:
+            small, tried = shrink_scene(c.scene, still_fails, budget)
+        finally:
+            shrinking(-runs[0])
         what = ("shrunk against the built-in port standing in for ACE (it agrees with ACE's recorded answer on "
                 f"the original scene; the oracle outcome here is the port's); {tried} smaller scenes tried")
         if not last:
@@ -830,6 +917,12 @@ _SHARED: dict = {}
 def _ignore_sigint() -> None:
     """Pool initializer: Ctrl-C is the parent's to handle (it tells the workers to stop)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+# After Ctrl-C, how long the parent waits for its workers to return what they found: a worker
+# checks the stop between scenes (milliseconds apart), but one loading ACE (seconds; a facade
+# build, 10-30 s) or inside one long scene cannot, and is ended with nothing found yet.
+STOP_GRACE = 1.0
 
 
 @contextlib.contextmanager
@@ -867,11 +960,17 @@ def _worker(w: int) -> dict:
         with counter.get_lock():
             counter.value += k
 
+    def shrinking(k):  # the scenes the workers' shrinks in progress have run, for the parent's progress line
+        with s["shrinking"].get_lock():
+            s["shrinking"].value += k
+
     r = Result()
     if s["versions"] is None:  # a per-process oracle: this worker loads its own runtime
+        t0 = time.perf_counter()
         s["versions"] = versions_of(s["port"], s["oracle"])
+        r.timings["ace_load"] += time.perf_counter() - t0
     with campaign_gc():
-        _worker_campaign(w, s, r, tick)
+        _worker_campaign(w, s, r, tick, shrinking)
     if (r.found or r.unreadable) and not s["keep_going"]:
         stop.set()
     close = getattr(s["port"], "close", None)
@@ -881,7 +980,7 @@ def _worker(w: int) -> dict:
             "skipped": dict(r.skipped), "shrink_runs": r.shrink_runs, "unreadable": r.unreadable}
 
 
-def _worker_campaign(w: int, s: dict, r: Result, tick) -> None:
+def _worker_campaign(w: int, s: dict, r: Result, tick, shrinking) -> None:
     stop = s["stop"]
     if s["replay"] is not None:
         _replay(s["port"], s["oracle"], r, s["replay"], range(w, len(s["replay"]), s["workers"]), mode=s["mode"],
@@ -892,12 +991,18 @@ def _worker_campaign(w: int, s: dict, r: Result, tick) -> None:
     _generative(s["port"], s["oracle"], r, kinds=s["kinds"], n=_stream_cases(s["n"], stream, s["streams"]),
                 seed=s["seed"] * 1000 + stream, mode=s["mode"],
                 keep_going=s["keep_going"], database=s["database"], tick=tick, should_stop=lambda: stop.is_set(),
-                versions=s["versions"], shrink_budget=s["shrink_budget"])
+                versions=s["versions"], shrink_budget=s["shrink_budget"], shrinking=shrinking)
 
 
 def _stream_cases(n: int, stream: int, streams: int) -> int:
     """The cases of one stream of a live campaign of `n` cases drawn as `streams` streams."""
     return n // streams + (1 if stream < n % streams else 0)
+
+
+def shard_cases(n: int, shard: tuple[int, int], workers: int) -> int:
+    """The cases part K of N (`shard`) of a live campaign of `n` cases on `workers` workers runs."""
+    part, parts = shard
+    return sum(_stream_cases(n, s, parts * workers) for s in range((part - 1) * workers, part * workers))
 
 
 def parse_shard(text: str) -> tuple[int, int]:
@@ -969,19 +1074,34 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
         items = items[part - 1::parts]
     total = len(items) if items is not None else n
     if items is None and parts > 1:
-        total = sum(_stream_cases(n, s, parts * workers) for s in range((part - 1) * workers, part * workers))
+        total = shard_cases(n, shard, workers)
     bar = Progress(total, progress)
     start = time.monotonic()
     streams, first_stream = workers * parts, (part - 1) * workers  # a sharded live campaign's streams
     workers = max(1, min(workers, total or 1))
     result = Result(source="replay" if items is not None else "generative", versions=versions)
+    budget = DEFAULT_BUDGET if items is not None and shrink_budget is None else shrink_budget
+    against = ("the built-in port standing in for ACE" if items is not None else
+               "live ACE" if shrunk_against(oracle) == "ace" else "the built-in port")
+    limit = f" of up to {budget}" if budget is not None else ""
+    shrink_runs = [0]  # of the shrinks in progress (one process; the workers' add up in a shared value)
 
+    def shrinking_now(runs: int) -> str:
+        """What the progress line says while a difference is shrunk (nothing between shrinks)."""
+        scenes = "scene" if runs == 1 and not limit else "scenes"
+        return f"shrinking a difference against {against}: {runs}{limit} smaller {scenes} run" if runs > 0 else ""
+
+    def shrinking(k):
+        shrink_runs[0] += k
+        # the first run of a shrink is shown at once, also piped; then as the bar's cadence allows
+        bar.update(count[0], len(result.found), force=k > 0 and shrink_runs[0] == 1,
+                   doing=shrinking_now(shrink_runs[0]))
+
+    count = [0]
     if workers == 1:
-        count = [0]
-
         def tick(k):
             count[0] += k
-            bar.update(count[0], len(result.found))
+            bar.update(count[0], len(result.found), doing=shrinking_now(shrink_runs[0]))
 
         try:
             with campaign_gc():
@@ -991,45 +1111,49 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
                 elif parts == 1:
                     _generative(port, oracle, result, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
                                 database=database, tick=tick, should_stop=lambda: False, versions=versions,
-                                shrink_budget=shrink_budget)
+                                shrink_budget=shrink_budget, shrinking=shrinking)
                 else:  # part K of a sharded campaign on one worker: its first stream (its only one with cases)
                     _generative(port, oracle, result, kinds=kinds, n=_stream_cases(n, first_stream, streams),
                                 seed=seed * 1000 + first_stream, mode=mode,
                                 keep_going=keep_going, database=database, tick=tick, should_stop=lambda: False,
-                                versions=versions, shrink_budget=shrink_budget)
+                                versions=versions, shrink_budget=shrink_budget, shrinking=shrinking)
         except KeyboardInterrupt:
             result.interrupted = True
     else:
         ctx = multiprocessing.get_context("fork")
         counter = ctx.Value("q", 0)
+        shrinking_value = ctx.Value("q", 0)
         stop = ctx.Event()
         _SHARED.update(port=port, oracle=oracle, kinds=kinds, n=n, seed=seed, mode=mode, keep_going=keep_going,
                        database=database, versions=versions, replay=items, workers=workers, counter=counter,
                        stop=stop, first_stream=first_stream, streams=streams if parts > 1 else workers,
-                       shrink_budget=shrink_budget)
+                       shrink_budget=shrink_budget, shrinking=shrinking_value)
         try:
             with _ctrl_c_as_a_flag() as ctrl_c, ctx.Pool(workers, initializer=_ignore_sigint) as pool:
-                pending = pool.map_async(_worker, range(workers))
-                while not pending.ready():
-                    pending.wait(0.2)
+                pending = [pool.apply_async(_worker, (w,)) for w in range(workers)]
+                stop_by = math.inf
+                while not all(p.ready() for p in pending) and time.monotonic() < stop_by:
+                    next(p for p in pending if not p.ready()).wait(0.2)
                     if ctrl_c and not result.interrupted:
                         # tell the workers to stop; they return what they have so far
                         result.interrupted = True
                         stop.set()
-                    bar.update(counter.value, None)
-                outs = pending.get()
+                        stop_by = time.monotonic() + STOP_GRACE
+                    count[0] = counter.value
+                    bar.update(count[0], None, doing=shrinking_now(shrinking_value.value))
+                outs = [p.get() for p in pending if p.ready()]
+                if len(outs) < workers:  # the pool's exit ends them
+                    print(f"{chr(10) if bar.enabled and bar.tty else ''}acconform: {workers - len(outs)} of {workers} workers had not stopped {STOP_GRACE:g} s "
+                          "after Ctrl-C (loading ACE, or inside one scene): ended", file=sys.stderr, flush=True)
         finally:
             _SHARED.clear()
         _merge(result, outs, mode, generative=items is None)
         if not keep_going:
             result.found = result.found[:1]
     if items is not None and result.found and not result.interrupted:
-        if progress and stand_in is not None:
-            kinds_found = len({f.signature for f in result.found})
-            print(f"shrinking the first difference of each kind ({kinds_found}) against the built-in port standing in "
-                  f"for ACE, up to {DEFAULT_BUDGET if shrink_budget is None else shrink_budget} smaller scenes each",
-                  file=sys.stderr, flush=True)
-        _shrink_replayed(result, port, stand_in, mode, DEFAULT_BUDGET if shrink_budget is None else shrink_budget)
+        t0 = time.perf_counter()
+        _shrink_replayed(result, port, stand_in, mode, budget, shrinking)
+        result.timings["shrink"] += time.perf_counter() - t0
     if failures_dir is not None:
         save_cases(result, failures_dir)
     result.elapsed = time.monotonic() - start

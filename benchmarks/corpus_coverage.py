@@ -472,6 +472,17 @@ def _trace_kernel(a, every: list[str], workers: int) -> list[str] | None:
     return greedy_kernel(arcs[1])
 
 
+def _coverage_installed() -> bool:
+    """coverage.py is not among acconform's requirements: its absence is refused once the arguments are
+    known good, so a wrong argument is named whether or not it is installed."""
+    try:
+        import coverage  # noqa: F401
+    except ImportError:
+        print("corpus_coverage: coverage.py is not installed (pip install coverage)", file=sys.stderr)
+        return False
+    return True
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--runtime", choices=("coreclr", "mono"), default="coreclr")
@@ -495,11 +506,6 @@ def main(argv=None) -> int:
                     help="with --write-kernel: per-record arcs kept here between runs (records already traced on "
                          "today's port/ are not traced again)")
     a = ap.parse_args(argv)
-    try:
-        import coverage  # noqa: F401
-    except ImportError:
-        print("corpus_coverage: coverage.py is not installed (pip install coverage)", file=sys.stderr)
-        return 2
     workers = max(1, a.workers)
     kfile = kernel_file(a.runtime, a.corpus)
     if a.write_kernel:
@@ -515,6 +521,8 @@ def main(argv=None) -> int:
                       file=sys.stderr)
                 return 2
             shards.add(str(found.resolve()))
+        if not _coverage_installed():
+            return 2
         oracle = RecordedOracle(corpus)
         every = sorted(oracle.index())
         if a.n is not None:
@@ -557,6 +565,8 @@ def main(argv=None) -> int:
         print(f"{kfile}: {len(keys)} records" + (f" ({a.keys_of}'s kernel)" if a.keys_of else
               f", taking every arc the {len(every)} records traced take") + f"; floor {floor:.1f} %")
     else:
+        if not _coverage_installed():
+            return 2
         keys = None
         if a.kernel:
             if not kfile.exists():

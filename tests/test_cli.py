@@ -58,6 +58,10 @@ def test_validate_names_a_missing_file(tmp_path):
     assert r.returncode == 2 and "nope.json: no such file" in r.stderr
 
 
-def test_no_subcommand_prints_help_and_exits_2():
+def test_no_command_is_a_usage_error_on_stderr_naming_the_commands():
+    # as argparse answers any missing required argument; `acconform --help` is the way to ask for help
     r = run_cli()
-    assert r.returncode == 2 and "usage:" in r.stdout
+    assert r.returncode == 2 and r.stdout == ""
+    usage, last = r.stderr.strip().splitlines()
+    assert usage.startswith("usage: acconform ")
+    assert last.startswith("acconform: error: choose a command: validate, check, ") and all(c in last for c in COMMANDS)

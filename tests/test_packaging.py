@@ -73,6 +73,18 @@ def test_ci_runs_the_readmes_set_up_commands_exactly_as_written():
     assert subprocess.run(["bash", "-n", str(ROOT / ".ci" / "run")]).returncode == 0
 
 
+def test_ci_runs_the_readmes_tests_in_a_venv_of_its_own_before_installing_anything_more():
+    """The README's test command must pass with only what `pip install .` installs: .ci/run makes its own
+    venv and runs it before it installs an extra (coverage.py, the oracle's pythonnet)."""
+    lines = [line.strip() for line in (ROOT / ".ci" / "run").read_text().splitlines() if not line.strip().startswith("#")]
+    venv = next(i for i, line in enumerate(lines) if line.startswith("python3 -m venv "))
+    setup, tests = lines.index("pip install . && acconform check"), lines.index('python -m pytest -n auto -m "not slow"')
+    installs = [i for i, line in enumerate(lines) if "pip install" in line and not line.startswith("echo") and i != setup]
+    assert venv < setup < tests
+    assert all(i < setup for i in installs if "--upgrade pip" in lines[i])
+    assert all(i > tests for i in installs if "--upgrade pip" not in lines[i]), [lines[i] for i in installs]
+
+
 @pytest.mark.slow
 def test_a_wheel_installed_acconform_runs_check_on_the_corpus_it_carries(tmp_path):
     """Non-editable: the wheel carries the corpus and Facade.cs; `check` runs from a fresh venv."""

@@ -21,6 +21,35 @@ def runtime_name(value: str) -> str:
     return value
 
 
+def positive_int(value: str) -> int:
+    """The type of a count that must be at least 1 (-j, --batch): anything else is the one line
+    argparse prints, naming the option and the value (exit 2)."""
+    import argparse
+
+    try:
+        n = int(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of at least 1, got {value!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return n
+
+
+def positive_seconds(value: str) -> float:
+    """The type of a time limit (--timeout): a finite number of seconds above 0. A limit of 0 or
+    less would fail every scene, and nan or inf none (a hang would hold the run forever)."""
+    import argparse
+    import math
+
+    try:
+        s = float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, got {value!r}") from None
+    if not (math.isfinite(s) and s > 0):
+        raise argparse.ArgumentTypeError(f"must be a finite number of seconds above 0, got {value}")
+    return s
+
+
 def add_runtime_argument(p, what: str) -> None:
     """``--runtime mono|coreclr``: `what` says what it chooses in this command; the default is the
     same everywhere (`runtime_or_default`)."""

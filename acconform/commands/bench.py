@@ -26,7 +26,9 @@ import sys
 def add_arguments(p) -> None:
     p.add_argument("-n", "--cases", type=int, default=200, help="scenes per kind (default 200)")
     p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
-    p.add_argument("--kinds", default=None, help="comma-separated scene kinds (default: all, terrain,bsp,obstacles,indoor)")
+    from ..protocol import CAMPAIGN_KINDS  # strategies.DEFAULT_KINDS, what check_kinds(None) runs
+
+    p.add_argument("--kinds", default=None, help=f"comma-separated scene kinds (default: all, {','.join(CAMPAIGN_KINDS)})")
     p.add_argument("--corpus", nargs="?", const="", default=None, metavar="DIR",
                    help="take the scenes (and the oracle's answers) from a recorded corpus (default: the committed "
                    "corpus of --runtime; what bench does when no ACE is configured)")
@@ -285,8 +287,10 @@ def run(args) -> int:
     if args.cases < 1:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
     if args.json:
+        from ..paths import refuse_output_over_input
         from ..runner import check_output_file
 
+        refuse_output_over_input(args.json, [args.corpus] if args.corpus else [], "--json")
         check_output_file(args.json, "--json")  # before the run, not after it
     run, impls = _implementation(args, kinds)
     if impls:

@@ -13,6 +13,7 @@ records of that runtime; ``-n`` replays a sample stratified by kind, drawn with 
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 
 GENERATIVE_CASES = 1000
@@ -25,7 +26,10 @@ def add_arguments(p) -> None:
                    help=f"scenes to draw (live; default {GENERATIVE_CASES}), or to sample from the corpus (default: all of it)")
     p.add_argument("--seed", type=int, default=None, help="campaign seed: the same seed draws the same scenes "
                    "(or the same corpus sample); default 0")
-    p.add_argument("--kinds", default=None, help="comma-separated scene kinds: terrain, bsp, obstacles, indoor, buildings, ticks (default: what the port supports)")
+    from ..protocol import CAMPAIGN_KINDS  # strategies.DEFAULT_KINDS, what check_kinds(None) runs
+
+    p.add_argument("--kinds", default=None, help=f"comma-separated scene kinds (default: all, {','.join(CAMPAIGN_KINDS)}; "
+                   "ticks:<world> draws tick scenes over one world)")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact", help="exact: float32 bit for bit; fast: port in doubles, ULP tolerance")
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")
@@ -38,7 +42,9 @@ def add_arguments(p) -> None:
                    "name it: a directory (default .hypothesis/acconform), or github:OWNER/REPO[/ARTIFACT], the ones "
                    "a GitHub Actions artifact holds (read-only) beside the default directory")
     p.add_argument("--no-database", action="store_true", help="do not read or write the saved failing scenes")
-    p.add_argument("-j", "--workers", type=int, default=0, help="worker processes (default: all cores)")
+    from . import positive_int
+
+    p.add_argument("-j", "--workers", type=positive_int, default=None, help="worker processes (default: all cores)")
     p.add_argument("--ace", default=None, help="ACE assembly for the live oracle (else ACE_ASSEMBLY or the config file)")
     from . import add_runtime_argument
 
@@ -73,20 +79,25 @@ def run(args) -> int:
         raise AcconformError(f"--cases must be at least 1, got {args.cases}")
     if args.shrink_budget is not None and args.shrink_budget < 0:
         raise AcconformError(f"--shrink-budget must be 0 (no shrinking) or more, got {args.shrink_budget}")
-    if args.workers < 0:
-        raise AcconformError(f"--workers must be 0 (all cores) or more, got {args.workers}")
-    if args.workers > default_workers():
+    if args.workers is not None and args.workers > default_workers():
         # each worker is a process (with its own ACE, live): more than the cores only slow the
         # campaign and multiply its memory, and the scenes a seed draws depend on the count
         raise AcconformError(f"--workers {args.workers}: this machine has {default_workers()} cores; more workers "
                              f"than cores only slow a campaign down (use -j {default_workers()} or fewer; "
-                             "-j 0: all cores)")
+                             "leave -j out for all cores)")
     # everything that could stop a finished campaign from being saved is checked before it starts
     # (the case directory itself is made only when a difference is written)
     check_failures_dir(args.failures)
     for path, option in ((args.json, "--json"), (args.junit, "--junit")):
         if path is not None:
             check_output_file(path, option)
+    from ..oracle import default_corpus
+    from ..paths import refuse_output_over_input
+
+    # a report never lands on the corpus a replay reads (case files are named case-<hash>.json, never a shard's name)
+    corpus = args.corpus if args.corpus is not None else default_corpus(args.runtime)
+    for path, option in ((args.json, "--json"), (args.junit, "--junit")):
+        refuse_output_over_input(path, [corpus], option)
     workers = args.workers or default_workers()
     port = make_backend(args.impl, args.mode, args.timeout)
     try:
@@ -134,9 +145,13 @@ def _campaign(args, port, kinds, workers) -> int:
         source += (f", a sample by kind, seed {seed}" if args.cases else "") + ")"
         _say(f"{who} vs {source}, mode {args.mode}, {runtime} arithmetic, {workers} worker{'s' if workers != 1 else ''}")
     else:
+        from ..runner import shard_cases
+
+        n = args.cases or GENERATIVE_CASES
+        cases = f"{shard_cases(n, args.shard, workers)} of {n} cases" if parts > 1 else f"{n} cases"
         _say(f"{who} vs {getattr(oracle, 'name', 'oracle')} oracle, mode {args.mode}, {runtime} arithmetic, "
              f"kinds {','.join(run_kinds)}, "
-             f"{args.cases or GENERATIVE_CASES} cases, seed {seed}, {workers} worker{'s' if workers != 1 else ''}")
+             f"{cases}, seed {seed}, {workers} worker{'s' if workers != 1 else ''}")
     if unsupported_kinds:
         _say(f"skipping kinds {','.join(unsupported_kinds)}: the implementation's handshake does not list them")
     # replayed differences are shrunk against the built-in port standing in for ACE (where it
@@ -146,14 +161,23 @@ def _campaign(args, port, kinds, workers) -> int:
                           mode=args.mode, keep_going=args.keep_going, failures_dir=args.failures,
                           database=database, workers=workers, progress=not args.no_progress, replay=replay,
                           stand_in=stand_in, shard=args.shard, shrink_budget=args.shrink_budget)
+    campaign_started = time.monotonic() - result.elapsed
     result.skipped.update(presampled)
     result.cases += sum(presampled.values())
     if result.found and not result.interrupted:  # group the differences by their first divergence
-        from ..explain import triage
+        try:
+            from ..explain import triage
 
-        triage(result.found, port, args.mode, runtime, None if args.no_progress else _say)
+            triage(result.found, port, args.mode, runtime, None if args.no_progress else _say)
+        except KeyboardInterrupt:  # the cases are written: the summary says what was found, ungrouped
+            result.interrupted = True
     bad = bad + result.unreadable
-    for line in console_summary(result, bad, keep_going=args.keep_going):
+    lines = console_summary(result, bad, keep_going=args.keep_going)
+    wall = time_spent(result, getattr(oracle, "load_seconds", {}), campaign_started)
+    if wall is not None:  # where the wall time went, under the first line
+        lines[1:1] = [wall_line(result, workers, "implementation" if args.impl else "port",
+                                "the corpus" if replay is not None else "ACE")]
+    for line in lines:
         print(line, flush=True)
     sampled = replay is None or args.cases is not None  # replaying the whole corpus draws nothing
     campaign = Campaign("recorded" if replay is not None else "live", args.mode, seed if sampled else None, run_kinds,
@@ -179,6 +203,45 @@ def _campaign(args, port, kinds, workers) -> int:
     if result.unreadable and not args.keep_going:
         raise AcconformError(f"{result.unreadable[0]} (--keep-going skips unreadable records)")
     return 1 if result.found else 0
+
+
+def time_spent(result, loaded: dict, campaign_started: float) -> float | None:
+    """Add to `result.timings` what came before and after the campaign: "startup" (the process's
+    start to the campaign's, less ACE's loading), "ace_load" (`loaded`: the seconds of each step of
+    loading ACE in this process, oracle/loading.py), "after" (the campaign's end to now) and "wall"
+    (the process's start to now). Returns the wall seconds, or None where the process's start time
+    cannot be read (timed.process_age)."""
+    from ..timed import process_age
+
+    age = process_age()
+    if age is None:
+        return None
+    now = time.monotonic()
+    t = result.timings
+    t["ace_load"] += sum(loaded.values())
+    t["startup"] = max(campaign_started - (now - age) - sum(loaded.values()), 0.0)
+    t["after"] = max(now - campaign_started - result.elapsed, 0.0)
+    t["wall"] = age
+    return age
+
+
+def wall_line(result, workers: int, tested: str, reference: str) -> str:
+    """Where the wall time went (`time_spent`'s figures and the campaign's own: drawing, each side,
+    comparing, shrinking; what never ran, as a replay's drawing, is left out). On several workers
+    the campaign's figures are worker-seconds, summed."""
+    t = result.timings
+    loading = [("ACE loading", t["ace_load"])] if t["ace_load"] > 0 else []
+    inside = [(what, t[k]) for what, k in (("drawing", "draw"), (tested, "port"), (reference, "oracle"),
+                                           ("comparing", "compare"), ("shrinking", "shrink")) if t[k] > 0]
+    if workers == 1:
+        parts = [("start-up", t["startup"])] + loading + inside
+        parts += [("the runner", result.elapsed - sum(x for _, x in inside)), ("after the campaign", t["after"])]
+        return f"where the {t['wall']:.1f} s went: " + ", ".join(f"{what} {x:.1f} s" for what, x in parts)
+    spent = loading + inside
+    spent.append(("the runner and waiting", workers * result.elapsed - sum(x for _, x in spent)))
+    return (f"where the {t['wall']:.1f} s went: start-up {t['startup']:.1f} s, the campaign {result.elapsed:.1f} s on "
+            f"{workers} workers (worker-seconds: " + ", ".join(f"{what} {x:.1f} s" for what, x in spent)
+            + f"), after the campaign {t['after']:.1f} s")
 
 
 def _plural(n: int, word: str) -> str:
@@ -226,7 +289,10 @@ def console_summary(result, bad, keep_going: bool) -> list[str]:
         f = next((x for x in found if x.shrunk), found[0])  # one shrunk case per group
         known = f" -- known: ACE differs from retail here ({f.known})" if f.known else ""
         out.append(f"  {key}{known}")
-        out.append(f"    {f.path} ({shrink_label(f.case.shrink)}; {f.case.scene.name or 'scene'})")
+        # its kind as "differences by kind" counts it: what the (shrunk) scene holds; its name is the
+        # strategy that drew it, and shrinking can take away what made it that kind
+        named = f", scene {f.case.scene.name!r}" if f.case.scene.name else ""
+        out.append(f"    {f.path} ({shrink_label(f.case.shrink)}; kind {scene_kind(f.case.scene)}{named})")
         out += [f"      {line}" for line in f.case.differences]
         if len(found) > 1:
             out.append(f"    + {_plural(len(found) - 1, 'more case')} in this group (listed in --json)")
@@ -253,13 +319,14 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
     passes over counted in `presampled`."""
     from ..errors import AcconformError, OracleUnavailable
     from ..oracle import PerProcessOracle, default_corpus, get_oracle, live_configured
-    from ..oracle.recorded import CorpusMissing, RecordedOracle
-    from ..runner import scene_filter
+    from ..oracle.recorded import CorpusMissing, RecordedOracle, shards
+    from ..runner import Status, scene_filter
 
     if live_configured(args.ace):
+        say = None if args.no_progress else _say  # what loading ACE is doing (oracle/loading.py)
         if workers > 1:
-            return PerProcessOracle(args.ace, args.runtime), None, []
-        return get_oracle(args.ace, args.runtime), None, []
+            return PerProcessOracle(args.ace, args.runtime, say), None, []
+        return get_oracle(args.ace, args.runtime, say=say), None, []
     # replaying: options that only a generative campaign uses are refused, not ignored
     one_world = [k for k in kinds if ":" in k]
     if one_world:
@@ -272,12 +339,16 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
         raise AcconformError("--seed draws the corpus sample of -n; replaying the whole corpus uses no seed "
                              "(add -n N, or drop --seed)")
     corpus = Path(args.corpus) if args.corpus is not None else default_corpus(args.runtime)
+    # one line while the shards load (redrawn on a terminal), then one saying what was read
+    status = Status(not args.no_progress, prefix="acconform check: recorded corpus: ")
+    t0 = time.monotonic()
     try:
-        oracle = RecordedOracle(corpus, keep_going=args.keep_going,
-                                progress=None if args.no_progress else (lambda m: _say(f"recorded corpus: {m}")))
+        oracle = RecordedOracle(corpus, keep_going=args.keep_going, progress=status.say)
     except CorpusMissing as e:
         raise OracleUnavailable(f"nothing to check against: no ACE assembly is configured (pass --ace, set "
                                 f"ACE_ASSEMBLY or the config file) and {e}") from None
+    status.done(f"{len(oracle)} records from {len(shards(corpus))} shards of {corpus} read in "
+                f"{time.monotonic() - t0:.1f} s")
     if args.runtime is not None and not oracle.select(runtime=args.runtime):
         raise AcconformError(f"--runtime {args.runtime}: the recorded corpus {corpus} holds no records of that "
                              f"runtime (it holds {', '.join(oracle.runtimes()) or 'none'})")

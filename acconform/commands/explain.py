@@ -31,12 +31,12 @@ def add_arguments(p) -> None:
 
 
 def load_case(path: str):
-    from ..case import Case, load_document
+    from ..case import CASE_FORMAT, Case, load_document
     from ..errors import InvalidScene
 
     doc = load_document(path)
     if not isinstance(doc, Case):
-        raise InvalidScene("format", "expected a case file (\"acconform.case/2\"); use `acconform show` for other files", path)
+        raise InvalidScene("format", f"expected a case file ({CASE_FORMAT!r}); use `acconform show` for other files", path)
     return doc
 
 
@@ -66,6 +66,9 @@ def explain_case(args, doc, mode):
 def run(args) -> int:
     from ..explain import render
 
+    from ..paths import refuse_output_over_input
+
+    refuse_output_over_input(args.html, [args.file], "--html")  # the page never replaces the case it explains
     doc = load_case(args.file)
     mode = args.mode or doc.mode
     if args.html is not None:

@@ -8,12 +8,12 @@ parts once; a live campaign keeps one case per kind of difference, the first par
 merged summary is what one unsharded run writes: its counts added, its differences listed once.
 Exit 0 when no part found a difference, 1 when one did, 2 (one line) on bad input: a summary that
 is missing or not a `check --shard` summary, parts of different campaigns, a part given twice, a
-part missing, or a case file a summary names that is gone.
+part missing, a case file a summary names that is gone, or an output that cannot be written or
+is one of the parts (nothing is written then).
 """
 
 from __future__ import annotations
 
-import json
 import shutil
 from collections import Counter
 from pathlib import Path
@@ -30,15 +30,18 @@ def add_arguments(p) -> None:
 
 
 def _load(path: Path) -> dict:
+    from .. import deep
     from ..errors import AcconformError
     from ..report import SUMMARY_FORMAT
 
     try:
-        doc = json.loads(path.read_text())
+        doc = deep.loads(path.read_text())
     except FileNotFoundError:
         raise AcconformError(f"{path}: no such summary") from None
     except (OSError, UnicodeDecodeError) as e:
         raise AcconformError(f"{path}: cannot read it ({getattr(e, 'strerror', None) or e})") from None
+    except deep.TooDeep as e:
+        raise e.in_file(str(path)) from None
     except ValueError as e:
         raise AcconformError(f"{path}: not JSON ({e})") from None
     if not isinstance(doc, dict) or doc.get("format") != SUMMARY_FORMAT:
@@ -106,7 +109,9 @@ def merge(docs: list[tuple[Path, dict]], failures: Path) -> dict:
             kept_kinds.add(kind)
             cases.append(c)
 
-    failures.mkdir(parents=True, exist_ok=True)
+    from ..runner import check_writable
+
+    check_writable(failures, "--failures")  # made now, when the parts are known to merge
     merged_cases = []
     for c in cases:
         c = dict(c)
@@ -155,8 +160,13 @@ def merge(docs: list[tuple[Path, dict]], failures: Path) -> dict:
 
 
 def run(args) -> int:
+    from ..paths import refuse_output_over_input
     from ..report import write_json
+    from ..runner import check_output_file
 
+    refuse_output_over_input(args.json, args.summaries, "--json")
+    if args.json is not None:
+        check_output_file(args.json, "--json")
     docs = [(Path(p), _load(Path(p))) for p in args.summaries]
     out = merge(docs, Path(args.failures))
     c = out["cases"]

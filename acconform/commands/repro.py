@@ -27,14 +27,14 @@ def add_arguments(p) -> None:
 
 
 def run(args) -> int:
-    from ..case import Case, load_document
+    from ..case import CASE_FORMAT, Case, load_document
     from ..compare import compare, render
     from ..errors import InvalidScene
-    from ..runner import guarded
+    from ..runner import guarded, tested_label
 
     doc = load_document(args.file)
     if not isinstance(doc, Case):
-        raise InvalidScene("format", "expected a case file (\"acconform.case/2\"); use `acconform show` for other files", args.file)
+        raise InvalidScene("format", f"expected a case file ({CASE_FORMAT!r}); use `acconform show` for other files", args.file)
     mode = args.mode or doc.mode
     runtime = _runtime(args, doc)
     backend, said = _backend(args, doc, mode)
@@ -58,7 +58,7 @@ def run(args) -> int:
         print("no longer fails: every field agrees")
         return 0
     print(f"still fails: {len(diffs)} field{'s' if len(diffs) != 1 else ''} differ")
-    for line in render(diffs):
+    for line in render(diffs, tested_label(backend)):  # impl=... for an implementation under test
         print(f"  {line}")
     return 1
 
@@ -123,8 +123,6 @@ def _backend(args, doc, mode):
         return make_backend(None, mode), said
     name = made_by.handshake.get("name", "") or made_by.command
     cwd = made_by.cwd if made_by.cwd and Path(made_by.cwd).is_dir() else None
-    if not args.timeout > 0:
-        raise AcconformError(f"--timeout must be positive, got {args.timeout:g}")
     try:
         backend = Implementation(made_by.command, mode=mode, timeout=args.timeout, cwd=cwd)
     except ImplementationError as e:

@@ -182,13 +182,16 @@ def describe(doc) -> list[str]:
     assert isinstance(doc, Case)
     v = doc.versions
     out = [f"case: mode {doc.mode}, seed {doc.seed or '?'}, acconform {v.acconform or '?'}, ACE {v.ace or '?'} on {v.runtime or '?'}"]
+    from ..runner import tested_label
+
+    tested = tested_label(doc.implementation)  # "impl" for an implementation under test, else "port"
     if doc.scene.ticks is not None:
         from ..compare import compare, first_tick_difference
 
         first = first_tick_difference(compare(doc.port, doc.oracle, doc.mode))
         if first is not None:
             tick = first.field.split("]", 1)[0].split("[", 1)[1]
-            out.append(f"first differing tick: {tick} of {len(doc.scene.ticks.steps)}: {first}")
+            out.append(f"first differing tick: {tick} of {len(doc.scene.ticks.steps)}: {first.render(tested)}")
     from .check import shrink_label
 
     impl = doc.implementation
@@ -201,4 +204,4 @@ def describe(doc) -> list[str]:
     out.append(shrink_label(doc.shrink))
     out.append(f"{len(doc.differences)} difference{'s' if len(doc.differences) != 1 else ''}:")
     out += [f"  {d}" for d in doc.differences]
-    return out + describe_scene(doc.scene) + describe_outcome(doc.port, "port") + describe_outcome(doc.oracle, "oracle")
+    return out + describe_scene(doc.scene) + describe_outcome(doc.port, tested) + describe_outcome(doc.oracle, "oracle")

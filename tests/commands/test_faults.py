@@ -150,7 +150,7 @@ def test_progress_is_printed_while_the_corpus_loads(tmp_path, no_ace):
     r = cli("check", "-n", "3", "--seed", "1", "--failures", str(tmp_path / "f"))
     assert r.returncode == 0, r.stderr
     lines = r.stderr.splitlines()
-    assert lines[0].startswith("acconform check: recorded corpus: loading ")
+    assert lines[0].startswith("acconform check: recorded corpus: ") and " records from " in lines[0]  # piped: one line
 
 
 def test_ctrl_c_prints_a_partial_summary_and_no_worker_lines(tmp_path, no_ace):
@@ -228,7 +228,7 @@ def test_repro_gives_no_verdict_when_the_implementation_a_case_names_does_not_st
 
 
 def test_stress_refuses_a_time_limit_that_is_not_positive():
-    one_line_exit_2(cli("stress", "-n", "1", "--scene-timeout", "0"), "--scene-timeout must be positive")
+    one_line_exit_2(cli("stress", "-n", "1", "--scene-timeout", "0"), "--scene-timeout", "above 0, got 0")
 
 
 # ------------------------------------------------------------------ the fault catalogue (issue 23)
@@ -306,8 +306,25 @@ def read_only(directory: Path, argv: list[str]) -> list[str]:
     return ["unshare", "-rm", "sh", "-c", 'mount -o bind,ro "$0" "$0" && cd "$PWD" && exec "$@"', str(directory), *argv]
 
 
+def on_a_full_disk(directory: Path, argv: list[str], full: bool = True) -> list[str]:
+    """`argv` run with a 64 KiB tmpfs mounted on `directory`, filled up unless not `full` (then it
+    fills as `argv` writes), in a user namespace as `read_only` makes one (a mount needs no root there)."""
+    if not shutil.which("unshare") or subprocess.run(["unshare", "-rm", "true"], capture_output=True).returncode:
+        pytest.skip("no `unshare -rm`: no way to mount a small full disk here")
+    fill = '{ cat /dev/zero > "$0/fill"; } 2>/dev/null; ' if full else ""
+    return ["unshare", "-rm", "sh", "-c", f'mount -t tmpfs -o size=64k tmpfs "$0" && {fill}cd "$PWD" && exec "$@"',
+            str(directory), *argv]
+
+
 def acconform(*args) -> list[str]:
     return [sys.executable, "-m", "acconform.cli", *map(str, args)]
+
+
+def to_dev_full(argv: list[str]):
+    """`argv` with its stdout the device that is always full (`... > /dev/full`)."""
+    with open("/dev/full", "w") as full:
+        r = subprocess.run(argv, stdout=full, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    return subprocess.CompletedProcess(argv, r.returncode, "", r.stderr)
 
 
 def run_cli(argv, cwd=None):
@@ -320,6 +337,37 @@ def closed_pipe(argv):
     p.stdout.close()
     err = p.stderr.read()
     return subprocess.CompletedProcess(argv, p.wait(), "", err)
+
+
+def parts(t: Path) -> tuple[Path, Path]:
+    """The --json summaries of the two parts of one sharded campaign that found nothing."""
+    part = {"format": "acconform.summary/1", "ok": True, "interrupted": False, "oracle": "recorded", "mode": "exact",
+            "seed": 1, "kinds": ["bsp"], "implementation": {}, "versions": {"runtime": "coreclr"},
+            "shard": {"part": 1, "parts": 2, "cases_asked": None, "workers": 1},
+            "cases": {"run": 1, "compared": 1, "skipped": {}}, "differences": {"cases": []}, "timings": {}}
+    (t / "p1.json").write_text(json.dumps(part))
+    (t / "p2.json").write_text(json.dumps(dict(part, shard=dict(part["shard"], part=2))))
+    return t / "p1.json", t / "p2.json"
+
+
+def record_with(path: Path, edit) -> Path:
+    """A one-shard corpus at `path`: four recorded terrain scenes, the second's record changed by `edit(doc)`."""
+    path.mkdir()
+    lines = [line for _, line in zip(range(4), gzip.open(next(s for s in shards(default_corpus())
+                                                              if s.name.startswith("terrain")), "rt"))]
+    doc = json.loads(lines[1])
+    edit(doc)
+    lines[1] = json.dumps(doc) + "\n"
+    with gzip.open(path / "terrain-0000.jsonl.gz", "wt") as f:
+        f.writelines(lines)
+    return path
+
+
+def closes_its_output(path: Path) -> str:
+    """An implementation that writes its handshake, closes its stdout and lives on: the --impl command."""
+    path.write_text("import json, os, sys, time\nfrom acconform.protocol import handshake\n"
+                    "print(json.dumps(handshake()), flush=True)\nos.close(1)\ntime.sleep(60)\n")
+    return f"{sys.executable} {path}"
 
 
 def json_directory_removed(tmp: Path):
@@ -397,6 +445,72 @@ CATALOGUE = {
     "negative workers": lambda t: (run_cli(acconform("check", "-j", "-3")), 2, ["--workers", "-3"]),
     "a negative shrink budget": lambda t: (run_cli(acconform("check", "--shrink-budget", "-1")), 2, ["--shrink-budget"]),
     "--database while replaying": lambda t: (run_cli(acconform("check", "--database", "db")), 2, ["--database"]),
+    # issue 42: tracebacks
+    "merge --failures in a read-only directory": lambda t: (
+        run_cli(read_only(t, acconform("merge", *parts(t), "--failures", t / "f"))), 2,
+        ["--failures", "cannot write there", "Read-only file system"]),
+    "merge --json in a read-only directory": lambda t: (
+        run_cli(read_only(t, acconform("merge", *parts(t), "--json", t / "m.json"))), 2,
+        ["--json", "cannot write there", "Read-only file system"]),
+    "record --out on a full disk": lambda t: (
+        run_cli(on_a_full_disk(t, acconform("record", "-n", 3, "--out", t / "corpus"))), 2,
+        ["--out", "cannot write there", "No space left on device"]),
+    "schema scene > /dev/full": lambda t: (
+        to_dev_full(acconform("schema", "scene")), 2, ["cannot write to standard output", "No space left"]),
+    "show scene.json > /dev/full": lambda t: (
+        to_dev_full(acconform("show", EXAMPLES / "flat_walk.json")), 2, ["cannot write to standard output"]),
+    "check --corpus small > /dev/full": lambda t: (
+        to_dev_full(acconform("check", "--corpus", record_with(t / "c", lambda d: None), "--no-progress",
+                              "--failures", t / "f")), 2, ["acconform check: error: cannot write to standard output"]),
+    # data lost
+    "merge P1 P2 --json P1": lambda t: (
+        run_cli(acconform("merge", *parts(t), "--json", t / "p1.json")), 2, ["--json", "p1.json: is the input"]),
+    "record F --out F": lambda t: (
+        run_cli(acconform("record", scene_with(t / "s.json"), "--out", t / "s.json")), 2, ["--out", "is the input"]),
+    "bench --json into the corpus it reads": lambda t: (
+        run_cli(acconform("bench", "-n", 1, "--corpus", record_with(t / "c", lambda d: None),
+                          "--json", t / "c" / "terrain-0000.jsonl.gz")), 2, ["--json", "inside the input directory"]),
+    # hangs
+    "an implementation that closes its output and lives on": lambda t: (
+        run_cli(acconform("run", EXAMPLES / "flat_walk.json", "--timeout", 3, "--impl", closes_its_output(t / "c.py"))),
+        0, ["ImplementationCrash", "closed its output and did not exit within 3 s"]),
+    # wrong exit codes
+    "a record whose outcome has a NaN origin": lambda t: (
+        run_cli(acconform("check", "--corpus", record_with(t / "c", lambda d: d["outcome"]["origin"].__setitem__(
+            0, float("nan"))), "--no-progress", "--failures", t / "f")), 2,
+        ["terrain-0000.jsonl.gz line 2", "outcome.origin[0]", "nan"]),
+    "a record with no outcome": lambda t: (
+        run_cli(acconform("check", "--corpus", record_with(t / "c", lambda d: d.pop("outcome")), "--no-progress",
+                          "--failures", t / "f")), 2, ["terrain-0000.jsonl.gz line 2", "outcome: missing required field"]),
+    # unclear
+    "bare acconform": lambda t: (run_cli(acconform()), 2, ["choose a command", "validate, check"]),
+    "merge p1.json bad_nested.json": lambda t: (
+        run_cli(acconform("merge", parts(t)[0], nested_json(t / "bad_nested.json", 30_000))), 2,
+        ["bad_nested.json", "nested more than 20,000"]),
+    # accepted silently
+    **{f"check {' '.join(o)}": (lambda o: lambda t: (run_cli(acconform("check", *o)), 2, [o[0], o[1]]))(o)
+       for o in (("-j", "0"), ("-j", "-2"), ("--timeout", "0"), ("--timeout", "-1"), ("--timeout", "nan"),
+                 ("--timeout", "inf"))},
+    "bench --timeout 0": lambda t: (run_cli(acconform("bench", "--timeout", 0)), 2, ["--timeout", "above 0", "got 0"]),
+    "run --timeout 0": lambda t: (
+        run_cli(acconform("run", EXAMPLES / "flat_walk.json", "--timeout", 0)), 2, ["--timeout", "above 0"]),
+    "record --batch 0": lambda t: (run_cli(acconform("record", "-n", 1, "--batch", 0)), 2, ["--batch", "got 0"]),
+    "record --batch -1": lambda t: (run_cli(acconform("record", "-n", 1, "--batch", -1)), 2, ["--batch", "got -1"]),
+    **{f"{command} a case with {field} {value!r}": (lambda command, field, value: lambda t: (
+        run_cli(acconform(command, case_with(t / "c.json", **{field: value}))), 2, ["c.json", field, repr(value)]))(
+        command, field, value) for command in ("validate", "show") for field, value in (("mode", "weird"), ("seed", "zero"))},
+    **{f"{command} a case recorded on java 8": (lambda command: lambda t: (
+        run_cli(acconform(command, case_with(t / "c.json", versions={"acconform": "", "ace": "", "runtime": "java 8"}))),
+        2, ["c.json", "versions.runtime", "'java 8'"]))(command) for command in ("validate", "show")},
+    **{f"{command} a record holding a double": (lambda command: lambda t: (
+        run_cli(acconform(command, record_with(t / "c", lambda d: d["outcome"]["origin"].__setitem__(
+            0, 0.30000000000000004)) / "terrain-0000.jsonl.gz")), 2,
+        ["line 2", "outcome.origin[0]", "0.30000000000000004 is not a float32"]))(command) for command in ("validate", "show")},
+    **{f"{command} a 0-byte shard": (lambda command: lambda t: (
+        (t / "terrain-0000.jsonl.gz").write_bytes(b""), run_cli(acconform(command, t / "terrain-0000.jsonl.gz")))[1:]
+        + (2, ["terrain-0000.jsonl.gz", "empty"]))(command) for command in ("validate", "show")},
+    "a BSP 20,001 levels deep": lambda t: (
+        run_cli(acconform("validate", deep_bsp_scene(t / "deep.json", 20_001))), 2, ["deep.json", "nested more than 20,000"]),
 }
 
 
@@ -423,7 +537,7 @@ def test_no_fault_in_the_catalogue_prints_a_traceback(tmp_path, no_ace):
         for w in words:
             assert w in text, (name, w, text)
         assert "restarted" not in r.stderr, name
-    assert len(results) == len(CATALOGUE) >= 23
+    assert len(results) == len(CATALOGUE) >= 59
 
 
 @pytest.mark.anchor("BSPNODE::find_walkable")
@@ -540,3 +654,136 @@ def test_check_into_a_pipe_its_reader_closed_keeps_the_verdicts_exit_code(tmp_pa
     r = closed_pipe(acconform("check", "--corpus", corpus, "--no-progress", "--failures", tmp_path / "f"))
     assert r.returncode == 1 and "Traceback" not in r.stderr and "BrokenPipe" not in r.stderr, r.stderr
     assert list((tmp_path / "f").glob("case-*.json"))  # the case is written all the same
+
+
+# ------------------------------------------------------------------ issue 42: a test per class of fault
+
+
+def test_writing_to_a_full_stdout_is_one_line_and_exit_2_whatever_the_command():
+    # what is still buffered when the command ends fails too: at the explicit flush, not at exit
+    for argv in (("schema", "scene"), ("schema", "outcome", "--fields"), ("show", EXAMPLES / "flat_walk.json"),
+                 ("validate", EXAMPLES / "flat_walk.json")):
+        r = to_dev_full(acconform(*argv))
+        assert r.returncode == 2 and "Traceback" not in r.stderr and "Exception ignored" not in r.stderr, (argv, r.stderr)
+        assert r.stderr.strip().splitlines()[-1] == (f"acconform {argv[0]}: error: cannot write to standard output "
+                                                     "(No space left on device); its output is lost")
+
+
+def test_a_corpus_writer_on_a_disk_that_fills_keeps_its_finished_shards_and_leaves_no_half_shard(tmp_path):
+    script = tmp_path / "fill.py"
+    script.write_text(f"""
+import gzip, json, sys
+from acconform.case import Record
+from acconform.errors import AcconformError
+from acconform.oracle.recorded import CorpusWriter
+lines = [l for _, l in zip(range(200), gzip.open({str(shards(default_corpus())[0])!r}, "rt"))]
+try:
+    with CorpusWriter(sys.argv[1] + "/corpus", shard_size=5) as w:
+        for line in lines:
+            w.add(Record.from_json(json.loads(line)))
+except AcconformError as e:
+    print(e)
+from acconform.oracle.recorded import RecordedOracle
+from pathlib import Path
+print(sorted(p.name for p in Path(sys.argv[1], "corpus").iterdir()))
+print(len(RecordedOracle(sys.argv[1] + "/corpus")))
+""")
+    d = tmp_path / "disk"
+    d.mkdir()
+    r = run_cli(on_a_full_disk(d, [sys.executable, script, d], full=False))
+    assert r.returncode == 0, r.stderr
+    said, names, kept = r.stdout.strip().splitlines()
+    assert said.startswith(f"{d}/corpus: cannot write a shard (No space left on device); the shards finished are kept")
+    names = json.loads(names.replace("'", '"'))  # the printed list of the corpus's files
+    assert names and all(n.endswith(".jsonl.gz") for n in names)  # no half-written .tmp left
+    assert int(kept) == 5 * len(names) < 200
+
+
+def test_no_command_writes_over_one_of_its_inputs(tmp_path):
+    from acconform.errors import AcconformError
+    from acconform.paths import refuse_output_over_input
+
+    p1, p2 = parts(tmp_path)
+    before = p1.read_bytes()
+    one_line_exit_2(cli("merge", str(p1), str(p2), "--json", str(p1)), "--json", "is the input", "nothing was done")
+    assert p1.read_bytes() == before
+    (tmp_path / "link.json").symlink_to(p2)
+    os.link(p2, tmp_path / "hard.json")
+    corpus = record_with(tmp_path / "corpus", lambda d: None)
+    for output, inputs, says in ((p1, [p1, p2], "is the input"), (tmp_path / "link.json", [p2], "is the input"),
+                                 (tmp_path / "hard.json", [p2], "is the input"),
+                                 (tmp_path / "." / "p1.json", [p1], "is the input"),
+                                 (corpus / "terrain-0000.jsonl.gz", [corpus], "is inside the input directory"),
+                                 (corpus / "new" / "summary.json", [corpus], "is inside the input directory")):
+        with pytest.raises(AcconformError, match=f"--json {output}: {says}"):
+            refuse_output_over_input(output, inputs, "--json")
+    refuse_output_over_input(None, [p1], "--json")  # not asked for
+    refuse_output_over_input(tmp_path / "merged.json", [p1, p2, corpus], "--json")
+    refuse_output_over_input(tmp_path, [p1], "--out")  # a directory holding an input: record adds new shards there
+
+
+def test_an_implementation_that_closes_its_output_and_lives_on_gets_a_verdict_within_its_timeout(tmp_path):
+    from acconform.protocol import CRASH, Implementation
+    from acconform.scene import Scene
+
+    impl = Implementation(closes_its_output(tmp_path / "closer.py"), timeout=1.0, start_timeout=10)
+    try:
+        t0 = time.monotonic()
+        outcome = impl.run(Scene.loads((EXAMPLES / "flat_walk.json").read_text()))
+        took = time.monotonic() - t0
+    finally:
+        impl.close()
+    assert outcome.error.startswith(f"{CRASH}: the process closed its output and did not exit within 1 s")
+    assert took < 1.0 + 5, took  # its timeout, and a fresh process's start for the next scene
+
+
+def test_a_record_without_a_readable_outcome_is_unreadable_not_a_difference(tmp_path, no_ace):
+    for name, edit, says in (("nan", lambda d: d["outcome"]["origin"].__setitem__(0, float("nan")),
+                              "outcome.origin[0]: expected a finite number, got nan"),
+                             ("none", lambda d: d.pop("outcome"), "outcome: missing required field")):
+        corpus = record_with(tmp_path / name, edit)
+        failures = tmp_path / f"f-{name}"
+        r = cli("check", "--corpus", str(corpus), "--no-progress", "--failures", str(failures))
+        one_line_exit_2(r, f"{corpus}/terrain-0000.jsonl.gz line 2: {says}", "--keep-going")
+        assert not failures.exists()  # no case written: nothing was compared
+        r = cli("check", "--corpus", str(corpus), "--no-progress", "--keep-going", "--failures", str(failures))
+        assert r.returncode == 0 and "3 compared" in r.stdout and "skipped 1 unreadable corpus record" in r.stdout, r.stdout
+
+
+@pytest.mark.parametrize("argv, says", [
+    (("check", "-j", "0"), "argument -j/--workers: must be at least 1, got 0"),
+    (("check", "--timeout", "0"), "argument --timeout: must be a finite number of seconds above 0, got 0"),
+    (("check", "--timeout", "nan"), "argument --timeout: must be a finite number of seconds above 0, got nan"),
+    (("check", "--timeout", "inf"), "argument --timeout: must be a finite number of seconds above 0, got inf"),
+    (("check", "--timeout", "soon"), "argument --timeout: expected a number of seconds, got 'soon'"),
+    (("bench", "--timeout", "-1"), "argument --timeout: must be a finite number of seconds above 0, got -1"),
+    (("record", "-n", "1", "--batch", "0"), "argument --batch: must be at least 1, got 0"),
+    (("record", "-n", "1", "--batch", "x"), "argument --batch: expected a whole number of at least 1, got 'x'"),
+])
+def test_an_option_outside_its_domain_is_refused_by_name(argv, says, no_ace):
+    one_line_exit_2(cli(*argv), says)
+
+
+def test_a_value_outside_its_domain_in_a_file_is_refused_by_name(tmp_path):
+    from acconform.case import iter_documents, load_document
+    from acconform.codec import parse_json_text
+    from acconform.deep import MAX_DEPTH, TooDeep
+    from acconform.errors import InvalidScene
+
+    for fields, says in (({"mode": "weird"}, "mode: expected one of exact, fast, got 'weird'"),
+                         ({"seed": "zero"}, "seed: expected a whole number"),
+                         ({"versions": {"runtime": "java 8"}}, "versions.runtime: unknown runtime 'java 8'")):
+        with pytest.raises(InvalidScene, match=says):
+            load_document(case_with(tmp_path / "c.json", **fields))
+    for fields in ({"mode": "fast"}, {"seed": "-12"}, {"seed": ""},
+                   {"versions": {"runtime": "coreclr .NET 10.0.12; mono 6.8.0.105"}}, {"versions": {"runtime": ""}}):
+        load_document(case_with(tmp_path / "c.json", **fields))
+    shard = record_with(tmp_path / "c", lambda d: d["outcome"]["velocity"].__setitem__(2, 0.1 + 0.2)) / "terrain-0000.jsonl.gz"
+    with pytest.raises(InvalidScene, match=r"line 2: outcome.velocity\[2\]: 0.30000000000000004 is not a float32"):
+        list(iter_documents(shard))
+    (tmp_path / "empty.jsonl.gz").write_bytes(b"")
+    with pytest.raises(InvalidScene, match="empty.jsonl.gz: empty: no document in it"):
+        list(iter_documents(tmp_path / "empty.jsonl.gz"))
+    parse_json_text("[" * MAX_DEPTH + "]" * MAX_DEPTH)  # as deep as the README allows: read
+    with pytest.raises(TooDeep):
+        parse_json_text("[" * (MAX_DEPTH + 1) + "]" * (MAX_DEPTH + 1))

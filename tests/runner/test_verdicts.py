@@ -73,7 +73,7 @@ def test_a_case_made_by_an_implementation_names_it_and_repro_replays_on_it(corpu
     path = r.found[0].path
     case = load_document(path)
     assert case.implementation.command == command and case.implementation.handshake["name"] == "planted"
-    assert case.implementation.cwd and json.loads(path.read_text())["format"] == "acconform.case/2"
+    assert case.implementation.cwd and json.loads(path.read_text())["format"] == "acconform.case/3"
     out = cli("repro", str(path))
     assert out.returncode == 1, out.stdout + out.stderr
     assert f"replaying on the implementation the case names: {command!r}" in out.stdout
@@ -89,6 +89,7 @@ def test_a_case_1_file_replays_on_the_port_saying_it_cannot_know_which_implement
     doc = Case(scene, dataclasses.replace(answer, ok=not answer.ok), answer, ("ok: differs",),
                versions=Versions("0.1.0", "test", "mono 6.8.0.105")).to_json()
     doc["format"] = "acconform.case/1"
+    doc["port"] = doc.pop("impl")  # before case/3 the tested side's outcome was "port"
     del doc["shrunk"]
     (tmp_path / "old.json").write_text(json.dumps(doc))
     out = cli("repro", str(tmp_path / "old.json"))
