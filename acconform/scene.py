@@ -994,10 +994,6 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         check_landblock(begin, scene.mover.begin.cell)
         _check_defined(begin, scene.mover.begin.cell, env_cells, "the mover starts in it (CurCell = LScape.get_landcell)")
     else:
-        if scene.engine_mode != "client":
-            raise InvalidScene(_p(path, "mover.placement"), "a placement needs engine mode client: in server mode "
-                               "ACE's enter_cell_server asks the server's ObjectMaint and LandblockManager (adjacent "
-                               "landblocks, known players), which a scene does not carry")
         # any cell id in a defined landblock: AdjustPosition judges it (ACE's answer for a cell it cannot use)
         check_landblock(begin, scene.mover.begin.cell)
     if scene.mover.contact_plane is not None:
@@ -1034,14 +1030,9 @@ def check_consistency(scene: Scene, path: str = "") -> None:
 
 
 def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> None:
-    """A tick scene runs in client mode, and each RequestPos names a cell the scene defines."""
+    """Each RequestPos of a tick scene names a cell the scene defines."""
     if scene.mover.end is not None:
         raise InvalidScene(_p(path, "mover.end"), "a tick scene's mover has no end: its ticks move it (omit end)")
-    if scene.engine_mode != "client":
-        raise InvalidScene(_p(path, "engine.mode"), "a tick scene needs engine mode client: in server mode the "
-                           "mover's change of cell goes through ACE's change_cell_server -> enter_cell_server, whose "
-                           "visibility update (ObjectMaint.GetVisibleObjects) reads the landblock's adjacent landblocks, "
-                           "which only a running server's LandblockManager sets; a scene does not carry them")
     for i, step in enumerate(scene.ticks.steps):
         if step.request_pos is None:
             continue

@@ -152,7 +152,7 @@ def _candidates(scene: Scene) -> Iterator[Scene]:
     yield from _cells(scene)
     yield from _landblocks(scene)
     yield from _mover(scene)
-    if scene.engine_mode != "server" and scene.mover.placement is None:
+    if scene.engine_mode != "server":  # the default mode: a placement or ticks run in it too
         yield scene.replace(engine_mode="server")
 
 

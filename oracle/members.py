@@ -29,9 +29,14 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.Entity.GfxObjCache", ("GfxObjs",)),
     ("ACE.Server.Physics.Entity.Vertex", (".ctor",)),
     ("ACE.Server.Physics.Managers.ServerObjectManager", ("ServerObjects",)),
-    # server mode: ACE's LandblockManager table and the server landblock's auto-property
-    ("ACE.Server.Managers.LandblockManager", ("landblocks", "GetLandblock")),
-    ("ACE.Server.Entity.Landblock", ("PhysicsLandblock", "<PhysicsLandblock>k__BackingField")),
+    # server mode: ACE's LandblockManager table, its adjacency bookkeeping (Facade.LoadServerLandblock) and the
+    # server landblock's auto-properties
+    ("ACE.Server.Managers.LandblockManager", ("landblocks", "GetLandblock", "SetAdjacents", "GetAdjacents",
+                                              "GetAdjacentIDs", "GetAdjacentID")),
+    ("ACE.Server.Entity.Landblock", ("PhysicsLandblock", "<PhysicsLandblock>k__BackingField", "<Id>k__BackingField",
+                                     "CellLandblock", "<CellLandblock>k__BackingField", "LandblockInfo",
+                                     "<LandblockInfo>k__BackingField", "Adjacents", "IsDungeon")),
+    ("ACE.Server.Physics.Common.Landblock", ("adjacents", "SetAdjacents", "GetServerObjects")),
     ("ACE.Entity.LandblockId", (".ctor", "LandblockX", "LandblockY")),
     ("ACE.Entity.Enum.PhysicsState", ("Static", "HasPhysicsBSP")),
     ("ACE.Entity.Enum.CullMode", ("Landblock", "Clockwise", "CounterClockwise")),

@@ -282,7 +282,7 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
         p = tuple(to_f32(c) for c in house_point(d, px, 0.0, 0.0))
         begin_pos = _outdoor_position(home, p)
         placement = Placement(draw(st.sampled_from((0, int(SetPositionFlags.Slide)))), draw(dr.BOOLEANS))
-        mode = "client"
+        mode = draw(dr.ENGINE_MODES)
         contact = None
     mover = Mover(spheres=tuple(spheres), begin=begin_pos, end=end_pos, step_up_height=up, step_down_height=down,
                   state=state,

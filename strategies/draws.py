@@ -64,6 +64,9 @@ def f32(lo: float, hi: float):
 
 
 BOOLEANS = eager(st.booleans())
+# PhysicsEngine.Server for the kinds whose mover changes cell through PhysicsObj.change_cell (ticks, placements):
+# ACE's server three times in four, the client's branches the fourth (a client port wants those)
+ENGINE_MODES = eager(st.sampled_from(("server", "server", "server", "client")))
 
 
 def label(name: str) -> int:

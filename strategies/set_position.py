@@ -1,7 +1,7 @@
 """Placements: a share of drawn scenes of every kind has its mover placed by ACE's PhysicsObj.SetPosition.
 
 `with_placement(draw, scene)` gives the scene a ``mover.placement`` one time in four, indoors one
-time in two (and engine mode client, which ACE's placement of a scene's mover needs). The begin
+time in two (in ACE's server mode three times in four, else client mode: dr.ENGINE_MODES). The begin
 position is then biased toward where placement goes wrong:
 
 - "as drawn": the begin position as the scene drew it (the cell holds the point);
@@ -315,7 +315,7 @@ def with_placement(draw, scene: Scene) -> Scene:
     flags = draw(EXTRA_FLAGS) | (int(SetPositionFlags.Slide) if draw(slides) else 0)
     placement = Placement(flags, draw(GET_CELL))
     state = m.state | (int(PhysicsState.ReportCollisions) if draw(REPORTS) else 0)
-    return replace(scene, engine_mode="client", objects=objects,
+    return replace(scene, engine_mode=draw(dr.ENGINE_MODES), objects=objects,
                    mover=replace(m, begin=begin, placement=placement, state=state))
 
 

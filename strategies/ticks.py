@@ -282,7 +282,7 @@ def _tick_scene(scene: Scene, start: float, dts: list[float], inputs: list[dict]
                   for i, (dt, inp) in enumerate(zip(dts, inputs)))
     m = scene.mover
     mover = replace(m, end=None, placement=None, transient_state=m.transient_state | int(TransientState.Active))
-    return scene.replace(mover=mover, engine_mode="client", ticks=Ticks(driver, float(start), steps), name=name)
+    return scene.replace(mover=mover, ticks=Ticks(driver, float(start), steps), name=name)
 
 
 def _walk_inputs(draw, n: int, dts: list[float], g0, g1, motion: str,
@@ -327,7 +327,13 @@ def _driver_for(draw, scene: Scene, n: int, g0, g1) -> tuple[str, list[Position]
 
 def draw_tick_scene(draw, world: str | None = None, policy: str | None = None) -> Scene:
     """A tick scene; over `world` (a geometry kind: campaign kind ``ticks:<world>``) when given, of
-    `policy` when given (one drawing on that world)."""
+    `policy` when given (one drawing on that world); in ACE's server mode three times in four, else
+    client mode (dr.ENGINE_MODES)."""
+    scene = _draw_tick_scene(draw, world, policy)
+    return scene.replace(engine_mode=draw(dr.ENGINE_MODES))
+
+
+def _draw_tick_scene(draw, world: str | None, policy: str | None) -> Scene:
     from .scenes import draw_scene
 
     policy = policy or draw(POLICIES_OVER[world])

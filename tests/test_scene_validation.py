@@ -186,10 +186,9 @@ PLACED = json.loads((Path(__file__).parent.parent / "examples" / "placement_wall
     (lambda d: d["mover"]["placement"].update(flags=["NoSuchFlag"]), "mover.placement.flags", "NoSuchFlag"),
     (lambda d: d["mover"]["placement"].update(get_cell="yes"), "mover.placement.get_cell", "true or false"),
     (lambda d: d["mover"]["placement"].update(where="here"), "mover.placement", "where"),
-    (lambda d: d["engine"].update(mode="server"), "mover.placement", "engine mode client"),
     (lambda d: d.update(format="acconform.scene/2"), "mover.placement", "acconform.scene/3"),
     (lambda d: d["mover"]["begin"].update(cell="0x12340100"), "mover.begin.cell", "not defined"),
-], ids=["scatter", "unknown flag", "get_cell not a bool", "unknown field", "server mode", "older format", "no landblock"])
+], ids=["scatter", "unknown flag", "get_cell not a bool", "unknown field", "older format", "no landblock"])
 def test_a_bad_placement_is_refused_naming_its_field(mutate, field, says):
     doc = copy.deepcopy(PLACED)
     mutate(doc)
@@ -202,3 +201,11 @@ def test_a_placement_may_name_any_cell_of_a_defined_landblock_for_adjust_positio
     doc = copy.deepcopy(PLACED)
     doc["mover"]["begin"]["cell"] = "0xA9B40050"  # out of AdjustPosition's ranges: ACE stores it, no cell
     assert parse_document(doc).mover.begin.cell == 0xA9B40050
+
+
+def test_a_placement_runs_in_either_engine_mode():
+    """ACE's server places the mover through change_cell_server -> enter_cell_server, whose visibility update
+    reads the landblock's adjacents: the oracle loads a server scene's landblocks as LandblockManager does."""
+    doc = copy.deepcopy(PLACED)
+    doc["engine"]["mode"] = "server"
+    assert validate_scene(parse_document(doc)).engine_mode == "server"

@@ -126,9 +126,6 @@ def test_a_scene_without_ticks_is_still_written_in_the_oldest_format_that_holds_
      "ticks.steps[4].request_pos.orientation: a zero quaternion is not a rotation"),
     (JUMP, lambda d: d["mover"].update(end={"cell": "0xA9B40001", "origin": [12, 13, 20]}),
      "mover.end: a tick scene's mover has no end: its ticks move it (omit end)"),
-    (JUMP, lambda d: d["engine"].update(mode="server"),
-     "engine.mode: a tick scene needs engine mode client: in server mode the mover's change of cell goes through "
-     "ACE's change_cell_server -> enter_cell_server"),
     (JUMP, lambda d: d.update(format="acconform.scene/3"),
      "ticks: ticks need format 'acconform.scene/4' or later (older formats have no ticks)"),
     (JUMP, lambda d: d.pop("ticks"), "mover.end: missing required field"),
@@ -136,16 +133,16 @@ def test_a_scene_without_ticks_is_still_written_in_the_oldest_format_that_holds_
         "empty steps", "steps not a list", "clock overflow", "short vector", "vector out of float32", "unknown state flag",
         "unknown transient flag", "unknown step field", "unknown ticks field", "request_pos for update_object",
         "request_pos missing", "request_pos landblock undefined", "request_pos EnvCell undefined", "request_pos bad cell id",
-        "request_pos zero quaternion", "tick scene with an end", "server mode", "older format", "no ticks and no end"])
+        "request_pos zero quaternion", "tick scene with an end", "older format", "no ticks and no end"])
 def test_a_bad_tick_scene_is_refused_with_one_line_naming_the_field(doc, mutate, says):
     message = refused(changed(doc, mutate))
     assert says in message and "\n" not in message, message
 
 
-def test_a_tick_scene_built_in_code_without_client_mode_or_with_an_end_is_refused_by_validate_scene():
+def test_a_tick_scene_built_in_code_with_an_end_is_refused_by_validate_scene_and_runs_in_either_engine_mode():
     scene = Scene.from_json(JUMP)
-    with pytest.raises(InvalidScene, match="engine mode client"):
-        validate_scene(scene.replace(engine_mode="server"))
+    assert validate_scene(scene.replace(engine_mode="server")).engine_mode == "server"
+    assert validate_scene(scene).engine_mode == "client"
     from dataclasses import replace
 
     with pytest.raises(InvalidScene, match="a tick scene's mover has no end"):

@@ -98,6 +98,9 @@ namespace Acconform.Oracle
         static FieldInfo lbmTable;
         static FieldInfo serverLbPhysics;
         static FieldInfo serverLbId;
+        static FieldInfo serverLbCellLandblock, serverLbInfo;
+        static FieldInfo physicsAdjacents;  // the physics Landblock's private adjacents (null until SetAdjacents)
+        static MethodInfo setAdjacents;  // LandblockManager's private static SetAdjacents(Landblock, bool, bool)
 
         sealed class LandblockEntry { public byte[] Bytes; public int Table; public ACE.Server.Physics.Common.Landblock Landblock; }
         sealed class TableEntry { public byte[] Bytes; public int Id; }
@@ -523,7 +526,6 @@ namespace Acconform.Oracle
 
         public static void ClearCache()
         {
-            serverLandblocks.Clear();
             landblockCache.Clear();
         }
 
@@ -691,40 +693,56 @@ namespace Acconform.Oracle
             return table2d;
         }
 
-        static readonly Dictionary<ACE.Server.Physics.Common.Landblock, ACE.Server.Entity.Landblock> serverLandblocks =
-            new Dictionary<ACE.Server.Physics.Common.Landblock, ACE.Server.Entity.Landblock>();
-
-        static void RegisterServerLandblock(uint landblockId, ACE.Server.Physics.Common.Landblock physics)
+        /// <summary>What LandblockManager.GetLandblock does for a landblock it has not loaded, in ACE's order: the
+        /// server Landblock in the table, its Init (the physics landblock's PostInit: BuildScene runs it), then ACE's
+        /// own SetAdjacents(landblock, traverse: true, pSync: true), which gives the landblock (server and physics) the
+        /// neighbours loaded before it and gives each of those (server side only) this one. A fresh server Landblock
+        /// per scene, as ACE makes one per load.</summary>
+        static void LoadServerLandblock(uint landblockId, ACE.Server.Physics.Common.Landblock physics, byte[] buf, int off, int len)
         {
             var id = new LandblockId(landblockId);
-            ACE.Server.Entity.Landblock lb;
-            if (!serverLandblocks.TryGetValue(physics, out lb))
-            {
-                lb = MakeServerLandblock(id, physics);
-                if (CacheLandblocks)
-                {
-                    if (serverLandblocks.Count >= CacheLimit) serverLandblocks.Clear();
-                    serverLandblocks[physics] = lb;
-                }
-            }
+            var lb = MakeServerLandblock(id, physics, buf, off, len);
             LandblockTable()[id.LandblockX, id.LandblockY] = lb;
             tableUsed.Add(Tuple.Create((int)id.LandblockX, (int)id.LandblockY));
+            if (setAdjacents == null)
+                setAdjacents = typeof(ACE.Server.Managers.LandblockManager).GetMethod("SetAdjacents", BindingFlags.NonPublic | BindingFlags.Static);
+            setAdjacents.Invoke(null, new object[] { lb, true, true });
         }
 
-        static ACE.Server.Entity.Landblock MakeServerLandblock(LandblockId id, ACE.Server.Physics.Common.Landblock physics)
+        /// <summary>A server Landblock as ACE's DAT-reading constructor leaves it, without running it (it would
+        /// build a second physics landblock): Id, PhysicsLandblock = the scene's, CellLandblock = its DAT bytes
+        /// unpacked by ACE, LandblockInfo = the scene's record for the landblock (0xXXYYFFFE) when it has one, else
+        /// null (IsDungeon, the one reader, answers the same for null and for the empty Info a DAT lacking the
+        /// record gives).</summary>
+        static ACE.Server.Entity.Landblock MakeServerLandblock(LandblockId id, ACE.Server.Physics.Common.Landblock physics, byte[] buf, int off, int len)
         {
-            // What LandblockManager.GetLandblock would hold for a loaded landblock: a server Landblock
-            // whose PhysicsLandblock is this one. Built without its DAT-reading constructor.
             var t = typeof(ACE.Server.Entity.Landblock);
             if (serverLbPhysics == null)
             {
                 serverLbPhysics = t.GetField("<PhysicsLandblock>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance);
                 serverLbId = t.GetField("<Id>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance);
+                serverLbCellLandblock = t.GetField("<CellLandblock>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance);
+                serverLbInfo = t.GetField("<LandblockInfo>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance);
             }
             var lb = (ACE.Server.Entity.Landblock)FormatterServices.GetUninitializedObject(t);
             serverLbPhysics.SetValue(lb, physics);
-            if (serverLbId != null) serverLbId.SetValue(lb, id);
+            serverLbId.SetValue(lb, id);
+            var clb = new CellLandblock();
+            clb.Unpack(new BinaryReader(new MemoryStream(buf, off, len, false)));
+            serverLbCellLandblock.SetValue(lb, clb);
+            FileType info;
+            if (sceneHasCellRecords && cellFiles.TryGetValue((uint)id.Landblock << 16 | 0xFFFE, out info))
+                serverLbInfo.SetValue(lb, info);
             return lb;
+        }
+
+        /// <summary>A physics landblock as built: its adjacents null (only LandblockManager's SetAdjacents sets
+        /// them). A cached landblock keeps what the last scene's SetAdjacents gave it, so every scene starts here.</summary>
+        static void ClearAdjacents(ACE.Server.Physics.Common.Landblock physics)
+        {
+            if (physicsAdjacents == null)
+                physicsAdjacents = typeof(ACE.Server.Physics.Common.Landblock).GetField("adjacents", BindingFlags.NonPublic | BindingFlags.Instance);
+            physicsAdjacents.SetValue(physics, null);
         }
 
         // ------------------------------------------------------------------ scene
@@ -810,7 +828,8 @@ namespace Acconform.Oracle
                 var id = lb.ID | 0xFFFF;
                 LScape.Landblocks[id] = lb;  // registered before PostInit, as LScape.get_landblock does
                 sceneLandblocks[id] = lb;
-                if (server) RegisterServerLandblock(id, lb);
+                ClearAdjacents(lb);
+                if (server) LoadServerLandblock(id, lb, buf, off, len);  // in the scene's order
             }
             foreach (var lb in built) lb.PostInit();
             landblocksBuilt = built.Count;

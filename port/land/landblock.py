@@ -43,7 +43,7 @@ class Landblock(LandblockStruct):
         self.closest = (-1.0, -1.0)
         self.static_objects: list = []
         self.server_objects: list = []  # ServerObjects: the non-DAT objects in its cells (Landblock.add_server_object)
-        self.adjacents = None  # set only by a running server's LandblockManager (SetAdjacents): never here
+        self.adjacents = None  # set only by LandblockManager's SetAdjacents (port/land/landblock_manager.py)
         self.buildings: list = []
 
         self.stab_list = None  # StabList: never assigned in ACE (add_to_stablist leaves it null)
@@ -63,9 +63,23 @@ class Landblock(LandblockStruct):
             return True
         return False
 
+    @anchor(None, "Landblock.cs:SetAdjacents")
+    def set_adjacents(self, landblocks: list) -> None:
+        """`landblocks`: the server landblocks (port/land/landblock_manager.py). ACE keeps each one's
+        PhysicsLandblock; the port keeps the server landblock and reads its physics landblock's
+        server objects when GetServerObjects iterates (the port builds landblocks on first use, and
+        one never built holds none)."""
+        if self.adjacents is None:
+            self.adjacents = []
+        else:
+            self.adjacents.clear()
+
+        for landblock in landblocks:
+            self.adjacents.append(landblock)
+
     @anchor(None, "Landblock.cs:GetServerObjects")
     def get_server_objects(self, include_adjacents: bool) -> list:
-        """`adjacents` is null unless a running server's LandblockManager set it (SetAdjacents), so
+        """`adjacents` is null unless LandblockManager's SetAdjacents set it (server mode), so
         asking for them throws NullReferenceException where ACE's foreach meets the null list."""
         results = list(self.server_objects)
 
@@ -74,9 +88,9 @@ class Landblock(LandblockStruct):
                 from ..errors import NullReferenceException
 
                 raise NullReferenceException("Object reference not set to an instance of an object. "
-                                             "(port: Landblock.adjacents, set only by a running server)")
+                                             "(port: Landblock.adjacents, set only by LandblockManager.SetAdjacents)")
             for adjacent in self.adjacents:
-                results.extend(adjacent.server_objects)
+                results.extend(adjacent.server_objects())
 
         return results
 

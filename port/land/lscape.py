@@ -34,6 +34,7 @@ from acconform.port.errors import NullReferenceException
 from acconform.port import db_obj, land_defs
 from acconform.port.cell.land_cell import LandCell, is_built
 from acconform.port.land.landblock import Landblock
+from acconform.port.land.landblock_manager import LandblockManager, ServerLandblock
 
 
 class LandblockPool:
@@ -68,6 +69,7 @@ class LandblockPool:
             if is_built(cell):  # an unbuilt cell has no run's state
                 cell.reset_for_pool()
         landblock.server_objects = []  # the last run's mover (Landblock.add_server_object)
+        landblock.adjacents = None  # the last run's LandblockManager.SetAdjacents (as built: null)
         return landblock
 
     @harness("hands a landblock back to the pool, without the EnvCells the run loaded into it")
@@ -121,18 +123,38 @@ class LScape:
         for landblock_id, record in self.records.items():
             if land_defs.blockid_to_lcoord(record.id) is None:  # Landblock(...) throws: fail now, as ACE
                 self.build_landblock(landblock_id)
+        # server mode: LandblockManager loads the scene's landblocks in the scene's order (their adjacents)
+        self.landblock_manager = None
+        if portal_dat is not None and portal_dat.server:
+            self.landblock_manager = LandblockManager()
+            for landblock_id, record in self.records.items():
+                info_id = (record.id & 0xFFFF0000) | 0xFFFE
+                info = db_obj.get_landblock_info(cell_dat, info_id) if cell_dat is not None and info_id in cell_dat.records else None
+                self.landblock_manager.get_landblock(ServerLandblock(record, info, self))
 
     @harness("a scene landblock built (new Landblock, PostInit) or taken from the pool on first use")
     def build_landblock(self, landblock_id: int) -> Landblock:
-        """``new Landblock(CellLandblock)`` then PostInit (pooled unless it has buildings), on first use."""
+        """``new Landblock(CellLandblock)`` then PostInit (pooled unless it has buildings), on first use;
+        in server mode it takes the adjacents LandblockManager's SetAdjacents gave it (pSync)."""
         if landblock_id in self.has_objects:
             landblock = Landblock(self.records[landblock_id], self.land_height_table, self.mode, True, self.cell_dat)
             self.landblocks[landblock_id] = landblock
+            self.take_adjacents(landblock_id, landblock)
             landblock.post_init(self)
             return landblock
         landblock = POOL.checkout(self.records[landblock_id], self.land_height_table, self.mode)
         self.landblocks[landblock_id] = landblock
+        self.take_adjacents(landblock_id, landblock)
         return landblock
+
+    @harness("a landblock built on first use takes what LandblockManager.SetAdjacents' pSync gave it")
+    def take_adjacents(self, landblock_id: int, landblock: Landblock) -> None:
+        manager = getattr(self, "landblock_manager", None)  # None while __init__ builds an unplaceable one
+        if manager is None:
+            return
+        server = manager.landblocks.get(((landblock_id >> 24) & 0xFF, (landblock_id >> 16) & 0xFF))
+        if server is not None and server.physics_adjacents is not None:
+            landblock.set_adjacents(server.physics_adjacents)
 
     @harness("the run is over: its landblocks go back to the pool")
     def release(self) -> None:
@@ -146,6 +168,7 @@ class LScape:
         self.outside_cells = {}
         self.adjust_cells = {}
         self.records = {}
+        self.landblock_manager = None
 
     @anchor("LScape::get_landblock", "LScape.cs:get_landblock")
     def get_landblock(self, block_cell_id: int) -> Landblock:

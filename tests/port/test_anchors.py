@@ -16,6 +16,7 @@ from acconform.port.anchors import HARNESS, REGISTRY, load_all
 ACE_SOURCE = Path(os.environ.get("ACE_SOURCE", "/work/ace")) / "Source"
 ACE_PHYSICS = ACE_SOURCE / "ACE.Server/Physics"
 DATLOADER = "ACE.DatLoader/"  # DatLoader anchors name their file by its path under Source/
+SERVER = ("ACE.Server/Managers/", "ACE.Server/Entity/")  # so do the server's (LandblockManager, the server Landblock)
 # the registry itself is not port code
 NOT_PORT = {"acconform.port.anchors"}
 
@@ -88,6 +89,7 @@ def test_harness_glue_says_what_it_does():
 def test_every_ace_anchor_names_a_file_in_aces_physics_tree_or_datloader():
     files = {p.name for p in ACE_PHYSICS.rglob("*.cs")}
     files |= {DATLOADER + str(p.relative_to(ACE_SOURCE / DATLOADER)) for p in (ACE_SOURCE / DATLOADER).rglob("*.cs")}
+    files |= {folder + p.name for folder in SERVER for p in (ACE_SOURCE / folder).glob("*.cs")}
     load_all()
     unknown = sorted(f"{key}: {a.ace}" for key, a in REGISTRY.items() if a.ace.split(":", 1)[0] not in files)
     assert unknown == []

@@ -4,6 +4,8 @@
         rebuild tests/data/corpus/<runtime>/fast-sample.json (default: both runtimes' samples)
     python tests/runner/corpus_sample.py --add SHARD... [--runtime mono|coreclr]
         add a new recording's shards to the samples, running only their records
+    python tests/runner/corpus_sample.py --replace SHARD... --old DIR [--runtime mono|coreclr]
+        shards re-recorded in place (the old ones in DIR/<runtime>/): only their old and new records run
 
 Runs every record of a runtime's corpus through the port (computing as that runtime does) with a
 branch trace, then picks, deterministically
@@ -109,10 +111,17 @@ def add(doc: dict, corpus_dir, shard_names, per_branch: int = PER_BRANCH, per_ki
     without the hour a rebuild takes; a rebuild (`build`) picks afresh from the whole corpus."""
     names = set(shard_names)
     fires = _fires(corpus_dir, lambda where: Path(where.rsplit(" line ", 1)[0]).name.split(".")[0] in names)
+    new = _add_fires(doc, fires, per_branch, per_kind)
+    new["made_by"] = f"{doc['made_by']}, then --add {' '.join(sorted(names))}"
+    return new
+
+
+def _add_fires(doc: dict, fires: dict, per_branch: int, per_kind: int) -> dict:
+    """`doc` with the records of `fires` ({key: (kind, branches)}) counted and picked as `add` says."""
     old_names = doc["branches"]
     records = {key: (kind, frozenset(old_names[i] for i in idx)) for key, kind, idx in doc["records"]}
     if records.keys() & fires.keys():
-        raise SystemExit(f"the sample already holds records of {sorted(names)}: rebuild it instead")
+        raise SystemExit("the sample already holds records of those shards: rebuild it instead")
     counts = Counter(doc["corpus_branches"])
     in_sample = Counter(b for _, branches in records.values() for b in branches)
     by_branch: dict[str, list[str]] = defaultdict(list)
@@ -138,13 +147,39 @@ def add(doc: dict, corpus_dir, shard_names, per_branch: int = PER_BRANCH, per_ki
     branches = sorted(counts)
     return {
         **doc,
-        "made_by": f"{doc['made_by']}, then --add {' '.join(sorted(names))}",
         "corpus_records": doc["corpus_records"] + len(fires),
         "boundary_records": doc["boundary_records"] + _boundary_records(fires),
         "corpus_branches": {b: counts[b] for b in branches},
         "branches": branches,
         "records": [[key, kind, sorted(branches.index(b) for b in br)] for key, (kind, br) in records.items()],
     }
+
+
+def replace(doc: dict, corpus_dir, old_dir, shard_names, per_branch: int = PER_BRANCH, per_kind: int = 100) -> dict:
+    """`doc` with the shards `shard_names` re-recorded in place (their old versions in `old_dir`): the old
+    records' branch counts come out (running them through the port), the sample's records that are no longer
+    in the corpus go, and the new records go in as `add` adds a new recording's. Without the hour a rebuild
+    takes, for a re-recording that changes some scenes of some shards (issue 44's server-mode ticks)."""
+    names = set(shard_names)
+    in_shards = lambda where: Path(where.rsplit(" line ", 1)[0]).name.split(".")[0] in names  # noqa: E731
+    old = _fires(old_dir, in_shards)
+    fires = _fires(corpus_dir, in_shards)
+    counts = Counter(doc["corpus_branches"])
+    for _, branches in old.values():
+        counts.subtract(branches)
+    old_names = doc["branches"]
+    kept = [r for r in doc["records"] if r[0] not in old or r[0] in fires]
+    kept_doc = {**doc, "records": [r for r in kept if r[0] not in fires],
+                "corpus_records": doc["corpus_records"] - len(old),
+                "boundary_records": doc["boundary_records"] - _boundary_records(old),
+                "corpus_branches": {b: n for b, n in counts.items() if n > 0}}
+    kept_doc["branches"] = sorted(kept_doc["corpus_branches"])
+    kept_doc["records"] = [[key, kind, sorted(kept_doc["branches"].index(old_names[i]) for i in idx
+                                              if old_names[i] in kept_doc["corpus_branches"])]
+                           for key, kind, idx in kept_doc["records"]]
+    new = _add_fires(kept_doc, fires, per_branch, per_kind)
+    new["made_by"] = f"{doc['made_by']}, then --replace {' '.join(sorted(names))}"
+    return new
 
 
 def main(argv=None) -> int:
@@ -154,11 +189,16 @@ def main(argv=None) -> int:
                    help="the runtime whose corpus to sample (repeatable; default both)")
     p.add_argument("--add", nargs="+", metavar="SHARD", help="add the records of these shards (names such as "
                    "ticks-0000) to the existing sample, running only them through the port")
+    p.add_argument("--replace", nargs="+", metavar="SHARD", help="these shards were re-recorded in place: take "
+                   "their old records (in --old DIR/<runtime>) out of the sample's counts and add the new ones")
+    p.add_argument("--old", metavar="DIR", help="with --replace: a folder holding <runtime>/ with the old shards")
     args = p.parse_args(argv)
     from acconform.oracle import default_corpus
 
     for runtime in args.runtime or ("coreclr", "mono"):
-        if args.add:
+        if args.replace:
+            doc = replace(load_sample(runtime), default_corpus(runtime), Path(args.old) / runtime, args.replace)
+        elif args.add:
             doc = add(load_sample(runtime), default_corpus(runtime), args.add)
         else:
             doc = build(default_corpus(runtime), args.size)

@@ -1,0 +1,81 @@
+"""The world loaded as ACE's server loads it (issue 44), asked of live ACE on each runtime and of the port.
+
+A running server's LandblockManager gives each landblock it loads its adjacent landblocks
+(SetAdjacents); Landblock.GetServerObjects(true), which a server-mode cell change reaches
+(change_cell_server -> enter_cell_server -> handle_visible_cells -> ObjectMaint.GetVisibleObjects),
+reads them. The facade loads a server-mode scene's landblocks through ACE's own SetAdjacents, in the
+scene's order (docs/oracle.md, the audit); the port mirrors it (port/land/landblock_manager.py). In
+client mode no LandblockManager loads them and ACE's answer stays its NullReferenceException.
+Run with ACE_ASSEMBLY at a mono build, then at a .NET 10 build (one runtime per process).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import pytest
+
+from acconform.case import load_document
+from acconform.compare import compare
+from acconform.port.run import run_scene
+from acconform.scene import Frame, Landblock, Position, TickStep
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _request_pos_scene(mode: str):
+    """From 10 m up, a RequestPos 10 m under the next cell's terrain: the transition stops on the first
+    cell's ground, and set_current_pos then changes the mover's cell (change_cell_server)."""
+    scene = load_document(ROOT / "examples" / "tick_request_pos.json")
+    up = Position(0xA9B40001, Frame((12.0, 12.0, 30.0)))
+    under = Position(0xA9B40009, Frame((30.0, 12.0, 10.0)))
+    steps = scene.ticks.steps[:3] + (TickStep(0.1, request_pos=up), TickStep(0.1, request_pos=under),
+                                     TickStep(0.1, request_pos=up))
+    return scene.replace(engine_mode=mode, ticks=dataclasses.replace(scene.ticks, steps=steps))
+
+
+def _neighbours(scene):
+    """The scene with its landblock's eight neighbours listed too, flat (ACE loads them, in this order,
+    after the scene's own: each gets the ones loaded before it)."""
+    home = scene.landblocks[0]
+    x, y = home.id >> 24, (home.id >> 16) & 0xFF
+    more = tuple(Landblock(id=((x + dx) << 24) | ((y + dy) << 16) | 0xFFFF, heights=home.heights, terrain=home.terrain)
+                 for dx, dy in ((0, 1), (0, -1), (-1, 0), (1, 0), (-1, 1), (1, 1), (-1, -1), (1, -1)))
+    return scene.replace(landblocks=scene.landblocks + more)
+
+
+@pytest.mark.live_oracle
+def test_live_in_server_mode_the_cell_change_that_threw_in_client_mode_moves_the_mover(live):
+    scene = _request_pos_scene("server")
+    ace = live.run(scene)
+    assert ace.error is None and all(t.error is None for t in ace.ticks), ace.ticks
+    assert ace.ticks[4].cell == 0xA9B40009 and ace.ticks[5].cell == 0xA9B40001
+    assert compare(ace, run_scene(scene, runtime=live.location.runtime), "exact") == []
+
+
+@pytest.mark.live_oracle
+def test_live_a_server_scene_with_loaded_neighbours_answers_as_the_port(live):
+    scene = _neighbours(_request_pos_scene("server"))
+    ace = live.run(scene)
+    assert all(t.error is None for t in ace.ticks), ace.ticks
+    assert compare(ace, run_scene(scene, runtime=live.location.runtime), "exact") == []
+
+
+@pytest.mark.live_oracle
+def test_live_in_client_mode_ace_still_throws_after_a_server_scene_used_the_same_landblock(live):
+    """No LandblockManager loads a client-mode scene's landblocks: their adjacents are null, as built,
+    even when the facade's cached landblock had them in the scene before."""
+    live.run(_request_pos_scene("server"))
+    ace = live.run(_request_pos_scene("client"))
+    assert [t.error is None for t in ace.ticks] == [True, True, True, True, False], ace.ticks
+    assert ace.ticks[4].error.startswith("NullReferenceException"), ace.ticks[4].error
+    assert compare(ace, run_scene(_request_pos_scene("client"), runtime=live.location.runtime), "exact") == []
+
+
+@pytest.mark.live_oracle
+def test_live_a_placement_in_server_mode_enters_its_cell_through_enter_cell_server_as_the_port(live):
+    scene = load_document(ROOT / "examples" / "placement_wall_push.json").replace(engine_mode="server")
+    ace = live.run(scene)
+    assert ace.error is None and ace.placement is not None and ace.placement.cur_cell != 0, ace
+    assert compare(ace, run_scene(scene, runtime=live.location.runtime), "exact") == []
