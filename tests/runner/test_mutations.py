@@ -186,6 +186,9 @@ def test_the_runner_finds_and_shrinks_a_planted_bug(index, tmp_path):
 # are any, then the example, hand-written and named tick scenes, against ACE's recorded answers), and
 # the scene that does shrinks to a few ticks (the ticks up to the first differing one, then shrink.py)
 MAX_SHRUNK_TICKS = 13
+# and to at most the four landblocks around a corner: since the corpus's tick scenes run in server mode
+# (issue 44), the first record killing tick_elasticity_sign_flipped is a mover at a landblock corner,
+# shrunk to 1 tick and the 4 landblocks meeting there (without any one of them both sides fail alike)
 TICK_MUTANTS = [i for i, m in enumerate(MUTATIONS) if m.kinds == TICKS]
 # the record a full pass found killing a mutant that the coverage kernel's records miss (friction
 # before the clamp shows only when the clamp bites, on a walkable contact: ticks-0001's 1,351st line,
@@ -199,7 +202,7 @@ KILLING_RECORDS = {"tick_friction_before_velocity_clamp":
 def test_the_tick_records_kill_a_planted_tick_loop_bug_and_shrink_it_to_a_few_ticks(index):
     r = tick_kill(index, "coreclr", first=KILLING_RECORDS.get(MUTATIONS[index].name, ()))
     assert r["killed"], f"{MUTATIONS[index].name} ({MUTATIONS[index].what}) survives {r['records']} tick records"
-    assert r["shrunk_ticks"] <= MAX_SHRUNK_TICKS and r["shrunk_objects"] <= 1 and r["shrunk_landblocks"] <= 2, r
+    assert r["shrunk_ticks"] <= MAX_SHRUNK_TICKS and r["shrunk_objects"] <= 1 and r["shrunk_landblocks"] <= 4, r
 
 
 def test_the_six_tick_loop_bugs_issue_19_names_are_planted():
