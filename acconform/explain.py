@@ -109,6 +109,20 @@ def _against_ace_steps(scene, live, name, ours, ours_outcome) -> Explanation:
                        steps, ours, ours_outcome, known, "ACE")
 
 
+def explain_case(case, backend, mode: str, runtime: str, ace: Outcome | None = None,
+                 source: str = "the case's recorded answer", live=None) -> Explanation:
+    """The one way a case's first divergence is found: check's triage, `explain`, `repro` and `report`
+    all call this, so they name the same divergence for the same case. `ace`: ACE's answer (live
+    ACE's, where configured), else the one recorded in the case."""
+    return explain(case.scene, case.oracle if ace is None else ace, source, backend, mode, runtime, live)
+
+
+def group_name(e: Explanation) -> str | None:
+    """The first divergence as check's groups, explain's output and report's index name it
+    (``first divergence: <routine> <field>``), or None when none is named."""
+    return f"first divergence: {e.divergence.key()}" if e.divergence is not None else None
+
+
 def triage(found, backend, mode: str, runtime: str, say=None) -> None:
     """Give each difference found its group: its first divergence (routine and field) where the
     implementation traces, else the fields it differs in (the built-in port: no reference trace)."""
@@ -117,9 +131,9 @@ def triage(found, backend, mode: str, runtime: str, say=None) -> None:
     for n, f in enumerate(found, 1):
         if say is not None:
             say(f"tracing difference {n} of {len(found)} for its first divergence")
-        e = explain(f.case.scene, f.case.oracle, "the case's recorded answer", backend, mode, runtime)
+        e = explain_case(f.case, backend, mode, runtime)
         if e.divergence is not None:
-            f.group = f"first divergence: {e.divergence.key()}"
+            f.group = group_name(e)
             f.known = e.known.name if e.known is not None else ""
 
 
@@ -153,7 +167,7 @@ def render(e: Explanation) -> list[str]:
     r = d.a or d.b
     retail = retail_name(d.routine)
     where = ", ".join(f"{k} {v}" for k, v in (("tick", d.tick), ("step", d.step)) if v is not None) or "before the steps"
-    lines.append(f"first divergence: {where}, record {d.a_position} ({r.event} of {r.anchor})")
+    lines.append(f"{group_name(e)} ({where}, record {d.a_position}: {r.event} of {r.anchor})")
     lines.append(f"  in: {d.routine}" + (f" (retail {retail})" if retail else ""))
     ulps = d.ulps
     lines.append(f"  field: {d.field}: {ref_name}={_value(d.field, d.a_value)} {e.implementation}="

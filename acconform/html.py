@@ -5,8 +5,11 @@ world metres): the terrain's triangles (as the port builds them), the outdoor ce
 landblock borders, the EnvCells' polygons, the static objects (BSP polygons, spheres, cylinders),
 the mover's sphere at the begin, at every step and at the end of each side's run (the reference in
 blue, the implementation in orange), the requested end, the contact planes (green) and collision
-normals (red) the steps met, and the first divergence marked; then the first divergence in words
-and the trace table beneath. `report_page(entries)` indexes the cases of a failures directory by
+normals (red) the steps met, and the first divergence marked where it falls (its record's position;
+before the steps, at the begin). The page opens with the outcome's differing fields and both values;
+then the first divergence in words, the views (framed on the mover's path and the statics it came
+near, never a thin strip), and the trace table, open at the first divergence with the records around
+it, the rest folded. It reads from 1,000 to 1,600 px wide. `report_page(entries)` indexes the cases of a failures directory by
 their first divergence. Nothing is fetched: no script, style sheet or font from elsewhere.
 """
 
@@ -21,8 +24,10 @@ from .errors import AcconformError
 BLOCK = 192.0
 CELL = 24.0
 MARGIN = 4.0  # metres around what the run touched
-VIEW = 560  # pixels, the longer side of a view
-TABLE_ROWS = 300
+VIEW = 620  # pixels, the longer side of a view
+ASPECT = 0.55  # a view's shorter side is at least this share of its longer one: never a thin strip
+AROUND = 12  # trace records shown open around the first divergence, on each side
+FOLDED = 1500  # records at most in each folded part of the trace table (before and after)
 REF, IMPL = "#1f6fd1", "#e07b00"
 
 
@@ -177,6 +182,52 @@ def _end_point(outcome, scene):
     return (c[0], c[1], c[2] + lift)
 
 
+def _framed(lo, hi):
+    """(lo, hi) widened about their centre so the shorter side is at least ASPECT of the longer."""
+    span = [hi[0] - lo[0], hi[1] - lo[1]]
+    want = max(span) * ASPECT
+    lo, hi = list(lo), list(hi)
+    for i in (0, 1):
+        if span[i] < want:
+            grow = (want - span[i]) / 2
+            lo[i] -= grow
+            hi[i] += grow
+    return tuple(lo), tuple(hi)
+
+
+def _touched(path, radius, statics) -> list[tuple]:
+    """Points of the static objects the mover came near (within MARGIN of its sphere on the path):
+    the view holds what the mover touched, not only where it went."""
+    lo = [min(p[i] for p in path) - radius - MARGIN for i in range(3)]
+    hi = [max(p[i] for p in path) + radius + MARGIN for i in range(3)]
+    out = []
+    for obj, polys in statics:
+        at = _glob(obj.position.cell, obj.position.frame.origin)
+        pts = [v for poly in polys for v in poly] or [at]
+        if any(all(lo[i] <= v[i] <= hi[i] for i in range(3)) for v in pts):
+            out.extend(v for v in pts if all(abs(v[i] - (lo[i] + hi[i]) / 2) < 4 * (hi[i] - lo[i]) for i in range(3)))
+    return out
+
+
+def _divergence_point(e, scene, ours, begin, lift) -> tuple[tuple, str]:
+    """Where to mark the first divergence, and in words: at the diverging record's own position (its
+    transition's check position, or the mover after a tick) when it has one; else at the last step
+    before it; else, before the steps, at the begin."""
+    d = e.divergence
+    r = d.a if d.a is not None else d.b
+    if r is not None and r.path is not None and (r.path.check_cell or r.step is not None):
+        c = _glob(r.path.check_cell or scene.mover.begin.cell, r.path.check_pos)
+        return (c[0], c[1], c[2] + lift), f"record {d.a_position}: the transition's check position"
+    if r is not None and r.mover is not None:
+        c = _glob(r.mover.cell, r.mover.origin)
+        return (c[0], c[1], c[2] + lift), f"record {d.a_position}: the mover"
+    index = {id(x): i for i, x in enumerate(e.ours)}
+    before = [(label, c) for label, c, x in ours if index.get(id(x), len(e.ours)) <= d.a_position]
+    if before:
+        return before[-1][1], f"in {before[-1][0]}"
+    return begin, "before the steps: at the begin"
+
+
 def _views(case, e) -> list[str]:
     scene = case.scene
     m = scene.mover
@@ -189,16 +240,21 @@ def _views(case, e) -> list[str]:
     ours = _path_points(e.ours, scene)
     theirs = _path_points(e.theirs, scene)
     our_end, their_end = _end_point(case.oracle, scene), _end_point(e.implementation_outcome, scene)
-    pts = [begin] + [p for _, p, _ in ours + theirs] + [p for p in (end, our_end, their_end) if p is not None]
+    # framed on where the mover went (the requested end is drawn when it falls inside, never framed on: a
+    # mover stopped a metre out would otherwise be a dot in a corner of a view of the whole request)
+    path = [begin] + [p for _, p, _ in ours + theirs] + [p for p in (our_end, their_end) if p is not None]
+    path = [p for p in path if all(math.isfinite(x) and abs(x) < 1e6 for x in p)] or [begin]
+    statics = [(o, _shape_polygons(o)) for o in scene.objects]
+    pts = path + _touched(path, radius, statics)
     lo = [min(p[i] for p in pts) - MARGIN - radius for i in range(3)]
     hi = [max(p[i] for p in pts) + MARGIN + radius for i in range(3)]
     side_axis = 0 if hi[0] - lo[0] >= hi[1] - lo[1] else 1
-    top = _View((0, 1), (lo[0], lo[1]), (hi[0], hi[1]))
-    side = _View((side_axis, 2), (lo[side_axis], lo[2] - 2.0), (hi[side_axis], hi[2] + 2.0))
+    top = _View((0, 1), *_framed((lo[0], lo[1]), (hi[0], hi[1])))
+    side = _View((side_axis, 2), *_framed((lo[side_axis], lo[2] - 2.0), (hi[side_axis], hi[2] + 2.0)))
     terrain = _terrain(scene)
-    statics = [(o, _shape_polygons(o)) for o in scene.objects]
     env = _env_polygons(scene)
     d = e.divergence
+    marked = _divergence_point(e, scene, ours, begin, lift) if d is not None else None
     figures = []
     for view, name in ((top, "top view (x east, y north)"), (side, f"side view ({'xy'[side_axis]} across, z up)")):
         layers = ['<g class="terrain">']
@@ -233,9 +289,12 @@ def _views(case, e) -> list[str]:
                 layers.append(_circle(view, c, shape.radius * obj.scale, "object", "#555", "#e3e3e3"))
         layers.append("</g><g class=\"mover\">")
         layers.append(_circle(view, begin, radius, "sphere begin", "#333", width=1.6, title="begin"))
-        if end is not None:
+        if end is not None:  # outside the view: at its edge, in the direction of the requested end
             x, y = view.xy(end)
-            layers.append(f'<g class="requested-end"><title>requested end</title><line x1="{x - 6}" y1="{y - 6}" '
+            off = not (0 <= x <= view.w and 0 <= y <= view.h)
+            x, y = min(max(x, 7), view.w - 7), min(max(y, 7), view.h - 7)
+            title = "requested end" + (", outside the view in this direction" if off else "")
+            layers.append(f'<g class="requested-end"><title>{title}</title><line x1="{x - 6}" y1="{y - 6}" '
                           f'x2="{x + 6}" y2="{y + 6}" stroke="#333" stroke-width="1.5"/><line x1="{x - 6}" y1="{y + 6}" '
                           f'x2="{x + 6}" y2="{y - 6}" stroke="#333" stroke-width="1.5"/></g>')
         for points, color, side_name in ((ours, REF, "reference"), (theirs, IMPL, "implementation")):
@@ -251,10 +310,11 @@ def _views(case, e) -> list[str]:
             if c is not None:
                 layers.append(_circle(view, c, radius, f"sphere end {side_name}", color, width=2.2,
                                       title=f"{side_name} end"))
-        if d is not None:
-            at = next((c for label, c, r in reversed(ours) if e.ours.index(r) <= d.a_position), begin) if ours else begin
+        if marked is not None:
+            at, where = marked
             x, y = view.xy(at)
-            layers.append(f'<g class="divergence"><title>first divergence: {html.escape(d.key())}</title>'
+            layers.append(f'<g class="divergence" data-where="{html.escape(where)}"><title>first divergence: '
+                          f'{html.escape(d.key())} ({html.escape(where)})</title>'
                           f'<circle cx="{x}" cy="{y}" r="{max(radius * view.scale, 4) + 6:.1f}" fill="none" '
                           f'stroke="#d11f1f" stroke-width="2.5" stroke-dasharray="5 3"/></g>')
         layers.append("</g>")
@@ -266,35 +326,87 @@ def _cell(v) -> str:
     return html.escape("" if v is None else str(v))
 
 
-def _table(e) -> str:
-    """The two traces side by side at the implementation's grain, the first divergence's row marked."""
-    d = e.divergence
-    kinds = {(r.anchor, r.event) for r in e.theirs}
-    ours = [r for r in e.ours if (r.anchor, r.event) in kinds] if e.theirs else list(e.ours)
-    theirs = list(e.theirs)
-    at = d.index if d is not None else 0
-    lo = max(0, at - TABLE_ROWS // 2)
-    rows = ['<table class="trace"><thead><tr><th>#</th><th>tick</th><th>step</th><th>event</th><th>anchor</th>'
-            '<th>reference result</th><th>implementation result</th><th>reference check position</th>'
-            '<th>implementation check position</th></tr></thead><tbody>']
-    for i in range(lo, min(max(len(ours), len(theirs)), lo + TABLE_ROWS)):
+def _point(v) -> str:
+    return "(" + ", ".join(f"{x:.7g}" for x in v) + ")"
+
+
+def _rows(ours, theirs, d, lo: int, hi: int) -> str:
+    rows = []
+    for i in range(lo, hi):
         a = ours[i] if i < len(ours) else None
         b = theirs[i] if i < len(theirs) else None
         r = a or b
         mark = ' class="divergence"' if d is not None and i == d.index else ""
-        pos = [x.path.check_pos if x is not None and x.path is not None else None for x in (a, b)]
+        pos = [_point(x.path.check_pos) if x is not None and x.path is not None else None for x in (a, b)]
         rows.append(f"<tr{mark}><td>{i}</td><td>{_cell(r.tick)}</td><td>{_cell(r.step)}</td><td>{_cell(r.event)}</td>"
                     f"<td>{_cell(r.anchor)}</td><td>{_cell(a.result if a else None)}</td>"
                     f"<td>{_cell(b.result if b else None)}</td><td>{_cell(pos[0])}</td><td>{_cell(pos[1])}</td></tr>")
-    rows.append("</tbody></table>")
     return "".join(rows)
 
 
-STYLE = """body{font:14px/1.4 system-ui,sans-serif;margin:1.5em;color:#222}
-h1{font-size:1.3em}pre{background:#f4f4f4;padding:.7em;overflow-x:auto}
-.views{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0}figcaption{color:#555;font-size:.9em}
-table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ddd;padding:2px 5px;text-align:left}
+_HEAD = ('<thead><tr><th>#</th><th>tick</th><th>step</th><th>event</th><th>anchor</th>'
+         '<th>reference result</th><th>implementation result</th><th>reference check position</th>'
+         '<th>implementation check position</th></tr></thead>')
+
+
+def _folded(ours, theirs, d, lo: int, hi: int, what: str, cls: str) -> str:
+    if hi <= lo:
+        return ""
+    shown = (max(lo, hi - FOLDED), hi) if cls == "before" else (lo, min(hi, lo + FOLDED))
+    left = (hi - lo) - (shown[1] - shown[0])
+    more = f" ({left} more not shown)" if left else ""
+    return (f'<details class="trace-{cls}"><summary>{hi - lo} {what}{more}</summary><div class="scroll">'
+            f'<table class="trace">{_HEAD}<tbody>{_rows(ours, theirs, d, *shown)}</tbody></table></div></details>')
+
+
+def _table(e) -> str:
+    """The two traces side by side at the implementation's grain: open at the first divergence with
+    AROUND records either side, its row marked; the records before and after folded (<details>)."""
+    d = e.divergence
+    kinds = {(r.anchor, r.event) for r in e.theirs}
+    ours = [r for r in e.ours if (r.anchor, r.event) in kinds] if e.theirs else list(e.ours)
+    theirs = list(e.theirs)
+    n = max(len(ours), len(theirs))
+    at = d.index if d is not None else 0
+    lo, hi = max(0, at - AROUND), min(n, at + AROUND + 1)
+    return (_folded(ours, theirs, d, 0, lo, "records before these", "before")
+            + f'<div class="scroll"><table class="trace trace-open">{_HEAD}<tbody>{_rows(ours, theirs, d, lo, hi)}'
+            "</tbody></table></div>"
+            + _folded(ours, theirs, d, hi, n, "records after these", "after"))
+
+
+def _differences(case, e) -> str:
+    """The outcome's fields that differ, with both values: the implementation's and ACE's."""
+    from .compare import _show, compare
+
+    rows = []
+    if e.implementation_outcome is not None:
+        for x in compare(e.implementation_outcome, case.oracle, case.mode):
+            leaf = x.field.rsplit(".", 1)[-1]
+            rows.append((x.field, _show(leaf, x.a), _show(leaf, x.b)))
+    if not rows and case.differences:
+        return ('<section class="differences"><h2>What differs</h2><ul>'
+                + "".join(f"<li>{html.escape(line)}</li>" for line in case.differences) + "</ul></section>")
+    if not rows:
+        return '<section class="differences"><h2>What differs</h2><p>nothing: every field agrees</p></section>'
+    body = "".join(f"<tr><td>{html.escape(f)}</td><td>{html.escape(a)}</td><td>{html.escape(b)}</td></tr>"
+                   for f, a, b in rows)
+    return (f'<section class="differences"><h2>What differs ({len(rows)} field{"s" if len(rows) != 1 else ""})</h2>'
+            f'<table class="differences"><thead><tr><th>field</th><th>{html.escape(e.implementation)}</th>'
+            f'<th>ACE (the case\'s oracle outcome)</th></tr></thead><tbody>{body}</tbody></table></section>')
+
+
+STYLE = """body{font:14px/1.4 system-ui,sans-serif;margin:1.5em auto;padding:0 1.5em;max-width:1600px;color:#222}
+h1{font-size:1.3em;overflow-wrap:anywhere}h2{font-size:1.1em;margin:1em 0 .4em}
+pre{background:#f4f4f4;padding:.7em;white-space:pre-wrap;overflow-wrap:anywhere}
+.views{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0;flex:1 1 460px;max-width:100%}
+figure svg{width:100%;height:auto;border:1px solid #ddd}figcaption{color:#555;font-size:.9em}
+.scroll{overflow-x:auto}table{border-collapse:collapse;font-size:12px}
+td,th{border:1px solid #ddd;padding:2px 5px;text-align:left;overflow-wrap:anywhere;vertical-align:top}
+table.trace td:nth-child(-n+5),table.trace th{white-space:nowrap}
+table.differences{font-size:13px}table.differences td:first-child{font-weight:bold}
 tr.divergence td{background:#ffd9d9;font-weight:bold}.legend span{margin-right:1.2em}
+details{margin:.4em 0}summary{cursor:pointer;color:#1f4f8f}
 .known{color:#7a4b00;background:#fff3d6;padding:.3em .5em}"""
 
 
@@ -313,7 +425,8 @@ def explain_page(case, e, name: str) -> str:
             f"{html.escape(name)}</title><style>{STYLE}</style></head><body>"
             f"<h1>acconform explain: {html.escape(name)}</h1>"
             f"<p>scene {html.escape(case.scene.name or '(unnamed)')}; implementation {html.escape(e.implementation)}</p>"
-            f"{known}<pre class=\"first-divergence\">{html.escape(chr(10).join(lines))}</pre>{legend}"
+            f"{_differences(case, e)}{known}<h2>First divergence</h2>"
+            f"<pre class=\"first-divergence\">{html.escape(chr(10).join(lines))}</pre>{legend}"
             f"<div class=\"views\">{''.join(_views(case, e))}</div><h2>Trace</h2>{_table(e)}</body></html>")
 
 

@@ -226,6 +226,9 @@ class _Failed(Exception):
     """The process failed on this scene; args[0] is the verdict text."""
 
 
+TRACED_TIMEOUT = 30  # a traced request may take this many times --timeout: a trace costs 20-30x a plain run
+
+
 class Implementation:
     """An implementation under test, run as a process speaking acconform.protocol/1.
 
@@ -583,7 +586,7 @@ class Implementation:
         stored as None: it is ACE's answer as recorded, so there is nothing to read or compare."""
         rid, sent = self._inflight[0]
         try:
-            line = self._readline(self.timeout)
+            line = self._readline(self.timeout * (TRACED_TIMEOUT if rid in self._traced else 1))
         except _Failed as e:
             return self._fail_head(e.args[0])
         if isinstance(sent, RecordedText):

@@ -668,7 +668,7 @@ def _shrink_hit(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mod
     from hypothesis import seed as hseed
     from hypothesis.database import InMemoryExampleDatabase, choices_to_bytes
 
-    from .shrink import DEFAULT_BUDGET, scene_bytes, shrink_scene
+    from .shrink import DEFAULT_BUDGET, no_larger, scene_bytes, shrink_scene, size
 
     scene0, choices, case0, impl0 = hit
     size0 = scene_bytes(scene0)
@@ -714,8 +714,14 @@ def _shrink_hit(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mod
         scene, ran_case, impl = scene0, case0, impl0
         shrink = Shrink("none", f"not shrunk: Hypothesis' replay of the drawn scene did not differ ({', '.join(sig0)})",
                         size0)
-    # then the scene itself (acconform.shrink: fewer objects and cells, a shorter path, ...): Hypothesis
-    # shrinks the choices, and fewer choices can still draw a larger scene
+    # Hypothesis shrinks the choices, and fewer choices can still draw a larger scene: one larger than the
+    # drawn scene in any measure is dropped (acconform.shrink.no_larger), and the drawn scene shrunk instead
+    if not no_larger(scene0, scene):
+        grew = ", ".join(size(scene).exceeds(size(scene0)))
+        scene, ran_case, impl = scene0, case0, impl0
+        shrink = Shrink("none", f"not shrunk by Hypothesis: its smallest failing scene was larger than the drawn one ({grew})",
+                        size0)
+    # then the scene itself (acconform.shrink: fewer objects and cells, a shorter path, ...), never larger
     sig = signature(ran_case[2])
     smaller: list = []
 

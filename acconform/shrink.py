@@ -11,23 +11,81 @@ It knows nothing of ACE: the caller's `still_fails` compares the implementation 
 stands in for ACE (the runner uses the built-in port, after checking that it agrees with ACE's
 recorded answer on the original scene). Deterministic: the same scene and predicate give the
 same result. `budget` bounds the candidates tried.
+
+Never larger: a candidate larger than the scene first given in any measure (`Size`: its JSON's
+bytes, landblocks, objects, polygons, BSP nodes, cells, ticks) is never run, so the scene
+returned is no larger than the one given in every measure (a simpler time step or a midpoint can
+take more digits than the value it replaces). `no_larger` is the one test of it, which the
+runner also applies to what Hypothesis' shrinker hands back before this shrink starts from it.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, fields, replace
 from typing import Callable, Iterator
 
 from .errors import InvalidScene
 from .flags import PhysicsState, TransientState
 from .numerics import to_f32
-from .scene import TICK_INPUTS, Scene, validate_scene
+from .scene import (BSPLeaf, BSPNode, Building, CellBSPLeaf, CellBSPNode, EnvCell, Landblock, PolygonRec,
+                    StaticObject, TICK_INPUTS, Scene, validate_scene)
 
 DEFAULT_BUDGET = 300  # candidates tried per scene (each costs a run on both sides)
 
 
 def scene_bytes(scene: Scene) -> int:
     return len(scene.dumps().encode("utf-8"))
+
+
+@dataclass(frozen=True, slots=True)
+class Size:
+    """A scene's size in every measure a shrink must not grow."""
+
+    bytes: int
+    landblocks: int
+    objects: int  # static objects and buildings
+    polygons: int  # every polygon record: objects', Environments' cell structures', buildings'
+    bsp_nodes: int  # nodes and leaves of every BSP, physics and cell
+    cells: int  # EnvCells
+    ticks: int  # a tick scene's steps
+
+    def exceeds(self, other: "Size") -> list[str]:
+        """The measures in which this size is larger than `other`'s."""
+        return [f.name for f in fields(self) if getattr(self, f.name) > getattr(other, f.name)]
+
+
+_COUNTED = {Landblock: "landblocks", StaticObject: "objects", Building: "objects", PolygonRec: "polygons",
+            BSPNode: "bsp_nodes", BSPLeaf: "bsp_nodes", CellBSPNode: "bsp_nodes", CellBSPLeaf: "bsp_nodes",
+            EnvCell: "cells"}
+
+
+def size(scene: Scene) -> Size:
+    """`scene`'s size in every measure (`Size`)."""
+    counts = dict.fromkeys(("landblocks", "objects", "polygons", "bsp_nodes", "cells"), 0)
+    stack: list = [scene]
+    while stack:
+        x = stack.pop()
+        if isinstance(x, (tuple, list)):
+            stack.extend(y for y in x if not isinstance(y, (int, float, str, bool, type(None))))
+        elif hasattr(x, "__dataclass_fields__"):
+            name = _COUNTED.get(type(x))
+            if name is not None:
+                counts[name] += 1
+            for f in fields(x):
+                v = getattr(x, f.name)
+                if not isinstance(v, (int, float, str, bool, type(None))):
+                    stack.append(v)
+        elif isinstance(x, dict):
+            stack.extend(x.values())
+    ticks = len(scene.ticks.steps) if scene.ticks is not None else 0
+    return Size(scene_bytes(scene), ticks=ticks, **counts)
+
+
+def no_larger(given: "Scene | Size", scene: Scene) -> bool:
+    """Whether `scene` is no larger than `given` (a scene or its Size) in every measure: the one test a
+    shrink's result must pass, on every path (acconform.shrink, Hypothesis' shrinker, the runner's)."""
+    limit = given if isinstance(given, Size) else size(given)
+    return not size(scene).exceeds(limit)
 
 
 def _without(items: tuple, i: int) -> tuple:
@@ -160,7 +218,9 @@ def shrink_scene(scene: Scene, still_fails: Callable[[Scene], bool], budget: int
     """The smallest scene found from `scene` for which `still_fails` holds, and the candidates tried.
 
     Greedy: the first candidate that still fails replaces the scene and the candidates start
-    over from it; done when none does or `budget` candidates were tried."""
+    over from it; done when none does or `budget` candidates were tried. A candidate larger than
+    `scene` in any measure (`no_larger`) is never run: the scene returned is never larger."""
+    limit = size(scene)
     tried = 0
     improved = True
     while improved and tried < budget:
@@ -171,6 +231,8 @@ def shrink_scene(scene: Scene, still_fails: Callable[[Scene], bool], budget: int
             try:
                 c = validate_scene(c)
             except InvalidScene:
+                continue
+            if not no_larger(limit, c):
                 continue
             tried += 1
             if still_fails(c):

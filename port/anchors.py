@@ -34,6 +34,24 @@ REGISTRY: dict[str, Anchor] = {}
 FUNCTIONS: dict[str, object] = {}
 
 
+# a routine that remembers answers ACE computes every time (docs/port-conventions.md "Remembered
+# answers"), by its key -> (the routine, its twin computing every time); a traced run runs the twin in
+# its place (port/tracing.py), so a trace holds the records of computing the answer, whatever ran before
+REMEMBERING: dict[str, tuple[object, object]] = {}
+
+
+def remembers(computed):
+    """Register the decorated routine as one that remembers answers, and `computed` as the same routine
+    without the memory (ACE's body, called the same way), which a traced run runs instead. Place it
+    under @anchor or @harness."""
+
+    def register(fn):
+        REMEMBERING[f"{fn.__module__}.{fn.__qualname__}"] = (fn, computed)
+        return fn
+
+    return register
+
+
 def anchor(retail: str | None, ace: str, note: str = ""):
     if ":" not in ace or not ace.split(":", 1)[0].endswith(".cs"):
         raise ValueError(f"ACE anchor {ace!r} must read 'File.cs:Method'")

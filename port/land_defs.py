@@ -13,7 +13,7 @@ from __future__ import annotations
 from enum import IntEnum
 
 from acconform.numerics import Runtime, Vector3, cast_float, cs_floor, wrap_i32, wrap_u32
-from acconform.port.anchors import anchor, harness
+from acconform.port.anchors import anchor, harness, remembers
 from acconform.port.constants import EPSILON
 from acconform.port.errors import InvalidOperationException
 
@@ -113,13 +113,23 @@ _NO_OFFSET = Vector3(0.0, 0.0, 0.0)
 _BLOCK_OFFSETS: dict[tuple[int, int], Vector3] = {}  # get_block_offset's answers (Vector3 is immutable)
 
 
+def _get_block_offset_every_time(cell_from: int, cell_to: int) -> Vector3:
+    """GetBlockOffset as ACE writes it, nothing remembered (what a traced run runs)."""
+    if cell_from >> BLOCK_PART_SHIFT == cell_to >> BLOCK_PART_SHIFT:
+        return _NO_OFFSET
+    return _block_offset(cell_from, cell_to)
+
+
 @anchor("LandDefs::get_block_offset", "LandDefs.cs:GetBlockOffset")
+@remembers(_get_block_offset_every_time)
 def get_block_offset(cell_from: int, cell_to: int) -> Vector3:
     """The offset from cell_from's landblock to cell_to's (Python floats, see the module note).
 
     Raises InvalidOperationException where ACE's ``.Value`` throws: a landblock in column or row 0xFF.
     The answer depends on the two landblock ids only, so it is remembered (the transition asks
-    for the same few pairs tens of thousands of times); a throwing pair is never remembered.
+    for the same few pairs tens of thousands of times); a throwing pair is never remembered. A
+    traced run computes it every time (anchors.remembers), so its trace holds blockid_to_lcoord's
+    calls whatever ran before.
     """
     block_from = cell_from >> BLOCK_PART_SHIFT
     block_to = cell_to >> BLOCK_PART_SHIFT

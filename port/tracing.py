@@ -15,8 +15,10 @@ originals back afterwards. What a wrapper writes depends on the routine's ACE fi
 - any other routine: one ``call`` record at its exit, with its result only.
 
 Records carry the tick (run_ticks' step index) and the FindTransitionalPosition step they ran in.
-A traced run starts cold (the memories of GfxObjs and landblocks across runs emptied first), so its
-trace does not depend on what the process ran before.
+A traced run starts cold (the memories of GfxObjs and landblocks across runs emptied first), and a
+routine that remembers answers ACE computes every time (anchors.remembers) runs its twin computing
+every time, so its trace is a function of the scene alone: it does not depend on what the process
+ran before.
 """
 
 from __future__ import annotations
@@ -34,7 +36,7 @@ from acconform.outcome import ContactPlaneState, NormalState, PlaneState
 from acconform.staging import MOVER_ID
 from acconform.trace import PathState, TraceRecord
 
-from .anchors import FUNCTIONS, REGISTRY, harness, load_all
+from .anchors import FUNCTIONS, REGISTRY, REMEMBERING, harness, load_all
 
 # routines whose entry and exit snapshot the transition (the rest of the registry writes a `call`)
 PATH_FILES = frozenset({"Transition.cs", "SpherePath.cs", "ObjectInfo.cs", "BSPTree.cs", "BSPNode.cs", "BSPLeaf.cs",
@@ -253,14 +255,20 @@ def installed(recorder: Recorder):
     load_all()
     from .transition.transition import Transition
 
-    by_id = {id(fn): key for key, fn in FUNCTIONS.items()}
+    # the routines replaced for the run: every anchored one (by a wrapper writing its records) and every
+    # one that remembers answers (by its twin computing every time, wrapped when anchored)
+    originals = dict(FUNCTIONS)
+    originals.update((key, fn) for key, (fn, _) in REMEMBERING.items())
+    by_id = {id(fn): key for key, fn in originals.items()}
     wrappers: dict[int, object] = {}
     patched: list[tuple[object, str, object]] = []
 
     def wrapper(fn):
         w = wrappers.get(id(fn))
         if w is None:
-            w = wrappers[id(fn)] = _wrap(fn, REGISTRY[by_id[id(fn)]], recorder, Transition)
+            key = by_id[id(fn)]
+            body = REMEMBERING[key][1] if key in REMEMBERING else fn
+            w = wrappers[id(fn)] = _wrap(body, REGISTRY[key], recorder, Transition) if key in REGISTRY else body
         return w
 
     with _lock:
@@ -281,13 +289,13 @@ def installed(recorder: Recorder):
                 if module is None or not (name == package or name.startswith(package + ".")):
                     continue
                 for attr, value in list(vars(module).items()):
-                    if id(value) in by_id and FUNCTIONS[by_id[id(value)]] is value:
+                    if id(value) in by_id and originals[by_id[id(value)]] is value:
                         patched.append((module, attr, value))
                         setattr(module, attr, wrapper(value))
                     elif isinstance(value, type) and value.__module__ == name:
                         for cattr, cvalue in list(vars(value).items()):
                             raw = cvalue.__func__ if isinstance(cvalue, (staticmethod, classmethod)) else cvalue
-                            if id(raw) in by_id and FUNCTIONS[by_id[id(raw)]] is raw:
+                            if id(raw) in by_id and originals[by_id[id(raw)]] is raw:
                                 w = wrapper(raw)
                                 patched.append((value, cattr, cvalue))
                                 setattr(value, cattr, type(cvalue)(w) if raw is not cvalue else w)

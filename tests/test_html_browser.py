@@ -19,7 +19,7 @@ import pytest
 from acconform.case import ImplementationRun
 from acconform.compare import compare
 from acconform.explain import explain
-from acconform.html import IMPL, REF, explain_page, report_page
+from acconform.html import AROUND, IMPL, REF, explain_page, report_page
 from acconform.protocol import Implementation
 from acconform.runner import make_case
 
@@ -88,12 +88,25 @@ def pixels_of(img: np.ndarray, color: str, tolerance: int = 40) -> int:
     return int((np.abs(img[:, :, :3].astype(int) - rgb).sum(axis=2) <= tolerance).sum())
 
 
+# the planted bugs whose pages are drawn: a step-down case, and issue 43's terrain case (a cliff slide)
+PAGES = {BUG: "transitional_insert:step_down_halves", "cliff_slide_sign_flipped": None}
+
+
 @pytest.fixture(scope="module")
-def page(tmp_path_factory):
+def pages(tmp_path_factory):
+    return {bug: _page(tmp_path_factory, bug, branch) for bug, branch in PAGES.items()}
+
+
+@pytest.fixture(scope="module")
+def page(pages):
+    return pages[BUG]
+
+
+def _page(tmp_path_factory, bug, branch):
     from mutants import killing_records
 
-    (rec, got), = killing_records(BUG, 1, branch="transitional_insert:step_down_halves")
-    command = f"{sys.executable} {PLANTED} {BUG}"
+    (rec, got), = killing_records(bug, 1, branch=branch)
+    command = f"{sys.executable} {PLANTED} {bug}"
     impl = Implementation(command, timeout=60)
     impl.runtime = "coreclr"
     try:
@@ -105,11 +118,33 @@ def page(tmp_path_factory):
     folder = tmp_path_factory.mktemp("pages")
     path = folder / "case.html"
     path.write_text(explain_page(case, e, "case.json"), encoding="utf-8")
-    return path, e
+    return path, e, case
+
+
+MEASURE = """<script>
+const box = s => { const r = s.getBoundingClientRect(); return Math.round(r.width) + "x" + Math.round(r.height); };
+document.body.setAttribute("data-scroll-width", document.documentElement.scrollWidth);
+document.body.setAttribute("data-views", [...document.querySelectorAll("svg.view")].map(box).join(" "));
+document.body.setAttribute("data-h1", box(document.querySelector("h1")));
+const hidden = [...document.querySelectorAll("h1, p, pre")].filter(x => x.scrollWidth > x.clientWidth + 1);
+document.body.setAttribute("data-cut", hidden.map(x => x.tagName + "." + x.className).join(" ") || "none");
+</script>"""
+
+
+def laid_out(path: Path, width: int, tmp_path: Path) -> dict:
+    """The page as chromium lays it out `width` px wide: the document's scroll width, each view's size."""
+    probe = tmp_path / f"probe-{width}.html"
+    probe.write_text(path.read_text(encoding="utf-8").replace("</body>", MEASURE + "</body>"), encoding="utf-8")
+    dom = browser("--dump-dom", f"--window-size={width},1000", probe.as_uri()).stdout.decode()
+    body = re.search(r"<body([^>]*)>", dom).group(1)
+    get = lambda name: re.search(f'{name}="([^"]*)"', body).group(1)  # noqa: E731
+    views = [tuple(int(x) for x in v.split("x")) for v in get("data-views").split()]
+    return {"scroll_width": int(get("data-scroll-width")), "views": views, "cut": get("data-cut"),
+            "h1": tuple(int(x) for x in get("data-h1").split("x"))}
 
 
 def test_the_explain_page_loads_in_chromium_with_both_views_the_spheres_and_the_divergence_marked(page):
-    path, e = page
+    path, e, _ = page
     r = browser("--dump-dom", path.as_uri())
     assert r.returncode == 0, r.stderr.decode()[-500:]
     dom = r.stdout.decode()
@@ -126,7 +161,7 @@ def test_the_explain_page_loads_in_chromium_with_both_views_the_spheres_and_the_
 
 
 def test_the_explain_pages_screenshot_shows_both_sides_colours_and_the_red_divergence_mark(page, tmp_path):
-    path, _ = page
+    path, _, _ = page
     shot = tmp_path / "page.png"
     r = browser(f"--screenshot={shot}", "--window-size=1300,1000", path.as_uri())
     assert r.returncode == 0 and shot.exists(), r.stderr.decode()[-500:]
@@ -142,7 +177,7 @@ def test_the_explain_pages_screenshot_shows_both_sides_colours_and_the_red_diver
 
 
 def test_the_report_index_loads_in_chromium_with_its_groups_and_links(page, tmp_path):
-    path, _ = page
+    path, _, _ = page
     index = tmp_path / "index.html"
     index.write_text(report_page("failures", [("first divergence: A x", "case-1.json", path.as_uri(), "one"),
                                               ("first divergence: A x", "case-2.json", "", "two"),
@@ -150,3 +185,87 @@ def test_the_report_index_loads_in_chromium_with_its_groups_and_links(page, tmp_
     dom = browser("--dump-dom", index.as_uri()).stdout.decode()
     assert dom.count('<section class="group">') == 2 and dom.count('<li class="case">') == 3
     assert "3 cases, 2 distinct first divergences" in dom and f'href="{path.as_uri()}"' in dom
+
+
+def test_the_explain_page_lists_the_differing_fields_with_both_values_before_anything_else(page):
+    path, e, case = page
+    dom = browser("--dump-dom", path.as_uri()).stdout.decode()
+    first = dom.index('class="differences"')
+    assert first < dom.index('class="first-divergence"') < dom.index('class="view"') < dom.index('class="trace')
+    from acconform.compare import _show
+
+    diffs = compare(e.implementation_outcome, case.oracle)
+    assert diffs
+    section = dom[first:dom.index("</section>", first)]
+    for d in diffs:
+        leaf = d.field.rsplit(".", 1)[-1]
+        assert f"<td>{d.field}</td><td>{_show(leaf, d.a)}</td><td>{_show(leaf, d.b)}</td>" in section
+
+
+def test_the_trace_table_opens_at_the_first_divergence_with_the_records_around_it_and_folds_the_rest(page):
+    path, e, _ = page
+    dom = browser("--dump-dom", path.as_uri()).stdout.decode()
+    opened = dom[dom.index('class="trace trace-open"'):]
+    opened = opened[:opened.index("</table>")]
+    assert 'class="divergence"' in opened and opened.count("<tr") <= 2 * AROUND + 2  # the rows and the header
+    assert f"<td>{e.divergence.index}</td>" in opened
+    assert dom.count("<details") == 2 and " open" not in re.findall(r"<details[^>]*>", dom)[0]
+    assert dom.index('class="trace-before"') < dom.index('class="trace trace-open"') < dom.index('class="trace-after"')
+
+
+def test_a_divergence_before_the_steps_is_marked_at_the_begin_not_at_the_end_of_the_path(page, tmp_path):
+    import dataclasses
+
+    from acconform.trace import Divergence
+
+    path, e, case = page
+    k = next(i for i, r in enumerate(e.ours) if r.event == "call" and r.step is None)  # a record before the steps
+    r = e.ours[k]
+    d = Divergence(0, r, r, "result", 1.0, 2.0, r.within or r.anchor, k, k)
+    before = tmp_path / "before.html"
+    before.write_text(explain_page(case, dataclasses.replace(e, divergence=d), "case.json"), encoding="utf-8")
+    dom = browser("--dump-dom", before.as_uri()).stdout.decode()
+    marks = re.findall(r'<g class="divergence" data-where="([^"]*)">.*?<circle cx="([\d.]+)" cy="([\d.]+)"', dom)
+    begins = re.findall(r'<circle class="sphere begin" cx="([\d.]+)" cy="([\d.]+)"', dom)
+    assert len(marks) == 2 and len(begins) == 2
+    for (where, x, y), (bx, by) in zip(marks, begins):
+        assert where.startswith("before the steps") and (x, y) == (bx, by)
+
+
+@pytest.mark.parametrize("bug", sorted(PAGES))
+@pytest.mark.parametrize("width", [1000, 1300, 1600])
+def test_the_explain_page_reads_from_1000_to_1600_px_with_views_large_enough_to_read(pages, tmp_path, width, bug):
+    path, _, _ = pages[bug]
+    got = laid_out(path, width, tmp_path)
+    assert got["scroll_width"] <= width, f"the page is {got['scroll_width']} px wide in a {width} px window"
+    assert got["h1"][0] <= width and got["cut"] == "none", f"text cut off (scrolled inside its box): {got['cut']}"
+    assert len(got["views"]) == 2
+    for w, h in got["views"]:
+        assert w >= 400 and h >= 0.45 * w, f"a view of {w}x{h} px: a thin strip ({got['views']})"
+
+
+@pytest.mark.parametrize("bug", sorted(PAGES))
+def test_each_view_is_framed_on_the_movers_path_not_on_the_requested_end(pages, bug):
+    path, _, _ = pages[bug]
+    dom = browser("--dump-dom", path.as_uri()).stdout.decode()
+    for svg in re.findall(r'<svg[^>]*class="view".*?</svg>', dom, re.S):
+        w, h = (float(x) for x in re.search(r'width="([\d.]+)" height="([\d.]+)"', svg).groups())
+        spheres = [(float(x), float(y)) for x, y in re.findall(
+            r'<circle class="sphere (?:begin|step \w+|end \w+)" cx="([-\d.]+)" cy="([-\d.]+)"', svg)]
+        xs, ys = [x for x, _ in spheres], [y for _, y in spheres]
+        centre = ((min(xs) + max(xs)) / 2 / w, (min(ys) + max(ys)) / 2 / h)
+        assert 0.25 <= centre[0] <= 0.75 and 0.25 <= centre[1] <= 0.75, f"the path's centre at {centre} of the view"
+
+
+def test_a_requested_end_far_from_where_the_mover_went_leaves_the_path_framed(page, tmp_path):
+    import dataclasses
+
+    path, e, case = page
+    m = case.scene.mover
+    far = dataclasses.replace(m.end, frame=dataclasses.replace(m.end.frame, origin=(
+        m.end.frame.origin[0] + 60.0, m.end.frame.origin[1], m.end.frame.origin[2])))
+    moved = dataclasses.replace(case, scene=case.scene.replace(mover=dataclasses.replace(m, end=far)))
+    far_page = tmp_path / "far.html"
+    far_page.write_text(explain_page(moved, e, "case.json"), encoding="utf-8")
+    test_each_view_is_framed_on_the_movers_path_not_on_the_requested_end({"far": (far_page, e, moved)}, "far")
+    assert "outside the view in this direction" in far_page.read_text()

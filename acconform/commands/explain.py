@@ -43,7 +43,7 @@ def load_case(path: str):
 def explain_case(args, doc, mode):
     """(the Explanation of case `doc` replayed as `mode`, lines saying which implementation and why,
     the runtime it computed as): explain's and report's one way to explain a case."""
-    from ..explain import explain
+    from ..explain import explain_case as explain
     from .repro import _backend, _runtime, ace_answer
 
     runtime = _runtime(args, doc)
@@ -58,7 +58,7 @@ def explain_case(args, doc, mode):
             from ..oracle import require_live
 
             live = require_live(args.ace, args.runtime)
-        return explain(doc.scene, ace, source, backend, mode, runtime, live), said, runtime
+        return explain(doc, backend, mode, runtime, ace, source, live), said, runtime
     finally:
         getattr(backend, "close", lambda: None)()
 

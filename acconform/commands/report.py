@@ -25,6 +25,7 @@ def run(args) -> int:
 
     from ..errors import AcconformError
     from ..html import check_writable, explain_page, report_page, write_page
+    from ..explain import group_name
     from .explain import explain_case, load_case
 
     folder = Path(args.dir)
@@ -41,7 +42,7 @@ def run(args) -> int:
         case = load_case(str(path))
         e = explain_case(args, case, case.mode)[0]
         d = e.divergence
-        group = (f"first divergence: {d.key()}" if d is not None
+        group = (group_name(e) if d is not None
                  else "differs in " + ", ".join(sorted({x.split(':', 1)[0] for x in case.differences})))
         if e.known is not None:
             group += f" (known: ACE differs from retail here: {e.known.name})"

@@ -44,9 +44,9 @@ def run(args) -> int:
         oracle, source = ace_answer(args, doc)
         first = None
         if compare(port, oracle, mode) and getattr(backend, "traces", False):  # the first divergence on top
-            from ..explain import explain, render as render_explanation
+            from ..explain import explain_case, render as render_explanation
 
-            first = render_explanation(explain(doc.scene, oracle, source, backend, mode, runtime))
+            first = render_explanation(explain_case(doc, backend, mode, runtime, oracle, source))
     finally:
         getattr(backend, "close", lambda: None)()
     diffs = compare(port, oracle, mode)

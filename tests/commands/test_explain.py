@@ -82,6 +82,63 @@ def test_one_planted_bug_is_one_group_however_many_differences(planted_cases):
     assert {f.group for f in found} == {"first divergence: Transition.cs:TransitionalInsert args"}
 
 
+def _terrain_scenes_across_landblocks(n):
+    from acconform.oracle import default_corpus
+    from acconform.oracle.recorded import RecordedOracle
+
+    oracle = RecordedOracle(default_corpus("coreclr"))
+    records = (oracle._record(e) for e in oracle.select(n=40, seed=3, runtime="coreclr", kinds=["terrain"]))
+    return [r for r in records if len(r.scene.landblocks) > 1][:n]
+
+
+@pytest.mark.anchor("LandDefs::get_block_offset")
+def test_explain_names_no_divergence_for_an_implementation_that_agrees_after_it_ran_the_scene_untraced():
+    # issue 43: an implementation that had remembered GetBlockOffset's answers wrote no inner call, and
+    # explain named a divergence "before the steps" on a case whose outcome agrees
+    from acconform.explain import explain_case
+    from acconform.runner import guarded
+
+    rec = _terrain_scenes_across_landblocks(1)[0]
+    impl = Implementation(f"{sys.executable} {PLANTED} none", timeout=120)
+    impl.runtime = "coreclr"
+    try:
+        assert not compare(guarded(impl, rec.scene), rec.outcome)  # an untraced run first, as check and repro do
+        e = explain_case(rec, impl, "exact", "coreclr", rec.outcome)
+    finally:
+        impl.close()
+    assert e.divergence is None and e.note == "the traces agree at the implementation's grain"
+
+
+@pytest.mark.anchor("CTransition::cliff_slide")
+def test_check_and_explain_name_the_same_first_divergence_whatever_the_implementation_ran_before(tmp_path):
+    from acconform.explain import triage
+    from acconform.runner import guarded
+    from mutants import killing_records
+
+    bug = "cliff_slide_sign_flipped"
+    command = f"{sys.executable} {PLANTED} {bug}"
+    (rec, got), = killing_records(bug, 1)
+    diffs = compare(got, rec.outcome)
+    case = make_case(rec.scene, got, rec.outcome, diffs, 0, "exact", rec.versions,
+                     ImplementationRun(command, str(ROOT), Implementation(command).hello))
+    path = tmp_path / "case-cliff.json"
+    write_document(path, case)
+    found = [Found(case, path, signature(diffs))]
+    impl = Implementation(command, timeout=120)
+    impl.runtime = "coreclr"
+    try:  # check's implementation has run the campaign's scenes before it traces the difference
+        for other in _terrain_scenes_across_landblocks(3) + [rec]:
+            guarded(impl, other.scene)
+        triage(found, impl, "exact", "coreclr")
+    finally:
+        impl.close()
+    r = cli("explain", str(path), "--timeout", "120")  # a fresh process, a fresh implementation
+    assert r.returncode == 1, r.stderr
+    line = next(x for x in r.stdout.splitlines() if x.startswith("first divergence:"))
+    assert found[0].group.startswith("first divergence: Transition.cs:CliffSlide")
+    assert line.startswith(found[0].group + " (")
+
+
 def test_report_indexes_a_failures_directory_by_first_divergence_with_a_page_per_case(planted_cases, tmp_path):
     folder, cases = planted_cases
     r = cli("report", str(folder), "--html", str(tmp_path / "index.html"))

@@ -119,3 +119,38 @@ def test_the_protocol_docs_example_trace_is_one_the_harness_reads():
     # the example is the port's own first step record for the flat walk (written by the port, not by hand)
     _, port = traced_run(example("flat_walk"))
     assert first_divergence(port, records) is None
+
+
+SLOW = """
+import json, sys, time
+from acconform.codec import dumps_compact
+from acconform.outcome import Outcome
+from acconform.protocol import handshake
+from acconform.trace import trace_to_json
+print(dumps_compact(handshake("slow", "1")), flush=True)
+for line in sys.stdin:
+    req = json.loads(line)
+    time.sleep(float(sys.argv[1]))
+    answer = {"id": req["id"], "outcome": Outcome(ok=True).to_json()}
+    if req.get("trace"):
+        answer["trace"] = trace_to_json([])
+    print(dumps_compact(answer), flush=True)
+"""
+
+
+def test_a_traced_request_may_take_longer_than_the_time_limit_of_a_plain_one(tmp_path):
+    # a trace costs 20-30x a plain run: a traced request held to the plain limit timed out under load,
+    # and check's triage then grouped the case by fields where explain named its first divergence
+    from acconform.protocol import TRACED_TIMEOUT
+
+    script = tmp_path / "slow.py"
+    script.write_text(SLOW)
+    impl = Implementation(f"{sys.executable} {script} 1.5", timeout=1)  # answers each request after 1.5 s
+    try:
+        scene = getattr(example("flat_walk"), "scene", example("flat_walk"))
+        assert TRACED_TIMEOUT * 1 > 1.5
+        outcome, records, _ = impl.run_traced(scene)
+        assert outcome.error is None and records == ()
+        assert "ImplementationTimeout" in (impl.run(scene).error or "")
+    finally:
+        impl.close()

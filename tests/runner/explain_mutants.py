@@ -11,6 +11,8 @@ this); then the mutant run as an external implementation
 (tests/impl/planted_impl.py through the protocol, feature `trace`) is traced on that scene, and
 acconform.explain names the first divergence from the port's trace. A hit: the routine it names is
 the ACE method of the port function holding the mutated text (a mutant in a constant has none).
+Each case is also triaged as `check` does (the same implementation, after it ran earlier cases'
+scenes and this one untraced): the last line counts the cases where check's group is explain's.
 """
 
 from __future__ import annotations
@@ -70,12 +72,12 @@ def main() -> int:
     warnings.simplefilter("ignore")
 
     from acconform.compare import compare
-    from acconform.explain import explain
+    from acconform.explain import explain_case, group_name, triage
     from acconform.oracle import default_corpus
     from acconform.oracle.recorded import RecordedOracle
     from acconform.port.run import run_scene
     from acconform.protocol import KINDS, Implementation
-    from acconform.runner import guarded
+    from acconform.runner import Found, guarded, make_case
     from mutants import MUTATIONS, load_mutant
 
     sample = json.loads((HERE.parent / "data" / "corpus" / args.runtime / "fast-sample.json").read_text())
@@ -87,6 +89,7 @@ def main() -> int:
     entries = [e for e in everything if e.key in keys]
     only = set(args.only.split(",")) if args.only else None
     rows = []
+    previous = []  # the killing records so far: the scenes check's implementation would have run before
     for i, m in enumerate(MUTATIONS):
         if only and m.name not in only:
             continue
@@ -108,13 +111,20 @@ def main() -> int:
             impl = Implementation(f"{sys.executable} {HERE.parent / 'impl' / 'planted_impl.py'} {m.name} "
                                   f"--kinds {','.join(KINDS)}", timeout=600)
             impl.runtime = args.runtime
-            try:
-                e = explain(rec.scene, rec.outcome, "ACE's recorded answer", impl, "exact", args.runtime)
+            found = [Found(make_case(rec.scene, rec.outcome, rec.outcome, [], 0, "exact", rec.versions), "", [])]
+            try:  # as `explain` does: a fresh implementation traces the case
+                e = explain_case(found[0].case, impl, "exact", args.runtime, rec.outcome, "ACE's recorded answer")
+                # as check's triage does: the implementation has run other scenes, and this one untraced, first
+                for other in previous[-3:] + [rec]:
+                    guarded(impl, other.scene)
+                triage(found, impl, "exact", args.runtime)
             finally:
                 impl.close()
+            previous.append(rec)
             d = e.divergence
             row.update(routine=d.routine if d else None, field=d.field if d else None, note=e.note,
-                       known=e.known.name if e.known else None, hit=bool(d and d.routine == row["expected"]))
+                       known=e.known.name if e.known else None, hit=bool(d and d.routine == row["expected"]),
+                       group=group_name(e), check_agrees=(found[0].group or None) == group_name(e))
         row["seconds"] = round(time.monotonic() - t0, 1)
         rows.append(row)
         print(json.dumps(row), flush=True)
@@ -123,6 +133,9 @@ def main() -> int:
           f"killed by the {args.runtime} corpus whose text lies in an anchored routine "
           f"({len(rows)} run; {sum(not r['killed'] for r in rows)} not killed by it; "
           f"{sum(r['killed'] and not r['expected'] for r in rows)} in a constant)")
+    traced = [r for r in rows if r["killed"]]
+    print(f"check's triage and explain name the same first divergence for {sum(r['check_agrees'] for r in traced)} "
+          f"of {len(traced)} cases")
     if args.json:
         Path(args.json).write_text(json.dumps(rows, indent=1))
     return 0
