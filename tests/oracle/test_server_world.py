@@ -11,7 +11,7 @@ Run with ACE_ASSEMBLY at a mono build, then at a .NET 10 build (one runtime per 
 
 from __future__ import annotations
 
-import dataclasses
+import sys
 from pathlib import Path
 
 import pytest
@@ -19,20 +19,12 @@ import pytest
 from acconform.case import load_document
 from acconform.compare import compare
 from acconform.port.run import run_scene
-from acconform.scene import Frame, Landblock, Position, TickStep
+from acconform.scene import Landblock
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from server_scenes import request_pos_scene  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def _request_pos_scene(mode: str):
-    """From 10 m up, a RequestPos 10 m under the next cell's terrain: the transition stops on the first
-    cell's ground, and set_current_pos then changes the mover's cell (change_cell_server)."""
-    scene = load_document(ROOT / "examples" / "tick_request_pos.json")
-    up = Position(0xA9B40001, Frame((12.0, 12.0, 30.0)))
-    under = Position(0xA9B40009, Frame((30.0, 12.0, 10.0)))
-    steps = scene.ticks.steps[:3] + (TickStep(0.1, request_pos=up), TickStep(0.1, request_pos=under),
-                                     TickStep(0.1, request_pos=up))
-    return scene.replace(engine_mode=mode, ticks=dataclasses.replace(scene.ticks, steps=steps))
 
 
 def _neighbours(scene):
@@ -47,7 +39,7 @@ def _neighbours(scene):
 
 @pytest.mark.live_oracle
 def test_live_in_server_mode_the_cell_change_that_threw_in_client_mode_moves_the_mover(live):
-    scene = _request_pos_scene("server")
+    scene = request_pos_scene("server")
     ace = live.run(scene)
     assert ace.error is None and all(t.error is None for t in ace.ticks), ace.ticks
     assert ace.ticks[4].cell == 0xA9B40009 and ace.ticks[5].cell == 0xA9B40001
@@ -56,7 +48,7 @@ def test_live_in_server_mode_the_cell_change_that_threw_in_client_mode_moves_the
 
 @pytest.mark.live_oracle
 def test_live_a_server_scene_with_loaded_neighbours_answers_as_the_port(live):
-    scene = _neighbours(_request_pos_scene("server"))
+    scene = _neighbours(request_pos_scene("server"))
     ace = live.run(scene)
     assert all(t.error is None for t in ace.ticks), ace.ticks
     assert compare(ace, run_scene(scene, runtime=live.location.runtime), "exact") == []
@@ -66,11 +58,11 @@ def test_live_a_server_scene_with_loaded_neighbours_answers_as_the_port(live):
 def test_live_in_client_mode_ace_still_throws_after_a_server_scene_used_the_same_landblock(live):
     """No LandblockManager loads a client-mode scene's landblocks: their adjacents are null, as built,
     even when the facade's cached landblock had them in the scene before."""
-    live.run(_request_pos_scene("server"))
-    ace = live.run(_request_pos_scene("client"))
+    live.run(request_pos_scene("server"))
+    ace = live.run(request_pos_scene("client"))
     assert [t.error is None for t in ace.ticks] == [True, True, True, True, False], ace.ticks
     assert ace.ticks[4].error.startswith("NullReferenceException"), ace.ticks[4].error
-    assert compare(ace, run_scene(_request_pos_scene("client"), runtime=live.location.runtime), "exact") == []
+    assert compare(ace, run_scene(request_pos_scene("client"), runtime=live.location.runtime), "exact") == []
 
 
 @pytest.mark.live_oracle

@@ -4,21 +4,19 @@ landblock, none for a dungeon, none past the world's edge, null in client mode."
 
 from __future__ import annotations
 
-import dataclasses
+import sys
+from pathlib import Path
 
 import pytest
 
-from acconform.case import load_document
 from acconform.numerics import get_mode
 from acconform.port.errors import NullReferenceException
 from acconform.port.land.landblock_manager import Adjacency, LandblockManager, ServerLandblock
 from acconform.port.run import run_scene, scene_world
 from acconform.scene import Landblock as LandblockRecord
-from acconform.scene import Frame, Position, TickStep
 
-from pathlib import Path
-
-ROOT = Path(__file__).resolve().parents[3]
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+from server_scenes import request_pos_scene  # noqa: E402
 
 
 class _Info:
@@ -85,34 +83,22 @@ def test_a_dungeon_has_no_adjacents_and_the_nw_island_is_never_a_dungeon():
     assert dungeon.physics_adjacents == [] and manager.landblocks[(0x11, 0x20)].adjacents == []
 
 
-def _request_pos_scene(mode):
-    """tick_request_pos with a RequestPos in another cell than the transition reaches (tests/oracle/
-    test_tick_scenes.py's exception scene): set_current_pos -> change_cell_server -> enter_cell_server ->
-    handle_visible_cells -> Landblock.GetServerObjects(true)."""
-    scene = load_document(ROOT / "examples" / "tick_request_pos.json")
-    up = Position(0xA9B40001, Frame((12.0, 12.0, 30.0)))
-    under = Position(0xA9B40009, Frame((30.0, 12.0, 10.0)))
-    steps = scene.ticks.steps[:3] + (TickStep(0.1, request_pos=up), TickStep(0.1, request_pos=under),
-                                     TickStep(0.1, request_pos=up))
-    return scene.replace(engine_mode=mode, ticks=dataclasses.replace(scene.ticks, steps=steps))
-
-
 @pytest.mark.anchor("Landblock.cs:GetServerObjects")
 def test_in_server_mode_the_landblock_has_its_adjacents_and_the_cell_change_throws_nothing():
-    out = run_scene(_request_pos_scene("server"), runtime="coreclr")
+    out = run_scene(request_pos_scene("server"), runtime="coreclr")
     assert out.error is None and all(t.error is None for t in out.ticks), out.ticks
     assert out.ticks[4].cell == 0xA9B40009
 
 
 @pytest.mark.anchor("Landblock.cs:GetServerObjects")
 def test_in_client_mode_no_landblock_manager_sets_adjacents_so_the_cell_change_throws_as_in_ace():
-    run_scene(_request_pos_scene("server"), runtime="coreclr")  # its landblock goes back to the pool with adjacents
-    out = run_scene(_request_pos_scene("client"), runtime="coreclr")
+    run_scene(request_pos_scene("server"), runtime="coreclr")  # its landblock goes back to the pool with adjacents
+    out = run_scene(request_pos_scene("client"), runtime="coreclr")
     assert out.ticks[4].error.startswith("NullReferenceException"), out.ticks[4].error
 
 
 def test_the_lscape_loads_the_scenes_landblocks_in_server_mode_only():
-    scene = _request_pos_scene("server")
+    scene = request_pos_scene("server")
     mode = get_mode("exact", "coreclr")
     lscape, _, _ = scene_world(scene, mode)
     try:
