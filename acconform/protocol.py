@@ -44,7 +44,7 @@ import time
 from collections.abc import Callable
 
 from . import __version__, deep
-from .codec import Reader, compact, dumps_compact, loads_answer, write_f32, write_id, write_vec
+from .codec import Reader, compact, dumps_compact, loads_answer, write_f32, write_id
 from .dat import DatMover, DatRecord, DatStatic, DatWorld, dat_world
 from .errors import AcconformError, InvalidScene
 from .flags import PhysicsState, TransientState, flag_names
@@ -52,7 +52,7 @@ from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
-from .scene import ContactPlane, Placement, Position, Scene
+from .scene import ContactPlane, Placement, Position, Scene, mover_start_json
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
@@ -118,17 +118,7 @@ def _record_json(rec: DatRecord) -> dict:
 def dat_json(world: DatWorld) -> dict:
     """A request's ``"dat"``: the scene's world (dat.dat_world) as JSON (docs/protocol.md, "DAT records")."""
     m = world.mover
-    mover = {"id": write_id(m.id), "did": write_id(m.did), "scale": write_f32(m.scale),
-             "state": flag_names(PhysicsState, m.state), "transient_state": flag_names(TransientState, m.transient_state),
-             "velocity": write_vec(m.velocity), "begin": m.begin.to_json()}
-    if m.end is not None:
-        mover["end"] = m.end.to_json()
-    if m.contact_plane is not None:
-        mover["contact_plane"] = m.contact_plane.to_json()
-    if m.sliding_normal is not None:
-        mover["sliding_normal"] = write_vec(m.sliding_normal)
-    if m.placement is not None:
-        mover["placement"] = m.placement.to_json()
+    mover = mover_start_json(m, {"id": write_id(m.id), "did": write_id(m.did), "scale": write_f32(m.scale)})
     return {"format": DAT_FORMAT,
             "land_height_table": [write_f32(h) for h in world.land_height_table],
             "cell": [_record_json(r) for r in world.cell],

@@ -779,6 +779,22 @@ DEFAULT_MOVER_STATE = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
 DEFAULT_MOVER_TRANSIENT = int(TransientState.Contact | TransientState.OnWalkable)
 
 
+def mover_start_json(m, d: dict) -> dict:
+    """A mover's state and path after what its Setup holds, written into `d`: the scene's mover and the
+    `dat` feature's (protocol.dat_json, whose Setup record carries the spheres and step heights)."""
+    d.update({"state": flag_names(PhysicsState, m.state), "transient_state": flag_names(TransientState, m.transient_state),
+              "velocity": write_vec(m.velocity), "begin": m.begin.to_json()})
+    if m.end is not None:
+        d["end"] = m.end.to_json()
+    if m.contact_plane is not None:
+        d["contact_plane"] = m.contact_plane.to_json()
+    if m.sliding_normal is not None:
+        d["sliding_normal"] = write_vec(m.sliding_normal)
+    if m.placement is not None:
+        d["placement"] = m.placement.to_json()
+    return d
+
+
 @dataclass(frozen=True, slots=True)
 class Mover:
     """The moving PhysicsObj: its Setup spheres and step heights, flags, and the path to try
@@ -799,20 +815,8 @@ class Mover:
 
     def to_json(self):
         d = {"spheres": [s.to_json() for s in self.spheres], "scale": write_f32(self.scale),
-             "step_up_height": write_f32(self.step_up_height), "step_down_height": write_f32(self.step_down_height),
-             "state": flag_names(PhysicsState, self.state),
-             "transient_state": flag_names(TransientState, self.transient_state),
-             "velocity": write_vec(self.velocity),
-             "begin": self.begin.to_json()}
-        if self.end is not None:
-            d["end"] = self.end.to_json()
-        if self.contact_plane is not None:
-            d["contact_plane"] = self.contact_plane.to_json()
-        if self.sliding_normal is not None:
-            d["sliding_normal"] = write_vec(self.sliding_normal)
-        if self.placement is not None:
-            d["placement"] = self.placement.to_json()
-        return d
+             "step_up_height": write_f32(self.step_up_height), "step_down_height": write_f32(self.step_down_height)}
+        return mover_start_json(self, d)
 
     @staticmethod
     def from_json(r: Reader, placement: bool = True, ticks: bool = False) -> "Mover":
