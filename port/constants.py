@@ -89,3 +89,19 @@ SLEDDING_FLAT_Z = f32_from_bits(0x3F7FFFB2)
 SLEDDING_GLIDE_FRICTION = f32_from_bits(0x3E4CCCCD)
 # CollisionRecord: report_collision_end ends a record touched more than `1.0f` second ago
 COLLISION_RECORD_LIFETIME = f32_from_bits(0x3F800000)
+
+# ---- the motion layer's managers (Physics/Managers). C# `float` literals that are not exact binary32.
+# InterpolationManager: a node is reached within `0.05f`; a mover making less than `0.3f` of its
+# speed's progress over five frames fails the node
+INTERPOLATION_NODE_REACHED = f32_from_bits(0x3D4CCCCD)
+INTERPOLATION_MIN_PROGRESS = f32_from_bits(0x3E99999A)
+# InterpolationManager.LargeDistance = 999999.0f (exact; the OriginalDistance with no node)
+INTERPOLATION_LARGE_DISTANCE = f32_from_bits(0x497423F0)
+# StickyManager.StickyRadius = 0.3f: the gap a sticky mover keeps to its target's cylinder
+STICKY_RADIUS = f32_from_bits(0x3E99999A)
+# MoveToManager.HandleMoveToPosition: a velocity longer than `0.1f` re-times the target quantum
+MOVE_TO_MIN_VELOCITY = f32_from_bits(0x3DCCCCCD)
+# ConstraintManager.IsFullyConstrained: `ConstraintDistanceMax * 0.9f < ConstraintPosOffset`
+CONSTRAINT_FULL_FRACTION = f32_from_bits(0x3F666666)
+# float.MaxValue (MovementParameters.Default_FailDistance, MoveToManager's "no distance yet")
+FLOAT_MAX_VALUE = f32_from_bits(0x7F7FFFFF)

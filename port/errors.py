@@ -77,3 +77,10 @@ class InvalidCastException(AceException):
     EnvCell's visible-cell list names."""
 
     dotnet_type = "InvalidCastException"
+
+
+class ArgumentOutOfRangeException(AceException):
+    """``Enumerable.ElementAt`` past a sequence's end, e.g. InterpolationManager.UseTime's loop, which
+    starts at ``ElementAt(PositionQueue.Count)``."""
+
+    dotnet_type = "ArgumentOutOfRangeException"

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from acconform.numerics import MONO, Matrix4x4, Mode, Quaternion, Runtime, Vector3, cast_float, cs_fmod, cs_math, wrap_u32
+from acconform.numerics import D, MONO, Matrix4x4, Mode, Quaternion, Runtime, Vector3, cast_float, cs_fmod, cs_math, wrap_u32
 from acconform.port.anchors import anchor, harness
 from acconform.port.constants import CELL_LENGTH, EPSILON, QUAT_VALID_SLACK
 from acconform.port import land_defs
@@ -288,6 +288,49 @@ class Position:
     def subtract(self, pos: "Position") -> AFrame:
         self.frame.subtract(pos.frame)
         return self.frame
+
+    @staticmethod
+    @anchor("Position::CylinderDistance", "Position.cs:CylinderDistance")
+    def cylinder_distance(radius, height, pos: "Position", other_radius, other_height, other_pos: "Position"):
+        """The gap between two upright cylinders standing at pos and other_pos (a double: ACE's
+        Math.Sqrt of the float32 sum; negative when they overlap in both reach and height)."""
+        offset = pos.get_offset(other_pos)
+        reach = offset.length() - (radius + other_radius)
+
+        if pos.frame.origin.z <= other_pos.frame.origin.z:
+            diff_z = other_pos.frame.origin.z - (pos.frame.origin.z + height)
+        else:
+            diff_z = pos.frame.origin.z - (other_pos.frame.origin.z + other_height)
+
+        if diff_z > 0 and reach > 0:
+            return D(math.sqrt(diff_z * diff_z + reach * reach))
+        elif diff_z < 0 and reach < 0:
+            return -D(math.sqrt(diff_z * diff_z + reach * reach))
+        else:
+            return D(reach)
+
+    @staticmethod
+    @anchor(None, "Position.cs:CylinderDistanceNoZ")
+    def cylinder_distance_no_z(radius, pos: "Position", other_radius, other_pos: "Position"):
+        offset = pos.get_offset(other_pos)
+        return offset.length() - (radius + other_radius)
+
+    @anchor("Position::heading", "Position.cs:heading")
+    def heading(self, position: "Position"):
+        """The compass heading (degrees, 0 = +y, clockwise) from this position to `position`,
+        ignoring height; 0 when they stand within EPSILON of each other in x and y."""
+        dir_ = self.get_offset(position)
+        dir_ = dir_.with_z(type(dir_.z)(0.0))
+
+        small, dir_ = normalize_check_small(dir_)
+        if small:
+            return type(dir_.z)(0.0)
+
+        return cs_fmod(_F450 - to_degrees(cast_float(dir_.y, math.atan2(float(dir_.y), float(dir_.x)))), _F360)
+
+    @anchor("Position::heading_diff", "Position.cs:heading_diff")
+    def heading_diff(self, position: "Position"):
+        return self.heading(position) - self.frame.get_heading()
 
     @anchor("Position::get_cell", "Position.cs:GetCell")
     def get_cell(self, block_cell_id: int, runtime: Runtime = MONO, lscape=None) -> int:

@@ -1,0 +1,1 @@
+"""ACE's Physics/Combat: the target records the TargetManager trades (TargetInfo, TargettedVoyeurInfo)."""
