@@ -58,6 +58,32 @@ QUAT_VALID_SLACK = f32_from_bits(0x3A83126E)
 # PhysicsGlobals.DefaultElasticity = 0.05f (PhysicsObj() sets Elasticity to it)
 DEFAULT_ELASTICITY = f32_from_bits(0x3D4CCCCD)
 
+# ---- the motion interpreter (Animation/MotionInterp.cs CMotionInterp's const floats)
+# BackwardsFactor = 6.4999998e-1f: walking backward is walking forward at -0.65 of the speed
+BACKWARDS_FACTOR = f32_from_bits(0x3F266666)
+# MaxSidestepAnimRate = 3.0f, RunAnimSpeed = 4.0f, RunTurnFactor = 1.5f, SidestepAnimSpeed = 1.25f,
+# SidestepFactor = 0.5f, WalkAnimSpeed = 3.1199999f
+MAX_SIDESTEP_ANIM_RATE = f32_from_bits(0x40400000)
+RUN_ANIM_SPEED = f32_from_bits(0x40800000)
+RUN_TURN_FACTOR = f32_from_bits(0x3FC00000)
+SIDESTEP_ANIM_SPEED = f32_from_bits(0x3FA00000)
+SIDESTEP_FACTOR = f32_from_bits(0x3F000000)
+WALK_ANIM_SPEED = f32_from_bits(0x4047AE14)
+# adjust_motion's `SidestepFactor * (WalkAnimSpeed / SidestepAnimSpeed)`: const fields, folded by the C#
+# compiler in float32 (3.1199999f / 1.25f, then * 0.5f)
+SIDESTEP_SPEED_SCALE = f32_from_bits(0x3F9FBE76)
+# MovementParameters.Default_DistanceToObject = 0.6f; Default_WalkRunThreshold = 1.0f (ACE's; 15.0f is
+# commented out beside it)
+DEFAULT_DISTANCE_TO_OBJECT = f32_from_bits(0x3F19999A)
+DEFAULT_WALK_RUN_THRESHOLD = f32_from_bits(0x3F800000)
+# MovementSystem.GetJumpHeight: `jumpSkill / (jumpSkill + 1300.0f) * 22.2f + 0.05f`, at least `0.35f`
+JUMP_SKILL_HEIGHT = f32_from_bits(0x41B1999A)
+JUMP_BASE_HEIGHT = f32_from_bits(0x3D4CCCCD)
+MIN_JUMP_HEIGHT = f32_from_bits(0x3EB33333)
+# MovementSystem.GetRunRate: `18.0f / 4.0f` (folded in float32) at a run skill of `800.0f` or more
+MAX_RUN_RATE = f32_from_bits(0x40900000)
+RUN_SKILL_FOR_MAX_RATE = f32_from_bits(0x44480000)
+
 # ---- the tick (PhysicsObj.update_object and what it calls). All are C# `float`s; update_object
 # compares and steps its `double` deltaTime against them, which widens each to double exactly, so
 # each is written here once as its float32 value (a Python float: double where the code is double).
