@@ -401,6 +401,27 @@ def jump(mover: PhysicsObj, velocity) -> None:
     mover.is_animating = False
 
 
+@harness("the physics calls of Player.HandleActionJump's other branch (not FastTick: an ordinary, non-PK player)")
+def jump_ordinary(mover: PhysicsObj, velocity) -> None:
+    """With a local jump velocity: ACE's `else` branch of `if (FastTick)` (FastTick is IsPKType, so
+    this is an ordinary player's jump). It differs from `jump` in one call: UpdateTime is set to
+    the clock's CurrentTime always, whether or not the mover is moving or animating (so
+    IsMovingOrAnimating is never asked, and its MovementManager terms never reached). The rest is
+    the same calls in the same order; MotionInterpreter.PendingMotions.Clear() has no interpreter to
+    clear, as in `jump`. (FastTick's branch also stops a magic cast; no scene casts.)"""
+    mover.update_time = mover.timer.current_time
+
+    # set jump velocity (ACE: two commented-out lines, set_velocity of the global velocity)
+
+    # perform jump in physics engine (ACE)
+    mover.transient_state &= ~(TransientState.Contact | TransientState.WaterContact)
+    mover.calc_acceleration()
+    mover.set_on_walkable(False)
+    mover.set_local_velocity(velocity, False)
+    mover.remove_link_animations()  # matches MotionInterp.LeaveGround more closely (ACE)
+    mover.is_animating = False
+
+
 @harness("a tick step's inputs, in the scene's order, as the oracle's facade applies them")
 def apply_inputs(mover: PhysicsObj, step, mode) -> None:
     if step.state is not None:
