@@ -1,6 +1,6 @@
-"""DBObj: GetEnvCell, GetLandblockInfo, GetGfxObj, GetSetup, GetEnvironment -- the DAT records the physics asks for by id (ACE's Physics/Common/DBObj.cs).
+"""DBObj: GetEnvCell, GetLandblockInfo, GetGfxObj, GetSetup, GetAnimation, GetEnvironment -- the DAT records the physics asks for by id (ACE's Physics/Common/DBObj.cs).
 
-GetGfxObj, GetSetup and GetEnvironment read DatManager.PortalDat, GetEnvCell and GetLandblockInfo DatManager.CellDat;
+GetGfxObj, GetSetup, GetAnimation and GetEnvironment read DatManager.PortalDat, GetEnvCell and GetLandblockInfo DatManager.CellDat;
 a run stands in for both with the DAT databases it fills from the scene (port/dat/portal_dat.py:
 the records acconform/dat.py wrote). GetEnvCell builds the physics EnvCell from the record, as
 ACE's does.
@@ -18,6 +18,7 @@ built from it, by the same bytes). A record the run does not hold is never remem
 from __future__ import annotations
 
 from .anchors import anchor, harness
+from .dat.animation import Animation as DatAnimation
 from .dat.env_cell import EnvCell as DatEnvCell
 from .dat.environment import Environment as DatEnvironment
 from .dat.gfx_obj import GfxObj as DatGfxObj
@@ -49,6 +50,11 @@ def get_gfx_obj(portal_dat, file_id: int) -> DatGfxObj:
 @anchor(None, "DBObj.cs:GetSetup")
 def get_setup(portal_dat, file_id: int) -> SetupModel:
     return portal_dat.read_from_dat(file_id, SetupModel)
+
+
+@anchor(None, "DBObj.cs:GetAnimation")
+def get_animation(portal_dat, file_id: int) -> DatAnimation:
+    return portal_dat.read_from_dat(file_id, DatAnimation)
 
 
 ENVIRONMENTS_LIMIT = 256  # remembered Environments before the memory forgets them all

@@ -84,3 +84,10 @@ class ArgumentOutOfRangeException(AceException):
     starts at ``ElementAt(PositionQueue.Count)``."""
 
     dotnet_type = "ArgumentOutOfRangeException"
+
+
+class ArithmeticException(AceException):
+    """``Math.Sign`` of a NaN float, e.g. MotionTable.GetObjectSequence comparing the signs of a NaN
+    speed and the substate's."""
+
+    dotnet_type = "ArithmeticException"

@@ -1,4 +1,4 @@
-"""PartArray and PhysicsPart: PartArray (AddPartsShadow, Update, HandleMovement, HandleEnterWorld, RemoveParts, AllowsFreeHeading, CacheHasPhysicsBSP, CreateMesh, CreateSetup, DestroyParts, DestroySetup, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, InitDefaults, InitParts, SetCellID, SetFrame, SetMeshID, SetPlacementFrame, SetScaleInternal, SetSetupID, UpdateParts, calc_cross_cells_static), PhysicsPart (InitEmpty, SetPart, LoadGfxObjArray, MakePhysicsPart, MorphToExistingObject, GetBoundingBox, FindObjCollisions).
+"""PartArray and PhysicsPart: PartArray (AddPartsShadow, Update, HandleMovement, HandleEnterWorld, HandleExitWorld, AnimationDone, CheckForCompletedMotions, DoInterpretedMotion, HasAnims, InitializeMotionTables, SetMotionTableID, StopCompletelyInternal, StopInterpretedMotion, RemoveParts, AllowsFreeHeading, CacheHasPhysicsBSP, CreateMesh, CreateSetup, DestroyParts, DestroySetup, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, InitDefaults, InitParts, SetCellID, SetFrame, SetMeshID, SetPlacementFrame, SetScaleInternal, SetSetupID, UpdateParts, calc_cross_cells_static), PhysicsPart (InitEmpty, SetPart, LoadGfxObjArray, MakePhysicsPart, MorphToExistingObject, GetBoundingBox, FindObjCollisions).
 
 ACE's Physics/PartArray.cs and Physics/PhysicsPart.cs. A static object's PartArray is made by
 PhysicsObj.makeObject from its DAT record: CreateMesh for a GfxObj id (one part over a simple
@@ -13,16 +13,19 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from acconform.flags import TransitionState
+from acconform.motion_enums import MovementType, WeenieError
 from acconform.numerics import Vector3, cast_float
 
 from . import gfx_obj_cache
 from .anchors import anchor
 from .frame import AFrame, Position
-from .sequence import Sequence
+from .animation.anim_data import AnimData
+from .animation.sequence import Sequence
 from .setup import Setup
 
 # PhysicsObj passes 0x65 to SetPlacementFrame (Placement.Resting... as ACE writes it)
 PLACEMENT_FRAME_ID = 0x65
+INT32_MAX = 0x7FFFFFFF  # Int32.MaxValue: InitDefaults' high frame for a default animation
 
 
 @dataclass(slots=True, eq=False)
@@ -100,17 +103,21 @@ class PartArray:
     scale: Vector3 | None = None  # Vector3.One from the constructor; set by SetScaleInternal
     state: int = 0
     sequence: Sequence | None = None
-    motion_table_manager: object = None  # MotionTableManager: null (dat.py writes no motion table)
+    motion_table_manager: object = None  # port/managers/motion_table_manager.MotionTableManager, or None
+    last_anim_frame: object = None  # LastAnimFrame (dat.animation_frame.AnimationFrame): never set in ACE
+    portal_dat: object = None  # the run's DatManager.PortalDat (MotionTableManager.Create reads it)
 
     @staticmethod
     @anchor("CPartArray::CPartArray", "PartArray.cs:PartArray()")
-    def create(mode) -> "PartArray":
-        return PartArray(scale=mode.vec(1, 1, 1), sequence=Sequence.create(mode))
+    def create(mode, portal_dat=None) -> "PartArray":
+        """`portal_dat` is the run's PortalDat: ACE's statics that the Sequence's animations and
+        SetMotionTableID read (None where nothing animates)."""
+        return PartArray(scale=mode.vec(1, 1, 1), sequence=Sequence.create(mode, portal_dat), portal_dat=portal_dat)
 
     @staticmethod
     @anchor("CPartArray::CreateMesh", "PartArray.cs:CreateMesh")
     def create_mesh(owner, setup_did: int, portal_dat) -> "PartArray | None":
-        mesh = PartArray.create(portal_dat.mode)
+        mesh = PartArray.create(portal_dat.mode, portal_dat)
         mesh.owner = owner
         mesh.sequence.set_object(owner)
         if not mesh.set_mesh_id(setup_did, portal_dat):
@@ -121,7 +128,7 @@ class PartArray:
     @staticmethod
     @anchor("CPartArray::CreateSetup", "PartArray.cs:CreateSetup")
     def create_setup(owner, setup_did: int, create_parts: bool, portal_dat) -> "PartArray | None":
-        setup = PartArray.create(portal_dat.mode)
+        setup = PartArray.create(portal_dat.mode, portal_dat)
         setup.owner = owner
         setup.sequence.set_object(owner)
         if not setup.set_setup_id(setup_did, create_parts, portal_dat):
@@ -200,8 +207,17 @@ class PartArray:
 
     @anchor("CPartArray::InitDefaults", "PartArray.cs:InitDefaults")
     def init_defaults(self) -> None:
+        """A Setup's DefaultAnimation plays frames 0 .. Int32.MaxValue (AnimSequenceNode clamps the high
+        frame to the animation's last) at framerate 0f: the empty AnimData's."""
         if self.setup.default_animation != 0:
-            raise NotImplementedError("default animations (Sequence.append_animation) are not ported")
+            self.sequence.clear_animations()
+            anim_data = AnimData.create(self.sequence.mode)
+            anim_data.anim_id = self.setup.default_animation
+            anim_data.low_frame = 0
+            anim_data.high_frame = INT32_MAX
+            self.sequence.append_animation(anim_data)
+            # WeenieDesc.Destroy(animData): an empty method in ACE
+
         if self.owner is not None:
             self.owner.init_defaults(self.setup)
 
@@ -236,20 +252,98 @@ class PartArray:
             self.parts[i].pos.frame.combine_scaled(frame, AFrame.from_dat(cur_frame.frames[i]), self.scale)
 
     @anchor("CPartArray::Update", "PartArray.cs:Update")
-    def update(self, quantum, offset_frame) -> None:
-        """`quantum` is a double, cast to float for the Sequence; `offset_frame` (C# `ref AFrame`)
-        is changed in place."""
-        self.sequence.update(cast_float(self.scale.x, quantum), offset_frame)
+    def update(self, quantum, offset_frame):
+        """`quantum` is a double, cast to float for the Sequence. Returns the offset frame (C# `ref
+        AFrame`): changed in place, or replaced when an animation's root motion is combined in."""
+        return self.sequence.update(cast_float(self.scale.x, quantum), offset_frame)
 
     @anchor("CPartArray::HandleMovement", "PartArray.cs:HandleMovement")
     def handle_movement(self) -> None:
         if self.motion_table_manager is not None:
-            raise NotImplementedError("motion tables (MotionTableManager.UseTime) are not ported")
+            self.motion_table_manager.use_time()
 
     @anchor("CPartArray::HandleEnterWorld", "PartArray.cs:HandleEnterWorld")
     def handle_enter_world(self) -> None:
         if self.motion_table_manager is not None:
-            raise NotImplementedError("motion tables (MotionTableManager.HandleEnterWorld) are not ported")
+            self.motion_table_manager.handle_enter_world(self.sequence)
+
+    @anchor("CPartArray::HandleExitWorld", "PartArray.cs:HandleExitWorld")
+    def handle_exit_world(self) -> None:
+        if self.motion_table_manager is not None:
+            self.motion_table_manager.handle_exit_world()
+
+    @anchor("CPartArray::AnimationDone", "PartArray.cs:AnimationDone")
+    def animation_done(self, success: bool) -> None:
+        if self.motion_table_manager is not None:
+            self.motion_table_manager.animation_done(success)
+
+    @anchor("CPartArray::CheckForCompletedMotions", "PartArray.cs:CheckForCompletedMotions")
+    def check_for_completed_motions(self) -> None:
+        if self.motion_table_manager is not None:
+            self.motion_table_manager.check_for_completed_motions()
+
+    @anchor("CPartArray::DoInterpretedMotion", "PartArray.cs:DoInterpretedMotion")
+    def do_interpreted_motion(self, motion: int, movement_parameters) -> int:
+        """Returns a WeenieError."""
+        from .animation.movement_struct import MovementStruct
+
+        if self.motion_table_manager is None:
+            return WeenieError.NoAnimationTable
+
+        mvs = MovementStruct.create(MovementType.InterpretedCommand, motion, movement_parameters)
+        return self.motion_table_manager.perform_movement(mvs, self.sequence)
+
+    @anchor("CPartArray::HasAnims", "PartArray.cs:HasAnims")
+    def has_anims(self) -> bool:
+        return self.sequence.has_anims()
+
+    @anchor("CPartArray::InitializeMotionTables", "PartArray.cs:InitializeMotionTables")
+    def initialize_motion_tables(self) -> None:
+        if self.motion_table_manager is not None:
+            self.motion_table_manager.initialize_state(self.sequence)
+
+    @anchor("CPartArray::SetMotionTableID", "PartArray.cs:SetMotionTableID")
+    def set_motion_table_id(self, mtable_id: int) -> bool:
+        from .managers.motion_table_manager import MotionTableManager
+
+        if self.motion_table_manager is not None:
+            if self.motion_table_manager.get_motion_table_id(mtable_id) == mtable_id:
+                return True
+
+            self.motion_table_manager = None
+        if mtable_id == 0:
+            return True
+
+        self.motion_table_manager = MotionTableManager.create(mtable_id, self.portal_dat)
+        if self.motion_table_manager is None:
+            return False
+
+        self.motion_table_manager.set_physics_object(self.owner)
+
+        # chat blob? (ACE)
+        return True
+
+    @anchor("CPartArray::StopCompletelyInternal", "PartArray.cs:StopCompletelyInternal")
+    def stop_completely_internal(self) -> int:
+        """Returns a WeenieError."""
+        from .animation.movement_struct import MovementStruct
+
+        if self.motion_table_manager is None:
+            return WeenieError.NoAnimationTable
+        mvs = MovementStruct.create(MovementType.StopCompletely)
+        return self.motion_table_manager.perform_movement(mvs, self.sequence)
+
+    @anchor("CPartArray::StopInterpretedMotion", "PartArray.cs:StopInterpretedMotion")
+    def stop_interpreted_motion(self, motion: int, movement_parameters) -> int:
+        """Returns a WeenieError."""
+        from .animation.movement_struct import MovementStruct
+
+        if self.motion_table_manager is None:
+            return WeenieError.NoAnimationTable
+        mvs = MovementStruct.create(MovementType.StopInterpretedCommand)
+        mvs.motion = motion
+        mvs.params = movement_parameters
+        return self.motion_table_manager.perform_movement(mvs, self.sequence)
 
     @anchor("CPartArray::RemoveParts", "PartArray.cs:RemoveParts")
     def remove_parts(self, cell) -> None:

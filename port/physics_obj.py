@@ -1176,7 +1176,7 @@ class PhysicsObj:
 
         if not self.state & PhysicsState.Hidden:
             if self.part_array is not None:
-                self.part_array.update(quantum, offset_frame)
+                offset_frame = self.part_array.update(quantum, offset_frame)  # C# `ref offsetFrame`
 
             if self.transient_state & TransientState.OnWalkable:
                 offset_frame.origin = offset_frame.origin * self.scale

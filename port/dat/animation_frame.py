@@ -1,7 +1,7 @@
-"""AnimationFrame: Unpack(reader, numParts) -- one frame per part, then hooks (ACE.DatLoader Entity/AnimationFrame.cs).
+"""AnimationFrame: Unpack(reader, numParts) -- one frame per part, then the frame's hooks (ACE.DatLoader Entity/AnimationFrame.cs).
 
-Animation hooks (AnimationHook.ReadHook) are not ported: a record with hooks stops the port
-(NotImplementedError, a port gap), which acconform/dat.py never writes.
+Each hook is read by AnimationHook.ReadHook (port/dat/animation_hook.py); a hook of a type ACE does
+not read is added as null, as ACE adds it.
 """
 
 from __future__ import annotations
@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..anchors import anchor
+from .animation_hook import AnimationHook
 from .frame import Frame
 from .unpackable_extensions import unpack_list_fixed
 
@@ -16,7 +17,7 @@ from .unpackable_extensions import unpack_list_fixed
 @dataclass(slots=True)
 class AnimationFrame:
     frames: list = field(default_factory=list)  # Frame per part
-    hooks: list = field(default_factory=list)
+    hooks: list = field(default_factory=list)  # AnimationHook (or None)
 
     @staticmethod
     @anchor(None, "ACE.DatLoader/Entity/AnimationFrame.cs:Unpack")
@@ -24,6 +25,7 @@ class AnimationFrame:
         a = AnimationFrame()
         a.frames = unpack_list_fixed(reader, Frame.unpack, num_parts)
         num_hooks = reader.read_uint32()
-        if num_hooks:
-            raise NotImplementedError("animation hooks (AnimationHook.ReadHook) are not ported")
+        for _ in range(num_hooks):
+            hook = AnimationHook.read_hook(reader)
+            a.hooks.append(hook)
         return a

@@ -1,4 +1,4 @@
-"""BinaryReader and BinaryReaderExtensions: AlignBoundary, ReadCompressedUInt32, ReadVector3 (and the .NET BinaryReader reads they use).
+"""BinaryReader and BinaryReaderExtensions: AlignBoundary, ReadCompressedUInt32, ReadAsDataIDOfKnownType, ReadVector3 (and the .NET BinaryReader reads they use).
 
 ACE.DatLoader's BinaryReaderExtensions.cs over System.IO.BinaryReader (little-endian). Floats are
 read as the float32 the DAT holds and handed to the run's mode (exact: float32, fast: float64 of
@@ -89,6 +89,20 @@ class BinaryReader:
             return ((b0 & 0x7F) << 8) | b1
         s = self.read_uint16()
         return (((((b0 & 0x3F) << 8) | b1) << 16) | s) & 0xFFFFFFFF
+
+    @anchor(None, "ACE.DatLoader/BinaryReaderExtensions.cs:ReadAsDataIDOfKnownType")
+    def read_as_data_id_of_known_type(self, known_type: int) -> int:
+        """A ushort, or two when its top bit is set (the high word's low 14 bits, then the low word),
+        added to the known type (uint arithmetic)."""
+        value = self.read_uint16()
+
+        if (value & 0x8000) != 0:
+            lower = self.read_uint16()
+            higher = (value & 0x3FFF) << 16
+
+            return (known_type + (higher | lower)) & 0xFFFFFFFF
+
+        return (known_type + value) & 0xFFFFFFFF
 
     @anchor(None, "ACE.DatLoader/BinaryReaderExtensions.cs:ReadVector3")
     def read_vector3(self) -> Vector3:

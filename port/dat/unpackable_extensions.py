@@ -77,3 +77,14 @@ def unpack_uint_dict(reader, make) -> dict:
         item = make(reader)
         dictionary_add(value, key, item)
     return value
+
+
+@anchor(None, "ACE.DatLoader/UnpackableExtensions.cs:Unpack(Dictionary<uint, Dictionary<uint, T>>)")
+def unpack_uint_dict_of_dicts(reader, make) -> dict:
+    value: dict = {}
+    total = reader.read_uint32()
+    for _ in range(total):
+        key = reader.read_uint32()
+        values = unpack_uint_dict(reader, make)
+        dictionary_add(value, key, values)
+    return value

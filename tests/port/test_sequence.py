@@ -1,4 +1,4 @@
-"""Sequence (port/sequence.py) and PartArray.Update: root motion without animations.
+"""Sequence (port/animation/sequence.py) and PartArray.Update: root motion without animations.
 
 Expected values follow Sequence.cs at 7b47913: with an empty AnimList, Update applies
 apply_physics(offsetFrame, quantum, quantum): Origin += Velocity * |quantum|, Rotate(Omega * |quantum|).
@@ -12,7 +12,7 @@ import pytest
 from acconform.numerics import EXACT
 from acconform.port.frame import AFrame
 from acconform.port.part_array import PartArray
-from acconform.port.sequence import Sequence
+from acconform.port.animation.sequence import Sequence
 
 F = np.float32
 
