@@ -14,6 +14,7 @@ from enum import IntEnum
 from acconform.numerics import Vector3
 
 from ..anchors import anchor
+from ..frame import AFrame, Position
 
 
 class TargetStatus(IntEnum):
@@ -51,20 +52,30 @@ class TargetInfo:
 
     @anchor(None, "TargetInfo.cs:TargetInfo(TargetInfo)", "the copy constructor")
     def copy(self) -> "TargetInfo":
-        """``new TargetInfo(info)``: both Positions copied (``new Position(null)`` throws in ACE:
-        a copy of an info without positions reads a member of None here, as ACE does)."""
+        """``new TargetInfo(info)``: both Positions copied. ``new Position(null)`` does not throw in
+        ACE: it makes a Position in cell 0 with the identity frame, made here in the scalar type and
+        runtime of the info's other Position (ACE's callers copy only infos holding both)."""
+        target, interpolated = self.target_position, self.interpolated_position
         return TargetInfo(
             context_id=self.context_id,
             object_id=self.object_id,
             radius=self.radius,
             quantum=self.quantum,
-            target_position=self.target_position.copy(),
-            interpolated_position=self.interpolated_position.copy(),
+            target_position=_copy_position(target, interpolated),
+            interpolated_position=_copy_position(interpolated, target),
             interpolated_heading=self.interpolated_heading,
             velocity=self.velocity,
             status=self.status,
             last_update_time=self.last_update_time,
         )
 
+
+def _copy_position(pos, other):
+    """``new Position(pos)``, whose null case is a default Position (in the types of `other`)."""
+    if pos is not None:
+        return pos.copy()
+    origin, orientation = other.frame.origin, other.frame.orientation
+    zero, one = type(origin.x)(0.0), type(origin.x)(1.0)
+    return Position(0, AFrame(type(origin)(zero, zero, zero), orientation.runtime.quaternion(zero, zero, zero, one)))
 
 __all__ = ["TargetInfo", "TargetStatus"]
