@@ -78,6 +78,13 @@ record above in two lists, one per DAT, in the order ACE's facade builds from th
 CellLandblocks, LandblockInfos, EnvCells; portal: the buildings' shells, Environments, each static's
 records, the mover's), with what ACE's facade takes for the statics and the mover that no record
 holds (`DatStatic`, `DatMover`) and the land height table.
+
+**Motion tables and animations** (`motion_table_record`, `animation_record`; the motion layer, not yet in
+any scene): a `MotionTable` (portal DAT 0x09xxxxxx; FileTypes/MotionTable.cs with Entity/MotionData.cs
+and AnimData.cs) and an `Animation` (0x03xxxxxx; FileTypes/Animation.cs with Entity/AnimationFrame.cs,
+Frame.cs and the hooks of Entity/AnimationHook.cs), from the plain records `MotionDataRec`,
+`AnimDataRec`, `AnimationFrameRec` and `HookRec`. A Setup names them by `setup(...,
+default_animation=, default_motion_table=)`; both 0 by default, so existing records keep their bytes.
 """
 
 from __future__ import annotations
@@ -132,7 +139,7 @@ class DatRecord:
     """One portal DAT file: its id and the bytes `DatDatabase.ReadFromDat` would unpack."""
 
     id: int
-    kind: str  # the DatLoader FileType class: "GfxObj", "SetupModel", "Environment" (portal DAT); "CellLandblock",
+    kind: str  # the DatLoader FileType class: "GfxObj", "SetupModel", "Environment", "MotionTable", "Animation" (portal DAT); "CellLandblock",
     # "EnvCell", "LandblockInfo" (cell DAT)
     data: bytes
 
@@ -253,11 +260,13 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
     return b"".join((_u32.pack(gfx_id), _u32.pack(0), compressed_u32(0), vertex_array(vertices), _3f.pack(0.0, 0.0, 0.0)))
 
 
-def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0) -> bytes:
+def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
+          default_animation: int = 0, default_motion_table: int = 0) -> bytes:
     """FileTypes/SetupModel: flags 0, the parts, no holding locations, connection points or
     placement frames, the cylspheres ((low point, radius, height)) and spheres ((centre, radius)),
-    Height and Radius 0, the step heights, zero sorting and selection spheres, no lights, no
-    default animation/script/motion table/sound table/script table."""
+    Height and Radius 0, the step heights, zero sorting and selection spheres, no lights, the
+    DefaultAnimation and DefaultMotionTable given (0, none, by default), no default script, sound
+    table or script table."""
     out = [_u32.pack(setup_id), _u32.pack(0), _u32.pack(len(parts))]
     out += [_u32.pack(p) for p in parts]
     out.append(_i32.pack(0) * 3)  # HoldingLocations, ConnectionPoints, PlacementFrames
@@ -270,7 +279,8 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     out.append(_4f.pack(0.0, 0.0, step_up, step_down))  # Height, Radius, StepUpHeight, StepDownHeight
     out.append(sphere((0.0, 0.0, 0.0), 0.0) * 2)  # SortingSphere, SelectionSphere
     out.append(_i32.pack(0))  # Lights
-    out.append(_u32.pack(0) * 5)  # DefaultAnimation, Script, MotionTable, SoundTable, ScriptTable
+    # DefaultAnimation, DefaultScript, DefaultMotionTable, DefaultSoundTable, DefaultScriptTable
+    out.append(_u32.pack(default_animation) + _u32.pack(0) + _u32.pack(default_motion_table) + _u32.pack(0) * 2)
     return b"".join(out)
 
 
@@ -644,3 +654,117 @@ __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMove
            "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
            "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF", "TAG_PORT"]
+
+
+# ---------------------------------------------------------------- motion tables and animations
+# ACE.Entity.Enum.MotionDataFlags and AnimationFlags
+MOTION_DATA_HAS_VELOCITY = 0x1
+MOTION_DATA_HAS_OMEGA = 0x2
+ANIMATION_POS_FRAMES = 0x1
+
+
+@dataclass(frozen=True, slots=True)
+class AnimDataRec:
+    """Entity/AnimData: an animation id, its frame range (high -1: to the last frame) and framerate."""
+
+    anim_id: int
+    low_frame: int = 0
+    high_frame: int = -1
+    framerate: float = 30.0
+
+
+@dataclass(frozen=True, slots=True)
+class MotionDataRec:
+    """Entity/MotionData: its animations, Bitfield (1: a cycle that clears the modifiers; 2: allowed only
+    from the style's default substate), and the Velocity and Omega it gives (None: not written)."""
+
+    anims: tuple = ()
+    bitfield: int = 0
+    velocity: tuple | None = None
+    omega: tuple | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class HookRec:
+    """Entity/AnimationHook: its type and direction (AnimationHookDir: -1 backward, 0 both, 1 forward),
+    then `fields`, the bytes its class's Unpack reads after them (none for AnimationDone and
+    DefaultScript; e.g. an EtherealHook's int32)."""
+
+    hook_type: int
+    direction: int = 0
+    fields: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class AnimationFrameRec:
+    """Entity/AnimationFrame: a frame per part ((origin), (w, x, y, z)), then its hooks."""
+
+    frames: tuple = ()
+    hooks: tuple = ()
+
+
+def _frame_pair(f) -> bytes:
+    """Entity/Frame from ((x, y, z), (w, x, y, z))."""
+    origin, orientation = f
+    return _3f.pack(*origin) + _4f.pack(*orientation)
+
+
+def motion_data(m: MotionDataRec) -> bytes:
+    """Entity/MotionData: NumAnims, Bitfield and Flags bytes, then AlignBoundary's padding (one zero
+    byte: every MotionData of a table starts on a multiple of 4 from the record's start), the
+    AnimDatas (id, low, high, framerate), Velocity and Omega when flagged."""
+    flags = (MOTION_DATA_HAS_VELOCITY if m.velocity is not None else 0) | (MOTION_DATA_HAS_OMEGA if m.omega is not None else 0)
+    if len(m.anims) > 0xFF:
+        raise ValueError(f"a MotionData holds at most 255 animations, not {len(m.anims)}")
+    out = [bytes((len(m.anims), m.bitfield, flags, 0))]
+    out += [struct.pack("<Iiif", a.anim_id, a.low_frame, a.high_frame, a.framerate) for a in m.anims]
+    if m.velocity is not None:
+        out.append(_3f.pack(*m.velocity))
+    if m.omega is not None:
+        out.append(_3f.pack(*m.omega))
+    return b"".join(out)
+
+
+def _motion_dict(d: dict) -> bytes:
+    """Dictionary<uint, MotionData>.Unpack: a uint count, then key and MotionData, in the dict's order."""
+    return b"".join([_u32.pack(len(d))] + [_u32.pack(k) + motion_data(v) for k, v in d.items()])
+
+
+def motion_table_record(table_id: int, default_style: int, style_defaults: dict, cycles: dict, modifiers: dict = None,
+                        links: dict = None) -> DatRecord:
+    """FileTypes/MotionTable (portal DAT 0x09xxxxxx): Id, DefaultStyle, the style defaults (count, then
+    style and substate pairs), Cycles and Modifiers (key -> MotionDataRec) and Links (key -> {motion ->
+    MotionDataRec}), each dictionary in the given order. Keys are ``style << 16 | (motion & 0xFFFFFF)``."""
+    modifiers = modifiers or {}
+    links = links or {}
+    out = [_u32.pack(table_id), _u32.pack(default_style), _u32.pack(len(style_defaults))]
+    out += [_u32.pack(k) + _u32.pack(v) for k, v in style_defaults.items()]
+    out.append(_motion_dict(cycles))
+    out.append(_motion_dict(modifiers))
+    out.append(_u32.pack(len(links)))
+    for key, inner in links.items():
+        out.append(_u32.pack(key) + _motion_dict(inner))
+    return DatRecord(table_id, "MotionTable", b"".join(out))
+
+
+def animation_hook(h: HookRec) -> bytes:
+    return _u32.pack(h.hook_type & 0xFFFFFFFF) + _i32.pack(h.direction) + h.fields
+
+
+def animation_record(anim_id: int, num_parts: int, part_frames, pos_frames=None) -> DatRecord:
+    """FileTypes/Animation (portal DAT 0x03xxxxxx): Id, Flags (PosFrames when `pos_frames` is given),
+    NumParts, NumFrames, the root-motion frames ((origin), (w, x, y, z)), one per frame, then per frame
+    an AnimationFrameRec (a frame per part, then its hooks)."""
+    if pos_frames is not None and len(pos_frames) != len(part_frames):
+        raise ValueError(f"an Animation has one PosFrame per frame: {len(pos_frames)} for {len(part_frames)} frames")
+    flags = ANIMATION_POS_FRAMES if pos_frames is not None else 0
+    out = [struct.pack("<IIII", anim_id, flags, num_parts, len(part_frames))]
+    if pos_frames is not None:
+        out += [_frame_pair(f) for f in pos_frames]
+    for pf in part_frames:
+        if len(pf.frames) != num_parts:
+            raise ValueError(f"an AnimationFrame has one frame per part: {len(pf.frames)} for {num_parts} parts")
+        out += [_frame_pair(f) for f in pf.frames]
+        out.append(_u32.pack(len(pf.hooks)))
+        out += [animation_hook(h) for h in pf.hooks]
+    return DatRecord(anim_id, "Animation", b"".join(out))

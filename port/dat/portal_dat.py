@@ -16,10 +16,16 @@ from .dat_database import DatDatabase
 
 
 class PortalDat(DatDatabase):
-    __slots__ = ("server", "gfx_objs", "timer")
+    __slots__ = ("server", "gfx_objs", "timer", "walk_speed", "run_speed", "turn_speed", "attack_frames")
 
     def __init__(self, records: dict[int, bytes], mode, server: bool, timer: PhysicsTimer | None = None):
         super().__init__(records, mode)
         self.server = server
         self.timer = timer if timer is not None else PhysicsTimer()
         self.gfx_objs: dict = {}  # GfxObjCache.GfxObjs
+        # Physics MotionTable's static WalkSpeed, RunSpeed, TurnSpeed (table id -> float) and DatLoader
+        # MotionTable's attackFrameCache: ACE keeps them for the process, a run keeps them for itself
+        self.walk_speed: dict = {}
+        self.run_speed: dict = {}
+        self.turn_speed: dict = {}
+        self.attack_frames: dict = {}
