@@ -351,7 +351,7 @@ class MoveToManager:
         movement_params.cancel_move_to = False
         movement_params.speed = self.movement_params.speed
 
-        result = self._do_motion(motion, movement_params)
+        result = self.do_motion(motion, movement_params)
         if result != WeenieError.None_:
             self.cancel_move_to(result)
             return
@@ -394,7 +394,7 @@ class MoveToManager:
             if diff > TURN_SLACK and diff < 360.0 - TURN_SLACK:
                 motion_id = MotionCommand.TurnLeft if diff >= 180.0 else MotionCommand.TurnRight
                 if motion_id != self.aux_command:
-                    self._do_motion(motion_id, movement_params)
+                    self.do_motion(motion_id, movement_params)
                     self.aux_command = motion_id
             else:
                 # custom: sync for server ticrate (ACE)
@@ -425,7 +425,7 @@ class MoveToManager:
             if (self.moving_away and dist >= self.movement_params.min_distance
                     or not self.moving_away and dist <= self.movement_params.distance_to_object or in_range):
                 del self.pending_actions[0]
-                self._stop_motion(self.current_command, movement_params)
+                self.stop_motion(self.current_command, movement_params)
 
                 self.current_command = 0
                 self.stop_aux_command(movement_params)
@@ -478,7 +478,7 @@ class MoveToManager:
         movement_params.speed = self.movement_params.speed  # only for turning, too fast? (ACE)
         movement_params.hold_key_to_apply = self.movement_params.hold_key_to_apply
 
-        result = self._do_motion(motion_id, movement_params)
+        result = self.do_motion(motion_id, movement_params)
 
         if result != WeenieError.None_:
             self.cancel_move_to(result)
@@ -511,7 +511,7 @@ class MoveToManager:
             movement_params.cancel_move_to = False
             movement_params.hold_key_to_apply = self.movement_params.hold_key_to_apply
 
-            self._stop_motion(self.current_command, movement_params)
+            self.stop_motion(self.current_command, movement_params)
 
             self.current_command = 0
             self.begin_next_node()
@@ -596,10 +596,10 @@ class MoveToManager:
 
         if self.physics_obj is not None:
             if self.current_command != 0:
-                self._stop_motion(self.current_command, movement_params)
+                self.stop_motion(self.current_command, movement_params)
 
             if self.aux_command != 0:
-                self._stop_motion(self.aux_command, movement_params)
+                self.stop_motion(self.aux_command, movement_params)
 
             if self.top_level_object_id != 0 and self.movement_type != MovementType.Invalid:
                 self.physics_obj.clear_target()
@@ -660,8 +660,8 @@ class MoveToManager:
             elif pending_action.type == MovementType.TurnToHeading:
                 self.handle_turn_to_heading()
 
-    @anchor("MoveToManager::_DoMotion", "MoveToManager.cs:_DoMotion")
-    def _do_motion(self, motion: int, movement_params) -> WeenieError:
+    @anchor("MoveToManager::_DoMotion", "MoveToManager.cs:_DoMotion", "ACE's _DoMotion (a leading underscore would make it private here)")
+    def do_motion(self, motion: int, movement_params) -> WeenieError:
         if self.physics_obj is None:
             return WeenieError.NoPhysicsObject
 
@@ -673,8 +673,8 @@ class MoveToManager:
 
         return minterp.do_interpreted_motion(motion, movement_params)
 
-    @anchor("MoveToManager::_StopMotion", "MoveToManager.cs:_StopMotion")
-    def _stop_motion(self, motion: int, movement_params) -> WeenieError:
+    @anchor("MoveToManager::_StopMotion", "MoveToManager.cs:_StopMotion", "ACE's _StopMotion")
+    def stop_motion(self, motion: int, movement_params) -> WeenieError:
         if self.physics_obj is None:
             return WeenieError.NoPhysicsObject
 
@@ -729,7 +729,7 @@ class MoveToManager:
     @anchor("MoveToManager::stop_aux_command", "MoveToManager.cs:stop_aux_command")
     def stop_aux_command(self, movement_params) -> None:
         if self.aux_command != 0:
-            self._stop_motion(self.aux_command, movement_params)
+            self.stop_motion(self.aux_command, movement_params)
             self.aux_command = 0
 
 
