@@ -220,3 +220,53 @@ def test_movement_system_matches_ace_over_skills_burdens_and_powers(ace, live):
                     f(power), f(burden), pk, runtime), (power, burden, pk)
         for pk in (True, False):
             assert _bits_equal(System.GetJumpPower(skill, float(f(burden)), pk), ms.get_jump_power(skill, f(burden), pk))
+
+
+def _objects(ace, live, state, transient, orientation, velocity):
+    """ACE's `new PhysicsObj()` and the port's PhysicsObj.create, given the same flags, orientation
+    and (global) velocity."""
+    from System.Numerics import Quaternion, Vector3  # type: ignore[import-not-found]
+    from ACE.Server.Physics import PhysicsObj as AcePhysicsObj  # type: ignore[import-not-found]
+    from ACE.Server.Physics.Common import Position as AcePosition  # type: ignore[import-not-found]
+
+    from acconform.numerics import get_mode
+    from acconform.port.frame import AFrame, Position
+    from acconform.port.physics_obj import PhysicsObj
+    from acconform.port.physics_timer import PhysicsTimer
+
+    mode = get_mode("exact", live.location.runtime)
+    a = AcePhysicsObj()
+    a.State = a.State.__class__(state)
+    a.TransientState = a.TransientState.__class__(transient)
+    a.Position = AcePosition(0xA9B40001)
+    a.Position.Frame.Orientation = Quaternion(*[float(f(c)) for c in orientation])
+    a.Velocity = Vector3(*[float(f(c)) for c in velocity])
+    p = PhysicsObj.create(mode, PhysicsTimer())
+    p.state, p.transient_state = state, transient
+    p.position = Position(0xA9B40001, AFrame(mode.vec(0, 0, 0), mode.quat(*orientation)))
+    p.velocity = mode.vec(*velocity)
+    return a, p
+
+
+@pytest.mark.anchor("CMotionInterp::get_leave_ground_velocity")
+def test_contact_rules_and_the_leave_ground_velocity_on_a_physics_obj_match_ace(ace, live):
+    from acconform.flags import PhysicsState, TransientState
+
+    c, w = TransientState.Contact, TransientState.OnWalkable
+    orientations = [(0, 0, 0, 1), (0, 0, 0.38268343, 0.9238795), (0.1, -0.2, 0.7, 0.67823300)]
+    checked = 0
+    for weenie, state, transient, orientation in itertools.product(
+            WEENIES, (PhysicsState.Gravity, 0), (0, c, c | w, w), orientations):
+        a_obj, p_obj = _objects(ace, live, state, transient, orientation, (1.5, -2.25, 0.75))
+        a, p = _ace_interp(ace, weenie, 1.25), _port_interp(weenie, 1.25)
+        a.PhysicsObj, p.physics_obj = a_obj, p_obj
+        for motion in MOTIONS:
+            assert a.contact_allows_move(int(motion)) == p.contact_allows_move(motion), (weenie, state, transient, motion)
+        assert a.is_standing_still() == p.is_standing_still()
+        for fwd, extent in itertools.product((M.Ready, M.WalkForward, M.RunForward), (0.0, 0.0001, 0.5, 1.0, 2.0)):
+            a.InterpretedState.ForwardCommand, p.interpreted_state.forward_command = int(fwd), fwd
+            a.JumpExtent, p.jump_extent = float(f(extent)), f(extent)
+            av, pv = a.get_leave_ground_velocity(), p.get_leave_ground_velocity()
+            assert [f32_bits(x) for x in (av.X, av.Y, av.Z)] == [f32_bits(x) for x in pv], (weenie, orientation, fwd, extent)
+            checked += 1
+    assert checked == 3 * 2 * 4 * 3 * 15
