@@ -51,7 +51,7 @@ def _sign(x) -> int:
     """Math.Sign(float): -1, 0 or 1; NaN throws ArithmeticException."""
     if math.isnan(x):
         raise ArithmeticException("Function does not accept floating point Not-a-Number values.")
-    return (x > 0) - (x < 0)
+    return int(x > 0) - int(x < 0)
 
 
 @dataclass(slots=True, eq=False)
