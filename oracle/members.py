@@ -46,7 +46,10 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.DatLoader.FileTypes.GfxObj", (".ctor", "Unpack")),
     ("ACE.DatLoader.FileTypes.FileType", ("Unpack",)),
     ("ACE.DatLoader.DatManager", ("PortalDat", "<PortalDat>k__BackingField", "CellDat", "<CellDat>k__BackingField")),
-    ("ACE.DatLoader.DatDatabase", ("FileCache", "<FileCache>k__BackingField", "ReadFromDat")),
+    ("ACE.DatLoader.DatDatabase", ("FileCache", "<FileCache>k__BackingField", "ReadFromDat", "<AllFiles>k__BackingField",
+                                   "<Header>k__BackingField")),
+    ("ACE.DatLoader.DatDatabaseHeader", (".ctor",)),
+    ("ACE.DatLoader.DatFile", ()),
     ("ACE.DatLoader.PortalDatDatabase", ()),
     # indoors: Environments (portal DAT), EnvCells and LandblockInfos (cell DAT), loaded by ACE's LScape.get_landcell
     ("ACE.DatLoader.CellDatDatabase", ()),
@@ -61,8 +64,12 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
                                        "SetScaleStatic", "remove_shadows_from_cells", "get_object_info",
                                        "makeObject", "DatObject", "add_obj_to_cell", "leave_cell", "DestroyObject",
                                        "ShadowObjects")),
-    # a scene's placement (mover.placement): Facade.Place
-    ("ACE.Server.Physics.PhysicsObj", ("SetPositionInternal",)),
+    # the mover, a player's PhysicsObj (Facade.BuildMover) entering the world (mover.placement: Facade.Place)
+    ("ACE.Server.Physics.PhysicsObj", (".ctor", "makeAnimObject", "set_object_guid", "set_weenie_obj", "SetMotionTableID",
+                                       "enter_world", "SetPosition", "set_request_pos", "update_object_server")),
+    ("ACE.Server.Physics.Common.WeenieObject", (".ctor",)),
+    ("ACE.Server.WorldObjects.Player", ("LastContact",)),
+    ("ACE.Entity.ObjectGuid", (".ctor",)),
     ("ACE.Server.Physics.Common.Position", ("GetCell",)),
     ("ACE.Server.Physics.Common.SetPosition", (".ctor",)),
     ("ACE.Server.Physics.Common.SetPositionFlags", ("Slide", "DontCreateCells")),
@@ -70,7 +77,7 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     # a tick scene (scene/4): the clock, the inputs, the two drivers and the mover read back after each tick (Facade.RunTicks)
     ("ACE.Server.Entity.Timers", ("PortalYearTicks",)),
     ("ACE.Server.Physics.Common.PhysicsTimer", ("CurrentTime",)),
-    ("ACE.Server.Physics.PhysicsObj", ("update_object", "UpdateObjectInternalServer", "set_current_pos", "RequestPos",
+    ("ACE.Server.Physics.PhysicsObj", ("update_object",
                                        "UpdateTime", "Acceleration", "Omega", "CachedVelocity", "JumpedThisFrame",
                                        "set_velocity", "set_local_velocity", "set_omega", "calc_acceleration",
                                        "set_on_walkable", "RemoveLinkAnimations", "IsAnimating", "IsMovingOrAnimating")),

@@ -18,6 +18,7 @@ built from it, by the same bytes). A record the run does not hold is never remem
 from __future__ import annotations
 
 from .anchors import anchor, harness
+from .dat.cell_landblock import CellLandblock
 from .dat.env_cell import EnvCell as DatEnvCell
 from .dat.environment import Environment as DatEnvironment
 from .dat.gfx_obj import GfxObj as DatGfxObj
@@ -34,6 +35,11 @@ def get_env_cell(cell_dat, portal_dat, file_id: int):
     env_cell = cell_dat.read_from_dat(file_id, DatEnvCell)
 
     return EnvCell.from_dat(env_cell, portal_dat)
+
+
+@anchor(None, "DBObj.cs:GetCellLandblock")
+def get_cell_landblock(cell_dat, file_id: int) -> CellLandblock:
+    return cell_dat.read_from_dat(file_id, CellLandblock)
 
 
 @anchor(None, "DBObj.cs:GetLandblockInfo")

@@ -72,6 +72,13 @@ class NotImplementedException(AceException):
     dotnet_type = "NotImplementedException"
 
 
+class ArgumentOutOfRangeException(AceException):
+    """A .NET List indexer past the list's end, e.g. ConstructVertices reading Height[0] of the empty
+    CellLandblock ACE's DAT read gives for a landblock its DAT lacks."""
+
+    dotnet_type = "ArgumentOutOfRangeException"
+
+
 class InvalidCastException(AceException):
     """A C# cast of an object to a class it is not, e.g. ``(EnvCell)`` of an outdoor cell an
     EnvCell's visible-cell list names."""

@@ -251,6 +251,14 @@ class PartArray:
         if self.motion_table_manager is not None:
             raise NotImplementedError("motion tables (MotionTableManager.HandleEnterWorld) are not ported")
 
+    @anchor("CPartArray::SetMotionTableID", "PartArray.cs:SetMotionTableID")
+    def set_motion_table_id(self, mtable_id: int) -> bool:
+        if self.motion_table_manager is not None:
+            raise NotImplementedError("motion tables (MotionTableManager.GetMotionTableID) are not ported")
+        if mtable_id == 0:
+            return True
+        raise NotImplementedError("motion tables (MotionTableManager.Create) are not ported")
+
     @anchor("CPartArray::RemoveParts", "PartArray.cs:RemoveParts")
     def remove_parts(self, cell) -> None:
         """ACE calls PartCell.RemovePart per part, which returns at once (its body is commented
