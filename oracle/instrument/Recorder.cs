@@ -236,6 +236,7 @@ namespace Acconform.Oracle
                 return;
             }
             if (v is Vector3) { V(s, (Vector3)v); return; }
+            if (v is Vector2) { var w = (Vector2)v; s.Append('['); F(s, w.X).Append(','); F(s, w.Y).Append(']'); return; }
             var sph = v as Sphere;
             if (sph != null)
             {
