@@ -329,6 +329,7 @@ def comparable(present: bool, a, b) -> bool:
 # Each side builds the scene's world in the harness's own order (the facade's BuildScene, the port's scene_world),
 # so a comparison with ACE's own trace starts at the run.
 RUN_STARTS = frozenset({"Transition.cs:MakeTransition", "Transition.cs:InitObject", "PhysicsObj.cs:get_object_info"})
+RUN_ENDS = "Transition.cs:CleanupTransition"  # a transition scene's run ends with it (the placement's too)
 TRANSITION = "PhysicsObj.cs:transition"
 TICK_DRIVER = "PhysicsObj.cs:update_object"
 
@@ -339,9 +340,9 @@ def run_part(records, ticks: bool) -> tuple:
     its calls one by one, as the port's run_scene does around the mover's transition); in a tick scene,
     no record of the port's tick driver (run_ticks, anchored to update_object, a call outside any routine)."""
     start = next((i for i, r in enumerate(records) if r.tick is not None or r.anchor in RUN_STARTS), len(records))
-    end = len(records)
-    if ticks:  # what follows the last tick is the harness's (the facade removes the statics)
-        end = max((i + 1 for i, r in enumerate(records) if r.event == "tick"), default=end)
+    # what follows the last tick, or the transition's cleanup, is the harness's (the facade removes the statics)
+    last = (lambda r: r.event == "tick") if ticks else (lambda r: r.anchor == RUN_ENDS)
+    end = max((i + 1 for i, r in enumerate(records) if last(r)), default=len(records))
     out = []
     building = 0  # inside a constructor's enter .. exit
     for r in records[start:end]:
