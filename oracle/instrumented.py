@@ -344,6 +344,11 @@ class TracedAce:
     def run(self, scene) -> Outcome:
         return Outcome.from_json(self._ask("run", scene)["outcome"], "outcome")
 
+    def counted(self, scene) -> tuple[Outcome, int]:
+        """(ACE's outcome with the recorder on, how many records it wrote): a trace's cost without its transfer."""
+        doc = self._ask("count", scene)
+        return Outcome.from_json(doc["outcome"], "outcome"), doc["count"]
+
     def trace(self, scene) -> tuple[Outcome, tuple[TraceRecord, ...]]:
         doc = self._ask("trace", scene)
         outcome = Outcome.from_json(doc["outcome"], "outcome")
@@ -404,6 +409,13 @@ def _serve(assembly: str, runtime: str) -> int:
                 finally:
                     text = str(TraceRecorder.Take())
                 answer({"outcome": outcome.to_json(), "records": text})
+            elif req["op"] == "count":  # recorder on, the records counted and dropped (benchmarks/instrumented_corpus.py)
+                TraceRecorder.Start()
+                try:
+                    outcome = oracle.run(scene)
+                finally:
+                    TraceRecorder.Take()
+                answer({"outcome": outcome.to_json(), "count": int(TraceRecorder.Count())})
             else:
                 answer({"outcome": oracle.run(scene).to_json()})
         except Exception as e:

@@ -70,6 +70,9 @@ namespace Acconform.Oracle
             Current = r;
         }
 
+        /// <summary>How many records the last run wrote.</summary>
+        public static int Count() => instance.Records;
+
         /// <summary>Stop recording and hand over the records, one a line.</summary>
         public static string Take()
         {
