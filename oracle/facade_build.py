@@ -32,24 +32,25 @@ SOURCE_DIR = Path(__file__).with_name("facade")
 DLL_NAME = "Acconform.Oracle.Facade.dll"
 
 
-def sources() -> list[Path]:
-    return sorted(SOURCE_DIR.glob("*.cs"))
+def sources(extra=()) -> list[Path]:
+    """The facade's C# files, and `extra` ones compiled into it (an instrumented ACE's recorder, oracle/instrumented.py)."""
+    return sorted(SOURCE_DIR.glob("*.cs")) + [Path(p) for p in extra]
 
 
-def cache_key(ace: LoadedAce) -> str:
+def cache_key(ace: LoadedAce, extra=()) -> str:
     h = hashlib.sha256(ace.assembly_hash.encode())
     h.update(ace.location.runtime.encode())
-    for s in sources():
+    for s in sources(extra):
         h.update(s.name.encode())
         h.update(s.read_bytes())
     return h.hexdigest()[:20]
 
 
-def build(ace: LoadedAce, loading: Loading | None = None) -> tuple[Path | None, str]:
+def build(ace: LoadedAce, loading: Loading | None = None, extra=()) -> tuple[Path | None, str]:
     """(path of the compiled facade or None, how it was obtained or why not); compiling is the
-    step "facade build" of `loading`."""
+    step "facade build" of `loading`. `extra`: more C# files compiled into it."""
     loading = loading or Loading(None)
-    out_dir = cache_dir() / "facade" / cache_key(ace)
+    out_dir = cache_dir() / "facade" / cache_key(ace, extra)
     dll = out_dir / DLL_NAME
     if dll.is_file():
         return dll, f"cached {dll}"
@@ -63,7 +64,7 @@ def build(ace: LoadedAce, loading: Loading | None = None) -> tuple[Path | None, 
             _wait_for(lock)
             if dll.is_file():
                 return dll, f"compiled by another process into {dll}"
-            return _build_mcs(ace, dll) if ace.location.runtime == "mono" else _build_dotnet(ace, dll)
+            return _build_mcs(ace, dll, extra) if ace.location.runtime == "mono" else _build_dotnet(ace, dll, extra)
 
 
 @contextlib.contextmanager
@@ -97,7 +98,7 @@ def _wait_for(lock) -> None:
     fcntl.flock(lock, fcntl.LOCK_EX)
 
 
-def _build_mcs(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
+def _build_mcs(ace: LoadedAce, dll: Path, extra=()) -> tuple[Path | None, str]:
     mcs = shutil.which("mcs")
     if mcs is None:
         return None, "no mcs on PATH (Debian/Ubuntu: apt-get install mono-mcs)"
@@ -109,7 +110,7 @@ def _build_mcs(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
     tmp_dir.mkdir(exist_ok=True)
     tmp = tmp_dir / DLL_NAME
     cmd = [mcs, "-target:library", "-optimize+", "-debug-", "-nowarn:0618", f"-out:{tmp}"]
-    cmd += [f"-r:{r}" for r in refs] + [str(s) for s in sources()]
+    cmd += [f"-r:{r}" for r in refs] + [str(s) for s in sources(extra)]
     try:  # the temporary directory goes however the build ends
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
@@ -155,7 +156,7 @@ _NUGET_CONFIG = """<?xml version="1.0" encoding="utf-8"?>
 """
 
 
-def _build_dotnet(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
+def _build_dotnet(ace: LoadedAce, dll: Path, extra=()) -> tuple[Path | None, str]:
     """A throw-away class library referencing the user's ACE assemblies, built with the SDK of the
     .NET installation that runs them, for the target framework their runtimeconfig names."""
     root = dotnet_root()
@@ -167,7 +168,7 @@ def _build_dotnet(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
     proj_dir = dll.parent / f"project-{os.getpid()}"
     shutil.rmtree(proj_dir, ignore_errors=True)
     proj_dir.mkdir(parents=True)
-    compile_items = "\n".join(f'    <Compile Include="{s}" />' for s in sources())
+    compile_items = "\n".join(f'    <Compile Include="{s}" />' for s in sources(extra))
     refs = "\n".join(f'    <Reference Include="{a}"><HintPath>{ace.location.directory / (a + ".dll")}</HintPath>'
                      f"<Private>false</Private></Reference>" for a in ACE_ASSEMBLIES)
     (proj_dir / "Acconform.Oracle.Facade.csproj").write_text(_CSPROJ.format(tfm=tfm, compile=compile_items, refs=refs))

@@ -27,7 +27,7 @@ from .pack import pack_scene, unpack_outcome
 class LiveOracle:
     name = "live"
 
-    def __init__(self, assembly=None, runtime: str | None = None, say: Say | None = to_stderr):
+    def __init__(self, assembly=None, runtime: str | None = None, say: Say | None = to_stderr, extra_sources=()):
         location = config.resolve(assembly, runtime)
         if location is None:
             raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {config.HOW_TO_SET}")
@@ -37,7 +37,7 @@ class LiveOracle:
         label = config.ace_label()
         ace = f"{label} ({self.ace.ace_version})" if label else self.ace.ace_version
         self.versions = Versions(acconform=__version__, ace=ace, runtime=self.ace.runtime_version)
-        self._facade, self.facade_status = _load_facade(self.ace, loading)
+        self._facade, self.facade_status = _load_facade(self.ace, loading, extra_sources)
         if self._facade is None:
             raise OracleUnavailable(f"the C# facade is unavailable: {self.facade_status}")
         self._buffers()
@@ -185,11 +185,11 @@ def unpack_steps(data: bytes) -> tuple:
     return tuple(out)
 
 
-def _load_facade(ace, loading: Loading):
+def _load_facade(ace, loading: Loading, extra_sources=()):
     """(the facade's class, initialised, or None; how it was obtained or why not)."""
     from .facade_build import build
 
-    dll, status = build(ace, loading)
+    dll, status = build(ace, loading, extra_sources)
     if dll is None:
         return None, status
     with loading.step("facade", f"loading the C# facade ({status})"):

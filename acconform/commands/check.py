@@ -168,7 +168,8 @@ def _campaign(args, port, kinds, workers) -> int:
         try:
             from ..explain import triage
 
-            triage(result.found, port, args.mode, runtime, None if args.no_progress else _say)
+            triage(result.found, port, args.mode, runtime, None if args.no_progress else _say,
+                   _traced_ace(args, oracle, None if args.no_progress else _say))
         except KeyboardInterrupt:  # the cases are written: the summary says what was found, ungrouped
             result.interrupted = True
     bad = bad + result.unreadable
@@ -365,3 +366,20 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
                                 f"{corpus} holds no scenes of kinds {','.join(run_kinds)} (record some with `acconform "
                                 f"record` where ACE is available)")
     return oracle, oracle.scenes(entries), oracle.bad
+
+
+def _traced_ace(args, oracle, say):
+    """The instrumented ACE (oracle/instrumented.py) when the campaign ran against a live ACE: the triage
+    then compares with ACE's own trace; None when ACE is not live or cannot be instrumented here (the
+    triage then uses the port's trace, as without ACE)."""
+    if getattr(oracle, "name", None) != "live":
+        return None
+    from ..errors import OracleUnavailable
+    from ..oracle.instrumented import TracedAce
+
+    try:
+        return TracedAce(args.ace, args.runtime, say)
+    except OracleUnavailable as e:
+        if say is not None:
+            say(f"triage against the port's trace: no instrumented ACE ({e})")
+        return None

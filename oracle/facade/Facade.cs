@@ -315,6 +315,10 @@ namespace Acconform.Oracle
         }
 
         // ------------------------------------------------------------------ ticks
+        /// <summary>Told each tick's index as it starts, and -1 after the last (the instrumented ACE's trace recorder; null
+        /// otherwise).</summary>
+        public static Action<int> TickStarted;
+
         /// <summary>Timers.PortalYearTicks, the clock PhysicsTimer.CurrentTime reads, through its internal setter
         /// (reflection): a tick scene's clock is scene data, never the wall clock.</summary>
         static void SetClock(double t)
@@ -362,6 +366,7 @@ namespace Acconform.Oracle
             ticksRun = 0;
             foreach (var step in tickSteps)
             {
+                TickStarted?.Invoke(ticksRun);
                 bool updated;
                 try
                 {
@@ -382,6 +387,7 @@ namespace Acconform.Oracle
                 WriteTick(obj, updated);
                 ticksRun++;
             }
+            TickStarted?.Invoke(-1);  // the ticks are over
         }
 
         static void ApplyInputs(PhysicsObj obj, TickStep s)

@@ -29,7 +29,7 @@ from __future__ import annotations
 from collections import OrderedDict
 
 from acconform.numerics import Mode
-from acconform.port.anchors import anchor, harness
+from acconform.port.anchors import anchor, harness, remembers
 from acconform.port import db_obj, land_defs
 from acconform.port.cell.land_cell import LandCell, is_built
 from acconform.port.land.landblock import Landblock
@@ -189,14 +189,20 @@ class LScape:
             raise AssertionError("a LandblockStruct of an empty CellLandblock was built")
         return landblock
 
+    def _get_landcell_every_time(self, block_cell_id: int):
+        """get_landcell as ACE writes it, nothing remembered (what a traced run runs)."""
+        return self._get_landcell(block_cell_id)
+
     @anchor("LScape::get_landcell", "LScape.cs:get_landcell")
+    @remembers(_get_landcell_every_time)
     def get_landcell(self, block_cell_id: int):
         """The cell with that id (a LandCell, or an EnvCell built on first use). Unlike Landblock.get_landcell, ACE does not check the
         slot's id here; the slot comes from gid_to_lcoord without the env check.
 
         The answer for an id never changes during a run (a built landblock's cells are fixed),
         so it is remembered per run: the transition asks for the same few cells thousands of
-        times. A failing lookup (a landblock not in the scene) raises every time."""
+        times. A failing lookup (a landblock not in the scene) raises every time. A traced run
+        looks it up every time (anchors.remembers), so its trace holds get_landblock's calls."""
         cell = self.landcells.get(block_cell_id, _UNSEEN)
         if cell is not _UNSEEN:
             return cell
