@@ -163,6 +163,7 @@ class Result:
     versions: Versions | None = None  # of the oracle (None: per-process oracle, not asked in this process)
     shrink_runs: int = 0  # scenes run while shrinking (not counted in cases)
     unreadable: list[str] = field(default_factory=list)  # replayed items that did not load, each naming where
+    ace_note: str | None = None  # the live oracle's ACE is not the one the port follows (oracle/identity.py)
 
     @property
     def ok(self) -> bool:
@@ -191,6 +192,16 @@ def guarded(backend: Backend, scene: Scene) -> Outcome:
         return backend(scene)
     except Exception as e:  # noqa: BLE001 - a crash on one side is a difference, not a runner crash
         return Outcome(error=f"{type(e).__name__}: {e}")
+
+
+def ace_note_of(oracle: Backend) -> str | None:
+    """The oracle's note when its ACE is not the one the port follows (a live oracle's; None otherwise)."""
+    owner = getattr(oracle, "__self__", oracle)
+    try:
+        note = getattr(owner, "ace_note", None)
+    except Exception:  # noqa: BLE001 - a per-process oracle that cannot load has said why already
+        return None
+    return note if isinstance(note, str) else None
 
 
 def versions_of(port: Backend, oracle: Backend) -> Versions:
@@ -983,7 +994,8 @@ def _worker(w: int) -> dict:
     if close is not None:
         close()  # this worker's implementation process
     return {"cases": r.cases, "found": [f.case.to_json() for f in r.found], "timings": dict(r.timings),
-            "skipped": dict(r.skipped), "shrink_runs": r.shrink_runs, "unreadable": r.unreadable}
+            "skipped": dict(r.skipped), "shrink_runs": r.shrink_runs, "unreadable": r.unreadable,
+            "ace_note": ace_note_of(s["oracle"])}
 
 
 def _worker_campaign(w: int, s: dict, r: Result, tick, shrinking) -> None:
@@ -1031,6 +1043,7 @@ def _merge(result: Result, outs: list[dict], mode: str, generative: bool) -> Non
         result.skipped.update(out["skipped"])
         result.shrink_runs += out["shrink_runs"]
         result.unreadable.extend(out["unreadable"])
+        result.ace_note = result.ace_note or out.get("ace_note")
         for doc in out["found"]:
             case = Case.from_json(doc)
             sig = signature(compare(case.port, case.oracle, mode))
@@ -1086,6 +1099,8 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
     streams, first_stream = workers * parts, (part - 1) * workers  # a sharded live campaign's streams
     workers = max(1, min(workers, total or 1))
     result = Result(source="replay" if items is not None else "generative", versions=versions)
+    if versions is not None:  # this process has its oracle loaded already
+        result.ace_note = ace_note_of(oracle)
     budget = DEFAULT_BUDGET if items is not None and shrink_budget is None else shrink_budget
     against = ("the built-in port standing in for ACE" if items is not None else
                "live ACE" if shrunk_against(oracle) == "ace" else "the built-in port")

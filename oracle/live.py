@@ -37,6 +37,11 @@ class LiveOracle:
         label = config.ace_label()
         ace = f"{label} ({self.ace.ace_version})" if label else self.ace.ace_version
         self.versions = Versions(acconform=__version__, ace=ace, runtime=self.ace.runtime_version)
+        who = self.ace.identity
+        self.ace_line = who.line if who is not None else None  # which ACE this is, in one line (oracle/identity.py)
+        self.ace_note = who.note if who is not None else None  # said beside differences when it is not the port's ACE
+        if say is not None and self.ace_line:
+            say(self.ace_line)
         self._facade, self.facade_status = _load_facade(self.ace, loading)
         if self._facade is None:
             raise OracleUnavailable(f"the C# facade is unavailable: {self.facade_status}")

@@ -280,6 +280,8 @@ def console_summary(result, bad, keep_going: bool) -> list[str]:
         by_kind[scene_kind(f.case.scene)] += 1
         groups.setdefault(f.group_key, []).append(f)
     traced = any(f.group for f in result.found)
+    if result.ace_note:  # the ACE found is not the one the port follows: its own changes show here too
+        out.append(result.ace_note)
     out.append(f"{_plural(len(result.found), 'difference')}, {len(groups)} distinct "
                + ("first divergence" + ("s" if len(groups) != 1 else "") if traced else
                   "set" + ("s" if len(groups) != 1 else "") + " of differing fields (the implementation gives no trace)"))
