@@ -18,10 +18,30 @@ from .members import ACE_BUILD_COMMITS, ACE_COMMIT
 
 STAMP_SINCE = "c725acc, 2020-03-24"  # the commit that gave ACE its build stamp
 
-# (the change, type, member, the member's type name as in 7b47913): a build whose member has
-# another type is from before (or after) the change named. Read by runtime.shape_of.
-SHAPES: tuple[tuple[str, str, str, str], ...] = (
-    ("ACE #2727 (cc0ecff, 2020-10-24)", "ACE.Server.Physics.Util.AdjustCell", "AdjustCells", "ConcurrentDictionary`2"),
+ABSENT = "absent"  # runtime.shape_of's answer for a member the type lacks
+
+
+@dataclass(frozen=True, slots=True)
+class Shape:
+    """A member ACE changed: as 7b47913 has it (`expected`, a type name or ABSENT) since `change`."""
+
+    change: str  # "ACE #2727 (cc0ecff, 2020-10-24)"
+    type_name: str
+    member: str
+    expected: str
+    said: str  # what a build with another shape is, "{found}" the shape found
+
+
+WALL_CLOCK = "ACE #4110 (2e9b8f3, 2024-03-24)"  # PhysicsTimer reads Timers.PortalYearTicks since
+
+# Read by runtime.shape_of when ACE loads; a build shaped otherwise is "7b47913-compatible: no".
+SHAPES: tuple[Shape, ...] = (
+    Shape("ACE #2727 (cc0ecff, 2020-10-24)", "ACE.Server.Physics.Util.AdjustCell", "AdjustCells",
+          "ConcurrentDictionary`2", "AdjustCell.AdjustCells is a {found}"),
+    # before it, PhysicsTimer.CurrentTime read a Stopwatch of its own: the facade cannot set the physics
+    # clock, so a tick scene's update times are wall time (LiveOracle.unsupported skips tick scenes)
+    Shape(WALL_CLOCK, "ACE.Server.Physics.Common.PhysicsTimer", "_timer", ABSENT,
+          "PhysicsTimer.CurrentTime reads a {found} (wall time), not Timers.PortalYearTicks"),
 )
 
 
@@ -29,7 +49,8 @@ SHAPES: tuple[tuple[str, str, str, str], ...] = (
 class AceIdentity:
     follows_port: bool | None  # True: ACE 7b47913; False: another ACE; None: cannot tell (no stamp, shapes agree)
     line: str  # "ACE: mono build, ACE.Server 0.0.0.0 sha256:..., commit ..., 7b47913-compatible: yes"
-    found: str  # the part of `line` naming the ACE found ("no build stamp; before ACE #2727 ...")
+    found: str  # the part of `line` naming the ACE found ("no build stamp; ... as before ACE #2727 ...")
+    wall_clock: bool = False  # its physics clock is wall time: tick scenes cannot be run on it
 
     @property
     def note(self) -> str | None:
@@ -44,9 +65,9 @@ def identify(runtime: str, ace_version: str, stamp: str | None, stamp_date: str 
              shapes: dict[str, str | None]) -> AceIdentity:
     """`runtime` "mono"/"coreclr"; `ace_version` "ACE.Server 0.0.0.0 sha256:..."; `stamp` the build's
     ServerBuildInfo.Commit (None: the build has none) and `stamp_date` its build date ("2026-08-08");
-    `shapes` each SHAPES entry's member type name as found (None: not read)."""
-    changed = [f"{t.rsplit('.', 1)[-1]}.{m} is a {shapes[what]}, not a {expected} as since {what}"
-               for what, t, m, expected in SHAPES if shapes.get(what) not in (None, expected)]
+    `shapes` each SHAPES entry's shape as found, by its change (a type name, ABSENT, or None: not read)."""
+    other = [sh for sh in SHAPES if shapes.get(sh.change) not in (None, sh.expected)]
+    changed = [f"{sh.said.format(found=shapes[sh.change])} (as before {sh.change})" for sh in other]
     if stamp is not None:
         when = f", built {stamp_date}" if stamp_date else ""
         ours = any(stamp.startswith(c) for c in ACE_BUILD_COMMITS)
@@ -62,4 +83,5 @@ def identify(runtime: str, ace_version: str, stamp: str | None, stamp_date: str 
         found += "; " + "; ".join(changed)
     verdict = {True: "yes", False: "no", None: "unknown (no stamp; its members are shaped as 7b47913's)"}[follows]
     build = "mono build" if runtime == "mono" else ".NET build (CoreCLR)"
-    return AceIdentity(follows, f"ACE: {build}, {ace_version}, {found}, {ACE_COMMIT}-compatible: {verdict}", found)
+    return AceIdentity(follows, f"ACE: {build}, {ace_version}, {found}, {ACE_COMMIT}-compatible: {verdict}", found,
+                       wall_clock=any(sh.change == WALL_CLOCK for sh in other))

@@ -59,6 +59,16 @@ class LiveOracle:
         self.last_build_micros = 0.0  # time building them (CellLandblock.Unpack, new Landblock, PostInit)
         self.last_transition_micros = 0.0  # PhysicsObj.transition's own work (MakeTransition .. CleanupTransition)
 
+    def unsupported(self, scene: Scene) -> str | None:
+        """Why this ACE cannot run `scene` (the campaign skips it, naming why), or None. An ACE whose
+        physics clock is wall time (oracle/identity.py, before ACE #4110) gives a tick scene update
+        times of whenever it ran: the facade cannot set its clock, so its answer is not a function
+        of the scene."""
+        who = self.ace.identity
+        if scene.ticks is not None and who is not None and who.wall_clock:
+            return "this ACE runs tick scenes on wall time (PhysicsTimer before ACE #4110)"
+        return None
+
     def run(self, scene: Scene) -> Outcome:
         return self.run_timed(scene)[0]
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from ..errors import OracleUnavailable
 from . import dotnet_host
 from .config import HOW_TO_SET, AceLocation
-from .identity import SHAPES, AceIdentity, identify
+from .identity import ABSENT, SHAPES, AceIdentity, identify
 from .loading import Loading
 from .members import REQUIRED, check_members
 
@@ -69,7 +69,7 @@ def load(location: AceLocation, loading: Loading | None = None) -> LoadedAce:
         check_members(find_type, has_member, str(location.directory))
         files = [location.directory / f"{a}.dll" for a in ACE_ASSEMBLIES]
         version = _ace_version(location)
-        shapes = {what: shape_of(t, m) for what, t, m, _expected in SHAPES}
+        shapes = {sh.change: shape_of(sh.type_name, sh.member) for sh in SHAPES}
         who = identify(location.runtime, version, _build_commit(), _build_date(), shapes)
         return LoadedAce(location, version, _runtime_version(location.runtime), _sha256(files), who)
 
@@ -213,7 +213,8 @@ def _build_date() -> str | None:
 
 
 def shape_of(type_name: str, member: str) -> str | None:
-    """The type name of a field or property (e.g. "ConcurrentDictionary`2"), or None when absent."""
+    """The type name of a field or property (e.g. "ConcurrentDictionary`2"), ABSENT when the type
+    lacks the member, None when the type is not there."""
     from System.Reflection import BindingFlags
 
     t = find_type(type_name)
@@ -224,7 +225,7 @@ def shape_of(type_name: str, member: str) -> str | None:
     if f is not None:
         return str(f.FieldType.Name)
     p = t.GetProperty(member, flags)
-    return str(p.PropertyType.Name) if p is not None else None
+    return str(p.PropertyType.Name) if p is not None else ABSENT
 
 
 def find_type(full_name: str):
