@@ -58,7 +58,8 @@ class AceIdentity:
         if self.follows_port is not False:
             return None
         return (f"note: the ACE found is not ACE {ACE_COMMIT}, the commit the port follows ({self.found}): a difference "
-                "here may be ACE's own change between the two, not the port's bug")
+                f"here may be ACE's own change between the two, not the port's bug (`acconform repro CASE` with an ACE "
+                f"{ACE_COMMIT} build tells)")
 
 
 def identify(runtime: str, ace_version: str, stamp: str | None, stamp_date: str | None,
