@@ -44,6 +44,7 @@ def test_ace_built_by_its_own_csproj_says_it_is_7b47913_and_agrees_with_the_port
     p, s = _check(_build("ACE_FULL_ASSEMBLY"), tmp_path, "-n", 60, "-j", 1)
     assert "7b47913-compatible: yes" in p.stderr and ".NET build (CoreCLR)" in p.stderr
     assert s["oracle"] == "live" and s["cases"]["compared"] == 60 and s["differences"]["total"] == 0, p.stdout
+    assert s["ace_note"] is None
 
 
 def test_ace_of_2019_loads_as_another_ace_and_skips_the_tick_scenes_it_cannot_run(tmp_path):
@@ -53,5 +54,6 @@ def test_ace_of_2019_loads_as_another_ace_and_skips_the_tick_scenes_it_cannot_ru
     assert "no build stamp" in line and "7b47913-compatible: no" in line and "PhysicsTimer" in line
     assert s["oracle"] == "live" and s["cases"]["skipped_total"] > 0, p.stdout
     assert all(why.startswith("this ACE runs tick scenes on wall time") for why in s["cases"]["skipped"])
+    assert "the ACE found is not ACE 7b47913" in s["ace_note"]
     if s["differences"]["total"]:  # ACE's own changes since 2019 are said to be possibly ACE's
         assert "the ACE found is not ACE 7b47913" in p.stdout
