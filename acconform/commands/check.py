@@ -262,7 +262,9 @@ def console_summary(result, bad, keep_going: bool) -> list[str]:
     out = [f"{head}{result.cases} cases in {result.elapsed:.1f} s ({rate:.0f} cases/s): {result.compared} compared, "
            f"{skipped} skipped, {_plural(len(result.found), 'difference')}"]
     if result.skipped:
-        out.append(f"skipped {_plural(skipped, 'scene')} the implementation cannot run: "
+        ace = [why.startswith("this ACE ") for why in result.skipped]  # LiveOracle.unsupported's reasons
+        who = "this ACE" if all(ace) else "the implementation or this ACE" if any(ace) else "the implementation"
+        out.append(f"skipped {_plural(skipped, 'scene')} {who} cannot run: "
                    + ", ".join(f"{why} x{n}" for why, n in result.skipped.most_common()))
     if result.shrink_runs:
         out.append(f"shrinking ran {_plural(result.shrink_runs, 'more scene')} (not counted above)")
@@ -281,6 +283,8 @@ def console_summary(result, bad, keep_going: bool) -> list[str]:
         by_kind[scene_kind(f.case.scene)] += 1
         groups.setdefault(f.group_key, []).append(f)
     traced = any(f.group for f in result.found)
+    if result.ace_note:  # the ACE found is not the one the port follows: its own changes show here too
+        out.append(result.ace_note)
     out.append(f"{_plural(len(result.found), 'difference')}, {len(groups)} distinct "
                + ("first divergence" + ("s" if len(groups) != 1 else "") if traced else
                   "set" + ("s" if len(groups) != 1 else "") + " of differing fields (the implementation gives no trace)"))

@@ -686,12 +686,19 @@ namespace Acconform.Oracle
         }
 
         // ------------------------------------------------------------------ global state
+        /// <summary>Empties one of ACE's static tables whatever collection type the ACE build gives it (ACE changed
+        /// some from Dictionary to ConcurrentDictionary over the years; both are an IDictionary).</summary>
+        static void ClearIfAny(System.Collections.IDictionary table)
+        {
+            if (table.Count > 0) table.Clear();
+        }
+
         public static void Reset(bool server)
         {
             var eng = new PhysicsEngine(new ObjectMaint(), new SmartBox());  // sets PhysicsEngine.Instance
             eng.Server = true;  // landblocks are built in server mode (LandblockStruct.ConstructUVs reads DATs)
             if (!LScape.Landblocks.IsEmpty) LScape.Landblocks.Clear();
-            if (!AdjustCell.AdjustCells.IsEmpty) AdjustCell.AdjustCells.Clear();
+            ClearIfAny(AdjustCell.AdjustCells);  // a ConcurrentDictionary since ACE #2727 (2020-10), a Dictionary before
             if (VertexCache.Vertices.Count > 0) VertexCache.Vertices.Clear();
             if (PolygonCache.Polygons.Count > 0) PolygonCache.Polygons.Clear();
             if (BSPCache.BSPTrees.Count > 0) BSPCache.BSPTrees.Clear();
