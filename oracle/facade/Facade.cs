@@ -469,6 +469,10 @@ namespace Acconform.Oracle
                 var ints = biotaType.GetProperty("PropertiesInt");
                 ints.SetValue(biota, Activator.CreateInstance(typeof(Dictionary<,>).MakeGenericType(ints.PropertyType.GetGenericArguments())));
                 creatureCtor.Invoke(player, new[] { biota });
+                // immortal, as a sentinel's @neversaydie makes a server's Player: an environment collision fast enough to
+                // hurt runs HandleFallingDamage, whose TakeDamage_Falling then returns at once (Health, chat and death
+                // reach the Player's Session, which this Player has none of; none of them is physics)
+                typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("Invincible").SetValue(player, true);
                 serverPlayer = true;
             }
             player.LastContact = true;
