@@ -462,21 +462,29 @@ namespace Acconform.Oracle
                 PrepareServerPlayer();
                 var biotaType = creatureCtor.GetParameters()[0].ParameterType;
                 var biota = Activator.CreateInstance(biotaType);
-                biotaType.GetProperty("Id").SetValue(biota, moverId);
-                var weenieType = biotaType.GetProperty("WeenieType");
+                Need(biotaType.GetProperty("Id"), "Id").SetValue(biota, moverId);
+                var weenieType = Need(biotaType.GetProperty("WeenieType"), "WeenieType");
                 weenieType.SetValue(biota, Enum.Parse(weenieType.PropertyType, "Creature"));
-                biotaType.GetProperty("WeenieClassId").SetValue(biota, 1u);
-                var ints = biotaType.GetProperty("PropertiesInt");
+                Need(biotaType.GetProperty("WeenieClassId"), "WeenieClassId").SetValue(biota, 1u);
+                var ints = Need(biotaType.GetProperty("PropertiesInt"), "PropertiesInt");
                 ints.SetValue(biota, Activator.CreateInstance(typeof(Dictionary<,>).MakeGenericType(ints.PropertyType.GetGenericArguments())));
                 creatureCtor.Invoke(player, new[] { biota });
                 // immortal, as a sentinel's @neversaydie makes a server's Player: an environment collision fast enough to
                 // hurt runs HandleFallingDamage, whose TakeDamage_Falling then returns at once (Health, chat and death
                 // reach the Player's Session, which this Player has none of; none of them is physics)
-                typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("Invincible").SetValue(player, true);
+                Need(typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("Invincible"), "Invincible").SetValue(player, true);
                 serverPlayer = true;
             }
             player.LastContact = true;
             return player;
+        }
+
+        /// <summary>A member the full build's Player needs (MakePlayer and the two below), or a MissingMemberException naming it.</summary>
+        static T Need<T>(T member, string name) where T : MemberInfo
+        {
+            if (member == null)
+                throw new MissingMemberException("this ACE build's Player has no parameterless constructor, and making one without a database needs the member " + name + ", which the build lacks");
+            return member;
         }
 
         static readonly BindingFlags AnyInstance = BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic;
@@ -499,9 +507,9 @@ namespace Acconform.Oracle
                 if (name.Name == "ACE.Database") databaseManager = Assembly.Load(name).GetType("ACE.Database.DatabaseManager");
             if (databaseManager == null)
                 throw new InvalidOperationException("the ACE build's Player has no parameterless constructor and no ACE.Database.DatabaseManager was found");
-            var world = databaseManager.GetProperty("World", BindingFlags.Public | BindingFlags.Static).GetValue(null);
-            var names = (System.Collections.IDictionary)world.GetType().GetField("weenieClassNameToClassIdCache", AnyInstance).GetValue(world);
-            var weenies = (System.Collections.IDictionary)world.GetType().GetField("weenieCache", AnyInstance).GetValue(world);
+            var world = Need(databaseManager.GetProperty("World", BindingFlags.Public | BindingFlags.Static), "World").GetValue(null);
+            var names = (System.Collections.IDictionary)Need(world.GetType().GetField("weenieClassNameToClassIdCache", AnyInstance), "weenieClassNameToClassIdCache").GetValue(world);
+            var weenies = (System.Collections.IDictionary)Need(world.GetType().GetField("weenieCache", AnyInstance), "weenieCache").GetValue(world);
             foreach (var portal in new[] { "portalmarketplace", "portalpkarenanew1", "portalpkarenanew2", "portalpkarenanew3",
                                            "portalpkarenanew4", "portalpkarenanew5", "portalpklarenanew1", "portalpklarenanew2",
                                            "portalpklarenanew3", "portalpklarenanew4", "portalpklarenanew5" })
@@ -510,15 +518,15 @@ namespace Acconform.Oracle
 
             var portalDat = DatManager.PortalDat;
             var fields = BindingFlags.NonPublic | BindingFlags.Instance;
-            var attributes = typeof(PortalDatDatabase).GetField("<SecondaryAttributeTable>k__BackingField", fields);
+            var attributes = Need(typeof(PortalDatDatabase).GetField("<SecondaryAttributeTable>k__BackingField", fields), "<SecondaryAttributeTable>k__BackingField");
             if (attributes.GetValue(portalDat) == null) attributes.SetValue(portalDat, Activator.CreateInstance(attributes.FieldType));
-            var spells = typeof(PortalDatDatabase).GetField("<SpellTable>k__BackingField", fields);
+            var spells = Need(typeof(PortalDatDatabase).GetField("<SpellTable>k__BackingField", fields), "<SpellTable>k__BackingField");
             if (spells.GetValue(portalDat) == null) spells.SetValue(portalDat, Activator.CreateInstance(spells.FieldType));
-            var skills = typeof(PortalDatDatabase).GetField("<SkillTable>k__BackingField", fields);
+            var skills = Need(typeof(PortalDatDatabase).GetField("<SkillTable>k__BackingField", fields), "<SkillTable>k__BackingField");
             if (skills.GetValue(portalDat) == null)
             {
                 var table = Activator.CreateInstance(skills.FieldType);
-                var hash = skills.FieldType.GetField("SkillBaseHash");
+                var hash = Need(skills.FieldType.GetField("SkillBaseHash"), "SkillBaseHash");
                 var skillBase = hash.FieldType.GetGenericArguments()[1];
                 ConstructorInfo baseCtor = null;
                 foreach (var c in skillBase.GetConstructors()) if (c.GetParameters().Length == 1) baseCtor = c;
@@ -543,8 +551,8 @@ namespace Acconform.Oracle
         {
             if (!serverPlayer) return;
             var wo = typeof(ACE.Server.WorldObjects.WorldObject);
-            wo.GetProperty("PhysicsObj", AnyInstance).GetSetMethod(true).Invoke(player, new object[] { obj });
-            var location = wo.GetProperty("Location", AnyInstance);
+            Need(wo.GetProperty("PhysicsObj", AnyInstance), "PhysicsObj").GetSetMethod(true).Invoke(player, new object[] { obj });
+            var location = Need(wo.GetProperty("Location", AnyInstance), "Location");
             var locationCtor = location.PropertyType.GetConstructor(new[] { typeof(uint), typeof(Vector3), typeof(Quaternion) });
             location.SetValue(player, locationCtor.Invoke(new object[] { begin.ObjCellID, begin.Frame.Origin, begin.Frame.Orientation }));
         }
