@@ -441,17 +441,120 @@ namespace Acconform.Oracle
         }
 
         /// <summary>The mover's Player. ACE's server makes it from the character's Biota; a build whose Player has no
-        /// constructor without arguments gets an uninitialized one with the field initializer the physics reads
-        /// (LastContact = true).</summary>
-        static ACE.Server.WorldObjects.Player MakePlayer()
+        /// constructor without arguments (ACE's own, built by ACE.Server.csproj) gets one without a character's database
+        /// record: an uninitialized Player on which Creature's constructor runs with a fresh Biota (the mover's id,
+        /// WeenieType Creature, weenie 1, no properties), as ACE's Player(Biota, ...) runs it before its own body (which
+        /// reads the authentication database), then Player's field initializer the physics reads (LastContact = true).
+        /// A build with neither constructor gets the uninitialized Player with LastContact alone.</summary>
+        static ACE.Server.WorldObjects.Player MakePlayer(uint moverId)
         {
             var t = typeof(ACE.Server.WorldObjects.Player);
-            var ctor = t.GetConstructor(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic, null, Type.EmptyTypes, null);
+            var ctor = t.GetConstructor(AnyInstance, null, Type.EmptyTypes, null);
+            serverPlayer = false;
             if (ctor != null)
                 return (ACE.Server.WorldObjects.Player)ctor.Invoke(null);
             var player = (ACE.Server.WorldObjects.Player)FormatterServices.GetUninitializedObject(t);
+            ConstructorInfo creatureCtor = null;
+            foreach (var c in typeof(ACE.Server.WorldObjects.Creature).GetConstructors(AnyInstance))
+                if (c.GetParameters().Length == 1 && c.GetParameters()[0].ParameterType.Name == "Biota") creatureCtor = c;
+            if (creatureCtor != null)
+            {
+                PrepareServerPlayer();
+                var biotaType = creatureCtor.GetParameters()[0].ParameterType;
+                var biota = Activator.CreateInstance(biotaType);
+                Need(biotaType.GetProperty("Id"), "Id").SetValue(biota, moverId);
+                var weenieType = Need(biotaType.GetProperty("WeenieType"), "WeenieType");
+                weenieType.SetValue(biota, Enum.Parse(weenieType.PropertyType, "Creature"));
+                Need(biotaType.GetProperty("WeenieClassId"), "WeenieClassId").SetValue(biota, 1u);
+                var ints = Need(biotaType.GetProperty("PropertiesInt"), "PropertiesInt");
+                ints.SetValue(biota, Activator.CreateInstance(typeof(Dictionary<,>).MakeGenericType(ints.PropertyType.GetGenericArguments())));
+                creatureCtor.Invoke(player, new[] { biota });
+                // immortal, as a sentinel's @neversaydie makes a server's Player: an environment collision fast enough to
+                // hurt runs HandleFallingDamage, whose TakeDamage_Falling then returns at once (Health, chat and death
+                // reach the Player's Session, which this Player has none of; none of them is physics)
+                Need(typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("Invincible"), "Invincible").SetValue(player, true);
+                serverPlayer = true;
+            }
             player.LastContact = true;
             return player;
+        }
+
+        /// <summary>A member the full build's Player needs (MakePlayer and the two below), or a MissingMemberException naming it.</summary>
+        static T Need<T>(T member, string name) where T : MemberInfo
+        {
+            if (member == null)
+                throw new MissingMemberException("this ACE build's Player has no parameterless constructor, and making one without a database needs the member " + name + ", which the build lacks");
+            return member;
+        }
+
+        static readonly BindingFlags AnyInstance = BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic;
+        static bool serverPlayer;  // the mover's Player was made by Creature's constructor (MakePlayer)
+        static bool serverPlayerPrepared;
+
+        /// <summary>What Creature's constructor and Player's static constructor read from a server's databases, given
+        /// once. The world database: Player's static fields (Player_Location.cs) take the destinations of the portal
+        /// weenies named below from DatabaseManager.World.GetCachedWeenie, with fixed Positions when it finds none; its
+        /// private caches get "no such weenie" for each (name to class id 0xFFFFFFFF, that id to null), so no database is
+        /// asked. The portal DAT: the vitals' formulas (SecondaryAttributeTable, read by CreatureVital), the skills'
+        /// formulas for Jump and Run (SkillTable, read by GetCreatureSkill when the physics asks InqJumpVelocity and
+        /// InqRunRate; the retail DAT's) and an empty SpellTable (read by the enchantment code), each on the facade's
+        /// PortalDatDatabase, which has no DAT file to read them from.</summary>
+        static void PrepareServerPlayer()
+        {
+            if (serverPlayerPrepared) return;
+            Type databaseManager = null;
+            foreach (var name in typeof(ACE.Server.WorldObjects.Player).Assembly.GetReferencedAssemblies())
+                if (name.Name == "ACE.Database") databaseManager = Assembly.Load(name).GetType("ACE.Database.DatabaseManager");
+            if (databaseManager == null)
+                throw new InvalidOperationException("the ACE build's Player has no parameterless constructor and no ACE.Database.DatabaseManager was found");
+            var world = Need(databaseManager.GetProperty("World", BindingFlags.Public | BindingFlags.Static), "World").GetValue(null);
+            var names = (System.Collections.IDictionary)Need(world.GetType().GetField("weenieClassNameToClassIdCache", AnyInstance), "weenieClassNameToClassIdCache").GetValue(world);
+            var weenies = (System.Collections.IDictionary)Need(world.GetType().GetField("weenieCache", AnyInstance), "weenieCache").GetValue(world);
+            foreach (var portal in new[] { "portalmarketplace", "portalpkarenanew1", "portalpkarenanew2", "portalpkarenanew3",
+                                           "portalpkarenanew4", "portalpkarenanew5", "portalpklarenanew1", "portalpklarenanew2",
+                                           "portalpklarenanew3", "portalpklarenanew4", "portalpklarenanew5" })
+                names[portal] = 0xFFFFFFFFu;
+            weenies[0xFFFFFFFFu] = null;
+
+            var portalDat = DatManager.PortalDat;
+            var fields = BindingFlags.NonPublic | BindingFlags.Instance;
+            var attributes = Need(typeof(PortalDatDatabase).GetField("<SecondaryAttributeTable>k__BackingField", fields), "<SecondaryAttributeTable>k__BackingField");
+            if (attributes.GetValue(portalDat) == null) attributes.SetValue(portalDat, Activator.CreateInstance(attributes.FieldType));
+            var spells = Need(typeof(PortalDatDatabase).GetField("<SpellTable>k__BackingField", fields), "<SpellTable>k__BackingField");
+            if (spells.GetValue(portalDat) == null) spells.SetValue(portalDat, Activator.CreateInstance(spells.FieldType));
+            var skills = Need(typeof(PortalDatDatabase).GetField("<SkillTable>k__BackingField", fields), "<SkillTable>k__BackingField");
+            if (skills.GetValue(portalDat) == null)
+            {
+                var table = Activator.CreateInstance(skills.FieldType);
+                var hash = Need(skills.FieldType.GetField("SkillBaseHash"), "SkillBaseHash");
+                var skillBase = hash.FieldType.GetGenericArguments()[1];
+                ConstructorInfo baseCtor = null;
+                foreach (var c in skillBase.GetConstructors()) if (c.GetParameters().Length == 1) baseCtor = c;
+                var formula = baseCtor.GetParameters()[0].ParameterType;
+                ConstructorInfo formulaCtor = null;
+                foreach (var c in formula.GetConstructors()) if (c.GetParameters().Length == 3) formulaCtor = c;
+                var attr = formulaCtor.GetParameters()[0].ParameterType;
+                var byId = (System.Collections.IDictionary)hash.GetValue(table);
+                // (attribute 1, attribute 2, divisor): Jump (Strength + Coordination) / 2, Run Quickness / 1
+                byId[(uint)Skill.Jump] = baseCtor.Invoke(new[] { formulaCtor.Invoke(new[] { Enum.Parse(attr, "Strength"), Enum.Parse(attr, "Coordination"), (object)2u }) });
+                byId[(uint)Skill.Run] = baseCtor.Invoke(new[] { formulaCtor.Invoke(new[] { Enum.Parse(attr, "Quickness"), Enum.Parse(attr, "Undef"), (object)1u }) });
+                skills.SetValue(portalDat, table);
+            }
+            serverPlayerPrepared = true;
+        }
+
+        /// <summary>On a Player made by MakePlayer's Creature constructor, what a server's WorldObject has when its
+        /// PhysicsObj enters the world: its PhysicsObj (WorldObject.InitPhysicsObj sets it; Player.HandleFallingDamage
+        /// reads its Velocity) and its Location (what AddPhysicsObj's caller gives it: the begin position; enter_world's
+        /// enter_cell_server copies the physics position into it, WorldObject.SyncLocation).</summary>
+        static void SetServerPlayerPhysics(ACE.Server.WorldObjects.Player player, PhysicsObj obj, ACE.Server.Physics.Common.Position begin)
+        {
+            if (!serverPlayer) return;
+            var wo = typeof(ACE.Server.WorldObjects.WorldObject);
+            Need(wo.GetProperty("PhysicsObj", AnyInstance), "PhysicsObj").GetSetMethod(true).Invoke(player, new object[] { obj });
+            var location = Need(wo.GetProperty("Location", AnyInstance), "Location");
+            var locationCtor = location.PropertyType.GetConstructor(new[] { typeof(uint), typeof(Vector3), typeof(Quaternion) });
+            location.SetValue(player, locationCtor.Invoke(new object[] { begin.ObjCellID, begin.Frame.Origin, begin.Frame.Orientation }));
         }
 
         /// <summary>byte 0, then the TickState fields (acconform.outcome.TickState, in order).</summary>
@@ -1014,8 +1117,9 @@ namespace Acconform.Oracle
             var obj = new PhysicsObj();
             obj.makeAnimObject(did, true);
             obj.set_object_guid(new ObjectGuid(moverId));
-            moverPlayer = MakePlayer();  // held as a server's landblock holds its objects: WeenieObject keeps a WeakReference
+            moverPlayer = MakePlayer(moverId);  // held as a server's landblock holds its objects: WeenieObject keeps a WeakReference
             obj.set_weenie_obj(new WeenieObject(moverPlayer));
+            SetServerPlayerPhysics(moverPlayer, obj, begin);
             obj.SetMotionTableID(0);
             obj.SetScaleStatic(scale);
             obj.State = state;

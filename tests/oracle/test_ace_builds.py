@@ -2,7 +2,8 @@
 as a user runs `acconform check`, so one test process can try builds on both runtimes.
 
 - `ACE_FULL_ASSEMBLY`: ACE 7b47913 built by ACE's own `ACE.Server.csproj` (docs/oracle.md, "ACE's
-  own ACE.Server.csproj"): it says it is 7b47913 and a campaign has no difference.
+  own ACE.Server.csproj"): it says it is 7b47913, a campaign has no difference, and its real Player
+  (made without a character's database record) takes a fall fast enough to hurt as the port does.
 - `ACE_2019_ASSEMBLY`: a mono build of ACE of 2019 (docs/oracle.md, "ACE of 2019"): it loads, says
   it is another ACE, skips the tick scenes its wall-time clock cannot run, and says beside any
   difference that it may be ACE's own change.
@@ -45,6 +46,39 @@ def test_ace_built_by_its_own_csproj_says_it_is_7b47913_and_agrees_with_the_port
     assert "7b47913-compatible: yes" in p.stderr and ".NET build (CoreCLR)" in p.stderr
     assert s["oracle"] == "live" and s["cases"]["compared"] == 60 and s["differences"]["total"] == 0, p.stdout
     assert s["ace_note"] is None
+
+
+# A tick scene whose mover (ReportCollisions) falls onto flat terrain at about 30 m/s: its environment collision
+# runs the real Player's HandleFallingDamage with a fall fast enough to hurt (Player_Move.cs: below about -15.75 m/s).
+HURTING_FALL = """
+import json, sys
+from acconform.case import load_document
+from acconform.compare import compare
+from acconform.impl import make_backend
+from acconform.oracle.live import LiveOracle
+from acconform.runner import guarded
+doc = json.load(open(sys.argv[1]))
+doc["mover"]["state"] = ["Gravity", "EdgeSlide", "ReportCollisions"]
+doc["ticks"]["steps"][0]["velocity"] = [0.0, 0.0, -30.0]
+json.dump(doc, open("fall.json", "w"))
+scene = load_document("fall.json")
+ace = LiveOracle(say=None).run(scene)
+port = guarded(make_backend(None), scene)
+print(json.dumps({"errors": [t.error for t in ace.ticks], "first_vz": float(ace.ticks[0].velocity[2]),
+                  "landed": any(t.transient_state & 1 for t in ace.ticks), "differences": len(compare(port, ace))}))
+"""
+
+
+def test_a_fall_fast_enough_to_hurt_the_player_on_ace_built_by_its_own_csproj_agrees_with_the_port(tmp_path):
+    env = dict(os.environ, ACE_ASSEMBLY=_build("ACE_FULL_ASSEMBLY"))
+    env.pop("ACE_RUNTIME", None)
+    example = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "tick_fall.json")
+    p = subprocess.run([sys.executable, "-c", HURTING_FALL, os.path.abspath(example)], env=env, capture_output=True,
+                       text=True, timeout=600, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr[-2000:]
+    r = json.loads(p.stdout.splitlines()[-1])
+    assert r["errors"] == [None] * len(r["errors"]) and r["differences"] == 0
+    assert r["first_vz"] < -15.76 and r["landed"]  # it lands, faster than a fall Player.HandleFallingDamage spares
 
 
 def test_ace_of_2019_loads_as_another_ace_and_skips_the_tick_scenes_it_cannot_run(tmp_path):
