@@ -641,11 +641,13 @@ class Placement:
     get_cell: bool = False
     via: str = "set_position"
 
-    def to_json(self):
-        d = {"flags": flag_names(SetPositionFlags, self.flags), "get_cell": self.get_cell}
+    def to_json(self, explicit_via: bool = False):
+        """`via` is written for enter_world, and for set_position only when `explicit_via` (a document whose
+        readers default to enter_world: the protocol's dat); scene/3-5 placements have none."""
         if self.via == "enter_world":
-            d = {"via": "enter_world", "get_cell": self.get_cell}
-        return d
+            return {"via": "enter_world", "get_cell": self.get_cell}
+        d = {"flags": flag_names(SetPositionFlags, self.flags), "get_cell": self.get_cell}
+        return {"via": "set_position", **d} if explicit_via else d
 
     @staticmethod
     def from_json(r: Reader, vias: bool = True) -> "Placement":
@@ -801,9 +803,10 @@ DEFAULT_MOVER_STATE = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
 DEFAULT_MOVER_TRANSIENT = int(TransientState.Contact | TransientState.OnWalkable)
 
 
-def mover_start_json(m, d: dict) -> dict:
+def mover_start_json(m, d: dict, explicit_via: bool = False) -> dict:
     """A mover's state and path after what its Setup holds, written into `d`: the scene's mover and the
-    `dat` feature's (protocol.dat_json, whose Setup record carries the spheres and step heights)."""
+    `dat` feature's (protocol.dat_json, whose Setup record carries the spheres and step heights, and whose
+    placement always says its `via`)."""
     d.update({"state": flag_names(PhysicsState, m.state), "transient_state": flag_names(TransientState, m.transient_state),
               "velocity": write_vec(m.velocity), "begin": m.begin.to_json()})
     if m.end is not None:
@@ -813,7 +816,7 @@ def mover_start_json(m, d: dict) -> dict:
     if m.sliding_normal is not None:
         d["sliding_normal"] = write_vec(m.sliding_normal)
     if m.placement is not None:
-        d["placement"] = m.placement.to_json()
+        d["placement"] = m.placement.to_json(explicit_via)
     return d
 
 
