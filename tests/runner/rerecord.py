@@ -5,7 +5,8 @@ and their records' order (so both runtimes' corpora, the same scenes, stay paire
 
 With --enter-world, a placement through SetPosition whose scene key (oracle.recorded.scene_key, of the scene as it
 was) starts with 0-7 becomes a placement through enter_world (flags dropped; get_cell kept), as the strategies now
-draw one placement in two. Prints per shard and in all: records, scenes converted, answers changed (by kind), and
+draw one placement in two; a scene that became the same scene as an earlier record's is dropped (a corpus holds
+each scene once). Prints per shard and in all: records, scenes converted, answers changed (by kind), and
 for the changed answers each verdict move ("NullReferenceException -> ArgumentOutOfRangeException", "none ->
 none", ...), the verdict being an outcome's error or its last tick's."""
 
@@ -46,6 +47,7 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     oracle = LiveOracle()
     total = collections.Counter()
+    seen = set()
     for shard in sorted(args.corpus.glob("*.jsonl.gz")):
         kind = shard.name.split("-")[0]
         records = [Record.from_json(json.loads(line)) for line in gzip.open(shard, "rt")]
@@ -55,6 +57,11 @@ def main(argv=None) -> int:
             batch = [converted(r.scene, args.enter_world) for r in records[k:k + 256]]
             answers = oracle.run_many([scene for scene, _ in batch])
             for r, (scene, was_converted), (outcome, _us) in zip(records[k:k + 256], batch, answers):
+                key = scene_key(scene)
+                if key in seen:
+                    c["dropped: the same scene as an earlier record"] += 1
+                    continue
+                seen.add(key)
                 new.append(Record(scene, outcome, oracle.versions))
                 c["converted"] += was_converted
                 if dumps_compact(r.outcome.to_json()) != dumps_compact(outcome.to_json()):
