@@ -5,10 +5,13 @@
 reference, and names the first divergence (acconform.trace.first_divergence): tick, step, record,
 routine (ACE's method and the retail name), field, both values and the ulps between them.
 
-The reference is the port's trace, and only where the port's outcome is ACE's for this scene
-(`ace`: the recorded or live answer): for any such scene the port's trace is the trace of a run
-that ends as ACE's does. Where the port itself differs from ACE there is no reference trace (ACE's
-own steps would be needed), and the explanation says so instead of naming a divergence.
+With ACE configured, the reference is ACE's own trace at the port's grain, from the instrumented
+ACE (oracle/instrumented.py; `traced_ace`), compared from the run's start on the records that carry
+state (trace.against_ace): the port's own differences from ACE are explained this way too.
+Without ACE, the reference is the port's trace, and only where the port's outcome is ACE's for this
+scene (`ace`: the recorded answer): for any such scene the port's trace is the trace of a run that
+ends as ACE's does. Where the port itself differs from ACE there is then no reference trace, and the
+explanation says so instead of naming a divergence.
 """
 
 from __future__ import annotations
@@ -51,14 +54,18 @@ def _implementation_name(backend) -> str:
 
 
 def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "exact",
-            runtime: str = "coreclr", live=None) -> Explanation:
+            runtime: str = "coreclr", live=None, traced_ace=None) -> Explanation:
     """Trace `scene` on `backend` and on the port, and name where they first part (module docstring).
-    Where the port itself differs from ACE and `live` (a LiveOracle) is given, the reference is ACE's
-    own stepped trace (LiveOracle.stepped_trace), compared at its grain: each step."""
+    With `traced_ace` (oracle.instrumented.TracedAce: ACE configured), the reference is ACE's own trace at
+    the port's grain (`_against_ace`). Else, where the port itself differs from ACE and `live` (a
+    LiveOracle) is given, the reference is ACE's own stepped trace (LiveOracle.stepped_trace), compared
+    at its grain: each step."""
     from .port.run import traced_run
     from .port.tracing import record_kinds
 
     name = _implementation_name(backend)
+    if traced_ace is not None:
+        return _against_ace(scene, ace, ace_source, backend, mode, runtime, traced_ace)
     ours_outcome, ours = traced_run(scene, mode, runtime)
     if getattr(backend, "command", None) is None:  # the built-in port itself: its outcome is ACE's or not
         differs = bool(compare(ours_outcome, ace, mode))
@@ -89,6 +96,58 @@ def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "e
     return Explanation(name, reference, differs, d, note, ours, theirs, theirs_outcome, known)
 
 
+def _against_ace(scene, ace: Outcome, ace_source: str, backend, mode: str, runtime: str, traced_ace) -> Explanation:
+    """The implementation's trace (the port's, for the built-in port) against ACE's own, from the
+    instrumented ACE (oracle/instrumented.py), compared from the run's start on the records that carry
+    state (trace.against_ace). The traced ACE run is checked to end in ACE's own outcome first."""
+    from .port.run import traced_run
+    from .trace import against_ace
+
+    name = _implementation_name(backend)
+    ace_outcome, ace_records = traced_ace.trace(scene)
+    ace_differs = compare(ace_outcome, ace, "exact")
+    if ace_differs:
+        return Explanation(name, "none: the instrumented ACE's run does not end in ACE's answer", True, None,
+                           f"the traced ACE run differs from {ace_source} ({ace_differs[0]})", ace_records, (), None)
+    if getattr(backend, "command", None) is None:
+        theirs_outcome, theirs = traced_run(scene, mode, runtime)
+    else:
+        theirs_outcome, theirs, _anchors = backend.run_traced(scene)
+    differs = bool(compare(theirs_outcome, ace, mode))
+    reference = (f"ACE's own trace (the instrumented ACE, checked: its run ends in {ace_source}), compared from the "
+                 "run's start on the records that carry state")
+    if theirs is None:
+        why = ("the implementation does not trace (its handshake lists no `trace` feature)"
+               if not getattr(backend, "traces", False) else f"the implementation gave no trace ({theirs_outcome.error})")
+        return Explanation(name, reference, differs, None, why, ace_records, (), theirs_outcome, None, "ACE")
+    d = against_ace(ace_records, theirs, traced_ace.kinds, scene.ticks is not None, traced_ace.overloaded)
+    known = None
+    if d is not None:
+        from .divergences import known_for
+
+        known = known_for(d)
+        # positions in the whole traces, for the records shown before it
+        d = _positioned(d, ace_records, theirs)
+    note = "" if d is not None else "the traces agree at the grain both write"
+    return Explanation(name, reference, differs, d, note, ace_records, theirs, theirs_outcome, known, "ACE")
+
+
+def _positioned(d: Divergence, a_records, b_records) -> Divergence:
+    """`d` with a_position and b_position the records' indices in the whole traces (against_ace compares
+    filtered ones)."""
+    from dataclasses import replace
+
+    def at(records, r, fallback):
+        if r is None:
+            return len(records)
+        for i, x in enumerate(records):
+            if x is r:
+                return i
+        return fallback
+
+    return replace(d, a_position=at(a_records, d.a, d.a_position), b_position=at(b_records, d.b, d.b_position))
+
+
 def _against_ace_steps(scene, live, name, ours, ours_outcome) -> Explanation:
     from .oracle.live import SteppedTraceRefused
 
@@ -110,11 +169,12 @@ def _against_ace_steps(scene, live, name, ours, ours_outcome) -> Explanation:
 
 
 def explain_case(case, backend, mode: str, runtime: str, ace: Outcome | None = None,
-                 source: str = "the case's recorded answer", live=None) -> Explanation:
+                 source: str = "the case's recorded answer", live=None, traced_ace=None) -> Explanation:
     """The one way a case's first divergence is found: check's triage, `explain`, `repro` and `report`
     all call this, so they name the same divergence for the same case. `ace`: ACE's answer (live
-    ACE's, where configured), else the one recorded in the case."""
-    return explain(case.scene, case.oracle if ace is None else ace, source, backend, mode, runtime, live)
+    ACE's, where configured), else the one recorded in the case. `traced_ace`: the instrumented ACE
+    (ACE configured), whose own trace is then the reference."""
+    return explain(case.scene, case.oracle if ace is None else ace, source, backend, mode, runtime, live, traced_ace)
 
 
 def group_name(e: Explanation) -> str | None:
@@ -123,15 +183,17 @@ def group_name(e: Explanation) -> str | None:
     return f"first divergence: {e.divergence.key()}" if e.divergence is not None else None
 
 
-def triage(found, backend, mode: str, runtime: str, say=None) -> None:
+def triage(found, backend, mode: str, runtime: str, say=None, traced_ace=None) -> None:
     """Give each difference found its group: its first divergence (routine and field) where the
-    implementation traces, else the fields it differs in (the built-in port: no reference trace)."""
-    if getattr(backend, "command", None) is None or not getattr(backend, "traces", False):
+    implementation traces, else the fields it differs in (the built-in port: no reference trace unless
+    `traced_ace`, the instrumented ACE, gives ACE's own)."""
+    port = getattr(backend, "command", None) is None
+    if (port and traced_ace is None) or (not port and not getattr(backend, "traces", False)):
         return
     for n, f in enumerate(found, 1):
         if say is not None:
             say(f"tracing difference {n} of {len(found)} for its first divergence")
-        e = explain_case(f.case, backend, mode, runtime)
+        e = explain_case(f.case, backend, mode, runtime, traced_ace=traced_ace)
         if e.divergence is not None:
             f.group = group_name(e)
             f.known = e.known.name if e.known is not None else ""

@@ -85,7 +85,11 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "indoor.statics": (lambda s: any(o.position.cell & 0xFFFF >= 0x100 for o in s.objects),
                        "static objects inside EnvCells (DAT stabs, placed when ACE loads the cell)"),
     "mover.placement": (lambda s: s.mover.placement is not None,
-                        "the mover placed by ACE's PhysicsObj.SetPosition before the transition (scene/3, outcome/3)"),
+                        "the mover placed by ACE before the transition or the ticks: PhysicsObj.SetPosition with the "
+                        "placement's flags (scene/3, outcome/3)"),
+    "mover.enter_world": (lambda s: s.mover.placement is not None and s.mover.placement.via == "enter_world",
+                          "the placement through PhysicsObj.enter_world, as a server's WorldObject enters its landblock "
+                          "(WorldObject.AddPhysicsObj; scene/6: placement.via); needs mover.placement too"),
     "ticks": (lambda s: s.ticks is not None,
               "a tick scene: ACE's per-tick update (update_object or the RequestPos path) moves the mover once per "
               "step, answered with one TickState per step (scene/4, outcome/4)"),
@@ -118,7 +122,8 @@ def _record_json(rec: DatRecord) -> dict:
 def dat_json(world: DatWorld) -> dict:
     """A request's ``"dat"``: the scene's world (dat.dat_world) as JSON (docs/protocol.md, "DAT records")."""
     m = world.mover
-    mover = mover_start_json(m, {"id": write_id(m.id), "did": write_id(m.did), "scale": write_f32(m.scale)})
+    mover = mover_start_json(m, {"id": write_id(m.id), "did": write_id(m.did), "scale": write_f32(m.scale)},
+                             explicit_via=True)
     return {"format": DAT_FORMAT,
             "land_height_table": [write_f32(h) for h in world.land_height_table],
             "cell": [_record_json(r) for r in world.cell],

@@ -163,6 +163,7 @@ class Result:
     versions: Versions | None = None  # of the oracle (None: per-process oracle, not asked in this process)
     shrink_runs: int = 0  # scenes run while shrinking (not counted in cases)
     unreadable: list[str] = field(default_factory=list)  # replayed items that did not load, each naming where
+    ace_note: str | None = None  # the live oracle's ACE is not the one the port follows (oracle/identity.py)
 
     @property
     def ok(self) -> bool:
@@ -191,6 +192,16 @@ def guarded(backend: Backend, scene: Scene) -> Outcome:
         return backend(scene)
     except Exception as e:  # noqa: BLE001 - a crash on one side is a difference, not a runner crash
         return Outcome(error=f"{type(e).__name__}: {e}")
+
+
+def ace_note_of(oracle: Backend) -> str | None:
+    """The oracle's note when its ACE is not the one the port follows (a live oracle's; None otherwise)."""
+    owner = getattr(oracle, "__self__", oracle)
+    try:
+        note = getattr(owner, "ace_note", None)
+    except Exception:  # noqa: BLE001 - a per-process oracle that cannot load has said why already
+        return None
+    return note if isinstance(note, str) else None
 
 
 def versions_of(port: Backend, oracle: Backend) -> Versions:
@@ -532,7 +543,7 @@ def _generative(port: Backend, oracle: Backend, r: Result, *, kinds, n: int, see
     known: set[tuple[str, ...]] = set()
     if hasattr(port, "trace_boundaries"):  # the built-in port: aim the search at exact boundaries
         port.trace_boundaries = True
-    unsupported = getattr(port, "unsupported", None)
+    unsupported = either_unsupported(getattr(port, "unsupported", None), oracle_filter(oracle))
     # a process (acconform.protocol.Implementation) is sent the next scene before the current one runs;
     # the built-in port climbs on each scene's trace, so it draws after each case
     ahead_of = getattr(port, "prefetch", None) if not hasattr(port, "trace_boundaries") else None
@@ -677,8 +688,9 @@ def _shrink_hit(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mod
         found(scene0, case0, impl0, Shrink("none", "written as drawn, not shrunk: the shrink budget is 0", size0, size0))
         return
     last: list = []
+    failing: dict[str, list] = {}  # scene_hash -> [scene, case, impl] of every failing scene run while shrinking
     runs = [0]
-    unsupported = getattr(port, "unsupported", None)
+    unsupported = either_unsupported(getattr(port, "unsupported", None), oracle_filter(oracle))
 
     def differential(scene):
         if should_stop():
@@ -686,8 +698,12 @@ def _shrink_hit(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mod
         if unsupported is not None and unsupported(scene):
             return
         if shrink_budget is not None and runs[0] >= shrink_budget:
-            if last and scene == last[0]:  # Hypothesis runs its smallest failing scene once more, to report it
-                raise _Mismatch(signature(last[1][2]))
+            # Hypothesis runs its smallest failing scene once more, to report it: that is not always the
+            # last one that failed (passing it then made Hypothesis raise FlakyFailure out of the campaign)
+            seen = failing.get(scene_hash(scene))
+            if seen is not None:
+                last[:] = seen
+                mismatch(seen[1][2])
             return
         ran_case = run_case(port, oracle, scene, mode, r.timings)
         r.shrink_runs += 1
@@ -696,7 +712,13 @@ def _shrink_hit(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mod
         diffs = ran_case[2]
         if diffs and signature(diffs) not in known:
             last[:] = [scene, ran_case, implementation_run(port)]
-            raise _Mismatch(signature(diffs))
+            failing[scene_hash(scene)] = list(last)
+            mismatch(diffs)
+
+    def mismatch(diffs):
+        """The one place a failing scene is reported to Hypothesis: it tells failures apart by where
+        they were raised, and a replay raising from another line is "inconsistent" (FlakyFailure)."""
+        raise _Mismatch(signature(diffs))
 
     db = InMemoryExampleDatabase()
     db.save(HANDOFF_KEY + b".secondary", choices_to_bytes(choices))
@@ -752,11 +774,27 @@ def _shrink_hit(port: Backend, oracle: Backend, r: Result, hit, *, strategy, mod
 REPLAYED = Shrink("none", "replayed as recorded: not shrunk")
 
 
-def scene_filter(port: Backend):
+def scene_filter(port: Backend, oracle: Backend | None = None):
     """The port's `unsupported(scene)`, or None for a port that `runs_every_scene` (the built-in port
     in exact mode, an implementation whose handshake lists every kind and feature): it passes no
-    scene over, so no scene need be read to be weighed."""
-    return None if getattr(port, "runs_every_scene", False) else getattr(port, "unsupported", None)
+    scene over, so no scene need be read to be weighed. With `oracle`, the oracle's too (a live ACE
+    that cannot run some scenes: LiveOracle.unsupported)."""
+    mine = None if getattr(port, "runs_every_scene", False) else getattr(port, "unsupported", None)
+    return either_unsupported(mine, oracle_filter(oracle))
+
+
+def oracle_filter(oracle: Backend | None):
+    """The oracle's `unsupported(scene)` (a bound `oracle.run` carries its oracle), or None."""
+    owner = getattr(oracle, "__self__", oracle)
+    f = getattr(owner, "unsupported", None) if owner is not None else None
+    return f if callable(f) else None
+
+
+def either_unsupported(a, b):
+    """One `unsupported(scene)` from two (either may be None): the first reason given."""
+    if a is None or b is None:
+        return a or b
+    return lambda scene: a(scene) or b(scene)
 
 
 def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices: Iterable[int], *, mode: str,
@@ -811,7 +849,7 @@ def _replay(port: Backend, oracle: Backend, r: Result, items: Sequence, indices:
         return None
 
     prefetch = getattr(port, "prefetch", None)
-    unsupported = scene_filter(port)
+    unsupported = scene_filter(port, oracle)
     cur = take()
     if prefetch is not None and cur is not None:
         prefetch(cur[1])
@@ -983,7 +1021,8 @@ def _worker(w: int) -> dict:
     if close is not None:
         close()  # this worker's implementation process
     return {"cases": r.cases, "found": [f.case.to_json() for f in r.found], "timings": dict(r.timings),
-            "skipped": dict(r.skipped), "shrink_runs": r.shrink_runs, "unreadable": r.unreadable}
+            "skipped": dict(r.skipped), "shrink_runs": r.shrink_runs, "unreadable": r.unreadable,
+            "ace_note": ace_note_of(s["oracle"])}
 
 
 def _worker_campaign(w: int, s: dict, r: Result, tick, shrinking) -> None:
@@ -1031,6 +1070,7 @@ def _merge(result: Result, outs: list[dict], mode: str, generative: bool) -> Non
         result.skipped.update(out["skipped"])
         result.shrink_runs += out["shrink_runs"]
         result.unreadable.extend(out["unreadable"])
+        result.ace_note = result.ace_note or out.get("ace_note")
         for doc in out["found"]:
             case = Case.from_json(doc)
             sig = signature(compare(case.port, case.oracle, mode))
@@ -1086,6 +1126,8 @@ def run_campaign(port: Backend, oracle: Backend, *, kinds=None, n: int = 1000, s
     streams, first_stream = workers * parts, (part - 1) * workers  # a sharded live campaign's streams
     workers = max(1, min(workers, total or 1))
     result = Result(source="replay" if items is not None else "generative", versions=versions)
+    if versions is not None:  # this process has its oracle loaded already
+        result.ace_note = ace_note_of(oracle)
     budget = DEFAULT_BUDGET if items is not None and shrink_budget is None else shrink_budget
     against = ("the built-in port standing in for ACE" if items is not None else
                "live ACE" if shrunk_against(oracle) == "ace" else "the built-in port")

@@ -1,8 +1,9 @@
 """The scene: everything one transition needs, as immutable records with a versioned JSON form.
 
-A scene is what both the port and the oracle take. Format ``acconform.scene/5`` (README's
-"Scene format" section documents every field); ``/4``, ``/3``, ``/2`` and ``/1`` files still read
-(a /4 scene is a /5 scene without ``buildings``; a /3 scene is a /4 scene without ``ticks``; a /2 scene is a /3 scene whose mover has no ``placement``; a
+A scene is what both the port and the oracle take. Format ``acconform.scene/6`` (README's
+"Scene format" section documents every field); ``/5``, ``/4``, ``/3``, ``/2`` and ``/1`` files still read
+(a /5 scene is a /6 scene whose placements go through SetPosition: its ``placement`` has no ``via``, and
+means ``"via": "set_position"``; a /4 scene is a /5 scene without ``buildings``; a /3 scene is a /4 scene without ``ticks``; a /2 scene is a /3 scene whose mover has no ``placement``; a
 /1 scene is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with
 terrain). A scene with ``ticks`` is a tick scene: the mover has no ``end``, and ACE's per-tick
 update (`Ticks.driver`) moves it once per step (issue 19). A scene is written in the
@@ -22,7 +23,8 @@ from .codec import (Reader, as_text, dumps, dumps_compact, f32_text, ints_text, 
 from .errors import InvalidScene
 from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
-FORMAT = "acconform.scene/5"
+FORMAT = "acconform.scene/6"
+FORMAT_V5 = "acconform.scene/5"  # what a scene with buildings and no placement through enter_world is written as
 FORMAT_V4 = "acconform.scene/4"  # what a scene with ticks and no buildings is written as
 FORMAT_V3 = "acconform.scene/3"  # what a scene with a placement and no ticks is written as
 FORMAT_V2 = "acconform.scene/2"  # what a scene without a placement is written as (every /2 reader reads it)
@@ -617,33 +619,55 @@ class ContactPlane:
         return ContactPlane(r["cell"].id_(), PlaneRec.from_json(r["plane"]))
 
 
-# SetPositionFlags a scene's placement cannot ask for: ACE scatters only an object with a WorldObject
-# (PhysicsObj.SetPositionInternal(SetPosition, Transition) reads WorldObject.ScatterPos; the Scatter
-# retry sits behind it), and the mover's WeenieObj is WeenieObject.DummyObject, which has none.
+# SetPositionFlags a scene's placement cannot ask for: ACE's scatter (SetScatterPositionInternal, behind
+# the Scatter retry) draws its positions from ThreadSafeRandom, so no two runs of it answer alike.
 UNPLACEABLE_FLAGS = int(SetPositionFlags.Scatter | SetPositionFlags.RandomScatter)
+# how the mover is placed: ACE's PhysicsObj.enter_world (a WorldObject entering its landblock:
+# WorldObject.AddPhysicsObj) or its public PhysicsObj.SetPosition with the scene's flags (a teleport, a restore)
+PLACEMENT_VIAS = ("enter_world", "set_position")
 
 
 @dataclass(frozen=True, slots=True)
 class Placement:
-    """The mover placed by ACE's own placement (PhysicsObj.SetPosition) at ``mover.begin`` before the
-    transition: `flags` are the SetPosition's SetPositionFlags; `get_cell` first replaces the begin
+    """The mover placed by ACE at ``mover.begin`` before the transition or the ticks. `via`
+    "enter_world": the mover enters the world as a server's WorldObject does (WorldObject.AddPhysicsObj:
+    the begin cell's LScape.get_landcell, then PhysicsObj.enter_world, which places with Placement |
+    Slide); `flags` stay 0. `via` "set_position": ACE's PhysicsObj.SetPosition with `flags`, the
+    SetPositionFlags (a teleport's or a restore's placement). `get_cell` first replaces the begin
     position's cell id by ``Position.GetCell(ObjCellID)`` (the server's cell fix-up for a spawn or
     teleport: AdjustCell indoors, the cell under the point outdoors)."""
 
     flags: int = 0
     get_cell: bool = False
+    via: str = "set_position"
 
-    def to_json(self):
-        return {"flags": flag_names(SetPositionFlags, self.flags), "get_cell": self.get_cell}
+    def to_json(self, explicit_via: bool = False):
+        """`via` is written for enter_world, and for set_position only when `explicit_via` (a document whose
+        readers default to enter_world: the protocol's dat); scene/3-5 placements have none."""
+        if self.via == "enter_world":
+            return {"via": "enter_world", "get_cell": self.get_cell}
+        d = {"flags": flag_names(SetPositionFlags, self.flags), "get_cell": self.get_cell}
+        return {"via": "set_position", **d} if explicit_via else d
 
     @staticmethod
-    def from_json(r: Reader) -> "Placement":
-        r.obj({"flags", "get_cell"})
+    def from_json(r: Reader, vias: bool = True) -> "Placement":
+        """`vias`: the format knows `via` (scene/6; older formats place through SetPosition)."""
+        if not vias and isinstance(r.value, dict) and "via" in r.value:
+            r["via"].fail(f"via needs format {FORMAT!r} (older formats place through SetPosition)")
+        r.obj({"flags", "get_cell", *(("via",) if vias else ())})
+        via = "enter_world" if vias else "set_position"
+        if r.given("via"):
+            via = r["via"].str_()
+            if via not in PLACEMENT_VIAS:
+                r["via"].fail(f"unknown placement {via!r} (known: enter_world, set_position)")
+        if via == "enter_world" and r.given("flags"):
+            r["flags"].fail("enter_world places with its own flags (Placement | Slide): omit flags, or use "
+                            "\"via\": \"set_position\"")
         flags = r["flags"].flags(SetPositionFlags) if r.given("flags") else 0
         if flags & UNPLACEABLE_FLAGS:
-            r["flags"].fail("Scatter and RandomScatter cannot be run: ACE scatters only an object with a "
-                            "WorldObject (ScatterPos), and the mover has none (WeenieObject.DummyObject)")
-        return Placement(flags, r["get_cell"].bool_() if r.given("get_cell") else False)
+            r["flags"].fail("Scatter and RandomScatter cannot be run alike twice: ACE's scatter draws its "
+                            "positions from ThreadSafeRandom")
+        return Placement(flags, r["get_cell"].bool_() if r.given("get_cell") else False, via)
 
 
 DRIVERS = ("update_object", "request_pos")  # PhysicsObj.update_object / the legacy player path (RequestPos)
@@ -779,9 +803,10 @@ DEFAULT_MOVER_STATE = int(PhysicsState.EdgeSlide | PhysicsState.Gravity)
 DEFAULT_MOVER_TRANSIENT = int(TransientState.Contact | TransientState.OnWalkable)
 
 
-def mover_start_json(m, d: dict) -> dict:
+def mover_start_json(m, d: dict, explicit_via: bool = False) -> dict:
     """A mover's state and path after what its Setup holds, written into `d`: the scene's mover and the
-    `dat` feature's (protocol.dat_json, whose Setup record carries the spheres and step heights)."""
+    `dat` feature's (protocol.dat_json, whose Setup record carries the spheres and step heights, and whose
+    placement always says its `via`)."""
     d.update({"state": flag_names(PhysicsState, m.state), "transient_state": flag_names(TransientState, m.transient_state),
               "velocity": write_vec(m.velocity), "begin": m.begin.to_json()})
     if m.end is not None:
@@ -791,7 +816,7 @@ def mover_start_json(m, d: dict) -> dict:
     if m.sliding_normal is not None:
         d["sliding_normal"] = write_vec(m.sliding_normal)
     if m.placement is not None:
-        d["placement"] = m.placement.to_json()
+        d["placement"] = m.placement.to_json(explicit_via)
     return d
 
 
@@ -819,9 +844,9 @@ class Mover:
         return mover_start_json(self, d)
 
     @staticmethod
-    def from_json(r: Reader, placement: bool = True, ticks: bool = False) -> "Mover":
+    def from_json(r: Reader, placement: bool = True, ticks: bool = False, vias: bool = True) -> "Mover":
         """`placement`: the format may hold one (scene/3 and later). `ticks`: the scene is a tick
-        scene, whose mover has no end."""
+        scene, whose mover has no end. `vias`: a placement may say `via` (scene/6)."""
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
             r["placement"].fail(f"a placement needs format {FORMAT_V3!r} or later (older formats have no placement)")
         if ticks and isinstance(r.value, dict) and "end" in r.value:
@@ -849,7 +874,7 @@ class Mover:
             velocity=r["velocity"].vec3() if r.given("velocity") else (0.0, 0.0, 0.0),
             contact_plane=ContactPlane.from_json(r["contact_plane"]) if r.has("contact_plane") else None,
             sliding_normal=r["sliding_normal"].vec3() if r.has("sliding_normal") else None,
-            placement=Placement.from_json(r["placement"]) if r.has("placement") else None,
+            placement=Placement.from_json(r["placement"], vias) if r.has("placement") else None,
         )
 
 
@@ -876,10 +901,12 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/5 for buildings, /4 for ticks, /3 for a placement, /2
-        indoors, else /1)."""
-        if self.buildings:
+        """The oldest format that holds the scene (/6 for a placement through enter_world, /5 for
+        buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
+        if self.mover.placement is not None and self.mover.placement.via == "enter_world":
             return FORMAT
+        if self.buildings:
+            return FORMAT_V5
         if self.ticks is not None:
             return FORMAT_V4
         if self.mover.placement is not None:
@@ -919,15 +946,15 @@ class Scene:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         indoor = () if v1 else ("environments", "env_cells")
-        ticks_field = ("ticks",) if fmt in (FORMAT_V4, FORMAT) else ()
-        buildings_field = ("buildings",) if fmt == FORMAT else ()
+        ticks_field = ("ticks",) if fmt in (FORMAT_V4, FORMAT_V5, FORMAT) else ()
+        buildings_field = ("buildings",) if fmt in (FORMAT_V5, FORMAT) else ()
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3) and "ticks" in doc:
             r["ticks"].fail(f"ticks need format {FORMAT_V4!r} or later (older formats have no ticks)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4) and "buildings" in doc:
-            r["buildings"].fail(f"buildings need format {FORMAT!r} (older formats have no buildings)")
+            r["buildings"].fail(f"buildings need format {FORMAT_V5!r} or later (older formats have no buildings)")
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field,
                *buildings_field})
-        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4):
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.given("name") else ""
         mode = "server"
@@ -949,7 +976,8 @@ class Scene:
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
         buildings = tuple(Building.from_json(b) for b in r["buildings"].list()) if r.given("buildings") else ()
         ticks = Ticks.from_json(r["ticks"]) if r.has("ticks") else None
-        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT), ticks=ticks is not None)
+        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT),
+                                ticks=ticks is not None, vias=fmt == FORMAT)
         scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings)
         check_consistency(scene, path)
         return scene

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from typing import Any
 
 import numpy as np
@@ -263,13 +263,16 @@ def _grain(records) -> tuple[set, set]:
     return kinds, present
 
 
-def first_divergence(reference, other, anchors=None, reference_kinds=None) -> Divergence | None:
+def first_divergence(reference, other, anchors=None, reference_kinds=None, shapes: str = "strict") -> Divergence | None:
     """The first record where `other` parts from `reference`, compared at `other`'s grain: the
     (anchor, event) kinds it writes, and the enter, exit and call records of the routines it declares
     it records (`anchors`, its trace's "anchors": a routine it never reached is then a difference
     too), and the parts it fills; None when they agree throughout. `reference_kinds`: every kind the
     reference can write (the port's tracing.record_kinds()), not only those it wrote this run: a
-    routine only `other` ran is then a difference too, where it was first entered, not later."""
+    routine only `other` ran is then a difference too, where it was first entered, not later.
+    `shapes`: "strict" compares every field of `other`'s parts; "ace" (against ACE's own trace, whose
+    arguments and answers are C#'s: `this` in a constructor, ref and out parameters, a Dictionary)
+    compares an argument or answer only where both sides hold one of the same shape (`comparable`)."""
     kinds, present = _grain(other)
     declared = anchors or frozenset()
     for r in reference:
@@ -295,14 +298,101 @@ def first_divergence(reference, other, anchors=None, reference_kinds=None) -> Di
             return Divergence(n, a, b, field, getattr(a, field), getattr(b, field), inner, ia, ib)
         fa = dict(x for name in PARTS if (a.anchor, a.event, name) in present for x in _flat_part(a, name))
         fb = dict(x for name in PARTS for x in _flat_part(b, name))
+        if shapes == "ace" and len(a.args or ()) != len(b.args or ()):  # C#'s parameters and the port's differ here
+            fa = {k: v for k, v in fa.items() if not k.startswith("args")}
         for name, va in fa.items():
             vb = fb.get(name)
+            if shapes == "ace" and not name.startswith(("path", "mover")) and not comparable(name in fb, va, vb):
+                continue
             if name not in fb or not _same(va, vb):
                 routine = a.anchor if a.event in ("exit", "call") and not name.startswith("args") else inner
                 if name.startswith("args"):
                     routine = _caller_handed_them(ref, oth, n, routine)
                 return Divergence(n, a, b, name, va, vb, routine, ia, ib)
     return None
+
+
+def comparable(present: bool, a, b) -> bool:
+    """Whether an argument or answer of ACE's (a) and of a port-grain trace (b) can be compared: both
+    recorded, neither left empty, neither an object named by its type (a C# class's name is not a
+    Python class's), and both numbers, both flags or both lists of the same length."""
+    if not present or a is None or b is None or isinstance(a, str) or isinstance(b, str):
+        return False
+    if isinstance(a, bool) or isinstance(b, bool):
+        return isinstance(a, bool) and isinstance(b, bool)
+    return isinstance(a, (int, float)) and isinstance(b, (int, float))
+
+
+# ---------------------------------------------------------------- the run, at the grain both ACE and the port write
+
+# where a run starts after its world is built: the transition's (or the placement's) first calls, or a tick.
+# Each side builds the scene's world in the harness's own order (the facade's BuildScene, the port's scene_world),
+# so a comparison with ACE's own trace starts at the run.
+RUN_STARTS = frozenset({"Transition.cs:MakeTransition", "Transition.cs:InitObject", "PhysicsObj.cs:get_object_info"})
+RUN_ENDS = "Transition.cs:CleanupTransition"  # a transition scene's run ends with it (the placement's too)
+TRANSITION = "PhysicsObj.cs:transition"
+TICK_DRIVER = "PhysicsObj.cs:update_object"
+
+
+def run_part(records, ticks: bool) -> tuple:
+    """The records of a trace from its run's start (RUN_STARTS, or the first tick), at the grain ACE's
+    instrumented facade writes: in a transition scene, no PhysicsObj.transition records (the facade makes
+    its calls one by one, as the port's run_scene does around the mover's transition); in a tick scene,
+    no record of the port's tick driver (run_ticks, anchored to update_object, a call outside any routine)."""
+    start = next((i for i, r in enumerate(records) if r.tick is not None or r.anchor in RUN_STARTS), len(records))
+    # what follows the last tick, or the transition's cleanup, is the harness's (the facade removes the statics)
+    last = (lambda r: r.event == "tick") if ticks else (lambda r: r.anchor == RUN_ENDS)
+    end = max((i + 1 for i, r in enumerate(records) if last(r)), default=len(records))
+    out = []
+    building = 0  # inside a constructor's enter .. exit
+    for r in records[start:end]:
+        if is_constructor(r.anchor) and r.event in ("enter", "exit"):
+            building += 1 if r.event == "enter" else -1
+            continue
+        if building > 0 or (r.within is not None and is_constructor(r.within)):
+            continue
+        if not ticks and r.anchor == TRANSITION:
+            continue
+        if ticks and r.anchor == TICK_DRIVER and r.event == "call" and r.within is None:
+            continue
+        if is_constructor(r.anchor):
+            continue
+        if not ticks and r.mover is not None:  # outside a tick scene the mover's clock is the harness's (wall clock in ACE)
+            r = replace(r, mover=replace(r.mover, update_time=0.0))
+        out.append(r)
+    return tuple(out)
+
+
+STATE_EVENTS = ("enter", "exit", "step", "insert", "tick")
+
+
+def against_ace(ace, other, ace_kinds, ticks: bool, overloaded=frozenset()) -> Divergence | None:
+    """The first record where `other` (the port's trace, or an implementation's at the port's grain)
+    parts from ACE's own trace (oracle/instrumented.py), compared from the run's start (`run_part`) on the
+    records that carry state: the enter and exit records of the transition's routines (a PathState) and of
+    the mover's (a TickState), each step, insert attempt and tick. A `call` record (a helper's answer, a
+    getter) is not compared: ACE calls its helpers where its C# does (a property read twice, a check
+    inlined), the port where its Python does, and their order differs without any state differing.
+    Arguments and answers are compared where their shapes agree (first_divergence's shapes="ace").
+    `overloaded`: the anchors that name several ACE overloads (one port routine for them all): ACE's
+    record of one such overload inside another (AddOffsetToCheckPos(offset, radius) calling
+    AddOffsetToCheckPos(offset)) is left out on both sides: the port writes one record for the pair, or two
+    where it has a routine for each (CylSphere.IntersectsSphere's)."""
+    def kept(records):
+        return tuple(r for r in run_part(records, ticks) if r.event in STATE_EVENTS
+                     and not (r.anchor in overloaded and r.within == r.anchor))
+
+    a, b = kept(ace), kept(other)
+    kinds = frozenset(k for k in ace_kinds if k[1] in STATE_EVENTS and not is_constructor(k[0]))
+    return first_divergence(a, b, None, kinds, shapes="ace")
+
+
+def is_constructor(anchor: str) -> bool:
+    """Whether an anchor names a constructor ("AFrame.cs:AFrame(AFrame)", "PlacementType.cs:PlacementType"):
+    the port makes many objects inline or lazily where ACE news them (a landblock's cells, when first
+    reached), so constructors and what they run are not compared with ACE's."""
+    file, _, method = anchor.partition(":")
+    return method.split("(", 1)[0] == file.rsplit("/", 1)[-1].removesuffix(".cs")
 
 
 def _running(records, i: int) -> list[tuple[str, object]]:

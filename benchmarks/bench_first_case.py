@@ -8,15 +8,17 @@ round, alternating installs so drift in machine load hits them alike, measures:
 - `check -n 1 -j 1`: the wall time of a whole one-case campaign (start, loading, one case, exit);
 - the seconds until the campaign's start line ("... vs recorded corpus ..." / "... vs live oracle
   ...") is printed, after which the first case runs (the whole-corpus replay, or the one-case live
-  campaign), and the longest silence on stderr before it: what a user waits without a word.
+  campaign), and the longest silence on stderr before it: what a user waits without a word;
+- live, the seconds until the first case is done (the one-case campaign's progress line "1/1
+  cases"): **the seconds to the first live case**, the figure issue 44 bounds (5 s warm).
 
 Without --live, ACE is not used (ACE_ASSEMBLY and ACE_RUNTIME are unset), so both replay the
 committed .NET 10 corpus. With --live, ACE is found as `check` finds it (ACE_ASSEMBLY, ACE_RUNTIME,
 the config file) and each measure runs twice: **cold**, with an empty facade cache
 (XDG_CACHE_HOME a fresh directory, so the C# facade is compiled), and **warm**, with the facade
 compiled before. Each figure is wall seconds and, less sensitive to other jobs on the machine, the
-CPU seconds (user + system) the acconform process and its children spent. Prints the median per
-install and measure, and the load average.
+CPU seconds (user + system) the acconform process and its children spent. Prints which ACE was
+found (the oracle's "ACE: ..." line), the median per install and measure, and the load average.
 """
 
 from __future__ import annotations
@@ -57,32 +59,42 @@ def one_case(python: str, cwd: str, live: bool, cache: str | None) -> tuple[floa
     return time.monotonic() - t0, _children_cpu() - before
 
 
-def to_campaign_start(python: str, cwd: str, live: bool, cache: str | None) -> tuple[float, float, float]:
+def to_campaign_start(python: str, cwd: str, live: bool, cache: str | None) -> tuple[float, ...]:
     """(wall seconds to the start line, CPU seconds of the whole run, the longest silence on stderr
-    before the start line). Live, the one-case campaign runs to its end; replaying, the whole
-    corpus is stopped once the line is out."""
+    before the start line[, live: wall seconds to the first case done]). Live, the one-case
+    campaign runs to its end; replaying, the whole corpus is stopped once the line is out."""
     cmd = [python, "-m", "acconform.cli", "check", "-j", "1", "--no-database", "--failures", os.path.join(cwd, "f")]
     cmd += ["-n", "1"] if live else []
     before = _children_cpu()
     t0 = time.monotonic()
     p = subprocess.Popen(cmd, cwd=cwd, env=_env(live, cache), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                          text=True, start_new_session=True)
-    started = silence = float("nan")
+    started = silence = first = float("nan")
     last = t0
     try:
         for line in p.stderr:
             now = time.monotonic()
-            silence = max(0.0 if silence != silence else silence, now - last)
+            if started != started:
+                silence = max(0.0 if silence != silence else silence, now - last)
             last = now
+            if line.startswith("acconform check: ACE: ") and line not in SEEN_ACE:
+                SEEN_ACE.append(line)
+                print(f"  {line.strip()}", flush=True)
             if " vs recorded corpus " in line or " vs live oracle," in line:
                 started = now - t0
-                break
+                if not live:
+                    break
+            if live and " 1/1 cases" in line:
+                first = now - t0
         if not live:
             p.kill()  # the rest of the corpus is not measured
     finally:
         p.stderr.close()
         p.wait()
-    return started, _children_cpu() - before, silence
+    return (started, _children_cpu() - before, silence) + ((first,) if live else ())
+
+
+SEEN_ACE: list[str] = []  # the oracle's "ACE: ..." lines, printed once each
 
 
 def main() -> int:
@@ -105,14 +117,16 @@ def main() -> int:
         for r in range(a.rounds):
             for label, python in installs:
                 for temp, cache in caches:
-                    for name, fn in (("check -n 1", one_case), ("to the first case", to_campaign_start)):
+                    for name, fn in (("check -n 1", one_case), ("to the start line", to_campaign_start)):
                         # cold: each run a cache of its own, empty
                         here = tempfile.mkdtemp(dir=cwd, prefix="cold-cache-") if cache == "" else cache
                         got = fn(python, cwd, a.live, here)
                         key = f"{temp} {name}".strip()
                         figures.setdefault((label, key), []).append(got)
                         silence = f", longest silence {got[2]:.1f} s" if len(got) > 2 else ""
-                        print(f"round {r + 1} {label:>8}: {key} {got[0]:.1f} wall, {got[1]:.1f} CPU{silence}", flush=True)
+                        first = f", first live case at {got[3]:.1f} s" if len(got) > 3 else ""
+                        print(f"round {r + 1} {label:>8}: {key} {got[0]:.1f} wall, {got[1]:.1f} CPU{silence}{first}",
+                              flush=True)
     print(f"load average after: {os.getloadavg()[0]:.1f}")
     for (label, name), ts in figures.items():
         cols = list(zip(*ts))
@@ -120,6 +134,8 @@ def main() -> int:
                 f"({', '.join(f'{t:.1f}' for t in cols[0])}), {statistics.median(cols[1]):6.1f} s CPU")
         if len(cols) > 2:
             text += f", longest silence {statistics.median(cols[2]):.1f} s ({', '.join(f'{t:.1f}' for t in cols[2])})"
+        if len(cols) > 3:
+            text += f", first live case at {statistics.median(cols[3]):.1f} s ({', '.join(f'{t:.1f}' for t in cols[3])})"
         print(text)
     return 0
 

@@ -104,6 +104,15 @@ class PerProcessOracle:
     def versions(self) -> Versions:
         return self._live().versions
 
+    @property
+    def ace_note(self) -> str | None:
+        """The live oracle's note when its ACE is not the one the port follows (oracle/identity.py)."""
+        return self._live().ace_note
+
+    def unsupported(self, scene: Scene) -> str | None:
+        """Why this process's ACE cannot run `scene`, or None (LiveOracle.unsupported)."""
+        return self._live().unsupported(scene)
+
     def run(self, scene: Scene) -> Outcome:
         return self._live().run(scene)
 

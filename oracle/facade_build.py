@@ -3,9 +3,11 @@
 The facade is acconform's own C# (MIT), never ACE's. It is compiled on the user's machine when
 the oracle loads and cached under the user cache directory (``$XDG_CACHE_HOME/acconform/facade``,
 never in the repository), keyed by a hash of the ACE assemblies, the facade source and the
-runtime. mono: ``mcs`` (Debian: mono-mcs). CoreCLR: the SDK of the .NET installation that runs ACE
-builds a throw-away class library referencing the ACE assemblies, for the target framework of
-their runtimeconfig, offline (its project names no package source).
+runtime. mono: ``mcs`` (Debian: mono-mcs). CoreCLR: the C# compiler of the SDK of the .NET
+installation that runs ACE, run directly with the targeting pack's reference assemblies (about
+1 s); where the installation's layout does not give them, the SDK builds a throw-away class library
+referencing the ACE assemblies (6-15 s), for the target framework of their runtimeconfig, offline
+(its project names no package source).
 When no compiler is present, or compiling fails, `build` returns None and the reason, and the
 live oracle refuses to start with that reason (the facade is the one scene builder). A build is a
 step of the oracle's `Loading` (oracle/loading.py): said when it starts and every 2 s while the
@@ -32,29 +34,30 @@ SOURCE_DIR = Path(__file__).with_name("facade")
 DLL_NAME = "Acconform.Oracle.Facade.dll"
 
 
-def sources() -> list[Path]:
-    return sorted(SOURCE_DIR.glob("*.cs"))
+def sources(extra=()) -> list[Path]:
+    """The facade's C# files, and `extra` ones compiled into it (an instrumented ACE's recorder, oracle/instrumented.py)."""
+    return sorted(SOURCE_DIR.glob("*.cs")) + [Path(p) for p in extra]
 
 
-def cache_key(ace: LoadedAce) -> str:
+def cache_key(ace: LoadedAce, extra=()) -> str:
     h = hashlib.sha256(ace.assembly_hash.encode())
     h.update(ace.location.runtime.encode())
-    for s in sources():
+    for s in sources(extra):
         h.update(s.name.encode())
         h.update(s.read_bytes())
     return h.hexdigest()[:20]
 
 
-def build(ace: LoadedAce, loading: Loading | None = None) -> tuple[Path | None, str]:
+def build(ace: LoadedAce, loading: Loading | None = None, extra=()) -> tuple[Path | None, str]:
     """(path of the compiled facade or None, how it was obtained or why not); compiling is the
-    step "facade build" of `loading`."""
+    step "facade build" of `loading`. `extra`: more C# files compiled into it."""
     loading = loading or Loading(None)
-    out_dir = cache_dir() / "facade" / cache_key(ace)
+    out_dir = cache_dir() / "facade" / cache_key(ace, extra)
     dll = out_dir / DLL_NAME
     if dll.is_file():
         return dll, f"cached {dll}"
     out_dir.mkdir(parents=True, exist_ok=True)
-    compiler = "mcs" if ace.location.runtime == "mono" else "the .NET SDK (10-15 s)"
+    compiler = "mcs" if ace.location.runtime == "mono" else "the .NET SDK"
     with loading.step("facade build", f"compiling the C# facade against this ACE build with {compiler}, once per "
                                       f"build (cached in {out_dir.parent})"):
         # the workers of a campaign load ACE at once: one compiles, the others wait for its facade
@@ -63,7 +66,7 @@ def build(ace: LoadedAce, loading: Loading | None = None) -> tuple[Path | None, 
             _wait_for(lock)
             if dll.is_file():
                 return dll, f"compiled by another process into {dll}"
-            return _build_mcs(ace, dll) if ace.location.runtime == "mono" else _build_dotnet(ace, dll)
+            return _build_mcs(ace, dll, extra) if ace.location.runtime == "mono" else _build_dotnet(ace, dll, extra)
 
 
 @contextlib.contextmanager
@@ -97,7 +100,7 @@ def _wait_for(lock) -> None:
     fcntl.flock(lock, fcntl.LOCK_EX)
 
 
-def _build_mcs(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
+def _build_mcs(ace: LoadedAce, dll: Path, extra=()) -> tuple[Path | None, str]:
     mcs = shutil.which("mcs")
     if mcs is None:
         return None, "no mcs on PATH (Debian/Ubuntu: apt-get install mono-mcs)"
@@ -109,7 +112,7 @@ def _build_mcs(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
     tmp_dir.mkdir(exist_ok=True)
     tmp = tmp_dir / DLL_NAME
     cmd = [mcs, "-target:library", "-optimize+", "-debug-", "-nowarn:0618", f"-out:{tmp}"]
-    cmd += [f"-r:{r}" for r in refs] + [str(s) for s in sources()]
+    cmd += [f"-r:{r}" for r in refs] + [str(s) for s in sources(extra)]
     try:  # the temporary directory goes however the build ends
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
@@ -155,19 +158,26 @@ _NUGET_CONFIG = """<?xml version="1.0" encoding="utf-8"?>
 """
 
 
-def _build_dotnet(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
-    """A throw-away class library referencing the user's ACE assemblies, built with the SDK of the
-    .NET installation that runs them, for the target framework their runtimeconfig names."""
+def _build_dotnet(ace: LoadedAce, dll: Path, extra=()) -> tuple[Path | None, str]:
+    """The SDK's C# compiler run directly on the facade (`_build_csc`, about 1 s), or, where the
+    installation's layout does not give it, a throw-away class library referencing the user's ACE
+    assemblies, built with the SDK of the .NET installation that runs them (`dotnet build`, 6-15 s,
+    most of it MSBuild starting and restoring), for the target framework their runtimeconfig names."""
     root = dotnet_root()
     sdks = dotnet_host.sdk_versions(root.path)
     if not sdks:
         return None, (f"no .NET SDK in {root.path} (found by {root.found_by}; it has the runtime only): install the "
                       "SDK there to compile the facade")
     tfm = dotnet_host.framework_tfm(ace.location.runtime_config)
+    direct = _direct_compiler(root.path, tfm)
+    if direct is not None:
+        built, why = _build_csc(ace, dll, root.path, *direct, extra)
+        if built is not None:
+            return built, why
     proj_dir = dll.parent / f"project-{os.getpid()}"
     shutil.rmtree(proj_dir, ignore_errors=True)
     proj_dir.mkdir(parents=True)
-    compile_items = "\n".join(f'    <Compile Include="{s}" />' for s in sources())
+    compile_items = "\n".join(f'    <Compile Include="{s}" />' for s in sources(extra))
     refs = "\n".join(f'    <Reference Include="{a}"><HintPath>{ace.location.directory / (a + ".dll")}</HintPath>'
                      f"<Private>false</Private></Reference>" for a in ACE_ASSEMBLIES)
     (proj_dir / "Acconform.Oracle.Facade.csproj").write_text(_CSPROJ.format(tfm=tfm, compile=compile_items, refs=refs))
@@ -191,3 +201,57 @@ def _build_dotnet(ace: LoadedAce, dll: Path) -> tuple[Path | None, str]:
         return dll, f"compiled with the .NET SDK ({tfm}) into {dll}"
     finally:
         shutil.rmtree(proj_dir, ignore_errors=True)
+
+
+def _version_key(name: str) -> tuple:
+    """"10.0.401" -> (10, 0, 401): SDK and pack folders compared as versions, not as text ("9.0" < "10.0")."""
+    parts = []
+    for p in name.split("-")[0].split("."):
+        parts.append(int(p) if p.isdigit() else -1)
+    return tuple(parts)
+
+
+def _direct_compiler(root: Path, tfm: str) -> tuple[Path, list[Path]] | None:
+    """The newest SDK's C# compiler (``sdk/<v>/Roslyn/bincore/csc.dll``) and the reference assemblies
+    of `tfm` from the newest targeting pack that has them (``packs/Microsoft.NETCore.App.Ref/<v>/ref/<tfm>``):
+    what `dotnet build` itself compiles with. None when the installation lacks either."""
+    sdks = sorted(dotnet_host.sdk_versions(root), key=_version_key, reverse=True)
+    csc = next((c for v in sdks if (c := root / "sdk" / v / "Roslyn" / "bincore" / "csc.dll").is_file()), None)
+    packs = root / "packs" / "Microsoft.NETCore.App.Ref"
+    if csc is None or not packs.is_dir():
+        return None
+    for v in sorted((p.name for p in packs.iterdir()), key=_version_key, reverse=True):
+        refs = sorted((packs / v / "ref" / tfm).glob("*.dll"))
+        if refs:
+            return csc, refs
+    return None
+
+
+def _build_csc(ace: LoadedAce, dll: Path, root: Path, csc: Path, refs: list[Path], extra=()) -> tuple[Path | None, str]:
+    """The facade compiled by `csc` against `refs` and the ACE assemblies, as `dotnet build` of the
+    class library compiles it (optimized, no debug information, the same warnings off), in a private
+    temporary folder; (None, why) when it fails, and the caller builds the project instead."""
+    tmp_dir = dll.parent / f"csc-{os.getpid()}"
+    tmp_dir.mkdir(exist_ok=True)
+    tmp = tmp_dir / DLL_NAME
+    args = ["-noconfig", "-nologo", "-target:library", "-optimize+", "-debug-", "-deterministic",
+            "-nowarn:CS0618,SYSLIB0050", f"-out:{tmp}"]
+    args += [f"-r:{r}" for r in refs]
+    args += [f"-r:{ace.location.directory / (a + '.dll')}" for a in ACE_ASSEMBLIES]
+    args += [str(src) for src in sources(extra)]
+    rsp = tmp_dir / "facade.rsp"  # one argument a line, quoted: paths may hold spaces
+    rsp.write_text("\n".join('"' + a.replace('"', '\\"') + '"' for a in args) + "\n")
+    env = dict(os.environ, DOTNET_ROOT=str(root), DOTNET_CLI_TELEMETRY_OPTOUT="1", DOTNET_NOLOGO="1")
+    try:
+        try:
+            p = subprocess.run([str(dotnet_host.dotnet_cli(root)), "exec", str(csc), f"@{rsp}"], capture_output=True,
+                               text=True, timeout=300, env=env)
+        except (OSError, subprocess.TimeoutExpired) as e:
+            return None, f"csc failed to run: {e}"
+        if p.returncode != 0 or not tmp.is_file():
+            return None, "csc could not compile the facade: " + (p.stdout + p.stderr).strip()[:600]
+        tmp.replace(dll)
+        return dll, (f"compiled with the .NET SDK ({refs[0].parent.name}) by its csc, reference pack "
+                     f"{refs[0].parents[2].name}, into {dll}")
+    finally:
+        shutil.rmtree(tmp_dir, ignore_errors=True)

@@ -27,7 +27,7 @@ from .pack import pack_scene, unpack_outcome
 class LiveOracle:
     name = "live"
 
-    def __init__(self, assembly=None, runtime: str | None = None, say: Say | None = to_stderr):
+    def __init__(self, assembly=None, runtime: str | None = None, say: Say | None = to_stderr, extra_sources=()):
         location = config.resolve(assembly, runtime)
         if location is None:
             raise OracleUnavailable(f"no ACE assembly configured for the live oracle; {config.HOW_TO_SET}")
@@ -37,7 +37,12 @@ class LiveOracle:
         label = config.ace_label()
         ace = f"{label} ({self.ace.ace_version})" if label else self.ace.ace_version
         self.versions = Versions(acconform=__version__, ace=ace, runtime=self.ace.runtime_version)
-        self._facade, self.facade_status = _load_facade(self.ace, loading)
+        who = self.ace.identity
+        self.ace_line = who.line if who is not None else None  # which ACE this is, in one line (oracle/identity.py)
+        self.ace_note = who.note if who is not None else None  # said beside differences when it is not the port's ACE
+        if say is not None and self.ace_line:
+            say(self.ace_line)
+        self._facade, self.facade_status = _load_facade(self.ace, loading, extra_sources)
         if self._facade is None:
             raise OracleUnavailable(f"the C# facade is unavailable: {self.facade_status}")
         self._buffers()
@@ -53,6 +58,16 @@ class LiveOracle:
         self.last_landblocks_reused = 0  # ... and took from its cache (same bytes, same height table)
         self.last_build_micros = 0.0  # time building them (CellLandblock.Unpack, new Landblock, PostInit)
         self.last_transition_micros = 0.0  # PhysicsObj.transition's own work (MakeTransition .. CleanupTransition)
+
+    def unsupported(self, scene: Scene) -> str | None:
+        """Why this ACE cannot run `scene` (the campaign skips it, naming why), or None. An ACE whose
+        physics clock is wall time (oracle/identity.py, before ACE #4110) gives a tick scene update
+        times of whenever it ran: the facade cannot set its clock, so its answer is not a function
+        of the scene."""
+        who = self.ace.identity
+        if scene.ticks is not None and who is not None and who.wall_clock:
+            return "this ACE runs tick scenes on wall time (PhysicsTimer before ACE #4110)"
+        return None
 
     def run(self, scene: Scene) -> Outcome:
         return self.run_timed(scene)[0]
@@ -185,11 +200,11 @@ def unpack_steps(data: bytes) -> tuple:
     return tuple(out)
 
 
-def _load_facade(ace, loading: Loading):
+def _load_facade(ace, loading: Loading, extra_sources=()):
     """(the facade's class, initialised, or None; how it was obtained or why not)."""
     from .facade_build import build
 
-    dll, status = build(ace, loading)
+    dll, status = build(ace, loading, extra_sources)
     if dll is None:
         return None, status
     with loading.step("facade", f"loading the C# facade ({status})"):

@@ -1,8 +1,8 @@
 """Saying what loading the live oracle is doing while it does it, and how long each step took.
 
 Loading ACE is several waits: starting the .NET runtime, referencing ACE's assemblies, checking
-the members the oracle uses, compiling the C# facade (10-15 s with the .NET SDK, once per ACE
-build; a cached one is only loaded). `Loading` runs each as a step: it says the step when it
+the members the oracle uses, compiling the C# facade (1-2 s with csc, 6-15 s where the SDK must
+build a project; once per ACE build; a cached one is only loaded). `Loading` runs each as a step: it says the step when it
 starts, again every TICK seconds while it lasts (from a thread, since the step itself is a child
 process or a call into .NET), and keeps each step's seconds (`LiveOracle.load_seconds`) so a
 campaign can say where its wall time went. `say` is where the lines go (a command's own

@@ -46,7 +46,10 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.DatLoader.FileTypes.GfxObj", (".ctor", "Unpack")),
     ("ACE.DatLoader.FileTypes.FileType", ("Unpack",)),
     ("ACE.DatLoader.DatManager", ("PortalDat", "<PortalDat>k__BackingField", "CellDat", "<CellDat>k__BackingField")),
-    ("ACE.DatLoader.DatDatabase", ("FileCache", "<FileCache>k__BackingField", "ReadFromDat")),
+    ("ACE.DatLoader.DatDatabase", ("FileCache", "<FileCache>k__BackingField", "ReadFromDat", "<AllFiles>k__BackingField",
+                                   "<Header>k__BackingField")),
+    ("ACE.DatLoader.DatDatabaseHeader", (".ctor",)),
+    ("ACE.DatLoader.DatFile", ()),
     ("ACE.DatLoader.PortalDatDatabase", ()),
     # indoors: Environments (portal DAT), EnvCells and LandblockInfos (cell DAT), loaded by ACE's LScape.get_landcell
     ("ACE.DatLoader.CellDatDatabase", ()),
@@ -61,8 +64,12 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
                                        "SetScaleStatic", "remove_shadows_from_cells", "get_object_info",
                                        "makeObject", "DatObject", "add_obj_to_cell", "leave_cell", "DestroyObject",
                                        "ShadowObjects")),
-    # a scene's placement (mover.placement): Facade.Place
-    ("ACE.Server.Physics.PhysicsObj", ("SetPositionInternal",)),
+    # the mover, a player's PhysicsObj (Facade.BuildMover) entering the world (mover.placement: Facade.Place)
+    ("ACE.Server.Physics.PhysicsObj", (".ctor", "makeAnimObject", "set_object_guid", "set_weenie_obj", "SetMotionTableID",
+                                       "enter_world", "SetPosition", "set_request_pos", "update_object_server")),
+    ("ACE.Server.Physics.Common.WeenieObject", (".ctor",)),
+    ("ACE.Server.WorldObjects.Player", ("LastContact",)),
+    ("ACE.Entity.ObjectGuid", (".ctor",)),
     ("ACE.Server.Physics.Common.Position", ("GetCell",)),
     ("ACE.Server.Physics.Common.SetPosition", (".ctor",)),
     ("ACE.Server.Physics.Common.SetPositionFlags", ("Slide", "DontCreateCells")),
@@ -70,7 +77,7 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     # a tick scene (scene/4): the clock, the inputs, the two drivers and the mover read back after each tick (Facade.RunTicks)
     ("ACE.Server.Entity.Timers", ("PortalYearTicks",)),
     ("ACE.Server.Physics.Common.PhysicsTimer", ("CurrentTime",)),
-    ("ACE.Server.Physics.PhysicsObj", ("update_object", "UpdateObjectInternalServer", "set_current_pos", "RequestPos",
+    ("ACE.Server.Physics.PhysicsObj", ("update_object",
                                        "UpdateTime", "Acceleration", "Omega", "CachedVelocity", "JumpedThisFrame",
                                        "set_velocity", "set_local_velocity", "set_omega", "calc_acceleration",
                                        "set_on_walkable", "RemoveLinkAnimations", "IsAnimating", "IsMovingOrAnimating")),
@@ -115,23 +122,13 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
 )
 
 
-# ACE's build stamp (ServerBuildInfo_Dynamic.cs, `ServerBuildInfo.Commit`) for the source the oracle runs.
+# ACE's build stamp (ServerBuildInfo_Dynamic.cs, `ServerBuildInfo.Commit`) for the source the port follows
+# (oracle/identity.py tells a build of it from any other ACE, which loads too).
 # ACE's CI commits the stamp after each change: 7b47913 is such a commit and stamps its parent
 # bab7a5c, where the physics is as of 7b47913. A build of 7b47913's tree carries bab7a5c; a build
 # whose stamp was regenerated at build time carries 7b47913 itself.
 ACE_COMMIT = "7b47913"
 ACE_BUILD_COMMITS = ("bab7a5ca8552cb18f63e08b57234bd9137cd0249", "7b47913")
-
-
-def check_build_commit(commit: str | None, where: str) -> None:
-    """Raise OracleUnavailable when the build stamps another ACE commit. A build without the stamp
-    (None) is judged by the member check alone."""
-    if commit is None or any(commit.startswith(c) for c in ACE_BUILD_COMMITS):
-        return
-    raise OracleUnavailable(
-        f"the ACE build at {where} was built from ACE commit {commit[:12] or '(empty)'} (its ServerBuildInfo.Commit); "
-        f"the oracle runs ACE's physics as of commit {ACE_COMMIT} (stamped {ACE_BUILD_COMMITS[0][:7]}): point --ace / "
-        "ACE_ASSEMBLY at a build of that commit (see docs/oracle.md)")
 
 
 def check_members(find_type, has_member, where: str, required=REQUIRED) -> None:
@@ -153,6 +150,6 @@ def check_members(find_type, has_member, where: str, required=REQUIRED) -> None:
     if missing:
         shown = ", ".join(missing[:8]) + (f" (and {len(missing) - 8} more)" if len(missing) > 8 else "")
         raise OracleUnavailable(
-            f"the ACE build at {where} lacks what the oracle needs: {shown}. The oracle runs ACE's "
-            "physics as of commit 7b47913; point --ace / ACE_ASSEMBLY at an ACE build that has these "
+            f"the ACE build at {where} lacks what the oracle needs: {shown}. The port follows ACE's "
+            f"physics as of commit {ACE_COMMIT}; point --ace / ACE_ASSEMBLY at an ACE build that has these "
             "members (see docs/oracle.md)")

@@ -15,7 +15,7 @@ from ..dat import cell_landblock, has_objects, scene_records
 from ..scene import DRIVERS, TICK_INPUTS, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 8
+PACK_VERSION = 9
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -119,7 +119,7 @@ def pack_scene(scene: Scene) -> bytes:
     sn = m.sliding_normal
     snv = (0, 0.0, 0.0, 0.0) if sn is None else (1, *sn)
     pl = m.placement
-    plv = (0, 0, 0) if pl is None else (1, pl.flags, 1 if pl.get_cell else 0)
+    plv = (0, 0, 0) if pl is None else (2 if pl.via == "enter_world" else 1, pl.flags, 1 if pl.get_cell else 0)
     out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end if m.end is not None else _NO_END),
                            *plv))

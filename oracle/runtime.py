@@ -16,8 +16,9 @@ from dataclasses import dataclass
 from ..errors import OracleUnavailable
 from . import dotnet_host
 from .config import HOW_TO_SET, AceLocation
+from .identity import ABSENT, SHAPES, AceIdentity, identify
 from .loading import Loading
-from .members import REQUIRED, check_build_commit, check_members
+from .members import REQUIRED, check_members
 
 ACE_ASSEMBLIES = ("ACE.Common", "ACE.Entity", "ACE.DatLoader", "ACE.Server")
 PIP_HINT = "install the optional extra: pip install 'acconform[oracle]' (pythonnet >= 3.0.3)"
@@ -31,6 +32,7 @@ class LoadedAce:
     ace_version: str  # "ACE.Server <assembly version> sha256:<12 hex>"
     runtime_version: str  # "mono 6.8.0.105" / "coreclr .NET 10.0.0"
     assembly_hash: str  # sha256 over the ACE assemblies (the facade cache key)
+    identity: AceIdentity | None = None  # which ACE this is, and whether it is the one the port follows
 
 
 def _sha256(paths) -> str:
@@ -42,8 +44,9 @@ def _sha256(paths) -> str:
 
 
 def load(location: AceLocation, loading: Loading | None = None) -> LoadedAce:
-    """Start the runtime (once), reference ACE's assemblies and check the build's commit and every
-    member the oracle uses, each a step of `loading` (said and timed)."""
+    """Start the runtime (once), reference ACE's assemblies, check every member the oracle uses and
+    tell which ACE it is (oracle/identity.py: any ACE with the members loads), each a step of
+    `loading` (said and timed)."""
     loading = loading or Loading(None)
     prev = _state.get("runtime")
     if prev is not None:
@@ -63,10 +66,12 @@ def load(location: AceLocation, loading: Loading | None = None) -> LoadedAce:
         _state["dir"] = location.directory
         _state["dotnet_root"] = location.dotnet_root
     with loading.step("members", "checking that the ACE build has every member the oracle uses"):
-        check_build_commit(_build_commit(), str(location.directory))
         check_members(find_type, has_member, str(location.directory))
         files = [location.directory / f"{a}.dll" for a in ACE_ASSEMBLIES]
-        return LoadedAce(location, _ace_version(location), _runtime_version(location.runtime), _sha256(files))
+        version = _ace_version(location)
+        shapes = {sh.change: shape_of(sh.type_name, sh.member) for sh in SHAPES}
+        who = identify(location.runtime, version, _build_commit(), _build_date(), shapes)
+        return LoadedAce(location, version, _runtime_version(location.runtime), _sha256(files), who)
 
 
 def dotnet_root() -> dotnet_host.DotnetRoot | None:
@@ -191,6 +196,36 @@ def _build_commit() -> str | None:
     t = find_type("ACE.Server.ServerBuildInfo")
     f = t.GetField("Commit", BindingFlags.Public | BindingFlags.Static) if t is not None else None
     return str(f.GetValue(None)) if f is not None else None
+
+
+def _build_date() -> str | None:
+    """The date of ACE's build stamp (ServerBuildInfo.BuildYear/Month/Day), "2026-08-08", or None."""
+    from System.Reflection import BindingFlags
+
+    t = find_type("ACE.Server.ServerBuildInfo")
+    if t is None:
+        return None
+    parts = [t.GetField(f, BindingFlags.Public | BindingFlags.Static) for f in ("BuildYear", "BuildMonth", "BuildDay")]
+    if any(p is None for p in parts):
+        return None
+    y, m, d = (int(p.GetValue(None)) for p in parts)
+    return f"{y:04d}-{m:02d}-{d:02d}"
+
+
+def shape_of(type_name: str, member: str) -> str | None:
+    """The type name of a field or property (e.g. "ConcurrentDictionary`2"), ABSENT when the type
+    lacks the member, None when the type is not there."""
+    from System.Reflection import BindingFlags
+
+    t = find_type(type_name)
+    if t is None:
+        return None
+    flags = BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static | BindingFlags.Instance
+    f = t.GetField(member, flags)
+    if f is not None:
+        return str(f.FieldType.Name)
+    p = t.GetProperty(member, flags)
+    return str(p.PropertyType.Name) if p is not None else ABSENT
 
 
 def find_type(full_name: str):

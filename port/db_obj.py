@@ -12,13 +12,16 @@ again and again, and unpacking an Environment (its structures' polygons and thre
 a third of an indoor run. The answer cannot change: Environment.Unpack is a function of those
 bytes (its floats read in the mode's type), and nothing reads an Environment but EnvCell's
 constructor, which looks a structure up by id (port/cell/cell_struct.py remembers the CellStruct
-built from it, by the same bytes). A record the run does not hold is never remembered.
+built from it, by the same bytes). A record the run does not hold is never remembered. Where
+the port answers from that memory, ACE asks its DatDatabase again (ReadFromDat, a FileCache hit);
+a traced run asks it every time (anchors.remembers), so its trace holds each ReadFromDat call.
 """
 
 from __future__ import annotations
 
-from .anchors import anchor, harness
+from .anchors import anchor, harness, remembers
 from .dat.animation import Animation as DatAnimation
+from .dat.cell_landblock import CellLandblock
 from .dat.env_cell import EnvCell as DatEnvCell
 from .dat.environment import Environment as DatEnvironment
 from .dat.gfx_obj import GfxObj as DatGfxObj
@@ -35,6 +38,11 @@ def get_env_cell(cell_dat, portal_dat, file_id: int):
     env_cell = cell_dat.read_from_dat(file_id, DatEnvCell)
 
     return EnvCell.from_dat(env_cell, portal_dat)
+
+
+@anchor(None, "DBObj.cs:GetCellLandblock")
+def get_cell_landblock(cell_dat, file_id: int) -> CellLandblock:
+    return cell_dat.read_from_dat(file_id, CellLandblock)
 
 
 @anchor(None, "DBObj.cs:GetLandblockInfo")
@@ -61,11 +69,17 @@ ENVIRONMENTS_LIMIT = 256  # remembered Environments before the memory forgets th
 ENVIRONMENTS: dict[tuple, DatEnvironment] = {}
 
 
+def _get_environment_every_time(portal_dat, file_id: int) -> DatEnvironment:
+    """GetEnvironment as ACE writes it, nothing remembered (what a traced run runs)."""
+    return portal_dat.read_from_dat(file_id, DatEnvironment)
+
+
 @anchor(None, "DBObj.cs:GetEnvironment")
+@remembers(_get_environment_every_time)
 def get_environment(portal_dat, file_id: int) -> DatEnvironment:
     data = portal_dat.records.get(file_id)
     if data is None:
-        return portal_dat.read_from_dat(file_id, DatEnvironment)  # throws, as ACE's does
+        return portal_dat.read_from_dat(file_id, DatEnvironment)  # an empty one, as ACE's DAT read gives
     key = (data, portal_dat.mode)
     environment = ENVIRONMENTS.get(key)
     if environment is None:

@@ -72,18 +72,19 @@ class NotImplementedException(AceException):
     dotnet_type = "NotImplementedException"
 
 
+class ArgumentOutOfRangeException(AceException):
+    """A .NET List indexer or ``Enumerable.ElementAt`` past the end, e.g. ConstructVertices reading
+    Height[0] of the empty CellLandblock ACE's DAT read gives for a landblock its DAT lacks, or
+    InterpolationManager.UseTime's loop, which starts at ``ElementAt(PositionQueue.Count)``."""
+
+    dotnet_type = "ArgumentOutOfRangeException"
+
+
 class InvalidCastException(AceException):
     """A C# cast of an object to a class it is not, e.g. ``(EnvCell)`` of an outdoor cell an
     EnvCell's visible-cell list names."""
 
     dotnet_type = "InvalidCastException"
-
-
-class ArgumentOutOfRangeException(AceException):
-    """``Enumerable.ElementAt`` past a sequence's end, e.g. InterpolationManager.UseTime's loop, which
-    starts at ``ElementAt(PositionQueue.Count)``."""
-
-    dotnet_type = "ArgumentOutOfRangeException"
 
 
 class ArithmeticException(AceException):

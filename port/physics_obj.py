@@ -7,9 +7,11 @@ cylsphere without a physics BSP -> add_shadows_to_cell, in the CellArray's .NET 
 set-up PhysicsObj.transition does before FindValidPosition, the members the transition reads
 back (walkable checks, StopVelocity's set_velocity), and a static's FindObjCollisions (BSP
 through the PartArray, or the Setup's spheres / cylspheres). The mover's PartArray is the
-harness's (run.py, as the oracle builds it). The WeenieObj is ACE's WeenieObject.DummyObject (no
-player, creature or PK flags), which is what a PhysicsObj made without a WorldObject carries;
-a static's DatObject is true (as Landblock.init_static_objs sets it), the mover's false.
+harness's (run.py, as the oracle builds it). A static's WeenieObj is ACE's WeenieObject.DummyObject (no
+player, creature or PK flags), which is what a PhysicsObj made without a WorldObject carries, and its
+DatObject is true (as Landblock.init_static_objs sets it); the mover is a player's PhysicsObj
+(WorldObject.InitPhysicsObj: the WeenieObject of its Player, port/weenie_object.py), DatObject false,
+entering the world through enter_world or SetPosition.
 
 The tick (a tick scene's steps): update_object cuts the time since UpdateTime (the run's
 PhysicsTimer, port/physics_timer.py, for ACE's static clock) into sub-steps of UpdateObjectInternal:
@@ -43,6 +45,7 @@ from .errors import ArgumentException
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
+from .weenie_object import DUMMY_OBJECT, WeenieObject
 
 # PhysicsEngine.cs TransientStateFlags.StationaryComplete = StationaryStuck | StationaryStop | StationaryFall
 STATIONARY_COMPLETE = TransientState.StationaryStuck | TransientState.StationaryStop | TransientState.StationaryFall
@@ -75,28 +78,6 @@ def _hit(trace, branch: str) -> None:
         trace[branch] += 1
 
 
-@dataclass(frozen=True, slots=True)
-class DummyWeenie:
-    """WeenieObject.DummyObject: every flag false."""
-
-    is_player: bool = False
-    is_creature: bool = False
-    is_storage: bool = False
-    is_corpse: bool = False
-
-    @anchor(None, "WeenieObject.cs:IsImpenetrable", "DummyObject: no Player, so false")
-    def is_impenetrable(self) -> bool:
-        return False
-
-    @anchor(None, "WeenieObject.cs:IsPK", "DummyObject: no Player, so false")
-    def is_pk(self) -> bool:
-        return False
-
-    @anchor(None, "WeenieObject.cs:IsPKLite", "DummyObject: no Player, so false")
-    def is_pk_lite(self) -> bool:
-        return False
-
-
 @dataclass(slots=True, eq=False)
 class PhysicsObj:
     id: int
@@ -110,7 +91,7 @@ class PhysicsObj:
     sliding_normal: Vector3 | None = None
     scale: object = 1.0
     part_array: object = None  # port.part_array.PartArray
-    weenie_obj: object = field(default_factory=DummyWeenie)
+    weenie_obj: WeenieObject = DUMMY_OBJECT  # port/weenie_object.py
     dat_object: bool = False
     projectile_target: object = None
     parent: object = None
@@ -364,8 +345,8 @@ class PhysicsObj:
         if transition.sphere_path.cur_cell is None:
             return SetPositionError.NoCell
 
-        # custom (ACE): a non-ethereal spell projectile's collision on world entry; the mover has no
-        # WorldObject (WeenieObject.DummyObject), so `WeenieObj.WorldObject is SpellProjectile` is false
+        # custom (ACE): a non-ethereal spell projectile's collision on world entry; the mover's WorldObject
+        # is a Player, so `WeenieObj.WorldObject is SpellProjectile` is false
 
         if self.entering_world and transition.sphere_path.cur_pos.landblock != pos.landblock:
             return SetPositionError.NoValidPosition
@@ -585,13 +566,14 @@ class PhysicsObj:
         self.enter_cell(new_cell, lscape)
         self.request_pos.obj_cell_id = new_cell.id  # document this control flow better (ACE)
 
-        # sync location for initial CO (ACE)
-        if self.entering_world:
-            raise NotImplementedError("WorldObject.SyncLocation: the mover has no WorldObject")
+        # sync location for initial CO (ACE): WorldObject.SyncLocation copies Position into the Player's
+        # Location, which no physics reads
 
         # handle self (ACE)
         if self.is_player:
-            self.handle_visible_cells()  # enqueue_objs returns at once: no Player WorldObject
+            # enqueue_objs: the Player tracks each newly visible object with a WorldObject; a scene's statics
+            # have none (DummyObject)
+            self.handle_visible_cells()
         else:
             raise NotImplementedError("handle_visible_cells_non_player (WeenieObject.IsMonster) is not ported")
 
@@ -751,13 +733,15 @@ class PhysicsObj:
     @anchor("CPhysicsObj::report_object_collision_end", "PhysicsObj.cs:report_object_collision_end")
     def report_object_collision_end(self, object_id: int) -> bool:
         """ObjMaint is never null (the constructor makes one): whether ServerObjectManager finds the
-        object or not, the only calls left are WeenieObject.DoCollisionEnd, which return at once for
-        DummyObject (no WorldObject)."""
+        object or not, the only calls left are WeenieObject.DoCollisionEnd: a static's returns at once
+        (DummyObject, no WorldObject) and the mover's Player is on no server landblock
+        (WorldObject.CurrentLandblock), so it finds no object to tell."""
         return True
 
     @anchor("CPhysicsObj::report_environment_collision", "PhysicsObj.cs:report_environment_collision")
     def report_environment_collision(self, prev_has_contact: bool) -> bool:
-        """WeenieObj.DoCollision(EnvCollisionProfile) returns at once for DummyObject (no WorldObject)."""
+        """WeenieObj.DoCollision(EnvCollisionProfile): DummyObject returns at once (no WorldObject); the
+        mover's Player runs HandleFallingDamage, which changes only its Health."""
         if self.colliding_with_environment:
             return False
 
@@ -771,7 +755,8 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::report_object_collision", "PhysicsObj.cs:report_object_collision")
     def report_object_collision(self, obj, prev_has_contact: bool) -> bool:
-        """The collision profiles and WeenieObj.DoCollision return at once for DummyObject."""
+        """The collision profiles and WeenieObj.DoCollision(ObjCollisionProfile): it returns at once
+        unless both objects have a WorldObject, and a scene's statics have none (DummyObject)."""
         if obj.state & PhysicsState.ReportCollisionsAsEnvironment:
             return self.report_environment_collision(prev_has_contact)
 
@@ -1357,12 +1342,14 @@ class PhysicsObj:
 
         return request_cell >> 16 != 0x18A or (self.cur_cell is not None and self.cur_cell.id >> 16 == request_cell >> 16)
 
-    @anchor(None, "PhysicsObj.cs:update_object_server", "its body for a WorldObject that is not teleporting "
-            "(the mover has none: docs/oracle.md's audit table)")
+    @anchor(None, "PhysicsObj.cs:update_object_server")
     def update_object_server(self, force_pos: bool, lscape, trace=None) -> bool:
         delta_time = self.timer.current_time - self.update_time
 
-        success = self.update_object_internal_server(delta_time, lscape, trace)
+        wo = self.weenie_obj.world_object
+        success = True
+        if wo is not None and not wo.teleporting:
+            success = self.update_object_internal_server(delta_time, lscape, trace)
 
         if force_pos and success:
             self.set_current_pos(self.request_pos, lscape)
@@ -1372,21 +1359,147 @@ class PhysicsObj:
             z = type(self.scale)(0.0)
             self.cached_velocity = Vector3(z, z, z)
 
+        if wo is not None and wo.teleporting:
+            raise NotImplementedError("a teleporting WorldObject (update_object_server's SetPosition) is not ported")
+
         self.update_time = self.timer.current_time
         return success
 
+    @anchor(None, "PhysicsObj.cs:set_request_pos")
+    def set_request_pos(self, pos: Vector3, rotation, cell, block_cell_id: int, lscape) -> None:
+        self.request_pos.frame.origin = pos
+        self.request_pos.frame.orientation = rotation
+
+        if self.cur_cell is None:
+            self.cur_cell = lscape.get_landcell(block_cell_id)
+            if self.cur_cell is None:
+                return
+
+        if cell is None:
+            self.request_pos.obj_cell_id = self.request_pos.get_cell(self.cur_cell.id, lscape.mode.runtime, lscape)
+        else:
+            self.request_pos.obj_cell_id = cell.id
+
+        self.request_cached_velocity = self.cached_velocity
+
     @anchor(None, "PhysicsObj.cs:set_current_pos")
     def set_current_pos(self, new_pos, lscape) -> None:
-        """``WeenieObj.WorldObject is Player``: the mover has no WorldObject, so the contact plane
-        is never read from the terrain here."""
+        from .cell.land_cell import LandCell
+
         self.position.obj_cell_id = new_pos.obj_cell_id
         self.position.frame = new_pos.frame.copy()
 
         if self.cur_cell is None or self.cur_cell.id != self.position.obj_cell_id:
             new_cell = lscape.get_landcell(new_pos.obj_cell_id)
+
+            player = self.weenie_obj.world_object
+            if player is not None and player.last_contact and isinstance(new_cell, LandCell):
+                found, walkable = new_cell.find_terrain_poly(new_pos.frame.origin, None)
+                if found:
+                    self.contact_plane_cell_id = new_pos.obj_cell_id
+                    self.contact_plane = walkable.plane
             self.change_cell_server(new_cell, lscape)
 
         self.cached_velocity = self.request_cached_velocity
+
+    # ------------------------------------------------------------ entering the world
+
+    @anchor(None, "PhysicsObj.cs:set_object_guid")
+    def set_object_guid(self, guid: int) -> None:
+        """ServerObjectManager.AddServerObject(this) files the object by id; a lookup there (a
+        collision's end, ObjectMaint) ends at the object's WorldObject, and a scene's only WorldObject
+        is the mover's own, which no lookup asks for."""
+        self.id = guid
+
+    @anchor(None, "PhysicsObj.cs:set_weenie_obj")
+    def set_weenie_obj(self, wobj: WeenieObject) -> None:
+        self.weenie_obj = wobj
+        if self.movement_manager is not None:
+            raise NotImplementedError("MovementManager.SetWeenieObject is not ported")
+
+    @anchor("CPhysicsObj::SetMotionTableID", "PhysicsObj.cs:SetMotionTableID")
+    def set_motion_table_id(self, mtable_id: int) -> bool:
+        if self.part_array is None:
+            return False
+        if not self.part_array.set_motion_table_id(mtable_id):
+            return False
+
+        self.movement_manager = None
+        if mtable_id != 0:
+            raise NotImplementedError("MakeMovementManager (a motion table) is not ported")
+        return True
+
+    @anchor("CPhysicsObj::enter_world", "PhysicsObj.cs:enter_world(Position)")
+    def enter_world(self, pos, lscape, trace=None) -> bool:
+        self.entering_world = True
+
+        self.store_position(pos, lscape)
+        slide = self.projectile_target is None  # or WeenieObj.WorldObject is SpellProjectile: a Player is not
+        result = self.enter_world_slide(slide, lscape, trace)
+
+        self.entering_world = False
+        return result
+
+    @anchor("CPhysicsObj::enter_world", "PhysicsObj.cs:enter_world(bool)")
+    def enter_world_slide(self, slide: bool, lscape, trace=None) -> bool:
+        if self.parent is not None:
+            return False
+
+        self.update_time = self.timer.current_time
+
+        # setPos.Pos is the object's own Position: the placement moves it in place
+        flags = SetPositionFlags.Placement
+        if slide:
+            flags |= SetPositionFlags.Slide
+
+        result = self.set_position(self.position, int(flags), lscape, trace)
+        if result != SetPositionError.OK:
+            return False
+
+        if not self.state & PhysicsState.Static:
+            self.transient_state |= TransientState.Active
+
+        if self.part_array is not None:
+            self.part_array.handle_enter_world()
+
+        if self.movement_manager is not None:
+            raise NotImplementedError("MovementManager.HandleEnterWorld is not ported")
+        return True
+
+    @anchor("CPhysicsObj::SetPosition", "PhysicsObj.cs:SetPosition")
+    def set_position(self, pos, set_pos_flags: int, lscape, trace=None) -> int:
+        """``SetPosition(SetPosition)`` with the SetPosition's Pos `pos` and Flags `set_pos_flags`;
+        returns the SetPositionError."""
+        transition = Transition(lscape.mode, lscape, trace)  # Transition.MakeTransition()
+        transition.init_object(self, 0)  # ObjectInfoState.Default
+        mode = lscape.mode
+        if self.part_array is not None and self.part_array.get_num_sphere() != 0:
+            transition.init_sphere(self.part_array.get_num_sphere(), self.part_array.get_sphere(), self.scale)
+        else:
+            from .geom.sphere import Sphere
+
+            dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
+            transition.init_sphere(1, [dummy], mode.scalar(1.0))
+
+        result = self.set_position_internal_set_pos(pos, set_pos_flags, transition, lscape)
+        transition.cleanup_transition()
+        return result
+
+    @anchor("CPhysicsObj::SetPositionInternal", "PhysicsObj.cs:SetPositionInternal(SetPosition, Transition)")
+    def set_position_internal_set_pos(self, pos, set_pos_flags: int, transition: Transition, lscape) -> int:
+        wo = self.weenie_obj.world_object
+        if wo is None:
+            return SetPositionError.GeneralFailure
+
+        if wo.scatter_pos is not None:
+            raise NotImplementedError("a WorldObject's ScatterPos (SetScatterPositionInternal) is not ported")
+
+        # frame ref? (ACE)
+        result = self.set_position_internal_pos(pos, set_pos_flags, transition, lscape)
+
+        if result != SetPositionError.OK and set_pos_flags & SetPositionFlags.Scatter:
+            raise NotImplementedError("SetScatterPositionInternal draws random positions: scenes refuse Scatter")
+        return result
 
     @anchor("CPhysicsObj::FindObjCollisions", "PhysicsObj.cs:FindObjCollisions")
     def find_obj_collisions(self, transition: Transition) -> TransitionState:

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from acconform.flags import TransientState
+from acconform.flags import SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from acconform import dat, deep
@@ -38,16 +38,13 @@ from .anchors import anchor, harness
 from .constants import BLOCK_LENGTH, CELL_LENGTH
 from .errors import AceException, NullReferenceException
 from .dat.cell_dat import CellDat
-from .dat.cell_landblock import CellLandblock
 from .dat.portal_dat import PortalDat
 from .frame import AFrame, Position
-from . import land_defs
+from . import db_obj, land_defs
 from .land.lscape import LScape
 from .physics_obj import PhysicsObj
 from .physics_timer import PhysicsTimer
-from .constants import DUMMY_SPHERE_RADIUS
-from .geom.sphere import Sphere
-from .transition.transition import Transition
+from .weenie_object import Player, WeenieObject
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 from .transition.branches import Trace
 
@@ -64,15 +61,21 @@ def _plane_state(valid: bool, cell: int, is_water: bool, plane: Plane) -> Contac
 
 @harness("builds the mover from its DAT records and the scene, as the oracle's facade does")
 def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj:
-    """The mover as the oracle builds it (docs/oracle.md's audit): ``makeObject(did, obj_id,
-    dynamic)`` over dat.mover_records (its Setup: its spheres and step heights, one empty mesh
-    part), then SetScaleStatic(scale), State, TransientState, Velocity, the contact plane (and its
-    cell) and the sliding normal as `m` gives them (the scene's Mover, or a request's
-    dat.DatMover), Position = begin, CurCell = the begin cell. It is not entered in any cell.
-    With a placement, Position and CurCell stay as makeObject left them: `place_mover` places it."""
+    """The mover as the oracle builds it (docs/oracle.md's audit): a player's PhysicsObj as
+    WorldObject.InitPhysicsObj makes a Creature's -- ``new PhysicsObj()``, makeAnimObject(did) over
+    dat.mover_records (its Setup: its spheres and step heights, one empty mesh part),
+    set_object_guid(obj_id), set_weenie_obj(the WeenieObject of its Player), SetMotionTableID(0),
+    SetScaleStatic(scale), State -- then TransientState, Velocity, the contact plane (and its cell) and
+    the sliding normal as `m` gives them (the scene's Mover, or a request's dat.DatMover), Position =
+    begin, CurCell = the begin cell. It is not entered in any cell. With a placement, Position and
+    CurCell stay as the constructor left them: `place_mover` places it."""
     mode = lscape.mode
     s = mode.scalar
-    obj = PhysicsObj.make_object(did, obj_id, True, portal_dat)
+    obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server)
+    obj.make_anim_object(did, True, portal_dat)
+    obj.set_object_guid(obj_id)
+    obj.set_weenie_obj(WeenieObject.of_player(Player()))
+    obj.set_motion_table_id(0)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
     obj.transient_state = m.transient_state
@@ -88,14 +91,13 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     return obj
 
 
-@harness("places the mover as the oracle's facade does: PhysicsObj.SetPosition's body around SetPositionInternal(Position, SetPosition, Transition)")
+@harness("places the mover as the oracle's facade does: WorldObject.AddPhysicsObj's physics calls and enter_world, or PhysicsObj.SetPosition")
 def place_mover(m, mover: PhysicsObj, lscape: LScape, trace) -> PlacementState:
-    """The begin position (its cell id first replaced by Position.GetCell when the placement asks),
-    then what PhysicsObj.SetPosition does: MakeTransition, InitObject(this, ObjectInfoState.Default),
-    InitSphere (the Setup's spheres at Scale, or the dummy sphere at 1), SetPositionInternal(pos,
-    setPos, transition), CleanupTransition. SetPosition itself goes through SetPositionInternal(
-    SetPosition, Transition), which answers GeneralFailure for an object without a WorldObject; for
-    one without a ScatterPos it makes exactly the call made here (docs/oracle.md's audit table).
+    """The begin position (its cell id first replaced by Position.GetCell when the placement asks, as
+    WorldObject.AdjustDungeon does), then, via enter_world, WorldObject.AddPhysicsObj's physics calls:
+    LScape.get_landcell of its cell (none: not entered, GeneralFailure), Position.ObjCellID = that
+    cell's id, enter_world(Position(cell, frame)), whose bool is the result (OK or GeneralFailure);
+    via set_position, PhysicsObj.SetPosition with the placement's flags (docs/oracle.md's audit).
     `m` is the mover's record (the scene's Mover, or a request's dat.DatMover)."""
     mode = lscape.mode
     placement = m.placement
@@ -103,15 +105,16 @@ def place_mover(m, mover: PhysicsObj, lscape: LScape, trace) -> PlacementState:
     if placement.get_cell:
         pos.obj_cell_id = pos.get_cell(pos.obj_cell_id, mode.runtime, lscape)
 
-    transition = Transition(mode, lscape, trace)
-    transition.init_object(mover, 0)  # ObjectInfoState.Default
-    if mover.part_array is not None and mover.part_array.get_num_sphere() != 0:
-        transition.init_sphere(mover.part_array.get_num_sphere(), mover.part_array.get_sphere(), mover.scale)
+    if placement.via == "enter_world":
+        cell = lscape.get_landcell(pos.obj_cell_id)
+        if cell is None:
+            result = SetPositionError.GeneralFailure
+        else:
+            mover.position.obj_cell_id = cell.id
+            location = Position(cell.id, AFrame(pos.frame.origin, pos.frame.orientation))
+            result = SetPositionError.OK if mover.enter_world(location, lscape, trace) else SetPositionError.GeneralFailure
     else:
-        dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
-        transition.init_sphere(1, [dummy], mode.scalar(1.0))
-    result = mover.set_position_internal_pos(pos, placement.flags, transition, lscape)
-    transition.cleanup_transition()
+        result = mover.set_position(pos, placement.flags, lscape, trace)
 
     q = mover.position.frame.orientation
     return PlacementState(
@@ -173,7 +176,7 @@ def dat_landscape(world: dat.DatWorld, server: bool, mode, timer: PhysicsTimer) 
     for record in world.cell:
         if record.kind != "CellLandblock":
             continue
-        c = cell_dat.read_from_dat(record.id, CellLandblock)
+        c = db_obj.get_cell_landblock(cell_dat, record.id)
         heights, terrain = tuple(c.height), tuple(c.terrain)
         landblocks.append(Landblock(c.id, heights, terrain) if heights != NO_TERRAIN or terrain != NO_TERRAIN
                           else Landblock(c.id, has_terrain=False))
@@ -466,8 +469,24 @@ def tick_state(mover: PhysicsObj, updated: bool) -> TickState:
     )
 
 
+@harness("the physics calls of Player.UpdatePlayerPosition for a requested position that moves, as the oracle's facade makes them")
+def update_player_position(mover: PhysicsObj, request_pos: Position, location_cell: int, lscape: LScape, trace):
+    """The legacy (non-FastTick) path: LScape.get_landcell of the request's cell (none: no update),
+    set_request_pos(origin, orientation, that cell, `location_cell`: the cell of the Player's Location,
+    the last position update_object_server accepted or where the mover entered), update_object_server(),
+    and a mover left in no cell put in that cell. Returns (updated, the Location's cell after it)."""
+    cur_cell = lscape.get_landcell(request_pos.obj_cell_id)
+    if cur_cell is None:
+        return False, location_cell
+    mover.set_request_pos(request_pos.frame.origin, request_pos.frame.orientation, cur_cell, location_cell, lscape)
+    success = mover.update_object_server(True, lscape, trace)
+    if mover.cur_cell is None and cur_cell.id >> 16 != 0x18A:
+        mover.cur_cell = cur_cell
+    return success, request_pos.obj_cell_id if success else location_cell
+
+
 @anchor(None, "PhysicsObj.cs:update_object", "the tick scene driver: per step the inputs, the clock, then "
-        "update_object or the legacy player path (update_object_server's body)")
+        "update_object or the legacy player path (Player.UpdatePlayerPosition's physics calls)")
 def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LScape, trace) -> tuple[TickState, ...]:
     """Per step: the inputs (the clock still at the previous tick's time), the clock set to the
     step's time (Ticks.times()), the driver, then the mover read back. An exception in a tick is
@@ -475,6 +494,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
     ticks = scene.ticks
     mode = lscape.mode
     states = []
+    location_cell = mover.position.obj_cell_id  # where it entered: its WorldObject's Location (SyncLocation)
     for index, (step, time) in enumerate(zip(ticks.steps, ticks.times())):
         if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
             trace.recorder.at_tick(index)
@@ -484,8 +504,8 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             if ticks.driver == "update_object":
                 updated = mover.update_object(lscape, trace)
             else:
-                mover.request_pos = Position.from_record(step.request_pos, mode)
-                updated = mover.update_object_server(True, lscape, trace)
+                updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),
+                                                                location_cell, lscape, trace)
         except Exception as e:
             states.append(TickState(error=verdict(e)))
             break

@@ -281,7 +281,10 @@ def draw_building(draw, spheres, step_heights, policy: str | None = None) -> Sce
         px = to_f32(draw(st.sampled_from((0.5, 0.25, 0.9))) * vest.length)
         p = tuple(to_f32(c) for c in house_point(d, px, 0.0, 0.0))
         begin_pos = _outdoor_position(home, p)
-        placement = Placement(draw(st.sampled_from((0, int(SetPositionFlags.Slide)))), draw(dr.BOOLEANS))
+        if draw(dr.PLACEMENT_VIAS) == "enter_world":
+            placement = Placement(0, draw(dr.BOOLEANS), "enter_world")
+        else:
+            placement = Placement(draw(st.sampled_from((0, int(SetPositionFlags.Slide)))), draw(dr.BOOLEANS))
         mode = draw(dr.ENGINE_MODES)
         contact = None
     mover = Mover(spheres=tuple(spheres), begin=begin_pos, end=end_pos, step_up_height=up, step_down_height=down,

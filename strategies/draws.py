@@ -67,6 +67,9 @@ BOOLEANS = eager(st.booleans())
 # PhysicsEngine.Server for the kinds whose mover changes cell through PhysicsObj.change_cell (ticks, placements):
 # ACE's server three times in four, the client's branches the fourth (a client port wants those)
 ENGINE_MODES = eager(st.sampled_from(("server", "server", "server", "client")))
+# how a placed mover is placed: as a server's WorldObject enters its landblock (enter_world) one time in two, else
+# by SetPosition with drawn flags (a teleport's or a restore's placement, whose flags reach the no-Slide branches)
+PLACEMENT_VIAS = eager(st.sampled_from(("enter_world", "set_position")))
 
 
 def label(name: str) -> int:

@@ -75,6 +75,7 @@ SLIDE = st.sampled_from((False, True))
 SLIDE_RARELY = st.sampled_from((False, False, False, True))
 SLIDE_MOSTLY = st.sampled_from((False, True, True, True))
 GET_CELL = st.sampled_from((False, True))
+
 EXTRA_FLAGS = st.sampled_from((0, 0, int(SetPositionFlags.Placement), int(SetPositionFlags.Teleport),
                                int(SetPositionFlags.DontCreateCells),
                                int(SetPositionFlags.Placement | SetPositionFlags.SendPositionEvent)))
@@ -312,8 +313,11 @@ def with_placement(draw, scene: Scene) -> Scene:
         if solid is not None:
             objects = scene.objects + (solid,)
             slides = SLIDE_MOSTLY
-    flags = draw(EXTRA_FLAGS) | (int(SetPositionFlags.Slide) if draw(slides) else 0)
-    placement = Placement(flags, draw(GET_CELL))
+    if draw(dr.PLACEMENT_VIAS) == "enter_world":
+        placement = Placement(0, draw(GET_CELL), "enter_world")
+    else:
+        flags = draw(EXTRA_FLAGS) | (int(SetPositionFlags.Slide) if draw(slides) else 0)
+        placement = Placement(flags, draw(GET_CELL))
     state = m.state | (int(PhysicsState.ReportCollisions) if draw(REPORTS) else 0)
     return replace(scene, engine_mode=draw(dr.ENGINE_MODES), objects=objects,
                    mover=replace(m, begin=begin, placement=placement, state=state))
@@ -329,7 +333,10 @@ def placement_table(scenes) -> dict[str, float]:
         if p is None:
             continue
         counts["placed"] += 1
-        counts["placed, Slide" if p.flags & SetPositionFlags.Slide else "placed, no Slide"] += 1
+        if p.via == "enter_world":
+            counts["placed, enter_world"] += 1
+        else:
+            counts["placed, Slide" if p.flags & SetPositionFlags.Slide else "placed, no Slide"] += 1
         counts["placed, get_cell" if p.get_cell else "placed, cell as given"] += 1
         if s.mover.state & PhysicsState.ReportCollisions:
             counts["placed, ReportCollisions"] += 1

@@ -15,7 +15,7 @@ FACADE = (ROOT / "oracle" / "facade" / "Facade.cs").read_text()
 # The facade's methods that run a sequence of ACE's calls where a running server's own caller
 # (WorldObject, Player, Landblock, LandblockManager, WorldManager) would: each stands for a decision.
 SERVER_SEQUENCES = ("LoadServerLandblock", "MakeServerLandblock", "ClearAdjacents", "InstallDat", "SetClock",
-                    "Place", "UpdateObjectServer", "Jump", "BuildStatic", "BuildMover", "RemoveStatics",
+                    "Place", "UpdatePlayerPosition", "MakePlayer", "PrepareServerPlayer", "SetServerPlayerPhysics", "Jump", "BuildStatic", "BuildMover", "RemoveStatics",
                     "QuietLog4netStartup")
 
 
@@ -46,8 +46,9 @@ def test_every_member_the_facade_reaches_by_reflection_is_named_in_the_audit_tab
 def test_every_object_the_facade_makes_without_its_constructor_is_named_in_the_audit_table():
     table = audit_table()
     made = re.findall(r"GetUninitializedObject\(", FACADE)
-    assert len(made) == 2  # the DAT databases (InstallDat) and the server Landblock (MakeServerLandblock)
+    assert len(made) == 3  # the DAT databases (InstallDat), the server Landblock (MakeServerLandblock), a Player
     assert "PortalDatDatabase" in table and "CellDatDatabase" in table
+    assert "otherwise uninitialized" in table  # a build's Player without a parameterless constructor (MakePlayer)
     assert "server `Landblock`" in table and "without its DAT-reading constructor" in table
 
 

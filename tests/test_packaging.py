@@ -15,7 +15,8 @@ ROOT = Path(__file__).parent.parent
 MAPPED = {"acconform": "acconform", "acconform.port": "port", "acconform.oracle": "oracle", "acconform.strategies": "strategies"}
 DATA_PACKAGES = {"acconform.corpus": "tests/data/corpus"}  # data only, no __init__.py
 # data-only directories inside packages, listed so setuptools does not warn that it skips them
-DATA_SUBPACKAGES = {"acconform.corpus.mono", "acconform.corpus.coreclr", "acconform.oracle.facade"}
+DATA_SUBPACKAGES = {"acconform.corpus.mono", "acconform.corpus.coreclr", "acconform.oracle.facade",
+                    "acconform.oracle.instrument"}
 
 
 def test_every_package_directory_is_listed_in_pyproject():
@@ -96,6 +97,7 @@ def test_a_wheel_installed_acconform_runs_check_on_the_corpus_it_carries(tmp_pat
                     "-w", str(out), str(ROOT)], check=True, cwd=tmp_path)
     wheel = next(out.glob("acconform-*.whl"))
     names = zipfile.ZipFile(wheel).namelist()
+    assert "acconform/oracle/instrument/Instrument.cs" in names and "acconform/oracle/instrument/Recorder.cs" in names
     assert "acconform/oracle/facade/Facade.cs" in names
     for runtime in ("mono", "coreclr"):  # both runtimes' corpora
         assert sum(n.startswith(f"acconform/corpus/{runtime}/") and n.endswith(".jsonl.gz") for n in names) >= 3

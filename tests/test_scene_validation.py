@@ -90,8 +90,8 @@ def test_unknown_flag_names_are_refused_listing_the_known_ones():
 
 
 def test_an_unknown_format_version_is_refused():
-    assert "format: unknown format version '6' (this acconform reads acconform.scene/5)" in refused(
-        scene_with(lambda d: d.__setitem__("format", "acconform.scene/6")))
+    assert "format: unknown format version '7' (this acconform reads acconform.scene/6)" in refused(
+        scene_with(lambda d: d.__setitem__("format", "acconform.scene/7")))
     assert "unknown format 'somethingelse/1'" in refused(scene_with(lambda d: d.__setitem__("format", "somethingelse/1")))
 
 
@@ -182,7 +182,7 @@ PLACED = json.loads((Path(__file__).parent.parent / "examples" / "placement_wall
 
 
 @pytest.mark.parametrize("mutate, field, says", [
-    (lambda d: d["mover"]["placement"].update(flags=["Slide", "Scatter"]), "mover.placement.flags", "WorldObject"),
+    (lambda d: d["mover"]["placement"].update(flags=["Slide", "Scatter"]), "mover.placement.flags", "ThreadSafeRandom"),
     (lambda d: d["mover"]["placement"].update(flags=["NoSuchFlag"]), "mover.placement.flags", "NoSuchFlag"),
     (lambda d: d["mover"]["placement"].update(get_cell="yes"), "mover.placement.get_cell", "true or false"),
     (lambda d: d["mover"]["placement"].update(where="here"), "mover.placement", "where"),

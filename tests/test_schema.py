@@ -37,7 +37,7 @@ def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(g
     scene, _ = generated
     props = scene["properties"]
     assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2", "acconform.scene/3", "acconform.scene/4",
-                                        "acconform.scene/5"]}
+                                        "acconform.scene/5", "acconform.scene/6"]}
     assert {"environments", "env_cells"} <= set(props) and not {"environments", "env_cells"} & set(scene["required"])
     landblock = props["landblocks"]["items"]
     assert landblock["required"] == ["id"] and {"heights", "terrain"} <= set(landblock["properties"])

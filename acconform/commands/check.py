@@ -168,7 +168,8 @@ def _campaign(args, port, kinds, workers) -> int:
         try:
             from ..explain import triage
 
-            triage(result.found, port, args.mode, runtime, None if args.no_progress else _say)
+            triage(result.found, port, args.mode, runtime, None if args.no_progress else _say,
+                   _traced_ace(args, oracle, None if args.no_progress else _say))
         except KeyboardInterrupt:  # the cases are written: the summary says what was found, ungrouped
             result.interrupted = True
     bad = bad + result.unreadable
@@ -261,7 +262,9 @@ def console_summary(result, bad, keep_going: bool) -> list[str]:
     out = [f"{head}{result.cases} cases in {result.elapsed:.1f} s ({rate:.0f} cases/s): {result.compared} compared, "
            f"{skipped} skipped, {_plural(len(result.found), 'difference')}"]
     if result.skipped:
-        out.append(f"skipped {_plural(skipped, 'scene')} the implementation cannot run: "
+        ace = [why.startswith("this ACE ") for why in result.skipped]  # LiveOracle.unsupported's reasons
+        who = "this ACE" if all(ace) else "the implementation or this ACE" if any(ace) else "the implementation"
+        out.append(f"skipped {_plural(skipped, 'scene')} {who} cannot run: "
                    + ", ".join(f"{why} x{n}" for why, n in result.skipped.most_common()))
     if result.shrink_runs:
         out.append(f"shrinking ran {_plural(result.shrink_runs, 'more scene')} (not counted above)")
@@ -280,6 +283,8 @@ def console_summary(result, bad, keep_going: bool) -> list[str]:
         by_kind[scene_kind(f.case.scene)] += 1
         groups.setdefault(f.group_key, []).append(f)
     traced = any(f.group for f in result.found)
+    if result.ace_note:  # the ACE found is not the one the port follows: its own changes show here too
+        out.append(result.ace_note)
     out.append(f"{_plural(len(result.found), 'difference')}, {len(groups)} distinct "
                + ("first divergence" + ("s" if len(groups) != 1 else "") if traced else
                   "set" + ("s" if len(groups) != 1 else "") + " of differing fields (the implementation gives no trace)"))
@@ -365,3 +370,20 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
                                 f"{corpus} holds no scenes of kinds {','.join(run_kinds)} (record some with `acconform "
                                 f"record` where ACE is available)")
     return oracle, oracle.scenes(entries), oracle.bad
+
+
+def _traced_ace(args, oracle, say):
+    """The instrumented ACE (oracle/instrumented.py) when the campaign ran against a live ACE: the triage
+    then compares with ACE's own trace; None when ACE is not live or cannot be instrumented here (the
+    triage then uses the port's trace, as without ACE)."""
+    if getattr(oracle, "name", None) != "live":
+        return None
+    from ..errors import OracleUnavailable
+    from ..oracle.instrumented import TracedAce
+
+    try:
+        return TracedAce(args.ace, args.runtime, say)
+    except OracleUnavailable as e:
+        if say is not None:
+            say(f"triage against the port's trace: no instrumented ACE ({e})")
+        return None

@@ -7,10 +7,11 @@ trace of a run that ends as ACE's does. Prints the first divergence -- tick, ste
 (ACE's method and the retail name), field, both values and the ulps between them -- and the few
 records before it on both sides, labelled "known" when a registered ACE-versus-retail divergence
 (docs/divergences.md) is where it falls. --html FILE writes the same as one page with a top and a
-side view of the scene. Where it is the built-in port that differs from ACE, the reference is ACE's own
-stepped trace (a live ACE configured: the facade drives FindTransitionalPosition's loop through ACE's
-public methods, checked to end in ACE's own outcome) at its grain, each step. Exit 1 while the case
-still fails, 0 when it no longer does, 2 for bad input.
+side view of the scene. With a live ACE configured, the reference is ACE's own trace at the port's
+grain, from the instrumented ACE (oracle/instrumented.py; docs/oracle.md "The instrumented ACE"),
+for the port and for an implementation alike; where ACE cannot be instrumented here, the port is
+explained against ACE's stepped trace (the facade drives FindTransitionalPosition's loop, each
+step). Exit 1 while the case still fails, 0 when it no longer does, 2 for bad input.
 """
 
 from __future__ import annotations
@@ -53,11 +54,22 @@ def explain_case(args, doc, mode):
         ace, source = ace_answer(args, doc)
         from ..oracle import live_configured
 
-        live = None
-        if live_configured(args.ace) and getattr(backend, "command", None) is None:  # ACE's own steps
-            from ..oracle import require_live
+        live = traced = None
+        if live_configured(args.ace):  # ACE's own trace, from the instrumented ACE
+            from ..errors import OracleUnavailable
+            from ..oracle.instrumented import TracedAce
 
-            live = require_live(args.ace, args.runtime)
+            traced = TracedAce(args.ace, args.runtime)
+            try:
+                return explain(doc, backend, mode, runtime, ace, source, None, traced), said, runtime
+            except OracleUnavailable as e:  # no instrumented ACE here: as before, ACE's own steps for the port
+                said = said + [f"no instrumented ACE ({e}); ACE's stepped trace instead"]
+            finally:
+                traced.close()
+            if getattr(backend, "command", None) is None:
+                from ..oracle import require_live
+
+                live = require_live(args.ace, args.runtime)
         return explain(doc, backend, mode, runtime, ace, source, live), said, runtime
     finally:
         getattr(backend, "close", lambda: None)()

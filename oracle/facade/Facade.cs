@@ -21,6 +21,7 @@ using System.Text;
 using ACE.DatLoader;
 using ACE.DatLoader.FileTypes;
 using LandblockId = ACE.Entity.LandblockId;
+using ObjectGuid = ACE.Entity.ObjectGuid;
 using DatGfxObj = ACE.DatLoader.FileTypes.GfxObj;
 using ACE.Entity.Enum;
 using ACE.Server.Physics;
@@ -36,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 8;
+        public const int PackVersion = 9;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -49,7 +50,6 @@ namespace Acconform.Oracle
         static readonly List<uint> sceneRecords = new List<uint>();  // DAT ids this scene put in the portal FileCache
         static ConcurrentDictionary<uint, FileType> portalFiles;  // DatManager.PortalDat.FileCache
         static ConcurrentDictionary<uint, FileType> cellFiles;  // DatManager.CellDat.FileCache
-        static bool sceneHasCellRecords;  // without any, ACE cannot load an EnvCell (ReadFromDat throws first)
         // per static, in scene order: its cell id and DAT id, and the PhysicsObj placed outdoors (null for a
         // static in an EnvCell: ACE makes that one when it loads the cell, EnvCell.init_static_objects)
         static readonly List<uint> staticCellIds = new List<uint>();
@@ -58,8 +58,9 @@ namespace Acconform.Oracle
         // for each static, in scene order: the ids of PhysicsObj.ShadowObjects (null until read after the transition)
         static List<List<uint>> staticCells;
 
-        // the scene's placement (mover.placement): its SetPositionFlags and whether Position.GetCell runs first
-        static bool hasPlacement, placementGetCell;
+        // the scene's placement (mover.placement): through enter_world or SetPosition (with its SetPositionFlags), and
+        // whether Position.GetCell runs first
+        static bool hasPlacement, placementEnterWorld, placementGetCell;
         static int placementFlags;
         // the mover once ACE's placement ran (it leaves its cells after the scene), and what the placement left
         static PhysicsObj placedMover;
@@ -85,6 +86,8 @@ namespace Acconform.Oracle
         static double tickStart;
         static readonly List<TickStep> tickSteps = new List<TickStep>();
         static int ticksRun;  // -1: not a tick scene (or an error before the first tick)
+        static ACE.Server.WorldObjects.Player moverPlayer;  // the mover's WorldObject (the last scene's until the next)
+        static uint locationCell;  // the cell of the mover's WorldObject.Location (Player.UpdatePlayerPosition)
         static readonly MemoryStream tickStream = new MemoryStream(4096);
         static readonly BinaryWriter tickWriter = new BinaryWriter(tickStream);
         static Action<double> setPortalYearTicks;
@@ -268,6 +271,7 @@ namespace Acconform.Oracle
                 {
                     // a tick scene: ACE's per-tick update moves the mover (it enters cells: it leaves them after the scene)
                     placedMover = obj;
+                    locationCell = obj.Position.ObjCellID;  // where it entered: its Location (SyncLocation)
                     RunTicks(obj);
                     w.Write((byte)3);
                     w.Write(0.0);
@@ -311,6 +315,10 @@ namespace Acconform.Oracle
         }
 
         // ------------------------------------------------------------------ ticks
+        /// <summary>Told each tick's index as it starts, and -1 after the last (the instrumented ACE's trace recorder; null
+        /// otherwise).</summary>
+        public static Action<int> TickStarted;
+
         /// <summary>Timers.PortalYearTicks, the clock PhysicsTimer.CurrentTime reads, through its internal setter
         /// (reflection): a tick scene's clock is scene data, never the wall clock.</summary>
         static void SetClock(double t)
@@ -358,12 +366,13 @@ namespace Acconform.Oracle
             ticksRun = 0;
             foreach (var step in tickSteps)
             {
+                TickStarted?.Invoke(ticksRun);
                 bool updated;
                 try
                 {
                     ApplyInputs(obj, step);
                     SetClock(step.Time);
-                    updated = tickDriver == 0 ? obj.update_object() : UpdateObjectServer(obj, step.RequestPos);
+                    updated = tickDriver == 0 ? obj.update_object() : UpdatePlayerPosition(obj, step.RequestPos);
                 }
                 catch (Exception e)
                 {
@@ -378,6 +387,7 @@ namespace Acconform.Oracle
                 WriteTick(obj, updated);
                 ticksRun++;
             }
+            TickStarted?.Invoke(-1);  // the ticks are over
         }
 
         static void ApplyInputs(PhysicsObj obj, TickStep s)
@@ -411,20 +421,140 @@ namespace Acconform.Oracle
             obj.IsAnimating = false;
         }
 
-        /// <summary>The legacy player path: RequestPos = the step's, then the body of update_object_server(forcePos:
-        /// true) as ACE runs it for a player's WorldObject that is not teleporting (the mover has no WorldObject, so
-        /// ACE's own method would skip UpdateObjectInternalServer).</summary>
-        static bool UpdateObjectServer(PhysicsObj obj, ACE.Server.Physics.Common.Position requestPos)
+        /// <summary>The physics calls of Player.UpdatePlayerPosition for a requested position that moves (the legacy,
+        /// non-FastTick path): LScape.get_landcell of its cell, then ACE's set_request_pos(origin, orientation, that
+        /// cell, the cell of the player's Location: the last position update_object_server accepted, or where the
+        /// mover entered) and update_object_server(); a mover left in no cell is put in that cell. A cell ACE cannot
+        /// find makes no update (false).</summary>
+        static bool UpdatePlayerPosition(PhysicsObj obj, ACE.Server.Physics.Common.Position requestPos)
         {
-            obj.RequestPos = new ACE.Server.Physics.Common.Position(requestPos);
-            var deltaTime = PhysicsTimer.CurrentTime - obj.UpdateTime;
-            var success = obj.UpdateObjectInternalServer(deltaTime);
+            var curCell = LScape.get_landcell(requestPos.ObjCellID);
+            if (curCell == null)
+                return false;
+            obj.set_request_pos(requestPos.Frame.Origin, requestPos.Frame.Orientation, curCell, locationCell);
+            var success = obj.update_object_server();
+            if (obj.CurCell == null && curCell.ID >> 16 != 0x18A)
+                obj.CurCell = curCell;
             if (success)
-                obj.set_current_pos(obj.RequestPos);
-            if ((obj.TransientState & TransientStateFlags.Contact) != 0)
-                obj.CachedVelocity = Vector3.Zero;
-            obj.UpdateTime = PhysicsTimer.CurrentTime;
+                locationCell = requestPos.ObjCellID;
             return success;
+        }
+
+        /// <summary>The mover's Player. ACE's server makes it from the character's Biota; a build whose Player has no
+        /// constructor without arguments (ACE's own, built by ACE.Server.csproj) gets one without a character's database
+        /// record: an uninitialized Player on which Creature's constructor runs with a fresh Biota (the mover's id,
+        /// WeenieType Creature, weenie 1, no properties), as ACE's Player(Biota, ...) runs it before its own body (which
+        /// reads the authentication database), then Player's field initializer the physics reads (LastContact = true).
+        /// A build with neither constructor gets the uninitialized Player with LastContact alone.</summary>
+        static ACE.Server.WorldObjects.Player MakePlayer(uint moverId)
+        {
+            var t = typeof(ACE.Server.WorldObjects.Player);
+            var ctor = t.GetConstructor(AnyInstance, null, Type.EmptyTypes, null);
+            serverPlayer = false;
+            if (ctor != null)
+                return (ACE.Server.WorldObjects.Player)ctor.Invoke(null);
+            var player = (ACE.Server.WorldObjects.Player)FormatterServices.GetUninitializedObject(t);
+            ConstructorInfo creatureCtor = null;
+            foreach (var c in typeof(ACE.Server.WorldObjects.Creature).GetConstructors(AnyInstance))
+                if (c.GetParameters().Length == 1 && c.GetParameters()[0].ParameterType.Name == "Biota") creatureCtor = c;
+            if (creatureCtor != null)
+            {
+                PrepareServerPlayer();
+                var biotaType = creatureCtor.GetParameters()[0].ParameterType;
+                var biota = Activator.CreateInstance(biotaType);
+                Need(biotaType.GetProperty("Id"), "Id").SetValue(biota, moverId);
+                var weenieType = Need(biotaType.GetProperty("WeenieType"), "WeenieType");
+                weenieType.SetValue(biota, Enum.Parse(weenieType.PropertyType, "Creature"));
+                Need(biotaType.GetProperty("WeenieClassId"), "WeenieClassId").SetValue(biota, 1u);
+                var ints = Need(biotaType.GetProperty("PropertiesInt"), "PropertiesInt");
+                ints.SetValue(biota, Activator.CreateInstance(typeof(Dictionary<,>).MakeGenericType(ints.PropertyType.GetGenericArguments())));
+                creatureCtor.Invoke(player, new[] { biota });
+                // immortal, as a sentinel's @neversaydie makes a server's Player: an environment collision fast enough to
+                // hurt runs HandleFallingDamage, whose TakeDamage_Falling then returns at once (Health, chat and death
+                // reach the Player's Session, which this Player has none of; none of them is physics)
+                Need(typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("Invincible"), "Invincible").SetValue(player, true);
+                serverPlayer = true;
+            }
+            player.LastContact = true;
+            return player;
+        }
+
+        /// <summary>A member the full build's Player needs (MakePlayer and the two below), or a MissingMemberException naming it.</summary>
+        static T Need<T>(T member, string name) where T : MemberInfo
+        {
+            if (member == null)
+                throw new MissingMemberException("this ACE build's Player has no parameterless constructor, and making one without a database needs the member " + name + ", which the build lacks");
+            return member;
+        }
+
+        static readonly BindingFlags AnyInstance = BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic;
+        static bool serverPlayer;  // the mover's Player was made by Creature's constructor (MakePlayer)
+        static bool serverPlayerPrepared;
+
+        /// <summary>What Creature's constructor and Player's static constructor read from a server's databases, given
+        /// once. The world database: Player's static fields (Player_Location.cs) take the destinations of the portal
+        /// weenies named below from DatabaseManager.World.GetCachedWeenie, with fixed Positions when it finds none; its
+        /// private caches get "no such weenie" for each (name to class id 0xFFFFFFFF, that id to null), so no database is
+        /// asked. The portal DAT: the vitals' formulas (SecondaryAttributeTable, read by CreatureVital), the skills'
+        /// formulas for Jump and Run (SkillTable, read by GetCreatureSkill when the physics asks InqJumpVelocity and
+        /// InqRunRate; the retail DAT's) and an empty SpellTable (read by the enchantment code), each on the facade's
+        /// PortalDatDatabase, which has no DAT file to read them from.</summary>
+        static void PrepareServerPlayer()
+        {
+            if (serverPlayerPrepared) return;
+            Type databaseManager = null;
+            foreach (var name in typeof(ACE.Server.WorldObjects.Player).Assembly.GetReferencedAssemblies())
+                if (name.Name == "ACE.Database") databaseManager = Assembly.Load(name).GetType("ACE.Database.DatabaseManager");
+            if (databaseManager == null)
+                throw new InvalidOperationException("the ACE build's Player has no parameterless constructor and no ACE.Database.DatabaseManager was found");
+            var world = Need(databaseManager.GetProperty("World", BindingFlags.Public | BindingFlags.Static), "World").GetValue(null);
+            var names = (System.Collections.IDictionary)Need(world.GetType().GetField("weenieClassNameToClassIdCache", AnyInstance), "weenieClassNameToClassIdCache").GetValue(world);
+            var weenies = (System.Collections.IDictionary)Need(world.GetType().GetField("weenieCache", AnyInstance), "weenieCache").GetValue(world);
+            foreach (var portal in new[] { "portalmarketplace", "portalpkarenanew1", "portalpkarenanew2", "portalpkarenanew3",
+                                           "portalpkarenanew4", "portalpkarenanew5", "portalpklarenanew1", "portalpklarenanew2",
+                                           "portalpklarenanew3", "portalpklarenanew4", "portalpklarenanew5" })
+                names[portal] = 0xFFFFFFFFu;
+            weenies[0xFFFFFFFFu] = null;
+
+            var portalDat = DatManager.PortalDat;
+            var fields = BindingFlags.NonPublic | BindingFlags.Instance;
+            var attributes = Need(typeof(PortalDatDatabase).GetField("<SecondaryAttributeTable>k__BackingField", fields), "<SecondaryAttributeTable>k__BackingField");
+            if (attributes.GetValue(portalDat) == null) attributes.SetValue(portalDat, Activator.CreateInstance(attributes.FieldType));
+            var spells = Need(typeof(PortalDatDatabase).GetField("<SpellTable>k__BackingField", fields), "<SpellTable>k__BackingField");
+            if (spells.GetValue(portalDat) == null) spells.SetValue(portalDat, Activator.CreateInstance(spells.FieldType));
+            var skills = Need(typeof(PortalDatDatabase).GetField("<SkillTable>k__BackingField", fields), "<SkillTable>k__BackingField");
+            if (skills.GetValue(portalDat) == null)
+            {
+                var table = Activator.CreateInstance(skills.FieldType);
+                var hash = Need(skills.FieldType.GetField("SkillBaseHash"), "SkillBaseHash");
+                var skillBase = hash.FieldType.GetGenericArguments()[1];
+                ConstructorInfo baseCtor = null;
+                foreach (var c in skillBase.GetConstructors()) if (c.GetParameters().Length == 1) baseCtor = c;
+                var formula = baseCtor.GetParameters()[0].ParameterType;
+                ConstructorInfo formulaCtor = null;
+                foreach (var c in formula.GetConstructors()) if (c.GetParameters().Length == 3) formulaCtor = c;
+                var attr = formulaCtor.GetParameters()[0].ParameterType;
+                var byId = (System.Collections.IDictionary)hash.GetValue(table);
+                // (attribute 1, attribute 2, divisor): Jump (Strength + Coordination) / 2, Run Quickness / 1
+                byId[(uint)Skill.Jump] = baseCtor.Invoke(new[] { formulaCtor.Invoke(new[] { Enum.Parse(attr, "Strength"), Enum.Parse(attr, "Coordination"), (object)2u }) });
+                byId[(uint)Skill.Run] = baseCtor.Invoke(new[] { formulaCtor.Invoke(new[] { Enum.Parse(attr, "Quickness"), Enum.Parse(attr, "Undef"), (object)1u }) });
+                skills.SetValue(portalDat, table);
+            }
+            serverPlayerPrepared = true;
+        }
+
+        /// <summary>On a Player made by MakePlayer's Creature constructor, what a server's WorldObject has when its
+        /// PhysicsObj enters the world: its PhysicsObj (WorldObject.InitPhysicsObj sets it; Player.HandleFallingDamage
+        /// reads its Velocity) and its Location (what AddPhysicsObj's caller gives it: the begin position; enter_world's
+        /// enter_cell_server copies the physics position into it, WorldObject.SyncLocation).</summary>
+        static void SetServerPlayerPhysics(ACE.Server.WorldObjects.Player player, PhysicsObj obj, ACE.Server.Physics.Common.Position begin)
+        {
+            if (!serverPlayer) return;
+            var wo = typeof(ACE.Server.WorldObjects.WorldObject);
+            Need(wo.GetProperty("PhysicsObj", AnyInstance), "PhysicsObj").GetSetMethod(true).Invoke(player, new object[] { obj });
+            var location = Need(wo.GetProperty("Location", AnyInstance), "Location");
+            var locationCtor = location.PropertyType.GetConstructor(new[] { typeof(uint), typeof(Vector3), typeof(Quaternion) });
+            location.SetValue(player, locationCtor.Invoke(new object[] { begin.ObjCellID, begin.Frame.Origin, begin.Frame.Orientation }));
         }
 
         /// <summary>byte 0, then the TickState fields (acconform.outcome.TickState, in order).</summary>
@@ -470,27 +600,33 @@ namespace Acconform.Oracle
             foreach (var id in placedShadowCells) w.Write(id);
         }
 
-        /// <summary>The mover placed by ACE: the begin position (its cell id first replaced by ACE's Position.GetCell
-        /// when the scene asks), then PhysicsObj.SetPosition's body -- MakeTransition, InitObject(obj,
-        /// ObjectInfoState.Default), InitSphere as SetPosition does, CleanupTransition -- around ACE's
-        /// SetPositionInternal(Position, SetPosition, Transition): the call SetPositionInternal(SetPosition, Transition)
-        /// makes for an object whose WorldObject has no ScatterPos. (SetPosition itself answers GeneralFailure for a
-        /// PhysicsObj without a WorldObject, and the mover's WeenieObj is WeenieObject.DummyObject.)</summary>
+        /// <summary>The mover placed by ACE. enter_world: the physics calls of WorldObject.AddPhysicsObj for a
+        /// Location at the begin position (its cell id first replaced by ACE's Position.GetCell when the scene asks, as
+        /// AdjustDungeon does): LScape.get_landcell of its cell (none: the mover is not entered, GeneralFailure), the
+        /// mover's Position.ObjCellID set to that cell's id, then ACE's PhysicsObj.enter_world(Position(cell, frame));
+        /// its bool is the result, OK or GeneralFailure. Otherwise ACE's public PhysicsObj.SetPosition(SetPosition(pos,
+        /// flags)), as a teleport or a restore places a WorldObject.</summary>
         static void Place(PhysicsObj obj, ACE.Server.Physics.Common.Position begin)
         {
             var pos = new ACE.Server.Physics.Common.Position(begin);
             if (placementGetCell)
                 pos.ObjCellID = pos.GetCell(pos.ObjCellID);
-            var setPos = new SetPosition(pos, (SetPositionFlags)placementFlags);
-            var transition = Transition.MakeTransition();
-            transition.InitObject(obj, ObjectInfoState.Default);
-            if (obj.PartArray != null && obj.PartArray.GetNumSphere() != 0)
-                transition.InitSphere(obj.PartArray.GetNumSphere(), obj.PartArray.GetSphere(), obj.Scale);
-            else
-                transition.InitSphere(1, PhysicsGlobals.DummySphere, 1.0f);
             placedMover = obj;
-            var result = obj.SetPositionInternal(pos, setPos, transition);
-            transition.CleanupTransition();
+            SetPositionError result;
+            if (placementEnterWorld)
+            {
+                var cell = LScape.get_landcell(pos.ObjCellID);
+                if (cell == null)
+                    result = SetPositionError.GeneralFailure;
+                else
+                {
+                    obj.Position.ObjCellID = cell.ID;
+                    var location = new ACE.Server.Physics.Common.Position(cell.ID, new AFrame(pos.Frame.Origin, pos.Frame.Orientation));
+                    result = obj.enter_world(location) ? SetPositionError.OK : SetPositionError.GeneralFailure;
+                }
+            }
+            else
+                result = obj.SetPosition(new SetPosition(pos, (SetPositionFlags)placementFlags));
 
             placed = true;
             placedResult = (int)result;
@@ -576,7 +712,7 @@ namespace Acconform.Oracle
                 obj.leave_cell(false);
             }
             sceneStatics.Clear();
-            if (!sceneHasCellRecords) return;
+            // the EnvCells the scene loaded: its own, or the empty ones ReadFromDat made for cell ids the scene lacks
             foreach (var lb in sceneLandblocks.Values)
             {
                 var indoor = new List<int>();
@@ -629,8 +765,8 @@ namespace Acconform.Oracle
         /// CellDatDatabase made without its file-reading constructor whose FileCache (the auto-property's backing
         /// field) is a fresh dictionary. ACE's DatDatabase.ReadFromDat looks there first, so records the facade puts
         /// there are what DBObj.GetGfxObj / GetSetup / GetEnvironment (portal) and GetEnvCell and AdjustCell's
-        /// LandblockInfo (cell) read; an id the scene has no record for meets the null file table (AllFiles) and
-        /// throws NullReferenceException. LandDefs' static constructor reads the region's height table from PortalDat
+        /// LandblockInfo (cell) read; for an id the scene has no record for, the file table (AllFiles) is empty, as a DAT
+        /// lacking the file: ReadFromDat logs it and caches and returns an empty record. LandDefs' static constructor reads the region's height table from PortalDat
         /// when one exists; it runs first, with none (the scene brings its own table).</summary>
         static void InstallDats()
         {
@@ -644,26 +780,36 @@ namespace Acconform.Oracle
         static void InstallDat(Type type, string backingField)
         {
             var db = FormatterServices.GetUninitializedObject(type);
-            typeof(DatDatabase).GetField("<FileCache>k__BackingField", BindingFlags.NonPublic | BindingFlags.Instance)
-                .SetValue(db, new ConcurrentDictionary<uint, FileType>());
+            var fields = BindingFlags.NonPublic | BindingFlags.Instance;
+            typeof(DatDatabase).GetField("<FileCache>k__BackingField", fields).SetValue(db, new ConcurrentDictionary<uint, FileType>());
+            // an empty file table: GetReaderForFile finds no file for an id the scene lacks, and ReadFromDat gives new T()
+            typeof(DatDatabase).GetField("<AllFiles>k__BackingField", fields).SetValue(db, new Dictionary<uint, DatFile>());
+            typeof(DatDatabase).GetField("<Header>k__BackingField", fields).SetValue(db, new DatDatabaseHeader());
             typeof(DatManager).GetField(backingField, BindingFlags.NonPublic | BindingFlags.Static).SetValue(null, db);
         }
 
         // ------------------------------------------------------------------ global state
+        /// <summary>Empties one of ACE's static tables whatever collection type the ACE build gives it (ACE changed
+        /// some from Dictionary to ConcurrentDictionary over the years; both are an IDictionary).</summary>
+        static void ClearIfAny(System.Collections.IDictionary table)
+        {
+            if (table.Count > 0) table.Clear();
+        }
+
         public static void Reset(bool server)
         {
             var eng = new PhysicsEngine(new ObjectMaint(), new SmartBox());  // sets PhysicsEngine.Instance
             eng.Server = true;  // landblocks are built in server mode (LandblockStruct.ConstructUVs reads DATs)
             if (!LScape.Landblocks.IsEmpty) LScape.Landblocks.Clear();
-            if (!AdjustCell.AdjustCells.IsEmpty) AdjustCell.AdjustCells.Clear();
+            ClearIfAny(AdjustCell.AdjustCells);  // a ConcurrentDictionary since ACE #2727 (2020-10), a Dictionary before
             if (VertexCache.Vertices.Count > 0) VertexCache.Vertices.Clear();
             if (PolygonCache.Polygons.Count > 0) PolygonCache.Polygons.Clear();
             if (BSPCache.BSPTrees.Count > 0) BSPCache.BSPTrees.Clear();
             if (!GfxObjCache.GfxObjs.IsEmpty) GfxObjCache.GfxObjs.Clear();  // keyed by DAT id: ids repeat across scenes
-            foreach (var id in sceneRecords) portalFiles.TryRemove(id, out _);
+            // the scene's records and the empty ones ReadFromDat made for ids the scene lacks
+            if (!portalFiles.IsEmpty) portalFiles.Clear();
             sceneRecords.Clear();
-            if (sceneHasCellRecords) cellFiles.Clear();  // the scene's records and anything ReadFromDat cached
-            sceneHasCellRecords = false;
+            if (!cellFiles.IsEmpty) cellFiles.Clear();
             staticCellIds.Clear();
             staticDids.Clear();
             staticObjs.Clear();
@@ -729,10 +875,9 @@ namespace Acconform.Oracle
             serverLbId.SetValue(lb, id);
             var clb = new CellLandblock();
             clb.Unpack(new BinaryReader(new MemoryStream(buf, off, len, false)));
+            cellFiles[id.Raw | 0xFFFF] = clb;  // where the constructor's ReadFromDat<CellLandblock> keeps it
             serverLbCellLandblock.SetValue(lb, clb);
-            FileType info;
-            if (sceneHasCellRecords && cellFiles.TryGetValue((uint)id.Landblock << 16 | 0xFFFE, out info))
-                serverLbInfo.SetValue(lb, info);
+            serverLbInfo.SetValue(lb, DatManager.CellDat.ReadFromDat<LandblockInfo>((uint)id.Landblock << 16 | 0xFFFE));
             return lb;
         }
 
@@ -895,7 +1040,6 @@ namespace Acconform.Oracle
             if (kind >= 3)
             {
                 cellFiles[id] = file;
-                sceneHasCellRecords = true;
             }
             else
             {
@@ -962,12 +1106,21 @@ namespace Acconform.Oracle
             var sliding = V3(r);
             var begin = Pos(r);
             var end = Pos(r);
-            hasPlacement = r.ReadByte() != 0;
+            var placementKind = r.ReadByte();  // 0 none, 1 SetPosition, 2 enter_world
+            hasPlacement = placementKind != 0;
+            placementEnterWorld = placementKind == 2;
             placementFlags = r.ReadInt32();
             placementGetCell = r.ReadByte() != 0;
 
-            // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a dynamic object
-            var obj = PhysicsObj.makeObject(did, moverId, true);
+            // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a Creature's
+            // (a player's): makeAnimObject, its guid, the WeenieObject of its Player, its motion table (none), scale, state
+            var obj = new PhysicsObj();
+            obj.makeAnimObject(did, true);
+            obj.set_object_guid(new ObjectGuid(moverId));
+            moverPlayer = MakePlayer(moverId);  // held as a server's landblock holds its objects: WeenieObject keeps a WeakReference
+            obj.set_weenie_obj(new WeenieObject(moverPlayer));
+            SetServerPlayerPhysics(moverPlayer, obj, begin);
+            obj.SetMotionTableID(0);
             obj.SetScaleStatic(scale);
             obj.State = state;
             obj.TransientState = ts;

@@ -16,13 +16,15 @@ writes to a CellStruct, its polygons, vertices or BSP nodes (sharing one between
 unobservable: nothing compares polygons or nodes by identity). A record the run does not hold is
 never remembered. The drawing tree, which ACE builds and its physics never reads, is built when
 first read (a tenth of an indoor run's building); what would throw building it throws at once.
+Within a run two EnvCells of one structure share the CellStruct, where ACE builds one each; a
+traced run builds one each (anchors.remembers), so its trace holds every construction's records.
 """
 
 from __future__ import annotations
 
 from acconform.numerics import Mode
 
-from ..anchors import anchor, harness
+from ..anchors import anchor, harness, remembers
 from ..errors import KeyNotFoundException
 from ..geom.bsp import BoundingType, BSPTree
 from ..geom.polygon import Polygon
@@ -110,7 +112,13 @@ def _check_polygon_ids(root, polys: dict) -> None:
         stack.extend(child for child in (node.neg_node, node.pos_node) if child is not None)
 
 
+def _built_every_time(portal_dat, environment_id: int, cell_structure_id: int, cell_struct) -> CellStruct:
+    """``new CellStruct(cellStruct)``, nothing remembered (what a traced run runs)."""
+    return CellStruct.from_dat(cell_struct, portal_dat.mode)
+
+
 @harness("CellStruct(DatLoader CellStruct) for an Environment's structure, remembered across runs by the record's bytes")
+@remembers(_built_every_time)
 def remembered(portal_dat, environment_id: int, cell_structure_id: int, cell_struct) -> CellStruct:
     """``new CellStruct(cellStruct)`` for structure `cell_structure_id` of the Environment record
     `environment_id` of the run's portal DAT (see the module docstring)."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from acconform.flags import ObjectInfoState, PhysicsState, TransitionState
 from acconform.numerics import Mode, Vector3, cast_float, cs_floor, wrap_u32
-from acconform.port.anchors import anchor, harness
+from acconform.port.anchors import anchor, harness, remembers
 from acconform.port.bbox import BBox
 from acconform.port.frame import Position
 from acconform.port.geom.polygon import Polygon
@@ -52,7 +52,20 @@ class LandCell(SortCell):
     def __repr__(self) -> str:
         return f"LandCell(0x{self.id:08X}, water={self.water_type.name})"
 
+    def _terrain_poly(self, origin: Vector3) -> int:
+        """find_terrain_poly's loop: the index of the first triangle holding origin's (x, y), else -1."""
+        for i in range(2):
+            if self.polygons[i].point_in_poly2D(origin, Sidedness.Positive):
+                return i
+        return -1
+
+    def _find_terrain_poly_every_time(self, origin: Vector3, walkable: Polygon | None = None) -> tuple[bool, Polygon | None]:
+        """find_terrain_poly, nothing remembered (what a traced run runs)."""
+        i = self._terrain_poly(origin)
+        return (True, self.polygons[i]) if i >= 0 else (False, walkable)
+
     @anchor("CLandCell::find_terrain_poly", "LandCell.cs:find_terrain_poly")
+    @remembers(_find_terrain_poly_every_time)
     def find_terrain_poly(self, origin: Vector3, walkable: Polygon | None = None) -> tuple[bool, Polygon | None]:
         """find_terrain_poly(origin, ref walkable): returns (found, walkable).
 
@@ -63,16 +76,13 @@ class LandCell(SortCell):
         transition repeat an earlier point; the pool empties it at checkout, which bounds it). Keys are values:
         -0 and +0 meet, which is safe because a zero coordinate only ever adds or subtracts a zero
         product in point_in_poly2D's cross term, which is then compared with 0; a NaN never
-        meets itself (unless it is the same object, whose answer is the same).
+        meets itself (unless it is the same object, whose answer is the same). A traced run
+        computes it every time (anchors.remembers), so its trace holds point_in_poly2D's calls.
         """
         key = (origin.x, origin.y)
         i = self.terrain_polys.get(key)
         if i is None:
-            i = -1
-            for k in range(2):
-                if self.polygons[k].point_in_poly2D(origin, Sidedness.Positive):
-                    i = k
-                    break
+            i = self._terrain_poly(origin)
             if len(self.terrain_polys) >= TERRAIN_POLYS_LIMIT:
                 self.terrain_polys.clear()
             self.terrain_polys[key] = i
@@ -245,7 +255,14 @@ class _AddedCells:
         self.adds.append((cell_id, cell))
 
 
+def _add_all_outside_cells_every_time(lscape, position: Position, num_sphere: int, spheres, cell_array) -> None:
+    """add_all_outside_cells called as ACE calls it, nothing remembered (what a traced run runs); through
+    the module's name, so a traced run's wrapper writes its records."""
+    add_all_outside_cells(lscape, position, num_sphere, spheres, cell_array)
+
+
 @harness("add_all_outside_cells with its add_cell calls remembered per run and replayed")
+@remembers(_add_all_outside_cells_every_time)
 def add_all_outside_cells_replayed(lscape, position: Position, num_sphere: int, spheres, cell_array) -> None:
     """add_all_outside_cells, answered from the run's memory when it has seen the same inputs.
 
@@ -260,7 +277,8 @@ def add_all_outside_cells_replayed(lscape, position: Position, num_sphere: int, 
     `position` itself, so that form always runs; so does a call that throws (its adds are
     applied, then the exception goes on, as if it had run in place).
     Replayed into a CellArray that already holds the same call's cells (the array remembers the
-    last key it replayed until a cell is removed), it adds nothing, so it is skipped.
+    last key it replayed until a cell is removed), it adds nothing, so it is skipped. A traced run
+    calls add_all_outside_cells every time (anchors.remembers), so its trace holds each call's records.
     """
     if cell_array.added_outside:
         return

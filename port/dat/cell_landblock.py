@@ -20,6 +20,12 @@ class CellLandblock:
     terrain: list = field(default_factory=list)  # 81 ushorts, x-major
     height: list = field(default_factory=list)  # 81 bytes: indices into the land height table
 
+
+    @staticmethod
+    @anchor(None, "ACE.DatLoader/FileTypes/CellLandblock.cs:CellLandblock()")
+    def empty(mode) -> "CellLandblock":
+        """``new CellLandblock()``, what ReadFromDat gives for an id its DAT lacks: id 0, no heights, no terrain."""
+        return CellLandblock()
     @staticmethod
     @anchor(None, "ACE.DatLoader/FileTypes/CellLandblock.cs:Unpack")
     def unpack(reader) -> "CellLandblock":

@@ -35,6 +35,12 @@ class EnvCell:
     static_objects: list = field(default_factory=list)  # Stab
     restriction_obj: int = 0
 
+    @staticmethod
+    @anchor(None, "ACE.DatLoader/FileTypes/EnvCell.cs:EnvCell()")
+    def empty(mode) -> "EnvCell":
+        """``new EnvCell()``, what ReadFromDat gives for an id its DAT lacks: id 0, no structure, a new Frame."""
+        return EnvCell(position=Frame.empty(mode))
+
     @property
     def seen_outside(self) -> bool:
         return (self.flags & ENV_CELL_SEEN_OUTSIDE) != 0

@@ -14,6 +14,12 @@ class Environment:
     id: int = 0
     cells: dict = field(default_factory=dict)  # uint -> CellStruct, in DAT order
 
+
+    @staticmethod
+    @anchor(None, "ACE.DatLoader/FileTypes/Environment.cs:Environment()")
+    def empty(mode) -> "Environment":
+        """``new Environment()``, what ReadFromDat gives for an id its DAT lacks: no cell structures."""
+        return Environment()
     @staticmethod
     @anchor(None, "ACE.DatLoader/FileTypes/Environment.cs:Unpack")
     def unpack(reader) -> "Environment":

@@ -25,3 +25,9 @@ class Frame:
         qz = reader.read_single()
         f.orientation = reader.mode.quat(qx, qy, qz, qw)  # new Quaternion(qx, qy, qz, qw), in the run's runtime
         return f
+
+    @staticmethod
+    @anchor(None, "ACE.DatLoader/Entity/Frame.cs:Frame()")
+    def empty(mode) -> "Frame":
+        """``new Frame()``: origin zero, orientation identity."""
+        return Frame(mode.vec(0, 0, 0), mode.quat(0, 0, 0, 1))

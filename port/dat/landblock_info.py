@@ -28,6 +28,12 @@ class LandblockInfo:
     pack_mask: int = 0
     buildings: list = field(default_factory=list)  # BuildInfo
 
+
+    @staticmethod
+    @anchor(None, "ACE.DatLoader/FileTypes/LandblockInfo.cs:LandblockInfo()")
+    def empty(mode) -> "LandblockInfo":
+        """``new LandblockInfo()``, what ReadFromDat gives for an id its DAT lacks: no cells, no objects, no buildings."""
+        return LandblockInfo()
     @staticmethod
     @anchor(None, "ACE.DatLoader/FileTypes/LandblockInfo.cs:Unpack")
     def unpack(reader) -> "LandblockInfo":

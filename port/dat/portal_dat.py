@@ -12,6 +12,7 @@ ticks never observes).
 from __future__ import annotations
 
 from ..physics_timer import PhysicsTimer
+from ..anchors import harness
 from .dat_database import DatDatabase
 
 
@@ -29,3 +30,11 @@ class PortalDat(DatDatabase):
         self.run_speed: dict = {}
         self.turn_speed: dict = {}
         self.attack_frames: dict = {}
+
+    @staticmethod
+    @harness("the kind of portal DAT record an id names")
+    def kind_of(file_id: int) -> str:
+        """0x01 GfxObj, 0x02 Setup, 0x03 Animation, 0x09 MotionTable, 0x0D Environment (the retail ranges
+        acconform/dat.py writes in)."""
+        return {0x01: "GfxObj", 0x02: "SetupModel", 0x03: "Animation", 0x09: "MotionTable",
+                0x0D: "Environment"}.get(file_id >> 24, "")

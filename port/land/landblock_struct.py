@@ -22,6 +22,7 @@ from acconform.flags import CullMode
 from acconform.numerics import Mode, Vector3, cs_fmod, wrap_i32, wrap_u32
 
 from ..constants import WATER_DEPTH_PARTIAL_WATER, WATER_DEPTH_DRY
+from ..errors import ArgumentOutOfRangeException
 from acconform.port.anchors import anchor, harness
 from acconform.port.geom.polygon import Polygon, Vertex
 from acconform.port import land_defs
@@ -294,6 +295,8 @@ class LandblockStruct:
                 cell_y = y * cell_size
                 vertex_idx = x * self.side_vertex_count + y
                 vertex = self.vertex_array[vertex_idx]
+                if vertex_idx >= len(self.height):  # List<byte> Height's indexer
+                    raise ArgumentOutOfRangeException(f"Height[{vertex_idx}] of {len(self.height)} heights")
                 z_height = self.land_height_table[self.height[vertex_idx]]
                 vertex.origin = Vector3(s(cell_x), s(cell_y), z_height * cell_scale)
 

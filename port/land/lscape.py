@@ -11,9 +11,9 @@ no value) is built up front, so the run fails as ACE's does. Building is determi
 runs (`LandblockPool`), keyed by everything they are built from (id, heights, terrain, land
 height table, mode): a run checks one out of the pool (no other LScape can hold it meanwhile),
 its cells' per-run object lists are reset (shadow objects never leak between scenes), and
-`release()` hands it back when the run is over. There is no DAT: where ACE would load a landblock the scene does not
-list, DAT-less ACE throws NullReferenceException (LandblockManager's landblock has no physics
-landblock), and get_landblock raises the port's NullReferenceException (port/errors.py), which
+`release()` hands it back when the run is over. Where ACE would load a landblock the scene does not
+list, ACE reads its DAT, which has no such file: an empty CellLandblock, whose construction throws
+ArgumentOutOfRangeException, and get_landblock runs the same construction (port/errors.py), which
 run_scene reports as the same verdict. Indoor cells (EnvCells, 0x0100 and up) are built as
 ACE builds them: get_landcell reads the EnvCell record from the run's cell DAT
 (`lscape.cell_dat`, with `lscape.portal_dat` for its Environment: port/run.py sets both), caches
@@ -29,11 +29,11 @@ from __future__ import annotations
 from collections import OrderedDict
 
 from acconform.numerics import Mode
-from acconform.port.anchors import anchor, harness
-from acconform.port.errors import NullReferenceException
+from acconform.port.anchors import anchor, harness, remembers
 from acconform.port import db_obj, land_defs
 from acconform.port.cell.land_cell import LandCell, is_built
 from acconform.port.land.landblock import Landblock
+from acconform.port.land.landblock_struct import LandblockStruct
 from acconform.port.land.landblock_manager import LandblockManager, ServerLandblock
 
 
@@ -128,8 +128,12 @@ class LScape:
         if portal_dat is not None and portal_dat.server:
             self.landblock_manager = LandblockManager()
             for landblock_id, record in self.records.items():
-                info_id = (record.id & 0xFFFF0000) | 0xFFFE
-                info = db_obj.get_landblock_info(cell_dat, info_id) if cell_dat is not None and info_id in cell_dat.records else None
+                # the server Landblock's constructor reads its CellLandblock and LandblockInfo through the cell DAT,
+                # which keeps them in its FileCache (a record the scene lacks: an empty one of that type)
+                info = None
+                if cell_dat is not None:  # (a test's world without DATs reads none)
+                    db_obj.get_cell_landblock(cell_dat, landblock_id)
+                    info = db_obj.get_landblock_info(cell_dat, (record.id & 0xFFFF0000) | 0xFFFE)
                 self.landblock_manager.get_landblock(ServerLandblock(record, info, self))
 
     @harness("a scene landblock built (new Landblock, PostInit) or taken from the pool on first use")
@@ -177,18 +181,28 @@ class LScape:
         if landblock is None:
             if landblock_id in self.records:
                 return self.build_landblock(landblock_id)
-            raise NullReferenceException(
-                f"landblock {landblock_id:08X} is not in the scene (ACE would read it from the DAT)")
+            # a landblock the scene does not hold: ACE reads it from its cell DAT, which has no such file, so
+            # DBObj.GetCellLandblock gives an empty CellLandblock, and `new Landblock(it)` first runs its base
+            # constructor, whose ConstructVertices reads Height[0] of an empty list
+            empty = db_obj.get_cell_landblock(self.cell_dat, landblock_id)
+            LandblockStruct(empty.id, empty.height, empty.terrain, self.land_height_table, self.mode)
+            raise AssertionError("a LandblockStruct of an empty CellLandblock was built")
         return landblock
 
+    def _get_landcell_every_time(self, block_cell_id: int):
+        """get_landcell as ACE writes it, nothing remembered (what a traced run runs)."""
+        return self._get_landcell(block_cell_id)
+
     @anchor("LScape::get_landcell", "LScape.cs:get_landcell")
+    @remembers(_get_landcell_every_time)
     def get_landcell(self, block_cell_id: int):
         """The cell with that id (a LandCell, or an EnvCell built on first use). Unlike Landblock.get_landcell, ACE does not check the
         slot's id here; the slot comes from gid_to_lcoord without the env check.
 
         The answer for an id never changes during a run (a built landblock's cells are fixed),
         so it is remembered per run: the transition asks for the same few cells thousands of
-        times. A failing lookup (a landblock not in the scene) raises every time."""
+        times. A failing lookup (a landblock not in the scene) raises every time. A traced run
+        looks it up every time (anchors.remembers), so its trace holds get_landblock's calls."""
         cell = self.landcells.get(block_cell_id, _UNSEEN)
         if cell is not _UNSEEN:
             return cell

@@ -7,7 +7,7 @@ NAMED is the list (name, behaviour, builder); `python tests/oracle/named_scenes.
 scene to examples/named/<name>.json, where `acconform run examples/named/<name>.json` runs it (on the
 port, or --impl). ACE's answers for them, on mono and on .NET 10, are in
 tests/oracle/data/ace_named_outcomes.json (tests/oracle/test_named_scenes.py records and checks them).
-Every scene is engine mode client (recorded so; docs/oracle.md, the engine-mode row for tick scenes), the mover the
+Every scene is engine mode server, as ACE's server runs (docs/oracle.md, the engine-mode row for tick scenes), the mover the
 hand-written scenes' sphere (r 0.48, step heights 0.4) on flat terrain at z = 20 unless said otherwise.
 
 A walk by root motion (the Sequence's velocity) sets TransientState to Contact|OnWalkable|Active before
@@ -73,7 +73,7 @@ def idle(n: int, dt: float, first: TickStep | None = None) -> tuple[TickStep, ..
 
 
 def scene(name, landblocks, m, steps, objects=(), driver="update_object", **kw) -> Scene:
-    return validate_scene(Scene(tuple(landblocks), m, tuple(objects), engine_mode="client", name=name,
+    return validate_scene(Scene(tuple(landblocks), m, tuple(objects), engine_mode="server", name=name,
                                 ticks=Ticks(driver, START, tuple(steps)), **kw))
 
 

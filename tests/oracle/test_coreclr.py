@@ -38,11 +38,20 @@ def test_on_coreclr_the_facade_is_compiled_offline_with_the_sdk_and_cached(corec
     dll, how = facade_build.build(coreclr.ace)
     tfm = dotnet_host.framework_tfm(coreclr.location.runtime_config)
     assert dll is not None, how
-    assert dll.is_file() and dll.is_relative_to(cache) and how.startswith(f"compiled with the .NET SDK ({tfm})")
+    assert dll.is_file() and dll.is_relative_to(cache) and how.startswith(f"compiled with the .NET SDK ({tfm}) by its csc")
     assert not packages.exists() or not any(packages.iterdir())
     assert [p.name for p in dll.parent.iterdir()] == [dll.name]  # the throw-away project is gone
     again, how = facade_build.build(coreclr.ace)
     assert again == dll and how.startswith("cached")
+
+
+def test_on_coreclr_the_facade_is_built_as_a_project_where_the_sdks_csc_cannot_be_run_directly(coreclr, monkeypatch,
+                                                                                                    tmp_path):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.setattr(facade_build, "_direct_compiler", lambda root, tfm: None)
+    dll, how = facade_build.build(coreclr.ace)
+    assert dll is not None and dll.is_file(), how
+    assert "by its csc" not in how and [p.name for p in dll.parent.iterdir()] == [dll.name]
 
 
 def test_on_coreclr_scenes_cross_into_net_through_native_entry_points(coreclr):

@@ -6,7 +6,6 @@ import pytest
 
 from acconform.errors import OracleUnavailable
 from acconform.oracle import config, dotnet_host, facade_build
-from acconform.oracle.members import check_build_commit
 
 from .test_config import _fake_dll
 
@@ -151,11 +150,16 @@ def test_the_facade_needs_an_sdk_and_says_so_when_the_installation_has_the_runti
     assert dotnet_host.sdk_versions(_fake_root(no_dotnet / "with-sdk", sdks=("10.0.401",))) == ["10.0.401"]
 
 
-def test_a_build_stamped_with_another_ace_commit_is_refused_and_ace_7b47913_is_accepted():
-    check_build_commit("bab7a5ca8552cb18f63e08b57234bd9137cd0249", "/opt/ace")  # 7b47913's own stamp
-    check_build_commit("7b47913ae0000000000000000000000000000000", "/opt/ace")  # stamped at build time
-    check_build_commit(None, "/opt/ace")  # no stamp: the member check decides
-    with pytest.raises(OracleUnavailable) as e:
-        check_build_commit("0123456789abcdef0123456789abcdef01234567", "/opt/ace")
-    msg = str(e.value)
-    assert "0123456789ab" in msg and "7b47913" in msg and "/opt/ace" in msg and "ACE_ASSEMBLY" in msg
+def test_the_facade_is_compiled_by_the_newest_sdks_csc_against_the_newest_reference_pack_of_the_build_framework(tmp_path):
+    root = _fake_root(tmp_path / "dotnet", sdks=("9.0.100", "10.0.401"))
+    assert facade_build._direct_compiler(root, "net10.0") is None  # no Roslyn in the SDK: `dotnet build` instead
+    for v in ("9.0.100", "10.0.401"):
+        (root / "sdk" / v / "Roslyn" / "bincore").mkdir(parents=True)
+        (root / "sdk" / v / "Roslyn" / "bincore" / "csc.dll").write_bytes(b"")
+    assert facade_build._direct_compiler(root, "net10.0") is None  # no targeting pack
+    for v, tfm in (("10.0.9", "net10.0"), ("10.0.12", "net10.0"), ("11.0.0", "net11.0")):
+        (root / "packs" / "Microsoft.NETCore.App.Ref" / v / "ref" / tfm).mkdir(parents=True)
+        (root / "packs" / "Microsoft.NETCore.App.Ref" / v / "ref" / tfm / "System.Runtime.dll").write_bytes(b"")
+    csc, refs = facade_build._direct_compiler(root, "net10.0")
+    assert csc == root / "sdk" / "10.0.401" / "Roslyn" / "bincore" / "csc.dll"  # 10.0.401, not "9.0.100" as text sorts
+    assert refs == [root / "packs" / "Microsoft.NETCore.App.Ref" / "10.0.12" / "ref" / "net10.0" / "System.Runtime.dll"]

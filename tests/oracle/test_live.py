@@ -23,7 +23,8 @@ def test_flat_one_step_walk_matches_the_probe(live):
     assert o.contact_plane.valid and o.contact_plane.cell == 0xA9B40001 and o.contact_plane.normal == (0.0, 0.0, 1.0)
     assert o.contact_plane.d == -20.0 and o.last_known_contact_plane == o.contact_plane
     assert not o.sliding_normal.valid and not o.collision_normal.valid and not o.collided_with_environment
-    assert o.object_info_state == ObjectInfoState.Contact | ObjectInfoState.OnWalkable | ObjectInfoState.EdgeSlide
+    assert o.object_info_state == (ObjectInfoState.Contact | ObjectInfoState.OnWalkable | ObjectInfoState.IsPlayer
+                                   | ObjectInfoState.EdgeSlide)
 
 
 def test_flat_eleven_step_walk_matches_the_probe(live):
@@ -73,7 +74,7 @@ def test_landblock_cache_changes_no_outcome(live):
 
 def test_an_ace_exception_is_the_outcome_not_a_crash(live):
     o = live.run(off_the_map())
-    assert o.error is not None and o.error.startswith("NullReferenceException")
+    assert o.error is not None and o.error.startswith("ArgumentOutOfRangeException")
     assert live.run(PROBE["flat 1-step walk"]).error is None  # and the next scene is unaffected
 
 

@@ -57,11 +57,11 @@ def test_the_named_scenes_are_derets_thirteen_by_name_the_acceptance_lists_six_a
     assert all(behaviour for _, behaviour, _ in NAMED)
 
 
-def test_each_named_scene_file_is_what_its_builder_makes_and_is_a_client_tick_scene():
+def test_each_named_scene_file_is_what_its_builder_makes_and_is_a_server_tick_scene():
     built = build()
     for name, scene in SCENES.items():
         assert scene == built[name], f"examples/named/{name}.json differs from its builder: run named_scenes.py --write"
-        assert scene.name == name and scene.ticks is not None and scene.engine_mode == "client"
+        assert scene.name == name and scene.ticks is not None and scene.engine_mode == "server"
 
 
 # ---------------------------------------------------------------- ACE's answers, the port against them

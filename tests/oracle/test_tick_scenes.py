@@ -149,7 +149,7 @@ def test_every_physics_obj_member_the_facades_tick_code_touches_is_in_members_py
                    source.index("// ------------------------------------------------------------------ content keys")]
     touched = set(re.findall(r"\bobj\.(\w+)", ticks))
     listed = {m for t, members in REQUIRED if t == "ACE.Server.Physics.PhysicsObj" for m in members}
-    assert touched >= {"update_object", "UpdateObjectInternalServer", "set_current_pos", "IsMovingOrAnimating"}
+    assert touched >= {"update_object", "set_request_pos", "update_object_server", "IsMovingOrAnimating"}
     assert touched - listed == set()
 
 
@@ -197,20 +197,23 @@ def test_live_tick_scenes_run_on_the_scenes_clock_and_leave_no_mover_behind(live
 
 @pytest.mark.live_oracle
 def test_live_an_exception_in_a_tick_is_that_ticks_error_and_ends_the_scene(live):
-    """From 10 m up, a RequestPos 10 m under the next cell's terrain: the transition stops on the ground of
-    the first cell, and set_current_pos then changes the mover's cell through change_cell_server ->
-    enter_cell_server, whose visibility update (ObjectMaint.GetVisibleObjects) reads the landblock's
-    adjacent landblocks, which only a running server's LandblockManager sets: ACE throws in that tick,
-    and the scene ends there (docs/oracle.md, the request_pos row)."""
-    scene = SCENES["tick_request_pos"]
-    up = Position(0xA9B40001, Frame((12.0, 12.0, 30.0)))
-    under = Position(0xA9B40009, Frame((30.0, 12.0, 10.0)))
-    steps = scene.ticks.steps[:3] + (TickStep(0.1, request_pos=up), TickStep(0.1, request_pos=under),
-                                     TickStep(0.1, request_pos=up))
-    out = live.run(scene.replace(ticks=dataclasses.replace(scene.ticks, steps=steps)))
+    """A RequestPos in a landblock the scene does not hold: Player.UpdatePlayerPosition's LScape.get_landcell
+    loads it through LandblockManager, whose server Landblock reads it from ACE's DAT, which lacks it: an empty
+    CellLandblock, whose LandblockStruct throws ArgumentOutOfRangeException reading Height[0]. That tick's
+    error ends the scene (docs/oracle.md, the world's edge row)."""
+    out = live.run(off_the_world(SCENES["tick_request_pos"]))
     assert out.error is None and [t.error is None for t in out.ticks] == [True, True, True, True, False], out.ticks
-    assert out.ticks[4].error.startswith("NullReferenceException"), out.ticks[4].error
+    assert out.ticks[4].error.startswith("ArgumentOutOfRangeException"), out.ticks[4].error
     assert out.ticks[4] == dataclasses.replace(out.ticks[4].__class__(), error=out.ticks[4].error)
+
+
+def off_the_world(scene):
+    """The example request_pos scene, its fifth step a RequestPos in landblock AAB4, which the scene lacks."""
+    up = Position(0xA9B40001, Frame((12.0, 12.0, 30.0)))
+    beyond = Position(0xAAB40001, Frame((2.0, 12.0, 20.0)))
+    steps = scene.ticks.steps[:3] + (TickStep(0.1, request_pos=up), TickStep(0.1, request_pos=beyond),
+                                     TickStep(0.1, request_pos=up))
+    return scene.replace(ticks=dataclasses.replace(scene.ticks, steps=steps))
 
 
 # ---------------------------------------------------------------- recording

@@ -67,21 +67,15 @@ def test_a_scene_without_ticks_has_no_tick_states():
 
 
 @pytest.mark.anchor("PhysicsObj.cs:enter_cell_server")
-def test_a_request_pos_into_the_next_cell_throws_in_enter_cell_server_and_ends_the_run():
+def test_a_request_pos_off_the_scenes_landblocks_throws_building_the_missing_one_and_ends_the_run():
     """The live lane's scene (tests/oracle/test_tick_scenes.py::test_live_an_exception_in_a_tick_is_that_ticks_error_and_ends_the_scene):
-    set_current_pos changes the cell through change_cell_server -> enter_cell_server, whose
-    GetVisibleObjects reads the landblock's adjacents, null outside a running server: ACE throws
-    NullReferenceException in that tick and the scene ends there."""
+    the landblock ACE reads from its DAT is an empty CellLandblock, whose construction throws
+    ArgumentOutOfRangeException in that tick, and the scene ends there."""
     import dataclasses
 
-    from acconform.scene import Frame, Position, TickStep
+    from tests.oracle.test_tick_scenes import off_the_world
 
-    scene = SCENES["tick_request_pos"]
-    up = Position(0xA9B40001, Frame((12.0, 12.0, 30.0)))
-    under = Position(0xA9B40009, Frame((30.0, 12.0, 10.0)))
-    steps = scene.ticks.steps[:3] + (TickStep(0.1, request_pos=up), TickStep(0.1, request_pos=under),
-                                     TickStep(0.1, request_pos=up))
-    out = run_scene(scene.replace(ticks=dataclasses.replace(scene.ticks, steps=steps)))
+    out = run_scene(off_the_world(SCENES["tick_request_pos"]))
     assert out.error is None and [t.error is None for t in out.ticks] == [True, True, True, True, False], out.ticks
-    assert out.ticks[4].error.startswith("NullReferenceException"), out.ticks[4].error
+    assert out.ticks[4].error.startswith("ArgumentOutOfRangeException"), out.ticks[4].error
     assert out.ticks[4] == dataclasses.replace(out.ticks[4].__class__(), error=out.ticks[4].error)

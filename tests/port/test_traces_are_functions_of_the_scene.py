@@ -1,7 +1,9 @@
 """A trace is a function of the scene alone (issue 43): no answer a routine remembers, no cache and no
-scene the process ran before changes what a traced run records. A sample of corpus scenes is traced
-in corpus order, again in a shuffled order after untraced runs of all of them in another order, and
-in a fresh process in reverse order; every trace is the same, record for record."""
+scene the process ran before changes what a traced run records. A sample of corpus scenes of every
+kind (tick scenes too) is traced in corpus order, again in a shuffled order after untraced runs of all
+of them in another order, and in a fresh process in reverse order; every trace is the same, record for
+record. Within one run, a routine that remembers an answer (anchors.remembers) records computing it
+each time it is asked, as ACE computes it: the scenes here ask each of them the same question twice."""
 
 from __future__ import annotations
 
@@ -10,15 +12,19 @@ import json
 import random
 import subprocess
 import sys
+from collections import Counter
+from pathlib import Path
 
 import pytest
+
+sys.path.insert(0, str(Path(__file__).parent / "cell"))  # indoor_rooms: rooms of one Environment
 
 from acconform.port.run import run_scene, traced_run
 from acconform.trace import trace_to_json
 
-KINDS = ["terrain", "bsp", "obstacles", "indoor", "buildings"]
+KINDS = ["terrain", "bsp", "obstacles", "indoor", "buildings", "ticks"]
 RUNTIME = "coreclr"
-N = 16
+N = 18
 
 
 def sample(kind=None):
@@ -45,9 +51,12 @@ print(json.dumps({{i: digest(scenes[i]) for i in reversed(range(len(scenes)))}})
 
 
 @pytest.mark.anchor("LandDefs::get_block_offset")
+@pytest.mark.anchor("CLandCell::find_terrain_poly")
+@pytest.mark.anchor("LScape::get_landcell")
+@pytest.mark.anchor("CLandCell::add_all_outside_cells")
+@pytest.mark.anchor("DBObj.cs:GetEnvironment")
+@pytest.mark.anchor("CCellStruct::UnPack")
 def test_a_trace_is_the_same_whatever_the_process_ran_before_and_in_a_fresh_process():
-    from pathlib import Path
-
     scenes = sample()
     assert len(scenes) == N
     first = [digest(s) for s in scenes]
@@ -76,3 +85,100 @@ def test_a_traced_run_records_block_offsets_computed_even_after_untraced_runs_re
     for k in crossing:  # each offset between two landblocks computed: its two blockid_to_lcoord calls just before
         assert [r.anchor for r in records[k - 2:k]] == ["LandDefs.cs:blockid_to_lcoord"] * 2
     assert land_defs._BLOCK_OFFSETS  # the untraced run's memory is still there, only the traced run bypassed it
+
+
+def _asked_again(records, anchor: str) -> bool:
+    """Whether the run calls `anchor` twice with the same arguments (an untraced run answers it from memory)."""
+    asked = Counter(json.dumps(r.args) for r in records if r.anchor == anchor and r.event in ("enter", "call"))
+    return bool(asked) and max(asked.values()) > 1
+
+
+def _calls_within(records, outer: str, inner: str) -> list[int]:
+    """For each call of `outer` (its enter..exit span), how many `inner` records ran inside it."""
+    counts, depth = [], 0
+    for r in records:
+        if r.anchor == outer:
+            if r.event == "enter":
+                depth += 1
+                counts.append(0)
+            elif r.event == "exit":
+                depth -= 1
+        elif r.anchor == inner and depth and r.event in ("enter", "call"):
+            counts[-1] += 1
+    return counts
+
+
+@pytest.mark.anchor("CLandCell::find_terrain_poly")
+def test_a_traced_run_tests_the_terrain_triangles_each_time_a_cell_is_asked_for_a_point_again():
+    checked = 0
+    for scene in sample("terrain") + sample("ticks"):
+        records = traced_run(scene, "exact", RUNTIME)[1]
+        if not _asked_again(records, "LandCell.cs:find_terrain_poly"):
+            continue
+        checked += 1
+        counts = _calls_within(records, "LandCell.cs:find_terrain_poly", "Polygon.cs:point_in_poly2D")
+        assert counts and min(counts) >= 1, scene.name
+    assert checked, "no scene asks a cell for the same point twice"
+
+
+@pytest.mark.anchor("LScape::get_landcell")
+def test_a_traced_run_looks_a_cell_up_in_its_landblock_each_time_it_is_asked_for_again():
+    checked = 0
+    for scene in sample("terrain") + sample("ticks"):
+        records = traced_run(scene, "exact", RUNTIME)[1]
+        if not _asked_again(records, "LScape.cs:get_landcell"):
+            continue
+        checked += 1
+        asked = sum(1 for r in records if r.anchor == "LScape.cs:get_landcell")
+        looked_up = sum(1 for r in records if r.anchor == "LScape.cs:get_landblock" and r.within == "LScape.cs:get_landcell")
+        assert looked_up == asked, scene.name
+    assert checked, "no scene asks for the same cell twice"
+
+
+@pytest.mark.anchor("CLandCell::add_all_outside_cells")
+def test_a_traced_run_gathers_the_outside_cells_each_time_a_land_cell_finds_its_transit_cells():
+    adds = "LandCell.cs:add_all_outside_cells(Position, int, List<Sphere>, CellArray)"
+    checked = 0
+    for scene in sample("terrain") + sample("ticks"):
+        records = traced_run(scene, "exact", RUNTIME)[1]
+        if not _asked_again(records, adds):
+            continue
+        checked += 1
+        assert min(_calls_within(records, "LandCell.cs:find_transit_cells", adds)) == 1, scene.name
+    assert checked, "no scene gathers the same outside cells twice"
+
+
+@pytest.mark.anchor("DBObj.cs:GetEnvironment")
+def test_a_traced_run_reads_the_environment_from_the_dat_for_each_cell_built_from_it():
+    from indoor_rooms import SCENES as ROOM_SCENES
+
+    scene = ROOM_SCENES["back-wall"][0]
+    assert len({c.environment for c in scene.env_cells}) < len(scene.env_cells)  # two cells of one Environment
+    records = traced_run(scene, "exact", RUNTIME)[1]
+    asked = [k for k, r in enumerate(records) if r.anchor == "DBObj.cs:GetEnvironment"]
+    read = [k for k, r in enumerate(records) if r.anchor.endswith(":ReadFromDat") and r.within == "DBObj.cs:GetEnvironment"]
+    assert len(asked) == len(scene.env_cells) and len(read) == len(asked)
+
+
+@pytest.mark.anchor("CCellStruct::UnPack")
+def test_a_traced_run_builds_a_cell_struct_for_each_cell_of_one_structure():
+    from acconform import dat
+    from acconform.numerics import EXACT
+    from acconform.port.cell import cell_struct
+    from acconform.port.dat.binary_reader import BinaryReader
+    from acconform.port.dat.environment import Environment as DatEnvironment
+    from acconform.port.dat.portal_dat import PortalDat
+    from acconform.port.tracing import Recorder, installed
+    from indoor_rooms import two_rooms
+
+    env, _ = two_rooms()
+    data = dat.environment_record(env).data
+    portal_dat = PortalDat({env.id: data}, EXACT, True)
+    struct = DatEnvironment.unpack(BinaryReader(data, EXACT)).cells[0]
+    untraced = cell_struct.remembered(portal_dat, env.id, 0, struct)
+    assert cell_struct.remembered(portal_dat, env.id, 0, struct) is untraced  # what an untraced run shares
+    with installed(Recorder()) as recorder:
+        a = cell_struct.remembered(portal_dat, env.id, 0, struct)
+        b = cell_struct.remembered(portal_dat, env.id, 0, struct)
+    built = [r for r in recorder.records if r.anchor == "CellStruct.cs:CellStruct(DatLoader.Entity.CellStruct)"]
+    assert len(built) == 2 and a is not b and a is not untraced

@@ -10,7 +10,6 @@ from acconform import dat
 from acconform.numerics import EXACT, FAST
 from acconform.port import db_obj
 from acconform.port.dat.portal_dat import PortalDat
-from acconform.port.errors import NullReferenceException
 from acconform.port.run import run_scene
 from acconform.scene import Environment
 from dungeon_scenes import SCENES as DUNGEON_SCENES
@@ -51,8 +50,9 @@ def _heights(environment) -> set:
 
 
 @pytest.mark.anchor("DBObj.cs:GetEnvironment")
-def test_an_environment_the_run_does_not_hold_throws_and_is_not_remembered():
+def test_an_environment_the_run_does_not_hold_is_an_empty_one_and_is_not_remembered_across_runs():
     db_obj.clear_environments()
-    with pytest.raises(NullReferenceException):
-        db_obj.get_environment(PortalDat({}, EXACT, True), ENV_ID)
+    portal_dat = PortalDat({}, EXACT, True)
+    environment = db_obj.get_environment(portal_dat, ENV_ID)
+    assert environment.cells == {} and portal_dat.file_cache[ENV_ID] is environment  # ReadFromDat's new Environment()
     assert db_obj.ENVIRONMENTS == {}

@@ -22,7 +22,10 @@ def landblock(lb_id: int, heights=None, terrain=None) -> Landblock:
 
 
 def world(*landblocks, mode=EXACT, table=None) -> LScape:
-    return LScape(scene_with(*landblocks, table=table), mode)
+    """An LScape of these landblocks whose cell DAT holds no record (as the oracle's, the file table empty)."""
+    from acconform.port.dat.cell_dat import CellDat
+
+    return LScape(scene_with(*landblocks, table=table), mode, cell_dat=CellDat({}, mode))
 
 
 class CellArrayStub:

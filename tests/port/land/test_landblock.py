@@ -8,7 +8,7 @@ import pytest
 from acconform.numerics import EXACT, FAST, f32_bits
 from acconform.port.frame import AFrame, Position
 from acconform.port.cell import land_cell as lc
-from acconform.port.errors import NullReferenceException
+from acconform.port.errors import ArgumentOutOfRangeException
 from acconform.port.land_defs import InvalidOperation, WaterType
 
 from land_helpers import WATER, CellArrayStub, SphereStub, landblock, world
@@ -88,8 +88,8 @@ def test_lscape_finds_cells_of_listed_landblocks_only():
     w = world(landblock(0xA9B4FFFF), landblock(0xAAB4FFFF))
     assert w.get_landcell(0xAAB40005).id == 0xAAB40005
     assert w.get_landcell(0xAAB40005).cur_landblock is w.get_landblock(0xAAB40000)
-    with pytest.raises(NullReferenceException, match="landblock ABB4FFFF is not in the scene"):
-        w.get_landcell(0xABB40005)  # not in the scene: ACE would read the DAT (and DAT-less, throws)
+    with pytest.raises(ArgumentOutOfRangeException, match="Height"):
+        w.get_landcell(0xABB40005)  # not in the scene: ACE reads its DAT, an empty CellLandblock, and throws building it
     assert w.get_landcell(0xA9B40041) is None
     assert w.get_landblock(0xA9B40017) is w.get_landblock(0xA9B4FFFF)
 

@@ -193,7 +193,7 @@ def test_a_wall_across_a_cell_border_blocks_from_the_neighbouring_cell():
 
 
 @pytest.mark.anchor("LScape::get_landblock")
-def test_walking_into_a_landblock_the_scene_lacks_is_a_null_reference_exception():
+def test_walking_into_a_landblock_the_scene_lacks_throws_building_the_empty_one_aces_dat_read_gives():
     out, _ = matches_ace("landblock-missing")
-    assert out.error == "NullReferenceException: landblock AAB4FFFF is not in the scene (ACE would read it from the DAT)"
-    assert ace_outcome("landblock-missing").error.startswith("NullReferenceException: ")
+    assert out.error == "ArgumentOutOfRangeException: Height[0] of 0 heights"
+    assert ace_outcome("landblock-missing").error.startswith("ArgumentOutOfRangeException: ")

@@ -1,0 +1,82 @@
+"""WeenieObject: WeenieObject(WorldObject), DummyObject, IsImpenetrable, IsPK, IsPKLite, DoCollision(EnvCollisionProfile), DoCollisionEnd -- what the physics asks of an object's game object; and the members of ACE's WorldObjects.Player the physics reads.
+
+ACE's Physics/Common/WeenieObject.cs. A static placed from the DAT (Landblock.init_static_objs) keeps
+DummyObject: no WorldObject, every flag false. The mover is a player: WorldObject.InitPhysicsObj gives
+its PhysicsObj ``new WeenieObject(player)``, so IsPlayer and IsCreature are true and the PK answers
+come from the Player's PlayerKillerStatus. What the Player's own code does when the physics calls it
+(HandleFallingDamage: Health only; SyncLocation: its Location) reaches nothing the physics reads.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import IntFlag
+
+from .anchors import anchor
+
+
+class PlayerKillerStatus(IntFlag):
+    """ACE.Entity.Enum.PlayerKillerStatus."""
+
+    Undef = 0x00
+    Protected = 0x01
+    NPK = 0x02
+    PK = 0x04
+    Unprotected = 0x08
+    RubberGlue = 0x10
+    Free = 0x20
+    PKLite = 0x40
+
+
+@dataclass(slots=True)
+class Player:
+    """The members of ACE's WorldObjects.Player (and the WorldObject and Creature it derives from)
+    that the physics reads. PlayerKillerStatus: a player without the property is NPK
+    (WorldObject_Properties.cs); LastContact: true until the client's first AutonomousPosition says
+    otherwise (Player.cs); ScatterPos none and not Teleporting: a player walking in the world."""
+
+    player_killer_status: PlayerKillerStatus = PlayerKillerStatus.NPK
+    last_contact: bool = True
+    teleporting: bool = False
+    scatter_pos: object = None
+
+    @property
+    def is_pk(self) -> bool:
+        """Player_Combat.cs: IsPK."""
+        return self.player_killer_status == PlayerKillerStatus.PK
+
+    @property
+    def is_pkl(self) -> bool:
+        """Player_Combat.cs: IsPKL."""
+        return self.player_killer_status == PlayerKillerStatus.PKLite
+
+
+@dataclass(frozen=True, slots=True)
+class WeenieObject:
+    world_object: Player | None = None
+    is_player: bool = False
+    is_creature: bool = False
+    is_storage: bool = False
+    is_corpse: bool = False
+
+    @staticmethod
+    @anchor(None, "WeenieObject.cs:WeenieObject(WorldObject)", "for a Player: IsCreature, IsPlayer")
+    def of_player(player: Player) -> "WeenieObject":
+        return WeenieObject(world_object=player, is_player=True, is_creature=True)
+
+    @anchor(None, "WeenieObject.cs:IsImpenetrable")
+    def is_impenetrable(self) -> bool:
+        return self.is_player and isinstance(self.world_object, Player) and \
+            self.world_object.player_killer_status == PlayerKillerStatus.Free
+
+    @anchor(None, "WeenieObject.cs:IsPK")
+    def is_pk(self) -> bool:
+        return self.is_player and isinstance(self.world_object, Player) and self.world_object.is_pk
+
+    @anchor(None, "WeenieObject.cs:IsPKLite")
+    def is_pk_lite(self) -> bool:
+        return self.is_player and isinstance(self.world_object, Player) and self.world_object.is_pkl
+
+
+# WeenieObject.DummyObject: what a PhysicsObj made without a WorldObject carries
+DUMMY_OBJECT = WeenieObject()

@@ -1,0 +1,94 @@
+"""The instrumented ACE (lane `live_oracle`; oracle/instrumented.py): a copy of the configured ACE build
+rewritten to record the port's trace grain, run in its own worker process beside this process's plain
+ACE. Run on both runtimes: `ACE_ASSEMBLY=<mono or .NET 10 build> pytest -m live_oracle tests/oracle`.
+benchmarks/instrumented_corpus.py runs the whole corpus through it."""
+
+import pytest
+
+from acconform.compare import compare
+from acconform.oracle import default_corpus
+from acconform.oracle.recorded import RecordedOracle, scene_kind
+
+pytestmark = pytest.mark.live_oracle
+
+SAMPLE = 14  # corpus scenes, stratified by kind (ticks, indoor, buildings, obstacles, terrain, bsp)
+
+
+@pytest.fixture(scope="session")
+def traced(live):
+    from acconform.oracle.instrumented import TracedAce
+
+    t = TracedAce(live.location.assembly, live.location.runtime, say=None)
+    yield t
+    t.close()
+
+
+@pytest.fixture(scope="session")
+def sample(live):
+    corpus = RecordedOracle(default_corpus(live.location.runtime))
+    return [corpus._record(e).scene for e in corpus.select(n=SAMPLE, seed=3)]
+
+
+def test_every_anchor_of_the_port_names_a_method_of_the_ace_build(live):
+    from acconform.oracle.instrumented import unresolved
+
+    assert unresolved(live.location) == []
+
+
+def test_an_instrumented_ace_answers_each_scene_of_a_corpus_sample_exactly_as_the_plain_one(live, traced, sample):
+    kinds = set()
+    for scene in sample:
+        plain = live.run(scene)
+        recording, records = traced.trace(scene)
+        assert compare(recording, plain, "exact") == [], scene_kind(scene)
+        assert compare(traced.run(scene), plain, "exact") == [], scene_kind(scene)
+        assert records, "a traced run writes records"
+        kinds.add(scene_kind(scene))
+    assert {"ticks", "terrain", "obstacles"} <= kinds
+
+
+def test_aces_own_trace_and_the_ports_agree_on_the_sample_at_the_grain_both_write(live, traced, sample):
+    """Buildings are left out: ACE builds a landblock's buildings and their cells when LScape.get_landcell
+    first reaches them, in another order than the port's (docs/oracle.md, "The instrumented ACE")."""
+    from acconform.port.run import traced_run
+    from acconform.trace import against_ace
+
+    for scene in sample:
+        if scene_kind(scene) == "buildings":
+            continue
+        _, ace = traced.trace(scene)
+        _, port = traced_run(scene, "exact", live.location.runtime)
+        d = against_ace(ace, port, traced.kinds, scene.ticks is not None, traced.overloaded)
+        assert d is None, f"{scene_kind(scene)}: {d.routine} {d.field}: ACE {d.a_value!r}, port {d.b_value!r}"
+
+
+def test_a_planted_sign_flip_is_named_in_cliff_slide_against_aces_trace_as_against_the_ports(live, traced, monkeypatch):
+    """The planted bug of tests/runner/mutants.py (cliff_slide_sign_flipped) on the terrain scene its
+    campaign shrank to: explain names the same routine and field against ACE's trace as against the port's."""
+    import sys
+    from pathlib import Path
+
+    from acconform.case import load_document
+    from acconform.explain import explain_case
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "runner"))
+    from mutants import MUTATIONS, load_mutant  # noqa: E402
+
+    case = load_document(str(Path(__file__).with_name("data") / "cliff_slide_sign_flipped.case.json"))
+    run = load_mutant([m.name for m in MUTATIONS].index("cliff_slide_sign_flipped"))
+    import importlib
+
+    mutant = importlib.import_module(run.__module__)
+
+    class Planted:  # the mutant as an implementation that traces (its own port's tracing)
+        name, command, traces = "planted", ["planted"], True
+
+        def run_traced(self, scene):
+            outcome, records = mutant.traced_run(scene, "exact", live.location.runtime)
+            return outcome, records, None
+
+    runtime = live.location.runtime
+    against_port = explain_case(case, Planted(), "exact", runtime)
+    against_ace = explain_case(case, Planted(), "exact", runtime, live.run(case.scene), "live ACE", traced_ace=traced)
+    assert against_ace.reference_name == "ACE" and against_ace.divergence is not None
+    assert against_ace.divergence.key() == against_port.divergence.key() == "Transition.cs:CliffSlide args"

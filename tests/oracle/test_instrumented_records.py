@@ -1,0 +1,132 @@
+"""ACE's own trace on the Python side (fast lane, no ACE): the instrumented ACE's recorder lines turned
+into trace records (oracle/instrumented.py), and the comparison with a port-grain trace
+(acconform.trace.against_ace)."""
+
+import json
+
+import pytest
+
+from acconform.oracle.instrumented import FTP, TICK, kind, record_kinds, recorder_table, records_from
+from acconform.outcome import ContactPlaneState, NormalState, Outcome, TickState
+from acconform.trace import PathState, TraceRecord, against_ace, comparable, is_constructor, run_part
+
+IDS = {0: "Transition.cs:FindTransitionalPosition", 1: "Transition.cs:AdjustOffset", 2: "Transition.cs:CliffSlide",
+       3: "PhysicsObj.cs:update_object", 4: "LandDefs.cs:GetBlockOffset", 5: "AFrame.cs:AFrame()"}
+PATH = [0x0A240008, [1.0, 2.0, 3.0], 0x0A240008, [1.0, 2.0, 2.5], [0.0, 0.0, -0.5],
+        [True, 0x0A240008, False, [0.0, 0.0, 1.0], -2.0], [False, 0, False, [0.0, 0.0, 0.0], 0.0],
+        [False, [0.0, 0.0, 0.0]], [True, [1.0, 0.0, 0.0]], None, False, True, False, False, 0, 0x101]
+MOVER = [False, 0.0, 0x0A240008, 0x0A240008, [1.0, 2.0, 3.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0],
+         [0.0, 0.0, -9.8], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], 0x400, 1, 0, [[0.0, 0.0, 1.0], 0.0], [0.0, 0.0, 0.0],
+         False, [0x0A240008]]
+
+
+def line(*fields):
+    return json.dumps(list(fields))
+
+
+def path(**kw) -> PathState:
+    base = PathState(1, (0.0, 0.0, 0.0), 1, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), ContactPlaneState(), ContactPlaneState(),
+                     NormalState(), NormalState(), None, False, False, False, False, 0, 0)
+    from dataclasses import replace
+
+    return replace(base, **kw)
+
+
+def test_a_recorder_line_becomes_the_record_the_port_writes_with_its_transition_snapshot():
+    text = line(2, "enter", -1, 1, 0, [0, [0.5, -0.0, 1.0]], None, PATH, None) + "\n"
+    (r,) = records_from(text, IDS)
+    assert (r.anchor, r.event, r.tick, r.step, r.within) == ("Transition.cs:CliffSlide", "enter", None, 1, FTP)
+    assert r.args == [0, [0.5, -0.0, 1.0]] and str(r.args[1][1]) == "-0.0"
+    assert r.path.check_cell == 0x0A240008 and r.path.cur_pos == (1.0, 2.0, 2.5)
+    assert r.path.contact_plane == ContactPlaneState(True, 0x0A240008, False, (0.0, 0.0, 1.0), -2.0)
+    assert r.path.sliding_normal == NormalState(True, (1.0, 0.0, 0.0)) and r.path.walkable is None
+    assert r.path.object_info_state == 0x101 and r.path.step_down and not r.path.step_up
+
+
+def test_a_step_record_is_named_after_find_transitional_position_whatever_method_opened_it():
+    (r,) = records_from(line(1, "step", -1, 0, 0, None, None, PATH, None), IDS)
+    assert (r.anchor, r.event, r.step) == (FTP, "step", 0)
+
+
+def test_a_mover_routine_carries_the_mover_as_a_tick_state():
+    (r,) = records_from(line(3, "enter", 0, -1, -1, [0x50000001], None, None, MOVER), IDS)
+    assert isinstance(r.mover, TickState) and r.mover.acceleration == (0.0, 0.0, -9.8)
+    assert r.mover.shadow_cells == (0x0A240008,) and r.within is None
+
+
+def test_a_tick_record_takes_the_outcomes_tick_and_a_tick_that_threw_writes_none():
+    ticks = (TickState(cell=7), TickState(error="NullReferenceException: x"))
+    outcome = Outcome(ticks=ticks)
+    text = line(3, "tick", 0, -1, -1, None, None, None, None) + "\n" + line(3, "tick", 1, -1, -1, None, None, None, None)
+    (r,) = records_from(text, IDS, outcome)
+    assert (r.anchor, r.event, r.tick, r.mover) == (TICK, "tick", 0, ticks[0])
+
+
+def test_the_recorders_table_gives_each_method_the_ports_record_kind_and_the_calls_that_open_a_step():
+    assert [kind(IDS[i]) for i in range(6)] == ["p", "p", "p", "m", "c", "c"]
+    assert recorder_table(IDS).splitlines() == ["pf", "pa", "p-", "mu", "c-", "c-"]
+    assert (IDS[2], "enter") in record_kinds(IDS) and (IDS[4], "call") in record_kinds(IDS)
+    assert (IDS[4], "enter") not in record_kinds(IDS)
+
+
+def test_constructors_are_known_by_their_anchor():
+    assert is_constructor("AFrame.cs:AFrame()") and is_constructor("PlacementType.cs:PlacementType")
+    assert is_constructor("BSPTree.cs:BSPTree(DatLoader.Entity.BSPTree, Dictionary<ushort, Polygon>, CVertexArray)")
+    assert not is_constructor("AFrame.cs:Combine") and not is_constructor("ACE.DatLoader/Entity/Plane.cs:Unpack")
+
+
+@pytest.mark.parametrize("a, b, expected", [
+    (1.0, 1.0, True), (0, -0.0, True), (True, False, True), ("Transition", 0, False), (None, 1.0, False),
+    (True, 1, False), ([1.0], 1.0, False)])
+def test_an_argument_is_compared_with_aces_only_where_both_hold_a_value_of_one_shape(a, b, expected):
+    assert comparable(True, a, b) is expected
+    assert comparable(False, a, b) is False
+
+
+def rec(anchor, event, p=None, within=None, args=None, result=None, tick=None, step=None, mover=None):
+    return TraceRecord(anchor, event, tick, step, within, args, result, p, mover)
+
+
+KINDS = frozenset({("Transition.cs:InitObject", "enter"), ("Transition.cs:InitObject", "exit"),
+                   ("Transition.cs:CliffSlide", "enter"), ("Transition.cs:CliffSlide", "exit"),
+                   ("LandDefs.cs:GetBlockOffset", "call"), ("AFrame.cs:AFrame()", "call"),
+                   ("ObjCell.cs:ObjCell(uint)", "enter"), ("ObjCell.cs:ObjCell(uint)", "exit"),
+                   ("ObjCell.cs:Init", "enter"), ("ObjCell.cs:Init", "exit")})
+
+
+def test_against_ace_names_the_routine_whose_exit_state_differs():
+    ace = (rec("Transition.cs:InitObject", "enter", path()), rec("Transition.cs:CliffSlide", "enter", path()),
+           rec("Transition.cs:CliffSlide", "exit", path(collide=True)))
+    port = ace[:2] + (rec("Transition.cs:CliffSlide", "exit", path(collide=False)),)
+    d = against_ace(ace, port, KINDS, ticks=False)
+    assert (d.routine, d.field, d.a_value, d.b_value) == ("Transition.cs:CliffSlide", "path.collide", True, False)
+
+
+def test_against_ace_skips_the_world_building_helper_calls_and_constructors_each_side_orders_its_own_way():
+    ace = (rec("LandDefs.cs:GetBlockOffset", "call", result=[0.0, 1.0, 0.0]),  # world building: before the run
+           rec("Transition.cs:InitObject", "enter", path()),
+           rec("AFrame.cs:AFrame()", "call", within="Transition.cs:InitObject"),
+           rec("LandDefs.cs:GetBlockOffset", "call", within="Transition.cs:InitObject", result=[0.0, 0.0, 0.0]),
+           rec("Transition.cs:InitObject", "exit", path(step_up=True)))
+    port = (rec("PhysicsObj.cs:transition", "enter"), rec("Transition.cs:InitObject", "enter", path()),
+            rec("ObjCell.cs:ObjCell(uint)", "enter", path()), rec("ObjCell.cs:Init", "enter", path(), "ObjCell.cs:ObjCell(uint)"),
+            rec("ObjCell.cs:Init", "exit", path(), "ObjCell.cs:ObjCell(uint)"), rec("ObjCell.cs:ObjCell(uint)", "exit", path()),
+            rec("Transition.cs:InitObject", "exit", path(step_up=True)))
+    assert against_ace(ace, port, KINDS, ticks=False) is None
+    worse = port[:-1] + (rec("Transition.cs:InitObject", "exit", path(step_up=False)),)
+    assert against_ace(ace, worse, KINDS, ticks=False).field == "path.step_up"
+
+
+def test_against_ace_compares_arguments_only_where_both_sides_pass_the_same_number():
+    ace = (rec("Transition.cs:InitObject", "enter", path(), args=["Transition", 1.0]),)
+    port = (rec("Transition.cs:InitObject", "enter", path(), args=["LScape", "Transition", 2.0]),)
+    assert against_ace(ace, port, KINDS, ticks=False) is None
+    port = (rec("Transition.cs:InitObject", "enter", path(), args=["Transition", 2.0]),)
+    assert against_ace(ace, port, KINDS, ticks=False).field == "args[1]"
+
+
+def test_run_part_drops_the_ports_tick_driver_and_what_the_harness_runs_after_the_last_tick():
+    records = (rec("LandDefs.cs:GetBlockOffset", "call"), rec("PhysicsObj.cs:set_velocity", "call", tick=0),
+               rec(TICK, "tick", tick=0), rec("PhysicsObj.cs:remove_shadows_from_cells", "call", tick=0),
+               rec(TICK, "call"))
+    assert [r.anchor for r in run_part(records, ticks=True)] == ["PhysicsObj.cs:set_velocity", TICK]
