@@ -98,6 +98,7 @@ from .scene import (BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, Con
                     Environment, Landblock, Mover, Placement, PolygonRec, Position, Scene, SphereShape, StaticObject,
                     ENV_CELL_FIRST, newell_normal)
 from .staging import MOVER_ID
+from .motion_scene import ANIMATION_BASE, MOTION_TABLE_ID, cycle_key
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
@@ -304,11 +305,41 @@ def static_records(obj: StaticObject, index: int) -> ObjectRecords:
 
 
 def mover_records(mover: Mover) -> ObjectRecords:
-    """The DAT records the mover is made from: its Setup (did) and the Setup's one part."""
+    """The DAT records the mover is made from: its Setup (did) and the Setup's one part; with a motion
+    table (scene/6), the Setup names it (DefaultMotionTable) and its MotionTable and Animations follow."""
     part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
+    table = mover.motion_table
     body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
-                 step_up=mover.step_up_height, step_down=mover.step_down_height)
-    return ObjectRecords(MOVER_SETUP_ID, (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body)))
+                 step_up=mover.step_up_height, step_down=mover.step_down_height,
+                 default_motion_table=MOTION_TABLE_ID if table is not None else 0)
+    records = (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body))
+    if table is not None:
+        records += motion_records(table)
+    return ObjectRecords(MOVER_SETUP_ID, records)
+
+
+_IDENTITY_PART = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
+
+
+def motion_records(table) -> tuple:
+    """A scene's motion table (acconform.motion_scene.MotionTableSpec) as DAT records: the MotionTable
+    (MOTION_TABLE_ID), then animation i as Animation ANIMATION_BASE + i, with its PosFrames and, for the
+    mover's one part, an identity frame per frame and no hooks."""
+    def data(entry) -> MotionDataRec:
+        d = entry.data
+        return MotionDataRec(tuple(AnimDataRec(ANIMATION_BASE + a.animation, a.low_frame, a.high_frame, a.framerate)
+                                   for a in d.anims), d.bitfield, d.velocity, d.omega)
+
+    links: dict = {}
+    for e in table.links:
+        links.setdefault(cycle_key(e.style, e.motion), {})[e.to] = data(e)
+    out = [motion_table_record(MOTION_TABLE_ID, table.default_style, dict(table.style_defaults),
+                               {cycle_key(e.style, e.motion): data(e) for e in table.cycles},
+                               {cycle_key(e.style, e.motion): data(e) for e in table.modifiers}, links)]
+    for i, a in enumerate(table.animations):
+        frames = tuple((f.origin, f.orientation) for f in a.pos_frames)
+        out.append(animation_record(ANIMATION_BASE + i, 1, [AnimationFrameRec((_IDENTITY_PART,)) for _ in frames], frames))
+    return tuple(out)
 
 
 def cell_bsp_node(node, out: list, leaves: list) -> None:

@@ -21,6 +21,7 @@ from typing import Union
 from .codec import (Reader, as_text, dumps, dumps_compact, f32_text, ints_text, parse_json_text, vec_text, write_f32,
                     write_f64, write_id, write_vec)
 from .errors import InvalidScene
+from .motion_scene import MotionInput, MotionTableSpec
 from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
 FORMAT = "acconform.scene/6"
@@ -674,7 +675,7 @@ DRIVERS = ("update_object", "request_pos")  # PhysicsObj.update_object / the leg
 
 # a step's inputs, in the order both sides apply them (the clock still at the previous tick's time)
 TICK_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega", "jump", "sequence_velocity",
-               "sequence_omega", "request_pos")
+               "sequence_omega", "request_pos", "motion")
 _TICK_VECTORS = ("velocity", "local_velocity", "omega", "jump", "sequence_velocity", "sequence_omega")
 
 
@@ -699,6 +700,7 @@ class TickStep:
     sequence_velocity: Vec3 | None = None
     sequence_omega: Vec3 | None = None
     request_pos: Position | None = None
+    motion: MotionInput | None = None  # scene/6: a MoveToState's RawMotionState (acconform/motion_scene.py)
 
     def to_json(self):
         d = {"dt": write_f64(self.dt)}
@@ -712,6 +714,8 @@ class TickStep:
                 d[name] = write_vec(v)
         if self.request_pos is not None:
             d["request_pos"] = self.request_pos.to_json()
+        if self.motion is not None:
+            d["motion"] = self.motion.to_json()
         return d
 
     def json_text(self) -> str:
@@ -726,11 +730,16 @@ class TickStep:
                 text += ',"' + name + '":' + vec_text(v)
         if self.request_pos is not None:
             text += ',"request_pos":' + dumps_compact(self.request_pos.to_json())
+        if self.motion is not None:
+            text += ',"motion":' + dumps_compact(self.motion.to_json())
         return text + "}"
 
     @staticmethod
-    def from_json(r: Reader, driver: str) -> "TickStep":
-        """`driver`: the scene's driver (request_pos needs a RequestPos on every step, update_object refuses one)."""
+    def from_json(r: Reader, driver: str, motion: bool = True) -> "TickStep":
+        """`driver`: the scene's driver (request_pos needs a RequestPos on every step, update_object refuses one).
+        `motion`: the format knows the input motion (scene/6)."""
+        if not motion and isinstance(r.value, dict) and "motion" in r.value:
+            r["motion"].fail(f"a motion input needs format {FORMAT!r} (older formats have none)")
         r.obj({"dt", *TICK_INPUTS})
         dt = r["dt"].f64()
         if dt < 0:
@@ -751,6 +760,8 @@ class TickStep:
         elif r.has("request_pos"):
             r["request_pos"].fail("driver update_object moves the mover by its own velocity and root motion: "
                                   "a RequestPos belongs to driver request_pos")
+        if r.has("motion"):
+            kw["motion"] = MotionInput.from_json(r["motion"])
         return TickStep(dt, **kw)
 
 
@@ -783,7 +794,8 @@ class Ticks:
                 + ',"steps":[' + ",".join([s.json_text() for s in self.steps]) + "]}")
 
     @staticmethod
-    def from_json(r: Reader) -> "Ticks":
+    def from_json(r: Reader, motion: bool = True) -> "Ticks":
+        """`motion`: the format knows the tick input motion (scene/6)."""
         r.obj({"driver", "start", "steps"})
         driver = r["driver"].str_()
         if driver not in DRIVERS:
@@ -792,7 +804,7 @@ class Ticks:
         steps = r["steps"].list()
         if not steps:
             r["steps"].fail("a tick scene needs at least one step (one per tick)")
-        ticks = Ticks(driver, start, tuple(TickStep.from_json(s, driver) for s in steps))
+        ticks = Ticks(driver, start, tuple(TickStep.from_json(s, driver, motion) for s in steps))
         times = ticks.times()
         if not math.isfinite(times[-1]):
             r["steps"].fail(f"the clock overflows: start plus the steps' dt reaches {times[-1]}")
@@ -837,11 +849,15 @@ class Mover:
     contact_plane: ContactPlane | None = None
     sliding_normal: Vec3 | None = None
     placement: Placement | None = None  # None: Position = begin, CurCell = its cell (no placement)
+    motion_table: MotionTableSpec | None = None  # scene/6: the Setup's DefaultMotionTable and the player's MotionTableId
 
     def to_json(self):
         d = {"spheres": [s.to_json() for s in self.spheres], "scale": write_f32(self.scale),
              "step_up_height": write_f32(self.step_up_height), "step_down_height": write_f32(self.step_down_height)}
-        return mover_start_json(self, d)
+        mover_start_json(self, d)
+        if self.motion_table is not None:
+            d["motion_table"] = self.motion_table.to_json()
+        return d
 
     @staticmethod
     def from_json(r: Reader, placement: bool = True, ticks: bool = False, vias: bool = True) -> "Mover":
@@ -851,8 +867,11 @@ class Mover:
             r["placement"].fail(f"a placement needs format {FORMAT_V3!r} or later (older formats have no placement)")
         if ticks and isinstance(r.value, dict) and "end" in r.value:
             r["end"].fail("a tick scene's mover has no end: its ticks move it (omit end)")
+        if not vias and isinstance(r.value, dict) and "motion_table" in r.value:
+            r["motion_table"].fail(f"a motion table needs format {FORMAT!r} (older formats have none)")
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
-               "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ())})
+               "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
+               *(("motion_table",) if vias else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
         scale = r["scale"].f32() if r.given("scale") else 1.0
         if not scale > 0:
@@ -875,6 +894,7 @@ class Mover:
             contact_plane=ContactPlane.from_json(r["contact_plane"]) if r.has("contact_plane") else None,
             sliding_normal=r["sliding_normal"].vec3() if r.has("sliding_normal") else None,
             placement=Placement.from_json(r["placement"], vias) if r.has("placement") else None,
+            motion_table=MotionTableSpec.from_json(r["motion_table"]) if vias and r.has("motion_table") else None,
         )
 
 
@@ -900,10 +920,19 @@ class Scene:
         return bool(self.env_cells or self.environments) or not all(lb.has_terrain for lb in self.landblocks)
 
     @property
+    def has_motion(self) -> bool:
+        """Whether the scene uses the motion layer (protocol feature mover.motion): a motion table or a
+        motion input."""
+        return self.mover.motion_table is not None or (
+            self.ticks is not None and any(s.motion is not None for s in self.ticks.steps))
+
+    @property
     def format(self) -> str:
         """The oldest format that holds the scene (/6 for a placement through enter_world, /5 for
         buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.mover.placement is not None and self.mover.placement.via == "enter_world":
+            return FORMAT
+        if self.has_motion:
             return FORMAT
         if self.buildings:
             return FORMAT_V5
@@ -975,7 +1004,7 @@ class Scene:
         if r.given("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
         buildings = tuple(Building.from_json(b) for b in r["buildings"].list()) if r.given("buildings") else ()
-        ticks = Ticks.from_json(r["ticks"]) if r.has("ticks") else None
+        ticks = Ticks.from_json(r["ticks"], motion=fmt == FORMAT) if r.has("ticks") else None
         mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT),
                                 ticks=ticks is not None, vias=fmt == FORMAT)
         scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings)
@@ -1014,6 +1043,11 @@ def check_consistency(scene: Scene, path: str = "") -> None:
     defined = {lb.id >> 16 for lb in scene.landblocks}
     env_cells = _check_indoor(scene, path, defined)
     _check_buildings(scene, path, env_cells)
+    if scene.ticks is not None and scene.mover.motion_table is None:
+        for i, step in enumerate(scene.ticks.steps):
+            if step.motion is not None:
+                raise InvalidScene(_p(path, f"ticks.steps[{i}].motion"), "a motion input needs the mover's motion_table "
+                                   "(the player's MotionTableId: without one ACE has no animation table to play)")
 
     def check_landblock(where: str, cell: int) -> None:
         if cell >> 16 not in defined:

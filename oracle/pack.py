@@ -12,10 +12,11 @@ from dataclasses import fields
 
 from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from ..dat import cell_landblock, has_objects, scene_records
+from ..motion_scene import MOTION_TABLE_ID
 from ..scene import DRIVERS, TICK_INPUTS, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 9
+PACK_VERSION = 10
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -39,7 +40,8 @@ _POS = "I3f4f"
 
 
 # the DatLoader FileType the facade unpacks each record as; 0-2 go to the portal DAT, 3-4 to the cell DAT
-_RECORD_KIND = {"GfxObj": 0, "SetupModel": 1, "Environment": 2, "EnvCell": 3, "LandblockInfo": 4}
+_RECORD_KIND = {"GfxObj": 0, "SetupModel": 1, "Environment": 2, "EnvCell": 3, "LandblockInfo": 4, "MotionTable": 5,
+                "Animation": 6}
 
 
 def _record_list(records) -> list[bytes]:
@@ -69,6 +71,8 @@ _TICKS_HEAD = struct.Struct("<BBdi")
 _STEP_HEAD = struct.Struct("<dI")
 _U32 = struct.Struct("<I")
 _POS_S = struct.Struct("<" + "I3f4f")
+# a motion input: the RawMotionState's CurrentHoldKey, CurrentStyle, then forward, sidestep and turn (command, hold key, speed)
+_MOTION = struct.Struct("<IIIIfIIfIIf")
 
 
 def _ticks(ticks: Ticks | None) -> bytes:
@@ -90,12 +94,15 @@ def _ticks(ticks: Ticks | None) -> bytes:
                 values.append(_U32.pack(v))
             elif name == "request_pos":
                 values.append(_POS_S.pack(*_pos(v)))
+            elif name == "motion":
+                values.append(_MOTION.pack(v.hold_key, v.style, v.forward, v.forward_hold_key, v.forward_speed, v.sidestep,
+                                           v.sidestep_hold_key, v.sidestep_speed, v.turn, v.turn_hold_key, v.turn_speed))
             else:
                 values.append(_3f.pack(*v))
         out.append(_STEP_HEAD.pack(time, mask))
         out += values
     return b"".join(out)
-_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiB")
+_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBI")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -122,7 +129,7 @@ def pack_scene(scene: Scene) -> bytes:
     plv = (0, 0, 0) if pl is None else (2 if pl.via == "enter_world" else 1, pl.flags, 1 if pl.get_cell else 0)
     out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end if m.end is not None else _NO_END),
-                           *plv))
+                           *plv, MOTION_TABLE_ID if m.motion_table is not None else 0))
     return b"".join(out)
 
 

@@ -314,7 +314,7 @@ class PartArray:
         if mtable_id == 0:
             return True
 
-        self.motion_table_manager = MotionTableManager.create(mtable_id, self.portal_dat)
+        self.motion_table_manager = MotionTableManager.create(mtable_id, self.portal_dat.mode, self.portal_dat)
         if self.motion_table_manager is None:
             return False
 

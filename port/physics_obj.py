@@ -46,6 +46,7 @@ from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
 from .weenie_object import DUMMY_OBJECT, WeenieObject
+from .anim_hook import anim_hook_execute
 
 # PhysicsEngine.cs TransientStateFlags.StationaryComplete = StationaryStuck | StationaryStop | StationaryFall
 STATIONARY_COMPLETE = TransientState.StationaryStuck | TransientState.StationaryStop | TransientState.StationaryFall
@@ -117,10 +118,12 @@ class PhysicsObj:
     cached_velocity: Vector3 | None = None
     initial_updates: int = 0
     hooks: list = field(default_factory=list)  # PhysicsObjHook: nothing here ever adds one
-    anim_hooks: list = field(default_factory=list)  # AnimationHook: nothing here ever adds one (no animations)
+    anim_hooks: list = field(default_factory=list)  # AnimationHook: the Sequence's (add_anim_hook)
     request_pos: object = None  # RequestPos (a Position; made by the constructor in server mode)
     request_cached_velocity: Vector3 | None = None  # requestCachedVelocity (set only by set_request_pos)
-    is_animating: bool = False  # IsAnimating (the MotionInterpreter sets it; the mover has none)
+    is_animating: bool = False  # IsAnimating (the MotionInterpreter sets it)
+    last_move_was_autonomous: bool = False  # LastMoveWasAutonomous
+    mode: object = None  # the run's mode (the port's: the managers' scalars)
     # the managers ACE makes on demand for a creature or player: the scene's mover has none, and
     # their null checks stay as ACE has them (docs/oracle.md's audit table)
     movement_manager: object = None
@@ -183,7 +186,7 @@ class PhysicsObj:
                          velocity=zero, contact_plane=Plane(zero, mode.scalar(0.0)), sliding_normal=zero,
                          scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray(), acceleration=zero, omega=zero,
                          elasticity=mode.scalar(DEFAULT_ELASTICITY), friction=mode.scalar(DEFAULT_FRICTION),
-                         cached_velocity=zero, request_cached_velocity=zero, timer=timer)
+                         cached_velocity=zero, request_cached_velocity=zero, timer=timer, mode=mode)
         obj.update_time = timer.current_time
         obj.physics_timer_current_time = timer.current_time
         if server:
@@ -271,10 +274,13 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::InitDefaults", "PhysicsObj.cs:InitDefaults")
     def init_defaults(self, setup) -> None:
-        """Scripts and motion tables are not ported: a Setup naming one stops the port (dat.py
-        writes none)."""
-        if setup.default_script != 0 or setup.default_motion_table != 0:
-            raise NotImplementedError("default scripts and motion tables are not ported")
+        """Scripts are not ported: a Setup naming one stops the port (dat.py writes none)."""
+        if setup.default_script != 0:
+            raise NotImplementedError("default scripts are not ported")
+
+        if setup.default_motion_table != 0:
+            self.set_motion_table_id(setup.default_motion_table)
+
         if self.state & PhysicsState.Static:
             if setup.default_animation != 0:
                 self.state |= PhysicsState.HasDefaultAnim
@@ -434,7 +440,7 @@ class PhysicsObj:
             self.transient_state &= ~TransientState.OnWalkable
 
             if self.movement_manager is not None and prev_on_walkable:
-                raise NotImplementedError("MovementManager.LeaveGround is not ported: the mover has no MovementManager")
+                self.movement_manager.leave_ground()
 
             self.calc_acceleration()
 
@@ -637,13 +643,20 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::set_on_walkable", "PhysicsObj.cs:set_on_walkable")
     def set_on_walkable(self, is_on_walkable: bool) -> None:
+        prev_on_walkable = bool(self.transient_state & TransientState.OnWalkable)
+
         if is_on_walkable:
             self.transient_state |= TransientState.OnWalkable
         else:
             self.transient_state &= ~TransientState.OnWalkable
 
         if self.movement_manager is not None:
-            raise NotImplementedError("MovementManager.HitGround / LeaveGround are not ported: the mover has none")
+            if prev_on_walkable:
+                if not is_on_walkable:
+                    self.movement_manager.leave_ground()
+            else:
+                if is_on_walkable:
+                    self.movement_manager.hit_ground()
         self.calc_acceleration()
 
     @anchor("CPhysicsObj::handle_all_collisions", "PhysicsObj.cs:handle_all_collisions")
@@ -1082,14 +1095,14 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::process_hooks", "PhysicsObj.cs:process_hooks")
     def process_hooks(self) -> None:
-        """Runs and clears the hooks; nothing here ever queues one (no PhysicsObjHook, and an
-        AnimationHook only comes from an animation frame)."""
+        """Runs and clears the hooks: no PhysicsObjHook is ever queued here; the AnimationHooks are
+        the Sequence's (a frame's hooks, AnimDoneHook), run by AnimHook.Execute."""
         for hook in self.hooks:
             raise NotImplementedError("physics object hooks (PhysicsObjHook.Execute) are not ported")
         self.hooks.clear()
 
         for anim_hook in self.anim_hooks:
-            raise NotImplementedError("animation hooks (AnimHook.Execute) are not ported")
+            anim_hook_execute(self, anim_hook)
         self.anim_hooks.clear()
 
     @anchor("CPhysicsObj::calc_friction", "PhysicsObj.cs:calc_friction")
@@ -1239,7 +1252,7 @@ class PhysicsObj:
             raise NotImplementedError("TargetManager.HandleTargetting is not ported")
 
         if self.movement_manager is not None:
-            raise NotImplementedError("MovementManager.UseTime is not ported")
+            self.movement_manager.use_time()
 
         if self.part_array is not None:
             self.part_array.handle_movement()
@@ -1326,7 +1339,7 @@ class PhysicsObj:
             raise NotImplementedError("TargetManager.HandleTargetting is not ported")
 
         if self.movement_manager is not None:
-            raise NotImplementedError("MovementManager.UseTime is not ported")
+            self.movement_manager.use_time()
 
         if self.part_array is not None:
             self.part_array.handle_movement()
@@ -1415,7 +1428,7 @@ class PhysicsObj:
     def set_weenie_obj(self, wobj: WeenieObject) -> None:
         self.weenie_obj = wobj
         if self.movement_manager is not None:
-            raise NotImplementedError("MovementManager.SetWeenieObject is not ported")
+            self.movement_manager.set_weenie_object(wobj)
 
     @anchor("CPhysicsObj::SetMotionTableID", "PhysicsObj.cs:SetMotionTableID")
     def set_motion_table_id(self, mtable_id: int) -> bool:
@@ -1426,8 +1439,170 @@ class PhysicsObj:
 
         self.movement_manager = None
         if mtable_id != 0:
-            raise NotImplementedError("MakeMovementManager (a motion table) is not ported")
+            self.make_movement_manager(True)
+
         return True
+
+    @anchor("CPhysicsObj::MakeMovementManager", "PhysicsObj.cs:MakeMovementManager")
+    def make_movement_manager(self, init_motion: bool) -> None:
+        from .managers.movement_manager import MovementManager
+
+        if self.movement_manager is not None:
+            return
+
+        self.movement_manager = MovementManager.create(self, self.weenie_obj, self.mode)
+
+        if init_motion:
+            self.movement_manager.enter_default_state()
+
+        if not self.state & PhysicsState.Static:
+            if not self.transient_state & TransientState.Active:
+                self.update_time = self.timer.current_time
+
+            self.transient_state |= TransientState.Active
+
+    @anchor("CPhysicsObj::get_minterp", "PhysicsObj.cs:get_minterp")
+    def get_minterp(self):
+        from .managers.movement_manager import MovementManager
+
+        if self.movement_manager is None:
+            self.movement_manager = MovementManager.create(self, self.weenie_obj, self.mode)
+            self.movement_manager.enter_default_state()
+            if self.state & PhysicsState.Static:
+                if self.transient_state & TransientState.Active:
+                    # loword = cmd, hiword = param / refactor... (ACE)
+                    self.update_time = self.timer.current_time
+                self.transient_state |= TransientState.Active
+        return self.movement_manager.get_minterp()
+
+    @anchor("CPhysicsObj::DoMotion", "PhysicsObj.cs:DoMotion")
+    def do_motion(self, motion: int, movement_params) -> int:
+        from .animation.movement_struct import MovementStruct
+        from acconform.motion_enums import MovementType, WeenieError
+
+        self.last_move_was_autonomous = True
+        if self.movement_manager is None:
+            return WeenieError.NoAnimationTable
+        mvs = MovementStruct.create(MovementType.RawCommand, motion, movement_params)
+        return self.movement_manager.perform_movement(mvs)
+
+    @anchor("CPhysicsObj::StopMotion", "PhysicsObj.cs:StopMotion")
+    def stop_motion(self, motion: int, movement_params, send_event: bool) -> int:
+        from .animation.movement_struct import MovementStruct
+        from acconform.motion_enums import MovementType, WeenieError
+
+        self.last_move_was_autonomous = True
+        if self.movement_manager is None:
+            return WeenieError.NoAnimationTable
+        mvs = MovementStruct.create(MovementType.StopRawCommand)
+        mvs.motion = motion
+        mvs.params = movement_params
+        return self.movement_manager.perform_movement(mvs)
+
+    @anchor("CPhysicsObj::DoInterpretedMotion", "PhysicsObj.cs:DoInterpretedMotion")
+    def do_interpreted_motion(self, motion: int, movement_params) -> int:
+        from acconform.motion_enums import WeenieError
+
+        if self.part_array is None:
+            return WeenieError.GeneralMovementFailure
+
+        return self.part_array.do_interpreted_motion(motion, movement_params)
+
+    @anchor("CPhysicsObj::StopInterpretedMotion", "PhysicsObj.cs:StopInterpretedMotion")
+    def stop_interpreted_motion(self, motion: int, movement_params) -> int:
+        from acconform.motion_enums import WeenieError
+
+        if self.part_array is None:
+            return WeenieError.GeneralMovementFailure
+        return self.part_array.stop_interpreted_motion(motion, movement_params)
+
+    @anchor("CPhysicsObj::StopCompletely", "PhysicsObj.cs:StopCompletely")
+    def stop_completely(self, send_event: bool) -> None:
+        from .animation.movement_struct import MovementStruct
+        from acconform.motion_enums import MovementType
+
+        if self.movement_manager is None:
+            return
+        mvs = MovementStruct.create(MovementType.StopCompletely)
+        self.movement_manager.perform_movement(mvs)
+
+    @anchor("CPhysicsObj::StopCompletely_Internal", "PhysicsObj.cs:StopCompletely_Internal")
+    def stop_completely_internal(self) -> None:
+        if self.part_array is not None:
+            self.part_array.stop_completely_internal()
+
+    @anchor("CPhysicsObj::InitializeMotionTables", "PhysicsObj.cs:InitializeMotionTables")
+    def initialize_motion_tables(self) -> None:
+        if self.part_array is not None:
+            self.part_array.initialize_motion_tables()
+
+    @anchor("CPhysicsObj::CheckForCompletedMotions", "PhysicsObj.cs:CheckForCompletedMotions")
+    def check_for_completed_motions(self) -> None:
+        if self.part_array is not None:
+            self.part_array.check_for_completed_motions()
+
+    @anchor("CPhysicsObj::MotionDone", "PhysicsObj.cs:MotionDone")
+    def motion_done(self, motion: int, success: bool) -> None:
+        if self.movement_manager is not None:
+            self.movement_manager.motion_done(motion, success)
+
+    @anchor("CPhysicsObj::Hook_AnimDone", "PhysicsObj.cs:Hook_AnimDone")
+    def hook_anim_done(self) -> None:
+        if self.part_array is not None:
+            self.part_array.animation_done(True)
+
+    @anchor("CPhysicsObj::add_anim_hook", "PhysicsObj.cs:add_anim_hook")
+    def add_anim_hook(self, hook) -> None:
+        self.anim_hooks.append(hook)
+
+    @anchor("CPhysicsObj::HasAnims", "PhysicsObj.cs:HasAnims")
+    def has_anims(self) -> bool:
+        if self.part_array is None:
+            return False
+        return self.part_array.has_anims()
+
+    @anchor("CPhysicsObj::movement_is_autonomous", "PhysicsObj.cs:movement_is_autonomous")
+    def movement_is_autonomous(self) -> bool:
+        return self.last_move_was_autonomous
+
+    @anchor("CPhysicsObj::InqInterpretedMotionState", "PhysicsObj.cs:InqInterpretedMotionState")
+    def inq_interpreted_motion_state(self):
+        if self.movement_manager is None:
+            return None
+        else:
+            return self.movement_manager.inq_interpreted_motion_state()
+
+    @anchor("CPhysicsObj::IsMovingTo", "PhysicsObj.cs:IsMovingTo")
+    def is_moving_to(self) -> bool:
+        if self.movement_manager is None:
+            return False
+        else:
+            return self.movement_manager.is_moving_to()
+
+    @anchor("CPhysicsObj::cancel_moveto", "PhysicsObj.cs:cancel_moveto")
+    def cancel_moveto(self) -> None:
+        from acconform.motion_enums import WeenieError
+
+        if self.movement_manager is not None:
+            self.movement_manager.cancel_move_to(WeenieError.ActionCancelled)
+
+    @anchor("CPhysicsObj::get_heading", "PhysicsObj.cs:get_heading")
+    def get_heading(self):
+        return self.position.frame.get_heading()
+
+    @anchor("CPhysicsObj::set_heading", "PhysicsObj.cs:set_heading")
+    def set_heading(self, degrees, send_event: bool, lscape=None) -> None:
+        """ACE's set_frame reads PhysicsEngine.Instance.Server: the port's set_frame takes it from the
+        run's `lscape`, which the callers that turn an object (MoveToManager, StickyManager: no scene
+        reaches them yet) must pass."""
+        if lscape is None:
+            raise NotImplementedError("set_heading needs the run's LScape (MoveTo and Sticky are not in scenes yet)")
+        self.position.frame.set_heading(degrees)
+        self.set_frame(self.position.frame, lscape)
+
+    @anchor("CPhysicsObj::get_velocity", "PhysicsObj.cs:get_velocity")
+    def get_velocity(self):
+        return self.cached_velocity
 
     @anchor("CPhysicsObj::enter_world", "PhysicsObj.cs:enter_world(Position)")
     def enter_world(self, pos, lscape, trace=None) -> bool:
@@ -1463,7 +1638,7 @@ class PhysicsObj:
             self.part_array.handle_enter_world()
 
         if self.movement_manager is not None:
-            raise NotImplementedError("MovementManager.HandleEnterWorld is not ported")
+            self.movement_manager.handle_enter_world()
         return True
 
     @anchor("CPhysicsObj::SetPosition", "PhysicsObj.cs:SetPosition")

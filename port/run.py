@@ -32,6 +32,7 @@ from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
+from acconform.motion_scene import MOTION_TABLE_ID
 from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, Scene, StaticObject
 
 from .anchors import anchor, harness
@@ -64,7 +65,8 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     """The mover as the oracle builds it (docs/oracle.md's audit): a player's PhysicsObj as
     WorldObject.InitPhysicsObj makes a Creature's -- ``new PhysicsObj()``, makeAnimObject(did) over
     dat.mover_records (its Setup: its spheres and step heights, one empty mesh part),
-    set_object_guid(obj_id), set_weenie_obj(the WeenieObject of its Player), SetMotionTableID(0),
+    set_object_guid(obj_id), set_weenie_obj(the WeenieObject of its Player), SetMotionTableID(its motion
+    table: the one its Setup names, acconform.motion_scene.MOTION_TABLE_ID, or 0),
     SetScaleStatic(scale), State -- then TransientState, Velocity, the contact plane (and its cell) and
     the sliding normal as `m` gives them (the scene's Mover, or a request's dat.DatMover), Position =
     begin, CurCell = the begin cell. It is not entered in any cell. With a placement, Position and
@@ -75,7 +77,7 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(obj_id)
     obj.set_weenie_obj(WeenieObject.of_player(Player()))
-    obj.set_motion_table_id(0)
+    obj.set_motion_table_id(MOTION_TABLE_ID if getattr(m, "motion_table", None) is not None else 0)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
     obj.transient_state = m.transient_state
@@ -443,6 +445,24 @@ def apply_inputs(mover: PhysicsObj, step, mode) -> None:
         mover.part_array.sequence.set_velocity(mode.vec(*step.sequence_velocity))
     if step.sequence_omega is not None:
         mover.part_array.sequence.set_omega(mode.vec(*step.sequence_omega))
+    if step.motion is not None:
+        move_to_state(mover, step.motion, mode)
+
+
+@harness("the physics calls of a player's MoveToState (Player.OnMoveToState, FastTick; OnMoveToState_ServerMethod), as the oracle's facade makes them")
+def move_to_state(mover: PhysicsObj, raw, mode) -> None:
+    """`raw`: the MoveToState's RawMotionState (acconform.motion_scene.MotionInput). ACE's default
+    (client_movement_formula off, no standing long jump): UpdateTime when the mover is not moving
+    or animating, the interpreter's RawState.SetState, then apply_raw_movement(true, whether
+    motion_allows_jump of the interpreted forward command is None)."""
+    from acconform.motion_enums import WeenieError
+
+    if not mover.is_moving_or_animating():
+        mover.update_time = mover.timer.current_time
+    minterp = mover.get_minterp()
+    minterp.raw_state.set_state(raw, mode)
+    allow_jump = minterp.motion_allows_jump(minterp.interpreted_state.forward_command) == WeenieError.None_
+    minterp.apply_raw_movement(True, allow_jump)
 
 
 @harness("reads the mover's PhysicsObj after a tick, as the oracle's facade does")

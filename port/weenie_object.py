@@ -39,6 +39,7 @@ class Player:
     last_contact: bool = True
     teleporting: bool = False
     scatter_pos: object = None
+    run_skill: int = 0  # GetCreatureSkill(Skill.Run).Current: the database-free Player's (no attributes, no skill)
 
     @property
     def is_pk(self) -> bool:
@@ -76,6 +77,35 @@ class WeenieObject:
     @anchor(None, "WeenieObject.cs:IsPKLite")
     def is_pk_lite(self) -> bool:
         return self.is_player and isinstance(self.world_object, Player) and self.world_object.is_pkl
+
+    @anchor(None, "WeenieObject.cs:CanJump")
+    def can_jump(self, extent) -> bool:
+        return True
+
+    @anchor(None, "WeenieObject.cs:InqRunRate")
+    def inq_run_rate(self, rate):
+        """``InqRunRate(ref float rate)``: returns (true, the new rate); `rate` (its float type) is
+        overwritten. The run skill is the Creature's (GetCreatureSkill(Skill.Run).Current); the rate
+        ``(float)MovementSystem.GetRunRate(0.0f, runSkill, 1.0f)``."""
+        from .animation.movement_system import get_run_rate
+
+        run_skill = 0
+        if isinstance(self.world_object, Player):
+            run_skill = self.world_object.run_skill
+        s = type(rate)
+        return True, s(get_run_rate(s(0.0), run_skill, s(1.0)))
+
+    @anchor(None, "WeenieObject.cs:JumpStaminaCost")
+    def jump_stamina_cost(self, extent, stamina_cost: int):
+        return 0
+
+    @anchor(None, "WeenieObject.cs:OnMotionDone", "Player.HandleMotionDone: a player neither chugging nor casting does nothing")
+    def on_motion_done(self, motion_id: int, success: bool) -> None:
+        pass
+
+    @anchor(None, "WeenieObject.cs:OnMoveComplete", "Player.OnMoveComplete: IsMoving, the player's MoveTo chains (none here)")
+    def on_move_complete(self, status) -> None:
+        pass
 
 
 # WeenieObject.DummyObject: what a PhysicsObj made without a WorldObject carries

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 9;
+        public const int PackVersion = 10;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -80,6 +80,7 @@ namespace Acconform.Oracle
             public uint State, Transient;
             public Vector3 Velocity, LocalVelocity, Omega, Jump, SequenceVelocity, SequenceOmega;
             public ACE.Server.Physics.Common.Position RequestPos;
+            public ACE.Server.Network.Structure.RawMotionState Motion;  // a MoveToState's RawMotionState
         }
         static bool hasTicks;
         static byte tickDriver;
@@ -354,6 +355,22 @@ namespace Acconform.Oracle
                 if ((s.Mask & 64) != 0) s.SequenceVelocity = V3(r);
                 if ((s.Mask & 128) != 0) s.SequenceOmega = V3(r);
                 if ((s.Mask & 256) != 0) s.RequestPos = Pos(r);
+                if ((s.Mask & 512) != 0)
+                {
+                    var m = new ACE.Server.Network.Structure.RawMotionState();
+                    m.CurrentHoldKey = (HoldKey)r.ReadUInt32();
+                    m.CurrentStyle = (MotionStance)r.ReadUInt32();
+                    m.ForwardCommand = (MotionCommand)r.ReadUInt32();
+                    m.ForwardHoldKey = (HoldKey)r.ReadUInt32();
+                    m.ForwardSpeed = r.ReadSingle();
+                    m.SidestepCommand = (MotionCommand)r.ReadUInt32();
+                    m.SidestepHoldKey = (HoldKey)r.ReadUInt32();
+                    m.SidestepSpeed = r.ReadSingle();
+                    m.TurnCommand = (MotionCommand)r.ReadUInt32();
+                    m.TurnHoldKey = (HoldKey)r.ReadUInt32();
+                    m.TurnSpeed = r.ReadSingle();
+                    s.Motion = m;
+                }
                 tickSteps.Add(s);
             }
         }
@@ -400,6 +417,21 @@ namespace Acconform.Oracle
             if ((s.Mask & 32) != 0) Jump(obj, s.Jump);
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
+            if ((s.Mask & 512) != 0) MoveToState(obj, s.Motion);
+        }
+
+        /// <summary>The physics calls of a player's MoveToState (GameActionMoveToState.Handle): Player.OnMoveToState's
+        /// FastTick path, then OnMoveToState_ServerMethod (ACE's default: client_movement_formula off; no standing long
+        /// jump): UpdateTime when not moving or animating, the interpreter's RawState.SetState, then
+        /// apply_raw_movement(true, whether motion_allows_jump(the interpreted forward command) is None).</summary>
+        static void MoveToState(PhysicsObj obj, ACE.Server.Network.Structure.RawMotionState raw)
+        {
+            if (!obj.IsMovingOrAnimating)
+                obj.UpdateTime = PhysicsTimer.CurrentTime;
+            var minterp = obj.get_minterp();
+            minterp.RawState.SetState(raw);
+            var allowJump = minterp.motion_allows_jump(minterp.InterpretedState.ForwardCommand) == WeenieError.None;
+            minterp.apply_raw_movement(true, allowJump);
         }
 
         /// <summary>The physics calls of Player.HandleActionJump's FastTick branch with a local jump velocity. The
@@ -1035,9 +1067,11 @@ namespace Acconform.Oracle
             else if (kind == 2) file = new ACE.DatLoader.FileTypes.Environment();
             else if (kind == 3) file = new ACE.DatLoader.FileTypes.EnvCell();
             else if (kind == 4) file = new LandblockInfo();
+            else if (kind == 5) file = new ACE.DatLoader.FileTypes.MotionTable();
+            else if (kind == 6) file = new ACE.DatLoader.FileTypes.Animation();
             else throw new InvalidDataException("acconform facade: unknown DAT record kind " + kind);
             file.Unpack(new BinaryReader(new MemoryStream(ms.GetBuffer(), off, len, false)));
-            if (kind >= 3)
+            if (kind == 3 || kind == 4)
             {
                 cellFiles[id] = file;
             }
@@ -1111,16 +1145,17 @@ namespace Acconform.Oracle
             placementEnterWorld = placementKind == 2;
             placementFlags = r.ReadInt32();
             placementGetCell = r.ReadByte() != 0;
+            var motionTableId = r.ReadUInt32();  // the player's MotionTableId (0: none); its Setup names the same table
 
             // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a Creature's
-            // (a player's): makeAnimObject, its guid, the WeenieObject of its Player, its motion table (none), scale, state
+            // (a player's): makeAnimObject, its guid, the WeenieObject of its Player, its motion table, scale, state
             var obj = new PhysicsObj();
             obj.makeAnimObject(did, true);
             obj.set_object_guid(new ObjectGuid(moverId));
             moverPlayer = MakePlayer(moverId);  // held as a server's landblock holds its objects: WeenieObject keeps a WeakReference
             obj.set_weenie_obj(new WeenieObject(moverPlayer));
             SetServerPlayerPhysics(moverPlayer, obj, begin);
-            obj.SetMotionTableID(0);
+            obj.SetMotionTableID(motionTableId);
             obj.SetScaleStatic(scale);
             obj.State = state;
             obj.TransientState = ts;

@@ -1,10 +1,10 @@
-"""RawMotionState: RawMotionState(), AddAction, ApplyMotion, InitDefaults, RemoveAction, RemoveMotion.
+"""RawMotionState: RawMotionState(), AddAction, SetState, ApplyMotion, InitDefaults, RemoveAction, RemoveMotion.
 
 ACE's Animation/RawMotionState.cs: the motion commands as the client sent them (walk backward,
 turn left, ...), with the hold key each was given; MotionInterp.adjust_motion turns them into the
-InterpretedMotionState the motion table plays. SetState (from the network's RawMotionState) is not
-ported: it is how ACE reads a client's packet, which no scene carries. Speeds are the run's
-scalars (float32 in exact mode).
+InterpretedMotionState the motion table plays. SetState takes the network's RawMotionState (a
+MoveToState's: a scene's tick input ``motion``, acconform.motion_scene.MotionInput). Speeds are the
+run's scalars (float32 in exact mode).
 """
 
 from __future__ import annotations
@@ -31,6 +31,31 @@ class RawMotionState:
     turn_command: int = 0  # uint
     turn_hold_key: HoldKey = HoldKey.Invalid
     turn_speed: object = None  # float
+
+    @anchor(None, "RawMotionState.cs:SetState", "from Network.Structure.RawMotionState (a scene's MotionInput)")
+    def set_state(self, state, mode) -> None:
+        s = mode.scalar
+        self.current_hold_key = HoldKey(state.hold_key)
+        self.current_style = state.style
+        if self.current_style == 0:
+            self.current_style = MotionCommand.NonCombat
+        self.forward_command = state.forward
+        if self.forward_command == 0:
+            self.forward_command = MotionCommand.Ready
+        self.forward_hold_key = HoldKey(state.forward_hold_key)
+        self.forward_speed = s(state.forward_speed)  # todo: verifications (ACE)
+        if self.forward_speed == 0:
+            self.forward_speed = s(1.0)
+        self.side_step_command = state.sidestep
+        self.side_step_hold_key = HoldKey(state.sidestep_hold_key)
+        self.side_step_speed = s(state.sidestep_speed)
+        if self.side_step_speed == 0:
+            self.side_step_speed = s(1.0)
+        self.turn_command = state.turn
+        self.turn_hold_key = HoldKey(state.turn_hold_key)
+        self.turn_speed = s(state.turn_speed)
+        if self.turn_speed == 0:
+            self.turn_speed = s(1.0)
 
     @staticmethod
     @anchor("RawMotionState::RawMotionState", "RawMotionState.cs:RawMotionState()", "the constructor: InitDefaults")

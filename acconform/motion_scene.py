@@ -1,0 +1,260 @@
+"""The motion layer's scene data (scene/6, protocol feature ``mover.motion``): the mover's motion table
+and the tick input ``motion``.
+
+A mover's ``motion_table`` is a small inline MotionTable: its default style, the style defaults, the
+cycles, links and modifiers (each a MotionData: its animations with framerate and frame range, an
+optional velocity and omega), and the animations they play, each a list of root-motion frames
+(PosFrames). acconform/dat.py writes it as ACE's DAT records (MotionTable ``MOTION_TABLE_ID``,
+Animation ``ANIMATION_BASE + index``, one part frame per frame for the Setup's one part, no hooks),
+named by the mover's Setup (DefaultMotionTable); the mover is then made as WorldObject.InitPhysicsObj
+makes a player with that MotionTableId. Motions and styles are MotionCommand names
+(acconform/motion_enums.py); hold keys are HoldKey names (``None`` for HoldKey.None).
+
+A tick's ``motion`` is the RawMotionState of a player's MoveToState, applied with the physics calls
+of Player.OnMoveToState's FastTick path and OnMoveToState_ServerMethod (ACE's default,
+client_movement_formula off): UpdateTime when not moving or animating, RawState.SetState, then
+apply_raw_movement(true, motion_allows_jump(the interpreted forward command) == None).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .codec import Reader, write_f32, write_vec
+from .errors import InvalidScene
+from .motion_enums import HoldKey, MotionCommand
+
+MOTION_TABLE_ID = 0x09000000  # the mover's MotionTable (portal DAT type 0x09)
+ANIMATION_BASE = 0x03000000  # animation i of the mover's table (portal DAT type 0x03)
+MAX_ANIMATIONS = 0xFFFF
+
+
+def _command(r: Reader) -> int:
+    name = r.str_()
+    try:
+        return int(MotionCommand[name])
+    except KeyError:
+        r.fail(f"unknown motion command {name!r} (a MotionCommand name, e.g. Ready, WalkForward, NonCombat)")
+
+
+def _command_name(v: int) -> str:
+    return MotionCommand(v).name
+
+
+def _hold_key(r: Reader) -> int:
+    name = r.str_()
+    key = "None_" if name == "None" else name
+    if key not in HoldKey.__members__:
+        r.fail(f"unknown hold key {name!r} (known: Invalid, None, Run)")
+    return int(HoldKey[key])
+
+
+def _hold_key_name(v: int) -> str:
+    return "None" if v == HoldKey.None_ else HoldKey(v).name
+
+
+@dataclass(frozen=True, slots=True)
+class AnimRef:
+    """An AnimData: the table's animation `animation` (an index into its animations) played at
+    `framerate` frames per second from `low_frame` to `high_frame` (-1: the last frame)."""
+
+    animation: int
+    framerate: float
+    low_frame: int = 0
+    high_frame: int = -1
+
+    def to_json(self):
+        return {"animation": self.animation, "framerate": write_f32(self.framerate), "low_frame": self.low_frame,
+                "high_frame": self.high_frame}
+
+    @staticmethod
+    def from_json(r: Reader, n_animations: int) -> "AnimRef":
+        r.obj({"animation", "framerate", "low_frame", "high_frame"})
+        index = r["animation"].int_(0, n_animations - 1) if n_animations else r["animation"].fail(
+            "the table has no animations to play")
+        return AnimRef(index, r["framerate"].f32(), r["low_frame"].int_(-(2 ** 31), 2 ** 31 - 1) if r.given("low_frame") else 0,
+                       r["high_frame"].int_(-(2 ** 31), 2 ** 31 - 1) if r.given("high_frame") else -1)
+
+
+@dataclass(frozen=True, slots=True)
+class MotionDataSpec:
+    """A MotionData: its animations, Bitfield, and Velocity / Omega when given."""
+
+    anims: tuple[AnimRef, ...]
+    velocity: tuple | None = None
+    omega: tuple | None = None
+    bitfield: int = 0
+
+    def json_into(self, d: dict) -> dict:
+        d["anims"] = [a.to_json() for a in self.anims]
+        if self.velocity is not None:
+            d["velocity"] = write_vec(self.velocity)
+        if self.omega is not None:
+            d["omega"] = write_vec(self.omega)
+        if self.bitfield:
+            d["bitfield"] = self.bitfield
+        return d
+
+    @staticmethod
+    def read(r: Reader, n_animations: int) -> "MotionDataSpec":
+        return MotionDataSpec(tuple(AnimRef.from_json(a, n_animations) for a in r["anims"].list(max_count=255)),
+                              r["velocity"].vec3() if r.given("velocity") else None,
+                              r["omega"].vec3() if r.given("omega") else None,
+                              r["bitfield"].int_(0, 255) if r.given("bitfield") else 0)
+
+
+_DATA_FIELDS = {"anims", "velocity", "omega", "bitfield"}
+
+
+@dataclass(frozen=True, slots=True)
+class MotionEntry:
+    """A cycle or modifier (`style`, `motion`), or a link (`style`, from `motion` to `to`)."""
+
+    style: int
+    motion: int
+    data: MotionDataSpec
+    to: int | None = None
+
+    def to_json(self):
+        d = {"style": _command_name(self.style), ("from" if self.to is not None else "motion"): _command_name(self.motion)}
+        if self.to is not None:
+            d["to"] = _command_name(self.to)
+        return self.data.json_into(d)
+
+    @staticmethod
+    def from_json(r: Reader, n_animations: int, link: bool) -> "MotionEntry":
+        r.obj({"style", "from", "to", *_DATA_FIELDS} if link else {"style", "motion", *_DATA_FIELDS})
+        style = _command(r["style"])
+        if link:
+            return MotionEntry(style, _command(r["from"]), MotionDataSpec.read(r, n_animations), _command(r["to"]))
+        return MotionEntry(style, _command(r["motion"]), MotionDataSpec.read(r, n_animations))
+
+
+@dataclass(frozen=True, slots=True)
+class AnimationSpec:
+    """An Animation: its root motion, one PosFrame (a Frame) per frame."""
+
+    pos_frames: tuple  # of scene.Frame
+
+    def to_json(self):
+        return {"pos_frames": [f.to_json() for f in self.pos_frames]}
+
+    @staticmethod
+    def from_json(r: Reader) -> "AnimationSpec":
+        from .scene import Frame
+
+        r.obj({"pos_frames"})
+        return AnimationSpec(tuple(Frame.from_json(f) for f in r["pos_frames"].list(min_count=1)))
+
+
+@dataclass(frozen=True, slots=True)
+class MotionTableSpec:
+    default_style: int
+    style_defaults: tuple  # ((style, substate), ...), in order
+    animations: tuple[AnimationSpec, ...]
+    cycles: tuple[MotionEntry, ...]
+    links: tuple[MotionEntry, ...] = ()
+    modifiers: tuple[MotionEntry, ...] = ()
+
+    def to_json(self):
+        d = {"default_style": _command_name(self.default_style),
+             "style_defaults": [[_command_name(s), _command_name(m)] for s, m in self.style_defaults],
+             "animations": [a.to_json() for a in self.animations],
+             "cycles": [c.to_json() for c in self.cycles]}
+        if self.links:
+            d["links"] = [c.to_json() for c in self.links]
+        if self.modifiers:
+            d["modifiers"] = [c.to_json() for c in self.modifiers]
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "MotionTableSpec":
+        r.obj({"default_style", "style_defaults", "animations", "cycles", "links", "modifiers"})
+        animations = tuple(AnimationSpec.from_json(a) for a in r["animations"].list(max_count=MAX_ANIMATIONS))
+        n = len(animations)
+        pairs = []
+        for p in r["style_defaults"].list():
+            style, substate = p.list(count=2)
+            pairs.append((_command(style), _command(substate)))
+        keys = [s for s, _ in pairs]
+        if len(set(keys)) != len(keys):
+            r["style_defaults"].fail("a style has one default substate: a style is listed twice")
+        table = MotionTableSpec(
+            _command(r["default_style"]), tuple(pairs), animations,
+            tuple(MotionEntry.from_json(c, n, False) for c in r["cycles"].list()),
+            tuple(MotionEntry.from_json(c, n, True) for c in r["links"].list()) if r.given("links") else (),
+            tuple(MotionEntry.from_json(c, n, False) for c in r["modifiers"].list()) if r.given("modifiers") else ())
+        for name, entries in (("cycles", table.cycles), ("modifiers", table.modifiers)):
+            seen = set()
+            for i, e in enumerate(entries):
+                key = cycle_key(e.style, e.motion)
+                if key in seen:
+                    raise InvalidScene(r[name][i].path, "the same style and motion as an earlier entry (one MotionData per key)")
+                seen.add(key)
+        seen = set()
+        for i, e in enumerate(table.links):
+            key = (cycle_key(e.style, e.motion), e.to)
+            if key in seen:
+                raise InvalidScene(r["links"][i].path, "the same style, from and to as an earlier link")
+            seen.add(key)
+        return table
+
+
+def cycle_key(style: int, motion: int) -> int:
+    """The key of MotionTable.Cycles, Modifiers and Links: ``style << 16 | (motion & 0xFFFFFF)`` (uint)."""
+    return ((style << 16) | (motion & 0xFFFFFF)) & 0xFFFFFFFF
+
+
+@dataclass(frozen=True, slots=True)
+class MotionInput:
+    """A MoveToState's RawMotionState: the current hold key and style, then forward, sidestep and turn
+    commands, each with its hold key and speed. 0 (Invalid) where not given, as the client's packed
+    state leaves an unflagged field (RawMotionState.SetState then makes style NonCombat, forward
+    Ready and each speed 0 into 1)."""
+
+    hold_key: int = 0
+    style: int = 0
+    forward: int = 0
+    forward_hold_key: int = 0
+    forward_speed: float = 0.0
+    sidestep: int = 0
+    sidestep_hold_key: int = 0
+    sidestep_speed: float = 0.0
+    turn: int = 0
+    turn_hold_key: int = 0
+    turn_speed: float = 0.0
+
+    _COMMANDS = ("style", "forward", "sidestep", "turn")
+    _KEYS = ("hold_key", "forward_hold_key", "sidestep_hold_key", "turn_hold_key")
+    _SPEEDS = ("forward_speed", "sidestep_speed", "turn_speed")
+
+    def to_json(self):
+        d = {}
+        for name in ("hold_key", "style", "forward", "forward_hold_key", "forward_speed", "sidestep",
+                     "sidestep_hold_key", "sidestep_speed", "turn", "turn_hold_key", "turn_speed"):
+            v = getattr(self, name)
+            if not v:
+                continue
+            if name in self._COMMANDS:
+                d[name] = _command_name(v)
+            elif name in self._KEYS:
+                d[name] = _hold_key_name(v)
+            else:
+                d[name] = write_f32(v)
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "MotionInput":
+        r.obj({"hold_key", "style", "forward", "forward_hold_key", "forward_speed", "sidestep", "sidestep_hold_key",
+               "sidestep_speed", "turn", "turn_hold_key", "turn_speed"})
+        kw = {}
+        for name in MotionInput._COMMANDS:
+            if r.given(name):
+                kw[name] = _command(r[name])
+        for name in MotionInput._KEYS:
+            if r.given(name):
+                kw[name] = _hold_key(r[name])
+        for name in MotionInput._SPEEDS:
+            if r.given(name):
+                kw[name] = r[name].f32()
+        return MotionInput(**kw)
