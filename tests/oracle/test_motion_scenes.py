@@ -1,0 +1,95 @@
+"""The motion layer in scenes (issue 40): the mover's motion table and MoveToState inputs, ACE's answers
+recorded on both runtimes (tests/oracle/motion_scenes.py says how), the port checked against them every
+push, and live ACE asked again in the live lane.
+
+The answers were recorded on ACE builds whose mover's Player answers what the physics asks of it when a
+motion table is made: ACE's own full build (.NET 10, real Player) and a mono physics build whose
+stand-in Creature.GetCreatureSkill gives a skill of Current 0 and whose HandleMotionDone / OnMoveComplete
+have empty bodies, as the database-free Player's are in ACE (docs/oracle.md's audit rows "the mover's
+motion table" and "the physics builds' stand-ins for the motion layer").
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import pytest
+
+from acconform.compare import compare
+from acconform.errors import InvalidScene
+from acconform.scene import Scene
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from oracle.live_answers import recorded_outcomes  # noqa: E402
+from oracle.motion_scenes import DATA, scenes  # noqa: E402
+
+RUNTIMES = ("mono", "coreclr")
+SCENES = scenes()
+WALK = "player_walks_turns_and_stops"
+
+
+def test_a_motion_scene_is_format_6_and_reads_back_as_the_same_scene():
+    scene = SCENES[WALK]
+    assert scene.format == "acconform.scene/6" and scene.has_motion
+    assert Scene.loads(scene.dumps()) == scene
+
+
+def test_a_motion_table_in_an_older_format_is_refused_naming_the_field():
+    doc = json.loads(SCENES[WALK].dumps())
+    doc["format"] = "acconform.scene/5"
+    for step in doc["ticks"]["steps"]:
+        step.pop("motion", None)
+    with pytest.raises(InvalidScene, match=r"mover\.motion_table.*needs format 'acconform.scene/6'"):
+        Scene.from_json(doc)
+
+
+def test_a_motion_input_without_the_movers_motion_table_is_refused_naming_the_step():
+    doc = json.loads(SCENES[WALK].dumps())
+    del doc["mover"]["motion_table"]
+    with pytest.raises(InvalidScene, match=r"ticks\.steps\[0\]\.motion.*needs the mover's motion_table"):
+        Scene.from_json(doc)
+
+
+def test_an_unknown_motion_command_and_an_animation_out_of_range_are_refused_naming_the_field():
+    doc = json.loads(SCENES[WALK].dumps())
+    doc["ticks"]["steps"][0]["motion"]["forward"] = "Sprint"
+    with pytest.raises(InvalidScene, match=r"steps\[0\]\.motion\.forward.*unknown motion command 'Sprint'"):
+        Scene.from_json(doc)
+    doc = json.loads(SCENES[WALK].dumps())
+    doc["mover"]["motion_table"]["cycles"][0]["anims"][0]["animation"] = 99
+    with pytest.raises(InvalidScene, match=r"motion_table\.cycles\[0\]\.anims\[0\]\.animation"):
+        Scene.from_json(doc)
+
+
+@pytest.mark.parametrize("runtime", RUNTIMES)
+def test_the_port_walks_turns_and_stops_the_player_as_ace_does_every_tick(runtime):
+    from acconform.port.run import run_scene
+
+    ace = recorded_outcomes(DATA, runtime)
+    for name, scene in SCENES.items():
+        assert ace[name].error is None and len(ace[name].ticks) == len(scene.ticks.steps), name
+        assert compare(run_scene(scene, runtime=runtime), ace[name], "exact") == [], name
+
+
+def test_ace_moves_the_walking_player_forward_then_turns_it_and_stops_it():
+    ticks = recorded_outcomes(DATA, "mono")[WALK].ticks
+    walked, turned, stopped = ticks[11], ticks[23], ticks[35]
+    assert walked.origin[1] > ticks[0].origin[1] + 1.0  # root motion and the cycle's velocity carry it forward
+    assert turned.orientation != walked.orientation  # the TurnRight modifier's omega turns it
+    assert stopped.origin == ticks[25].origin  # released: it stands where it stopped
+
+
+def test_the_runtimes_differ_only_in_the_turns_last_bits_and_the_port_follows_each():
+    """mono and CoreCLR round the turn's quaternion differently (the runtimes' float math, docs/runtimes.md);
+    positions agree. The port, run as each runtime, matches each (the test above)."""
+    mono, coreclr = recorded_outcomes(DATA, "mono"), recorded_outcomes(DATA, "coreclr")
+    fields = {d.field.split(".")[1].split("[")[0] for d in compare(mono[WALK], coreclr[WALK])}
+    assert fields == {"orientation"}
+
+
+@pytest.mark.live_oracle
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_live_ace_answers_each_motion_scene_as_recorded(live, name):
+    assert compare(live.run(SCENES[name]), recorded_outcomes(DATA, live.location.runtime)[name], "exact") == [], name
