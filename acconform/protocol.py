@@ -96,6 +96,10 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "buildings": (lambda s: bool(s.buildings),
                   "buildings: a landblock's LandblockInfo with BuildInfos (a shell GfxObj, its frame and portals into "
                   "its EnvCells), built by ACE's Landblock.init_buildings (scene/5)"),
+    "mover.motion": (lambda s: s.has_motion,
+                     "the motion layer: the mover's motion table (MotionTable and Animation DAT records its Setup names, "
+                     "made as WorldObject.InitPhysicsObj makes a player with that MotionTableId) and the tick input "
+                     "motion, a MoveToState's RawMotionState (scene/6: mover.motion_table, ticks.steps[].motion)"),
 }
 
 

@@ -15,7 +15,7 @@ FACADE = (ROOT / "oracle" / "facade" / "Facade.cs").read_text()
 # The facade's methods that run a sequence of ACE's calls where a running server's own caller
 # (WorldObject, Player, Landblock, LandblockManager, WorldManager) would: each stands for a decision.
 SERVER_SEQUENCES = ("LoadServerLandblock", "MakeServerLandblock", "ClearAdjacents", "InstallDat", "SetClock",
-                    "Place", "UpdatePlayerPosition", "MakePlayer", "PrepareServerPlayer", "SetServerPlayerPhysics", "Jump", "BuildStatic", "BuildMover", "RemoveStatics",
+                    "Place", "UpdatePlayerPosition", "MakePlayer", "PrepareServerPlayer", "SetServerPlayerPhysics", "Jump", "MoveToState", "BuildStatic", "BuildMover", "RemoveStatics",
                     "QuietLog4netStartup")
 
 
