@@ -166,7 +166,27 @@ def _tick_scenes(scene):
                      jump=(0.0, 0.0, 4.0), sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
     return [replace(scene, engine_mode="client", mover=m, name="ticks", ticks=Ticks("update_object", 1000.0, (every, TickStep(0.25)))),
             replace(scene, engine_mode="client", mover=m, ticks=Ticks("request_pos", 0.0, (
-                TickStep(0.1, request_pos=scene.mover.begin),)))]
+                TickStep(0.1, request_pos=scene.mover.begin),))),
+            _motion_scene(scene, m)]
+
+
+def _motion_scene(scene, m):
+    """A motion scene (scene/6, mover.motion): a table with every optional field, a step with every motion field."""
+    from dataclasses import replace
+
+    from .motion_enums import HoldKey, MotionCommand as MC
+    from .motion_scene import AnimationSpec, AnimRef, MotionDataSpec, MotionEntry, MotionInput, MotionTableSpec
+    from .scene import Frame, Ticks, TickStep
+
+    nc = int(MC.NonCombat)
+    data = MotionDataSpec((AnimRef(0, 30.0, 0, -1),), (0.0, 3.0, 0.0), (0.0, 0.0, 1.0), 1)
+    table = MotionTableSpec(nc, ((nc, int(MC.Ready)),), (AnimationSpec((Frame((0.0, 0.1, 0.0)),)),),
+                            (MotionEntry(nc, int(MC.Ready), data),), (MotionEntry(nc, int(MC.Ready), data, int(MC.WalkForward)),),
+                            (MotionEntry(nc, int(MC.TurnRight), data),))
+    run, key = int(HoldKey.Run), int(HoldKey.None_)
+    motion = MotionInput(run, nc, int(MC.WalkForward), key, 1.0, int(MC.SideStepRight), key, 1.0, int(MC.TurnRight), key, 1.0)
+    return replace(scene, mover=replace(m, motion_table=table), name="motion",
+                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, motion=motion),)))
 
 
 def _tick_outcomes() -> list:

@@ -100,8 +100,8 @@ def test_a_packed_scene_carries_its_placement_after_the_end_position():
     plain = pack_scene(s)
     placed = pack_scene(s.replace(engine_mode="client", mover=replace(
         s.mover, placement=Placement(int(SetPositionFlags.Slide), True))))
-    assert plain[-6:] == struct.pack("<BiB", 0, 0, 0)
-    assert placed[-6:] == struct.pack("<BiB", 1, int(SetPositionFlags.Slide), 1)
+    assert plain[-10:] == struct.pack("<BiBI", 0, 0, 0, 0)  # then the player's MotionTableId: none
+    assert placed[-10:] == struct.pack("<BiBI", 1, int(SetPositionFlags.Slide), 1, 0)
 
 
 def test_packing_is_deterministic_and_shares_the_height_table_bytes():
@@ -130,7 +130,7 @@ def test_a_packed_scene_carries_its_indoor_records_after_its_landblocks():
         got.append((kind, ident, bytes(data[pos + 9:pos + 9 + length])))
         pos += 9 + length
     want = dat.environment_records(scene) + dat.cell_dat_records(scene)
-    assert version == PACK_VERSION == 9 and nlb == 1 and ticks == 0
+    assert version == PACK_VERSION == 10 and nlb == 1 and ticks == 0
     assert got == [({"Environment": 2, "EnvCell": 3, "LandblockInfo": 4}[r.kind], r.id, r.data) for r in want]
     assert struct.unpack_from("<i", data, pos) == (1,)  # then the statics, as before
     assert struct.unpack_from("<i", pack_scene(PROBE["flat 1-step walk"]), 6 + 1024 + 4 + 256) == (0,)
@@ -169,7 +169,7 @@ def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_
     assert data[5:5 + len(want)] == want
     assert data[5 + len(want):5 + len(want) + 1024] == struct.pack("<256f", *scene.land_height_table)
     # the mover has no end: an empty position is packed where a transition scene's end goes
-    assert data[-6 - 32:-6] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    assert data[-10 - 32:-10] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
 
 
 def _tick_bytes(t):
@@ -199,3 +199,20 @@ def test_unpacking_a_tick_scene_reads_every_tick_state_and_the_error_that_ended_
     assert (fvp, case, counts) == (0.0, 9.0, (1, 0, 5.0, 2.5))
     # a transition scene's outcome ends with -1: no ticks
     assert unpack_outcome(_packed() + struct.pack("<i", -1))[0].ticks is None
+
+
+def test_a_packed_motion_scene_carries_its_table_and_animations_with_the_movers_records_and_each_motion_input():
+    from acconform.motion_scene import ANIMATION_BASE, MOTION_TABLE_ID
+
+    from .motion_scenes import scenes
+
+    scene = scenes()["player_walks_turns_and_stops"]
+    data = pack_scene(scene)
+    step = scene.ticks.steps[0].motion
+    want = struct.pack("<dI", scene.ticks.times()[0], 512) + struct.pack(
+        "<IIIIfIIfIIf", step.hold_key, step.style, step.forward, step.forward_hold_key, step.forward_speed, step.sidestep,
+        step.sidestep_hold_key, step.sidestep_speed, step.turn, step.turn_hold_key, step.turn_speed)
+    assert data[5 + 14:5 + 14 + len(want)] == want
+    assert data[-4:] == struct.pack("<I", MOTION_TABLE_ID)
+    for kind, ident in ((5, MOTION_TABLE_ID), (6, ANIMATION_BASE), (6, ANIMATION_BASE + 4)):
+        assert struct.pack("<BI", kind, ident) in data
