@@ -129,6 +129,12 @@ static class Instrument
             method = member.Substring(0, paren);
             pars = SplitParams(member.Substring(paren + 1, member.Length - paren - 2));
         }
+        var dot = method.LastIndexOf('.');
+        if (dot >= 0)  // "Class.Method": a class of the file not named after it (MovementParamFlags.cs' helper)
+        {
+            className = method.Substring(0, dot);
+            method = method.Substring(dot + 1);
+        }
         foreach (var t in AllTypes(module))
         {
             if (t.Name != className) continue;
@@ -180,6 +186,7 @@ static class Instrument
             if (p.StartsWith(word, StringComparison.Ordinal)) p = p.Substring(word.Length).Trim();
         var sp = p.IndexOf(' ');
         if (sp > 0 && p.IndexOf('<') < 0) p = p.Substring(0, sp);  // "Vector3 offset": the type
+        if (p.EndsWith("?", StringComparison.Ordinal)) p = "Nullable<" + p.Substring(0, p.Length - 1) + ">";  // C#'s T?
         var lt = p.IndexOf('<');
         var head = lt >= 0 ? p.Substring(0, lt) : p;
         head = head.Substring(head.LastIndexOf('.') + 1);

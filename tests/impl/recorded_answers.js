@@ -252,7 +252,7 @@ function main() {
     protocol: 'acconform.protocol/1', name: 'recorded-answers.js', version: '1',
     kinds: ['terrain', 'bsp', 'obstacles', 'indoor', 'buildings'],
     features: ['engine.client', 'mover.two_spheres', 'mover.scaled', 'object.scaled', 'water', 'indoor.statics',
-      'mover.placement', 'ticks', 'buildings'],
+      'mover.placement', 'mover.enter_world', 'ticks', 'buildings'],
     modes: ['exact'],
   }) + '\n');
   const idle = () => { // a shard between requests, until all are read

@@ -35,10 +35,12 @@ public sealed record DatMover(
     Position? End = null,  // null in a tick scene
     CellPlane? ContactPlane = null,  // ContactPlane and ContactPlaneCellID
     Vector3? SlidingNormal = null,
-    PlacementRequest? Placement = null);  // the mover placed by SetPosition before the transition
+    PlacementRequest? Placement = null);  // the mover placed by ACE before the transition or the ticks
 
 /// <summary>A plane and the cell it was found in (PhysicsObj.ContactPlane, ContactPlaneCellID).</summary>
 public sealed record CellPlane(uint Cell, Plane Plane);
 
-/// <summary>The SetPosition a scene asks for: SetPositionFlags names, and whether get_cell replaces the cell first.</summary>
-public sealed record PlacementRequest(IReadOnlyList<string>? Flags = null, bool GetCell = false);
+/// <summary>The placement a scene asks for: Via "enter_world" (PhysicsObj.enter_world, as a server's WorldObject
+/// enters the world; its result is OK or GeneralFailure) or "set_position" (PhysicsObj.SetPosition with the
+/// SetPositionFlags names in Flags), and whether get_cell replaces the cell first.</summary>
+public sealed record PlacementRequest(string Via = "enter_world", IReadOnlyList<string>? Flags = null, bool GetCell = false);
