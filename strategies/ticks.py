@@ -21,6 +21,10 @@ policies and sites on one world, campaign kind ``ticks:<world>``):
 - ``press``: into walls and corners (BSP walls, indoor walls, jambs and doorways), held for many ticks;
 - ``cross``: a diagonal walk across a landblock corner (four landblocks);
 - ``portal``: out of a dungeon through its portal to the outside, and back in through it;
+- ``motion``: any world's path walked by the motion layer: the mover given a small motion table
+  (cycles with root motion, links, modifiers, several framerates and speeds) and MoveToState keys
+  (the tick input ``motion``: forward, backward, sidestep, turn, hold keys Run / None, speeds,
+  stops), strategies/motion.py;
 - ``velocity``: velocities at MaxVelocity and SmallVelocity exactly and an ulp either side, and
   at the squared speed nearest SmallVelocity's EPSILON test;
 - through a house (strategies/buildings.py; ``walk`` walks any of its paths but a placement too):
@@ -70,7 +74,7 @@ from .terrain import BLOCK, CELL, cell_of, split_global
 
 # the plainest first: Hypothesis shrinks toward it
 POLICY_NAMES = ("walk", "walk", "fall", "fall", "jump", "jump", "slide", "sled", "sled", "press", "press", "cross",
-                "portal", "velocity", "velocity", "enter", "porch", "cellar", "shell")
+                "portal", "velocity", "velocity", "enter", "porch", "cellar", "shell", "motion", "motion")
 POLICIES = st.sampled_from(POLICY_NAMES)
 WALK_SITES = (("terrain", None), ("bsp", None), ("obstacles", None), ("indoor", None), ("buildings", None))
 FALL_SITES = (("bsp", "ledge"), ("bsp", "ledge"), ("indoor", "ledge"), ("indoor", "pit"), ("indoor", "fall"),
@@ -88,7 +92,7 @@ ENTER_SITES = (("buildings", "in"), ("buildings", "in"), ("buildings", "in"), ("
 PORCH_SITES = (("buildings", "porch"),)
 CELLAR_SITES = (("buildings", "hatch"), ("buildings", "hatch"), ("buildings", "cellar"))
 SHELL_SITES = (("buildings", "along"), ("buildings", "along"), ("buildings", "wall"))
-SITES = {"walk": WALK_SITES, "fall": FALL_SITES, "jump": JUMP_SITES, "press": PRESS_SITES, "enter": ENTER_SITES,
+SITES = {"walk": WALK_SITES, "motion": WALK_SITES, "fall": FALL_SITES, "jump": JUMP_SITES, "press": PRESS_SITES, "enter": ENTER_SITES,
          "porch": PORCH_SITES, "cellar": CELLAR_SITES, "shell": SHELL_SITES,
          # the policies drawing their own worlds: the worlds they draw on
          "slide": (("terrain", None),), "sled": (("terrain", None), ("bsp", None)), "cross": (("terrain", None),),
@@ -354,6 +358,10 @@ def _draw_tick_scene(draw, world: str | None, policy: str | None) -> Scene:
     base = draw_scene(draw, kind, sub)
     if policy in ("walk", "enter"):
         return _walk(draw, base, policy)
+    if policy == "motion":  # a motion table and MoveToState keys (strategies/motion.py)
+        from .motion import draw_motion_ticks
+
+        return draw_motion_ticks(draw, base, _clock)
     if policy in ("porch", "cellar"):  # off the edge (EdgeSlide mostly off), long enough to fall and land
         m = base.mover
         if m.state & int(PhysicsState.EdgeSlide) and draw(EDGE_SLIDE_KEPT) == "off":

@@ -1,0 +1,188 @@
+"""Motion tick scenes (issue 40; tick policy ``motion``): a player's motion table and MoveToState keys.
+
+    draw_motion_ticks(draw, base)     a tick scene on `base`'s world: the mover given a drawn motion
+                                      table, the ticks given a sequence of `motion` inputs
+
+The table (acconform/motion_scene.py's MotionTableSpec, scene/6 ``mover.motion_table``) has the shapes
+retail's human table has, small and varied: the NonCombat style defaulting to Ready; cycles for Ready
+(always), WalkForward, RunForward, SideStepRight and TurnRight (each mostly there; MotionInterp's
+adjust_motion makes WalkBackwards, SideStepLeft and TurnLeft into them with negative speeds), each an
+animation with root motion (PosFrames moving along y, x or turning about z), at a framerate of 30, 15,
+60, 10, 24 or 7.5 fps, now and then a frame range (low/high frame), a Velocity or Omega mostly given,
+and a Bitfield (bits 1 and 2: MotionTable.GetObjectSequence's and is_allowed's tests) now and then;
+links between Ready and the others both ways (each mostly there, with an animation of its own),
+and TurnRight and SideStepRight modifiers.
+
+The inputs: the first tick a MoveToState (forward WalkForward, WalkBackwards or RunForward or none;
+sidestep SideStepRight or SideStepLeft or none; turn TurnRight or TurnLeft or none; hold keys Run,
+None or unset (Invalid), speeds 1 mostly, else 0.5, 1.5, 2 or any), then at drawn ticks more of them
+or a stop (every key released, hold key None), mostly ending in a stop. The mover faces along its
+world's path (a yaw about z), so a forward walk goes the way the other policies walk. Driver
+update_object (MoveToState is the server's player path: its own position comes from ticks).
+
+Shrinking: the inputs shrink toward one walk forward at speed 1 and no later input, the table toward
+its first entries and plainest values.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+from hypothesis import strategies as st
+
+from acconform.flags import TransientState
+from acconform.motion_enums import HoldKey, MotionCommand as MC
+from acconform.motion_scene import AnimationSpec, AnimRef, MotionDataSpec, MotionEntry, MotionInput, MotionTableSpec
+from acconform.numerics import to_f32
+from acconform.scene import Frame, Position, Scene
+
+from . import draws as dr
+
+NC = int(MC.NonCombat)
+READY, WALK, RUN = int(MC.Ready), int(MC.WalkForward), int(MC.RunForward)
+SIDE, TURN = int(MC.SideStepRight), int(MC.TurnRight)
+
+FRAMERATES = st.sampled_from((30.0, 30.0, 15.0, 60.0, 10.0, 24.0, 7.5))
+FRAME_COUNTS = st.integers(1, 8)
+FRAME_RANGES = st.sampled_from(("all", "all", "all", "low1", "first3"))
+BITFIELDS = st.sampled_from((0, 0, 0, 0, 1, 2, 3))
+MOSTLY = st.sampled_from((True, True, True, False))
+HALF = st.sampled_from((True, False))
+# root motion per frame (metres or degrees)
+STRIDES = dr.OneOf(st.sampled_from((0.05, 0.1, 0.02, 0.2)), dr.f32(0.0, 0.3))
+TURN_STEPS = dr.OneOf(st.sampled_from((-3.0, -6.0, 3.0)), dr.f32(-10.0, 10.0))
+WALK_VELOCITIES = dr.OneOf(st.sampled_from((3.12, 2.5, 1.0)), dr.f32(0.1, 6.0))
+RUN_VELOCITIES = dr.OneOf(st.sampled_from((4.0, 11.0, 6.0)), dr.f32(1.0, 12.0))
+SIDE_VELOCITIES = dr.OneOf(st.sampled_from((1.25, 2.0, -1.25)), dr.f32(-3.0, 3.0))
+OMEGAS = dr.OneOf(st.sampled_from((-1.5, -0.5, 1.5, -3.0)), dr.f32(-4.0, 4.0))
+
+FORWARDS = st.sampled_from((WALK, WALK, 0, int(MC.WalkBackwards), RUN))
+SIDESTEPS = st.sampled_from((0, 0, 0, SIDE, int(MC.SideStepLeft)))
+TURNS = st.sampled_from((0, 0, TURN, int(MC.TurnLeft)))
+HOLD_KEYS = st.sampled_from((int(HoldKey.None_), int(HoldKey.Run), 0))
+INPUT_SPEEDS = dr.OneOf(st.sampled_from((1.0, 1.0, 1.0, 0.5, 1.5, 2.0)), dr.f32(0.1, 3.0))
+INPUT_KINDS = st.sampled_from(("move", "move", "stop"))
+SEGMENTS = dr.ints(0, 4)  # inputs after the first
+LAST_STOP = st.sampled_from((True, True, False))
+TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
+
+
+def _yaw(deg: float) -> tuple:
+    h = math.radians(deg) / 2
+    return (to_f32(math.cos(h)), 0.0, 0.0, to_f32(math.sin(h)))
+
+
+def _animation(draw, move: str) -> AnimationSpec:
+    n = draw(FRAME_COUNTS)
+    if move == "turn":
+        step = float(dr.take(draw, TURN_STEPS))
+        return AnimationSpec(tuple(Frame((0.0, 0.0, 0.0), _yaw(step * i)) for i in range(n)))
+    stride = float(dr.take(draw, STRIDES))
+    axis = 0 if move == "side" else 1
+    return AnimationSpec(tuple(Frame(tuple(to_f32(stride * i) if k == axis else 0.0 for k in range(3)))
+                               for i in range(n)))
+
+
+def _anim_ref(draw, index: int, frames: int) -> AnimRef:
+    fr = draw(FRAMERATES)
+    how = draw(FRAME_RANGES)
+    if how == "low1" and frames > 1:
+        return AnimRef(index, fr, 1, -1)
+    if how == "first3" and frames > 3:
+        return AnimRef(index, fr, 0, 2)
+    return AnimRef(index, fr)
+
+
+def draw_motion_table(draw) -> tuple[MotionTableSpec, str]:
+    """A table and a label naming what it has (W walk, R run, S sidestep, T turn; l links, m modifiers)."""
+    animations: list[AnimationSpec] = []
+
+    def anim(move: str) -> AnimRef:
+        a = _animation(draw, move)
+        animations.append(a)
+        return _anim_ref(draw, len(animations) - 1, len(a.pos_frames))
+
+    def data(move: str, velocity=None, omega=None) -> MotionDataSpec:
+        return MotionDataSpec((anim(move),), velocity, omega, draw(BITFIELDS))
+
+    cycles = [MotionEntry(NC, READY, MotionDataSpec((anim("still"),)))]
+    label = ""
+    for motion, move, tag, speeds in ((WALK, "walk", "W", WALK_VELOCITIES), (RUN, "walk", "R", RUN_VELOCITIES),
+                                      (SIDE, "side", "S", SIDE_VELOCITIES), (TURN, "turn", "T", OMEGAS)):
+        if not draw(MOSTLY):
+            continue
+        label += tag
+        v = float(dr.take(draw, speeds)) if draw(MOSTLY) else None
+        if v is None:
+            cycles.append(MotionEntry(NC, motion, data(move)))
+        elif move == "turn":
+            cycles.append(MotionEntry(NC, motion, data(move, omega=(0.0, 0.0, to_f32(v)))))
+        elif move == "side":
+            cycles.append(MotionEntry(NC, motion, data(move, velocity=(to_f32(v), 0.0, 0.0))))
+        else:
+            cycles.append(MotionEntry(NC, motion, data(move, velocity=(0.0, to_f32(v), 0.0))))
+    links = []
+    for c in cycles[1:]:
+        for frm, to in ((READY, c.motion), (c.motion, READY)):
+            if draw(MOSTLY):
+                links.append(MotionEntry(NC, frm, data("walk" if c.motion != TURN else "turn"), to=to))
+    modifiers = []
+    for motion, move in ((TURN, "turn"), (SIDE, "side")):
+        if draw(HALF):
+            v = to_f32(dr.take(draw, OMEGAS if move == "turn" else SIDE_VELOCITIES))
+            vel = (v, 0.0, 0.0) if move == "side" else None
+            om = (0.0, 0.0, v) if move == "turn" else None
+            modifiers.append(MotionEntry(NC, motion, data(move, vel, om)))
+    label += (f"l{len(links)}" if links else "") + (f"m{len(modifiers)}" if modifiers else "")
+    table = MotionTableSpec(NC, ((NC, READY),), tuple(animations), tuple(cycles), tuple(links), tuple(modifiers))
+    return table, label or "ready"
+
+
+def _speed(draw) -> float:
+    return float(to_f32(dr.take(draw, INPUT_SPEEDS)))
+
+
+def draw_motion_input(draw) -> tuple[MotionInput, str]:
+    if draw(INPUT_KINDS) == "stop":
+        return MotionInput(hold_key=int(HoldKey.None_)), "stop"
+    kw = {"hold_key": draw(HOLD_KEYS)}
+    tag = ""
+    for name, commands, short in (("forward", FORWARDS, "f"), ("sidestep", SIDESTEPS, "s"), ("turn", TURNS, "t")):
+        c = draw(commands)
+        if c:
+            kw[name], kw[f"{name}_hold_key"], kw[f"{name}_speed"] = c, draw(HOLD_KEYS), _speed(draw)
+            tag += short
+    return MotionInput(**kw), tag or "none"
+
+
+def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
+    """`clock(draw, n)` -> (start, dts, label): strategies/ticks.py's clock."""
+    from .ticks import _path, _tick_scene, _unit
+
+    table, tlabel = draw_motion_table(draw)
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, clabel = clock(draw, n)
+    inputs = [{} for _ in range(n)]
+    first, tag = draw_motion_input(draw)
+    if tag == "stop":
+        first, tag = MotionInput(hold_key=int(HoldKey.None_), forward=WALK, forward_hold_key=int(HoldKey.None_),
+                                 forward_speed=1.0), "f"
+    inputs[0]["motion"] = first
+    tags = [tag]
+    for _ in range(min(dr.take(draw, SEGMENTS), n - 1)):
+        at = draw(st.integers(1, n - 1))
+        inputs[at]["motion"], t = draw_motion_input(draw)
+        tags.append(f"{t}@{at}")
+    if n > 2 and draw(LAST_STOP):
+        inputs[n - 1]["motion"] = MotionInput(hold_key=int(HoldKey.None_))
+        tags.append("stop-last")
+    g0, g1 = _path(base)
+    ux, uy = _unit(g1[0] - g0[0], g1[1] - g0[1])
+    heading = math.degrees(math.atan2(-ux, uy))  # local +y along the path (a yaw about z)
+    m = base.mover
+    begin = Position(m.begin.cell, Frame(m.begin.frame.origin, _yaw(heading)))
+    base = base.replace(mover=replace(m, begin=begin, motion_table=table,
+                                      transient_state=m.transient_state | int(TransientState.Active)))
+    return _tick_scene(base, start, dts, inputs, "update_object", None,
+                       f"ticks:motion:{base.name}:{tlabel}:{'+'.join(tags)}:{clabel}")
