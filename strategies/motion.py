@@ -9,7 +9,7 @@ retail's human table has, small and varied: the NonCombat style defaulting to Re
 adjust_motion makes WalkBackwards, SideStepLeft and TurnLeft into them with negative speeds), each an
 animation with root motion (PosFrames moving along y, x or turning about z), at a framerate of 30, 15,
 60, 10, 24 or 7.5 fps, now and then a frame range (low/high frame), a Velocity or Omega mostly given,
-and a Bitfield (bits 1 and 2: MotionTable.GetObjectSequence's and is_allowed's tests) now and then;
+and a Bitfield (bits 1 and 2: MotionTable.GetObjectSequence's and is_allowed's tests) now and then\n(bit 2 always on the turn and sidestep cycles: see draw_motion_table);
 links between Ready and the others both ways (each mostly there, with an animation of its own),
 and TurnRight and SideStepRight modifiers.
 
@@ -103,8 +103,8 @@ def draw_motion_table(draw) -> tuple[MotionTableSpec, str]:
         animations.append(a)
         return _anim_ref(draw, len(animations) - 1, len(a.pos_frames))
 
-    def data(move: str, velocity=None, omega=None) -> MotionDataSpec:
-        return MotionDataSpec((anim(move),), velocity, omega, draw(BITFIELDS))
+    def data(move: str, velocity=None, omega=None, bitfield: int = 0) -> MotionDataSpec:
+        return MotionDataSpec((anim(move),), velocity, omega, draw(BITFIELDS) | bitfield)
 
     cycles = [MotionEntry(NC, READY, MotionDataSpec((anim("still"),)))]
     label = ""
@@ -114,12 +114,16 @@ def draw_motion_table(draw) -> tuple[MotionTableSpec, str]:
             continue
         label += tag
         v = float(dr.take(draw, speeds)) if draw(MOSTLY) else None
+        # a turn or sidestep cycle is allowed only from the style's default (Bitfield 2, as retail's tables
+        # have it): without, a turn and a sidestep, each a substate and a modifier, make each other the
+        # substate in turn (GetObjectSequence -> re_modify -> GetObjectSequence ...) until ACE's stack overflows
+        bits = 2 if move in ("turn", "side") else 0
         if v is None:
-            cycles.append(MotionEntry(NC, motion, data(move)))
+            cycles.append(MotionEntry(NC, motion, data(move, bitfield=bits)))
         elif move == "turn":
-            cycles.append(MotionEntry(NC, motion, data(move, omega=(0.0, 0.0, to_f32(v)))))
+            cycles.append(MotionEntry(NC, motion, data(move, omega=(0.0, 0.0, to_f32(v)), bitfield=bits)))
         elif move == "side":
-            cycles.append(MotionEntry(NC, motion, data(move, velocity=(to_f32(v), 0.0, 0.0))))
+            cycles.append(MotionEntry(NC, motion, data(move, velocity=(to_f32(v), 0.0, 0.0), bitfield=bits)))
         else:
             cycles.append(MotionEntry(NC, motion, data(move, velocity=(0.0, to_f32(v), 0.0))))
     links = []
