@@ -16,7 +16,9 @@ and TurnRight and SideStepRight modifiers.
 The inputs: the first tick a MoveToState (forward WalkForward, WalkBackwards or RunForward or none;
 sidestep SideStepRight or SideStepLeft or none; turn TurnRight or TurnLeft or none; hold keys Run,
 None or unset (Invalid), speeds 1 mostly, else 0.5, 1.5, 2 or any), then at drawn ticks more of them
-or a stop (every key released, hold key None), mostly ending in a stop. The mover faces along its
+or a stop (every key released, hold key None), mostly ending in a stop; one scene in four jumps
+(the tick input jump, a local velocity up and forward) at a drawn tick. The worlds are the walk,
+fall and jump policies' sites. The mover faces along its
 world's path (a yaw about z), so a forward walk goes the way the other policies walk. Driver
 update_object (MoveToState is the server's player path: its own position comes from ticks).
 
@@ -65,6 +67,7 @@ INPUT_SPEEDS = dr.OneOf(st.sampled_from((1.0, 1.0, 1.0, 0.5, 1.5, 2.0)), dr.f32(
 INPUT_KINDS = st.sampled_from(("move", "move", "stop"))
 SEGMENTS = dr.ints(0, 4)  # inputs after the first
 LAST_STOP = st.sampled_from((True, True, False))
+JUMPS = st.sampled_from((False, False, False, True))  # a jump (the tick input jump) among the keys
 TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
 
 
@@ -181,6 +184,12 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
     if n > 2 and draw(LAST_STOP):
         inputs[n - 1]["motion"] = MotionInput(hold_key=int(HoldKey.None_))
         tags.append("stop-last")
+    if n > 1 and draw(JUMPS):  # HandleActionJump's physics with the motion layer: LeaveGround, then HitGround
+        from .ticks import JUMP_FORWARD, JUMP_UPS
+
+        at = draw(st.integers(0, n - 1))
+        inputs[at]["jump"] = (0.0, to_f32(dr.take(draw, JUMP_FORWARD)), to_f32(dr.take(draw, JUMP_UPS)))
+        tags.append(f"jump@{at}")
     g0, g1 = _path(base)
     ux, uy = _unit(g1[0] - g0[0], g1[1] - g0[1])
     heading = math.degrees(math.atan2(-ux, uy))  # local +y along the path (a yaw about z)

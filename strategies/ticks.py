@@ -92,7 +92,7 @@ ENTER_SITES = (("buildings", "in"), ("buildings", "in"), ("buildings", "in"), ("
 PORCH_SITES = (("buildings", "porch"),)
 CELLAR_SITES = (("buildings", "hatch"), ("buildings", "hatch"), ("buildings", "cellar"))
 SHELL_SITES = (("buildings", "along"), ("buildings", "along"), ("buildings", "wall"))
-SITES = {"walk": WALK_SITES, "motion": WALK_SITES, "fall": FALL_SITES, "jump": JUMP_SITES, "press": PRESS_SITES, "enter": ENTER_SITES,
+SITES = {"walk": WALK_SITES, "motion": WALK_SITES + FALL_SITES + JUMP_SITES, "fall": FALL_SITES, "jump": JUMP_SITES, "press": PRESS_SITES, "enter": ENTER_SITES,
          "porch": PORCH_SITES, "cellar": CELLAR_SITES, "shell": SHELL_SITES,
          # the policies drawing their own worlds: the worlds they draw on
          "slide": (("terrain", None),), "sled": (("terrain", None), ("bsp", None)), "cross": (("terrain", None),),
