@@ -1,0 +1,87 @@
+"""The tick policy motion (strategies/motion.py, issue 40): drawn motion tables and MoveToState keys."""
+
+from __future__ import annotations
+
+from collections import Counter
+
+import pytest
+
+from acconform.motion_enums import HoldKey, MotionCommand as MC
+from acconform.port.run import run_scene
+from acconform.scene import validate_scene
+from acconform.strategies import sample_scenes
+from acconform.strategies import ticks as tk
+
+N = 120
+
+
+@pytest.fixture(scope="module")
+def motion_scenes():
+    from hypothesis import HealthCheck, Phase, given, settings
+    from hypothesis import seed as hseed
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+
+    out = []
+
+    @hseed(40)
+    @settings(max_examples=N, database=None, phases=[Phase.generate], deadline=None,
+              suppress_health_check=list(HealthCheck))
+    @given(st.composite(lambda draw: tk.draw_tick_scene(draw, None, "motion"))())
+    def collect(scene):
+        out.append(scene)
+
+    with pinned_constants():
+        collect()
+    return out
+
+
+def _inputs(scenes):
+    return [s.motion for sc in scenes for s in sc.ticks.steps if s.motion is not None]
+
+
+def test_every_motion_scene_validates_has_a_table_and_starts_with_a_motion_input(motion_scenes):
+    for s in motion_scenes:
+        assert validate_scene(s) == s
+        assert s.mover.motion_table is not None and s.ticks.steps[0].motion is not None
+        assert s.ticks.driver == "update_object" and s.name.startswith("ticks:motion:")
+
+
+def test_turn_and_sidestep_cycles_are_allowed_only_from_the_default_substate(motion_scenes):
+    """Bitfield bit 2 on them: else ACE's GetObjectSequence and re_modify recurse until its stack overflows."""
+    cycles = [c for s in motion_scenes for c in s.mover.motion_table.cycles
+              if c.motion in (int(MC.TurnRight), int(MC.SideStepRight))]
+    assert cycles and all(c.data.bitfield & 2 for c in cycles)
+
+
+def test_the_keys_cover_forward_backward_run_sidestep_turn_hold_keys_and_stops(motion_scenes):
+    ins = _inputs(motion_scenes)
+    forwards = Counter(m.forward for m in ins)
+    assert {int(MC.WalkForward), int(MC.WalkBackwards), int(MC.RunForward)} <= set(forwards)
+    assert {int(MC.SideStepRight), int(MC.SideStepLeft)} <= {m.sidestep for m in ins}
+    assert {int(MC.TurnRight), int(MC.TurnLeft)} <= {m.turn for m in ins}
+    assert {int(HoldKey.Run), int(HoldKey.None_)} <= {m.hold_key for m in ins}
+    assert any(not (m.forward or m.sidestep or m.turn) for m in ins)  # a stop
+    assert len({m.forward_speed for m in ins}) > 3
+
+
+def test_tables_vary_links_modifiers_and_framerates(motion_scenes):
+    tables = [s.mover.motion_table for s in motion_scenes]
+    assert any(t.links for t in tables) and any(t.modifiers for t in tables) and any(not t.modifiers for t in tables)
+    rates = {a.framerate for t in tables for e in t.cycles for a in e.data.anims}
+    assert len(rates) >= 5
+
+
+def test_a_ticks_campaign_draws_motion_scenes():
+    names = [s.name for s in sample_scenes(("ticks",), 200, 40)]
+    assert any(n.startswith("ticks:motion:") for n in names)
+
+
+def test_the_port_runs_motion_scenes_and_a_walk_moves_the_mover(motion_scenes):
+    moved = 0
+    for s in motion_scenes[:30]:
+        out = run_scene(s)
+        last = out.ticks[-1]
+        moved += last.origin != s.mover.begin.frame.origin or last.cell != s.mover.begin.cell
+    assert moved >= 10
