@@ -149,7 +149,7 @@ def test_every_house_policy_and_house_walk_is_drawn_over_ticks(house_scenes):
     drawn = Counter((s.name.split(":")[1], s.name.split(":")[3]) for s in house_scenes)
     assert {("enter", "in"), ("porch", "porch"), ("cellar", "hatch"), ("cellar", "cellar"), ("shell", "along"),
             ("shell", "wall")} <= set(drawn)
-    assert {p for p, _ in drawn} == {"walk", "enter", "porch", "cellar", "shell"}
+    assert {p for p, _ in drawn} == {"walk", "enter", "porch", "cellar", "shell", "motion"}
     walks = [s for s in house_scenes if s.name.split(":")[1] == "enter"]
     assert any(st.sequence_velocity for s in walks for st in s.ticks.steps)  # root motion through the door
     assert any(st.velocity for s in walks for st in s.ticks.steps)  # a velocity set toward it
