@@ -8,7 +8,7 @@ retail's human table has, small and varied: the NonCombat style defaulting to Re
 (always), WalkForward, RunForward, SideStepRight and TurnRight (each mostly there; MotionInterp's
 adjust_motion makes WalkBackwards, SideStepLeft and TurnLeft into them with negative speeds), each an
 animation with root motion (PosFrames moving along y, x or turning about z), at a framerate of 30, 15,
-60, 10, 24 or 7.5 fps, now and then a frame range (low/high frame), a Velocity or Omega mostly given,
+60, 10, 24 or 7.5 fps or played backward at -30 or -15, now and then a frame range (low/high frame), a Velocity or Omega mostly given,
 and a Bitfield (bits 1 and 2: MotionTable.GetObjectSequence's and is_allowed's tests) now and then\n(bit 2 always on the turn and sidestep cycles: see draw_motion_table);
 links between Ready and the others both ways (each mostly there, with an animation of its own),
 and TurnRight and SideStepRight modifiers.
@@ -45,9 +45,9 @@ NC = int(MC.NonCombat)
 READY, WALK, RUN = int(MC.Ready), int(MC.WalkForward), int(MC.RunForward)
 SIDE, TURN = int(MC.SideStepRight), int(MC.TurnRight)
 
-FRAMERATES = st.sampled_from((30.0, 30.0, 15.0, 60.0, 10.0, 24.0, 7.5))
+FRAMERATES = st.sampled_from((30.0, 30.0, 15.0, 60.0, 10.0, 24.0, 7.5, -30.0, -15.0))  # negative: played backward
 FRAME_COUNTS = st.integers(1, 8)
-FRAME_RANGES = st.sampled_from(("all", "all", "all", "low1", "first3"))
+FRAME_RANGES = st.sampled_from(("all", "all", "all", "low1", "first3", "high_past_end", "one"))
 BITFIELDS = st.sampled_from((0, 0, 0, 0, 1, 2, 3))
 MOSTLY = st.sampled_from((True, True, True, False))
 HALF = st.sampled_from((True, False))
@@ -94,6 +94,10 @@ def _anim_ref(draw, index: int, frames: int) -> AnimRef:
         return AnimRef(index, fr, 1, -1)
     if how == "first3" and frames > 3:
         return AnimRef(index, fr, 0, 2)
+    if how == "high_past_end":  # AnimSequenceNode clamps a high frame past the last
+        return AnimRef(index, fr, 0, frames + 2)
+    if how == "one":  # a single frame: low == high
+        return AnimRef(index, fr, frames - 1, frames - 1)
     return AnimRef(index, fr)
 
 
