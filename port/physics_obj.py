@@ -74,6 +74,13 @@ class CollisionRecord:
     ethereal: bool
 
 
+def _dummy_sphere(mode):
+    """PhysicsGlobals.DummySphere: radius 0.1, its centre 0.1 above the origin."""
+    from .geom.sphere import Sphere
+
+    return Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
+
+
 def _hit(trace, branch: str) -> None:
     if trace is not None:
         trace[branch] += 1
@@ -1046,10 +1053,7 @@ class PhysicsObj:
         if self.part_array is not None and self.part_array.get_num_sphere() != 0:
             trans.init_sphere(self.part_array.get_num_sphere(), self.part_array.get_sphere(), self.scale)
         else:
-            from .geom.sphere import Sphere
-
-            dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
-            trans.init_sphere(1, [dummy], self.scale)
+            trans.init_sphere(1, [_dummy_sphere(mode)], self.scale)
 
         trans.init_path(self.cur_cell, self.position, self.position)
         return trans.check_collisions(obj)
@@ -1651,10 +1655,7 @@ class PhysicsObj:
         if self.part_array is not None and self.part_array.get_num_sphere() != 0:
             transition.init_sphere(self.part_array.get_num_sphere(), self.part_array.get_sphere(), self.scale)
         else:
-            from .geom.sphere import Sphere
-
-            dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
-            transition.init_sphere(1, [dummy], mode.scalar(1.0))
+            transition.init_sphere(1, [_dummy_sphere(mode)], mode.scalar(1.0))
 
         result = self.set_position_internal_set_pos(pos, set_pos_flags, transition, lscape)
         transition.cleanup_transition()
@@ -1756,10 +1757,7 @@ class PhysicsObj:
 
         mode = lscape.mode
         if self.part_array is None or self.part_array.get_num_sphere() == 0:
-            from .geom.sphere import Sphere
-
-            dummy = Sphere(mode.vec(0, 0, DUMMY_SPHERE_RADIUS), mode.scalar(DUMMY_SPHERE_RADIUS))
-            trans.init_sphere(1, [dummy], mode.scalar(1.0))
+            trans.init_sphere(1, [_dummy_sphere(mode)], mode.scalar(1.0))
         else:
             trans.init_sphere(self.part_array.get_num_sphere(), self.part_array.get_sphere(), self.scale)
 

@@ -93,6 +93,12 @@ def _asked_again(records, anchor: str) -> bool:
     return bool(asked) and max(asked.values()) > 1
 
 
+def _runs_asking_again(anchor: str) -> list:
+    """(scene, its traced records) for the terrain and tick samples whose run asks `anchor` the same twice."""
+    runs = [(scene, traced_run(scene, "exact", RUNTIME)[1]) for scene in sample("terrain") + sample("ticks")]
+    return [(scene, records) for scene, records in runs if _asked_again(records, anchor)]
+
+
 def _calls_within(records, outer: str, inner: str) -> list[int]:
     """For each call of `outer` (its enter..exit span), how many `inner` records ran inside it."""
     counts, depth = [], 0
@@ -110,42 +116,30 @@ def _calls_within(records, outer: str, inner: str) -> list[int]:
 
 @pytest.mark.anchor("CLandCell::find_terrain_poly")
 def test_a_traced_run_tests_the_terrain_triangles_each_time_a_cell_is_asked_for_a_point_again():
-    checked = 0
-    for scene in sample("terrain") + sample("ticks"):
-        records = traced_run(scene, "exact", RUNTIME)[1]
-        if not _asked_again(records, "LandCell.cs:find_terrain_poly"):
-            continue
-        checked += 1
+    runs = _runs_asking_again("LandCell.cs:find_terrain_poly")
+    assert runs, "no scene asks a cell for the same point twice"
+    for scene, records in runs:
         counts = _calls_within(records, "LandCell.cs:find_terrain_poly", "Polygon.cs:point_in_poly2D")
         assert counts and min(counts) >= 1, scene.name
-    assert checked, "no scene asks a cell for the same point twice"
 
 
 @pytest.mark.anchor("LScape::get_landcell")
 def test_a_traced_run_looks_a_cell_up_in_its_landblock_each_time_it_is_asked_for_again():
-    checked = 0
-    for scene in sample("terrain") + sample("ticks"):
-        records = traced_run(scene, "exact", RUNTIME)[1]
-        if not _asked_again(records, "LScape.cs:get_landcell"):
-            continue
-        checked += 1
+    runs = _runs_asking_again("LScape.cs:get_landcell")
+    assert runs, "no scene asks for the same cell twice"
+    for scene, records in runs:
         asked = sum(1 for r in records if r.anchor == "LScape.cs:get_landcell")
         looked_up = sum(1 for r in records if r.anchor == "LScape.cs:get_landblock" and r.within == "LScape.cs:get_landcell")
         assert looked_up == asked, scene.name
-    assert checked, "no scene asks for the same cell twice"
 
 
 @pytest.mark.anchor("CLandCell::add_all_outside_cells")
 def test_a_traced_run_gathers_the_outside_cells_each_time_a_land_cell_finds_its_transit_cells():
     adds = "LandCell.cs:add_all_outside_cells(Position, int, List<Sphere>, CellArray)"
-    checked = 0
-    for scene in sample("terrain") + sample("ticks"):
-        records = traced_run(scene, "exact", RUNTIME)[1]
-        if not _asked_again(records, adds):
-            continue
-        checked += 1
+    runs = _runs_asking_again(adds)
+    assert runs, "no scene gathers the same outside cells twice"
+    for scene, records in runs:
         assert min(_calls_within(records, "LandCell.cs:find_transit_cells", adds)) == 1, scene.name
-    assert checked, "no scene gathers the same outside cells twice"
 
 
 @pytest.mark.anchor("DBObj.cs:GetEnvironment")
