@@ -1,5 +1,5 @@
 """ACE.Entity.Enum's motion enums: MotionCommand, MotionStance, CommandMask, HoldKey, MovementType,
-MovementTypes, WeenieError (ACE 7b47913's values, every member, in ACE's order).
+MovementTypes, WeenieError, and the physics' MovementParamFlags (ACE 7b47913's values, every member, in ACE's order).
 
 The motion layer (port/animation/, port/managers/) compares commands (``motion == MotionCommand.Ready``)
 and masks them (``motion & CommandMask.Action``); an `IntEnum` member does both as plain int operations
@@ -8,6 +8,8 @@ A command travels through the port as a plain int (ACE casts every one to ``uint
 """
 
 from enum import IntEnum
+
+from .flags import FlagSet
 
 
 class CommandMask(IntEnum):
@@ -873,3 +875,27 @@ class WeenieError(IntEnum):
     YouMustBeTwoWeeksOldToUsePortal = 0x0592
     OlthoiCanOnlyRecallToLifestone = 0x0593
     ContractError = 0x0594
+
+
+class MovementParamFlags(metaclass=FlagSet):
+    """ACE.Server.Physics.Animation.MovementParamFlags (uint): a MovementParameters' eighteen bools as
+    one bit set (a plain-int flag set, as acconform.flags' hot ones are)."""
+
+    CanWalk = 0x00001
+    CanRun = 0x00002
+    CanSidestep = 0x00004
+    CanWalkBackwards = 0x00008
+    CanCharge = 0x00010
+    FailWalk = 0x00020
+    UseFinalHeading = 0x00040
+    Sticky = 0x00080
+    MoveAway = 0x00100
+    MoveTowards = 0x00200
+    UseSpheres = 0x00400
+    SetHoldKey = 0x00800
+    Autonomous = 0x01000
+    ModifyRawState = 0x02000
+    ModifyInterpretedState = 0x04000
+    CancelMoveTo = 0x08000
+    StopCompletely = 0x10000
+    DisableJumpDuringLink = 0x20000

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .codec import Reader, write_f32, write_vec
+from .codec import Reader, write_f32, write_id, write_vec
 from .errors import InvalidScene
 from .motion_enums import HoldKey, MotionCommand
 
@@ -258,3 +258,151 @@ class MotionInput:
             if r.given(name):
                 kw[name] = r[name].f32()
         return MotionInput(**kw)
+
+
+# ACE's MovementParameters() constructor: its flags (CanWalk .. CanCharge, MoveTowards, UseSpheres,
+# SetHoldKey, ModifyRawState, ModifyInterpretedState, CancelMoveTo, StopCompletely) and float defaults
+DEFAULT_MOVEMENT_FLAGS = 0x1EE1F
+_DEFAULT_FAIL_DISTANCE = 3.4028234663852886e38  # float.MaxValue (Default_FailDistance)
+
+
+@dataclass(frozen=True, slots=True)
+class MovementParams:
+    """A MovementParameters as ``new MovementParameters()`` makes it, then each field the scene gives
+    set (both sides build it with their own class: the oracle with ACE's, the port with
+    port/animation/movement_parameters.py). ``flags`` are MovementParamFlags names (all of them: the
+    listed set replaces the constructor's); hold_key_to_apply a HoldKey name."""
+
+    flags: int = DEFAULT_MOVEMENT_FLAGS
+    distance_to_object: float = 0.6000000238418579  # Default_DistanceToObject = 0.6f
+    min_distance: float = 0.0
+    fail_distance: float = _DEFAULT_FAIL_DISTANCE
+    speed: float = 1.0
+    walk_run_threshold: float = 1.0  # Default_WalkRunThreshold = 1.0f
+    desired_heading: float = 0.0
+    hold_key_to_apply: int = 0  # HoldKey.Invalid
+
+    _FLOATS = ("distance_to_object", "min_distance", "fail_distance", "speed", "walk_run_threshold", "desired_heading")
+    _FIELDS = frozenset(("flags", "hold_key_to_apply") + _FLOATS)
+
+    def to_json(self):
+        from .flags import flag_names
+        from .motion_enums import MovementParamFlags
+
+        d = {}
+        if self.flags != DEFAULT_MOVEMENT_FLAGS:
+            d["flags"] = flag_names(MovementParamFlags, self.flags)
+        default = MovementParams()
+        for name in self._FLOATS:
+            v = getattr(self, name)
+            if v != getattr(default, name):
+                d[name] = write_f32(v)
+        if self.hold_key_to_apply:
+            d["hold_key_to_apply"] = _hold_key_name(self.hold_key_to_apply)
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "MovementParams":
+        from .motion_enums import MovementParamFlags
+
+        r.obj(MovementParams._FIELDS)
+        kw = {}
+        if r.given("flags"):
+            kw["flags"] = r["flags"].flags(MovementParamFlags)
+        for name in MovementParams._FLOATS:
+            if r.given(name):
+                kw[name] = r[name].f32()
+        if r.given("hold_key_to_apply"):
+            kw["hold_key_to_apply"] = _hold_key(r["hold_key_to_apply"])
+        return MovementParams(**kw)
+
+
+def _params(r: Reader) -> MovementParams:
+    """The step's ``params`` (the constructor's MovementParameters when left out)."""
+    return MovementParams.from_json(r["params"]) if r.given("params") else MovementParams()
+
+
+@dataclass(frozen=True, slots=True)
+class MoveToInput:
+    """``move_to``: Creature.MoveTo(Position)'s physics calls (UpdateTime when not moving or animating,
+    then PhysicsObj.MoveToPosition(the position, the parameters)); ``turn_to_heading`` has no position
+    (PhysicsObj.TurnToHeading with the parameters' DesiredHeading)."""
+
+    params: MovementParams = MovementParams()
+    position: object = None  # scene.Position (move_to only)
+
+    def to_json(self):
+        d = {}
+        if self.position is not None:
+            d["position"] = self.position.to_json()
+        p = self.params.to_json()
+        if p:
+            d["params"] = p
+        return d
+
+    @staticmethod
+    def from_json(r: Reader, with_position: bool) -> "MoveToInput":
+        from .scene import Position
+
+        r.obj({"position", "params"} if with_position else {"params"})
+        return MoveToInput(_params(r),
+                           Position.from_json(r["position"]) if with_position else None)
+
+
+@dataclass(frozen=True, slots=True)
+class ObjectMoveInput:
+    """``move_to_object`` / ``turn_to_object``: the target is the scene's static object `object` (its
+    id), found as ACE's server finds it (the id ServerObjectManager filed it under); the physics calls
+    of Monster_Navigation.StartTurn: PhysicsObj.MoveToObject / TurnToObject(its PhysicsObj, the
+    parameters), then UpdateTime = CurrentTime."""
+
+    object: int
+    params: MovementParams = MovementParams()
+
+    def to_json(self):
+        d = {"object": write_id(self.object)}
+        p = self.params.to_json()
+        if p:
+            d["params"] = p
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "ObjectMoveInput":
+        r.obj({"object", "params"})
+        return ObjectMoveInput(r["object"].id_(), _params(r))
+
+
+# ``stop``: the server's ways to stop a movement (WorldObjects' callers, ACE 7b47913):
+#   stop_completely       PhysicsObj.StopCompletely (Creature_Death, Player_Tick's PK logout, Player_Magic)
+#   cancel_moveto         PhysicsObj.cancel_moveto (Player_Move2.StopExistingMoveToChains2, Player_Melee)
+#   move_to_manager_cancel  MovementManager.MoveToManager.CancelMoveTo(ActionCancelled) and
+#                         FailProgressCount = 0 (Monster_Navigation.CancelMoveTo, Creature_Navigation's MoveTo tick)
+STOPS = ("stop_completely", "cancel_moveto", "move_to_manager_cancel")
+
+
+@dataclass(frozen=True, slots=True)
+class CommandInput:
+    """``do_motion`` / ``stop_motion``: Player.OnMoveToState_ClientMethod's physics calls for one key
+    (a MovementParameters() with HoldKeyToApply the current hold key; UpdateTime when not moving or
+    animating; PhysicsObj.DoMotion(motion, mvp) / StopMotion(motion, mvp, true))."""
+
+    motion: int
+    hold_key: int = 0
+
+    def to_json(self):
+        d = {"motion": _command_name(self.motion)}
+        if self.hold_key:
+            d["hold_key"] = _hold_key_name(self.hold_key)
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "CommandInput":
+        r.obj({"motion", "hold_key"})
+        return CommandInput(_command(r["motion"]), _hold_key(r["hold_key"]) if r.given("hold_key") else 0)
+
+
+def read_stop(r: Reader) -> str:
+    name = r.str_()
+    if name not in STOPS:
+        r.fail(f"unknown stop {name!r} (known: {', '.join(STOPS)})")
+    return name

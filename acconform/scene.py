@@ -21,7 +21,7 @@ from typing import Union
 from .codec import (Reader, as_text, dumps, dumps_compact, f32_text, ints_text, parse_json_text, vec_text, write_f32,
                     write_f64, write_id, write_vec)
 from .errors import InvalidScene
-from .motion_scene import MotionInput, MotionTableSpec
+from .motion_scene import CommandInput, MotionInput, MotionTableSpec, MoveToInput, ObjectMoveInput, read_stop
 from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
 
 FORMAT = "acconform.scene/6"
@@ -675,7 +675,12 @@ DRIVERS = ("update_object", "request_pos")  # PhysicsObj.update_object / the leg
 
 # a step's inputs, in the order both sides apply them (the clock still at the previous tick's time)
 TICK_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega", "jump", "sequence_velocity",
-               "sequence_omega", "request_pos", "motion")
+               "sequence_omega", "request_pos", "motion", "stop", "do_motion", "stop_motion", "move_to",
+               "move_to_object", "turn_to_heading", "turn_to_object")
+# the motion layer's inputs (scene/6, feature mover.motion): each needs the mover's motion table
+MOTION_INPUTS = ("motion", "stop", "do_motion", "stop_motion", "move_to", "move_to_object", "turn_to_heading",
+                 "turn_to_object")
+_MANAGER_INPUTS = MOTION_INPUTS[1:]
 _TICK_VECTORS = ("velocity", "local_velocity", "omega", "jump", "sequence_velocity", "sequence_omega")
 
 
@@ -701,6 +706,15 @@ class TickStep:
     sequence_omega: Vec3 | None = None
     request_pos: Position | None = None
     motion: MotionInput | None = None  # scene/6: a MoveToState's RawMotionState (acconform/motion_scene.py)
+    # scene/6, the server's calls into the managers (acconform/motion_scene.py): a stop (one of STOPS),
+    # a key's DoMotion / StopMotion, a MoveTo (position, object) or turn (heading, object)
+    stop: str | None = None
+    do_motion: CommandInput | None = None
+    stop_motion: CommandInput | None = None
+    move_to: MoveToInput | None = None
+    move_to_object: ObjectMoveInput | None = None
+    turn_to_heading: MoveToInput | None = None
+    turn_to_object: ObjectMoveInput | None = None
 
     def to_json(self):
         d = {"dt": write_f64(self.dt)}
@@ -716,6 +730,12 @@ class TickStep:
             d["request_pos"] = self.request_pos.to_json()
         if self.motion is not None:
             d["motion"] = self.motion.to_json()
+        if self.stop is not None:
+            d["stop"] = self.stop
+        for name in _MANAGER_INPUTS[1:]:
+            v = getattr(self, name)
+            if v is not None:
+                d[name] = v.to_json()
         return d
 
     def json_text(self) -> str:
@@ -732,14 +752,22 @@ class TickStep:
             text += ',"request_pos":' + dumps_compact(self.request_pos.to_json())
         if self.motion is not None:
             text += ',"motion":' + dumps_compact(self.motion.to_json())
+        if self.stop is not None:
+            text += ',"stop":' + dumps_compact(self.stop)
+        for name in _MANAGER_INPUTS[1:]:
+            v = getattr(self, name)
+            if v is not None:
+                text += ',"' + name + '":' + dumps_compact(v.to_json())
         return text + "}"
 
     @staticmethod
     def from_json(r: Reader, driver: str, motion: bool = True) -> "TickStep":
         """`driver`: the scene's driver (request_pos needs a RequestPos on every step, update_object refuses one).
         `motion`: the format knows the input motion (scene/6)."""
-        if not motion and isinstance(r.value, dict) and "motion" in r.value:
-            r["motion"].fail(f"a motion input needs format {FORMAT!r} (older formats have none)")
+        if not motion and isinstance(r.value, dict):
+            for name in MOTION_INPUTS:
+                if name in r.value:
+                    r[name].fail(f"a motion input needs format {FORMAT!r} (older formats have none)")
         r.obj({"dt", *TICK_INPUTS})
         dt = r["dt"].f64()
         if dt < 0:
@@ -762,6 +790,18 @@ class TickStep:
                                   "a RequestPos belongs to driver request_pos")
         if r.has("motion"):
             kw["motion"] = MotionInput.from_json(r["motion"])
+        if r.has("stop"):
+            kw["stop"] = read_stop(r["stop"])
+        for name in ("do_motion", "stop_motion"):
+            if r.has(name):
+                kw[name] = CommandInput.from_json(r[name])
+        if r.has("move_to"):
+            kw["move_to"] = MoveToInput.from_json(r["move_to"], True)
+        if r.has("turn_to_heading"):
+            kw["turn_to_heading"] = MoveToInput.from_json(r["turn_to_heading"], False)
+        for name in ("move_to_object", "turn_to_object"):
+            if r.has(name):
+                kw[name] = ObjectMoveInput.from_json(r[name])
         return TickStep(dt, **kw)
 
 
@@ -924,7 +964,7 @@ class Scene:
         """Whether the scene uses the motion layer (protocol feature mover.motion): a motion table or a
         motion input."""
         return self.mover.motion_table is not None or (
-            self.ticks is not None and any(s.motion is not None for s in self.ticks.steps))
+            self.ticks is not None and any(getattr(s, name) is not None for s in self.ticks.steps for name in MOTION_INPUTS))
 
     @property
     def format(self) -> str:
@@ -1043,11 +1083,20 @@ def check_consistency(scene: Scene, path: str = "") -> None:
     defined = {lb.id >> 16 for lb in scene.landblocks}
     env_cells = _check_indoor(scene, path, defined)
     _check_buildings(scene, path, env_cells)
-    if scene.ticks is not None and scene.mover.motion_table is None:
+    if scene.ticks is not None:
+        statics = {o.id for o in scene.objects}
         for i, step in enumerate(scene.ticks.steps):
-            if step.motion is not None:
-                raise InvalidScene(_p(path, f"ticks.steps[{i}].motion"), "a motion input needs the mover's motion_table "
-                                   "(the player's MotionTableId: without one ACE has no animation table to play)")
+            for name in MOTION_INPUTS:
+                if getattr(step, name) is not None and scene.mover.motion_table is None:
+                    raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}"), "a motion input needs the mover's "
+                                       "motion_table (the player's MotionTableId: without one ACE has no animation "
+                                       "table to play and no MovementManager)")
+            for name in ("move_to_object", "turn_to_object"):
+                target = getattr(step, name)
+                if target is not None and target.object not in statics:
+                    raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}.object"),
+                                       f"no static object has id {target.object} (the target is one of the scene's "
+                                       "objects, named by its id)")
 
     def check_landblock(where: str, cell: int) -> None:
         if cell >> 16 not in defined:

@@ -12,11 +12,11 @@ from dataclasses import fields
 
 from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from ..dat import cell_landblock, has_objects, scene_records
-from ..motion_scene import MOTION_TABLE_ID
+from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import DRIVERS, TICK_INPUTS, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 10
+PACK_VERSION = 11
 
 _f = struct.Struct("<f")
 _4f = struct.Struct("<4f")
@@ -73,6 +73,15 @@ _U32 = struct.Struct("<I")
 _POS_S = struct.Struct("<" + "I3f4f")
 # a motion input: the RawMotionState's CurrentHoldKey, CurrentStyle, then forward, sidestep and turn (command, hold key, speed)
 _MOTION = struct.Struct("<IIIIfIIfIIf")
+# a MovementParameters: Flags, DistanceToObject, MinDistance, FailDistance, Speed, WalkRunThreshold, DesiredHeading,
+# HoldKeyToApply
+_PARAMS = struct.Struct("<I6fI")
+_COMMAND = struct.Struct("<II")  # do_motion / stop_motion: the motion, the HoldKeyToApply
+
+
+def _params(p) -> bytes:
+    return _PARAMS.pack(p.flags, p.distance_to_object, p.min_distance, p.fail_distance, p.speed, p.walk_run_threshold,
+                        p.desired_heading, p.hold_key_to_apply)
 
 
 def _ticks(ticks: Ticks | None) -> bytes:
@@ -97,6 +106,16 @@ def _ticks(ticks: Ticks | None) -> bytes:
             elif name == "motion":
                 values.append(_MOTION.pack(v.hold_key, v.style, v.forward, v.forward_hold_key, v.forward_speed, v.sidestep,
                                            v.sidestep_hold_key, v.sidestep_speed, v.turn, v.turn_hold_key, v.turn_speed))
+            elif name == "stop":
+                values.append(_U32.pack(STOPS.index(v)))
+            elif name in ("do_motion", "stop_motion"):
+                values.append(_COMMAND.pack(v.motion, v.hold_key))
+            elif name == "move_to":
+                values.append(_POS_S.pack(*_pos(v.position)) + _params(v.params))
+            elif name == "turn_to_heading":
+                values.append(_params(v.params))
+            elif name in ("move_to_object", "turn_to_object"):
+                values.append(_U32.pack(v.object) + _params(v.params))
             else:
                 values.append(_3f.pack(*v))
         out.append(_STEP_HEAD.pack(time, mask))

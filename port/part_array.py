@@ -405,6 +405,14 @@ class PartArray:
             return self.parts[0].gfx_obj.id
         return 0
 
+    @anchor("CPartArray::GetHeight", "PartArray.cs:GetHeight")
+    def get_height(self):
+        return self.setup.height * self.scale.z
+
+    @anchor("CPartArray::GetRadius", "PartArray.cs:GetRadius")
+    def get_radius(self):
+        return self.setup.radius * self.scale.z
+
     @anchor("CPartArray::GetNumSphere", "PartArray.cs:GetNumSphere")
     def get_num_sphere(self) -> int:
         return self.setup.num_sphere

@@ -131,6 +131,8 @@ class PhysicsObj:
     is_animating: bool = False  # IsAnimating (the MotionInterpreter sets it)
     last_move_was_autonomous: bool = False  # LastMoveWasAutonomous
     mode: object = None  # the run's mode (the port's: the managers' scalars)
+    server: bool = False  # PhysicsEngine.Instance.Server (the run's PortalDat says it)
+    server_objects: object = None  # the run's ServerObjectManager (ACE's static one; port/managers/server_object_manager.py)
     # the managers ACE makes on demand for a creature or player: the scene's mover has none, and
     # their null checks stay as ACE has them (docs/oracle.md's audit table)
     movement_manager: object = None
@@ -179,13 +181,14 @@ class PhysicsObj:
 
     @classmethod
     @anchor("CPhysicsObj::CPhysicsObj", "PhysicsObj.cs:PhysicsObj()")
-    def create(cls, mode, timer, server: bool = False) -> "PhysicsObj":
+    def create(cls, mode, timer, server: bool = False, server_objects=None) -> "PhysicsObj":
         """``new PhysicsObj()``: ACE's defaults (Position cell 0 and identity frame,
         PhysicsGlobals.DefaultState, scale 1, default elasticity and friction, zero velocity,
         acceleration, omega, CachedVelocity and sliding normal, default(Plane) contact plane, an
         empty CellArray, UpdateTime and PhysicsTimer_CurrentTime from the clock `timer`, a
         RequestPos when PhysicsEngine.Instance.Server (`server`)). Called on a subclass (BuildingObj),
-        it makes that class's object, as `base()` does."""
+        it makes that class's object, as `base()` does. `server_objects`: the run's
+        ServerObjectManager (ACE's is static), where set_object_guid files the object."""
         from .transition.cell_array import CellArray
 
         zero = mode.vec(0, 0, 0)
@@ -193,7 +196,8 @@ class PhysicsObj:
                          velocity=zero, contact_plane=Plane(zero, mode.scalar(0.0)), sliding_normal=zero,
                          scale=mode.scalar(DEFAULT_SCALE), cell_array=CellArray(), acceleration=zero, omega=zero,
                          elasticity=mode.scalar(DEFAULT_ELASTICITY), friction=mode.scalar(DEFAULT_FRICTION),
-                         cached_velocity=zero, request_cached_velocity=zero, timer=timer, mode=mode)
+                         cached_velocity=zero, request_cached_velocity=zero, timer=timer, mode=mode,
+                         server=server, server_objects=server_objects)
         obj.update_time = timer.current_time
         obj.physics_timer_current_time = timer.current_time
         if server:
@@ -205,7 +209,7 @@ class PhysicsObj:
     def make_object(data_did: int, object_iid: int, dynamic: bool, portal_dat, sight_obj: bool = False) -> "PhysicsObj":
         """`portal_dat` (port/dat/portal_dat.py) stands in for the DAT statics the DAT readers use,
         PhysicsEngine.Instance.Server and the PhysicsTimer."""
-        obj = PhysicsObj.create(portal_dat.mode, portal_dat.timer, portal_dat.server)
+        obj = PhysicsObj.create(portal_dat.mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
         obj.init_object_begin(object_iid, dynamic)
         obj.init_part_array_object(data_did, True, portal_dat)
         obj.init_object_end()
@@ -620,9 +624,10 @@ class PhysicsObj:
         return [i for i in visible_objs if i.id != self.id and (not isinstance(i.cur_cell, EnvCell) or i.cur_cell.seen_outside)]
 
     @anchor("CPhysicsObj::set_frame", "PhysicsObj.cs:set_frame")
-    def set_frame(self, frame: AFrame, lscape) -> None:
+    def set_frame(self, frame: AFrame, lscape=None) -> None:
         """Writes the frame's orientation in place when ACE does (a frame valid except for its
-        heading gets the zero quaternion). The run's `lscape` says PhysicsEngine.Instance.Server."""
+        heading gets the zero quaternion). PhysicsEngine.Instance.Server is the object's `server`
+        (`lscape` is not read)."""
         if not frame.is_valid() and frame.is_valid_except_for_heading():
             z = type(frame.orientation.w)(0.0)
             frame.orientation = frame.orientation.runtime.quaternion(z, z, z, z)
@@ -631,7 +636,7 @@ class PhysicsObj:
 
         # custom for server: only update part frames for objects with physics bsp (ACE)
         if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter and (
-                self.state & PhysicsState.HasPhysicsBSP or not lscape.portal_dat.server):
+                self.state & PhysicsState.HasPhysicsBSP or not self.server):
             self.part_array.set_frame(frame)
 
         self.update_children_internal()
@@ -1185,7 +1190,7 @@ class PhysicsObj:
             else:
                 offset_frame.origin = offset_frame.origin * 0.0  # OnWalkable getting reset? (ACE)
         if self.position_manager is not None:
-            raise NotImplementedError("PositionManager.AdjustOffset is not ported: the mover has no PositionManager")
+            self.position_manager.adjust_offset(offset_frame, quantum)
 
         new_frame = AFrame.combine(self.position.frame, offset_frame)
 
@@ -1253,7 +1258,7 @@ class PhysicsObj:
             raise NotImplementedError("DetectionManager.CheckDetection is not ported")
 
         if self.target_manager is not None:
-            raise NotImplementedError("TargetManager.HandleTargetting is not ported")
+            self.target_manager.handle_targetting()
 
         if self.movement_manager is not None:
             self.movement_manager.use_time()
@@ -1262,7 +1267,7 @@ class PhysicsObj:
             self.part_array.handle_movement()
 
         if self.position_manager is not None:
-            raise NotImplementedError("PositionManager.UseTime is not ported")
+            self.position_manager.use_time()
 
         if self.particle_manager is not None:
             raise NotImplementedError("ParticleManager.UpdateParticles is not ported")
@@ -1423,10 +1428,12 @@ class PhysicsObj:
 
     @anchor(None, "PhysicsObj.cs:set_object_guid")
     def set_object_guid(self, guid: int) -> None:
-        """ServerObjectManager.AddServerObject(this) files the object by id; a lookup there (a
-        collision's end, ObjectMaint) ends at the object's WorldObject, and a scene's only WorldObject
-        is the mover's own, which no lookup asks for."""
+        """ServerObjectManager.AddServerObject(this) files the object by id in the run's table
+        (`server_objects`), where GetObjectA finds a MoveTo's, TargetManager's or StickyManager's
+        target."""
         self.id = guid
+        if self.server_objects is not None:
+            self.server_objects.add_server_object(self)
 
     @anchor(None, "PhysicsObj.cs:set_weenie_obj")
     def set_weenie_obj(self, wobj: WeenieObject) -> None:
@@ -1590,19 +1597,242 @@ class PhysicsObj:
         if self.movement_manager is not None:
             self.movement_manager.cancel_move_to(WeenieError.ActionCancelled)
 
+    def _make_movement_manager_for_move_to(self) -> None:
+        """The block MoveToObject, MoveToObject_Internal, TurnToHeading and TurnToObject_Internal
+        repeat (ACE's "refactor into common method"): note it clears Active, where
+        MakeMovementManager sets it."""
+        from .managers.movement_manager import MovementManager
+
+        if self.movement_manager is None:
+            self.movement_manager = MovementManager.create(self, self.weenie_obj, self.mode)
+            self.movement_manager.enter_default_state()
+            if not self.state & PhysicsState.Static:
+                if not self.transient_state & TransientState.Active:
+                    self.update_time = self.timer.current_time
+
+                self.transient_state &= ~TransientState.Active
+
+    @anchor("CPhysicsObj::MoveToObject", "PhysicsObj.cs:MoveToObject")
+    def move_to_object(self, obj: "PhysicsObj", movement_params) -> None:
+        self._make_movement_manager_for_move_to()
+
+        zero = self.mode.scalar(0.0)
+        height = obj.part_array.get_height() if obj.part_array is not None else zero
+        radius = obj.part_array.get_radius() if obj.part_array is not None else zero
+        parent = obj.parent if obj.parent is not None else obj
+
+        self.move_to_object_internal(obj, parent.id, radius, height, movement_params)
+
+    @anchor("CPhysicsObj::MoveToObject_Internal", "PhysicsObj.cs:MoveToObject_Internal")
+    def move_to_object_internal(self, obj: "PhysicsObj", top_level_id: int, obj_radius, obj_height,
+                                movement_params) -> None:
+        from .animation.movement_struct import MovementStruct
+        from acconform.motion_enums import MovementType
+
+        self._make_movement_manager_for_move_to()
+        mvs = MovementStruct()
+        # packobj vtable (ACE)
+        mvs.top_level_id = top_level_id
+        mvs.radius = obj_radius
+        mvs.object_id = obj.id
+        mvs.params = movement_params
+        mvs.type = MovementType.MoveToObject
+        mvs.height = obj_height
+        self.movement_manager.perform_movement(mvs)
+
+    @anchor("CPhysicsObj::MoveToPosition", "PhysicsObj.cs:MoveToPosition")
+    def move_to_position(self, pos, movement_params) -> None:
+        """No MovementManager check (ACE has none): a mover without a motion table throws."""
+        from .animation.movement_struct import MovementStruct
+        from acconform.motion_enums import MovementType
+
+        mvs = MovementStruct()
+        mvs.position = pos.copy()
+        mvs.type = MovementType.MoveToPosition
+        mvs.params = movement_params
+        self.movement_manager.perform_movement(mvs)
+
+    @anchor("CPhysicsObj::TurnToHeading", "PhysicsObj.cs:TurnToHeading")
+    def turn_to_heading(self, movement_params) -> None:
+        from .animation.movement_struct import MovementStruct
+        from acconform.motion_enums import MovementType
+
+        self._make_movement_manager_for_move_to()
+        mvs = MovementStruct.create(MovementType.TurnToHeading)
+        mvs.params = movement_params
+        self.movement_manager.perform_movement(mvs)
+
+    @anchor("CPhysicsObj::TurnToObject", "PhysicsObj.cs:TurnToObject")
+    def turn_to_object(self, obj: "PhysicsObj", movement_params) -> bool:
+        if obj is None:
+            return False
+
+        parent = obj.parent if obj.parent is not None else obj
+
+        self.turn_to_object_internal(obj.id, parent.id, movement_params)
+        return True
+
+    @anchor("CPhysicsObj::TurnToObject_Internal", "PhysicsObj.cs:TurnToObject_Internal")
+    def turn_to_object_internal(self, object_id: int, top_level_id: int, movement_params) -> None:
+        from .animation.movement_struct import MovementStruct
+        from acconform.motion_enums import MovementType
+
+        self._make_movement_manager_for_move_to()
+        mvs = MovementStruct.create(MovementType.TurnToObject)
+        mvs.object_id = object_id
+        mvs.top_level_id = top_level_id
+        mvs.params = movement_params
+        self.movement_manager.perform_movement(mvs)
+
+    @anchor("CPhysicsObj::GetObjectA", "PhysicsObj.cs:GetObjectA")
+    def get_object_a(self, object_id: int):
+        return self.server_objects.get_object_a(object_id)
+
+    @anchor("CPhysicsObj::GetHeight", "PhysicsObj.cs:GetHeight")
+    def get_height(self):
+        if self.part_array is None:
+            return self.mode.scalar(0.0)
+        return self.part_array.get_height()
+
+    @anchor("CPhysicsObj::GetRadius", "PhysicsObj.cs:GetRadius")
+    def get_radius(self):
+        if self.part_array is not None:
+            return self.part_array.get_radius()
+        else:
+            return self.mode.scalar(0.0)
+
+    @anchor("CPhysicsObj::HandleUpdateTarget", "PhysicsObj.cs:HandleUpdateTarget")
+    def handle_update_target(self, target_info) -> None:
+        if target_info.context_id != 0:
+            return
+
+        if self.movement_manager is not None:
+            self.movement_manager.handle_update_target(target_info)
+        if self.position_manager is not None:
+            self.position_manager.handle_update_target(target_info)
+
+    @anchor("CPhysicsObj::MakePositionManager", "PhysicsObj.cs:MakePositionManager")
+    def make_position_manager(self) -> None:
+        from .managers.position_manager import PositionManager
+
+        if self.position_manager is not None:
+            return
+
+        self.position_manager = PositionManager.create(self)
+
+        if not self.state & PhysicsState.Static:
+            if not self.transient_state & TransientState.Active:
+                self.update_time = self.timer.current_time
+
+            self.transient_state |= TransientState.Active
+
+    @anchor("CPhysicsObj::get_position_manager", "PhysicsObj.cs:get_position_manager")
+    def get_position_manager(self):
+        self.make_position_manager()
+
+        return self.position_manager
+
+    @anchor("CPhysicsObj::IsInterpolating", "PhysicsObj.cs:IsInterpolating")
+    def is_interpolating(self) -> bool:
+        if self.position_manager is None:
+            return False
+        else:
+            return self.position_manager.is_interpolating()
+
+    @anchor("CPhysicsObj::IsFullyConstrained", "PhysicsObj.cs:IsFullyConstrained")
+    def is_fully_constrained(self) -> bool:
+        if self.position_manager is None:
+            return False
+        else:
+            return self.position_manager.is_fully_constrained()
+
+    @anchor("CPhysicsObj::StopInterpolating", "PhysicsObj.cs:StopInterpolating")
+    def stop_interpolating(self) -> None:
+        if self.position_manager is not None:
+            self.position_manager.stop_interpolating()
+
+    @anchor("CPhysicsObj::get_sticky_object", "PhysicsObj.cs:get_sticky_object")
+    def get_sticky_object(self) -> int:
+        if self.position_manager is None:
+            return 0
+
+        return self.position_manager.get_sticky_object_id()
+
+    @anchor("CPhysicsObj::stick_to_object", "PhysicsObj.cs:stick_to_object")
+    def stick_to_object(self, object_id: int) -> None:
+        """ObjMaint is never null (the constructor makes one)."""
+        self.make_position_manager()
+
+        object_a = self.server_objects.get_object_a(object_id)
+        if object_a is None:
+            return
+        if object_a.parent is not None:
+            object_a = self.parent
+
+        if object_a.part_array is not None:
+            self.position_manager.stick_to(object_a.id, object_a.part_array.get_radius(), object_a.part_array.get_height())
+        else:
+            zero = self.mode.scalar(0.0)
+            self.position_manager.stick_to(object_a.id, zero, zero)
+
+    @anchor("CPhysicsObj::unstick_from_object", "PhysicsObj.cs:unstick_from_object")
+    def unstick_from_object(self) -> None:
+        if self.position_manager is not None:
+            self.position_manager.unstick()
+
+    @anchor("CPhysicsObj::set_target", "PhysicsObj.cs:set_target")
+    def set_target(self, context_id: int, object_id: int, radius, quantum: float) -> None:
+        from .managers.target_manager import TargetManager
+
+        if self.target_manager is None:
+            self.target_manager = TargetManager.create(self)
+
+        self.target_manager.set_target(context_id, object_id, radius, quantum)
+
+    @anchor("CPhysicsObj::set_target_quantum", "PhysicsObj.cs:set_target_quantum")
+    def set_target_quantum(self, new_quantum: float) -> None:
+        if self.target_manager is not None:
+            self.target_manager.set_target_quantum(new_quantum)
+
+    @anchor("CPhysicsObj::get_target_quantum", "PhysicsObj.cs:get_target_quantum")
+    def get_target_quantum(self) -> float:
+        if self.target_manager is None or self.target_manager.target_info is None:
+            return 0.0
+
+        return self.target_manager.target_info.quantum
+
+    @anchor("CPhysicsObj::clear_target", "PhysicsObj.cs:clear_target")
+    def clear_target(self) -> None:
+        if self.target_manager is not None:
+            self.target_manager.clear_target()
+
+    @anchor("CPhysicsObj::add_voyeur", "PhysicsObj.cs:add_voyeur")
+    def add_voyeur(self, object_id: int, radius, quantum: float) -> None:
+        from .managers.target_manager import TargetManager
+
+        if self.target_manager is None:
+            self.target_manager = TargetManager.create(self)
+        self.target_manager.add_voyeur(object_id, radius, quantum)
+
+    @anchor("CPhysicsObj::remove_voyeur", "PhysicsObj.cs:remove_voyeur")
+    def remove_voyeur(self, object_id: int) -> bool:
+        if self.target_manager is None:
+            return False
+        return self.target_manager.remove_voyeur(object_id)
+
+    @anchor("CPhysicsObj::receive_target_update", "PhysicsObj.cs:receive_target_update")
+    def receive_target_update(self, info) -> None:
+        if self.target_manager is not None:
+            self.target_manager.receive_update(info)
+
     @anchor("CPhysicsObj::get_heading", "PhysicsObj.cs:get_heading")
     def get_heading(self):
         return self.position.frame.get_heading()
 
     @anchor("CPhysicsObj::set_heading", "PhysicsObj.cs:set_heading")
-    def set_heading(self, degrees, send_event: bool, lscape=None) -> None:
-        """ACE's set_frame reads PhysicsEngine.Instance.Server: the port's set_frame takes it from the
-        run's `lscape`, which the callers that turn an object (MoveToManager, StickyManager: no scene
-        reaches them yet) must pass."""
-        if lscape is None:
-            raise NotImplementedError("set_heading needs the run's LScape (MoveTo and Sticky are not in scenes yet)")
+    def set_heading(self, degrees, send_event: bool) -> None:
         self.position.frame.set_heading(degrees)
-        self.set_frame(self.position.frame, lscape)
+        self.set_frame(self.position.frame)
 
     @anchor("CPhysicsObj::get_velocity", "PhysicsObj.cs:get_velocity")
     def get_velocity(self):

@@ -73,7 +73,7 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     CurCell stay as the constructor left them: `place_mover` places it."""
     mode = lscape.mode
     s = mode.scalar
-    obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server)
+    obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
     obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(obj_id)
     obj.set_weenie_obj(WeenieObject.of_player(Player()))
@@ -207,13 +207,15 @@ def static_cells(record: StaticObject, did: int, obj: PhysicsObj | None, lscape:
 @harness("builds and places a static object from its DAT records, as the oracle's facade does (init_static_objs)")
 def build_static(record: StaticObject, did: int, portal_dat: PortalDat, lscape: LScape) -> PhysicsObj | None:
     """The static as the oracle builds it (docs/oracle.md's audit): ``makeObject(did, scene id,
-    false)`` over the records dat.py wrote; SetScaleStatic(scene scale); State = the scene's
+    false)`` over the records dat.py wrote; set_object_guid(scene id) (WorldObject.InitPhysicsObj's:
+    the run's ServerObjectManager files it); SetScaleStatic(scene scale); State = the scene's
     flags (as WorldObject.InitPhysicsObj overwrites it); DatObject = true; then
     Landblock.init_static_objs' placement: a Position in the landblock's 0xXXYYFFFF id with the
     scene's frame, LandDefs.AdjustToOutside, the landblock's get_landcell, and add_obj_to_cell.
     None when the landblock has no such cell (ACE drops the object)."""
     mode = lscape.mode
     obj = PhysicsObj.make_object(did, record.id, False, portal_dat)
+    obj.set_object_guid(record.id)  # ServerObjectManager files it: a MoveTo's target is found there
     obj.set_scale_static(mode.scalar(record.scale))
     obj.state = record.state
     obj.dat_object = True
@@ -447,6 +449,103 @@ def apply_inputs(mover: PhysicsObj, step, mode) -> None:
         mover.part_array.sequence.set_omega(mode.vec(*step.sequence_omega))
     if step.motion is not None:
         move_to_state(mover, step.motion, mode)
+    if step.stop is not None:
+        stop_movement(mover, step.stop)
+    if step.do_motion is not None:
+        key_motion(mover, step.do_motion, True, mode)
+    if step.stop_motion is not None:
+        key_motion(mover, step.stop_motion, False, mode)
+    if step.move_to is not None:
+        move_to_position(mover, step.move_to, mode)
+    if step.move_to_object is not None:
+        object_move(mover, step.move_to_object, False, mode)
+    if step.turn_to_heading is not None:
+        turn_to_heading(mover, step.turn_to_heading, mode)
+    if step.turn_to_object is not None:
+        object_move(mover, step.turn_to_object, True, mode)
+
+
+@harness("a scene's MovementParameters built as the oracle's facade builds it: ACE's constructor, then each field the scene gives")
+def movement_parameters(p, mode):
+    """`p`: acconform.motion_scene.MovementParams. Flags, DistanceToObject, MinDistance, FailDistance,
+    Speed, WalkRunThreshold, DesiredHeading, HoldKeyToApply, in that order (the facade's Params)."""
+    from .animation.movement_parameters import MovementParameters
+
+    s = mode.scalar
+    mvp = MovementParameters.create(mode)
+    mvp.flags = p.flags
+    mvp.distance_to_object = s(p.distance_to_object)
+    mvp.min_distance = s(p.min_distance)
+    mvp.fail_distance = s(p.fail_distance)
+    mvp.speed = s(p.speed)
+    mvp.walk_run_threshold = s(p.walk_run_threshold)
+    mvp.desired_heading = s(p.desired_heading)
+    mvp.hold_key_to_apply = p.hold_key_to_apply
+    return mvp
+
+
+@harness("the server's stops, as the oracle's facade makes them (acconform.motion_scene.STOPS)")
+def stop_movement(mover: PhysicsObj, stop: str) -> None:
+    """stop_completely: PhysicsObj.StopCompletely (Creature_Death, Player_Tick's PK logout);
+    cancel_moveto: PhysicsObj.cancel_moveto (Player_Move2.StopExistingMoveToChains2, Player_Melee);
+    move_to_manager_cancel: MoveToManager.CancelMoveTo(ActionCancelled), FailProgressCount = 0
+    (Monster_Navigation.CancelMoveTo, Creature_Navigation's MoveTo tick)."""
+    from acconform.motion_enums import WeenieError
+
+    if stop == "stop_completely":
+        mover.stop_completely(True)
+    elif stop == "cancel_moveto":
+        mover.cancel_moveto()
+    else:
+        mover.movement_manager.move_to_manager.cancel_move_to(WeenieError.ActionCancelled)
+        mover.movement_manager.move_to_manager.fail_progress_count = 0
+
+
+@harness("Player.OnMoveToState_ClientMethod's physics calls for one key, as the oracle's facade makes them")
+def key_motion(mover: PhysicsObj, command, press: bool, mode) -> None:
+    """A MovementParameters() with HoldKeyToApply the current hold key, UpdateTime when not moving or
+    animating, then DoMotion(motion, mvp) or StopMotion(motion, mvp, true)."""
+    from .animation.movement_parameters import MovementParameters
+
+    mvp = MovementParameters.create(mode)
+    mvp.hold_key_to_apply = command.hold_key
+    if not mover.is_moving_or_animating():
+        mover.update_time = mover.timer.current_time
+    if press:
+        mover.do_motion(command.motion, mvp)
+    else:
+        mover.stop_motion(command.motion, mvp, True)
+
+
+@harness("Creature.MoveTo(Position)'s physics calls, as the oracle's facade makes them")
+def move_to_position(mover: PhysicsObj, move, mode) -> None:
+    """UpdateTime when not moving or animating, then MoveToPosition(a copy of the position, mvp)."""
+    if not mover.is_moving_or_animating():
+        mover.update_time = mover.timer.current_time
+    mover.move_to_position(Position.from_record(move.position, mode).copy(), movement_parameters(move.params, mode))
+
+
+@harness("PhysicsObj.TurnToHeading with the calls of Creature.MoveTo around it, as the oracle's facade makes them")
+def turn_to_heading(mover: PhysicsObj, turn, mode) -> None:
+    """No WorldObject of ACE's server calls TurnToHeading (the client does, from a TurnToHeading
+    motion): UpdateTime when not moving or animating, then TurnToHeading(mvp)."""
+    if not mover.is_moving_or_animating():
+        mover.update_time = mover.timer.current_time
+    mover.turn_to_heading(movement_parameters(turn.params, mode))
+
+
+@harness("Monster_Navigation.StartTurn's physics calls, as the oracle's facade makes them")
+def object_move(mover: PhysicsObj, move, turn: bool, mode) -> None:
+    """MoveToObject / TurnToObject(the target's PhysicsObj, mvp), then UpdateTime = CurrentTime
+    ("prevent initial snap"). The target is the static the run's ServerObjectManager filed under
+    its id (set_object_guid)."""
+    target = mover.server_objects.get_object_a(move.object)
+    mvp = movement_parameters(move.params, mode)
+    if turn:
+        mover.turn_to_object(target, mvp)
+    else:
+        mover.move_to_object(target, mvp)
+    mover.update_time = mover.timer.current_time
 
 
 @harness("the physics calls of a player's MoveToState (Player.OnMoveToState, FastTick; OnMoveToState_ServerMethod), as the oracle's facade makes them")

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 10;
+        public const int PackVersion = 11;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -81,6 +81,13 @@ namespace Acconform.Oracle
             public Vector3 Velocity, LocalVelocity, Omega, Jump, SequenceVelocity, SequenceOmega;
             public ACE.Server.Physics.Common.Position RequestPos;
             public ACE.Server.Network.Structure.RawMotionState Motion;  // a MoveToState's RawMotionState
+            // the server's calls into the managers (acconform/motion_scene.py): a stop (its index in STOPS), a
+            // key's DoMotion / StopMotion, MoveTo a position or an object, turn to a heading or an object
+            public uint Stop;
+            public uint DoMotion, DoMotionHoldKey, StopMotion, StopMotionHoldKey;
+            public ACE.Server.Physics.Common.Position MoveToPos;
+            public MovementParameters MoveToParams, TurnToHeadingParams, MoveToObjectParams, TurnToObjectParams;
+            public uint MoveToObjectId, TurnToObjectId;
         }
         static bool hasTicks;
         static byte tickDriver;
@@ -371,6 +378,13 @@ namespace Acconform.Oracle
                     m.TurnSpeed = r.ReadSingle();
                     s.Motion = m;
                 }
+                if ((s.Mask & 1024) != 0) s.Stop = r.ReadUInt32();
+                if ((s.Mask & 2048) != 0) { s.DoMotion = r.ReadUInt32(); s.DoMotionHoldKey = r.ReadUInt32(); }
+                if ((s.Mask & 4096) != 0) { s.StopMotion = r.ReadUInt32(); s.StopMotionHoldKey = r.ReadUInt32(); }
+                if ((s.Mask & 8192) != 0) { s.MoveToPos = Pos(r); s.MoveToParams = Params(r); }
+                if ((s.Mask & 16384) != 0) { s.MoveToObjectId = r.ReadUInt32(); s.MoveToObjectParams = Params(r); }
+                if ((s.Mask & 32768) != 0) s.TurnToHeadingParams = Params(r);
+                if ((s.Mask & 65536) != 0) { s.TurnToObjectId = r.ReadUInt32(); s.TurnToObjectParams = Params(r); }
                 tickSteps.Add(s);
             }
         }
@@ -418,6 +432,87 @@ namespace Acconform.Oracle
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
             if ((s.Mask & 512) != 0) MoveToState(obj, s.Motion);
+            if ((s.Mask & 1024) != 0) StopMovement(obj, s.Stop);
+            if ((s.Mask & 2048) != 0) KeyMotion(obj, s.DoMotion, s.DoMotionHoldKey, true);
+            if ((s.Mask & 4096) != 0) KeyMotion(obj, s.StopMotion, s.StopMotionHoldKey, false);
+            if ((s.Mask & 8192) != 0) MoveToPosition(obj, s.MoveToPos, s.MoveToParams);
+            if ((s.Mask & 16384) != 0) ObjectMove(obj, s.MoveToObjectId, s.MoveToObjectParams, false);
+            if ((s.Mask & 32768) != 0) TurnToHeading(obj, s.TurnToHeadingParams);
+            if ((s.Mask & 65536) != 0) ObjectMove(obj, s.TurnToObjectId, s.TurnToObjectParams, true);
+        }
+
+        /// <summary>A MovementParameters as ACE's constructor makes it, then every field the scene carries set:
+        /// Flags, DistanceToObject, MinDistance, FailDistance, Speed, WalkRunThreshold, DesiredHeading,
+        /// HoldKeyToApply.</summary>
+        static MovementParameters Params(BinaryReader r)
+        {
+            var mvp = new MovementParameters();
+            mvp.Flags = (MovementParamFlags)r.ReadUInt32();
+            mvp.DistanceToObject = r.ReadSingle();
+            mvp.MinDistance = r.ReadSingle();
+            mvp.FailDistance = r.ReadSingle();
+            mvp.Speed = r.ReadSingle();
+            mvp.WalkRunThreshold = r.ReadSingle();
+            mvp.DesiredHeading = r.ReadSingle();
+            mvp.HoldKeyToApply = (HoldKey)r.ReadUInt32();
+            return mvp;
+        }
+
+        /// <summary>The server's stops (acconform.motion_scene.STOPS): 0 PhysicsObj.StopCompletely (Creature_Death,
+        /// Player_Tick's PK logout), 1 PhysicsObj.cancel_moveto (Player_Move2.StopExistingMoveToChains2,
+        /// Player_Melee), 2 MoveToManager.CancelMoveTo(ActionCancelled) and FailProgressCount = 0
+        /// (Monster_Navigation.CancelMoveTo, Creature_Navigation's MoveTo tick).</summary>
+        static void StopMovement(PhysicsObj obj, uint stop)
+        {
+            if (stop == 0) obj.StopCompletely(true);
+            else if (stop == 1) obj.cancel_moveto();
+            else
+            {
+                obj.MovementManager.MoveToManager.CancelMoveTo(WeenieError.ActionCancelled);
+                obj.MovementManager.MoveToManager.FailProgressCount = 0;
+            }
+        }
+
+        /// <summary>Player.OnMoveToState_ClientMethod's physics calls for one key: a MovementParameters with
+        /// HoldKeyToApply the current hold key, UpdateTime when not moving or animating, then DoMotion(motion, mvp)
+        /// or StopMotion(motion, mvp, true).</summary>
+        static void KeyMotion(PhysicsObj obj, uint motion, uint holdKey, bool press)
+        {
+            var mvp = new MovementParameters();
+            mvp.HoldKeyToApply = (HoldKey)holdKey;
+            if (!obj.IsMovingOrAnimating)
+                obj.UpdateTime = PhysicsTimer.CurrentTime;
+            if (press) obj.DoMotion(motion, mvp);
+            else obj.StopMotion(motion, mvp, true);
+        }
+
+        /// <summary>Creature.MoveTo(Position)'s physics calls: UpdateTime when not moving or animating, then
+        /// MoveToPosition(a copy of the position, mvp).</summary>
+        static void MoveToPosition(PhysicsObj obj, ACE.Server.Physics.Common.Position pos, MovementParameters mvp)
+        {
+            if (!obj.IsMovingOrAnimating)
+                obj.UpdateTime = PhysicsTimer.CurrentTime;
+            obj.MoveToPosition(new ACE.Server.Physics.Common.Position(pos), mvp);
+        }
+
+        /// <summary>TurnToHeading (no WorldObject of ACE's server calls it: the calls of Creature.MoveTo around it,
+        /// UpdateTime when not moving or animating).</summary>
+        static void TurnToHeading(PhysicsObj obj, MovementParameters mvp)
+        {
+            if (!obj.IsMovingOrAnimating)
+                obj.UpdateTime = PhysicsTimer.CurrentTime;
+            obj.TurnToHeading(mvp);
+        }
+
+        /// <summary>Monster_Navigation.StartTurn's physics calls: MoveToObject / TurnToObject(the target's PhysicsObj,
+        /// mvp), then UpdateTime = CurrentTime ("prevent initial snap"). The target is the static the server's
+        /// ServerObjectManager filed under its id (set_object_guid, as WorldObject.InitPhysicsObj files it).</summary>
+        static void ObjectMove(PhysicsObj obj, uint targetId, MovementParameters mvp, bool turn)
+        {
+            var target = ServerObjectManager.GetObjectA(targetId);
+            if (turn) obj.TurnToObject(target, mvp);
+            else obj.MoveToObject(target, mvp);
+            obj.UpdateTime = PhysicsTimer.CurrentTime;
         }
 
         /// <summary>The physics calls of a player's MoveToState (GameActionMoveToState.Handle): Player.OnMoveToState's
@@ -1103,6 +1198,7 @@ namespace Acconform.Oracle
 
             // WorldObject.InitPhysicsObj's steps: the object from its DAT id, then the scene's scale and state
             var obj = PhysicsObj.makeObject(did, id, false);
+            obj.set_object_guid(new ObjectGuid(id));  // ServerObjectManager files it: a MoveTo's target is found there
             obj.SetScaleStatic(scale);
             obj.State = state;
             sceneStatics.Add(obj);
