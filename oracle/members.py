@@ -93,8 +93,8 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     # the server's calls into the managers (Facade.StopMovement, KeyMotion, MoveToPosition, TurnToHeading, ObjectMove)
     ("ACE.Server.Physics.PhysicsObj", ("StopCompletely", "cancel_moveto", "MovementManager", "DoMotion", "StopMotion",
                                        "MoveToPosition", "MoveToObject", "TurnToHeading", "TurnToObject")),
-    ("ACE.Server.Physics.Managers.MovementManager", ("MoveToManager",)),
-    ("ACE.Server.Physics.Managers.MoveToManager", ("CancelMoveTo", "FailProgressCount")),
+    ("ACE.Server.Physics.Animation.MovementManager", ("MoveToManager",)),
+    ("ACE.Server.Physics.Animation.MoveToManager", ("CancelMoveTo", "FailProgressCount")),
     ("ACE.Server.Physics.Managers.ServerObjectManager", ("GetObjectA",)),
     ("ACE.Server.Physics.Animation.MovementParameters", (".ctor", "Flags", "DistanceToObject", "MinDistance",
                                                          "FailDistance", "Speed", "WalkRunThreshold", "DesiredHeading",
