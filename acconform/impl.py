@@ -33,6 +33,8 @@ class BuiltinPort:
 
     name = "acconform port"
     hello = None
+    # every campaign kind, and "motion" (motion tick scenes: the port has the motion layer)
+    kinds = ("terrain", "bsp", "obstacles", "indoor", "buildings", "ticks", "motion")
 
     def __init__(self, mode: str = "exact", runtime: str = "mono"):
         from .port.run import run_scene

@@ -99,7 +99,9 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "mover.motion": (lambda s: s.has_motion,
                      "the motion layer: the mover's motion table (MotionTable and Animation DAT records its Setup names, "
                      "made as WorldObject.InitPhysicsObj makes a player with that MotionTableId) and the tick input "
-                     "motion, a MoveToState's RawMotionState (scene/6: mover.motion_table, ticks.steps[].motion)"),
+                     "motion, a MoveToState's RawMotionState, and the server's calls into the managers: the tick inputs "
+                     "stop, do_motion, stop_motion, move_to, move_to_object, turn_to_heading and turn_to_object "
+                     "(scene/6: mover.motion_table, ticks.steps[].motion and the others)"),
 }
 
 
@@ -283,8 +285,11 @@ class Implementation:
 
     @property
     def kinds(self) -> tuple[str, ...]:
-        """The campaign kinds it can run: its handshake's, and "ticks" when it lists the feature."""
-        return tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in self.hello["features"] else ())
+        """The campaign kinds it can run: its handshake's, "ticks" when it lists the feature, and "motion"
+        (motion tick scenes) when it lists ticks and mover.motion."""
+        features = self.hello["features"]
+        return (tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in features else ())
+                + (("motion",) if "ticks" in features and "mover.motion" in features else ()))
 
     @property
     def runs_every_scene(self) -> bool:

@@ -1084,7 +1084,9 @@ def check_consistency(scene: Scene, path: str = "") -> None:
     env_cells = _check_indoor(scene, path, defined)
     _check_buildings(scene, path, env_cells)
     if scene.ticks is not None:
-        statics = {o.id for o in scene.objects}
+        # a target is an outdoor static: ACE makes an EnvCell's statics itself when it loads the cell and
+        # files none of them in ServerObjectManager (no WorldObject's set_object_guid)
+        statics = {o.id for o in scene.objects if o.position.cell & 0xFFFF < ENV_CELL_FIRST}
         for i, step in enumerate(scene.ticks.steps):
             for name in MOTION_INPUTS:
                 if getattr(step, name) is not None and scene.mover.motion_table is None:
@@ -1095,8 +1097,8 @@ def check_consistency(scene: Scene, path: str = "") -> None:
                 target = getattr(step, name)
                 if target is not None and target.object not in statics:
                     raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}.object"),
-                                       f"no static object has id {target.object} (the target is one of the scene's "
-                                       "objects, named by its id)")
+                                       f"no outdoor static object has id {write_id(target.object)} (the target is "
+                                       "one of the scene's objects outside EnvCells, named by its id)")
 
     def check_landblock(where: str, cell: int) -> None:
         if cell >> 16 not in defined:

@@ -42,6 +42,10 @@ DEFAULT_KINDS: tuple[str, ...] = ALL_KINDS
 
 # "ticks:<world>": tick scenes over one world (a geometry kind)
 TICK_WORLD_KINDS: tuple[str, ...] = tuple(f"ticks:{k}" for k in GEOMETRY_KINDS)
+# "motion": tick scenes of the ticks policy motion only (strategies/motion.py: motion tables, MoveToState keys,
+# the server's MoveTo / turn / stop / DoMotion calls); recorded as "ticks"; an implementation runs it when it
+# lists "ticks" and the feature mover.motion (protocol.Implementation.kinds; the built-in port does)
+MOTION_KIND = "motion"
 
 
 def kind_supported(kind: str, supported) -> bool:
@@ -64,8 +68,8 @@ def check_kinds(kinds) -> tuple[str, ...]:
         if not k:
             raise AcconformError(f"--kinds {given!r}: an empty kind name between commas "
                                  f"(known: {', '.join(ALL_KINDS)})")
-        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS:
-            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, or ticks:<world> for "
+        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS and k != MOTION_KIND:
+            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, {MOTION_KIND}, or ticks:<world> for "
                                  f"tick scenes over one of {', '.join(GEOMETRY_KINDS)})")
     if len(set(kinds)) != len(kinds):
         twice = next(k for k in kinds if kinds.count(k) > 1)

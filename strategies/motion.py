@@ -35,9 +35,12 @@ from hypothesis import strategies as st
 
 from acconform.flags import TransientState
 from acconform.motion_enums import HoldKey, MotionCommand as MC
-from acconform.motion_scene import AnimationSpec, AnimRef, MotionDataSpec, MotionEntry, MotionInput, MotionTableSpec
+from acconform.motion_enums import MovementParamFlags as MPF
+from acconform.motion_scene import (DEFAULT_MOVEMENT_FLAGS, STOPS, AnimationSpec, AnimRef, CommandInput, MotionDataSpec,
+                                    MotionEntry, MotionInput, MotionTableSpec, MovementParams, MoveToInput,
+                                    ObjectMoveInput)
 from acconform.numerics import to_f32
-from acconform.scene import Frame, Position, Scene
+from acconform.scene import ENV_CELL_FIRST, Frame, Position, Scene, SphereRec, SphereShape, StaticObject
 
 from . import draws as dr
 
@@ -69,6 +72,25 @@ SEGMENTS = dr.ints(0, 4)  # inputs after the first
 LAST_STOP = st.sampled_from((True, True, False))
 JUMPS = st.sampled_from((False, False, False, True))  # a jump (the tick input jump) among the keys
 TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
+
+# the server's calls into the managers (one scene in two): what drives the mover first
+MANAGED = st.sampled_from((False, True))
+GOALS = st.sampled_from(("move_to", "move_to", "move_to_exact", "move_to_object", "sticky", "sticky",
+                         "turn_to_heading", "turn_to_object", "keys"))
+HEADINGS = dr.OneOf(st.sampled_from((0.0, 90.0, 180.0, 270.0, 135.0, 359.0)), dr.f32(0.0, 360.0))
+DISTANCES = dr.OneOf(st.sampled_from((0.6, 0.0, 1.0, 0.5, 2.0)), dr.f32(0.0, 4.0))
+MIN_DISTANCES = dr.OneOf(st.sampled_from((0.0, 0.0, 0.0, 0.5)), dr.f32(0.0, 1.0))
+FAIL_DISTANCES = st.sampled_from((None, None, None, 15.0, 2.0))  # None: float.MaxValue
+MOVE_SPEEDS = dr.OneOf(st.sampled_from((1.0, 1.0, 1.5, 0.5)), dr.f32(0.25, 3.0))
+WALK_RUN = dr.OneOf(st.sampled_from((1.0, 15.0, 0.0, 5.0)), dr.f32(0.0, 20.0))
+FLAG_CHANGES = st.sampled_from((0, 0, MPF.UseFinalHeading, MPF.FailWalk, MPF.MoveAway, MPF.CanCharge,
+                                MPF.CanRun | MPF.CanWalk, MPF.UseSpheres, MPF.StopCompletely | MPF.CancelMoveTo))
+HOLD_TO_APPLY = st.sampled_from((0, 0, int(HoldKey.Run), int(HoldKey.None_)))
+TARGET_TS = st.sampled_from((1.0, 1.0, 0.5, 1.5, 0.25))  # where along the path (1: its end, past its obstacles)
+LATER = dr.ints(0, 3)  # stops, turns and keys after the first
+LATER_KINDS = st.sampled_from(("stop", "stop", "turn_to_heading", "move_to", "do_motion", "stop_motion"))
+KEY_COMMANDS = st.sampled_from((WALK, RUN, TURN, SIDE, int(MC.TurnLeft), int(MC.WalkBackwards), READY))
+TARGET_ID = 0x7F000001  # a sphere the scene gains to follow when its world has no outdoor static
 
 
 def _yaw(deg: float) -> tuple:
@@ -175,6 +197,13 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
     n = dr.take(draw, TICK_COUNTS)
     start, dts, clabel = clock(draw, n)
     inputs = [{} for _ in range(n)]
+    g0, g1 = _path(base)
+    if draw(MANAGED):  # the server's calls into the managers instead of a player's keys
+        first_inputs, later, base, mlabel = draw_managed_inputs(draw, base, n, g0, g1)
+        inputs[0].update(first_inputs)
+        for at, inp in later:
+            inputs[at].update(inp)
+        return _motion_scene(base, table, start, dts, inputs, g0, g1, f"{tlabel}:managed:{mlabel}:{clabel}")
     first, tag = draw_motion_input(draw)
     if tag == "stop":
         first, tag = MotionInput(hold_key=int(HoldKey.None_), forward=WALK, forward_hold_key=int(HoldKey.None_),
@@ -194,12 +223,97 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
         at = draw(st.integers(0, n - 1))
         inputs[at]["jump"] = (0.0, to_f32(dr.take(draw, JUMP_FORWARD)), to_f32(dr.take(draw, JUMP_UPS)))
         tags.append(f"jump@{at}")
-    g0, g1 = _path(base)
+    return _motion_scene(base, table, start, dts, inputs, g0, g1, f"{tlabel}:{'+'.join(tags)}:{clabel}")
+
+
+def _motion_scene(base: Scene, table, start, dts, inputs, g0, g1, label: str) -> Scene:
+    from .ticks import _tick_scene, _unit
+
     ux, uy = _unit(g1[0] - g0[0], g1[1] - g0[1])
     heading = math.degrees(math.atan2(-ux, uy))  # local +y along the path (a yaw about z)
     m = base.mover
     begin = Position(m.begin.cell, Frame(m.begin.frame.origin, _yaw(heading)))
     base = base.replace(mover=replace(m, begin=begin, motion_table=table,
                                       transient_state=m.transient_state | int(TransientState.Active)))
-    return _tick_scene(base, start, dts, inputs, "update_object", None,
-                       f"ticks:motion:{base.name}:{tlabel}:{'+'.join(tags)}:{clabel}")
+    return _tick_scene(base, start, dts, inputs, "update_object", None, f"ticks:motion:{base.name}:{label}")
+
+
+def _params(draw, sticky: bool = False, heading=None) -> MovementParams:
+    flags = (DEFAULT_MOVEMENT_FLAGS ^ int(draw(FLAG_CHANGES))) | (int(MPF.Sticky) if sticky else 0)
+    fail = draw(FAIL_DISTANCES)
+    return MovementParams(flags=flags, distance_to_object=float(to_f32(dr.take(draw, DISTANCES))),
+                          min_distance=float(to_f32(dr.take(draw, MIN_DISTANCES))),
+                          fail_distance=MovementParams().fail_distance if fail is None else fail,
+                          speed=float(to_f32(dr.take(draw, MOVE_SPEEDS))),
+                          walk_run_threshold=float(to_f32(dr.take(draw, WALK_RUN))),
+                          desired_heading=float(to_f32(dr.take(draw, HEADINGS))) if heading is None else heading,
+                          hold_key_to_apply=draw(HOLD_TO_APPLY))
+
+
+def _point(base: Scene, g0, g1, t: float):
+    """The point `t` along the path, as a Position in the cell that holds it (None: no defined cell)."""
+    from .terrain import split_global
+    from .ticks import _cell_at
+
+    g = tuple(a + (b - a) * t for a, b in zip(g0, g1))
+    cell = _cell_at(base, g)
+    if cell is None:
+        return None, g
+    _, _, lx, ly = split_global(g[0], g[1])
+    return Position(cell, Frame((to_f32(lx), to_f32(ly), to_f32(g[2])))), g
+
+
+def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, Scene, str]:
+    """The server's calls into the managers (the tick inputs move_to, move_to_object, turn_to_heading,
+    turn_to_object, stop, do_motion, stop_motion) for a scene of `n` ticks on `base`'s path: a first
+    input at tick 0 (a MoveTo toward the path's end, past its walls and steps, or part way; a MoveTo
+    whose DistanceToObject is exactly the distance to go, so it arrives at once; a MoveTo or a sticky
+    MoveTo to a static, the world's own outdoor one or a sphere the scene gains on the path; a turn in
+    place or to a static; a key's DoMotion), then a few stops, turns, MoveTos and keys at drawn ticks.
+    Returns (the first inputs, [(tick, inputs)], the scene, a label)."""
+    goal = draw(GOALS)
+    first: dict = {}
+    scene = base
+    t = draw(TARGET_TS)
+    pos, g = _point(base, g0, g1, t)
+    if pos is None or (goal in ("move_to_object", "sticky", "turn_to_object") and pos.cell & 0xFFFF >= ENV_CELL_FIRST):
+        goal = "turn_to_heading"  # no cell there, or a static there would be an EnvCell's (ACE files none)
+    if goal in ("move_to", "move_to_exact"):
+        params = _params(draw)
+        if goal == "move_to_exact":  # DistanceToObject the distance to go: arrives on its first check
+            d = math.dist(g0, g)
+            params = replace(params, distance_to_object=float(to_f32(d)), min_distance=0.0)
+        first["move_to"] = MoveToInput(params, pos)
+    elif goal in ("move_to_object", "sticky", "turn_to_object"):
+        targets = [o for o in base.objects if o.position.cell & 0xFFFF < ENV_CELL_FIRST]
+        if targets and draw(HALF):
+            target = targets[draw(st.integers(0, len(targets) - 1))].id
+        else:
+            target = TARGET_ID
+            ball = StaticObject(TARGET_ID, pos, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)))
+            scene = base.replace(objects=base.objects + (ball,))
+        move = ObjectMoveInput(target, _params(draw, sticky=goal == "sticky"))
+        first["turn_to_object" if goal == "turn_to_object" else "move_to_object"] = move
+    elif goal == "turn_to_heading":
+        first["turn_to_heading"] = MoveToInput(_params(draw))
+    else:
+        first["do_motion"] = CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))
+    tags = [goal]
+    later = []
+    for _ in range(min(dr.take(draw, LATER), n - 1)):
+        at = draw(st.integers(1, n - 1))
+        kind = draw(LATER_KINDS)
+        if kind == "stop":
+            stop = draw(st.sampled_from(STOPS))
+            later.append((at, {"stop": stop}))
+            tags.append(f"{stop}@{at}")
+            continue
+        if kind == "move_to" and pos is not None:
+            later.append((at, {"move_to": MoveToInput(_params(draw), pos)}))
+        elif kind in ("do_motion", "stop_motion"):
+            later.append((at, {kind: CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))}))
+        else:
+            kind = "turn_to_heading"
+            later.append((at, {kind: MoveToInput(_params(draw))}))
+        tags.append(f"{kind}@{at}")
+    return first, later, scene, "+".join(tags)

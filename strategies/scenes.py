@@ -158,6 +158,10 @@ OBJECT_ANGLES = st.sampled_from((0, 0, 90, 45, 10, -30))
 
 @st.composite
 def scenes_of(draw, kind: str):
+    if kind == "motion":  # the ticks policy motion only (strategies/motion.py)
+        from .ticks import draw_tick_scene
+
+        return draw_tick_scene(draw, None, "motion")
     if kind == "ticks" or kind.startswith("ticks:"):  # tick scenes, over any world or one
         from .ticks import draw_tick_scene
 
