@@ -76,7 +76,7 @@ TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
 # the server's calls into the managers (one scene in two): what drives the mover first
 MANAGED = st.sampled_from((False, True))
 GOALS = st.sampled_from(("move_to", "move_to", "move_to_exact", "move_to_object", "sticky", "sticky",
-                         "turn_to_heading", "turn_to_object", "keys"))
+                         "turn_to_heading", "turn_to_object", "turn_to_object", "keys"))
 HEADINGS = dr.OneOf(st.sampled_from((0.0, 90.0, 180.0, 270.0, 135.0, 359.0)), dr.f32(0.0, 360.0))
 DISTANCES = dr.OneOf(st.sampled_from((0.6, 0.0, 1.0, 0.5, 2.0)), dr.f32(0.0, 4.0))
 MIN_DISTANCES = dr.OneOf(st.sampled_from((0.0, 0.0, 0.0, 0.5)), dr.f32(0.0, 1.0))

@@ -41,11 +41,26 @@ def _inputs(scenes):
     return [s.motion for sc in scenes for s in sc.ticks.steps if s.motion is not None]
 
 
-def test_every_motion_scene_validates_has_a_table_and_starts_with_a_motion_input(motion_scenes):
+def test_every_motion_scene_validates_has_a_table_and_starts_with_a_motion_or_manager_input(motion_scenes):
+    first_inputs = ("motion", "do_motion", "move_to", "move_to_object", "turn_to_heading", "turn_to_object")
     for s in motion_scenes:
         assert validate_scene(s) == s
-        assert s.mover.motion_table is not None and s.ticks.steps[0].motion is not None
+        assert s.mover.motion_table is not None
+        assert any(getattr(s.ticks.steps[0], name) is not None for name in first_inputs)
         assert s.ticks.driver == "update_object" and s.name.startswith("ticks:motion:")
+
+
+def test_about_half_the_motion_scenes_drive_the_managers_with_every_input_and_stop(motion_scenes):
+    managed = [s for s in motion_scenes if ":managed:" in s.name]
+    assert 0.3 * N < len(managed) < 0.7 * N
+    steps = [st for s in managed for st in s.ticks.steps]
+    for name in ("move_to", "move_to_object", "turn_to_heading", "turn_to_object", "do_motion", "stop_motion"):
+        assert any(getattr(st, name) is not None for st in steps), name
+    assert {st.stop for st in steps} >= {"stop_completely", "cancel_moveto", "move_to_manager_cancel"}
+    sticky = [st.move_to_object for st in steps if st.move_to_object is not None and st.move_to_object.params.flags & 0x80]
+    assert sticky
+    exact = [s for s in managed if ":move_to_exact" in s.name]
+    assert exact
 
 
 def test_turn_and_sidestep_cycles_are_allowed_only_from_the_default_substate(motion_scenes):

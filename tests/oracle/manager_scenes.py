@@ -1,0 +1,65 @@
+"""The server's calls into the motion layer's managers (issue 40): one named scene per tick input --
+move_to, turn_to_heading, move_to_object (sticky), turn_to_object, the three stops, do_motion and
+stop_motion -- each a player with tests/oracle/motion_scenes.py's player-like table on flat land, and
+a 1 m sphere (a static the server files by id) to move or turn to.
+
+tests/oracle/test_manager_inputs.py asks live ACE (mono and .NET 10) for each and compares the port's
+answer bit for bit.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+from acconform.motion_enums import MotionCommand as MC, MovementParamFlags as MPF
+from acconform.motion_scene import DEFAULT_MOVEMENT_FLAGS, CommandInput, MovementParams, MoveToInput, ObjectMoveInput
+from acconform.scene import Frame, Position, SphereRec, SphereShape, StaticObject, TickStep
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from oracle.motion_scenes import FPS30, player_like_table  # noqa: E402
+from oracle.named_scenes import GROUND, cell_at, land, mover, scene  # noqa: E402
+
+BALL = 0x70000002
+
+
+def _scene(name: str, steps, objects=()):
+    m = replace(mover((60.0, 60.0, GROUND)), motion_table=player_like_table())
+    return scene(name, [land()], m, tuple(steps), objects)
+
+
+def _idle(n: int, dt: float = FPS30):
+    return tuple(TickStep(dt) for _ in range(n))
+
+
+def _ball():
+    return StaticObject(BALL, Position(cell_at(70.0, 66.0), Frame((70.0, 66.0, GROUND))),
+                        SphereShape(SphereRec((0.0, 0.0, 0.5), 1.0)))
+
+
+def _to(x: float, y: float, params=MovementParams()) -> MoveToInput:
+    return MoveToInput(params, Position(cell_at(x, y), Frame((x, y, GROUND))))
+
+
+def scenes() -> dict:
+    out = {
+        "move_to_a_point": _scene("move_to_a_point", (TickStep(FPS30, move_to=_to(66.0, 64.0)),) + _idle(60)),
+        "move_to_at_4fps_overshoots": _scene("move_to_at_4fps_overshoots",
+                                             (TickStep(0.25, move_to=_to(62.0, 63.0, MovementParams(distance_to_object=0.1))),)
+                                             + _idle(12, 0.25)),
+        "turn_to_heading_in_place": _scene("turn_to_heading_in_place", (TickStep(FPS30, turn_to_heading=MoveToInput(
+            MovementParams(desired_heading=135.0))),) + _idle(30)),
+        "sticky_move_to_a_static": _scene("sticky_move_to_a_static", (TickStep(FPS30, move_to_object=ObjectMoveInput(
+            BALL, MovementParams(flags=DEFAULT_MOVEMENT_FLAGS | MPF.Sticky))),) + _idle(80), [_ball()]),
+        "turn_to_a_static": _scene("turn_to_a_static", (TickStep(FPS30, turn_to_object=ObjectMoveInput(BALL)),) + _idle(30),
+                                   [_ball()]),
+        "keys_do_and_stop_motion": _scene("keys_do_and_stop_motion", (
+            TickStep(FPS30, do_motion=CommandInput(int(MC.Ready), 1)),
+            TickStep(FPS30, do_motion=CommandInput(int(MC.WalkForward), 1))) + _idle(10)
+            + (TickStep(FPS30, stop_motion=CommandInput(int(MC.WalkForward), 1)),) + _idle(10)),
+    }
+    for stop in ("stop_completely", "cancel_moveto", "move_to_manager_cancel"):
+        out[f"move_to_then_{stop}"] = _scene(f"move_to_then_{stop}", (TickStep(FPS30, move_to=_to(66.0, 64.0)),)
+                                             + _idle(8) + (TickStep(FPS30, stop=stop),) + _idle(8))
+    return out

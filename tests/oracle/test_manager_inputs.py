@@ -1,0 +1,123 @@
+"""The tick inputs that drive ACE's managers as the server does (issue 40): move_to, move_to_object,
+turn_to_heading, turn_to_object, stop, do_motion, stop_motion (acconform/motion_scene.py). Their scene
+fields and pack bytes (fast lane), and each named scene of tests/oracle/manager_scenes.py answered by
+live ACE and by the port bit for bit (live lane, mono and .NET 10)."""
+
+from __future__ import annotations
+
+import json
+import struct
+import sys
+from pathlib import Path
+
+import pytest
+
+from acconform.compare import compare
+from acconform.errors import InvalidScene
+from acconform.motion_scene import DEFAULT_MOVEMENT_FLAGS, MovementParams
+from acconform.oracle.pack import pack_scene
+from acconform.protocol import scene_features
+from acconform.scene import FORMAT_V5, TICK_INPUTS, Scene
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from oracle.manager_scenes import BALL, scenes  # noqa: E402
+
+SCENES = scenes()
+
+
+def _doc(name: str) -> dict:
+    return json.loads(SCENES[name].dumps())
+
+
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_each_manager_scene_reads_back_as_the_same_scene_and_needs_the_motion_feature(name):
+    scene = SCENES[name]
+    assert Scene.loads(scene.dumps()) == scene
+    assert "mover.motion" in scene_features(scene) and scene.format == "acconform.scene/6"
+
+
+def test_movement_parameters_left_at_the_constructors_values_are_left_out_of_the_json():
+    assert MovementParams().to_json() == {}
+    assert _doc("move_to_a_point")["ticks"]["steps"][0]["move_to"].keys() == {"position"}
+    params = _doc("sticky_move_to_a_static")["ticks"]["steps"][0]["move_to_object"]["params"]
+    assert "Sticky" in params["flags"] and _doc("sticky_move_to_a_static")["ticks"]["steps"][0]["move_to_object"]["object"] == "0x70000002"
+
+
+@pytest.mark.parametrize("edit, where, problem", [
+    (lambda s: s.__setitem__("stop", "halt"), r"steps\[0\]\.stop", "unknown stop 'halt'"),
+    (lambda s: s["move_to_object"].__setitem__("object", "0x70000003"), r"steps\[0\]\.move_to_object\.object",
+     "no outdoor static object has id 0x70000003"),
+    (lambda s: s["move_to_object"]["params"].__setitem__("flags", ["Sticky", "Glue"]), r"params\.flags\[1\]",
+     "unknown MovementParamFlags flag 'Glue'"),
+    (lambda s: s["move_to_object"]["params"].__setitem__("speed", "fast"), r"params\.speed", ""),
+    (lambda s: s["move_to_object"]["params"].__setitem__("hold_key_to_apply", "Walk"), r"hold_key_to_apply", "unknown hold key"),
+])
+def test_a_bad_manager_input_is_refused_naming_the_field(edit, where, problem):
+    doc = _doc("sticky_move_to_a_static")
+    step = doc["ticks"]["steps"][0]
+    edit(step)
+    with pytest.raises(InvalidScene, match=where + ".*" + problem):
+        Scene.from_json(doc)
+
+
+def test_a_manager_input_needs_the_movers_motion_table_and_format_6():
+    doc = _doc("turn_to_heading_in_place")
+    del doc["mover"]["motion_table"]
+    with pytest.raises(InvalidScene, match=r"steps\[0\]\.turn_to_heading.*needs the mover's motion_table"):
+        Scene.from_json(doc)
+    doc = _doc("move_to_then_cancel_moveto")
+    doc["format"] = FORMAT_V5
+    del doc["mover"]["motion_table"]
+    with pytest.raises(InvalidScene, match=r"steps\[0\]\.move_to.*needs format 'acconform.scene/6'"):
+        Scene.from_json(doc)
+
+
+def _step_bytes(scene, i: int) -> bytes:
+    """Step i's packed head (time, mask) and inputs, found after the step head in the packed scene."""
+    data = pack_scene(scene)
+    head = struct.pack("<d", scene.ticks.times()[i])
+    at = data.index(head, 5 + 14)
+    return data[at:]
+
+
+def test_each_manager_input_packs_its_bit_and_its_fields_in_order():
+    bit = {name: 1 << i for i, name in enumerate(TICK_INPUTS)}
+    assert [bit[n] for n in ("stop", "do_motion", "stop_motion", "move_to", "move_to_object", "turn_to_heading",
+                             "turn_to_object")] == [1024, 2048, 4096, 8192, 16384, 32768, 65536]
+    default = struct.pack("<I6fI", DEFAULT_MOVEMENT_FLAGS, 0.6, 0.0, 3.4028234663852886e38, 1.0, 1.0, 0.0, 0)
+    move = SCENES["move_to_a_point"]
+    pos = move.ticks.steps[0].move_to.position
+    assert _step_bytes(move, 0)[8:12 + 32 + 32] == struct.pack("<I", 8192) + struct.pack(
+        "<I3f4f", pos.cell, *pos.frame.origin, *pos.frame.orientation) + default
+    sticky = SCENES["sticky_move_to_a_static"]
+    assert _step_bytes(sticky, 0)[8:12 + 4 + 32] == struct.pack("<II", 16384, BALL) + struct.pack(
+        "<I6fI", DEFAULT_MOVEMENT_FLAGS | 0x80, 0.6, 0.0, 3.4028234663852886e38, 1.0, 1.0, 0.0, 0)
+    turn = SCENES["turn_to_heading_in_place"]
+    assert _step_bytes(turn, 0)[8:12 + 32] == struct.pack("<I", 32768) + struct.pack(
+        "<I6fI", DEFAULT_MOVEMENT_FLAGS, 0.6, 0.0, 3.4028234663852886e38, 1.0, 1.0, 135.0, 0)
+    keys = SCENES["keys_do_and_stop_motion"]
+    assert _step_bytes(keys, 1)[8:20] == struct.pack("<III", 2048, 0x45000005, 1)
+    assert _step_bytes(keys, 12)[8:20] == struct.pack("<III", 4096, 0x45000005, 1)
+    for i, stop in enumerate(("stop_completely", "cancel_moveto", "move_to_manager_cancel")):
+        assert _step_bytes(SCENES[f"move_to_then_{stop}"], 9)[8:16] == struct.pack("<II", 1024, i)
+
+
+def test_the_port_runs_every_manager_scene_to_its_last_tick_without_an_error():
+    from acconform.port.run import run_scene
+
+    for name, scene in SCENES.items():
+        ticks = run_scene(scene).ticks
+        assert len(ticks) == len(scene.ticks.steps) and not any(t.error for t in ticks), name
+    moved = run_scene(SCENES["move_to_a_point"]).ticks
+    assert moved[-1].origin != moved[0].origin
+
+
+@pytest.mark.live_oracle
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_live_ace_and_the_port_answer_each_manager_scene_bit_for_bit(live, name):
+    from acconform.port.run import run_scene
+
+    scene = SCENES[name]
+    ace = live.run(scene)
+    assert ace.error is None and len(ace.ticks) == len(scene.ticks.steps) and not any(t.error for t in ace.ticks)
+    assert compare(run_scene(scene, runtime=live.location.runtime), ace, "exact") == [], name
