@@ -185,8 +185,22 @@ def _motion_scene(scene, m):
                             (MotionEntry(nc, int(MC.TurnRight), data),))
     run, key = int(HoldKey.Run), int(HoldKey.None_)
     motion = MotionInput(run, nc, int(MC.WalkForward), key, 1.0, int(MC.SideStepRight), key, 1.0, int(MC.TurnRight), key, 1.0)
-    return replace(scene, mover=replace(m, motion_table=table), name="motion",
-                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, motion=motion),)))
+    # the server's calls into the managers: every input once, the MovementParameters with every field, the target a
+    # static the scene gains (an outdoor sphere at the mover's start)
+    from .motion_enums import MovementParamFlags as MPF
+    from .motion_scene import CommandInput, MovementParams, MoveToInput, ObjectMoveInput
+    from .scene import SphereRec, SphereShape, StaticObject
+
+    params = MovementParams(int(MPF.Sticky | MPF.CanWalk), 0.5, 0.1, 15.0, 1.5, 15.0, 90.0, run)
+    ball = StaticObject(0x7F000001, m.begin, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)))
+    managers = TickStep(1 / 30, stop="cancel_moveto", do_motion=CommandInput(int(MC.WalkForward), key),
+                        stop_motion=CommandInput(int(MC.WalkForward), key), move_to=MoveToInput(params, m.begin),
+                        move_to_object=ObjectMoveInput(ball.id, params), turn_to_heading=MoveToInput(params),
+                        turn_to_object=ObjectMoveInput(ball.id, params))
+    objects = scene.objects + (ball,) if m.begin.cell & 0xFFFF < 0x100 else scene.objects
+    steps = (TickStep(1 / 30, motion=motion),) + ((managers,) if objects is not scene.objects else ())
+    return replace(scene, mover=replace(m, motion_table=table), name="motion", objects=objects,
+                   ticks=Ticks("update_object", 1000.0, steps))
 
 
 def _tick_outcomes() -> list:
