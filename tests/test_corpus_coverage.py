@@ -26,6 +26,7 @@ def test_every_listed_unreachable_branch_resolves_in_todays_source_with_its_reas
         assert e.get("reason") and e.get("ace"), f"{e['module']} {e['function']}: give the reason and ACE's lines"
         assert ("to" in e) != ("through" in e), f"{e['module']} {e['function']}: an entry has `to` or `through`"
         assert e.get("runtime", "mono") in ("coreclr", "mono"), f"{e['module']} {e['function']}: runtime coreclr or mono"
+        assert e["kind"] in corpus_coverage.KINDS, f"{e['module']} {e['function']}: kind ace, harness or scene"
         arcs, lines = corpus_coverage.resolve(e)  # raises naming the snippet it cannot find
         assert arcs or lines
         key = (frozenset(arcs), frozenset(lines))
@@ -65,7 +66,7 @@ def test_each_runtime_has_a_coverage_kernel_with_a_floor(runtime):
 
 
 def test_an_entry_naming_a_runtime_holds_on_that_runtime_only(tmp_path):
-    both = {"module": "m.py", "function": "f", "from": "if x:", "to": "return 1"}
+    both = {"module": "m.py", "function": "f", "kind": "ace", "from": "if x:", "to": "return 1"}
     net10 = {**both, "from": "if y:", "runtime": "coreclr"}
     (tmp_path / "u.json").write_text(json.dumps({"branches": [both, net10]}))
     assert corpus_coverage.load_unreachable(tmp_path / "u.json", runtime="coreclr") == [both, net10]
@@ -97,3 +98,53 @@ def test_write_kernel_refuses_a_with_shard_the_corpus_lacks_and_writes_nothing(t
     assert corpus_coverage.main(["--write-kernel", "-n", "1", "--corpus", str(tmp_path),
                                  "--with", "terrain-0042"]) == 2
     assert "--with terrain-0042: no such shard" in capsys.readouterr().err and not kernel.exists()
+
+
+@pytest.mark.parametrize("kind", [None, "", "ACE", "unreachable"])
+def test_the_list_refuses_an_entry_without_a_valid_kind_naming_it(tmp_path, kind):
+    """Each entry says what rules its branch out (ace, harness or scene): one that does not is refused
+    by name, not counted under some kind."""
+    good = {"module": "m.py", "function": "f", "kind": "scene", "from": "if x:", "to": "return 1"}
+    bad = {"module": "m.py", "function": "g", "from": "if y:", "to": "return 2"}
+    if kind is not None:
+        bad["kind"] = kind
+    (tmp_path / "u.json").write_text(json.dumps({"branches": [good, bad]}))
+    with pytest.raises(corpus_coverage.BadEntry, match=r"m\.py g from 'if y:' has (no kind|kind '.*'): give it one of ace, harness, scene"):
+        corpus_coverage.load_unreachable(tmp_path / "u.json")
+
+
+def test_kernel_refuses_a_list_entry_without_a_kind_before_replaying(tmp_path, monkeypatch, capsys):
+    (tmp_path / "coverage-kernel.json").write_text(json.dumps({"keys": []}))
+    (tmp_path / "u.json").write_text(json.dumps({"branches": [{"module": "m.py", "function": "g", "from": "if y:", "to": "exit"}]}))
+    monkeypatch.setattr(corpus_coverage, "UNREACHABLE", tmp_path / "u.json")
+    monkeypatch.setattr(corpus_coverage.load_unreachable, "__defaults__", (tmp_path / "u.json", None))
+    monkeypatch.setattr(corpus_coverage, "measure", lambda *a, **k: pytest.fail("replayed before refusing the list"))
+    assert corpus_coverage.main(["--kernel", "--corpus", str(tmp_path)]) == 2
+    assert "m.py g from 'if y:' has no kind" in capsys.readouterr().err
+
+
+def test_the_listed_branches_are_counted_by_kind(tmp_path, monkeypatch):
+    """--kernel's line `listed by kind: ace A, harness H, scene S` counts the branches never taken that
+    the entries of each kind explain: a {from, to} entry its one branch, a {from, through} entry every
+    branch out of its lines; a branch the replay took is a problem, not counted."""
+    (tmp_path / "m.py").write_text("def f(x, y):\n    if x:\n        return 1\n    if y:\n        if x:\n"
+                                   "            return 2\n        return 3\n    return 4\n")
+    monkeypatch.setattr(corpus_coverage, "_port_dir", lambda: tmp_path)
+    entries = [{"module": "m.py", "function": "f", "kind": "ace", "from": "if x:", "after": "def f", "to": "return 1"},
+               {"module": "m.py", "function": "f", "kind": "scene", "from": "if x:", "after": "if y:", "through": "return 2"},
+               {"module": "m.py", "function": "f", "kind": "harness", "from": "if y:", "to": "return 4"}]
+
+    class Data:
+        def lines(self, path):
+            return [2, 4, 8]
+
+    class Cov:
+        def get_data(self):
+            return Data()
+
+    missed = ["m.py:2->3", "m.py:4->5", "m.py:5->6", "m.py:5->7"]
+    problems, unexplained, counts = corpus_coverage.check_unreachable_by_kind(Cov(), missed, entries)
+    assert problems == ["m.py f from 'if y:': m.py:4->8 is taken now (or is no branch): take it out of unreachable-branches.json"]
+    assert unexplained == ["m.py:4->5"]
+    assert counts == {"ace": 1, "harness": 0, "scene": 2}
+    assert corpus_coverage.kinds_line(counts) == "listed by kind: ace 1, harness 0, scene 2"
