@@ -330,9 +330,9 @@ MUTATIONS: tuple[Mutation, ...] = (
              "UpdateObjectInternal's CachedVelocity is the offset, not the offset over the quantum", TICKS),
     # ---- the motion layer (issue 40): caught by replaying the motion tick records (tick_kill)
     Mutation("motion_run_rate_rounded", "animation/motion_interp.py",
-             "            if ok:\n                speed_mod = run_factor\n",
-             "            if ok:\n                speed_mod = s(round(float(run_factor), 2))\n",
-             "apply_run_to_command's run rate rounded to two decimals (as a display would)", TICKS),
+             "                motion = MotionCommand.RunForward\n\n            speed *= speed_mod\n",
+             "                motion = MotionCommand.RunForward\n\n            speed = s(round(float(speed * speed_mod), 2))\n",
+             "apply_run_to_command's forward speed times the run rate rounded to two decimals", TICKS),
     Mutation("motion_link_from_wrong_state", "animation/motion_table.py",
              "            link = self.links.get(_shl16(style) | (substate & 0xFFFFFF))\n"
              "            if link is not None:\n                result = link.get(motion)\n",
@@ -341,8 +341,8 @@ MUTATIONS: tuple[Mutation, ...] = (
              "get_link at a positive speed looks the link up from the target motion to the substate "
              "(the negative-speed arm's order)", TICKS),
     Mutation("motion_jump_update_time_as_ordinary", "run.py",
-             "    if not moving:\n        mover.update_time = mover.timer.current_time\n",
-             "    mover.update_time = mover.timer.current_time\n",
+             "        if not moving:\n            mover.update_time = mover.timer.current_time\n",
+             "        mover.update_time = mover.timer.current_time\n",
              "the PK (FastTick) jump sets UpdateTime always, as the ordinary player's jump does", TICKS),
     Mutation("motion_frame_boundary_off_by_one", "animation/sequence.py",
              "            if curr_anim.get_high_frame() < cs_floor(frame_num):",
