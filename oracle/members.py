@@ -68,7 +68,8 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.PhysicsObj", (".ctor", "makeAnimObject", "set_object_guid", "set_weenie_obj", "SetMotionTableID",
                                        "enter_world", "SetPosition", "set_request_pos", "update_object_server")),
     ("ACE.Server.Physics.Common.WeenieObject", (".ctor",)),
-    ("ACE.Server.WorldObjects.Player", ("LastContact", "PlayerKillerStatus", "FastTick")),
+    # (and FastTick, read by reflection in Facade.PlayerFastTick: ACE of 2019 has none, and runs no tick scene)
+    ("ACE.Server.WorldObjects.Player", ("LastContact", "PlayerKillerStatus")),
     ("ACE.Entity.ObjectGuid", (".ctor",)),
     ("ACE.Server.Physics.Common.Position", ("GetCell",)),
     ("ACE.Server.Physics.Common.SetPosition", (".ctor",)),

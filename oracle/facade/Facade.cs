@@ -442,7 +442,7 @@ namespace Acconform.Oracle
         /// which counts as not moving, and PendingMotions has no interpreter to clear (docs/oracle.md's audit table).</summary>
         static void Jump(PhysicsObj obj, Vector3 velocity)
         {
-            if (moverPlayer.FastTick)
+            if (PlayerFastTick())
             {
                 bool moving;
                 try { moving = obj.IsMovingOrAnimating; }
@@ -460,6 +460,16 @@ namespace Acconform.Oracle
             if (obj.MovementManager != null)
                 obj.MovementManager.MotionInterpreter.PendingMotions.Clear();
             obj.IsAnimating = false;
+        }
+
+        /// <summary>The Player's FastTick, read by reflection: ACE has it since 2020, and a build of before (ACE of 2019,
+        /// whose tick scenes the oracle never runs: its physics clock is wall time) must still compile the facade.</summary>
+        static bool PlayerFastTick()
+        {
+            var p = typeof(ACE.Server.WorldObjects.Player).GetProperty("FastTick");
+            if (p == null)
+                throw new MissingMemberException("ACE.Server.WorldObjects.Player", "FastTick");
+            return (bool)p.GetValue(moverPlayer);
         }
 
         /// <summary>The physics calls of Player.UpdatePlayerPosition for a requested position that moves (the legacy,
