@@ -1,6 +1,6 @@
 """ACE's flag enums that scenes and outcomes name (ACE.Entity PhysicsState, PhysicsEngine.cs
 TransientStateFlags, ObjectInfo.cs ObjectInfoState, CullMode, SetPosition.cs SetPositionFlags and
-SetPositionError); values are ACE's.
+SetPositionError, ACE.Entity.Enum PlayerKillerStatus); values are ACE's.
 
 The three flag sets are read in the port's hottest loops (``state & PhysicsState.Missile``), so
 they are plain classes whose attributes are plain ints: a test is one int ``&``, where an
@@ -121,6 +121,22 @@ class SetPositionError(IntEnum):
     NoCell = 0x3
     Collided = 0x4
     InvalidArguments = 0x100
+
+
+class PlayerKillerStatus(IntEnum):
+    """ACE.Entity.Enum.PlayerKillerStatus (a [Flags] enum in ACE; a player holds one of them)."""
+
+    Undef = 0x00
+    Protected = 0x01
+    NPK = 0x02
+    PK = 0x04
+    Unprotected = 0x08
+    RubberGlue = 0x10
+    Free = 0x20
+    PKLite = 0x40
+
+
+PLAYER_KILLER_STATUS_NPK = int(PlayerKillerStatus.NPK)
 
 
 class ObjectInfoState(metaclass=FlagSet):

@@ -47,7 +47,7 @@ from . import __version__, deep
 from .codec import Reader, compact, dumps_compact, loads_answer, write_f32, write_id
 from .dat import DatMover, DatRecord, DatStatic, DatWorld, dat_world
 from .errors import AcconformError, InvalidScene
-from .flags import PhysicsState, TransientState, flag_names
+from .flags import PLAYER_KILLER_STATUS_NPK, PhysicsState, TransientState, flag_names
 from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
@@ -102,6 +102,10 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                      "motion, a MoveToState's RawMotionState, and the server's calls into the managers: the tick inputs "
                      "stop, do_motion, stop_motion, move_to, move_to_object, turn_to_heading and turn_to_object "
                      "(scene/6: mover.motion_table, ticks.steps[].motion and the others)"),
+    "mover.player_killer_status": (lambda s: s.mover.player_killer_status != PLAYER_KILLER_STATUS_NPK,
+                                   "the mover's Player has a PlayerKillerStatus other than NPK (scene/6: "
+                                   "mover.player_killer_status): its WeenieObject's IsPK/IsPKLite answers, and a PK or "
+                                   "PKLite player's jump takes HandleActionJump's FastTick branch"),
 }
 
 

@@ -22,7 +22,8 @@ from .codec import (Reader, as_text, dumps, dumps_compact, f32_text, ints_text, 
                     write_f64, write_id, write_vec)
 from .errors import InvalidScene
 from .motion_scene import CommandInput, MotionInput, MotionTableSpec, MoveToInput, ObjectMoveInput, read_stop
-from .flags import CullMode, PhysicsState, SetPositionFlags, TransientState, flag_names
+from .flags import (PLAYER_KILLER_STATUS_NPK, CullMode, PhysicsState, PlayerKillerStatus, SetPositionFlags, TransientState,
+                    flag_names)
 
 FORMAT = "acconform.scene/6"
 FORMAT_V5 = "acconform.scene/5"  # what a scene with buildings and no placement through enter_world is written as
@@ -690,7 +691,8 @@ class TickStep:
     tick, in `TICK_INPUTS` order, with the clock still at the previous tick's time: ``state`` and
     ``transient_state`` set PhysicsObj.State / TransientState; ``velocity``, ``local_velocity`` and
     ``omega`` call set_velocity / set_local_velocity / set_omega (sendEvent false); ``jump`` runs the
-    physics calls of ACE's Player.HandleActionJump (FastTick branch) with that local jump velocity;
+    physics calls of ACE's Player.HandleActionJump (the branch the mover's player_killer_status picks:
+    FastTick for PK and PKLite) with that local jump velocity;
     ``sequence_velocity`` / ``sequence_omega`` set the PartArray's Sequence velocity / omega (root
     motion); ``request_pos`` is the RequestPos of the request_pos driver (required there, refused
     for update_object)."""
@@ -890,6 +892,9 @@ class Mover:
     sliding_normal: Vec3 | None = None
     placement: Placement | None = None  # None: Position = begin, CurCell = its cell (no placement)
     motion_table: MotionTableSpec | None = None  # scene/6: the Setup's DefaultMotionTable and the player's MotionTableId
+    # scene/6: the mover's Player's PlayerKillerStatus (ACE.Entity.Enum), set before its WeenieObject is made
+    # (which copies it); a player without the property is NPK. PK and PKLite are IsPKType: FastTick's jump.
+    player_killer_status: int = PLAYER_KILLER_STATUS_NPK
 
     def to_json(self):
         d = {"spheres": [s.to_json() for s in self.spheres], "scale": write_f32(self.scale),
@@ -897,6 +902,8 @@ class Mover:
         mover_start_json(self, d)
         if self.motion_table is not None:
             d["motion_table"] = self.motion_table.to_json()
+        if self.player_killer_status != PLAYER_KILLER_STATUS_NPK:
+            d["player_killer_status"] = PlayerKillerStatus(self.player_killer_status).name
         return d
 
     @staticmethod
@@ -907,11 +914,12 @@ class Mover:
             r["placement"].fail(f"a placement needs format {FORMAT_V3!r} or later (older formats have no placement)")
         if ticks and isinstance(r.value, dict) and "end" in r.value:
             r["end"].fail("a tick scene's mover has no end: its ticks move it (omit end)")
-        if not vias and isinstance(r.value, dict) and "motion_table" in r.value:
-            r["motion_table"].fail(f"a motion table needs format {FORMAT!r} (older formats have none)")
+        for field in ("motion_table", "player_killer_status"):
+            if not vias and isinstance(r.value, dict) and field in r.value:
+                r[field].fail(f"{field} needs format {FORMAT!r} (older formats have none)")
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
-               *(("motion_table",) if vias else ())})
+               *(("motion_table", "player_killer_status") if vias else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
         scale = r["scale"].f32() if r.given("scale") else 1.0
         if not scale > 0:
@@ -935,7 +943,16 @@ class Mover:
             sliding_normal=r["sliding_normal"].vec3() if r.has("sliding_normal") else None,
             placement=Placement.from_json(r["placement"], vias) if r.has("placement") else None,
             motion_table=MotionTableSpec.from_json(r["motion_table"]) if vias and r.has("motion_table") else None,
+            player_killer_status=_player_killer_status(r["player_killer_status"]) if vias and r.given("player_killer_status")
+            else PLAYER_KILLER_STATUS_NPK,
         )
+
+
+def _player_killer_status(r: Reader) -> int:
+    name = r.str_()
+    if name not in PlayerKillerStatus.__members__:
+        r.fail(f"not one of ACE's PlayerKillerStatus values: {name!r} (one of {', '.join(PlayerKillerStatus.__members__)})")
+    return int(PlayerKillerStatus[name])
 
 
 ENGINE_MODES = ("server", "client")
@@ -972,7 +989,7 @@ class Scene:
         buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.mover.placement is not None and self.mover.placement.via == "enter_world":
             return FORMAT
-        if self.has_motion:
+        if self.has_motion or self.mover.player_killer_status != PLAYER_KILLER_STATUS_NPK:
             return FORMAT
         if self.buildings:
             return FORMAT_V5

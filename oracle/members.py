@@ -68,7 +68,8 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.PhysicsObj", (".ctor", "makeAnimObject", "set_object_guid", "set_weenie_obj", "SetMotionTableID",
                                        "enter_world", "SetPosition", "set_request_pos", "update_object_server")),
     ("ACE.Server.Physics.Common.WeenieObject", (".ctor",)),
-    ("ACE.Server.WorldObjects.Player", ("LastContact",)),
+    # (and FastTick, read by reflection in Facade.PlayerFastTick: ACE of 2019 has none, and runs no tick scene)
+    ("ACE.Server.WorldObjects.Player", ("LastContact", "PlayerKillerStatus")),
     ("ACE.Entity.ObjectGuid", (".ctor",)),
     ("ACE.Server.Physics.Common.Position", ("GetCell",)),
     ("ACE.Server.Physics.Common.SetPosition", (".ctor",)),
@@ -86,7 +87,9 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     # the motion layer (scene/6, mover.motion): the mover's MotionTable and Animation records, and a MoveToState
     ("ACE.DatLoader.FileTypes.MotionTable", (".ctor", "Unpack")),
     ("ACE.DatLoader.FileTypes.Animation", (".ctor", "Unpack")),
-    ("ACE.Server.Physics.PhysicsObj", ("get_minterp",)),
+    ("ACE.Server.Physics.PhysicsObj", ("get_minterp", "MovementManager")),
+    ("ACE.Server.Physics.Animation.MovementManager", ("MotionInterpreter",)),
+    ("ACE.Server.Physics.Animation.MotionInterp", ("PendingMotions",)),
     ("ACE.Server.Physics.Animation.MotionInterp", ("RawState", "InterpretedState", "motion_allows_jump",
                                                    "apply_raw_movement")),
     ("ACE.Server.Physics.Animation.RawMotionState", ("SetState",)),

@@ -121,7 +121,7 @@ def _ticks(ticks: Ticks | None) -> bytes:
         out.append(_STEP_HEAD.pack(time, mask))
         out += values
     return b"".join(out)
-_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBI")
+_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -148,7 +148,7 @@ def pack_scene(scene: Scene) -> bytes:
     plv = (0, 0, 0) if pl is None else (2 if pl.via == "enter_world" else 1, pl.flags, 1 if pl.get_cell else 0)
     out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end if m.end is not None else _NO_END),
-                           *plv, MOTION_TABLE_ID if m.motion_table is not None else 0))
+                           *plv, MOTION_TABLE_ID if m.motion_table is not None else 0, m.player_killer_status))
     return b"".join(out)
 
 

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from acconform.flags import SetPositionError, TransientState
+from acconform.flags import PLAYER_KILLER_STATUS_NPK, SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
 from acconform import dat, deep
@@ -76,7 +76,7 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
     obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(obj_id)
-    obj.set_weenie_obj(WeenieObject.of_player(Player()))
+    obj.set_weenie_obj(WeenieObject.of_player(Player(player_killer_status=getattr(m, "player_killer_status", PLAYER_KILLER_STATUS_NPK))))
     obj.set_motion_table_id(MOTION_TABLE_ID if getattr(m, "motion_table", None) is not None else 0)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
@@ -383,20 +383,27 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
 # ---------------------------------------------------------------- tick scenes
 
 
-@harness("the physics calls of Player.HandleActionJump's FastTick branch, as the oracle's facade makes them")
-def jump(mover: PhysicsObj, velocity) -> None:
-    """With a local jump velocity. The mover has no MovementManager (no manager, on both sides):
-    IsMovingOrAnimating is ACE's own property, and where it reaches its MovementManager terms
-    (every earlier term false) and throws NullReferenceException, the jump counts the mover as not
-    moving; MotionInterpreter.PendingMotions.Clear() has no interpreter to clear (docs/oracle.md's
-    audit table)."""
-    try:
-        moving = mover.is_moving_or_animating()
-    except AttributeError as e:
-        if e.obj is not None:
-            raise
-        moving = False
-    if not moving:
+@harness("the physics calls of Player.HandleActionJump, both branches, as the oracle's facade makes them")
+def handle_action_jump(mover: PhysicsObj, velocity) -> None:
+    """With a local jump velocity (the JumpPack's). The branch is the Player's FastTick (IsPKType: a
+    PK or PKLite player's): it sets UpdateTime only when the mover is not moving or animating; the
+    other branch (an ordinary player's) always. Then the same calls in both: ``TransientState &=
+    ~(Contact | WaterContact)``, calc_acceleration, set_on_walkable(false), set_local_velocity,
+    RemoveLinkAnimations, MotionInterpreter.PendingMotions.Clear(), IsAnimating = false. A mover
+    without a motion table has no MovementManager: where ACE's IsMovingOrAnimating reaches it (every
+    earlier term false) and throws NullReferenceException the jump counts the mover as not moving,
+    and PendingMotions.Clear() has no interpreter to clear (docs/oracle.md's audit table). FastTick's
+    magic-cast stop is left out: no scene casts. The stamina, burden and broadcasts are not physics."""
+    if mover.weenie_obj.world_object.fast_tick:
+        try:
+            moving = mover.is_moving_or_animating()
+        except AttributeError as e:
+            if e.obj is not None:
+                raise
+            moving = False
+        if not moving:
+            mover.update_time = mover.timer.current_time
+    else:
         mover.update_time = mover.timer.current_time
 
     # perform jump in physics engine (ACE)
@@ -405,27 +412,8 @@ def jump(mover: PhysicsObj, velocity) -> None:
     mover.set_on_walkable(False)
     mover.set_local_velocity(velocity, False)
     mover.remove_link_animations()  # matches MotionInterp.LeaveGround more closely (ACE)
-    mover.is_animating = False
-
-
-@harness("the physics calls of Player.HandleActionJump's other branch (not FastTick: an ordinary, non-PK player)")
-def jump_ordinary(mover: PhysicsObj, velocity) -> None:
-    """With a local jump velocity: ACE's `else` branch of `if (FastTick)` (FastTick is IsPKType, so
-    this is an ordinary player's jump). It differs from `jump` in one call: UpdateTime is set to
-    the clock's CurrentTime always, whether or not the mover is moving or animating (so
-    IsMovingOrAnimating is never asked, and its MovementManager terms never reached). The rest is
-    the same calls in the same order; MotionInterpreter.PendingMotions.Clear() has no interpreter to
-    clear, as in `jump`. (FastTick's branch also stops a magic cast; no scene casts.)"""
-    mover.update_time = mover.timer.current_time
-
-    # set jump velocity (ACE: two commented-out lines, set_velocity of the global velocity)
-
-    # perform jump in physics engine (ACE)
-    mover.transient_state &= ~(TransientState.Contact | TransientState.WaterContact)
-    mover.calc_acceleration()
-    mover.set_on_walkable(False)
-    mover.set_local_velocity(velocity, False)
-    mover.remove_link_animations()  # matches MotionInterp.LeaveGround more closely (ACE)
+    if mover.movement_manager is not None:
+        mover.movement_manager.motion_interpreter.pending_motions.clear()  # hack (ACE)
     mover.is_animating = False
 
 
@@ -442,7 +430,7 @@ def apply_inputs(mover: PhysicsObj, step, mode) -> None:
     if step.omega is not None:
         mover.set_omega(mode.vec(*step.omega), False)
     if step.jump is not None:
-        jump(mover, mode.vec(*step.jump))
+        handle_action_jump(mover, mode.vec(*step.jump))
     if step.sequence_velocity is not None:
         mover.part_array.sequence.set_velocity(mode.vec(*step.sequence_velocity))
     if step.sequence_omega is not None:

@@ -10,22 +10,9 @@ come from the Player's PlayerKillerStatus. What the Player's own code does when 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from enum import IntFlag
+from acconform.flags import PlayerKillerStatus
 
 from .anchors import anchor
-
-
-class PlayerKillerStatus(IntFlag):
-    """ACE.Entity.Enum.PlayerKillerStatus."""
-
-    Undef = 0x00
-    Protected = 0x01
-    NPK = 0x02
-    PK = 0x04
-    Unprotected = 0x08
-    RubberGlue = 0x10
-    Free = 0x20
-    PKLite = 0x40
 
 
 @dataclass(slots=True)
@@ -40,6 +27,16 @@ class Player:
     teleporting: bool = False
     scatter_pos: object = None
     run_skill: int = 0  # GetCreatureSkill(Skill.Run).Current: the database-free Player's (no attributes, no skill)
+
+    @property
+    def is_pk_type(self) -> bool:
+        """Player_Combat.cs: IsPKType."""
+        return self.player_killer_status in (PlayerKillerStatus.PK, PlayerKillerStatus.PKLite)
+
+    @property
+    def fast_tick(self) -> bool:
+        """Player_Tick.cs: FastTick (which of HandleActionJump's branches runs)."""
+        return self.is_pk_type
 
     @property
     def is_pk(self) -> bool:

@@ -529,23 +529,42 @@ namespace Acconform.Oracle
             minterp.apply_raw_movement(true, allowJump);
         }
 
-        /// <summary>The physics calls of Player.HandleActionJump's FastTick branch with a local jump velocity. The
-        /// mover has no MovementManager (as every manager, null on both sides): IsMovingOrAnimating is ACE's own
-        /// property, and when it reaches its MovementManager terms (every term before them false) it counts as not
-        /// moving; MotionInterpreter.PendingMotions.Clear() has no interpreter to clear.</summary>
+        /// <summary>The physics calls of Player.HandleActionJump with a local jump velocity (the JumpPack's), in both of
+        /// its branches: the Player's FastTick (a PK or PKLite player) sets UpdateTime only when the mover is not moving or
+        /// animating, the other branch always; then TransientState, calc_acceleration, set_on_walkable, set_local_velocity,
+        /// RemoveLinkAnimations, MotionInterpreter.PendingMotions.Clear(), IsAnimating. A mover without a motion table has
+        /// no MovementManager: IsMovingOrAnimating reaching it (every earlier term false) throws NullReferenceException,
+        /// which counts as not moving, and PendingMotions has no interpreter to clear (docs/oracle.md's audit table).</summary>
         static void Jump(PhysicsObj obj, Vector3 velocity)
         {
-            bool moving;
-            try { moving = obj.IsMovingOrAnimating; }
-            catch (NullReferenceException) { moving = false; }
-            if (!moving)
+            if (PlayerFastTick())
+            {
+                bool moving;
+                try { moving = obj.IsMovingOrAnimating; }
+                catch (NullReferenceException) { moving = false; }
+                if (!moving)
+                    obj.UpdateTime = PhysicsTimer.CurrentTime;
+            }
+            else
                 obj.UpdateTime = PhysicsTimer.CurrentTime;
             obj.TransientState &= ~(TransientStateFlags.Contact | TransientStateFlags.WaterContact);
             obj.calc_acceleration();
             obj.set_on_walkable(false);
             obj.set_local_velocity(velocity, false);
             obj.RemoveLinkAnimations();
+            if (obj.MovementManager != null)
+                obj.MovementManager.MotionInterpreter.PendingMotions.Clear();
             obj.IsAnimating = false;
+        }
+
+        /// <summary>The Player's FastTick, read by reflection: ACE has it since 2020, and a build of before (ACE of 2019,
+        /// whose tick scenes the oracle never runs: its physics clock is wall time) must still compile the facade.</summary>
+        static bool PlayerFastTick()
+        {
+            var p = typeof(ACE.Server.WorldObjects.Player).GetProperty("FastTick");
+            if (p == null)
+                throw new MissingMemberException("ACE.Server.WorldObjects.Player", "FastTick");
+            return (bool)p.GetValue(moverPlayer);
         }
 
         /// <summary>The physics calls of Player.UpdatePlayerPosition for a requested position that moves (the legacy,
@@ -1242,6 +1261,7 @@ namespace Acconform.Oracle
             placementFlags = r.ReadInt32();
             placementGetCell = r.ReadByte() != 0;
             var motionTableId = r.ReadUInt32();  // the player's MotionTableId (0: none); its Setup names the same table
+            var playerKillerStatus = (PlayerKillerStatus)r.ReadUInt32();  // the Player's, set before its WeenieObject copies it
 
             // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a Creature's
             // (a player's): makeAnimObject, its guid, the WeenieObject of its Player, its motion table, scale, state
@@ -1249,6 +1269,7 @@ namespace Acconform.Oracle
             obj.makeAnimObject(did, true);
             obj.set_object_guid(new ObjectGuid(moverId));
             moverPlayer = MakePlayer(moverId);  // held as a server's landblock holds its objects: WeenieObject keeps a WeakReference
+            moverPlayer.PlayerKillerStatus = playerKillerStatus;
             obj.set_weenie_obj(new WeenieObject(moverPlayer));
             SetServerPlayerPhysics(moverPlayer, obj, begin);
             obj.SetMotionTableID(motionTableId);

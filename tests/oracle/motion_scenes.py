@@ -80,9 +80,135 @@ def walk_turn_stop():
     return scene("a player walks forward, turns, and stops with a player-like table", [land(A9B4)], m, steps)
 
 
+def strafing_table() -> MotionTableSpec:
+    """player_like_table with a SideStepRight cycle (root motion sideways and a Velocity), allowed only from
+    the style's default substate (Bitfield 2), and a SideStepRight modifier, as retail's human table has them."""
+    t = player_like_table()
+    side = AnimationSpec(tuple(Frame((0.04 * i, 0.0, 0.0)) for i in range(5)))
+    cycle = MotionEntry(NC, int(MC.SideStepRight), MotionDataSpec((AnimRef(len(t.animations), 30.0),),
+                                                                  (1.25, 0.0, 0.0), None, 2))
+    modifier = MotionEntry(NC, int(MC.SideStepRight), MotionDataSpec((AnimRef(len(t.animations), 30.0),),
+                                                                     (1.25, 0.0, 0.0), None, 0))
+    return replace(t, animations=t.animations + (side,), cycles=t.cycles + (cycle,), modifiers=t.modifiers + (modifier,))
+
+
+def _keys(forward=0, sidestep=0, turn=0, hold=HoldKey.None_, speed=1.0) -> MotionInput:
+    """A MoveToState's keys: each command given with the hold key and speed, the state's hold key too."""
+    return MotionInput(hold_key=int(hold),
+                       forward=int(forward), forward_hold_key=int(hold) if forward else 0, forward_speed=speed if forward else 0.0,
+                       sidestep=int(sidestep), sidestep_hold_key=int(hold) if sidestep else 0,
+                       sidestep_speed=speed if sidestep else 0.0,
+                       turn=int(turn), turn_hold_key=int(hold) if turn else 0, turn_speed=speed if turn else 0.0)
+
+
+def _held(dt: float, n: int, keys: MotionInput | None) -> tuple[TickStep, ...]:
+    """n ticks of dt, the first pressing `keys` (None: the keys stay as they are)."""
+    return (TickStep(dt, motion=keys),) + tuple(TickStep(dt) for _ in range(n - 1))
+
+
+RELEASE = MotionInput(hold_key=int(HoldKey.None_))
+FPS60 = 1.0 / 60.0
+
+
+def _jump_while_running(name: str, status: str):
+    """Run forward (hold key Run) for 16 ticks at 60 fps (update_object steps every third tick here, so the
+    16th tick passes without an update and UpdateTime lags the clock), jump with the local velocity
+    (0, 4, 5) on the 17th, keep running and land; the Player's PlayerKillerStatus picks
+    HandleActionJump's branch: FastTick keeps the lagging UpdateTime while the mover moves, the other
+    branch sets it to the clock."""
+    from acconform.flags import PlayerKillerStatus
+
+    run = _keys(forward=MC.RunForward, hold=HoldKey.Run)
+    steps = (_held(FPS60, 16, run) + (TickStep(FPS60, jump=(0.0, 4.0, 5.0)),)
+             + tuple(TickStep(FPS60) for _ in range(83)))
+    m = replace(mover((40.0, 60.0, 20.0)), motion_table=player_like_table(),
+                player_killer_status=int(PlayerKillerStatus[status]))
+    return scene(name, [land(A9B4)], m, steps)
+
+
+def pk_player_jumps_while_running():
+    return _jump_while_running("a PK player jumps while running (HandleActionJump's FastTick branch)", "PK")
+
+
+def ordinary_player_jumps_while_running():
+    return _jump_while_running("an ordinary (NPK) player jumps while running (HandleActionJump's other branch)", "NPK")
+
+
+def _turn_in_place(name: str, fps: int):
+    """Turn right in place with the Run hold key (RunTurnFactor) for a second at `fps`, then release."""
+    dt = 1.0 / fps
+    steps = _held(dt, fps, _keys(turn=MC.TurnRight, hold=HoldKey.Run, speed=1.4)) + _held(dt, fps // 4, RELEASE)
+    m = replace(mover((60.0, 60.0, 20.0)), motion_table=player_like_table())
+    return scene(name, [land(A9B4)], m, steps)
+
+
+def turn_in_place_at_30fps():
+    return _turn_in_place("a player turns about 180 degrees in place at 30 fps", 30)
+
+
+def turn_in_place_at_250fps():
+    return _turn_in_place("a player turns about 180 degrees in place at 250 fps", 250)
+
+
+def strafe_run_diagonal():
+    """Run forward and sidestep right at once (hold key Run) for 30 ticks at 30 fps, then release."""
+    steps = _held(FPS30, 30, _keys(forward=MC.RunForward, sidestep=MC.SideStepRight, hold=HoldKey.Run)) + \
+        _held(FPS30, 12, RELEASE)
+    m = replace(mover((60.0, 60.0, 20.0)), motion_table=strafing_table())
+    return scene("a player runs and strafes right at once, then stops", [land(A9B4)], m, steps)
+
+
+def stop_on_release():
+    """Run forward for 20 ticks at 60 fps, release every key on the 21st, stand for 30."""
+    steps = _held(FPS60, 20, _keys(forward=MC.RunForward, hold=HoldKey.Run)) + _held(FPS60, 30, RELEASE)
+    m = replace(mover((60.0, 60.0, 20.0)), motion_table=player_like_table())
+    return scene("a running player stops when the keys are released", [land(A9B4)], m, steps)
+
+
+def run_up_48_degree_slope_by_key():
+    """The 48 degree ramp of walk_up_48_degree_slope (x = 13 to 19), run up by the RunForward key at 30 fps,
+    the mover turned to face +x."""
+    from oracle.named_scenes import GROUND, slope, static
+
+    ramp = static(0x70000001, (16.0, 12.0, GROUND), slope(48.0, 6.0))
+    m = mover((10.0, 12.0, GROUND))
+    m = replace(m, motion_table=player_like_table(),
+                begin=replace(m.begin, frame=Frame(m.begin.frame.origin, _yaw(-90.0))))
+    steps = _held(FPS30, 60, _keys(forward=MC.RunForward, hold=HoldKey.Run))
+    return scene("a player runs up a 48 degree slope by key", [land()], m, steps, [ramp])
+
+
+def run_jump_onto_lip():
+    """A 2 x 4 m slab 0.6 m high (over the step-up height 0.4) from x = 15 to 17; the player runs at it along +x
+    from x = 10 at 60 fps and, a PK player, jumps with the local velocity (0, 4, 5) 30 ticks in."""
+    from acconform.flags import PlayerKillerStatus
+    from acconform.strategies.shapes import box
+    from oracle.named_scenes import GROUND, static
+
+    slab = static(0x70000001, (16.0, 12.0, GROUND), box(2.0, 4.0, 0.6))
+    m = mover((10.0, 12.0, GROUND))
+    m = replace(m, motion_table=player_like_table(), player_killer_status=int(PlayerKillerStatus.PK),
+                begin=replace(m.begin, frame=Frame(m.begin.frame.origin, _yaw(-90.0))))
+    steps = (_held(FPS60, 30, _keys(forward=MC.RunForward, hold=HoldKey.Run)) + (TickStep(FPS60, jump=(0.0, 4.0, 5.0)),)
+             + tuple(TickStep(FPS60) for _ in range(69)))
+    return scene("a player runs and jumps onto a lip above its step-up height", [land()], m, steps, [slab])
+
+
 MOTION = (
     ("player_walks_turns_and_stops", "the MoveToState keys become interpreted motions, the table's cycles, links and "
      "modifier play, and update_object moves the mover by root motion and get_state_velocity", walk_turn_stop),
+    ("pk_player_jumps_while_running", "a PK player's jump (FastTick) keeps UpdateTime while the mover moves: the "
+     "time since the last update is stepped", pk_player_jumps_while_running),
+    ("ordinary_player_jumps_while_running", "an ordinary player's jump sets UpdateTime to the clock: the time since "
+     "the last update is dropped", ordinary_player_jumps_while_running),
+    ("turn_in_place_at_30fps", "a turn in place by key at 30 fps, then released", turn_in_place_at_30fps),
+    ("turn_in_place_at_250fps", "the same turn at 250 fps: ticks under MinQuantum carry their time", turn_in_place_at_250fps),
+    ("strafe_run_diagonal", "forward and sidestep keys at once: the sidestep is allowed only from the default "
+     "substate (Bitfield 2)", strafe_run_diagonal),
+    ("stop_on_release", "releasing every key stops the run cycle and the mover", stop_on_release),
+    ("run_up_48_degree_slope_by_key", "root motion and the run cycle's velocity carry the mover up a walkable slope",
+     run_up_48_degree_slope_by_key),
+    ("run_jump_onto_lip", "a running PK player's jump clears a lip it cannot step up", run_jump_onto_lip),
 )
 
 

@@ -100,8 +100,9 @@ def test_a_packed_scene_carries_its_placement_after_the_end_position():
     plain = pack_scene(s)
     placed = pack_scene(s.replace(engine_mode="client", mover=replace(
         s.mover, placement=Placement(int(SetPositionFlags.Slide), True))))
-    assert plain[-10:] == struct.pack("<BiBI", 0, 0, 0, 0)  # then the player's MotionTableId: none
-    assert placed[-10:] == struct.pack("<BiBI", 1, int(SetPositionFlags.Slide), 1, 0)
+    # then the player's MotionTableId (none) and its PlayerKillerStatus (NPK, 2)
+    assert plain[-14:] == struct.pack("<BiBII", 0, 0, 0, 0, 2)
+    assert placed[-14:] == struct.pack("<BiBII", 1, int(SetPositionFlags.Slide), 1, 0, 2)
 
 
 def test_packing_is_deterministic_and_shares_the_height_table_bytes():
@@ -169,7 +170,7 @@ def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_
     assert data[5:5 + len(want)] == want
     assert data[5 + len(want):5 + len(want) + 1024] == struct.pack("<256f", *scene.land_height_table)
     # the mover has no end: an empty position is packed where a transition scene's end goes
-    assert data[-10 - 32:-10] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    assert data[-14 - 32:-14] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
 
 
 def _tick_bytes(t):
@@ -202,6 +203,8 @@ def test_unpacking_a_tick_scene_reads_every_tick_state_and_the_error_that_ended_
 
 
 def test_a_packed_motion_scene_carries_its_table_and_animations_with_the_movers_records_and_each_motion_input():
+    import dataclasses
+
     from acconform.motion_scene import ANIMATION_BASE, MOTION_TABLE_ID
 
     from .motion_scenes import scenes
@@ -213,6 +216,8 @@ def test_a_packed_motion_scene_carries_its_table_and_animations_with_the_movers_
         "<IIIIfIIfIIf", step.hold_key, step.style, step.forward, step.forward_hold_key, step.forward_speed, step.sidestep,
         step.sidestep_hold_key, step.sidestep_speed, step.turn, step.turn_hold_key, step.turn_speed)
     assert data[5 + 14:5 + 14 + len(want)] == want
-    assert data[-4:] == struct.pack("<I", MOTION_TABLE_ID)
+    assert data[-8:] == struct.pack("<II", MOTION_TABLE_ID, 2)  # the table, then the Player's status (NPK)
+    pk = pack_scene(scene.replace(mover=dataclasses.replace(scene.mover, player_killer_status=4)))
+    assert pk[:-4] == data[:-4] and pk[-4:] == struct.pack("<I", 4)  # PK
     for kind, ident in ((5, MOTION_TABLE_ID), (6, ANIMATION_BASE), (6, ANIMATION_BASE + 4)):
         assert struct.pack("<BI", kind, ident) in data

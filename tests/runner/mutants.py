@@ -328,6 +328,48 @@ MUTATIONS: tuple[Mutation, ...] = (
              "/ cast_float(self.scale, quantum)",
              "                    self.cached_velocity = self.position.get_offset(transit.sphere_path.cur_pos)",
              "UpdateObjectInternal's CachedVelocity is the offset, not the offset over the quantum", TICKS),
+    # ---- the motion layer (issue 40): caught by replaying the motion tick records (tick_kill)
+    Mutation("motion_run_rate_rounded", "animation/motion_interp.py",
+             "                motion = MotionCommand.RunForward\n\n            speed *= speed_mod\n",
+             "                motion = MotionCommand.RunForward\n\n            speed = s(round(float(speed * speed_mod), 2))\n",
+             "apply_run_to_command's forward speed times the run rate rounded to two decimals", TICKS),
+    Mutation("motion_link_from_wrong_state", "animation/motion_table.py",
+             "            link = self.links.get(_shl16(style) | (substate & 0xFFFFFF))\n"
+             "            if link is not None:\n                result = link.get(motion)\n",
+             "            link = self.links.get(_shl16(style) | (motion & 0xFFFFFF))\n"
+             "            if link is not None:\n                result = link.get(substate)\n",
+             "get_link at a positive speed looks the link up from the target motion to the substate "
+             "(the negative-speed arm's order)", TICKS),
+    Mutation("motion_jump_update_time_as_ordinary", "run.py",
+             "        if not moving:\n            mover.update_time = mover.timer.current_time\n",
+             "        mover.update_time = mover.timer.current_time\n",
+             "the PK (FastTick) jump sets UpdateTime always, as the ordinary player's jump does", TICKS),
+    Mutation("motion_frame_boundary_off_by_one", "animation/sequence.py",
+             "            if curr_anim.get_high_frame() < cs_floor(frame_num):",
+             "            if curr_anim.get_high_frame() <= cs_floor(frame_num):",
+             "Sequence.update_internal ends a forward animation on its high frame, one frame early", TICKS),
+    Mutation("motion_move_to_distance_strict", "managers/move_to_manager.py",
+             "or not self.moving_away and dist <= self.movement_params.distance_to_object or in_range):",
+             "or not self.moving_away and dist < self.movement_params.distance_to_object or in_range):",
+             "MoveToManager's arrival test `dist <= DistanceToObject` made strict", TICKS),
+    Mutation("motion_backwards_at_full_speed", "animation/motion_interp.py",
+             "            motion = MotionCommand.WalkForward\n            speed *= -BACKWARDS_FACTOR\n",
+             "            motion = MotionCommand.WalkForward\n            speed *= -1.0\n",
+             "adjust_motion walks backward at the forward speed (no BackwardsFactor)", TICKS),
+    Mutation("motion_run_turn_factor_dropped", "animation/motion_interp.py",
+             "        elif motion == MotionCommand.TurnRight:\n            speed *= RUN_TURN_FACTOR\n",
+             "        elif motion == MotionCommand.TurnRight:\n            pass\n",
+             "apply_run_to_command turns at the walk's rate with the Run hold key (no RunTurnFactor)", TICKS),
+    Mutation("motion_hold_key_of_raw_state_ignored", "animation/motion_interp.py",
+             "        if hold_key == HoldKey.Invalid:\n            hold_key = self.raw_state.current_hold_key\n",
+             "",
+             "adjust_motion ignores the raw state's hold key when the command has none (Invalid)", TICKS),
+    Mutation("motion_root_motion_of_next_frame", "animation/sequence.py",
+             "                    if curr_anim.anim.pos_frames is not None:\n"
+             "                        frame = AFrame.combine(frame, curr_anim.get_pos_frame(last_frame))\n",
+             "                    if curr_anim.anim.pos_frames is not None:\n"
+             "                        frame = AFrame.combine(frame, curr_anim.get_pos_frame(last_frame + 1))\n",
+             "Sequence.update_internal applies the next frame's root motion, not the frame it leaves", TICKS),
 )
 
 

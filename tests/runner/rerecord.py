@@ -1,7 +1,9 @@
 """Re-record a corpus in place with live ACE: every record's scene answered again, the shards keeping their names
 and their records' order (so both runtimes' corpora, the same scenes, stay paired by scene key).
 
-    ACE_ASSEMBLY=/path/to/ACE.Server.dll ACE_VERSION=7b47913 python tests/runner/rerecord.py tests/data/corpus/<runtime> [--enter-world]
+    ACE_ASSEMBLY=/path/to/ACE.Server.dll ACE_VERSION=7b47913 python tests/runner/rerecord.py tests/data/corpus/<runtime> [--enter-world] [--shards GLOB]
+
+--shards re-records only the shards whose file names match GLOB (default every shard, *.jsonl.gz).
 
 With --enter-world, a placement through SetPosition whose scene key (oracle.recorded.scene_key, of the scene as it
 was) starts with 0-7 becomes a placement through enter_world (flags dropped; get_cell kept), as the strategies now
@@ -44,11 +46,12 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("corpus", type=Path)
     ap.add_argument("--enter-world", action="store_true")
+    ap.add_argument("--shards", default="*.jsonl.gz", help="only the shards matching this glob")
     args = ap.parse_args(argv)
     oracle = LiveOracle()
     total = collections.Counter()
     seen = set()
-    for shard in sorted(args.corpus.glob("*.jsonl.gz")):
+    for shard in sorted(args.corpus.glob(args.shards)):
         kind = shard.name.split("-")[0]
         records = [Record.from_json(json.loads(line)) for line in gzip.open(shard, "rt")]
         c = collections.Counter(records=len(records))

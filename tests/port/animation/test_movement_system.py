@@ -70,10 +70,17 @@ class _Timer:
 class _Mover:
     """The calls the jumps make, recorded; moving or not as told."""
 
-    def __init__(self, moving):
+    def __init__(self, moving, status, pending=None):
+        from acconform.port.weenie_object import Player, WeenieObject
+
         self.moving, self.update_time, self.timer, self.calls = moving, 1.0, _Timer(), []
         self.transient_state = TransientState.Contact | TransientState.OnWalkable | TransientState.WaterContact
         self.is_animating = True
+        self.weenie_obj = WeenieObject.of_player(Player(player_killer_status=status))
+        self.movement_manager = None
+        if pending is not None:  # a MovementManager whose MotionInterpreter has these pending motions
+            from types import SimpleNamespace
+            self.movement_manager = SimpleNamespace(motion_interpreter=SimpleNamespace(pending_motions=pending))
 
     def is_moving_or_animating(self):
         return self.moving
@@ -92,17 +99,28 @@ class _Mover:
 
 
 def test_a_pk_players_jump_keeps_the_update_time_while_moving_and_an_ordinary_players_always_sets_it():
-    from acconform.port.run import jump, jump_ordinary
+    from acconform.flags import PlayerKillerStatus as PKS
+    from acconform.port.run import handle_action_jump
 
-    pk, ordinary = _Mover(moving=True), _Mover(moving=True)
-    jump(pk, EXACT.vec(0, 1, 5))
-    jump_ordinary(ordinary, EXACT.vec(0, 1, 5))
-    assert pk.update_time == 1.0 and ordinary.update_time == 12.5
+    pk, pkl, ordinary = _Mover(True, PKS.PK), _Mover(True, PKS.PKLite), _Mover(True, PKS.NPK)
+    for m in (pk, pkl, ordinary):
+        handle_action_jump(m, EXACT.vec(0, 1, 5))
+    assert pk.update_time == pkl.update_time == 1.0 and ordinary.update_time == 12.5
     assert pk.calls == ordinary.calls == [
         "calc_acceleration", ("set_on_walkable", False), ("set_local_velocity", (0.0, 1.0, 5.0), False),
         "remove_link_animations"]
     for m in (pk, ordinary):
         assert m.transient_state == TransientState.OnWalkable and not m.is_animating
-    still = _Mover(moving=False)
-    jump(still, EXACT.vec(0, 0, 5))
+    still = _Mover(False, PKS.PK)
+    handle_action_jump(still, EXACT.vec(0, 0, 5))
     assert still.update_time == 12.5
+
+
+def test_both_jumps_clear_the_motion_interpreters_pending_motions():
+    from acconform.flags import PlayerKillerStatus as PKS
+    from acconform.port.run import handle_action_jump
+
+    for status in (PKS.PK, PKS.NPK):
+        pending = ["a MotionNode"]
+        handle_action_jump(_Mover(False, status, pending), EXACT.vec(0, 0, 5))
+        assert pending == []
