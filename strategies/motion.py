@@ -33,7 +33,7 @@ from dataclasses import replace
 
 from hypothesis import strategies as st
 
-from acconform.flags import TransientState
+from acconform.flags import PlayerKillerStatus as PKS, TransientState
 from acconform.motion_enums import HoldKey, MotionCommand as MC
 from acconform.motion_enums import MovementParamFlags as MPF
 from acconform.motion_scene import (DEFAULT_MOVEMENT_FLAGS, STOPS, AnimationSpec, AnimRef, CommandInput, MotionDataSpec,
@@ -71,6 +71,8 @@ INPUT_KINDS = st.sampled_from(("move", "move", "stop"))
 SEGMENTS = dr.ints(0, 4)  # inputs after the first
 LAST_STOP = st.sampled_from((True, True, False))
 JUMPS = st.sampled_from((False, False, False, True))  # a jump (the tick input jump) among the keys
+# the Player's PlayerKillerStatus: PK and PKLite jump by HandleActionJump's FastTick branch, Free is impenetrable
+PLAYER_KILLER_STATUSES = st.sampled_from((PKS.NPK, PKS.NPK, PKS.NPK, PKS.NPK, PKS.PK, PKS.PK, PKS.PKLite, PKS.Free))
 TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
 
 # the server's calls into the managers (one scene in two): what drives the mover first
@@ -223,17 +225,19 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
         at = draw(st.integers(0, n - 1))
         inputs[at]["jump"] = (0.0, to_f32(dr.take(draw, JUMP_FORWARD)), to_f32(dr.take(draw, JUMP_UPS)))
         tags.append(f"jump@{at}")
-    return _motion_scene(base, table, start, dts, inputs, g0, g1, f"{tlabel}:{'+'.join(tags)}:{clabel}")
+    status = draw(PLAYER_KILLER_STATUSES)
+    return _motion_scene(base, table, start, dts, inputs, g0, g1, f"{tlabel}:{'+'.join(tags)}:{status.name}:{clabel}",
+                         status)
 
 
-def _motion_scene(base: Scene, table, start, dts, inputs, g0, g1, label: str) -> Scene:
+def _motion_scene(base: Scene, table, start, dts, inputs, g0, g1, label: str, status=PKS.NPK) -> Scene:
     from .ticks import _tick_scene, _unit
 
     ux, uy = _unit(g1[0] - g0[0], g1[1] - g0[1])
     heading = math.degrees(math.atan2(-ux, uy))  # local +y along the path (a yaw about z)
     m = base.mover
     begin = Position(m.begin.cell, Frame(m.begin.frame.origin, _yaw(heading)))
-    base = base.replace(mover=replace(m, begin=begin, motion_table=table,
+    base = base.replace(mover=replace(m, begin=begin, motion_table=table, player_killer_status=int(status),
                                       transient_state=m.transient_state | int(TransientState.Active)))
     return _tick_scene(base, start, dts, inputs, "update_object", None, f"ticks:motion:{base.name}:{label}")
 
