@@ -197,7 +197,7 @@ class MotionTickState:
     sequence_omega: Vec3 = _field(ZERO, "rad/s", "Sequence.Omega: the turn it asks for, applied likewise")
     movement_type: int | None = _field(None, "", "MoveToManager.MovementType, a MovementType name (Invalid when "
                                        "not moving to); null when there is no MoveToManager")
-    is_moving_to: bool = _field(False, "", "MovementManager.IsMovingTo() (false when there is no MovementManager)")
+    is_moving_to: bool = _field(False, "", "PhysicsObj.IsMovingTo(): MovementManager.IsMovingTo(), false when there is no MovementManager")
 
     def to_json(self):
         from .motion_enums import MovementType

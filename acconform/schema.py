@@ -331,7 +331,7 @@ def outcome_fields_markdown(outcome_schema: dict | None = None) -> str:
         for name, sub in node["properties"].items():
             path = prefix + name
             if name == "format":
-                rows.append(f"| `{path}` | {_json_type(sub)} |  | the outcome format: /4 with ticks, /3 with a placement |")
+                rows.append(f"| `{path}` | {_json_type(sub)} |  | the outcome format: /5 with ticks carrying `motion`, /4 with ticks, /3 with a placement |")
                 continue
             if name not in meta or "what" not in meta[name].metadata:
                 raise ValueError(f"outcome field {path} has no unit and meaning (acconform/outcome.py, _field)")
