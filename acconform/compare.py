@@ -35,6 +35,13 @@ the last tick), so the first difference of a tick scene is its first differing t
 first missing tick is a difference (``ticks[n]``, one value None); one side with ticks and the other
 without is a difference (``ticks``).
 
+A tick's `motion` (a mover with a motion table) is compared like the rest, after the tick's other
+fields: ``ticks[3].motion.interpreted.forward_command``, ``ticks[3].motion.frame_number``,
+``ticks[3].motion.sequence_velocity[1]``; one side with it (or with a part of it: `interpreted`, `raw`,
+`animation`, `movement_type`) and the other without is a difference naming that field. The
+commands and the animation id are compared as ids, the speeds, the frame number and the sequence's
+velocity and omega as floats, `movement_type` and `is_moving_to` as discrete values.
+
 A Difference names the field by path (``contact_plane.normal[2]``) and carries both values.
 """
 
@@ -48,19 +55,21 @@ from typing import Any
 import numpy as np
 
 from .flags import ObjectInfoState, PhysicsState, TransientState, flag_names
-from .outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
+from .outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState, PlaneState,
+                      TickState)
 from .numerics import f32_bits
 
 MODES = ("exact", "fast")
 FAST_ULPS = 64  # float32 ULPs allowed between a double run and ACE's float32 run
 FAST_ABS = 1e-4  # metres / unit-vector components; below PhysicsGlobals.EPSILON (2e-4)
 
-_ID_FIELDS = frozenset({"cell", "check_cell", "cur_cell", "contact_plane_cell"})
+_ID_FIELDS = frozenset({"cell", "check_cell", "cur_cell", "contact_plane_cell", "current_style", "forward_command",
+                        "side_step_command", "turn_command", "animation"})
 _FLAG_FIELDS = {"object_info_state": ObjectInfoState, "state": PhysicsState, "transient_state": TransientState}
 _VEC_FIELDS = frozenset({"origin", "orientation", "velocity", "normal", "vector", "acceleration", "omega",
-                         "cached_velocity", "sliding_normal"})
+                         "cached_velocity", "sliding_normal", "sequence_velocity", "sequence_omega"})
 _DOUBLE_FIELDS = frozenset({"update_time"})
-_FLOAT_FIELDS = frozenset({"d"})
+_FLOAT_FIELDS = frozenset({"d", "forward_speed", "side_step_speed", "turn_speed", "frame_number"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,6 +99,12 @@ def _show(path: str, v) -> str:
         return f"{v!r} (0x{_double_bits(v):016x})"
     if isinstance(v, tuple) and leaf == "shadow_cells":
         return "[" + ", ".join(f"0x{c:08X}" for c in v) + "]"
+    if isinstance(v, int) and leaf == "movement_type":
+        from .motion_enums import MovementType
+
+        return MovementType(v).name if v in MovementType._value2member_map_ else repr(v)
+    if isinstance(v, (CommandState, MotionTickState)):
+        return "a " + type(v).__name__
     if isinstance(v, tuple) and leaf == "ticks":
         return f"{len(v)} ticks"
     if isinstance(v, TickState):
@@ -179,6 +194,7 @@ def _compare_ticks(va, vb, mode: str, out: list) -> None:
 
 _TICKS, _DOUBLE, _SHADOW, _PLACEMENT, _STATIC, _ERROR, _VEC, _FLOAT, _OTHER = range(9)
 _RECORDS = (ContactPlaneState, NormalState, PlaneState)
+_OPTIONAL_RECORDS = (MotionTickState, CommandState)  # None on a side that has none: compared when both have one
 _PLANS: dict[type, tuple] = {}  # a record type -> its fields in `_order`, each with how it is compared
 
 
@@ -214,6 +230,11 @@ def _compare_record(a, b, prefix: str, mode: str, out: list) -> None:
                 out.append(Difference(path, va, vb))
         elif isinstance(va, _RECORDS) or (isinstance(va, PlacementState) and isinstance(vb, PlacementState)):
             _compare_record(va, vb, path + ".", mode, out)
+        elif isinstance(va, _OPTIONAL_RECORDS) or isinstance(vb, _OPTIONAL_RECORDS):
+            if type(va) is type(vb):
+                _compare_record(va, vb, path + ".", mode, out)
+            else:  # one side has none (no motion table, no motion interpreter)
+                out.append(Difference(path, va, vb))
         elif how == _PLACEMENT and (va is None) != (vb is None):
             out.append(Difference(path, va, vb))
         elif how == _STATIC:

@@ -1,6 +1,6 @@
 """The outcome: what one transition left behind, read the same way from the port and from ACE.
 
-Format ``acconform.outcome/4``. Fields mirror ACE's objects after PhysicsObj.transition's
+Format ``acconform.outcome/5``. Fields mirror ACE's objects after PhysicsObj.transition's
 steps (FindValidPosition and its set-up): SpherePath.CurPos/CurCell, ObjectInfo.State, the
 CollisionInfo fields, the mover's velocity (ObjectInfo.StopVelocity zeroes it), and a few
 SpherePath fields that expose the transition's own state. `error` holds what a side raised
@@ -26,6 +26,12 @@ driver returned. A tick scene's transition fields keep this record's defaults (n
 transition). An exception in a tick is that tick's `error` (its other fields the defaults) and
 ends the scene: later steps have no TickState. An error before the first tick (building the
 world) is the outcome's own `error`, with `ticks` None.
+
+A tick's `motion` (``/5``; None for a mover without a motion table, whose outcome is still written as
+``/4``, byte for byte as before) is the mover's motion layer after the tick, a `MotionTickState`:
+its MotionInterp's InterpretedState and RawState, its Sequence's current animation, frame number,
+Velocity and Omega, and its MoveToManager's MovementType and IsMovingTo. An ``/4`` record still
+reads (its ticks with `motion` None); a `motion` there is refused, as a field the format lacks.
 """
 
 from __future__ import annotations
@@ -36,7 +42,8 @@ from .codec import Reader, write_f32, write_f64, write_id, write_vec
 from .flags import ObjectInfoState, PhysicsState, SetPositionError, TransientState, flag_names
 from .scene import Frame, IDENTITY, Vec3, check_format
 
-FORMAT = "acconform.outcome/4"
+FORMAT = "acconform.outcome/5"
+FORMAT_V4 = "acconform.outcome/4"  # what a tick outcome without a motion layer (no tick has `motion`) is written as
 FORMAT_V3 = "acconform.outcome/3"  # what an outcome with a placement and no ticks is written as
 FORMAT_V2 = "acconform.outcome/2"  # what an outcome without a placement is written as
 FORMAT_V1 = "acconform.outcome/1"  # read (static_cells not recorded), never written
@@ -140,6 +147,96 @@ Quat = tuple[float, float, float, float]
 
 
 @dataclass(frozen=True, slots=True)
+class CommandState:
+    """The commands of a motion state (MotionInterp.InterpretedState, an InterpretedMotionState, or its
+    RawState, a RawMotionState): the fields the two share; the raw one's hold keys and either's Actions
+    are not read."""
+
+    current_style: int = _field(0, "", "CurrentStyle: a MotionStance/MotionCommand id (0x8000003D NonCombat)")
+    forward_command: int = _field(0, "", "ForwardCommand: a MotionCommand id (0x41000003 Ready, 0x45000005 WalkForward)")
+    forward_speed: float = _field(0.0, "", "ForwardSpeed: the forward command's speed factor")
+    side_step_command: int = _field(0, "", "SideStepCommand: a MotionCommand id (0 none)")
+    side_step_speed: float = _field(0.0, "", "SideStepSpeed")
+    turn_command: int = _field(0, "", "TurnCommand: a MotionCommand id (0 none)")
+    turn_speed: float = _field(0.0, "", "TurnSpeed")
+
+    def to_json(self):
+        return {"current_style": write_id(self.current_style), "forward_command": write_id(self.forward_command),
+                "forward_speed": write_f32(self.forward_speed), "side_step_command": write_id(self.side_step_command),
+                "side_step_speed": write_f32(self.side_step_speed), "turn_command": write_id(self.turn_command),
+                "turn_speed": write_f32(self.turn_speed)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "CommandState":
+        r.obj(_COMMAND_FIELDS)
+        return CommandState(r["current_style"].id_(), r["forward_command"].id_(),
+                            r["forward_speed"].f32(allow_nonfinite=True), r["side_step_command"].id_(),
+                            r["side_step_speed"].f32(allow_nonfinite=True), r["turn_command"].id_(),
+                            r["turn_speed"].f32(allow_nonfinite=True))
+
+
+_COMMAND_FIELDS = frozenset({"current_style", "forward_command", "forward_speed", "side_step_command",
+                             "side_step_speed", "turn_command", "turn_speed"})
+
+
+@dataclass(frozen=True, slots=True)
+class MotionTickState:
+    """The mover's motion layer after a tick (a mover with a motion table): read from its
+    MovementManager's MotionInterpreter and MoveToManager and its PartArray's Sequence, without a
+    call that could change them (get_minterp would make a manager; get_state_velocity asks the
+    WeenieObject for its run rate), so reading changes nothing the next tick sees."""
+
+    interpreted: CommandState | None = _field(None, "", "MotionInterp.InterpretedState (null when the mover has no "
+                                              "MovementManager or MotionInterpreter)")
+    raw: CommandState | None = _field(None, "", "MotionInterp.RawState (null as `interpreted`)")
+    animation: int | None = _field(None, "", "the animation id of the Sequence's CurrAnim (its AnimSequenceNode's "
+                                   "Anim.ID, a 0x03... DAT id); null when CurrAnim is null")
+    frame_number: float = _field(0.0, "frames", "Sequence.FrameNumber (a float in ACE: where in CurrAnim it is)")
+    sequence_velocity: Vec3 = _field(ZERO, "m/s", "Sequence.Velocity: the velocity the motion layer asks for, "
+                                     "what PartArray.Update applies to the mover each tick (in its own frame)")
+    sequence_omega: Vec3 = _field(ZERO, "rad/s", "Sequence.Omega: the turn it asks for, applied likewise")
+    movement_type: int | None = _field(None, "", "MoveToManager.MovementType, a MovementType name (Invalid when "
+                                       "not moving to); null when there is no MoveToManager")
+    is_moving_to: bool = _field(False, "", "PhysicsObj.IsMovingTo(): MovementManager.IsMovingTo(), false when there is no MovementManager")
+
+    def to_json(self):
+        from .motion_enums import MovementType
+
+        return {"interpreted": None if self.interpreted is None else self.interpreted.to_json(),
+                "raw": None if self.raw is None else self.raw.to_json(),
+                "animation": None if self.animation is None else write_id(self.animation),
+                "frame_number": write_f32(self.frame_number),
+                "sequence_velocity": write_vec(self.sequence_velocity), "sequence_omega": write_vec(self.sequence_omega),
+                "movement_type": None if self.movement_type is None else MovementType(self.movement_type).name,
+                "is_moving_to": self.is_moving_to}
+
+    @staticmethod
+    def from_json(r: Reader) -> "MotionTickState":
+        from .motion_enums import MovementType
+
+        r.obj(_MOTION_ALLOWED)
+        for name in _MOTION_FIELDS:
+            r[name]  # every field is written (null where it has none): a missing one is named
+        mt = None
+        if r.has("movement_type"):
+            name = r["movement_type"].str_()
+            if name not in MovementType.__members__:
+                r["movement_type"].fail(f"unknown MovementType {name!r} (known: {', '.join(MovementType.__members__)})")
+            mt = int(MovementType[name])
+        return MotionTickState(
+            CommandState.from_json(r["interpreted"]) if r.has("interpreted") else None,
+            CommandState.from_json(r["raw"]) if r.has("raw") else None,
+            r["animation"].id_() if r.has("animation") else None,
+            r["frame_number"].f32(allow_nonfinite=True), _vec_nf(r["sequence_velocity"]), _vec_nf(r["sequence_omega"]),
+            mt, r["is_moving_to"].bool_())
+
+
+_MOTION_FIELDS = ("interpreted", "raw", "animation", "frame_number", "sequence_velocity", "sequence_omega",
+                  "movement_type", "is_moving_to")  # in declaration order: a missing one is named the same every run
+_MOTION_ALLOWED = frozenset(_MOTION_FIELDS)
+
+
+@dataclass(frozen=True, slots=True)
 class TickState:
     """The mover's PhysicsObj after one tick's driver returned (update_object / the request_pos path)."""
 
@@ -160,18 +257,25 @@ class TickState:
     sliding_normal: Vec3 = _field(ZERO, "direction", "PhysicsObj.SlidingNormal")
     jumped_this_frame: bool = _field(False, "", "PhysicsObj.JumpedThisFrame")
     shadow_cells: tuple[int, ...] = _field((), "", "the cell ids of the mover's ShadowObjects, in their order")
+    motion: MotionTickState | None = _field(None, "", "the mover's motion layer after the step, only for a mover with "
+                                            "a motion table (then the format is acconform.outcome/5); absent otherwise")
     error: str | None = _field(None, "", "what this step threw (later steps are not run); absent when nothing was raised")
 
     def to_json(self):
         d = {name: write(getattr(self, name)) for name, write, _ in _TICK_CODECS}
+        if self.motion is not None:
+            d["motion"] = self.motion.to_json()
         if self.error is not None:
             d["error"] = self.error
         return d
 
     @staticmethod
-    def from_json(r: Reader) -> "TickState":
-        r.obj(_TICK_ALLOWED)
+    def from_json(r: Reader, motion: bool = True) -> "TickState":
+        """`motion`: whether the record's format has the tick's `motion` (``/5``; ``/4`` has not)."""
+        r.obj(_TICK_ALLOWED if motion else _TICK_ALLOWED_V4)
         kw = {name: read(r[name]) for name, _, read in _TICK_CODECS}  # a missing field: the first in declaration order
+        if r.has("motion"):
+            kw["motion"] = MotionTickState.from_json(r["motion"])
         if r.has("error"):
             kw["error"] = r["error"].str_()
         return TickState(**kw)
@@ -179,6 +283,7 @@ class TickState:
 
 _TICK_FIELDS = tuple(f.name for f in fields(TickState))  # in declaration order (an outcome holds one per tick)
 _TICK_ALLOWED = frozenset(_TICK_FIELDS)
+_TICK_ALLOWED_V4 = _TICK_ALLOWED - {"motion"}
 _TICK_IDS = frozenset({"cell", "cur_cell", "contact_plane_cell"})
 _TICK_VECS = frozenset({"origin", "orientation", "velocity", "acceleration", "omega", "cached_velocity", "sliding_normal"})
 
@@ -229,7 +334,7 @@ def _tick_field_codec(name: str):
 # (name, write, read) per field, in declaration order, looked up once: an outcome holds a TickState
 # per tick, and each one asked dataclasses.fields() and ran the field's if-chain (with flag_names
 # remembering its answers, a 25-tick outcome is written in 0.37 ms, not 0.54, and read in 0.73, not 1.1)
-_TICK_CODECS = tuple((name, *_tick_field_codec(name)) for name in _TICK_FIELDS if name != "error")
+_TICK_CODECS = tuple((name, *_tick_field_codec(name)) for name in _TICK_FIELDS if name not in ("motion", "error"))
 
 
 @dataclass(frozen=True, slots=True)
@@ -257,15 +362,17 @@ class Outcome:
         "(PhysicsObj.ShadowObjects, in their order); null when it could not be read")
     placement: PlacementState | None = _field(None, "", "the mover after ACE's placement, only for a scene with "
                                               "mover.placement (then the format is acconform.outcome/3)")
-    ticks: tuple[TickState, ...] | None = _field(None, "", "for a tick scene (then the format is acconform.outcome/4), "
-                                                 "the mover's PhysicsObj after each step's driver returned, in step order")
+    ticks: tuple[TickState, ...] | None = _field(None, "", "for a tick scene (then the format is acconform.outcome/4, "
+                                                 "or /5 when its ticks carry `motion`), the mover's PhysicsObj after each "
+                                                 "step's driver returned, in step order")
 
     @property
     def frame(self) -> Frame:
         return Frame(self.origin, self.orientation)
 
     def to_json(self):
-        d = {"format": FORMAT if self.ticks is not None else FORMAT_V3 if self.placement is not None else FORMAT_V2}
+        d = {"format": (FORMAT if any(t.motion is not None for t in self.ticks) else FORMAT_V4) if self.ticks is not None
+             else FORMAT_V3 if self.placement is not None else FORMAT_V2}
         for f in fields(self):
             v = getattr(self, f.name)
             if f.name in ("placement", "ticks") and v is None:
@@ -296,12 +403,12 @@ class Outcome:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         allowed = _OUTCOME_ALLOWED - {"static_cells"} if v1 else _OUTCOME_ALLOWED
-        if fmt not in (FORMAT, FORMAT_V3):
+        if fmt not in (FORMAT, FORMAT_V4, FORMAT_V3):
             allowed = allowed - {"placement"}
-        if fmt != FORMAT:
+        if fmt not in (FORMAT, FORMAT_V4):
             allowed = allowed - {"ticks"}
         r.obj(allowed | {"format"})
-        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3):
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4):
             check_format(r, FORMAT)
         kw = {}
         for name in names:
@@ -331,7 +438,7 @@ class Outcome:
             elif name == "placement":
                 kw[name] = PlacementState.from_json(x)
             elif name == "ticks":
-                kw[name] = tuple(TickState.from_json(t) for t in x.list())
+                kw[name] = tuple(TickState.from_json(t, fmt == FORMAT) for t in x.list())
             else:
                 kw[name] = x.bool_()
         return Outcome(**kw)

@@ -204,13 +204,20 @@ def _motion_scene(scene, m):
 
 
 def _tick_outcomes() -> list:
-    """A tick scene's outcome: a TickState of every field, and a tick ended by an error."""
-    from .outcome import Outcome, PlaneState, TickState
+    """A tick scene's outcome: a TickState of every field, and a tick ended by an error; and a motion
+    scene's (outcome/5): a tick with the motion layer, once with every part and once with none."""
+    from dataclasses import replace
+
+    from .outcome import CommandState, MotionTickState, Outcome, PlaneState, TickState
 
     state = TickState(True, 1000.1, 0xA9B40001, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0), (0.0, 2.0, 0.0),
                       (0.0, 0.0, -9.8), (0.0, 0.0, 0.0), (0.0, 2.0, 0.0), 0x400, 0x83, 0xA9B40001,
                       PlaneState((0.0, 0.0, 1.0), -20.0), (0.0, 0.0, 0.0), False, (0xA9B40001,))
-    return [Outcome(static_cells=(), ticks=(state, TickState(error="NullReferenceException: an example")))]
+    walk = CommandState(0x8000003D, 0x45000005, 1.0, 0x6500000F, 1.0, 0x6500000D, 1.0)
+    motion = MotionTickState(walk, walk, 0x03000001, 1.5, (0.0, 3.0, 0.0), (0.0, 0.0, 1.0), 0, False)
+    bare = MotionTickState(None, None, None, 0.0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), None, False)
+    return [Outcome(static_cells=(), ticks=(state, TickState(error="NullReferenceException: an example"))),
+            Outcome(static_cells=(), ticks=(replace(state, motion=motion), replace(state, motion=bare)))]
 
 
 def _every_optional_field(scene):
@@ -226,7 +233,8 @@ def _every_optional_field(scene):
 
 def schemas() -> tuple[dict, dict]:
     """(scene schema, outcome schema), inferred from the records' JSON for the fixed sample."""
-    from .outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V2 as OUTCOME_FORMAT_V2, FORMAT_V3 as OUTCOME_FORMAT_V3, Outcome
+    from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V2 as OUTCOME_FORMAT_V2, FORMAT_V3 as OUTCOME_FORMAT_V3,
+                          FORMAT_V4 as OUTCOME_FORMAT_V4, Outcome)
     from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
                         FORMAT_V3 as SCENE_FORMAT_V3, FORMAT_V4 as SCENE_FORMAT_V4, FORMAT_V5 as SCENE_FORMAT_V5)
 
@@ -241,7 +249,8 @@ def schemas() -> tuple[dict, dict]:
     o = _Inferrer(nonfinite_floats=True)
     docs = ([x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
             + [x.to_json() for x in _tick_outcomes()])
-    outcome = o.finish(o._plain(docs), "acconform outcome", (OUTCOME_FORMAT_V2, OUTCOME_FORMAT_V3, OUTCOME_FORMAT))
+    outcome = o.finish(o._plain(docs), "acconform outcome",
+                       (OUTCOME_FORMAT_V2, OUTCOME_FORMAT_V3, OUTCOME_FORMAT_V4, OUTCOME_FORMAT))
     return scene, outcome
 
 
@@ -336,7 +345,7 @@ def outcome_fields_markdown(outcome_schema: dict | None = None) -> str:
         for name, sub in node["properties"].items():
             path = prefix + name
             if name == "format":
-                rows.append(f"| `{path}` | {_json_type(sub)} |  | the outcome format: /4 with ticks, /3 with a placement |")
+                rows.append(f"| `{path}` | {_json_type(sub)} |  | the outcome format: /5 with ticks carrying `motion`, /4 with ticks, /3 with a placement |")
                 continue
             if name not in meta or "what" not in meta[name].metadata:
                 raise ValueError(f"outcome field {path} has no unit and meaning (acconform/outcome.py, _field)")

@@ -10,7 +10,8 @@ from __future__ import annotations
 import struct
 from dataclasses import fields
 
-from ..outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
+from ..outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState, PlaneState,
+                       TickState)
 from ..dat import cell_landblock, has_objects, scene_records
 from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import DRIVERS, TICK_INPUTS, Position, Frame, Scene, Ticks
@@ -217,8 +218,23 @@ def _placement_at(data, pos: int):
 
 # a tick's state (Facade.WriteTick, after its byte 0): updated, UpdateTime, Position.ObjCellID, CurCell id, origin,
 # orientation (w x y z), Velocity, Acceleration, Omega, CachedVelocity, State, TransientState, ContactPlaneCellID,
-# ContactPlane (normal, d), SlidingNormal, JumpedThisFrame, then int n and the n ShadowObjects cell ids
+# ContactPlane (normal, d), SlidingNormal, JumpedThisFrame, then int n and the n ShadowObjects cell ids, then
+# Facade.WriteMotion: byte 0 (no motion table), or 1 and the motion layer (_MOTION_STATE)
 _TICK = struct.Struct("<BdII3f4f3f3f3f3fIII3ff3fBi")
+# a MotionInterpreter (byte) and its InterpretedState's and RawState's commands, a CurrAnim's Anim (byte) and its ID,
+# Sequence.FrameNumber, Velocity, Omega, a MoveToManager (byte) and its MovementType, IsMovingTo()
+_MOTION_STATE = struct.Struct("<B" + "IIfIfIf" * 2 + "BIf3f3fBBB")
+
+
+def _motion_at(data, pos: int):
+    """(the tick's MotionTickState or None, the offset after it)."""
+    if data[pos] in (0, b"\0"):
+        return None, pos + 1
+    v = _MOTION_STATE.unpack_from(data, pos + 1)
+    interpreted, raw = (CommandState(*v[1:8]), CommandState(*v[8:15])) if v[0] else (None, None)
+    return (MotionTickState(interpreted, raw, v[16] if v[15] else None, v[17], v[18:21], v[21:24],
+                            v[25] if v[24] else None, bool(v[26])),
+            pos + 1 + _MOTION_STATE.size)
 
 
 def _ticks_at(data, pos: int):
@@ -239,8 +255,10 @@ def _ticks_at(data, pos: int):
         pos += 1 + _TICK.size
         shadows = struct.unpack_from(f"<{v[34]}I", data, pos)
         pos += 4 * v[34]
+        motion, pos = _motion_at(data, pos)
         out.append(TickState(bool(v[0]), v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23],
-                             v[23], v[24], v[25], PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), tuple(shadows)))
+                             v[23], v[24], v[25], PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), tuple(shadows),
+                             motion))
     return tuple(out)
 
 

@@ -29,7 +29,8 @@ import numpy as np
 
 from acconform.flags import PLAYER_KILLER_STATUS_NPK, SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
-from acconform.outcome import ContactPlaneState, NormalState, Outcome, PlacementState, PlaneState, TickState
+from acconform.outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState,
+                               PlaneState, TickState)
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
 from acconform.motion_scene import MOTION_TABLE_ID
@@ -552,8 +553,42 @@ def move_to_state(mover: PhysicsObj, raw, mode) -> None:
     minterp.apply_raw_movement(True, allow_jump)
 
 
+def _command_state(state) -> CommandState:
+    return CommandState(int(state.current_style), int(state.forward_command), float(state.forward_speed),
+                        int(state.side_step_command), float(state.side_step_speed), int(state.turn_command),
+                        float(state.turn_speed))
+
+
+@harness("reads the mover's motion layer after a tick, as the oracle's facade does")
+def motion_tick_state(mover: PhysicsObj) -> MotionTickState:
+    """The fields as they stand, with no call that makes or asks anything (not get_minterp, which
+    makes a MovementManager; not get_state_velocity, which asks the WeenieObject its run rate):
+    the MovementManager's MotionInterpreter's InterpretedState and RawState, the PartArray's
+    Sequence (CurrAnim's animation id, FrameNumber, Velocity, Omega), the MoveToManager's
+    MovementType, and IsMovingTo()."""
+    manager = mover.movement_manager
+    minterp = manager.motion_interpreter if manager is not None else None
+    move_to = manager.move_to_manager if manager is not None else None
+    seq = mover.part_array.sequence
+    node = seq.curr_anim
+    anim = node.value.anim if node is not None else None
+    return MotionTickState(
+        interpreted=_command_state(minterp.interpreted_state) if minterp is not None else None,
+        raw=_command_state(minterp.raw_state) if minterp is not None else None,
+        animation=int(anim.id) if anim is not None else None,
+        frame_number=float(seq.frame_number),
+        sequence_velocity=_vec(seq.velocity),
+        sequence_omega=_vec(seq.omega),
+        movement_type=int(move_to.movement_type) if move_to is not None else None,
+        is_moving_to=bool(mover.is_moving_to()),
+    )
+
+
 @harness("reads the mover's PhysicsObj after a tick, as the oracle's facade does")
-def tick_state(mover: PhysicsObj, updated: bool) -> TickState:
+def tick_state(mover: PhysicsObj, updated: bool, motion: bool = False) -> TickState:
+    """`motion`: whether the mover has a motion table (the scene's `mover.motion_table`): then the
+    tick also carries its motion layer (`motion_tick_state`), and only then, so a scene without one
+    is answered as before."""
     q = mover.position.frame.orientation
     return TickState(
         updated=bool(updated),
@@ -573,6 +608,7 @@ def tick_state(mover: PhysicsObj, updated: bool) -> TickState:
         sliding_normal=_vec(mover.sliding_normal),
         jumped_this_frame=bool(mover.jumped_this_frame),
         shadow_cells=tuple(mover.shadow_objects),
+        motion=motion_tick_state(mover) if motion else None,
     )
 
 
@@ -602,6 +638,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
     mode = lscape.mode
     states = []
     location_cell = mover.position.obj_cell_id  # where it entered: its WorldObject's Location (SyncLocation)
+    motion = getattr(scene.mover, "motion_table", None) is not None
     for index, (step, time) in enumerate(zip(ticks.steps, ticks.times())):
         if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
             trace.recorder.at_tick(index)
@@ -616,7 +653,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
         except Exception as e:
             states.append(TickState(error=verdict(e)))
             break
-        states.append(tick_state(mover, updated))
+        states.append(tick_state(mover, updated, motion))
         if trace is not None and trace.recorder is not None:  # tracing: the mover after the tick
             trace.recorder.at_tick(index, states[-1])
     return tuple(states)

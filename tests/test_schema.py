@@ -69,8 +69,20 @@ def test_the_schemas_name_every_tick_record_field_and_the_tick_formats(generated
     assert "end" not in scene["properties"]["mover"]["required"]  # a tick scene's mover has none
     tick = outcome["properties"]["ticks"]["items"]
     assert set(tick["properties"]) == {f.name for f in fields(TickState)}
-    assert set(tick["required"]) == {f.name for f in fields(TickState)} - {"error"}  # an errored tick writes the defaults
-    assert outcome["properties"]["format"] == {"enum": ["acconform.outcome/2", "acconform.outcome/3", "acconform.outcome/4"]}
+    # an errored tick writes the defaults; a tick of a mover without a motion table has no motion
+    assert set(tick["required"]) == {f.name for f in fields(TickState)} - {"error", "motion"}
+    assert outcome["properties"]["format"] == {"enum": ["acconform.outcome/2", "acconform.outcome/3", "acconform.outcome/4",
+                                                        "acconform.outcome/5"]}
+
+
+def test_the_outcome_schema_names_every_field_of_a_ticks_motion_layer(generated):
+    from acconform.outcome import CommandState, MotionTickState
+
+    motion = generated[1]["properties"]["ticks"]["items"]["properties"]["motion"]
+    assert set(motion["properties"]) == set(motion["required"]) == {f.name for f in fields(MotionTickState)}
+    interpreted = next(o for o in motion["properties"]["interpreted"]["anyOf"] if o.get("type") == "object")
+    assert set(interpreted["properties"]) == {f.name for f in fields(CommandState)}
+    assert {"type": "null"} in motion["properties"]["animation"]["anyOf"]  # no CurrAnim
 
 
 def test_the_trace_schema_names_every_field_a_trace_record_and_its_snapshot_write():

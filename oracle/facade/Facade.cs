@@ -96,6 +96,7 @@ namespace Acconform.Oracle
         static int ticksRun;  // -1: not a tick scene (or an error before the first tick)
         static ACE.Server.WorldObjects.Player moverPlayer;  // the mover's WorldObject (the last scene's until the next)
         static uint locationCell;  // the cell of the mover's WorldObject.Location (Player.UpdatePlayerPosition)
+        static bool moverMotion;  // the mover has a motion table: each tick also carries its motion layer (WriteMotion)
         static readonly MemoryStream tickStream = new MemoryStream(4096);
         static readonly BinaryWriter tickWriter = new BinaryWriter(tickStream);
         static Action<double> setPortalYearTicks;
@@ -345,6 +346,7 @@ namespace Acconform.Oracle
         static void ReadTicks(BinaryReader r)
         {
             tickSteps.Clear();
+            moverMotion = false;  // until the mover is made with a motion table
             hasTicks = r.ReadByte() != 0;
             if (!hasTicks) return;
             tickDriver = r.ReadByte();
@@ -728,6 +730,51 @@ namespace Acconform.Oracle
             w.Write((byte)(obj.JumpedThisFrame ? 1 : 0));
             w.Write(obj.ShadowObjects.Count);
             foreach (var id in obj.ShadowObjects.Keys) w.Write(id);
+            WriteMotion(w, obj);
+        }
+
+        /// <summary>byte 0 (the mover has no motion table), or 1 then the mover's motion layer as it stands
+        /// (acconform.outcome.MotionTickState), read with no call that makes or asks anything (not get_minterp, not
+        /// get_state_velocity): byte (1: a MovementManager with a MotionInterpreter) and the InterpretedState's and the
+        /// RawState's CurrentStyle, ForwardCommand, ForwardSpeed, SideStepCommand, SideStepSpeed, TurnCommand,
+        /// TurnSpeed (zeros when none); byte (1: the Sequence has a CurrAnim with an Anim) and that Anim's ID; the
+        /// Sequence's FrameNumber, Velocity and Omega; byte (1: a MoveToManager) and its MovementType; IsMovingTo().</summary>
+        static void WriteMotion(BinaryWriter w, PhysicsObj obj)
+        {
+            if (!moverMotion) { w.Write((byte)0); return; }
+            w.Write((byte)1);
+            var manager = obj.MovementManager;
+            var minterp = manager != null ? manager.MotionInterpreter : null;
+            w.Write((byte)(minterp != null ? 1 : 0));
+            if (minterp != null)
+            {
+                var i = minterp.InterpretedState;
+                WCommands(w, i.CurrentStyle, i.ForwardCommand, i.ForwardSpeed, i.SideStepCommand, i.SideStepSpeed, i.TurnCommand, i.TurnSpeed);
+                var r = minterp.RawState;
+                WCommands(w, r.CurrentStyle, r.ForwardCommand, r.ForwardSpeed, r.SideStepCommand, r.SideStepSpeed, r.TurnCommand, r.TurnSpeed);
+            }
+            else
+            {
+                WCommands(w, 0, 0, 0f, 0, 0f, 0, 0f);
+                WCommands(w, 0, 0, 0f, 0, 0f, 0, 0f);
+            }
+            var seq = obj.PartArray.Sequence;
+            var anim = seq.CurrAnim != null ? seq.CurrAnim.Value.Anim : null;
+            w.Write((byte)(anim != null ? 1 : 0));
+            w.Write(anim != null ? anim.ID : 0u);
+            w.Write(seq.FrameNumber);
+            W3(w, seq.Velocity);
+            W3(w, seq.Omega);
+            var moveTo = manager != null ? manager.MoveToManager : null;
+            w.Write((byte)(moveTo != null ? 1 : 0));
+            w.Write(moveTo != null ? (byte)moveTo.MovementType : (byte)0);
+            w.Write((byte)(obj.IsMovingTo() ? 1 : 0));
+        }
+
+        static void WCommands(BinaryWriter w, uint style, uint forward, float forwardSpeed, uint sideStep, float sideStepSpeed, uint turn, float turnSpeed)
+        {
+            w.Write(style); w.Write(forward); w.Write(forwardSpeed); w.Write(sideStep); w.Write(sideStepSpeed);
+            w.Write(turn); w.Write(turnSpeed);
         }
 
         /// <summary>byte 0 (no placement), or 1 then SetPositionError, Position.ObjCellID, its frame (origin, then
@@ -1273,6 +1320,7 @@ namespace Acconform.Oracle
             obj.set_weenie_obj(new WeenieObject(moverPlayer));
             SetServerPlayerPhysics(moverPlayer, obj, begin);
             obj.SetMotionTableID(motionTableId);
+            moverMotion = motionTableId != 0;
             obj.SetScaleStatic(scale);
             obj.State = state;
             obj.TransientState = ts;

@@ -11,6 +11,7 @@ motion table" and "the physics builds' stand-ins for the motion layer").
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import sys
 from pathlib import Path
@@ -19,6 +20,7 @@ import pytest
 
 from acconform.compare import compare
 from acconform.errors import InvalidScene
+from acconform.motion_enums import MotionCommand as MC
 from acconform.scene import Scene
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
@@ -89,7 +91,55 @@ def test_the_runtimes_differ_only_in_the_turns_last_bits_and_the_port_follows_ea
     assert fields == {"orientation"}
 
 
+@pytest.mark.parametrize("runtime", RUNTIMES)
+def test_aces_ticks_carry_the_motion_layer_walking_turning_and_standing(runtime):
+    """Each tick of the motion scene carries its motion layer (outcome/5): the MoveToState's keys as the
+    interpreted and raw states, the cycle playing, the velocity and turn the Sequence asks for, no MoveTo."""
+    ticks = recorded_outcomes(DATA, runtime)[WALK].ticks
+    assert all(t.motion is not None and t.motion.interpreted is not None for t in ticks)
+    walked, turned, stopped = ticks[11].motion, ticks[23].motion, ticks[35].motion
+    assert walked.interpreted.forward_command == walked.raw.forward_command == int(MC.WalkForward)
+    assert walked.sequence_velocity[1] > 0.0 and walked.animation is not None
+    assert turned.interpreted.turn_command == int(MC.TurnRight) and turned.sequence_omega[2] != 0.0
+    assert stopped.interpreted.forward_command == int(MC.Ready) and stopped.sequence_velocity == (0.0, 0.0, 0.0)
+    assert {t.motion.movement_type for t in ticks} == {0} and not any(t.motion.is_moving_to for t in ticks)
+    assert len({t.motion.frame_number for t in ticks}) > 3  # the frame advances through the cycles
+
+
+def test_a_tick_scene_without_a_motion_table_answers_no_motion_layer_as_outcome_4():
+    from acconform.port.run import run_scene
+
+    plain = dataclasses.replace(SCENES[WALK], mover=dataclasses.replace(SCENES[WALK].mover, motion_table=None),
+                                ticks=dataclasses.replace(SCENES[WALK].ticks, steps=tuple(
+                                    dataclasses.replace(s, motion=None) for s in SCENES[WALK].ticks.steps)))
+    out = run_scene(plain, runtime="mono")
+    assert out.to_json()["format"] == "acconform.outcome/4" and all(t.motion is None for t in out.ticks)
+
+
+def drawn_motion_records(runtime: str, n: int = 4) -> list:
+    """The first `n` records of the recorded motion shard (ticks-0030: drawn motion tick scenes) on `runtime`."""
+    import gzip
+
+    from acconform.case import Record
+
+    shard = Path(__file__).resolve().parents[1] / "data" / "corpus" / runtime / "ticks-0030.jsonl.gz"
+    with gzip.open(shard, "rt") as f:
+        return [Record.from_json(json.loads(line)) for line, _ in zip(f, range(n))]
+
+
 @pytest.mark.live_oracle
 @pytest.mark.parametrize("name", sorted(SCENES))
 def test_live_ace_answers_each_motion_scene_as_recorded(live, name):
     assert compare(live.run(SCENES[name]), recorded_outcomes(DATA, live.location.runtime)[name], "exact") == [], name
+
+
+@pytest.mark.live_oracle
+def test_live_ace_and_the_port_agree_bit_for_bit_on_drawn_motion_scenes_motion_layers_included(live):
+    from acconform.port.run import run_scene
+
+    runtime = live.location.runtime
+    for record in drawn_motion_records(runtime):
+        ace = live.run(record.scene)
+        assert ace.ticks and all(t.motion is not None for t in ace.ticks if t.error is None), record.scene.name
+        assert compare(run_scene(record.scene, runtime=runtime), ace, "exact") == [], record.scene.name
+        assert compare(ace, record.outcome, "exact") == [], record.scene.name  # the shard holds this answer

@@ -182,7 +182,23 @@ def _tick_bytes(t):
     return b"\0" + _TICK.pack(t.updated, t.update_time, t.cell, t.cur_cell, *t.origin, *t.orientation, *t.velocity,
                               *t.acceleration, *t.omega, *t.cached_velocity, t.state, t.transient_state,
                               t.contact_plane_cell, *t.contact_plane.normal, t.contact_plane.d, *t.sliding_normal,
-                              t.jumped_this_frame, len(t.shadow_cells)) + struct.pack(f"<{len(t.shadow_cells)}I", *t.shadow_cells)
+                              t.jumped_this_frame, len(t.shadow_cells)) + struct.pack(f"<{len(t.shadow_cells)}I", *t.shadow_cells) \
+        + _motion_bytes(t.motion)
+
+
+def _commands(c):
+    return struct.pack("<IIfIfIf", *((0, 0, 0.0, 0, 0.0, 0, 0.0) if c is None else (
+        c.current_style, c.forward_command, c.forward_speed, c.side_step_command, c.side_step_speed, c.turn_command,
+        c.turn_speed)))
+
+
+def _motion_bytes(m):
+    """Facade.WriteMotion's bytes: 0 (no motion table), or 1 and the motion layer, zeros where a part is absent."""
+    if m is None:
+        return b"\0"
+    return (b"\1" + struct.pack("<B", m.interpreted is not None) + _commands(m.interpreted) + _commands(m.raw)
+            + struct.pack("<BIf3f3fBBB", m.animation is not None, m.animation or 0, m.frame_number, *m.sequence_velocity,
+                          *m.sequence_omega, m.movement_type is not None, m.movement_type or 0, m.is_moving_to))
 
 
 def test_unpacking_a_tick_scene_reads_every_tick_state_and_the_error_that_ended_it():
@@ -200,6 +216,26 @@ def test_unpacking_a_tick_scene_reads_every_tick_state_and_the_error_that_ended_
     assert (fvp, case, counts) == (0.0, 9.0, (1, 0, 5.0, 2.5))
     # a transition scene's outcome ends with -1: no ticks
     assert unpack_outcome(_packed() + struct.pack("<i", -1))[0].ticks is None
+
+
+def test_unpacking_a_motion_scenes_ticks_reads_each_ticks_motion_layer_and_the_parts_it_lacks():
+    from dataclasses import replace
+
+    from acconform.outcome import CommandState, MotionTickState, PlaneState, TickState
+
+    base = TickState(True, 1000.1, 0xA9B40001, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0), (0.0, 2.0, 0.0),
+                     (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 2.0, 0.0), 0x400, 0x83, 0xA9B40001,
+                     PlaneState((0.0, 0.0, 1.0), -20.0), (0.0, 0.0, 0.0), False, (0xA9B40001,))
+    walk = CommandState(0x8000003D, 0x45000005, 1.0, 0x6500000F, 0.5, 0x6500000D, -1.0)
+    stand = CommandState(0x8000003D, 0x41000003, 1.0, 0, 1.0, 0, 1.0)
+    ticks = (replace(base, motion=MotionTickState(walk, stand, 0x03000004, 2.75, (0.0, 3.0, 0.0),
+                                                  (0.0, 0.0, -1.5), 7, True)),
+             replace(base, motion=MotionTickState(None, None, None, -0.0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), None, False)))
+    data = (struct.pack("<Bd", 3, 0.0) + struct.pack("<diidd", 9.0, 1, 0, 5.0, 2.5) + _cells(()) + _placement(None)
+            + struct.pack("<i", 2) + b"".join(_tick_bytes(t) for t in ticks))
+    o = unpack_outcome(data)[0]
+    assert o.ticks == ticks
+    assert math.copysign(1.0, o.ticks[1].motion.frame_number) == -1.0
 
 
 def test_a_packed_motion_scene_carries_its_table_and_animations_with_the_movers_records_and_each_motion_input():
