@@ -96,6 +96,9 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "buildings": (lambda s: bool(s.buildings),
                   "buildings: a landblock's LandblockInfo with BuildInfos (a shell GfxObj, its frame and portals into "
                   "its EnvCells), built by ACE's Landblock.init_buildings (scene/5)"),
+    "setup.multipart": (lambda s: any(o.setup is not None for o in s.objects),
+                        "a static object made from a Setup of several parts (each a BSP GfxObj at its placement frame, "
+                        "with or without a per-part DefaultScale) and the Setup's spheres and cylspheres (scene/7)"),
 }
 
 
