@@ -120,6 +120,7 @@ class Plan:
         self.stand_normal = None  # the contact plane's global normal where the mover stands; None: (0, 0, 1)
         self.stand_lift = 0.0  # the origin's height over the contact plane beneath it (a sphere on a slope)
         self.moved_begin = None  # global x, y the policy moved the mover's start to (None: where it was drawn)
+        self.spheres = None  # the mover's spheres, when the policy sets them (None: as drawn)
 
 
 # what a ledge scene is for (the first is the plainest, where shrinking goes):
@@ -638,6 +639,8 @@ def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan
     from acconform.scene import SetupRec
 
     kind = draw(TANGENT_SETUP_KINDS)
+    r = bd.grid_floor(r)  # the mover's one sphere, its radius on GRID (as the obstacles' tangent policy makes it)
+    p.spheres = (SphereRec((0.0, 0.0, r), r),)
     bx, by = math.floor(gx / 192.0) * 192.0, math.floor(gy / 192.0) * 192.0
     lx, ly = bd.grid_floor(draw(TANGENT_SETUP_STARTS)), bd.grid_floor(draw(TANGENT_SETUP_STARTS))
     ax, ay, heading = draw(MULTIPART_AXES)

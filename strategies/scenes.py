@@ -351,6 +351,9 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
     reach = max(s.center[2] + s.radius for s in spheres)
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     plan = draw(ob.POLICIES[policy](gx0, gy0, r))
+    if plan.spheres is not None:  # the policy set the mover's spheres (multipart's tangent variant)
+        spheres = plan.spheres
+        r, reach = spheres[0].radius, max(s.center[2] + s.radius for s in spheres)
     if plan.moved_begin is not None:  # the policy moved the start (straddle: beside a landblock border)
         bx, by, lx, ly = split_global(*plan.moved_begin)
         gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
