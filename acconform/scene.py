@@ -925,10 +925,12 @@ class Mover:
     sliding_normal: Vec3 | None = None
     placement: Placement | None = None  # None: Position = begin, CurCell = its cell (no placement)
 
-    def to_json(self):
+    def to_json(self, explicit_via: bool = False):
+        """`explicit_via`: the placement says its `via` even through SetPosition (scene/7, whose
+        placements, as /6's, go through enter_world unless they say otherwise)."""
         d = {"spheres": [s.to_json() for s in self.spheres], "scale": write_f32(self.scale),
              "step_up_height": write_f32(self.step_up_height), "step_down_height": write_f32(self.step_down_height)}
-        return mover_start_json(self, d)
+        return mover_start_json(self, d, explicit_via)
 
     @staticmethod
     def from_json(r: Reader, placement: bool = True, ticks: bool = False, vias: bool = True) -> "Mover":
@@ -1018,7 +1020,7 @@ class Scene:
             d["env_cells"] = [c.to_json() for c in self.env_cells]
         if self.buildings:
             d["buildings"] = [b.to_json() for b in self.buildings]
-        d["mover"] = self.mover.to_json()
+        d["mover"] = self.mover.to_json(explicit_via=d["format"] == FORMAT)
         if self.ticks is not None:
             d["ticks"] = self.ticks.to_json()
         return d

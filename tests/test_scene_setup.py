@@ -171,3 +171,15 @@ def test_a_setup_static_index_past_its_id_range_is_refused():
 def test_the_scenes_records_make_the_setup_static_from_its_setup_id():
     s = validate_scene(scene())
     assert dat.scene_records(s).statics[0].did == dat.dat_world(s).statics[0].did == dat.SETUP_BASE
+
+
+def test_a_scene_7_placement_through_set_position_says_its_via_and_reads_back():
+    from dataclasses import replace
+
+    from acconform.scene import Placement
+
+    s = scene()
+    placed = validate_scene(replace(s, mover=replace(s.mover, placement=Placement(0, False))))
+    doc = placed.to_json()
+    assert doc["format"] == FORMAT and doc["mover"]["placement"]["via"] == "set_position"
+    assert Scene.from_json(doc) == placed
