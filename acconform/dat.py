@@ -30,6 +30,14 @@ What each shape becomes (`static_records(obj, index)`):
   object's position (`PartArray.UpdateParts`); Height, Radius, step heights 0; sorting and
   selection spheres zero.
 
+- **setup** (scene/7, a Setup of several parts; `setup_records`): each part a physics GfxObj
+  written as a BSP static's, id ``0x01F00000 + 16 index + k`` for part k (`PART_GFX_OBJ_BASE`; at
+  most 16 parts, index below 0xF000, so these ids end below the buildings' shells), then a Setup,
+  id ``0x02000001 + index``, naming the parts in order: flags HasDefaultScale when the parts have
+  scales (then each part's scale, in order), one placement frame keyed 0 (Placement.Default, which
+  `PartArray.SetPlacementFrame` falls back to when 0x65 is absent) holding each part's frame and no
+  hooks, the Setup's cylspheres and spheres, Height, Radius and step heights 0 as every static's.
+
 The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
 the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
 Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxObj mesh, id
@@ -95,14 +103,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from .scene import (BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
-                    Environment, Landblock, Mover, Placement, PolygonRec, Position, Scene, SphereShape, StaticObject,
+                    Environment, Landblock, Mover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
+                    StaticObject,
                     ENV_CELL_FIRST, newell_normal)
 from .staging import MOVER_ID
 from .motion_scene import ANIMATION_BASE, MOTION_TABLE_ID, cycle_key
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
-MAX_OBJECTS = 0xFEFFFF  # ids stay inside their DAT type's range, below the buildings'
+MAX_OBJECTS = 0xEFFFFF  # ids stay inside their DAT type's range, below the parts' and the buildings'
+PART_GFX_OBJ_BASE = 0x01F00000  # GfxObj id of part 0 of static 0's Setup of several parts (scene/7 `setup`)
+MAX_PARTS = 16  # each static has 16 part ids: part k of static i is PART_GFX_OBJ_BASE + 16 i + k (scene.MAX_SETUP_PARTS)
+MAX_SETUP_OBJECTS = 0xF000  # a static with a setup has an index below this (its parts' ids end below the buildings')
 BUILDING_GFX_OBJ_BASE = 0x01FF0000  # GfxObj id of building 0's shell
 MAX_BUILDINGS = 0xFFFF
 MOVER_GFX_OBJ_ID = 0x01000000  # the mover's part
@@ -110,6 +122,8 @@ MOVER_SETUP_ID = 0x02000000  # the mover's Setup
 
 # ACE.Entity.Enum.GfxObjFlags, StipplingType, SetupFlags
 GFX_HAS_PHYSICS = 0x1
+SETUP_HAS_DEFAULT_SCALE = 0x2
+DEFAULT_PLACEMENT = 0  # ACE.Entity.Enum.Placement.Default: the key PartArray.SetPlacementFrame falls back to
 STIPPLING_NO_POS = 0x4
 STIPPLING_NO_NEG = 0x8
 VERTEX_TYPE = 1  # CVertexArray.Unpack reads only type 1
@@ -262,15 +276,30 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
 
 
 def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
-          default_animation: int = 0, default_motion_table: int = 0) -> bytes:
-    """FileTypes/SetupModel: flags 0, the parts, no holding locations, connection points or
-    placement frames, the cylspheres ((low point, radius, height)) and spheres ((centre, radius)),
-    Height and Radius 0, the step heights, zero sorting and selection spheres, no lights, the
-    DefaultAnimation and DefaultMotionTable given (0, none, by default), no default script, sound
-    table or script table."""
-    out = [_u32.pack(setup_id), _u32.pack(0), _u32.pack(len(parts))]
+          placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0) -> bytes:
+    """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, else 0), the parts,
+    the DefaultScale (one vector per part), no holding locations or connection points, the placement
+    frames (none, or with `placement` (a scene Frame per part) one: key 0, Placement.Default, its
+    AnimationFrame's frames and no hooks), the cylspheres ((low point, radius, height)) and spheres
+    ((centre, radius)), Height and Radius 0, the step heights, zero sorting and selection spheres, no
+    lights, the DefaultAnimation and DefaultMotionTable given (0, none, by default), no default script,
+    sound table or script table."""
+    flags = SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0
+    out = [_u32.pack(setup_id), _u32.pack(flags), _u32.pack(len(parts))]
     out += [_u32.pack(p) for p in parts]
-    out.append(_i32.pack(0) * 3)  # HoldingLocations, ConnectionPoints, PlacementFrames
+    if default_scale is not None:
+        if len(default_scale) != len(parts):
+            raise ValueError(f"a DefaultScale has one vector per part: {len(default_scale)} for {len(parts)} parts")
+        out += [_3f.pack(*v) for v in default_scale]
+    out.append(_i32.pack(0) * 2)  # HoldingLocations, ConnectionPoints
+    if placement is None:
+        out.append(_i32.pack(0))  # PlacementFrames
+    else:
+        if len(placement) != len(parts):
+            raise ValueError(f"a placement frame has one frame per part: {len(placement)} for {len(parts)} parts")
+        out.append(_i32.pack(1) + _i32.pack(DEFAULT_PLACEMENT))
+        out += [frame(f) for f in placement]
+        out.append(_u32.pack(0))  # the AnimationFrame's hooks
     out.append(_u32.pack(len(cylspheres)))
     for low, radius, height in cylspheres:
         out.append(_3f.pack(*low) + struct.pack("<2f", radius, height))
@@ -289,6 +318,8 @@ def static_records(obj: StaticObject, index: int) -> ObjectRecords:
     """The DAT records static object number `index` (0-based, scene order) is made from."""
     if not 0 <= index < MAX_OBJECTS:
         raise ValueError(f"static object index {index} outside 0..{MAX_OBJECTS - 1}")
+    if obj.setup is not None:
+        return setup_records(obj.setup, index)
     shape = obj.shape
     gfx_id = GFX_OBJ_BASE + index
     if isinstance(shape, BSPShape):
@@ -302,6 +333,25 @@ def static_records(obj: StaticObject, index: int) -> ObjectRecords:
     else:
         raise TypeError(f"static object {obj.id:#010x}: unknown shape {type(shape).__name__}")
     return ObjectRecords(setup_id, (part, DatRecord(setup_id, "SetupModel", body)))
+
+
+def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
+    """A static's Setup of several parts (scene/7 `setup`), static number `index`: each part's physics
+    GfxObj (`gfx_obj_physics`), id ``PART_GFX_OBJ_BASE + 16 index + k`` for part k, then the Setup, id
+    ``SETUP_BASE + index``, naming them in order, with their frames as its default placement, their
+    scales as its DefaultScale (when the parts have one) and the Setup's spheres and cylspheres."""
+    if not 0 <= index < MAX_SETUP_OBJECTS:
+        raise ValueError(f"a static with a setup has an index in 0..{MAX_SETUP_OBJECTS - 1}, got {index}")
+    if not 1 <= len(rec.parts) <= MAX_PARTS:
+        raise ValueError(f"a static's setup has 1..{MAX_PARTS} parts, got {len(rec.parts)}")
+    ids = [PART_GFX_OBJ_BASE + MAX_PARTS * index + k for k in range(len(rec.parts))]
+    parts = tuple(DatRecord(i, "GfxObj", gfx_obj_physics(i, p.shape)) for i, p in zip(ids, rec.parts))
+    setup_id = SETUP_BASE + index
+    scaled = rec.parts[0].scale is not None
+    body = setup(setup_id, ids, spheres=[(s.center, s.radius) for s in rec.spheres],
+                 cylspheres=[(c.low_point, c.radius, c.height) for c in rec.cylspheres],
+                 placement=[p.frame for p in rec.parts], default_scale=[p.scale for p in rec.parts] if scaled else None)
+    return ObjectRecords(setup_id, parts + (DatRecord(setup_id, "SetupModel", body),))
 
 
 def mover_records(mover: Mover) -> ObjectRecords:
@@ -683,7 +733,7 @@ def dat_world(scene: Scene) -> DatWorld:
 __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatStatic", "DatWorld",
            "dat_world", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
            "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
-           "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
+           "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "setup_records", "GFX_OBJ_BASE", "PART_GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF", "TAG_PORT"]
 
 

@@ -106,6 +106,9 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                                    "the mover's Player has a PlayerKillerStatus other than NPK (scene/6: "
                                    "mover.player_killer_status): its WeenieObject's IsPK/IsPKLite answers, and a PK or "
                                    "PKLite player's jump takes HandleActionJump's FastTick branch"),
+    "setup.multipart": (lambda s: any(o.setup is not None for o in s.objects),
+                        "a static object made from a Setup of several parts (each a BSP GfxObj at its placement frame, "
+                        "with or without a per-part DefaultScale) and the Setup's spheres and cylspheres (scene/7)"),
 }
 
 

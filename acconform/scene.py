@@ -1,8 +1,8 @@
 """The scene: everything one transition needs, as immutable records with a versioned JSON form.
 
-A scene is what both the port and the oracle take. Format ``acconform.scene/6`` (README's
-"Scene format" section documents every field); ``/5``, ``/4``, ``/3``, ``/2`` and ``/1`` files still read
-(a /5 scene is a /6 scene whose placements go through SetPosition: its ``placement`` has no ``via``, and
+A scene is what both the port and the oracle take. Format ``acconform.scene/7`` (README's
+"Scene format" section documents every field); ``/6``, ``/5``, ``/4``, ``/3``, ``/2`` and ``/1`` files still read
+(a /6 scene is a /7 scene whose statics each have one ``shape``, none a ``setup`` of several parts; a /5 scene is a /6 scene whose placements go through SetPosition: its ``placement`` has no ``via``, and
 means ``"via": "set_position"``; a /4 scene is a /5 scene without ``buildings``; a /3 scene is a /4 scene without ``ticks``; a /2 scene is a /3 scene whose mover has no ``placement``; a
 /1 scene is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with
 terrain). A scene with ``ticks`` is a tick scene: the mover has no ``end``, and ACE's per-tick
@@ -25,7 +25,8 @@ from .motion_scene import CommandInput, MotionInput, MotionTableSpec, MoveToInpu
 from .flags import (PLAYER_KILLER_STATUS_NPK, CullMode, PhysicsState, PlayerKillerStatus, SetPositionFlags, TransientState,
                     flag_names)
 
-FORMAT = "acconform.scene/6"
+FORMAT = "acconform.scene/7"
+FORMAT_V6 = "acconform.scene/6"  # what a scene with no multi-part static (a static's `setup`) is written as
 FORMAT_V5 = "acconform.scene/5"  # what a scene with buildings and no placement through enter_world is written as
 FORMAT_V4 = "acconform.scene/4"  # what a scene with ticks and no buildings is written as
 FORMAT_V3 = "acconform.scene/3"  # what a scene with a placement and no ticks is written as
@@ -582,25 +583,111 @@ class Building:
         return Building(lb_id, frame, shape, portals, leaves)
 
 
+MAX_SETUP_PARTS = 16  # acconform/dat.py gives each static 16 GfxObj ids for its Setup's parts
+
+
 @dataclass(frozen=True, slots=True)
-class StaticObject:
-    id: int
-    position: Position
-    shape: Shape
-    state: int = int(PhysicsState.Static)  # PhysicsState flags
-    scale: float = 1.0
+class PartRec:
+    """One part of a static's Setup: a GfxObj with a physics BSP (`shape`), its frame in the Setup's
+    default placement (PlacementFrames[0], which PartArray.SetPlacementFrame falls back to) and its
+    Setup.DefaultScale entry (None: the Setup has no DefaultScale; given on every part or none)."""
+
+    shape: BSPShape
+    frame: Frame = Frame((0.0, 0.0, 0.0))
+    scale: Vec3 | None = None
 
     def to_json(self):
-        return {"id": write_id(self.id), "position": self.position.to_json(), "shape": self.shape.to_json(),
+        d = {"shape": self.shape.to_json(), **self.frame.to_json()}
+        if self.scale is not None:
+            d["scale"] = write_vec(self.scale)
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "PartRec":
+        r.obj({"shape", "origin", "orientation", "scale"})
+        shape = _shape_from_json(r["shape"])
+        if not isinstance(shape, BSPShape):
+            r["shape"]["kind"].fail(f"a Setup's part is a GfxObj with a physics BSP (kind 'bsp'), got {shape.kind!r}; "
+                                    "spheres and cylspheres are the Setup's own (setup.spheres, setup.cylspheres)")
+        frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
+        scale = None
+        if r.given("scale"):
+            scale = r["scale"].vec3()
+            for axis, c in zip("xyz", scale):
+                if not c > 0:
+                    r["scale"].fail(f"a part's scale needs positive components, got {axis} = {c}")
+        return PartRec(shape, frame, scale)
+
+
+@dataclass(frozen=True, slots=True)
+class SetupRec:
+    """A static's Setup of several parts (scene/7): the parts (1..16, each a BSP GfxObj at its
+    placement frame, with or without a DefaultScale entry) and the Setup's own spheres and cylspheres
+    (any number each). Its Height, Radius and step heights are 0, as every static's Setup's are."""
+
+    parts: tuple[PartRec, ...]
+    spheres: tuple[SphereRec, ...] = ()
+    cylspheres: tuple[CylSphereShape, ...] = ()
+
+    def to_json(self):
+        d = {"parts": [p.to_json() for p in self.parts]}
+        if self.spheres:
+            d["spheres"] = [s.to_json() for s in self.spheres]
+        if self.cylspheres:
+            d["cylspheres"] = [{k: v for k, v in c.to_json().items() if k != "kind"} for c in self.cylspheres]
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "SetupRec":
+        r.obj({"parts", "spheres", "cylspheres"})
+        parts = tuple(PartRec.from_json(p) for p in r["parts"].list(min_count=1, max_count=MAX_SETUP_PARTS))
+        scaled = [p.scale is not None for p in parts]
+        if any(scaled) and not all(scaled):
+            r["parts"][scaled.index(False)].fail(
+                f"no scale, but parts[{scaled.index(True)}] has one: a Setup's DefaultScale has an entry for every part "
+                "or none (give scale on every part or on none)")
+        spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list()) if r.given("spheres") else ()
+        cylspheres = ()
+        if r.given("cylspheres"):
+            cylspheres = tuple(_shape_from_json(Reader({"kind": "cylsphere", **c.obj({"low_point", "radius", "height"}).value},
+                                                       c.path)) for c in r["cylspheres"].list())
+        return SetupRec(parts, spheres, cylspheres)
+
+
+@dataclass(frozen=True, slots=True)
+class StaticObject:
+    """A static object: `shape` (one BSP GfxObj, or a one-part Setup with a sphere or a cylsphere),
+    or, in scene/7, `setup` (a Setup of several parts; `shape` is then None)."""
+
+    id: int
+    position: Position
+    shape: Shape | None
+    state: int = int(PhysicsState.Static)  # PhysicsState flags
+    scale: float = 1.0
+    setup: SetupRec | None = None
+
+    def to_json(self):
+        body = {"setup": self.setup.to_json()} if self.setup is not None else {"shape": self.shape.to_json()}
+        return {"id": write_id(self.id), "position": self.position.to_json(), **body,
                 "state": flag_names(PhysicsState, self.state), "scale": write_f32(self.scale)}
 
     @staticmethod
-    def from_json(r: Reader) -> "StaticObject":
-        r.obj({"id", "position", "shape", "state", "scale"})
+    def from_json(r: Reader, setups: bool = True) -> "StaticObject":
+        """`setups`: the format knows `setup` (scene/7)."""
+        if not setups and isinstance(r.value, dict) and "setup" in r.value:
+            r["setup"].fail(f"a static's setup needs format {FORMAT!r} (older formats have one shape per static)")
+        r.obj({"id", "position", "shape", "state", "scale", *(("setup",) if setups else ())})
+        if setups and "shape" in r.value and "setup" in r.value:
+            r["setup"].fail("a static has a shape or a setup (several parts), not both")
+        if setups and "shape" not in r.value and "setup" not in r.value:
+            r.fail("missing: a static needs a shape or a setup (several parts)")
         state = r["state"].flags(PhysicsState) if r.given("state") else int(PhysicsState.Static)
         scale = r["scale"].f32() if r.given("scale") else 1.0
         if not scale > 0:
             r["scale"].fail(f"scale must be positive, got {scale}")
+        if setups and "setup" in r.value:
+            return StaticObject(r["id"].id_(), Position.from_json(r["position"]), None, state, scale,
+                                SetupRec.from_json(r["setup"]))
         return StaticObject(r["id"].id_(), Position.from_json(r["position"]), _shape_from_json(r["shape"]), state, scale)
 
 
@@ -653,9 +740,9 @@ class Placement:
 
     @staticmethod
     def from_json(r: Reader, vias: bool = True) -> "Placement":
-        """`vias`: the format knows `via` (scene/6; older formats place through SetPosition)."""
+        """`vias`: the format knows `via` (scene/6 and later; older formats place through SetPosition)."""
         if not vias and isinstance(r.value, dict) and "via" in r.value:
-            r["via"].fail(f"via needs format {FORMAT!r} (older formats place through SetPosition)")
+            r["via"].fail(f"via needs format {FORMAT_V6!r} or later (older formats place through SetPosition)")
         r.obj({"flags", "get_cell", *(("via",) if vias else ())})
         via = "enter_world" if vias else "set_position"
         if r.given("via"):
@@ -769,7 +856,7 @@ class TickStep:
         if not motion and isinstance(r.value, dict):
             for name in MOTION_INPUTS:
                 if name in r.value:
-                    r[name].fail(f"a motion input needs format {FORMAT!r} (older formats have none)")
+                    r[name].fail(f"a motion input needs format {FORMAT_V6!r} or later (older formats have none)")
         r.obj({"dt", *TICK_INPUTS})
         dt = r["dt"].f64()
         if dt < 0:
@@ -896,10 +983,12 @@ class Mover:
     # (which copies it); a player without the property is NPK. PK and PKLite are IsPKType: FastTick's jump.
     player_killer_status: int = PLAYER_KILLER_STATUS_NPK
 
-    def to_json(self):
+    def to_json(self, explicit_via: bool = False):
+        """`explicit_via`: the placement says its `via` even through SetPosition (scene/7, whose
+        placements, as /6's, go through enter_world unless they say otherwise)."""
         d = {"spheres": [s.to_json() for s in self.spheres], "scale": write_f32(self.scale),
              "step_up_height": write_f32(self.step_up_height), "step_down_height": write_f32(self.step_down_height)}
-        mover_start_json(self, d)
+        mover_start_json(self, d, explicit_via)
         if self.motion_table is not None:
             d["motion_table"] = self.motion_table.to_json()
         if self.player_killer_status != PLAYER_KILLER_STATUS_NPK:
@@ -916,7 +1005,7 @@ class Mover:
             r["end"].fail("a tick scene's mover has no end: its ticks move it (omit end)")
         for field in ("motion_table", "player_killer_status"):
             if not vias and isinstance(r.value, dict) and field in r.value:
-                r[field].fail(f"{field} needs format {FORMAT!r} (older formats have none)")
+                r[field].fail(f"{field} needs format {FORMAT_V6!r} or later (older formats have none)")
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
                *(("motion_table", "player_killer_status") if vias else ())})
@@ -985,12 +1074,14 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/6 for a placement through enter_world, /5 for
-        buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
-        if self.mover.placement is not None and self.mover.placement.via == "enter_world":
+        """The oldest format that holds the scene (/7 for a static with a setup, /6 for a placement
+        through enter_world, /5 for buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
+        if any(o.setup is not None for o in self.objects):
             return FORMAT
         if self.has_motion or self.mover.player_killer_status != PLAYER_KILLER_STATUS_NPK:
-            return FORMAT
+            return FORMAT_V6
+        if self.mover.placement is not None and self.mover.placement.via == "enter_world":
+            return FORMAT_V6
         if self.buildings:
             return FORMAT_V5
         if self.ticks is not None:
@@ -1015,7 +1106,7 @@ class Scene:
             d["env_cells"] = [c.to_json() for c in self.env_cells]
         if self.buildings:
             d["buildings"] = [b.to_json() for b in self.buildings]
-        d["mover"] = self.mover.to_json()
+        d["mover"] = self.mover.to_json(explicit_via=d["format"] == FORMAT)
         if self.ticks is not None:
             d["ticks"] = self.ticks.to_json()
         return d
@@ -1032,15 +1123,15 @@ class Scene:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         indoor = () if v1 else ("environments", "env_cells")
-        ticks_field = ("ticks",) if fmt in (FORMAT_V4, FORMAT_V5, FORMAT) else ()
-        buildings_field = ("buildings",) if fmt in (FORMAT_V5, FORMAT) else ()
+        ticks_field = ("ticks",) if fmt in (FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT) else ()
+        buildings_field = ("buildings",) if fmt in (FORMAT_V5, FORMAT_V6, FORMAT) else ()
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3) and "ticks" in doc:
             r["ticks"].fail(f"ticks need format {FORMAT_V4!r} or later (older formats have no ticks)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4) and "buildings" in doc:
             r["buildings"].fail(f"buildings need format {FORMAT_V5!r} or later (older formats have no buildings)")
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field,
                *buildings_field})
-        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5):
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.given("name") else ""
         mode = "server"
@@ -1054,16 +1145,17 @@ class Scene:
         if r.given("land_height_table"):
             table = tuple(h.f32() for h in r["land_height_table"].list(count=256))
         landblocks = tuple(Landblock.from_json(lb, not v1) for lb in r["landblocks"].list(min_count=1))
-        objects = tuple(StaticObject.from_json(o) for o in r["objects"].list()) if r.given("objects") else ()
+        setups = fmt == FORMAT
+        objects = tuple(StaticObject.from_json(o, setups) for o in r["objects"].list()) if r.given("objects") else ()
         environments = env_cells = ()
         if r.given("environments"):
             environments = tuple(Environment.from_json(e) for e in r["environments"].list())
         if r.given("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
         buildings = tuple(Building.from_json(b) for b in r["buildings"].list()) if r.given("buildings") else ()
-        ticks = Ticks.from_json(r["ticks"], motion=fmt == FORMAT) if r.has("ticks") else None
-        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT),
-                                ticks=ticks is not None, vias=fmt == FORMAT)
+        ticks = Ticks.from_json(r["ticks"], motion=fmt in (FORMAT_V6, FORMAT)) if r.has("ticks") else None
+        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT),
+                                ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT))
         scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings)
         check_consistency(scene, path)
         return scene

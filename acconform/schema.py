@@ -149,8 +149,28 @@ def _sample():
     scenes = []
     for kind in GEOMETRY_KINDS:  # tick scenes: _tick_scenes below, every input once
         scenes += list(sample_scenes((kind,), SAMPLE_PER_KIND, SAMPLE_SEED))
-    scenes += _every_optional_field(scenes[0])
+    scenes += _every_optional_field(scenes[0]) + _setup_scenes(scenes)
     return scenes, [run_scene(s) for s in scenes]
+
+
+def _setup_scenes(scenes):
+    """A scene/7 variant of the first sampled scene with a BSP static: that static made a Setup of two
+    parts (the second turned, lifted and given per-part scales in the other variant) with spheres and
+    cylspheres, so every field of a setup is written."""
+    from dataclasses import replace
+
+    from .scene import BSPShape, CylSphereShape, Frame, PartRec, SetupRec, SphereRec
+
+    for scene in scenes:
+        for i, o in enumerate(scene.objects):
+            if isinstance(o.shape, BSPShape):
+                plain = SetupRec((PartRec(o.shape), PartRec(o.shape, Frame((1.0, 0.0, 0.5), (0.0, 0.0, 0.0, 1.0)))))
+                full = SetupRec(tuple(replace(p, scale=(1.0, 1.0, 2.0)) for p in plain.parts),
+                                (SphereRec((0.0, 0.0, 0.5), 0.5),), (CylSphereShape((0.0, 0.0, 0.0), 0.5, 1.0),))
+                objects = list(scene.objects)
+                return [replace(scene, objects=tuple(objects[:i] + [replace(o, shape=None, setup=s)] + objects[i + 1:]))
+                        for s in (plain, full)]
+    return []
 
 
 def _tick_scenes(scene):
@@ -236,16 +256,17 @@ def schemas() -> tuple[dict, dict]:
     from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V2 as OUTCOME_FORMAT_V2, FORMAT_V3 as OUTCOME_FORMAT_V3,
                           FORMAT_V4 as OUTCOME_FORMAT_V4, Outcome)
     from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
-                        FORMAT_V3 as SCENE_FORMAT_V3, FORMAT_V4 as SCENE_FORMAT_V4, FORMAT_V5 as SCENE_FORMAT_V5)
+                        FORMAT_V3 as SCENE_FORMAT_V3, FORMAT_V4 as SCENE_FORMAT_V4, FORMAT_V5 as SCENE_FORMAT_V5,
+                        FORMAT_V6 as SCENE_FORMAT_V6)
 
     scenes, outcomes = _sample()
     scenes += _tick_scenes(scenes[0])
     s = _Inferrer(nonfinite_floats=False)
     # an outdoor scene is written as /1, an indoor one as /2, one with a placement as /3, a tick scene as /4,
-    # one with buildings as /5, one placed through enter_world as /6
+    # one with buildings as /5, one placed through enter_world as /6, one with a static's setup as /7
     scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene",
                      (SCENE_FORMAT_V1, SCENE_FORMAT_V2, SCENE_FORMAT_V3, SCENE_FORMAT_V4, SCENE_FORMAT_V5,
-                      SCENE_FORMAT))
+                      SCENE_FORMAT_V6, SCENE_FORMAT))
     o = _Inferrer(nonfinite_floats=True)
     docs = ([x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
             + [x.to_json() for x in _tick_outcomes()])

@@ -77,12 +77,12 @@ def scene_kind(scene: Scene) -> str:
 
 def geometry_kind(scene: Scene) -> str:
     """The kind of the scene's world (what an implementation's handshake lists):
-    buildings with buildings, indoor with EnvCells, bsp with a BSP object, obstacles with only spheres and cylspheres, else terrain."""
+    buildings with buildings, indoor with EnvCells, bsp with a BSP object (or a Setup of BSP parts), obstacles with only spheres and cylspheres, else terrain."""
     if scene.buildings:
         return "buildings"
     if scene.env_cells:
         return "indoor"
-    kinds = {o.shape.kind for o in scene.objects}
+    kinds = {"bsp" if o.setup is not None else o.shape.kind for o in scene.objects}  # a setup's parts are BSPs
     if "bsp" in kinds:
         return "bsp"
     if kinds:

@@ -120,6 +120,7 @@ class Plan:
         self.stand_normal = None  # the contact plane's global normal where the mover stands; None: (0, 0, 1)
         self.stand_lift = 0.0  # the origin's height over the contact plane beneath it (a sphere on a slope)
         self.moved_begin = None  # global x, y the policy moved the mover's start to (None: where it was drawn)
+        self.spheres = None  # the mover's spheres, when the policy sets them (None: as drawn)
 
 
 # what a ledge scene is for (the first is the plainest, where shrinking goes):
@@ -513,9 +514,157 @@ def straddle(draw, gx: float, gy: float, r: float, scene_kind: str = "bsp") -> P
     return p
 
 
+# multipart: a static made from a Setup of two to four BSP parts (scene/7 `setup`), each a box at its own
+# offset and turn, sometimes with per-part scales (Setup.DefaultScale: ACE's PhysicsPart collides with its
+# BSP scaled by the part's scale.z alone), with the Setup's own spheres and cylspheres (ACE's
+# FindObjCollisions: the parts' BSPs under HasPhysicsBSP, else the cylspheres if any, else the spheres).
+# - corner: the mover walks at a corner of one part (top or bottom, so stepping up it too);
+# - spheres: several spheres and cylspheres beside the parts, the state picking which ACE collides with;
+# - touching: two of the Setup's spheres touching (the centres' distance their radius sum, or one ulp
+#   either side), the mover walking at the point where they meet;
+# - tangent: the mover's sphere at the end of a one-step move along an axis exactly tangent to one of
+#   the Setup's spheres (or cylspheres), or one ulp of its radius either side: every coordinate and
+#   the radius sum on boundaries.GRID, as the obstacles' tangent policy builds it.
+MULTIPART_VARIANTS = st.sampled_from(("corner", "corner", "corner", "spheres", "touching", "tangent", "tangent"))
+PART_COUNTS = dr.ints(2, 4)
+PART_SIDES = dr.f32(0.3, 2.0)
+PART_HEIGHTS = dr.OneOf(st.sampled_from((0.5, 1.0, 2.0)), dr.f32(0.2, 3.0))
+PART_OFFSETS = dr.OneOf(st.sampled_from((0.0, 0.5, -0.5, 1.0, -1.0)), dr.f32(-2.0, 2.0))
+PART_LIFTS = dr.OneOf(st.sampled_from((0.0, 0.0, 0.25, 0.5)), dr.f32(-0.5, 1.0))
+PART_YAWS = dr.OneOf(st.sampled_from((0.0, 0.0, 30.0, 45.0, 90.0)), dr.floats(0.0, 359.0))
+PART_SCALES = dr.OneOf(st.sampled_from(((1.0, 1.0, 1.0), (1.0, 1.0, 2.0), (0.5, 0.5, 0.5), (2.0, 2.0, 1.0),
+                                        (1.5, 1.5, 1.5), (1.0, 1.0, 0.5))),
+                       dr.eager(st.tuples(sh.f32s(0.5, 2.0), sh.f32s(0.5, 2.0), sh.f32s(0.5, 2.0))))
+SCALED_PARTS = st.sampled_from((False, False, True))
+SETUP_SPHERE_COUNTS, SETUP_CYL_COUNTS = dr.ints(0, 3), dr.ints(0, 2)
+SETUP_RADII = dr.f32(0.2, 1.2)
+MULTIPART_STATES = st.sampled_from((BSP_STATE,) * 6 + (int(PhysicsState.Static),) * 3
+                                   + (BSP_STATE | int(PhysicsState.Ethereal),))
+CORNER_DISTANCES = dr.f32(0.2, 3.0)  # of the mover's radius, from the corner to the start
+CORNER_THROUGH = st.sampled_from((1.0, 1.5, 2.0, 3.0))
+# touching spheres: radii on a 1/16 grid so their sum is exact; the centres' distance that sum or an ulp off
+TOUCH_SPHERE_RADII = st.sampled_from(tuple(k / 16 for k in range(3, 17)))
+ULP_OFFSETS = st.sampled_from((0, 0, 1, -1))
+TANGENT_SETUP_KINDS = st.sampled_from(("sphere", "sphere", "cylsphere"))
+TANGENT_SETUP_STARTS = dr.f32(70.0, 118.0)  # block-local, on GRID once floored
+MULTIPART_AXES = st.sampled_from(((1, 0, 0.0), (-1, 0, 180.0), (0, 1, 90.0), (0, -1, 270.0)))
+SETUP_TANGENT_STEPS = dr.f32(0.25, 1.0)  # of the mover's radius
+
+
+def _yaw_quat(deg: float):
+    """A turn about z as a float32 quaternion (w, x, y, z)."""
+    t = math.radians(deg) / 2
+    return (to_f32(math.cos(t)), 0.0, 0.0, to_f32(math.sin(t)))
+
+
+def _ulps(x: float, k: int) -> float:
+    from acconform.numerics import f32_next_up
+
+    for _ in range(abs(k)):
+        x = f32_next_up(x) if k > 0 else -f32_next_up(-x)
+    return x
+
+
+def _parts(draw) -> tuple:
+    from acconform.scene import Frame, PartRec
+
+    scaled = draw(SCALED_PARTS)
+    parts = []
+    for _ in range(draw(PART_COUNTS)):
+        shape = sh.box(draw(PART_SIDES), draw(PART_SIDES), dr.take(draw, PART_HEIGHTS))
+        frame = Frame((dr.take(draw, PART_OFFSETS), dr.take(draw, PART_OFFSETS), dr.take(draw, PART_LIFTS)),
+                      _yaw_quat(dr.take(draw, PART_YAWS)))
+        parts.append(PartRec(shape, frame, tuple(map(to_f32, dr.take(draw, PART_SCALES))) if scaled else None))
+    return tuple(parts)
+
+
+def _round_spheres(draw) -> tuple[tuple, tuple]:
+    spheres = tuple(SphereRec((dr.take(draw, PART_OFFSETS), dr.take(draw, PART_OFFSETS), draw(SETUP_RADII)),
+                              draw(SETUP_RADII)) for _ in range(draw(SETUP_SPHERE_COUNTS)))
+    cyls = tuple(CylSphereShape((dr.take(draw, PART_OFFSETS), dr.take(draw, PART_OFFSETS), 0.0), draw(SETUP_RADII),
+                                dr.take(draw, PART_HEIGHTS)) for _ in range(draw(SETUP_CYL_COUNTS)))
+    return spheres, cyls
+
+
+def _part_corner(part, yaw_deg: float, corner: int) -> tuple[float, float]:
+    """Where a part's box corner (0..3, its top and bottom alike) lies about the object's origin,
+    in doubles: the box's x, y extent scaled by the part's scale.z (what ACE's collision scales its
+    BSP by), turned by the part's frame and then the object's yaw."""
+    xs = [v[0] for p in part.shape.polygons for v in p.vertices]
+    ys = [v[1] for p in part.shape.polygons for v in p.vertices]
+    k = part.scale[2] if part.scale is not None else 1.0
+    x, y = (max(xs) if corner & 1 else min(xs)) * k, (max(ys) if corner & 2 else min(ys)) * k
+    w, _, _, z = part.frame.orientation
+    x, y = _rot(math.degrees(2 * math.atan2(z, w)), x, y)
+    return _rot(yaw_deg, x + part.frame.origin[0], y + part.frame.origin[1])
+
+
+@st.composite
+def multipart(draw, gx: float, gy: float, r: float) -> Plan:
+    from acconform.scene import SetupRec
+
+    variant = draw(MULTIPART_VARIANTS)
+    p = Plan()
+    p.edge_slide = draw(EDGE_SLIDE)
+    parts = _parts(draw)
+    if variant == "tangent":
+        return _setup_tangent(draw, p, parts, gx, gy, r)
+    spheres, cyls = _round_spheres(draw) if variant != "corner" or draw(ONE_IN_FOUR) else ((), ())
+    state = draw(MULTIPART_STATES)
+    yaw = dr.take(draw, YAWS)
+    if variant == "touching":
+        r1, r2 = draw(TOUCH_SPHERE_RADII), draw(TOUCH_SPHERE_RADII)
+        z = max(r1, r2)
+        dist = _ulps(to_f32(r1 + r2), draw(ULP_OFFSETS))
+        spheres = (SphereRec((0.0, 0.0, z), r1), SphereRec((dist, 0.0, z), r2)) + spheres
+        cyls, state = (), int(PhysicsState.Static)
+        ax, ay = _rot(yaw, r1, 0.0)  # where they meet, about the object's origin
+    else:
+        ax, ay = _part_corner(parts[dr.index(draw, len(parts))], yaw, dr.index(draw, 4))
+    heading = dr.take(draw, YAWS)
+    d = r * draw(CORNER_DISTANCES) + r
+    ox, oy = gx - ax + d * math.cos(math.radians(heading)), gy - ay + d * math.sin(math.radians(heading))
+    p.objects.append((SetupRec(parts, spheres, cyls), ox, oy, yaw, state))
+    p.begin = (gx, gy)
+    p.heading = heading + dr.take(draw, EDGE_ANGLES) / 8
+    p.length = to_f32(d * draw(CORNER_THROUGH))
+    p.label = f"multipart-{variant}-{len(parts)}"
+    return p
+
+
+def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan:
+    """The tangent variant (see MULTIPART_VARIANTS): the mover's first sphere (centre (0, 0, r), on flat
+    ground, plane_dz 0) ends one step along an axis exactly its radius sum (as ACE computes it) from
+    a Setup sphere at the same height, or a cylsphere standing on the ground; the start on GRID."""
+    from acconform.scene import SetupRec
+
+    kind = draw(TANGENT_SETUP_KINDS)
+    r = bd.grid_floor(r)  # the mover's one sphere, its radius on GRID (as the obstacles' tangent policy makes it)
+    p.spheres = (SphereRec((0.0, 0.0, r), r),)
+    bx, by = math.floor(gx / 192.0) * 192.0, math.floor(gy / 192.0) * 192.0
+    lx, ly = bd.grid_floor(draw(TANGENT_SETUP_STARTS)), bd.grid_floor(draw(TANGENT_SETUP_STARTS))
+    ax, ay, heading = draw(MULTIPART_AXES)
+    step = bd.grid_floor(r * draw(SETUP_TANGENT_STEPS))
+    radius, radsum = bd.tangent_radius(kind, r, draw(SETUP_RADII))
+    radius = _ulps(radius, draw(ULP_OFFSETS))
+    ex, ey = lx + step * ax, ly + step * ay
+    if kind == "sphere":
+        spheres, cyls = (SphereRec((0.0, 0.0, r), radius),), ()
+    else:
+        spheres, cyls = (), (CylSphereShape((0.0, 0.0, 0.0), radius, dr.take(draw, PART_HEIGHTS)),)
+    p.moved_begin = (bx + lx, by + ly)
+    p.begin = p.moved_begin
+    p.objects.append((SetupRec(parts, spheres, cyls), bx + ex + radsum * ax, by + ey + radsum * ay, 0.0,
+                      int(PhysicsState.Static)))
+    p.heading, p.length, p.plane_dz, p.velocity = heading, step, 0.0, (0.0, 0.0, 0.0)
+    p.label = f"multipart-tangent-{kind}"
+    return p
+
+
 # a policy: (global x, global y, mover radius) -> a strategy of Plans (built per scene: a policy
 # depends on the mover; it costs little next to the span of its own it gives the shrinker)
 POLICIES = {"ledge": ledge, "stairs": stairs, "wall": wall, "straddle": straddle, "slope": slope, "seam": seam,
+            "multipart": multipart,
             "straddle_round": lambda gx, gy, r: straddle(gx, gy, r, "obstacles"), "sled_slope": sled_slope}
 
 

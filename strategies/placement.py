@@ -50,8 +50,8 @@ def scene_tags(scene) -> set[str]:
         else:
             continue
         shape = o.shape
-        kind = "bsp" if isinstance(shape, BSPShape) else "sphere" if isinstance(shape, SphereShape) else "cylsphere"
-        assert isinstance(shape, (BSPShape, SphereShape, CylSphereShape))
+        kind = "setup" if o.setup is not None else "bsp" if isinstance(shape, BSPShape) else "sphere" if isinstance(shape, SphereShape) else "cylsphere"
+        assert o.setup is not None or isinstance(shape, (BSPShape, SphereShape, CylSphereShape))
         side = "own" if scene.mover.begin.cell >> 16 == o.position.cell >> 16 else "neighbour"
         tags.add(f"across a {border}")
         tags.add(f"across a {border}: {kind}")

@@ -14,8 +14,8 @@ from hypothesis import strategies as st
 
 from acconform.flags import PhysicsState, TransientState
 from acconform.numerics import to_f32
-from acconform.scene import (IDENTITY, ContactPlane, CylSphereShape, Frame, Mover, PlaneRec, Position, Scene, SphereRec,
-                             SphereShape, StaticObject)
+from acconform.scene import (IDENTITY, ContactPlane, CylSphereShape, Frame, Mover, PlaneRec, Position, Scene, SetupRec,
+                             SphereRec, SphereShape, StaticObject)
 
 
 from . import boundaries as bd
@@ -130,7 +130,9 @@ OBJECT_COUNTS = dr.ints(1, 3)
 
 
 BSP_POLICIES = st.sampled_from(("ledge", "ledge", "ledge", "stairs", "stairs", "wall", "wall", "scatter", "scatter",
-                                "straddle", "straddle", "slope", "slope", "seam", "touch"))
+                                "straddle", "straddle", "slope", "slope", "seam", "touch", "multipart", "multipart",
+                                "multipart"))
+# "multipart": a static made from a Setup of several parts (strategies/objects.py, MULTIPART_VARIANTS)
 # "touch": a box face, top edge or corner exactly touching the mover's sphere at its end
 # (boundaries.TOUCH_RADS / TOUCH_CORNERS: plane_tangent, polygon_edge, polygon_vertex)
 # obstacles: scattered along a free path, one across a cell or landblock border or corner
@@ -353,6 +355,9 @@ def _policy_scene(draw, kind, policy, world, bx, by, lx, ly, spheres):
     reach = max(s.center[2] + s.radius for s in spheres)
     gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
     plan = draw(ob.POLICIES[policy](gx0, gy0, r))
+    if plan.spheres is not None:  # the policy set the mover's spheres (multipart's tangent variant)
+        spheres = plan.spheres
+        r, reach = spheres[0].radius, max(s.center[2] + s.radius for s in spheres)
     if plan.moved_begin is not None:  # the policy moved the start (straddle: beside a landblock border)
         bx, by, lx, ly = split_global(*plan.moved_begin)
         gx0, gy0 = bx * BLOCK + lx, by * BLOCK + ly
@@ -584,7 +589,10 @@ def _sphere_contact_scene(draw, bx, by) -> Scene:
 def _scene(world, bx, by, p0, p1, reach, placed, mover, name) -> Scene:
     objects = []
     for i, (shape, ox, oy, gz, q, state) in enumerate(placed):
-        objects.append(StaticObject(0x70000000 + i, position(ox, oy, gz, q), shape, state))
+        if isinstance(shape, SetupRec):  # a Setup of several parts (scene/7)
+            objects.append(StaticObject(0x70000000 + i, position(ox, oy, gz, q), None, state, setup=shape))
+        else:
+            objects.append(StaticObject(0x70000000 + i, position(ox, oy, gz, q), shape, state))
     landblocks = tuple(world.block(ix, iy) for ix, iy in sorted(_blocks_in_reach(bx, by, p0, p1, reach, objects)))
     return Scene(landblocks, mover, tuple(objects), name=name)
 

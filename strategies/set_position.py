@@ -153,6 +153,8 @@ def _faces(scene: Scene) -> list[Face]:
                 faces.append(Face(c.id, c.id & 0xFFFF0000, verts, normal, True, split))
     for o in scene.objects:
         f, shape = o.position.frame, o.shape
+        if o.setup is not None:  # a Setup of several parts: its faces are not gathered (a placement may meet it)
+            continue
         cell = o.position.cell if o.position.cell & 0xFFFF >= ENV_CELL_FIRST else None
         block = o.position.cell & 0xFFFF0000
         if isinstance(shape, BSPShape):

@@ -255,7 +255,9 @@ def object_reach(obj) -> tuple[tuple[float, float, float], float]:
     strategies use to pick the landblocks a scene lists. Only the drawing uses it; where ACE
     registers the object is ACE's own placement code, run on each side."""
     shape = obj.shape
-    if isinstance(shape, SphereShape):
+    if obj.setup is not None:
+        c, r = (0.0, 0.0, 0.0), setup_reach(obj.setup)
+    elif isinstance(shape, SphereShape):
         c, r = shape.sphere.center, shape.sphere.radius
     elif isinstance(shape, CylSphereShape):
         lx, ly, lz = shape.low_point
@@ -266,6 +268,21 @@ def object_reach(obj) -> tuple[tuple[float, float, float], float]:
     rc = rotate(obj.position.frame.orientation, (c[0] * s, c[1] * s, c[2] * s))
     o = obj.position.frame.origin
     return (o[0] + rc[0], o[1] + rc[1], o[2] + rc[2]), r * s
+
+
+def setup_reach(setup) -> float:
+    """The radius of a sphere about a Setup's origin holding its parts (each part's bounding sphere
+    moved by its frame, grown by its largest scale component), its spheres and its cylspheres."""
+    reach = 0.0
+    for p in setup.parts:
+        c, r = p.shape.sphere.center, p.shape.sphere.radius
+        k = max(p.scale) if p.scale is not None else 1.0
+        reach = max(reach, math.dist((0.0, 0.0, 0.0), p.frame.origin) + (math.dist((0.0, 0.0, 0.0), c) + r) * k)
+    for s in setup.spheres:
+        reach = max(reach, math.dist((0.0, 0.0, 0.0), s.center) + s.radius)
+    for cyl in setup.cylspheres:
+        reach = max(reach, math.dist((0.0, 0.0, 0.0), cyl.low_point) + cyl.radius + cyl.height)
+    return reach
 
 
 # metres beyond the spheres' reach: float rounding, a step-up's lift, a slide's last epsilon. The

@@ -211,10 +211,10 @@ def test_a_many_polygon_gfx_obj_counts_its_polygons_in_two_bytes():
     assert len(g["polygons"]) == 200 and g["tree"][4] == tuple(range(200))
 
 
-def test_record_ids_stay_inside_their_dat_types_range_below_the_buildings_shells():
+def test_record_ids_stay_inside_their_dat_types_range_below_the_parts_and_the_buildings_shells():
     with pytest.raises(ValueError, match="index"):
-        dat.static_records(bsp_object(TREE), 0xFEFFFF)
-    assert dat.static_records(bsp_object(TREE), 0xFEFFFE).did == 0x01FEFFFF < dat.BUILDING_GFX_OBJ_BASE == 0x01FF0000
+        dat.static_records(bsp_object(TREE), 0xEFFFFF)
+    assert dat.static_records(bsp_object(TREE), 0xEFFFFE).did == 0x01EFFFFF < dat.PART_GFX_OBJ_BASE == 0x01F00000
 
 
 def test_the_mover_is_a_setup_with_its_spheres_and_step_heights_and_one_empty_mesh_part():

@@ -37,7 +37,7 @@ def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(g
     scene, _ = generated
     props = scene["properties"]
     assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2", "acconform.scene/3", "acconform.scene/4",
-                                        "acconform.scene/5", "acconform.scene/6"]}
+                                        "acconform.scene/5", "acconform.scene/6", "acconform.scene/7"]}
     assert {"environments", "env_cells"} <= set(props) and not {"environments", "env_cells"} & set(scene["required"])
     landblock = props["landblocks"]["items"]
     assert landblock["required"] == ["id"] and {"heights", "terrain"} <= set(landblock["properties"])
@@ -97,3 +97,12 @@ def test_the_trace_schema_names_every_field_a_trace_record_and_its_snapshot_writ
     path = next(o for o in record["properties"]["path"].get("anyOf", [record["properties"]["path"]])
                 if o.get("type") == "object")
     assert set(path["properties"]) == {f.name for f in fields(PathState)}
+
+
+def test_the_scene_schema_names_a_statics_setup_and_every_field_of_its_parts(generated):
+    scene, _ = generated
+    obj = scene["properties"]["objects"]["items"]
+    assert {"shape", "setup"} <= set(obj["properties"]) and not {"shape", "setup"} & set(obj["required"])
+    setup = obj["properties"]["setup"]
+    assert set(setup["properties"]) == {"parts", "spheres", "cylspheres"} and setup["required"] == ["parts"]
+    assert set(setup["properties"]["parts"]["items"]["properties"]) == {"shape", "origin", "orientation", "scale"}

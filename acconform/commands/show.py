@@ -48,7 +48,11 @@ def describe_scene(scene) -> list[str]:
                    f"{len(c.visible_cells)} visible cells{', seen outside' if c.seen_outside else ''}")
     for o in scene.objects:
         s = o.shape
-        if s.kind == "bsp":
+        if o.setup is not None:
+            u = o.setup
+            what = (f"setup of {len(u.parts)} BSP parts ({sum(len(p.shape.polygons) for p in u.parts)} polygons), "
+                    f"{len(u.spheres)} spheres, {len(u.cylspheres)} cylspheres")
+        elif s.kind == "bsp":
             what = f"bsp, {len(s.polygons)} polygons, bounding sphere r={s.sphere.radius:.6g}"
         elif s.kind == "sphere":
             what = f"sphere r={s.sphere.radius:.6g} at {_v(s.sphere.center)}"

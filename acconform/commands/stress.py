@@ -250,7 +250,7 @@ def _squash_polygon(scene):
     from ..numerics import to_f32
 
     for i, o in enumerate(scene.objects):
-        if o.shape.kind != "bsp":
+        if o.shape is None or o.shape.kind != "bsp":
             continue
         polys = list(o.shape.polygons)
         for j, p in enumerate(polys):

@@ -79,3 +79,43 @@ def off_the_map():
                   step_up_height=0.4, step_down_height=0.4,
                   contact_plane=ContactPlane(cell_at(12.0, 190.0), PlaneRec((0.0, 0.0, 1.0), -20.0)))
     return validate_scene(Scene((landblock(flat),), mover, name="into an unregistered landblock"))
+
+
+def _turn(deg):
+    import math
+
+    import numpy as np
+
+    t = math.radians(deg) / 2
+    return (float(np.float32(math.cos(t))), 0.0, 0.0, float(np.float32(math.sin(t))))
+
+
+def three_part_setup(x=15.0, state=int(PhysicsState.Static | PhysicsState.HasPhysicsBSP), scales=None, spheres=(),
+                     cylspheres=()):
+    """A static made from a Setup of three box parts (scene/7): a 1 x 2 x 1.5 m block 1.25 m to the
+    right, a 1 x 1 x 0.8 m block turned 30 degrees 1 m to the left, a 0.5 m post turned 45 degrees
+    lifted 0.5 m; `scales` the parts' DefaultScale, and the Setup's spheres and cylspheres."""
+    from acconform.scene import PartRec, SetupRec
+    from acconform.strategies.shapes import box
+
+    scales = scales or (None, None, None)
+    parts = (PartRec(box(1.0, 2.0, 1.5), Frame((0.0, -1.25, 0.0)), scales[0]),
+             PartRec(box(1.0, 1.0, 0.8), Frame((0.5, 1.0, 0.0), _turn(30)), scales[1]),
+             PartRec(box(0.5, 0.5, 2.0), Frame((0.0, 0.0, 0.5), _turn(45)), scales[2]))
+    return StaticObject(0x70000020, Position(cell_at(x, 12.0), Frame((x, 12.0, 20.0))), None, state, 1.0,
+                        SetupRec(parts, spheres, cylspheres))
+
+
+# named multi-part scenes (issue 41): the mover walking 5 m along +x into a three-part Setup, at `dy` off its axis
+MULTIPART = {
+    "multipart: into the turned part's corner": walk(flat, (12.0, 13.0, 20.0), (17.0, 13.0, 20.0), 20.0,
+                                                      objects=(three_part_setup(),)),
+    "multipart: onto a part scaled 0.5 high": walk(flat, (12.0, 13.0, 20.0), (17.0, 13.0, 20.0), 20.0, objects=(
+        three_part_setup(scales=((1.0, 1.0, 1.5), (2.0, 1.0, 0.5), (1.0, 1.0, 1.0))),)),
+    "multipart: two spheres, no BSP flag": walk(flat, (12.0, 12.0, 20.0), (17.0, 12.0, 20.0), 20.0, objects=(
+        three_part_setup(state=int(PhysicsState.Static), spheres=(SphereRec((0.0, -1.0, 0.5), 0.6),
+                                                                  SphereRec((0.0, 1.0, 0.5), 0.4))),)),
+    "multipart: cylspheres hide the sphere": walk(flat, (12.0, 12.0, 20.0), (17.0, 12.0, 20.0), 20.0, objects=(
+        three_part_setup(state=int(PhysicsState.Static), spheres=(SphereRec((0.0, 0.0, 0.5), 0.6),),
+                         cylspheres=(CylSphereShape((0.0, -1.0, 0.0), 0.5, 1.0), CylSphereShape((0.0, 1.0, 0.0), 0.3, 2.0))),)),
+}

@@ -14,7 +14,7 @@ sealed class SamplePort : IPhysicsPort
         // every kind and feature: take out what your port does not run yet (those scenes are skipped and counted)
         Kinds: ["terrain", "bsp", "obstacles", "indoor", "buildings"],
         Features: ["engine.client", "mover.two_spheres", "mover.scaled", "object.scaled", "water", "indoor.statics",
-                   "mover.placement", "mover.enter_world", "ticks", "buildings", "dat", "trace"],
+                   "mover.placement", "mover.enter_world", "ticks", "buildings", "setup.multipart", "dat", "trace"],
         Modes: ["exact"]);
 
     public Outcome Run(SceneRequest request)
