@@ -157,6 +157,38 @@ SIMPLE_DT = 1 / 30
 SIMPLE_START = 1000.0
 
 
+def _motion_table(scene: Scene) -> Iterator[Scene]:
+    """The mover's motion table made smaller: its links, modifiers and cycles left out (all, then one by
+    one), an animation's frames cut to one or to half, and animations no entry plays left out."""
+    t = scene.mover.motion_table
+    if t is None:
+        return
+
+    def with_(**kw):
+        return scene.replace(mover=replace(scene.mover, motion_table=replace(t, **kw)))
+
+    for name in ("links", "modifiers", "cycles"):
+        entries = getattr(t, name)
+        if entries and name != "cycles":
+            yield with_(**{name: ()})
+        for i in reversed(range(len(entries))):
+            yield with_(**{name: _without(entries, i)})
+    played = sorted({a.animation for e in t.cycles + t.links + t.modifiers for a in e.data.anims})
+    if len(played) < len(t.animations):
+        index = {old: new for new, old in enumerate(played)}
+
+        def renumbered(e):
+            anims = tuple(replace(a, animation=index[a.animation]) for a in e.data.anims)
+            return replace(e, data=replace(e.data, anims=anims))
+
+        yield with_(animations=tuple(t.animations[i] for i in played), cycles=tuple(map(renumbered, t.cycles)),
+                    links=tuple(map(renumbered, t.links)), modifiers=tuple(map(renumbered, t.modifiers)))
+    for i, a in enumerate(t.animations):
+        n = len(a.pos_frames)
+        for keep in sorted({1, n // 2} - {0, n}):
+            yield with_(animations=t.animations[:i] + (replace(a, pos_frames=a.pos_frames[:keep]),) + t.animations[i + 1:])
+
+
 def _inputs(step) -> bool:
     return any(getattr(step, name) is not None for name in TICK_INPUTS)
 
@@ -210,6 +242,7 @@ def _candidates(scene: Scene) -> Iterator[Scene]:
     yield from _cells(scene)
     yield from _landblocks(scene)
     yield from _mover(scene)
+    yield from _motion_table(scene)
     if scene.engine_mode != "server":  # the default mode: a placement or ticks run in it too
         yield scene.replace(engine_mode="server")
 

@@ -267,6 +267,30 @@ def _point(base: Scene, g0, g1, t: float):
     return Position(cell, Frame((to_f32(lx), to_f32(ly), to_f32(g[2])))), g
 
 
+ULP_STEPS = st.sampled_from((0, 0, 0, -1, 1))  # the distance itself, or one float32 ulp either side
+
+
+def _distance_to_go(begin: Position, target: Position, params: MovementParams, ulps: int) -> float:
+    """The float32 distance from `begin` to `target` as ACE's MoveToManager.GetCurrentDistance measures
+    it for these parameters (computed by the port's Position: Distance, or with UseSpheres the
+    (float) CylinderDistance of the Setups' radius and height, 0 in every Setup acconform writes),
+    `ulps` float32 steps away: the MoveTo's DistanceToObject at which its first arrival test
+    `dist <= DistanceToObject` holds exactly (0), or just fails (-1)."""
+    import numpy as np
+
+    from acconform.numerics import get_mode
+    from acconform.port.frame import Position as PortPosition
+
+    mode = get_mode("exact")
+    a, b = PortPosition.from_record(begin, mode), PortPosition.from_record(target, mode)
+    zero = mode.scalar(0.0)
+    d = mode.scalar(PortPosition.cylinder_distance(zero, zero, a, zero, zero, b)) if params.flags & int(MPF.UseSpheres) \
+        else a.distance(b)
+    for _ in range(abs(ulps)):
+        d = np.nextafter(d, np.float32(np.inf if ulps > 0 else -np.inf), dtype=np.float32)
+    return float(d)
+
+
 def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, Scene, str]:
     """The server's calls into the managers (the tick inputs move_to, move_to_object, turn_to_heading,
     turn_to_object, stop, do_motion, stop_motion) for a scene of `n` ticks on `base`'s path: a first
@@ -285,8 +309,8 @@ def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, 
     if goal in ("move_to", "move_to_exact"):
         params = _params(draw)
         if goal == "move_to_exact":  # DistanceToObject the distance to go: arrives on its first check
-            d = math.dist(g0, g)
-            params = replace(params, distance_to_object=float(to_f32(d)), min_distance=0.0)
+            params = replace(params, distance_to_object=_distance_to_go(base.mover.begin, pos, params,
+                                                                        draw(ULP_STEPS)), min_distance=0.0)
         first["move_to"] = MoveToInput(params, pos)
     elif goal in ("move_to_object", "sticky", "turn_to_object"):
         targets = [o for o in base.objects if o.position.cell & 0xFFFF < ENV_CELL_FIRST]

@@ -68,3 +68,27 @@ def test_the_shrinker_simplifies_time_steps_that_do_not_matter():
     small, _ = shrink_scene(scene, three_ticks)
     assert len(small.ticks.steps) == 3
     assert all(s.dt == SIMPLE_DT for s in small.ticks.steps) and inputs(small) == 0
+
+
+def test_the_shrinker_cuts_a_motion_table_to_the_entry_and_the_frame_that_matter():
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+    from acconform.motion_enums import MotionCommand as MC
+    from acconform.shrink import size
+    from oracle.motion_scenes import scenes
+
+    scene = scenes()["strafe_run_diagonal"]
+    table = scene.mover.motion_table
+
+    def still_fails(s):  # "the bug" needs the sidestep cycle's root motion to move along x
+        t = s.mover.motion_table
+        return t is not None and any(c.motion == int(MC.SideStepRight) and t.animations[c.data.anims[0].animation]
+                                     .pos_frames[0].origin == (0.0, 0.0, 0.0) for c in t.cycles)
+
+    small, tried = shrink_scene(scene, still_fails, 400)
+    t = small.mover.motion_table
+    assert still_fails(small) and not size(small).exceeds(size(scene))
+    assert [c.motion for c in t.cycles] == [int(MC.SideStepRight)] and t.links == () and t.modifiers == ()
+    assert len(t.animations) == 1 and len(t.animations[0].pos_frames) == 1 < len(table.animations[-1].pos_frames)
