@@ -344,15 +344,21 @@ def run_part(records, ticks: bool) -> tuple:
     (RUN_STARTS, or the first tick), at the grain ACE's instrumented facade writes: in a transition scene, no
     PhysicsObj.transition records (the facade makes its calls one by one, as the port's run_scene does around
     the mover's transition); in a tick scene, no record of the port's tick driver (run_ticks, anchored to
-    update_object, a call outside any routine)."""
+    update_object, a call outside any routine). What either driver calls is called from outside any routine, as
+    ACE's facade calls it (`within` None): at a tick, set_request_pos and update_object_server in server mode,
+    update_object in client mode."""
     start = next((i for i, r in enumerate(records) if r.tick is not None or r.anchor in RUN_STARTS), len(records))
     # what follows the last tick, or the transition's cleanup, is the harness's (the facade removes the statics)
     last = (lambda r: r.event == "tick") if ticks else (lambda r: r.anchor == RUN_ENDS)
     end = max((i + 1 for i, r in enumerate(records) if last(r)), default=len(records))
     out = []
     building = 0  # inside a constructor's enter .. exit
+    updating = 0  # inside the mover's own update_object (a tick scene's client path), not the port's tick driver
     placing = [r for r in records[:start] if r.placing is not None]  # the world's statics placed, in order
     for r in placing + list(records[start:end]):
+        updating -= ticks and r.anchor == TICK_DRIVER and r.event == "exit"
+        by_driver = ticks and r.within == TICK_DRIVER and updating == 0  # the driver's own call, not the mover's routine's
+        updating += ticks and r.anchor == TICK_DRIVER and r.event == "enter"
         if is_constructor(r.anchor) and r.event in ("enter", "exit"):
             building += 1 if r.event == "enter" else -1
             continue
@@ -366,8 +372,11 @@ def run_part(records, ticks: bool) -> tuple:
             continue
         if not ticks and r.mover is not None:  # outside a tick scene the mover's clock is the harness's (wall clock in ACE)
             r = replace(r, mover=replace(r.mover, update_time=0.0))
-        if r.within == TRANSITION and (not ticks or r.tick is None):
-            r = replace(r, within=None)  # called by the port's driver (run_scene), where ACE's facade calls it
+        # called by the port's driver, where ACE's facade calls it: run_scene (anchored PhysicsObj.transition) around a
+        # transition scene and the statics' placement, run_ticks (anchored update_object) at each tick, whose
+        # update_object_server (server mode) or update_object (client mode) ACE's facade calls itself
+        if (r.within == TRANSITION and (not ticks or r.tick is None)) or by_driver:
+            r = replace(r, within=None)
         out.append(r)
     return tuple(out)
 
