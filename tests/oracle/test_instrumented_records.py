@@ -195,3 +195,36 @@ def test_a_placements_frame_helpers_are_not_compared_each_side_calls_them_where_
     ace = placement(rec("AFrame.cs:LocalToGlobal", "call", within=OUTSIDE, result=[1.0, 2.0, 3.0])) + RUN
     port = placement(rec("Polygon.cs:make_plane", "call", within=OUTSIDE)) + RUN
     assert against_ace(ace, port, PLACING_KINDS, ticks=False) is None
+
+
+def test_what_the_ports_tick_driver_calls_is_called_from_outside_any_routine_as_aces_facade_calls_it():
+    # server mode: run_ticks calls set_request_pos and update_object_server, where ACE's facade does
+    server = (rec("PhysicsObj.cs:set_request_pos", "enter", within=TICK, tick=0),
+              rec("PhysicsObj.cs:update_object_server", "enter", within=TICK, tick=0),
+              rec("PhysicsObj.cs:UpdateObjectInternalServer", "enter", within="PhysicsObj.cs:update_object_server", tick=0),
+              rec(TICK, "tick", tick=0), rec(TICK, "call"))
+    assert [r.within for r in run_part(server, ticks=True)] == [None, None, "PhysicsObj.cs:update_object_server", None]
+    # client mode: the mover's own update_object, called by the driver, keeps its callees
+    client = (rec(TICK, "enter", within=TICK, tick=0), rec("PhysicsObj.cs:UpdateObjectInternal", "enter", within=TICK, tick=0),
+              rec("PhysicsObj.cs:UpdateObjectInternal", "exit", within=TICK, tick=0), rec(TICK, "exit", within=TICK, tick=0),
+              rec(TICK, "tick", tick=0))
+    assert [r.within for r in run_part(client, ticks=True)] == [None, TICK, TICK, None, None]
+
+
+def test_a_divergence_inside_a_server_tick_names_the_innermost_routine_both_ran_with_the_same_arguments():
+    def tick(inner, driver):
+        w = TICK if driver else None
+        return (rec("PhysicsObj.cs:update_object_server", "enter", within=w, tick=0, args=[1]),
+                rec("Transition.cs:TransitionalInsert", "enter", path(), "PhysicsObj.cs:update_object_server", [0, 3], tick=0),
+                rec("Transition.cs:StepDown", "enter", path(), "Transition.cs:TransitionalInsert", tick=0),  # both step down
+                rec("Transition.cs:StepDown", "exit", path(), "Transition.cs:TransitionalInsert", tick=0),
+                *((rec(inner, "enter", path(), "Transition.cs:TransitionalInsert", tick=0),  # then the port slides, ACE returns
+                   rec(inner, "exit", path(), "Transition.cs:TransitionalInsert", tick=0)) if inner else ()),
+                rec("Transition.cs:TransitionalInsert", "exit", path(), "PhysicsObj.cs:update_object_server", tick=0),
+                rec("PhysicsObj.cs:update_object_server", "exit", within=w, tick=0), rec(TICK, "tick", tick=0))
+    kinds = frozenset((a, e) for a in ("Transition.cs:StepDown", "Transition.cs:EdgeSlide", "Transition.cs:TransitionalInsert")
+                      for e in ("enter", "exit"))
+    ace, port = tick(None, False), tick("Transition.cs:EdgeSlide", True) + (rec(TICK, "call"),)
+    d = against_ace(ace, port, kinds | {("PhysicsObj.cs:update_object_server", "enter")}, ticks=True)
+    assert (d.routine, d.a.anchor, d.a.event, d.b.anchor) == ("Transition.cs:TransitionalInsert",
+                                                              "Transition.cs:TransitionalInsert", "exit", "Transition.cs:EdgeSlide")
