@@ -249,6 +249,11 @@ class Divergence:
     def step(self):
         return (self.a or self.b).step
 
+    @property
+    def placing(self):
+        """The static object being placed where the two part (its ID), or None outside a placement."""
+        return (self.a or self.b).placing
+
     def key(self) -> str:
         """The group a difference falls in: routine and field, indices dropped (``path.cur_pos``)."""
         return f"{self.routine} {_INDEX.sub('', self.field)}"
@@ -397,9 +402,10 @@ def compared(r: TraceRecord) -> bool:
 
 def against_ace(ace, other, ace_kinds, ticks: bool, overloaded=frozenset()) -> Divergence | None:
     """The first record where `other` (the port's trace, or an implementation's at the port's grain)
-    parts from ACE's own trace (oracle/instrumented.py), compared from the run's start (`run_part`) on the
-    records that carry state: the enter and exit records of the transition's routines (a PathState) and of
-    the mover's (a TickState), each step, insert attempt and tick. A `call` record (a helper's answer, a
+    parts from ACE's own trace (oracle/instrumented.py), compared from the statics' placement and the run's
+    start (`run_part`) on the records that carry state: the enter and exit records of the transition's routines
+    (a PathState) and of the mover's (a TickState), each step, insert attempt and tick, and, while a static is
+    placed, the calls of the placement's own chain (`compared`). Any other `call` record (a helper's answer, a
     getter) is not compared: ACE calls its helpers where its C# does (a property read twice, a check
     inlined), the port where its Python does, and their order differs without any state differing.
     Arguments and answers are compared where their shapes agree (first_divergence's shapes="ace").

@@ -228,3 +228,14 @@ def test_a_divergence_inside_a_server_tick_names_the_innermost_routine_both_ran_
     d = against_ace(ace, port, kinds | {("PhysicsObj.cs:update_object_server", "enter")}, ticks=True)
     assert (d.routine, d.a.anchor, d.a.event, d.b.anchor) == ("Transition.cs:TransitionalInsert",
                                                               "Transition.cs:TransitionalInsert", "exit", "Transition.cs:EdgeSlide")
+
+
+def test_explain_says_which_static_was_being_placed_where_the_traces_part():
+    from acconform.explain import Explanation, render
+
+    ace = placement(rec("BBox.cs:LocalToGlobal", "call", within=OUTSIDE, args=[[0.0] * 6, BOX[0], [0x0A240008, 12.0, 12.0, 0.0]])) + RUN
+    port = placement(rec("BBox.cs:LocalToGlobal", "call", within=OUTSIDE, args=["BBox"] + BOX)) + RUN
+    d = against_ace(ace, port, PLACING_KINDS, ticks=False)
+    lines = render(Explanation("acconform port", "ACE's own trace", True, d, "", ace, port, reference_name="ACE"))
+    assert "(placing static 0x70000000, record " in lines[1]
+    assert lines[-1].endswith("placing 0x70000000")
