@@ -6,8 +6,9 @@ reference, and names the first divergence (acconform.trace.first_divergence): ti
 routine (ACE's method and the retail name), field, both values and the ulps between them.
 
 With ACE configured, the reference is ACE's own trace at the port's grain, from the instrumented
-ACE (oracle/instrumented.py; `traced_ace`), compared from the run's start on the records that carry
-state (trace.against_ace): the port's own differences from ACE are explained this way too.
+ACE (oracle/instrumented.py; `traced_ace`), compared from the statics' placement and the run's start on
+the records that carry state (trace.against_ace): the port's own differences from ACE are explained this
+way too.
 Without ACE, the reference is the port's trace, and only where the port's outcome is ACE's for this
 scene (`ace`: the recorded answer): for any such scene the port's trace is the trace of a run that
 ends as ACE's does. Where the port itself differs from ACE there is then no reference trace, and the
@@ -98,8 +99,8 @@ def explain(scene: Scene, ace: Outcome, ace_source: str, backend, mode: str = "e
 
 def _against_ace(scene, ace: Outcome, ace_source: str, backend, mode: str, runtime: str, traced_ace) -> Explanation:
     """The implementation's trace (the port's, for the built-in port) against ACE's own, from the
-    instrumented ACE (oracle/instrumented.py), compared from the run's start on the records that carry
-    state (trace.against_ace). The traced ACE run is checked to end in ACE's own outcome first."""
+    instrumented ACE (oracle/instrumented.py), compared from the statics' placement and the run's start on
+    the records that carry state (trace.against_ace). The traced ACE run is checked to end in ACE's own outcome first."""
     from .port.run import traced_run
     from .trace import against_ace
 
@@ -115,7 +116,7 @@ def _against_ace(scene, ace: Outcome, ace_source: str, backend, mode: str, runti
         theirs_outcome, theirs, _anchors = backend.run_traced(scene)
     differs = bool(compare(theirs_outcome, ace, mode))
     reference = (f"ACE's own trace (the instrumented ACE, checked: its run ends in {ace_source}), compared from the "
-                 "run's start on the records that carry state")
+                 "statics' placement and the run's start on the records that carry state")
     if theirs is None:
         why = ("the implementation does not trace (its handshake lists no `trace` feature)"
                if not getattr(backend, "traces", False) else f"the implementation gave no trace ({theirs_outcome.error})")
@@ -208,6 +209,8 @@ def _brief(r: TraceRecord | None) -> str:
     if r is None:
         return "(end of trace)"
     where = "".join(f" {k}{v}" for k, v in (("tick", r.tick), ("step", r.step)) if v is not None)
+    if r.placing is not None:
+        where += f" placing {r.placing:#x}"
     text = f"{r.event:<6} {r.anchor}{where}"
     if r.result is not None:
         text += f" -> {str(r.result)[:40]}"
@@ -216,6 +219,11 @@ def _brief(r: TraceRecord | None) -> str:
     if r.mover is not None:
         text += f"  at {r.mover.cell:08X} {tuple(round(x, 4) for x in r.mover.origin)}"
     return text
+
+
+def placing_label(placing: int) -> str:
+    """A placement's records as explain names them (as ticks and steps are named)."""
+    return f"placing static {placing:#x}" if placing else "placing static 0 (a stab an EnvCell makes as it loads)"
 
 
 def render(e: Explanation) -> list[str]:
@@ -228,7 +236,10 @@ def render(e: Explanation) -> list[str]:
         return lines
     r = d.a or d.b
     retail = retail_name(d.routine)
-    where = ", ".join(f"{k} {v}" for k, v in (("tick", d.tick), ("step", d.step)) if v is not None) or "before the steps"
+    where = ", ".join(f"{k} {v}" for k, v in (("tick", d.tick), ("step", d.step)) if v is not None)
+    if d.placing is not None:
+        where = ", ".join(x for x in (where, placing_label(d.placing)) if x)
+    where = where or "before the steps"
     lines.append(f"{group_name(e)} ({where}, record {d.a_position}: {r.event} of {r.anchor})")
     lines.append(f"  in: {d.routine}" + (f" (retail {retail})" if retail else ""))
     ulps = d.ulps

@@ -211,8 +211,8 @@ def _touched(path, radius, statics) -> list[tuple]:
 
 def _divergence_point(e, scene, ours, begin, lift) -> tuple[tuple, str]:
     """Where to mark the first divergence, and in words: at the diverging record's own position (its
-    transition's check position, or the mover after a tick) when it has one; else at the last step
-    before it; else, before the steps, at the begin."""
+    transition's check position, or the mover after a tick) when it has one; at the static being placed
+    when they part placing an outdoor static; else at the last step before it; else, before the steps, at the begin."""
     d = e.divergence
     r = d.a if d.a is not None else d.b
     if r is not None and r.path is not None and (r.path.check_cell or r.step is not None):
@@ -221,6 +221,10 @@ def _divergence_point(e, scene, ours, begin, lift) -> tuple[tuple, str]:
     if r is not None and r.mover is not None:
         c = _glob(r.mover.cell, r.mover.origin)
         return (c[0], c[1], c[2] + lift), f"record {d.a_position}: the mover"
+    placed = next((o for o in scene.objects if r is not None and r.placing and o.id == r.placing), None)
+    if placed is not None:  # the world's static being placed where they part
+        c = _glob(placed.position.cell, placed.position.frame.origin)
+        return (c[0], c[1], c[2] + lift), f"record {d.a_position}: placing static {placed.id:#x}"
     index = {id(x): i for i, x in enumerate(e.ours)}
     before = [(label, c) for label, c, x in ours if index.get(id(x), len(e.ours)) <= d.a_position]
     if before:

@@ -4,7 +4,8 @@ Format ``acconform.trace/1``. A trace is the list of `TraceRecord`s one run wrot
 wrote them. A record names its place (`anchor`: ACE's ``File.cs:Method``; `event`: ``enter`` or
 ``exit`` of an anchored routine, ``call`` for the exit of a routine that keeps no transition
 state, ``step`` for a pass of FindTransitionalPosition's loop, ``insert`` for a TransitionalInsert
-attempt, ``tick`` after a tick scene's step), the tick and step it ran in, the routine's `result`
+attempt, ``tick`` after a tick scene's step), the tick and step it ran in (or the static object being
+placed, `placing`, while the world is built), the routine's `result`
 at its exit, and a snapshot: `path` (the transition: SpherePath and CollisionInfo) or `mover` (the
 mover's PhysicsObj, a TickState). A field left None was not recorded; a comparison skips it.
 
@@ -105,10 +106,12 @@ class TraceRecord:
     result: Any = None  # at an exit or call: the routine's answer as plain JSON (a float32 as a number)
     path: PathState | None = None
     mover: TickState | None = None
+    placing: int | None = None  # while a static object is placed (PhysicsObj.add_obj_to_cell on a static, as the
+    # world is built or an EnvCell loads): that object's ID (0 for an EnvCell's stab, as ACE makes it); else None
 
     def to_json(self):
         d: dict = {"anchor": self.anchor, "event": self.event}
-        for name in ("tick", "step", "within", "args", "result"):
+        for name in ("tick", "step", "placing", "within", "args", "result"):
             v = getattr(self, name)
             if v is not None:
                 d[name] = v
@@ -120,7 +123,7 @@ class TraceRecord:
 
     @staticmethod
     def from_json(r: Reader) -> "TraceRecord":
-        r.obj({"anchor", "event", "tick", "step", "within", "args", "result", "path", "mover"})
+        r.obj({"anchor", "event", "tick", "step", "placing", "within", "args", "result", "path", "mover"})
         event = r["event"].str_()
         if event not in EVENTS:
             r["event"].fail(f"unknown event {event!r} (known: {', '.join(EVENTS)})")
@@ -132,7 +135,8 @@ class TraceRecord:
             r["args"].value if r.given("args") else None,
             r["result"].value if r.given("result") else None,
             PathState.from_json(r["path"]) if r.given("path") else None,
-            TickState.from_json(r["mover"]) if r.given("mover") else None)
+            TickState.from_json(r["mover"]) if r.given("mover") else None,
+            r["placing"].int_() if r.given("placing") else None)
 
 
 def trace_to_json(records, anchors=None) -> dict:
@@ -245,6 +249,11 @@ class Divergence:
     def step(self):
         return (self.a or self.b).step
 
+    @property
+    def placing(self):
+        """The static object being placed where the two part (its ID), or None outside a placement."""
+        return (self.a or self.b).placing
+
     def key(self) -> str:
         """The group a difference falls in: routine and field, indices dropped (``path.cur_pos``)."""
         return f"{self.routine} {_INDEX.sub('', self.field)}"
@@ -290,7 +299,7 @@ def first_divergence(reference, other, anchors=None, reference_kinds=None, shape
         inner = (a or b).within or (a or b).anchor
         if a is None or b is None or (a.anchor, a.event) != (b.anchor, b.event):
             if a is not None and b is not None:
-                inner = _parted_in(reference, ia, other, ib) or inner
+                inner = _parted_in(reference, ia, other, ib, shapes) or inner
             return Divergence(n, a, b, "anchor", a and f"{a.anchor} {a.event}", b and f"{b.anchor} {b.event}",
                               inner, ia, ib)
         if a.tick != b.tick or a.step != b.step:
@@ -307,7 +316,7 @@ def first_divergence(reference, other, anchors=None, reference_kinds=None, shape
             if name not in fb or not _same(va, vb):
                 routine = a.anchor if a.event in ("exit", "call") and not name.startswith("args") else inner
                 if name.startswith("args"):
-                    routine = _caller_handed_them(ref, oth, n, routine)
+                    routine = _caller_handed_them(ref, oth, n, routine, shapes)
                 return Divergence(n, a, b, name, va, vb, routine, ia, ib)
     return None
 
@@ -335,17 +344,26 @@ TICK_DRIVER = "PhysicsObj.cs:update_object"
 
 
 def run_part(records, ticks: bool) -> tuple:
-    """The records of a trace from its run's start (RUN_STARTS, or the first tick), at the grain ACE's
-    instrumented facade writes: in a transition scene, no PhysicsObj.transition records (the facade makes
-    its calls one by one, as the port's run_scene does around the mover's transition); in a tick scene,
-    no record of the port's tick driver (run_ticks, anchored to update_object, a call outside any routine)."""
+    """The records of a trace that a comparison with ACE's own reads: the placement of the static objects
+    (the records labelled `placing`, written while the world is built) and the run, from its start
+    (RUN_STARTS, or the first tick), at the grain ACE's instrumented facade writes: in a transition scene, no
+    PhysicsObj.transition records (the facade makes its calls one by one, as the port's run_scene does around
+    the mover's transition); in a tick scene, no record of the port's tick driver (run_ticks, anchored to
+    update_object, a call outside any routine). What either driver calls is called from outside any routine, as
+    ACE's facade calls it (`within` None): at a tick, set_request_pos and update_object_server in server mode,
+    update_object in client mode."""
     start = next((i for i, r in enumerate(records) if r.tick is not None or r.anchor in RUN_STARTS), len(records))
     # what follows the last tick, or the transition's cleanup, is the harness's (the facade removes the statics)
     last = (lambda r: r.event == "tick") if ticks else (lambda r: r.anchor == RUN_ENDS)
     end = max((i + 1 for i, r in enumerate(records) if last(r)), default=len(records))
     out = []
     building = 0  # inside a constructor's enter .. exit
-    for r in records[start:end]:
+    updating = 0  # inside the mover's own update_object (a tick scene's client path), not the port's tick driver
+    placing = [r for r in records[:start] if r.placing is not None]  # the world's statics placed, in order
+    for r in placing + list(records[start:end]):
+        updating -= ticks and r.anchor == TICK_DRIVER and r.event == "exit"
+        by_driver = ticks and r.within == TICK_DRIVER and updating == 0  # the driver's own call, not the mover's routine's
+        updating += ticks and r.anchor == TICK_DRIVER and r.event == "enter"
         if is_constructor(r.anchor) and r.event in ("enter", "exit"):
             building += 1 if r.event == "enter" else -1
             continue
@@ -359,6 +377,11 @@ def run_part(records, ticks: bool) -> tuple:
             continue
         if not ticks and r.mover is not None:  # outside a tick scene the mover's clock is the harness's (wall clock in ACE)
             r = replace(r, mover=replace(r.mover, update_time=0.0))
+        # called by the port's driver, where ACE's facade calls it: run_scene (anchored PhysicsObj.transition) around a
+        # transition scene and the statics' placement, run_ticks (anchored update_object) at each tick, whose
+        # update_object_server (server mode) or update_object (client mode) ACE's facade calls itself
+        if (r.within == TRANSITION and (not ticks or r.tick is None)) or by_driver:
+            r = replace(r, within=None)
         out.append(r)
     return tuple(out)
 
@@ -366,11 +389,23 @@ def run_part(records, ticks: bool) -> tuple:
 STATE_EVENTS = ("enter", "exit", "step", "insert", "tick")
 
 
+PLACEMENT_FILES = frozenset({"PhysicsObj.cs", "PartArray.cs", "CellArray.cs", "BBox.cs", "CellStruct.cs"})
+
+
+def compared(r: TraceRecord) -> bool:
+    """Whether against_ace compares a record of the run part: one that carries state (STATE_EVENTS), or, while a
+    static is placed, the answer of a routine of the placement's own chain (PLACEMENT_FILES: add_obj_to_cell ..
+    calc_cross_cells_static, the boxes carried between frames, the cells added): a placement carries no
+    transition, its state is the cells and boxes those routines hand on."""
+    return r.event in STATE_EVENTS or (r.placing is not None and r.anchor.split(":", 1)[0] in PLACEMENT_FILES)
+
+
 def against_ace(ace, other, ace_kinds, ticks: bool, overloaded=frozenset()) -> Divergence | None:
     """The first record where `other` (the port's trace, or an implementation's at the port's grain)
-    parts from ACE's own trace (oracle/instrumented.py), compared from the run's start (`run_part`) on the
-    records that carry state: the enter and exit records of the transition's routines (a PathState) and of
-    the mover's (a TickState), each step, insert attempt and tick. A `call` record (a helper's answer, a
+    parts from ACE's own trace (oracle/instrumented.py), compared from the statics' placement and the run's
+    start (`run_part`) on the records that carry state: the enter and exit records of the transition's routines
+    (a PathState) and of the mover's (a TickState), each step, insert attempt and tick, and, while a static is
+    placed, the calls of the placement's own chain (`compared`). Any other `call` record (a helper's answer, a
     getter) is not compared: ACE calls its helpers where its C# does (a property read twice, a check
     inlined), the port where its Python does, and their order differs without any state differing.
     Arguments and answers are compared where their shapes agree (first_divergence's shapes="ace").
@@ -379,11 +414,11 @@ def against_ace(ace, other, ace_kinds, ticks: bool, overloaded=frozenset()) -> D
     AddOffsetToCheckPos(offset)) is left out on both sides: the port writes one record for the pair, or two
     where it has a routine for each (CylSphere.IntersectsSphere's)."""
     def kept(records):
-        return tuple(r for r in run_part(records, ticks) if r.event in STATE_EVENTS
+        return tuple(r for r in run_part(records, ticks) if compared(r)
                      and not (r.anchor in overloaded and r.within == r.anchor))
 
     a, b = kept(ace), kept(other)
-    kinds = frozenset(k for k in ace_kinds if k[1] in STATE_EVENTS and not is_constructor(k[0]))
+    kinds = frozenset(k for k in ace_kinds if not is_constructor(k[0]))
     return first_divergence(a, b, None, kinds, shapes="ace")
 
 
@@ -441,7 +476,7 @@ def _entered_with(records, exit_at: int):
     return None
 
 
-def _parted_in(reference, ia: int, other, ib: int) -> str | None:
+def _parted_in(reference, ia: int, other, ib: int, shapes: str = "strict") -> str | None:
     """Where two traces that write different records at ia and ib part: the innermost routine both
     were still running (from both sides' `within`) that both sides called with the same arguments,
     whose body then went on differently (a routine handed different arguments went differently
@@ -452,13 +487,13 @@ def _parted_in(reference, ia: int, other, ib: int) -> str | None:
     for (x, xargs), (y, yargs) in zip(_running(reference, ia), _running(other, ib)):
         if x != y:
             break
-        common.append((x, xargs is None or yargs is None or _same_args(xargs, yargs)))
+        common.append((x, xargs is None or yargs is None or _same_args(xargs, yargs, shapes)))
     while len(common) > 1 and not common[-1][1]:
         common.pop()
     return common[-1][0] if common else None
 
 
-def _caller_handed_them(ref, oth, n: int, routine: str) -> str:
+def _caller_handed_them(ref, oth, n: int, routine: str, shapes: str = "strict") -> str:
     """Different arguments at record n were handed by `routine`; a `call` record is written at its
     routine's exit, after its callees' records, so when `routine`'s own call record (the next one of
     it) shows different arguments too, the values came from further up: climb to its caller."""
@@ -467,15 +502,22 @@ def _caller_handed_them(ref, oth, n: int, routine: str) -> str:
         if m is None or m >= len(oth):
             return routine
         a, b = ref[m][1], oth[m][1]
-        if (b.anchor, b.event) != (a.anchor, a.event) or a.within is None or _same_args(a.args, b.args):
+        if (b.anchor, b.event) != (a.anchor, a.event) or a.within is None or _same_args(a.args, b.args, shapes):
             return routine
         n, routine = m, a.within
 
 
-def _same_args(x, y) -> bool:
+def _same_args(x, y, shapes: str = "strict") -> bool:
+    """Whether two calls were handed the same arguments; with shapes "ace" (C#'s against the port's), at the
+    arguments first_divergence compares: where both pass as many, each both hold as a number or a flag."""
     fx, fy = [], []
     _flat(x, "args", fx)
     _flat(y, "args", fy)
+    if shapes == "ace":
+        if len(x or ()) != len(y or ()):
+            return True
+        dy = dict(fy)
+        return all(_same(u, dy[p]) for p, u in fx if p in dy and comparable(True, u, dy[p]))
     return len(fx) == len(fy) and all(p == q and _same(u, v) for (p, u), (q, v) in zip(fx, fy))
 
 

@@ -41,8 +41,10 @@ REWRITTEN = ("ACE.DatLoader.dll", "ACE.Server.dll")
 FTP = "Transition.cs:FindTransitionalPosition"
 TI = "Transition.cs:TransitionalInsert"
 TICK = "PhysicsObj.cs:update_object"
-# the calls that open the port's per-step points (Recorder.cs): a pass of FTP's loop, a TI attempt
-ROLES = {FTP: "f", TI: "t", "Transition.cs:AdjustOffset": "a", "Transition.cs:InsertIntoCell": "i", TICK: "u"}
+PLACE = "PhysicsObj.cs:add_obj_to_cell"
+# the calls that open the port's per-step points (Recorder.cs): a pass of FTP's loop, a TI attempt; and a static's
+# placement, whose records carry the static's ID
+ROLES = {FTP: "f", TI: "t", "Transition.cs:AdjustOffset": "a", "Transition.cs:InsertIntoCell": "i", TICK: "u", PLACE: "o"}
 
 
 class InstrumentationUnavailable(OracleUnavailable):
@@ -271,7 +273,7 @@ def records_from(text: str, ids: dict[int, str], outcome: Outcome | None = None)
     for line in text.splitlines():
         if not line:
             continue
-        i, event, tick, step, within, args, result, path, mover = json.loads(line)
+        i, event, tick, step, within, args, result, path, mover, placing = json.loads(line)
         anchor = FTP if event == "step" else TI if event == "insert" else TICK if event == "tick" else ids[i]
         if event == "tick":
             mover = ticks[tick] if 0 <= tick < len(ticks) else None
@@ -281,7 +283,7 @@ def records_from(text: str, ids: dict[int, str], outcome: Outcome | None = None)
             mover = _mover(mover) if mover is not None else None
         out.append(TraceRecord(anchor, event, tick if tick >= 0 else None, step if step >= 0 else None,
                                ids.get(within) if within >= 0 else None, args, result,
-                               _path(path) if path is not None else None, mover))
+                               _path(path) if path is not None else None, mover, placing if placing >= 0 else None))
     return tuple(out)
 
 

@@ -14,7 +14,10 @@ originals back afterwards. What a wrapper writes depends on the routine's ACE fi
 - a PhysicsObj routine on the mover: ``enter`` and ``exit`` with the mover as a TickState;
 - any other routine: one ``call`` record at its exit, with its result only.
 
-Records carry the tick (run_ticks' step index) and the FindTransitionalPosition step they ran in.
+Records carry the tick (run_ticks' step index) and the FindTransitionalPosition step they ran in, and,
+while a static object is placed (PhysicsObj.add_obj_to_cell on an object other than the mover: the
+world's statics as the run builds it, an EnvCell's stabs as the cell loads), that object's ID
+(`placing`): the statics' placement is part of the traced run, as ACE's instrumented facade records it.
 A traced run starts cold (the memories of GfxObjs and landblocks across runs emptied first), and a
 routine that remembers answers ACE computes every time (anchors.remembers) runs its twin computing
 every time, so its trace is a function of the scene alone: it does not depend on what the process
@@ -45,6 +48,7 @@ MOVER_FILE = "PhysicsObj.cs"
 FTP = "Transition.cs:FindTransitionalPosition"
 TI = "Transition.cs:TransitionalInsert"
 TICK = "PhysicsObj.cs:update_object"
+PLACE = "PhysicsObj.cs:add_obj_to_cell"  # a static object's placement: the records it writes are labelled `placing`
 _ZERO = (0.0, 0.0, 0.0)
 _lock = threading.Lock()  # one traced run at a time in a process: the wrappers are the classes' own
 
@@ -138,11 +142,13 @@ class Recorder:
         self.tick: int | None = None
         self.step: int | None = None
         self.transition = None
+        self.placing: int | None = None  # the static object being placed (add_obj_to_cell), its ID
         self.running: list[str] = []  # the anchors of the routines running now, outermost first
 
     def _add(self, anchor: str, event: str, args=None, result=None, path=None, mover=None) -> None:
         within = self.running[-1] if self.running else None
-        self.records.append(TraceRecord(anchor, event, self.tick, self.step, within, args, result, path, mover))
+        self.records.append(TraceRecord(anchor, event, self.tick, self.step, within, args, result, path, mover,
+                                        self.placing))
 
     # ---- the per-step points (one guarded line each in the port)
 
@@ -167,7 +173,7 @@ class Recorder:
     @harness("forgets the records (a run retried on a deep stack starts again)")
     def clear(self) -> None:
         self.records.clear()
-        self.tick = self.step = self.transition = None
+        self.tick = self.step = self.transition = self.placing = None
         self.running.clear()
 
 
@@ -225,6 +231,8 @@ def _wrap(fn, anchor, recorder: Recorder, transition_type):
             r = _run(recorder, ace, fn, args, kw)
             recorder._add(ace, "exit", None, plain(r), mover=_mover_state(obj))
             return r
+        if ace == PLACE:
+            traced = _placing(traced, recorder)
     else:
         def traced(*args, **kw):
             a = _args(args, kw)
@@ -235,6 +243,20 @@ def _wrap(fn, anchor, recorder: Recorder, transition_type):
     traced.__name__ = fn.__name__
     traced.__qualname__ = fn.__qualname__
     return traced
+
+
+def _placing(traced, recorder: Recorder):
+    """add_obj_to_cell's wrapper `traced`, labelling what it records with the static object it places."""
+    def placing(*args, **kw):
+        obj = args[0] if args else None
+        if getattr(obj, "id", None) == MOVER_ID:
+            return traced(*args, **kw)
+        outer, recorder.placing = recorder.placing, int(getattr(obj, "id", 0))
+        try:
+            return traced(*args, **kw)
+        finally:
+            recorder.placing = outer
+    return placing
 
 
 @harness("every (anchor, event) kind of record a traced run of this port can write: its grain")

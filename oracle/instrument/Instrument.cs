@@ -7,7 +7,9 @@
 // "AFrame.cs:Rotate(Quaternion)", "ACE.DatLoader/Entity/Polygon.cs:Unpack"). Each is resolved to the ACE
 // methods it names (module: ACE.DatLoader for an "ACE.DatLoader/..." anchor, else ACE.Server; type: the file's
 // name; method: the name, the constructors when it is the type's name, or the property getter; overloads: the
-// parameter list when given, else every overload no anchor with a parameter list claims). <map file> gets one
+// parameter list when given -- or, when no method has that list, the overloads no other anchor claims whose list is
+// the anchor's with trailing parameters added or dropped (a build before or after a fix that added one, as ACE's #2547
+// gave add_all_outside_cells its `uint id`) -- else every overload no anchor with a parameter list claims). <map file> gets one
 // line per instrumented method: "id<TAB>anchor<TAB>Type::Method(params)<TAB>flags" (flags: s static, c
 // constructor), then "unresolved<TAB>anchor" for each anchor that names no method of this build.
 //
@@ -50,11 +52,16 @@ static class Instrument
         var map = new List<string>();
         var id = 0;
         var claimed = new HashSet<MethodDefinition>();
-        // anchors with a parameter list first: an anchor without one takes the overloads left
-        foreach (var anchor in anchors.OrderBy(a => a.Contains("(") ? 0 : 1))
+        // anchors with a parameter list first, exactly; then those whose list no method has, by its trailing parameters
+        // added or dropped; an anchor without one takes the overloads left
+        var pending = new HashSet<string>(anchors);
+        foreach (var pass in new[] { 0, 1, 2 })
+        foreach (var anchor in anchors.Where(a => pending.Contains(a) && (a.Contains("(") ? pass < 2 : pass == 2)))
         {
             var module = anchor.StartsWith("ACE.DatLoader/") ? dat.MainModule : server.MainModule;
-            var methods = Resolve(module, anchor).Where(m => m.HasBody && !claimed.Contains(m)).ToList();
+            var methods = Resolve(module, anchor, pass == 1).Where(m => m.HasBody && !claimed.Contains(m)).ToList();
+            if (methods.Count == 0 && pass == 0) continue;  // tried again by its trailing parameters
+            pending.Remove(anchor);
             if (methods.Count == 0)
             {
                 map.Add("unresolved\t" + anchor);
@@ -110,7 +117,7 @@ static class Instrument
     }
 
     // ------------------------------------------------------------------ resolving an anchor
-    static IEnumerable<MethodDefinition> Resolve(ModuleDefinition module, string anchor)
+    static IEnumerable<MethodDefinition> Resolve(ModuleDefinition module, string anchor, bool byPrefix = false)
     {
         var colon = anchor.LastIndexOf(".cs:", StringComparison.Ordinal);
         var file = anchor.Substring(0, colon);
@@ -144,7 +151,7 @@ static class Instrument
                 var named = method == className ? m.IsConstructor && !m.IsStatic
                                                : m.Name == method || m.Name == "get_" + method;
                 if (!named) continue;
-                if (pars != null && !ParamsMatch(m, pars)) continue;
+                if (pars != null && !(byPrefix ? ParamsPrefix(m, pars) : ParamsMatch(m, pars))) continue;
                 yield return m;
             }
         }
@@ -225,6 +232,14 @@ static class Instrument
         // for Unpack<T>(this List<T> value, BinaryReader reader))
         var extension = m.IsStatic && m.CustomAttributes.Any(a => a.AttributeType.Name == "ExtensionAttribute");
         return extension && have.Where(h => h != "BinaryReader").SequenceEqual(pars);
+    }
+
+    /// <summary>Whether m's parameter list and the anchor's differ only by trailing parameters, one a prefix of the other.</summary>
+    static bool ParamsPrefix(MethodDefinition m, List<string> pars)
+    {
+        var have = m.Parameters.Select(p => Short(p.ParameterType)).ToList();
+        var n = Math.Min(have.Count, pars.Count);
+        return n > 0 && have.Count != pars.Count && have.Take(n).SequenceEqual(pars.Take(n));
     }
 
     // ------------------------------------------------------------------ rewriting a method

@@ -1,7 +1,7 @@
 // acconform's trace recorder (MIT), compiled into the facade of an instrumented ACE copy only (oracle/instrumented.py):
 // the instrumented methods call it at their entry and exits (Acconform.Trace.Hooks, injected by Instrument.cs), and it
 // writes the records the port's tracing writes (port/tracing.py), one JSON array a line:
-//     [anchor id, event, tick, step, within id, args, result, path, mover]
+//     [anchor id, event, tick, step, within id, args, result, path, mover, placing]
 // (-1 or null where the port's record leaves the field out). acconform/oracle/instrumented.py turns them into
 // acconform.trace records. What a record holds follows the port's rules, by the kind of the anchor's ACE file
 // (the table Install is given): a transition routine ("p") writes enter and exit with the run's current Transition
@@ -9,7 +9,9 @@
 // as a TickState, on another object one call; any other routine ("c") one call at its exit, with its arguments as
 // they were at its entry. The per-step points the port marks with one line each are taken from the calls that
 // open them: a pass of FindTransitionalPosition's loop opens with AdjustOffset, a TransitionalInsert attempt with
-// InsertIntoCell, a tick with the facade's TickStarted.
+// InsertIntoCell, a tick with the facade's TickStarted. While PhysicsObj.add_obj_to_cell places a static object (any
+// object but the mover: the facade's statics as it builds the scene, an EnvCell's stabs as the cell loads), each
+// record carries that object's ID (`placing`), as the port's do.
 using System;
 using System.Collections;
 using System.Collections.Generic;
@@ -29,14 +31,16 @@ namespace Acconform.Oracle
         const uint MoverId = 0x50000001;  // acconform.staging.MOVER_ID
         static TraceRecorder instance;
 
-        sealed class Frame { public int Id; public string Args; public PhysicsObj Mover; }
+        sealed class Frame { public int Id; public string Args; public PhysicsObj Mover; public bool Places; public long Outer; }
 
-        string[] kinds = new string[0];  // per anchor id: "p", "m" or "c", then the role: f(TP), a(djustOffset), t(I), i(nsertIntoCell)
+        string[] kinds = new string[0];  // per anchor id: "p", "m" or "c", then the role: f(TP), a(djustOffset), t(I), i(nsertIntoCell),
+        // o (add_obj_to_cell)
         int ftpId = -1, tiId = -1, tickId = -1;
         readonly StringBuilder sb = new StringBuilder(1 << 16);
         readonly List<Frame> running = new List<Frame>();
         readonly Dictionary<Type, Func<object, object>> idOf = new Dictionary<Type, Func<object, object>>();
         int tick = -1, step = -1, steps, ticksStarted;
+        long placing = -1;  // the ID of the static object add_obj_to_cell is placing, -1 when none
         Transition transition;
         public int Records;
 
@@ -63,6 +67,7 @@ namespace Acconform.Oracle
             r.sb.Clear();
             r.running.Clear();
             r.tick = r.step = -1;
+            r.placing = -1;
             r.steps = r.ticksStarted = 0;
             r.transition = null;
             r.Records = 0;
@@ -124,6 +129,13 @@ namespace Acconform.Oracle
             }
             else
                 frame.Args = Json(args);
+            if (kind[1] == 'o' && args.Length > 0 && args[0] is PhysicsObj && ((PhysicsObj)args[0]).ID != MoverId)
+            {
+                // a static's placement: this frame's records, and the ones inside it, carry the static's ID
+                frame.Places = true;
+                frame.Outer = placing;
+                placing = ((PhysicsObj)args[0]).ID;
+            }
             running.Add(frame);
         }
 
@@ -134,6 +146,8 @@ namespace Acconform.Oracle
             while (at >= 0 && running[at].Id != id) at--;
             if (at < 0) return;
             var frame = running[at];
+            for (var k = at + 1; k < running.Count; k++)  // a placement left by an exception ends with it
+                if (running[k].Places) { placing = running[k].Outer; break; }
             running.RemoveRange(at, running.Count - at);
             var kind = kinds[id];
             var answer = refs == null ? Json(result) : Json(refs);
@@ -146,6 +160,7 @@ namespace Acconform.Oracle
                 Write(id, "exit", null, answer, null, Mover(frame.Mover));
             else
                 Write(id, "call", frame.Args, answer, null, null);
+            if (frame.Places) placing = frame.Outer;
         }
 
         void Write(int id, string ev, string args, string result, string path, string mover)
@@ -153,7 +168,7 @@ namespace Acconform.Oracle
             var within = Top;
             sb.Append('[').Append(id).Append(",\"").Append(ev).Append("\",").Append(tick).Append(',').Append(step).Append(',')
               .Append(within != null ? within.Id : -1).Append(',').Append(args ?? "null").Append(',').Append(result ?? "null")
-              .Append(',').Append(path ?? "null").Append(',').Append(mover ?? "null").Append("]\n");
+              .Append(',').Append(path ?? "null").Append(',').Append(mover ?? "null").Append(',').Append(placing).Append("]\n");
             Records++;
         }
 

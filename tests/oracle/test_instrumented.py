@@ -92,3 +92,38 @@ def test_a_planted_sign_flip_is_named_in_cliff_slide_against_aces_trace_as_again
     against_ace = explain_case(case, Planted(), "exact", runtime, live.run(case.scene), "live ACE", traced_ace=traced)
     assert against_ace.reference_name == "ACE" and against_ace.divergence is not None
     assert against_ace.divergence.key() == against_port.divergence.key() == "Transition.cs:CliffSlide args"
+
+
+def test_a_static_boxed_by_seven_corners_is_named_in_bbox_local_to_global_while_that_static_is_placed(live, traced, sample,
+                                                                                                     monkeypatch):
+    """A bug like ACE's #3226, planted in the port: LocalToGlobal carries one corner fewer into the cell's frame.
+    The outcome may not change (the box may still reach the same cells); the trace does, while the scene's
+    outdoor static is placed, before the run: the comparison with ACE's trace names BBox.LocalToGlobal there."""
+    from acconform.numerics import Vector3
+    from acconform.port import bbox
+    from acconform.port.run import traced_run
+    from acconform.trace import against_ace
+
+    def five_corners(self, from_box, from_pos, to_pos):  # the last of the six other corners left out
+        fmin, fmax = from_box.min, from_box.max
+        self.min = to_pos.local_to_global_from(from_pos, fmin)
+        self.max = to_pos.local_to_global_from(from_pos, fmax)
+        for corner in ((fmax.x, fmax.y, fmin.z), (fmax.x, fmin.y, fmax.z), (fmin.x, fmax.y, fmax.z), (fmin.x, fmax.y, fmin.z),
+                       (fmax.x, fmin.y, fmin.z)):
+            self.adjust_bbox(to_pos.local_to_global_from(from_pos, Vector3(*corner)))
+
+    def boxes_a_part(scene):  # a static placed by its parts' boxes (a cylinder's placement reads no box)
+        return any(r.anchor == "BBox.cs:LocalToGlobal" and r.placing for r in traced_run(scene)[1])
+
+    scene = next(s for s in sample if s.objects and boxes_a_part(s))
+    _, ace = traced.trace(scene)
+    monkeypatch.setattr(bbox.BBox, "local_to_global", bbox.BBox.local_to_global)  # restored after the test
+    wrapped = bbox.BBox.local_to_global
+    from acconform.port import anchors
+
+    key = next(k for k, fn in anchors.FUNCTIONS.items() if fn is wrapped)
+    monkeypatch.setitem(anchors.FUNCTIONS, key, five_corners)
+    monkeypatch.setattr(bbox.BBox, "local_to_global", five_corners)
+    _, port = traced_run(scene, "exact", live.location.runtime)
+    d = against_ace(ace, port, traced.kinds, scene.ticks is not None, traced.overloaded)
+    assert d is not None and d.routine == "BBox.cs:LocalToGlobal" and d.placing in {o.id for o in scene.objects}

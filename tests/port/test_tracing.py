@@ -91,6 +91,24 @@ def test_a_tick_scene_writes_one_tick_record_per_tick_with_the_mover_after_it():
     assert all(r.mover is not None for r in inside)
 
 
+@pytest.mark.anchor("CPhysicsObj::add_obj_to_cell")
+@pytest.mark.parametrize("kind, placed", [("obstacles", 0x70000000), ("indoor", 0)])
+def test_a_statics_placement_is_traced_each_record_labelled_with_the_static_it_places(kind, placed):
+    # an outdoor static keeps the scene's id; a stab of an EnvCell is made by the cell with id 0, as ACE makes it
+    from acconform.strategies import sample_scenes
+
+    scene = next(iter(sample_scenes((kind,), 1, 3)))
+    _, records = traced_run(scene)
+    labelled = [i for i, r in enumerate(records) if r.placing is not None]
+    assert {records[i].placing for i in labelled} == {placed}
+    # one unbroken run of records per static, ending with add_obj_to_cell's own record; none of the mover's
+    assert labelled == list(range(labelled[0], labelled[-1] + 1))
+    assert records[labelled[-1]].anchor == "PhysicsObj.cs:add_obj_to_cell"
+    assert "PhysicsObj.cs:calc_cross_cells_static" in {records[i].anchor for i in labelled}
+    assert all(r.mover is None for r in records if r.placing is not None)
+    assert records[-1].placing is None and any(r.path is not None for r in records[labelled[-1] + 1:])
+
+
 def test_trace_records_survive_their_json():
     _, records = traced_run(scene_of("placement_wall_push"))
     doc = json.loads(json.dumps(trace_to_json(records)))
