@@ -150,8 +150,8 @@ def test_part_scales_are_the_setups_default_scale_under_its_flag():
 
 
 def test_the_ports_setup_reader_reads_every_field_written():
-    from port.dat.binary_reader import BinaryReader
-    from port.dat.setup_model import SetupModel
+    from acconform.port.dat.binary_reader import BinaryReader
+    from acconform.port.dat.setup_model import SetupModel
     from acconform.numerics import get_mode
 
     parts = tuple(PartRec(p.shape, p.frame, (1.0, 2.0, 0.5)) for p in PARTS)

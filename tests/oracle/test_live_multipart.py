@@ -5,7 +5,7 @@ and ACE's answers say what each scene is for."""
 import pytest
 
 from acconform.compare import compare
-from port.run import run_scene
+from acconform.port.run import run_scene
 
 from .scenes import MULTIPART
 
