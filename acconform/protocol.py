@@ -109,6 +109,11 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "setup.multipart": (lambda s: any(o.setup is not None for o in s.objects),
                         "a static object made from a Setup of several parts (each a BSP GfxObj at its placement frame, "
                         "with or without a per-part DefaultScale) and the Setup's spheres and cylspheres (scene/7)"),
+    "doors": (lambda s: s.has_doors,
+              "the tick input door: an outdoor static, named by id, opens or closes at a tick with the physics of ACE's "
+              "server Door (Open: PhysicsState.Ethereal set on its State; FinalizeClose: cleared, then "
+              "ethereal_check_for_collisions sets it again when an object overlaps the door, a default server's "
+              "allow_door_hold) (scene/7: ticks.steps[].door)"),
 }
 
 

@@ -14,11 +14,13 @@ import sys
 from pathlib import Path
 
 from acconform.flags import PhysicsState
-from acconform.scene import DoorInput, Frame, Position, StaticObject, TickStep
+from dataclasses import replace
+
+from acconform.scene import DoorInput, Frame, Placement, Position, StaticObject, TickStep
 from acconform.strategies.shapes import box
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from oracle.named_scenes import GROUND, cell_at, land, mover, scene  # noqa: E402
+from oracle.named_scenes import GROUND, WALKING, cell_at, land, mover, scene  # noqa: E402
 
 DOOR = 0x70000001
 DOOR_Y = 62.0
@@ -38,7 +40,10 @@ def _push(vy: float, **kw) -> TickStep:
 
 
 def _scene(name: str, y: float, steps, state: int):
-    return scene(name, [land()], mover((60.0, y, GROUND)), tuple(steps), [door(state)])
+    """The player enters the world (enter_world, as a server's Player does) before the ticks: it is in its
+    cell's object list from the start, where a closing door's ethereal_check_for_collisions looks."""
+    m = replace(mover((60.0, y, GROUND)), placement=Placement(via="enter_world"))
+    return scene(name, [land()], m, tuple(steps), [door(state)])
 
 
 def door_closes_on_a_player_in_the_doorway():
@@ -64,6 +69,15 @@ def closed_door_opens_before_a_player():
     return _scene("closed_door_opens_before_a_player", 59.0, steps, CLOSED)
 
 
+def closed_door_opens_and_the_player_walks_through():
+    """As closed_door_opens_before_a_player, but the opening tick also sets the player's TransientState to
+    Contact|OnWalkable|Active: the Sliding flag and sliding normal the closed door left (which hold the
+    player at the open door's face in the scene before) cleared, the player walks on through the open door."""
+    steps = ([_push(3.0)] * 40 + [_push(3.0, door=DoorInput(DOOR, True), transient_state=WALKING)]
+             + [_push(3.0)] * 30)
+    return _scene("closed_door_opens_and_the_player_walks_through", 59.0, steps, CLOSED)
+
+
 def door_closes_on_a_player_touching_it():
     """The player pressed against the open door's face (the door's slab is ethereal, the player walks into it
     and stops inside); a close while the player overlaps the slab by the push is held; then the player backs off
@@ -74,7 +88,7 @@ def door_closes_on_a_player_touching_it():
 
 
 NAMED = (door_closes_on_a_player_in_the_doorway, door_closes_behind_a_player, closed_door_opens_before_a_player,
-         door_closes_on_a_player_touching_it)
+         closed_door_opens_and_the_player_walks_through, door_closes_on_a_player_touching_it)
 
 
 def scenes() -> dict:
