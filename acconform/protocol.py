@@ -301,7 +301,8 @@ class Implementation:
         (motion tick scenes) when it lists ticks and mover.motion."""
         features = self.hello["features"]
         return (tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in features else ())
-                + (("motion",) if "ticks" in features and "mover.motion" in features else ()))
+                + (("motion",) if "ticks" in features and "mover.motion" in features else ())
+                + (("doors",) if "ticks" in features and "doors" in features else ()))
 
     @property
     def runs_every_scene(self) -> bool:
