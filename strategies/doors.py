@@ -89,7 +89,7 @@ def draw_door_ticks(draw, base, clock):
     if k is None:
         k = draw(st.integers(0, n - 1))
     k = min(max(k, 0), n - 1)
-    name = f"ticks:door:{base.name}:{way}:{when}:{label}"
+    name = f"ticks:door:{way}:{when}:{base.name}:{label}"
     if door is None:  # the door's point lies outside the scene's landblocks: a plain walk
         return _tick_scene(base, start, dts, inputs, "update_object", None, name + ":no-door")
     inputs[k]["door"] = DoorInput(DOOR_ID, way == "opens")
