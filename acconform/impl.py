@@ -33,8 +33,8 @@ class BuiltinPort:
 
     name = "acconform port"
     hello = None
-    # every campaign kind, and "motion" (motion tick scenes: the port has the motion layer)
-    kinds = ("terrain", "bsp", "obstacles", "indoor", "buildings", "ticks", "motion")
+    # every campaign kind, "motion" (motion tick scenes: the port has the motion layer) and "doors"
+    kinds = ("terrain", "bsp", "obstacles", "indoor", "buildings", "ticks", "motion", "doors")
 
     def __init__(self, mode: str = "exact", runtime: str = "mono"):
         from .port.run import run_scene

@@ -109,6 +109,11 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "setup.multipart": (lambda s: any(o.setup is not None for o in s.objects),
                         "a static object made from a Setup of several parts (each a BSP GfxObj at its placement frame, "
                         "with or without a per-part DefaultScale) and the Setup's spheres and cylspheres (scene/7)"),
+    "doors": (lambda s: s.has_doors,
+              "the tick input door: an outdoor static, named by id, opens or closes at a tick with the physics of ACE's "
+              "server Door (Open: PhysicsState.Ethereal set on its State; FinalizeClose: cleared, then "
+              "ethereal_check_for_collisions sets it again when an object overlaps the door, a default server's "
+              "allow_door_hold) (scene/7: ticks.steps[].door)"),
 }
 
 
@@ -296,7 +301,8 @@ class Implementation:
         (motion tick scenes) when it lists ticks and mover.motion."""
         features = self.hello["features"]
         return (tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in features else ())
-                + (("motion",) if "ticks" in features and "mover.motion" in features else ()))
+                + (("motion",) if "ticks" in features and "mover.motion" in features else ())
+                + (("doors",) if "ticks" in features and "doors" in features else ()))
 
     @property
     def runs_every_scene(self) -> bool:

@@ -764,12 +764,35 @@ DRIVERS = ("update_object", "request_pos")  # PhysicsObj.update_object / the leg
 # a step's inputs, in the order both sides apply them (the clock still at the previous tick's time)
 TICK_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega", "jump", "sequence_velocity",
                "sequence_omega", "request_pos", "motion", "stop", "do_motion", "stop_motion", "move_to",
-               "move_to_object", "turn_to_heading", "turn_to_object")
+               "move_to_object", "turn_to_heading", "turn_to_object", "door")
 # the motion layer's inputs (scene/6, feature mover.motion): each needs the mover's motion table
 MOTION_INPUTS = ("motion", "stop", "do_motion", "stop_motion", "move_to", "move_to_object", "turn_to_heading",
                  "turn_to_object")
 _MANAGER_INPUTS = MOTION_INPUTS[1:]
 _TICK_VECTORS = ("velocity", "local_velocity", "omega", "jump", "sequence_velocity", "sequence_omega")
+
+
+@dataclass(frozen=True, slots=True)
+class DoorInput:
+    """``door`` (scene/7, feature ``doors``): the outdoor static `object` (its id) opens (`ethereal`
+    true) or closes (false) as ACE's server Door does it. The physics of Door.Open and
+    Door.FinalizeClose: the WorldObject's ``Ethereal`` setter (SetPhysicsPropertyState ->
+    SetPhysicsState) sets or clears PhysicsState.Ethereal on the PhysicsObj's State directly (not
+    set_ethereal); closing then asks PhysicsObj.ethereal_check_for_collisions and, when an object
+    overlaps the door, sets Ethereal again (a default server's allow_door_hold, true: the door is
+    held open; the server polls again a second later, which a scene says with another ``door``
+    input)."""
+
+    object: int
+    ethereal: bool
+
+    def to_json(self):
+        return {"object": write_id(self.object), "ethereal": self.ethereal}
+
+    @staticmethod
+    def from_json(r: Reader) -> "DoorInput":
+        r.obj({"object", "ethereal"})
+        return DoorInput(r["object"].id_(), r["ethereal"].bool_())
 
 
 @dataclass(frozen=True, slots=True)
@@ -804,6 +827,7 @@ class TickStep:
     move_to_object: ObjectMoveInput | None = None
     turn_to_heading: MoveToInput | None = None
     turn_to_object: ObjectMoveInput | None = None
+    door: DoorInput | None = None  # scene/7: a static opens or closes (Door.Open / FinalizeClose's physics)
 
     def to_json(self):
         d = {"dt": write_f64(self.dt)}
@@ -825,6 +849,8 @@ class TickStep:
             v = getattr(self, name)
             if v is not None:
                 d[name] = v.to_json()
+        if self.door is not None:
+            d["door"] = self.door.to_json()
         return d
 
     def json_text(self) -> str:
@@ -847,16 +873,20 @@ class TickStep:
             v = getattr(self, name)
             if v is not None:
                 text += ',"' + name + '":' + dumps_compact(v.to_json())
+        if self.door is not None:
+            text += ',"door":' + dumps_compact(self.door.to_json())
         return text + "}"
 
     @staticmethod
-    def from_json(r: Reader, driver: str, motion: bool = True) -> "TickStep":
+    def from_json(r: Reader, driver: str, motion: bool = True, doors: bool = True) -> "TickStep":
         """`driver`: the scene's driver (request_pos needs a RequestPos on every step, update_object refuses one).
-        `motion`: the format knows the input motion (scene/6)."""
+        `motion`: the format knows the input motion (scene/6); `doors`: the input door (scene/7)."""
         if not motion and isinstance(r.value, dict):
             for name in MOTION_INPUTS:
                 if name in r.value:
                     r[name].fail(f"a motion input needs format {FORMAT_V6!r} or later (older formats have none)")
+        if not doors and isinstance(r.value, dict) and "door" in r.value:
+            r["door"].fail(f"a door input needs format {FORMAT!r} (older formats have none)")
         r.obj({"dt", *TICK_INPUTS})
         dt = r["dt"].f64()
         if dt < 0:
@@ -891,6 +921,8 @@ class TickStep:
         for name in ("move_to_object", "turn_to_object"):
             if r.has(name):
                 kw[name] = ObjectMoveInput.from_json(r[name])
+        if r.has("door"):
+            kw["door"] = DoorInput.from_json(r["door"])
         return TickStep(dt, **kw)
 
 
@@ -923,8 +955,8 @@ class Ticks:
                 + ',"steps":[' + ",".join([s.json_text() for s in self.steps]) + "]}")
 
     @staticmethod
-    def from_json(r: Reader, motion: bool = True) -> "Ticks":
-        """`motion`: the format knows the tick input motion (scene/6)."""
+    def from_json(r: Reader, motion: bool = True, doors: bool = True) -> "Ticks":
+        """`motion`: the format knows the tick input motion (scene/6); `doors`: the input door (scene/7)."""
         r.obj({"driver", "start", "steps"})
         driver = r["driver"].str_()
         if driver not in DRIVERS:
@@ -933,7 +965,7 @@ class Ticks:
         steps = r["steps"].list()
         if not steps:
             r["steps"].fail("a tick scene needs at least one step (one per tick)")
-        ticks = Ticks(driver, start, tuple(TickStep.from_json(s, driver, motion) for s in steps))
+        ticks = Ticks(driver, start, tuple(TickStep.from_json(s, driver, motion, doors) for s in steps))
         times = ticks.times()
         if not math.isfinite(times[-1]):
             r["steps"].fail(f"the clock overflows: start plus the steps' dt reaches {times[-1]}")
@@ -1073,10 +1105,15 @@ class Scene:
             self.ticks is not None and any(getattr(s, name) is not None for s in self.ticks.steps for name in MOTION_INPUTS))
 
     @property
+    def has_doors(self) -> bool:
+        """Whether a tick opens or closes a static (the input door; protocol feature doors)."""
+        return self.ticks is not None and any(s.door is not None for s in self.ticks.steps)
+
+    @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/7 for a static with a setup, /6 for a placement
+        """The oldest format that holds the scene (/7 for a static with a setup or a door input, /6 for a placement
         through enter_world, /5 for buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
-        if any(o.setup is not None for o in self.objects):
+        if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT
         if self.has_motion or self.mover.player_killer_status != PLAYER_KILLER_STATUS_NPK:
             return FORMAT_V6
@@ -1153,7 +1190,7 @@ class Scene:
         if r.given("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
         buildings = tuple(Building.from_json(b) for b in r["buildings"].list()) if r.given("buildings") else ()
-        ticks = Ticks.from_json(r["ticks"], motion=fmt in (FORMAT_V6, FORMAT)) if r.has("ticks") else None
+        ticks = Ticks.from_json(r["ticks"], motion=fmt in (FORMAT_V6, FORMAT), doors=fmt == FORMAT) if r.has("ticks") else None
         mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT),
                                 ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT))
         scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings)
@@ -1208,6 +1245,11 @@ def check_consistency(scene: Scene, path: str = "") -> None:
                     raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}.object"),
                                        f"no outdoor static object has id {write_id(target.object)} (the target is "
                                        "one of the scene's objects outside EnvCells, named by its id)")
+            if step.door is not None and step.door.object not in statics:
+                raise InvalidScene(_p(path, f"ticks.steps[{i}].door.object"),
+                                   f"no outdoor static object has id {write_id(step.door.object)} (the door is one of "
+                                   "the scene's objects outside EnvCells, named by its id: ACE makes an EnvCell's "
+                                   "statics itself, with no WorldObject to open)")
 
     def check_landblock(where: str, cell: int) -> None:
         if cell >> 16 not in defined:

@@ -187,7 +187,21 @@ def _tick_scenes(scene):
     return [replace(scene, engine_mode="client", mover=m, name="ticks", ticks=Ticks("update_object", 1000.0, (every, TickStep(0.25)))),
             replace(scene, engine_mode="client", mover=m, ticks=Ticks("request_pos", 0.0, (
                 TickStep(0.1, request_pos=scene.mover.begin),))),
-            _motion_scene(scene, m)]
+            _motion_scene(scene, m), _door_scene(scene, m)]
+
+
+def _door_scene(scene, m):
+    """A door scene (scene/7, doors): an outdoor static at the mover's start (when it starts outdoors) closed
+    by the tick input door."""
+    from dataclasses import replace
+
+    from .scene import DoorInput, SphereRec, SphereShape, StaticObject, Ticks, TickStep
+
+    if m.begin.cell & 0xFFFF >= 0x100:
+        return replace(scene, mover=m, ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30),)))
+    door = StaticObject(0x7F000002, m.begin, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)))
+    return replace(scene, mover=m, name="door", objects=scene.objects + (door,),
+                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, door=DoorInput(door.id, False)),)))
 
 
 def _motion_scene(scene, m):

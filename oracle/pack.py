@@ -17,9 +17,10 @@ from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import DRIVERS, TICK_INPUTS, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 11
+PACK_VERSION = 12
 
 _f = struct.Struct("<f")
+_DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
 _4f = struct.Struct("<4f")
 _3f = struct.Struct("<3f")
 
@@ -117,6 +118,8 @@ def _ticks(ticks: Ticks | None) -> bytes:
                 values.append(_params(v.params))
             elif name in ("move_to_object", "turn_to_object"):
                 values.append(_U32.pack(v.object) + _params(v.params))
+            elif name == "door":
+                values.append(_DOOR.pack(v.object, 1 if v.ethereal else 0))
             else:
                 values.append(_3f.pack(*v))
         out.append(_STEP_HEAD.pack(time, mask))

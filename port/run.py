@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from acconform.flags import PLAYER_KILLER_STATUS_NPK, SetPositionError, TransientState
+from acconform.flags import PLAYER_KILLER_STATUS_NPK, PhysicsState, SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState,
                                PlaneState, TickState)
@@ -419,7 +419,7 @@ def handle_action_jump(mover: PhysicsObj, velocity) -> None:
 
 
 @harness("a tick step's inputs, in the scene's order, as the oracle's facade applies them")
-def apply_inputs(mover: PhysicsObj, step, mode) -> None:
+def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) -> None:
     if step.state is not None:
         mover.state = step.state
     if step.transient_state is not None:
@@ -452,6 +452,22 @@ def apply_inputs(mover: PhysicsObj, step, mode) -> None:
         turn_to_heading(mover, step.turn_to_heading, mode)
     if step.turn_to_object is not None:
         object_move(mover, step.turn_to_object, True, mode)
+    if step.door is not None:
+        door(mover.server_objects.get_object_a(step.door.object), step.door.ethereal, lscape)
+
+
+@harness("the physics of ACE's server Door (Door.Open, Door.FinalizeClose), as the oracle's facade makes them")
+def door(obj: PhysicsObj, ethereal: bool, lscape: LScape) -> None:
+    """Open: the WorldObject's Ethereal setter (SetPhysicsPropertyState -> SetPhysicsState) sets
+    PhysicsState.Ethereal on State directly, not through set_ethereal. FinalizeClose: the flag
+    cleared, then with allow_door_hold (a default server's PropertyManager: true)
+    ethereal_check_for_collisions: an object overlapping the door sets it again (held open)."""
+    if ethereal:
+        obj.state |= PhysicsState.Ethereal
+        return
+    obj.state &= ~PhysicsState.Ethereal
+    if obj.ethereal_check_for_collisions(lscape):
+        obj.state |= PhysicsState.Ethereal
 
 
 @harness("a scene's MovementParameters built as the oracle's facade builds it: ACE's constructor, then each field the scene gives")
@@ -643,7 +659,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
         if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
             trace.recorder.at_tick(index)
         try:
-            apply_inputs(mover, step, mode)
+            apply_inputs(mover, step, mode, lscape)
             timer.set(time)
             if ticks.driver == "update_object":
                 updated = mover.update_object(lscape, trace)

@@ -46,6 +46,9 @@ TICK_WORLD_KINDS: tuple[str, ...] = tuple(f"ticks:{k}" for k in GEOMETRY_KINDS)
 # the server's MoveTo / turn / stop / DoMotion calls); recorded as "ticks"; an implementation runs it when it
 # lists "ticks" and the feature mover.motion (protocol.Implementation.kinds; the built-in port does)
 MOTION_KIND = "motion"
+# "doors": tick scenes of the ticks policy door only (strategies/doors.py: a door on the path opens or closes at a
+# tick); recorded as "ticks"; an implementation runs it when it lists "ticks" and the feature doors
+DOORS_KIND = "doors"
 
 
 def kind_supported(kind: str, supported) -> bool:
@@ -68,8 +71,8 @@ def check_kinds(kinds) -> tuple[str, ...]:
         if not k:
             raise AcconformError(f"--kinds {given!r}: an empty kind name between commas "
                                  f"(known: {', '.join(ALL_KINDS)})")
-        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS and k != MOTION_KIND:
-            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, {MOTION_KIND}, or ticks:<world> for "
+        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS and k not in (MOTION_KIND, DOORS_KIND):
+            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, {MOTION_KIND}, {DOORS_KIND}, or ticks:<world> for "
                                  f"tick scenes over one of {', '.join(GEOMETRY_KINDS)})")
     if len(set(kinds)) != len(kinds):
         twice = next(k for k in kinds if kinds.count(k) > 1)

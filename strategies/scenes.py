@@ -160,6 +160,10 @@ OBJECT_ANGLES = st.sampled_from((0, 0, 90, 45, 10, -30))
 
 @st.composite
 def scenes_of(draw, kind: str):
+    if kind == "doors":  # the ticks policy door only (strategies/doors.py)
+        from .ticks import draw_tick_scene
+
+        return draw_tick_scene(draw, None, "door")
     if kind == "motion":  # the ticks policy motion only (strategies/motion.py)
         from .ticks import draw_tick_scene
 

@@ -92,7 +92,8 @@ ENTER_SITES = (("buildings", "in"), ("buildings", "in"), ("buildings", "in"), ("
 PORCH_SITES = (("buildings", "porch"),)
 CELLAR_SITES = (("buildings", "hatch"), ("buildings", "hatch"), ("buildings", "cellar"))
 SHELL_SITES = (("buildings", "along"), ("buildings", "along"), ("buildings", "wall"))
-SITES = {"walk": WALK_SITES, "motion": WALK_SITES + FALL_SITES + JUMP_SITES, "fall": FALL_SITES, "jump": JUMP_SITES, "press": PRESS_SITES, "enter": ENTER_SITES,
+DOOR_SITES = (("obstacles", None), ("obstacles", None), ("terrain", None))  # strategies/doors.py
+SITES = {"door": DOOR_SITES, "walk": WALK_SITES, "motion": WALK_SITES + FALL_SITES + JUMP_SITES, "fall": FALL_SITES, "jump": JUMP_SITES, "press": PRESS_SITES, "enter": ENTER_SITES,
          "porch": PORCH_SITES, "cellar": CELLAR_SITES, "shell": SHELL_SITES,
          # the policies drawing their own worlds: the worlds they draw on
          "slide": (("terrain", None),), "sled": (("terrain", None), ("bsp", None)), "cross": (("terrain", None),),
@@ -358,6 +359,10 @@ def _draw_tick_scene(draw, world: str | None, policy: str | None) -> Scene:
     base = draw_scene(draw, kind, sub)
     if policy in ("walk", "enter"):
         return _walk(draw, base, policy)
+    if policy == "door":  # a door on the path opens or closes at a tick (strategies/doors.py)
+        from .doors import draw_door_ticks
+
+        return draw_door_ticks(draw, base, _clock)
     if policy == "motion":  # a motion table and MoveToState keys (strategies/motion.py)
         from .motion import draw_motion_ticks
 

@@ -106,6 +106,14 @@ def describe_ticks(ticks) -> list[str]:
                 v = "|".join(flag_names(TransientState, v)) or "0"
             elif name == "request_pos":
                 v = f"{_id(v.cell)} {_v(v.frame.origin)}"
+            elif name == "door":
+                v = f"{_id(v.object)} {'opens (ethereal)' if v.ethereal else 'closes'}"
+            elif hasattr(v, "to_json"):  # the motion layer's inputs
+                from ..codec import dumps_compact
+
+                v = dumps_compact(v.to_json())
+            elif isinstance(v, str):
+                pass
             else:
                 v = _v(v)
             inputs.append(f"{name} {v}")

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 11;
+        public const int PackVersion = 12;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -88,6 +88,7 @@ namespace Acconform.Oracle
             public ACE.Server.Physics.Common.Position MoveToPos;
             public MovementParameters MoveToParams, TurnToHeadingParams, MoveToObjectParams, TurnToObjectParams;
             public uint MoveToObjectId, TurnToObjectId;
+            public uint DoorId; public bool DoorEthereal;  // scene/7: a static opens (ethereal) or closes
         }
         static bool hasTicks;
         static byte tickDriver;
@@ -387,6 +388,7 @@ namespace Acconform.Oracle
                 if ((s.Mask & 16384) != 0) { s.MoveToObjectId = r.ReadUInt32(); s.MoveToObjectParams = Params(r); }
                 if ((s.Mask & 32768) != 0) s.TurnToHeadingParams = Params(r);
                 if ((s.Mask & 65536) != 0) { s.TurnToObjectId = r.ReadUInt32(); s.TurnToObjectParams = Params(r); }
+                if ((s.Mask & 131072) != 0) { s.DoorId = r.ReadUInt32(); s.DoorEthereal = r.ReadByte() != 0; }
                 tickSteps.Add(s);
             }
         }
@@ -441,6 +443,25 @@ namespace Acconform.Oracle
             if ((s.Mask & 16384) != 0) ObjectMove(obj, s.MoveToObjectId, s.MoveToObjectParams, false);
             if ((s.Mask & 32768) != 0) TurnToHeading(obj, s.TurnToHeadingParams);
             if ((s.Mask & 65536) != 0) ObjectMove(obj, s.TurnToObjectId, s.TurnToObjectParams, true);
+            if ((s.Mask & 131072) != 0) Door(s.DoorId, s.DoorEthereal);
+        }
+
+        /// <summary>The physics of ACE's server Door (WorldObjects/Door.cs) on the static ServerObjectManager filed
+        /// under the id. Open: `Ethereal = true`, whose setter (SetPhysicsPropertyState -> SetPhysicsState) sets
+        /// PhysicsState.Ethereal on PhysicsObj.State directly. FinalizeClose: `Ethereal = false` (the flag cleared),
+        /// then, with allow_door_hold (PropertyManager's default, true), PhysicsObj.ethereal_check_for_collisions():
+        /// an object overlapping the door sets `Ethereal = true` again (the door is held open).</summary>
+        static void Door(uint doorId, bool ethereal)
+        {
+            var door = ServerObjectManager.GetObjectA(doorId);
+            if (ethereal)
+            {
+                door.State |= PhysicsState.Ethereal;
+                return;
+            }
+            door.State &= ~PhysicsState.Ethereal;
+            if (door.ethereal_check_for_collisions())
+                door.State |= PhysicsState.Ethereal;
         }
 
         /// <summary>A MovementParameters as ACE's constructor makes it, then every field the scene carries set:
