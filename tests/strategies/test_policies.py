@@ -63,7 +63,7 @@ def _local(obj, gx, gy):
 
 def test_bsp_objects_carry_static_and_has_physics_bsp_with_the_designed_variants(bsp_scenes):
     variants = {BSP_STATE, STATIC, BSP_STATE | ETHEREAL, BSP_STATE | ETHEREAL | IGNORE}
-    states = [o.state for s in bsp_scenes for o in s.objects if o.shape.kind == "bsp"]
+    states = [o.state for s in bsp_scenes for o in s.objects if o.shape is not None and o.shape.kind == "bsp"]
     assert states and set(states) <= variants
     assert states.count(BSP_STATE) > 0.7 * len(states), "Static|HasPhysicsBSP is the common case"
     assert len(set(states)) >= 3, "the walked-through and ethereal variants are drawn too"

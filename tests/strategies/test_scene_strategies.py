@@ -49,10 +49,15 @@ def test_default_kinds_start_with_terrain_and_unknown_kinds_are_refused():
         check_kinds(["walls"])
 
 
+def _shapes(o):
+    """A static's shapes: its one shape, or each part's of its multi-part Setup."""
+    return [o.shape] if o.shape is not None else [p.shape for p in o.setup.parts]
+
+
 @pytest.mark.parametrize("kind,shape_kinds", [("terrain", set()), ("bsp", {"bsp"}), ("obstacles", {"sphere", "cylsphere"})])
 def test_kinds_restrict_what_a_campaign_draws(kind, shape_kinds):
     for scene in sample_scenes((kind,), 25, 1):
-        got = {o.shape.kind for o in scene.objects}
+        got = {shape.kind for o in scene.objects for shape in _shapes(o)}
         assert got <= shape_kinds
         if shape_kinds:
             assert got, "a bsp/obstacles scene has at least one object"
@@ -126,8 +131,7 @@ def test_bsp_shapes_have_outward_planes_and_covering_bounding_spheres():
 
     seen = 0
     for scene in sample_scenes(("bsp",), 30, 2):
-        for o in scene.objects:
-            s = o.shape
+        for s in (shape for o in scene.objects for shape in _shapes(o)):
             if s.kind != "bsp":
                 continue
             pts = [p for poly in s.polygons for p in poly.vertices]
