@@ -698,6 +698,8 @@ class DatMover:
     contact_plane: ContactPlane | None
     sliding_normal: tuple[float, float, float] | None
     placement: Placement | None
+    motion_table_id: int = 0  # the player's MotionTableId (its Setup names the same table; 0: none)
+    player_killer_status: int = 2  # the Player's PlayerKillerStatus (NPK)
 
 
 @dataclass(frozen=True, slots=True)
@@ -727,7 +729,7 @@ def dat_world(scene: Scene) -> DatWorld:
         scene.land_height_table, cell_landblock_records(scene) + infos + cells, portal,
         tuple(DatStatic(o.id, recs.did, o.position, o.state, o.scale) for o, recs in zip(scene.objects, written.statics)),
         DatMover(MOVER_ID, written.mover.did, m.scale, m.state, m.transient_state, m.velocity, m.begin, m.end,
-                 m.contact_plane, m.sliding_normal, m.placement))
+                 m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status))
 
 
 __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatStatic", "DatWorld",

@@ -47,7 +47,7 @@ from . import __version__, deep
 from .codec import Reader, compact, dumps_compact, loads_answer, write_f32, write_id
 from .dat import DatMover, DatRecord, DatStatic, DatWorld, dat_world
 from .errors import AcconformError, InvalidScene
-from .flags import PLAYER_KILLER_STATUS_NPK, PhysicsState, TransientState, flag_names
+from .flags import PLAYER_KILLER_STATUS_NPK, PhysicsState, PlayerKillerStatus, TransientState, flag_names
 from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
@@ -130,7 +130,8 @@ CAPABILITIES: dict[str, str] = {
 
 DAT_FORMAT = "acconform.dat/1"
 # the DatLoader FileType classes each DAT's records may be
-DAT_TYPES = {"cell": ("CellLandblock", "LandblockInfo", "EnvCell"), "portal": ("GfxObj", "SetupModel", "Environment")}
+DAT_TYPES = {"cell": ("CellLandblock", "LandblockInfo", "EnvCell"),
+             "portal": ("GfxObj", "SetupModel", "Environment", "MotionTable", "Animation")}
 
 
 def _record_json(rec: DatRecord) -> dict:
@@ -142,6 +143,10 @@ def dat_json(world: DatWorld) -> dict:
     m = world.mover
     mover = mover_start_json(m, {"id": write_id(m.id), "did": write_id(m.did), "scale": write_f32(m.scale)},
                              explicit_via=True)
+    if m.motion_table_id:
+        mover["motion_table_id"] = write_id(m.motion_table_id)
+    if m.player_killer_status != PLAYER_KILLER_STATUS_NPK:
+        mover["player_killer_status"] = PlayerKillerStatus(m.player_killer_status).name
     return {"format": DAT_FORMAT,
             "land_height_table": [write_f32(h) for h in world.land_height_table],
             "cell": [_record_json(r) for r in world.cell],
@@ -182,13 +187,20 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
         statics.append(DatStatic(s["id"].id_(), s["did"].id_(), Position.from_json(s["position"]),
                                  s["state"].flags(PhysicsState), s["scale"].f32()))
     m = r["mover"].obj({"id", "did", "scale", "state", "transient_state", "velocity", "begin", "end", "contact_plane",
-                        "sliding_normal", "placement"})
+                        "sliding_normal", "placement", "motion_table_id", "player_killer_status"})
+    status = PLAYER_KILLER_STATUS_NPK
+    if m.given("player_killer_status"):
+        name = m["player_killer_status"].str_()
+        if name not in PlayerKillerStatus.__members__:
+            m["player_killer_status"].fail(f"not one of ACE's PlayerKillerStatus values: {name!r}")
+        status = int(PlayerKillerStatus[name])
     mover = DatMover(m["id"].id_(), m["did"].id_(), m["scale"].f32(), m["state"].flags(PhysicsState),
                      m["transient_state"].flags(TransientState), m["velocity"].vec3(), Position.from_json(m["begin"]),
                      Position.from_json(m["end"]) if m.has("end") else None,
                      ContactPlane.from_json(m["contact_plane"]) if m.has("contact_plane") else None,
                      m["sliding_normal"].vec3() if m.has("sliding_normal") else None,
-                     Placement.from_json(m["placement"]) if m.has("placement") else None)
+                     Placement.from_json(m["placement"]) if m.has("placement") else None,
+                     m["motion_table_id"].id_() if m.given("motion_table_id") else 0, status)
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
                     tuple(statics), mover)

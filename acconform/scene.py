@@ -1015,6 +1015,13 @@ class Mover:
     # (which copies it); a player without the property is NPK. PK and PKLite are IsPKType: FastTick's jump.
     player_killer_status: int = PLAYER_KILLER_STATUS_NPK
 
+    @property
+    def motion_table_id(self) -> int:
+        """The player's MotionTableId: acconform.motion_scene.MOTION_TABLE_ID with a motion table, else 0."""
+        from .motion_scene import MOTION_TABLE_ID
+
+        return MOTION_TABLE_ID if self.motion_table is not None else 0
+
     def to_json(self, explicit_via: bool = False):
         """`explicit_via`: the placement says its `via` even through SetPosition (scene/7, whose
         placements, as /6's, go through enter_world unless they say otherwise)."""

@@ -27,13 +27,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from acconform.flags import PLAYER_KILLER_STATUS_NPK, PhysicsState, SetPositionError, TransientState
+from acconform.flags import PhysicsState, SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
 from acconform.outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState,
                                PlaneState, TickState)
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
-from acconform.motion_scene import MOTION_TABLE_ID
 from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, Scene, StaticObject
 
 from .anchors import anchor, harness
@@ -77,8 +76,8 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
     obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(obj_id)
-    obj.set_weenie_obj(WeenieObject.of_player(Player(player_killer_status=getattr(m, "player_killer_status", PLAYER_KILLER_STATUS_NPK))))
-    obj.set_motion_table_id(MOTION_TABLE_ID if getattr(m, "motion_table", None) is not None else 0)
+    obj.set_weenie_obj(WeenieObject.of_player(Player(player_killer_status=m.player_killer_status)))
+    obj.set_motion_table_id(m.motion_table_id)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
     obj.transient_state = m.transient_state

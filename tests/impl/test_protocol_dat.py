@@ -25,12 +25,14 @@ from acconform.numerics import get_mode
 from acconform.oracle.pack import _RECORD_KIND, pack_scene
 from acconform.oracle.recorded import RecordedText, scene_kind
 from acconform.outcome import Outcome
+from acconform.port.dat.animation import Animation
 from acconform.port.dat.binary_reader import BinaryReader
 from acconform.port.dat.cell_landblock import CellLandblock
 from acconform.port.dat.env_cell import EnvCell
 from acconform.port.dat.environment import Environment
 from acconform.port.dat.gfx_obj import GfxObj
 from acconform.port.dat.landblock_info import LandblockInfo
+from acconform.port.dat.motion_table import MotionTable
 from acconform.port.dat.setup_model import SetupModel
 from acconform.port.run import run_scene
 from acconform.protocol import DAT_FORMAT, Implementation, dat_from_json, dat_json, handshake
@@ -40,7 +42,8 @@ ROOT = Path(__file__).resolve().parents[2]
 KINDS = ("terrain", "bsp", "obstacles", "indoor", "buildings", "ticks")
 PER_KIND = 4
 READERS = {"CellLandblock": CellLandblock, "LandblockInfo": LandblockInfo, "EnvCell": EnvCell,
-           "Environment": Environment, "GfxObj": GfxObj, "SetupModel": SetupModel}
+           "Environment": Environment, "GfxObj": GfxObj, "SetupModel": SetupModel, "MotionTable": MotionTable,
+           "Animation": Animation}
 
 # An implementation that writes each request line to a log and answers with an error outcome (every field).
 RECORDER = """
@@ -88,22 +91,15 @@ def _requests(log: Path) -> list[dict]:
     return [json.loads(line) for line in log.read_text().splitlines()]
 
 
-def _facade_records(packed: bytes) -> tuple[bytes, list[tuple[str, int, bytes]]]:
-    """What ACE's facade installs from oracle/pack.py's bytes (Facade.cs BuildScene): the land height
-    table's bytes and every DAT record as (type, id, bytes), CellLandblocks included."""
+def _facade_records(scene) -> tuple[bytes, list[tuple[str, int, bytes]]]:
+    """What ACE's facade installs from oracle/pack.py's bytes for `scene` (Facade.cs BuildScene): the land
+    height table's bytes and every DAT record as (type, id, bytes), CellLandblocks included. The tick block
+    (its inputs, of every kind) is skipped by its length as oracle/pack.py writes it."""
+    from acconform.oracle.pack import _ticks
+
+    packed = pack_scene(scene)
     kinds = {v: k for k, v in _RECORD_KIND.items()}
-    at = 5  # PackVersion, engine mode
-    if packed[at]:
-        _, _, _, steps = struct.unpack_from("<BBdi", packed, at)
-        at += struct.calcsize("<BBdi")
-        for _ in range(steps):
-            _, mask = struct.unpack_from("<dI", packed, at)
-            at += 12
-            for bit, size in enumerate((4, 4, 12, 12, 12, 12, 12, 12, 32)):  # scene.TICK_INPUTS' sizes
-                if mask & (1 << bit):
-                    at += size
-    else:
-        at += 1
+    at = 5 + len(_ticks(scene.ticks))  # PackVersion and engine mode, then the ticks
     table = packed[at:at + 1024]
     at += 1024
     out = []
@@ -183,7 +179,7 @@ def test_the_records_are_byte_for_byte_what_aces_facade_installs(corpus_scenes, 
     for scene in corpus_scenes[kind]:
         doc = json.loads(dumps_compact(dat_json(dat.dat_world(scene))))
         sent = [(r["type"], int(r["id"], 16), base64.b64decode(r["data"])) for r in doc["cell"] + doc["portal"]]
-        table, installed = _facade_records(pack_scene(scene))
+        table, installed = _facade_records(scene)
         assert sorted(sent) == sorted(installed)
         assert len({(t, i) for t, i, _ in sent}) == len(sent)
         assert struct.pack("<256f", *(float(h) for h in doc["land_height_table"])) == table
