@@ -661,8 +661,6 @@ def main(argv=None) -> int:
         print(f"{kfile}: {len(keys)} records" + (f" ({a.keys_of}'s kernel)" if a.keys_of else
               f", taking every arc the {len(every)} records traced take") + f"; floor {floor:.1f} %")
     else:
-        if not _coverage_installed():
-            return 2
         keys = None
         if a.kernel:
             if not kfile.exists():
@@ -670,11 +668,13 @@ def main(argv=None) -> int:
                 return 2
             kernel = json.loads(kfile.read_text())
             keys = kernel["keys"]
-            try:  # a bad list is refused before the replay, not after it
+            try:  # a bad list is refused before anything else, the replay above all
                 load_unreachable(runtime=a.runtime)
             except BadEntry as e:
                 print(f"corpus_coverage: {e}", file=sys.stderr)
                 return 2
+        if not _coverage_installed():
+            return 2
         cov, n, differing, seconds, _ = measure(a.runtime, a.corpus, a.n, a.seed, workers, keys=keys)
         rows, missed, b, t, lines = report(a.runtime, cov, n, differing, seconds, workers,
                                            "the coverage kernel" if a.kernel else "the corpus", a.summary)
