@@ -3,8 +3,12 @@ move_to, turn_to_heading, move_to_object (sticky), turn_to_object, the three sto
 stop_motion -- each a player with tests/oracle/motion_scenes.py's player-like table on flat land, and
 a 1 m sphere (a static the server files by id) to move or turn to.
 
-tests/oracle/test_manager_inputs.py asks live ACE (mono and .NET 10) for each and compares the port's
-answer bit for bit.
+tests/oracle/test_manager_inputs.py compares the port with ACE's answers recorded on mono and .NET 10 in
+tests/oracle/data/ace_manager_outcomes.json (fast lane), recorded by
+
+    ACE_ASSEMBLY=/path/to/ACE.Server.dll python tests/oracle/manager_scenes.py --record
+
+once with a mono build and once with a .NET 10 build, and asks live ACE again (live lane).
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ from pathlib import Path
 
 from acconform.motion_enums import MotionCommand as MC, MovementParamFlags as MPF
 from acconform.motion_scene import DEFAULT_MOVEMENT_FLAGS, CommandInput, MovementParams, MoveToInput, ObjectMoveInput
+from acconform.flags import PhysicsState
 from acconform.scene import Frame, Position, SphereRec, SphereShape, StaticObject, TickStep
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
@@ -22,6 +27,8 @@ from oracle.motion_scenes import FPS30, player_like_table  # noqa: E402
 from oracle.named_scenes import GROUND, cell_at, land, mover, scene  # noqa: E402
 
 BALL = 0x70000002
+BOX = 0x70000003
+DATA = Path(__file__).resolve().parent / "data" / "ace_manager_outcomes.json"
 
 
 def _scene(name: str, steps, objects=()):
@@ -38,6 +45,15 @@ def _ball():
                         SphereShape(SphereRec((0.0, 0.0, 0.5), 1.0)))
 
 
+def _box():
+    """A 2 x 2 x 2 m box standing between the player at (60, 60) and the point (66, 66): a MoveTo walks
+    straight at its target (ACE's MoveToManager does not find a way round) and slides along the box."""
+    from acconform.strategies.shapes import box
+
+    return StaticObject(BOX, Position(cell_at(63.0, 63.0), Frame((63.0, 63.0, GROUND))), box(2.0, 2.0, 2.0),
+                        int(PhysicsState.Static | PhysicsState.HasPhysicsBSP))
+
+
 def _to(x: float, y: float, params=MovementParams()) -> MoveToInput:
     return MoveToInput(params, Position(cell_at(x, y), Frame((x, y, GROUND))))
 
@@ -48,6 +64,8 @@ def scenes() -> dict:
         "move_to_at_4fps_overshoots": _scene("move_to_at_4fps_overshoots",
                                              (TickStep(0.25, move_to=_to(62.0, 63.0, MovementParams(distance_to_object=0.1))),)
                                              + _idle(12, 0.25)),
+        "move_to_around_a_box": _scene("move_to_around_a_box", (TickStep(FPS30, move_to=_to(66.0, 66.0)),) + _idle(90),
+                                       [_box()]),
         "turn_to_heading_in_place": _scene("turn_to_heading_in_place", (TickStep(FPS30, turn_to_heading=MoveToInput(
             MovementParams(desired_heading=135.0))),) + _idle(30)),
         "sticky_move_to_a_static": _scene("sticky_move_to_a_static", (TickStep(FPS30, move_to_object=ObjectMoveInput(
@@ -63,3 +81,9 @@ def scenes() -> dict:
         out[f"move_to_then_{stop}"] = _scene(f"move_to_then_{stop}", (TickStep(FPS30, move_to=_to(66.0, 64.0)),)
                                              + _idle(8) + (TickStep(FPS30, stop=stop),) + _idle(8))
     return out
+
+
+if __name__ == "__main__" and "--record" in sys.argv:
+    from oracle.live_answers import record_outcomes
+
+    record_outcomes(scenes(), DATA, "manager scene")

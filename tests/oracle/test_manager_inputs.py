@@ -1,7 +1,8 @@
 """The tick inputs that drive ACE's managers as the server does (issue 40): move_to, move_to_object,
 turn_to_heading, turn_to_object, stop, do_motion, stop_motion (acconform/motion_scene.py). Their scene
 fields and pack bytes (fast lane), and each named scene of tests/oracle/manager_scenes.py answered by
-live ACE and by the port bit for bit (live lane, mono and .NET 10)."""
+the port as ACE answered it on mono and .NET 10 (recorded, fast lane) and as live ACE answers it (live
+lane), bit for bit."""
 
 from __future__ import annotations
 
@@ -20,7 +21,8 @@ from acconform.protocol import scene_features
 from acconform.scene import FORMAT_V5, TICK_INPUTS, Scene
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from oracle.manager_scenes import BALL, scenes  # noqa: E402
+from oracle.live_answers import recorded_outcomes  # noqa: E402
+from oracle.manager_scenes import BALL, DATA, scenes  # noqa: E402
 
 SCENES = scenes()
 
@@ -110,6 +112,24 @@ def test_the_port_runs_every_manager_scene_to_its_last_tick_without_an_error():
         assert len(ticks) == len(scene.ticks.steps) and not any(t.error for t in ticks), name
     moved = run_scene(SCENES["move_to_a_point"]).ticks
     assert moved[-1].origin != moved[0].origin
+
+
+@pytest.mark.parametrize("runtime", ("mono", "coreclr"))
+def test_the_port_answers_each_manager_scene_as_ace_did_every_tick(runtime):
+    from acconform.port.run import run_scene
+
+    ace = recorded_outcomes(DATA, runtime)
+    assert set(ace) == set(SCENES)
+    for name, scene in SCENES.items():
+        assert ace[name].error is None and len(ace[name].ticks) == len(scene.ticks.steps), name
+        assert compare(run_scene(scene, runtime=runtime), ace[name], "exact") == [], name
+
+
+def test_ace_moves_the_player_toward_the_point_behind_the_box_and_slides_it_along_the_box():
+    ticks = recorded_outcomes(DATA, "mono")["move_to_around_a_box"].ticks
+    start, mid, end = ticks[0].origin, ticks[30].origin, ticks[-1].origin
+    assert mid[1] > start[1] + 2.0 and end[1] > mid[1]  # on toward y = 66
+    assert 61.0 < mid[0] == end[0] < 62.0  # held at the box's face (x = 62 less the sphere's radius)
 
 
 @pytest.mark.live_oracle
