@@ -209,3 +209,13 @@ def test_a_placement_runs_in_either_engine_mode():
     doc = copy.deepcopy(PLACED)
     doc["engine"]["mode"] = "server"
     assert validate_scene(parse_document(doc)).engine_mode == "server"
+
+
+def test_a_document_of_every_scene_and_outcome_format_this_acconform_writes_is_read_by_its_format():
+    """`acconform run`/`show`/`repro` read a file by its "format" (acconform.case.parse_document): every
+    scene and outcome format version the writers produce has a reader there (scene/6 once had none)."""
+    from acconform import case, outcome, scene
+
+    for module in (scene, outcome):
+        versions = {v for k, v in vars(module).items() if k == "FORMAT" or k.startswith("FORMAT_V")}
+        assert versions and versions <= set(case._READERS), sorted(versions - set(case._READERS))
