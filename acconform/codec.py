@@ -400,6 +400,13 @@ class Reader:
             self.fail(f"expected a string, got {_kind(self.value)}")
         return self.value
 
+    def enum_(self, enum) -> int:
+        """One member of `enum`, by its name."""
+        name = self.str_()
+        if name not in enum.__members__:
+            self.fail(f"unknown {enum.__name__} {name!r} (known: {', '.join(enum.__members__)})")
+        return int(enum[name])
+
     def flags(self, enum) -> int:
         members = enum.__members__  # a copy per call for a FlagSet: taken once
         value = 0

@@ -219,10 +219,7 @@ class MotionTickState:
             r[name]  # every field is written (null where it has none): a missing one is named
         mt = None
         if r.has("movement_type"):
-            name = r["movement_type"].str_()
-            if name not in MovementType.__members__:
-                r["movement_type"].fail(f"unknown MovementType {name!r} (known: {', '.join(MovementType.__members__)})")
-            mt = int(MovementType[name])
+            mt = r["movement_type"].enum_(MovementType)
         return MotionTickState(
             CommandState.from_json(r["interpreted"]) if r.has("interpreted") else None,
             CommandState.from_json(r["raw"]) if r.has("raw") else None,

@@ -188,12 +188,8 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                                  s["state"].flags(PhysicsState), s["scale"].f32()))
     m = r["mover"].obj({"id", "did", "scale", "state", "transient_state", "velocity", "begin", "end", "contact_plane",
                         "sliding_normal", "placement", "motion_table_id", "player_killer_status"})
-    status = PLAYER_KILLER_STATUS_NPK
-    if m.given("player_killer_status"):
-        name = m["player_killer_status"].str_()
-        if name not in PlayerKillerStatus.__members__:
-            m["player_killer_status"].fail(f"not one of ACE's PlayerKillerStatus values: {name!r}")
-        status = int(PlayerKillerStatus[name])
+    status = m["player_killer_status"].enum_(PlayerKillerStatus) if m.given("player_killer_status") \
+        else PLAYER_KILLER_STATUS_NPK
     mover = DatMover(m["id"].id_(), m["did"].id_(), m["scale"].f32(), m["state"].flags(PhysicsState),
                      m["transient_state"].flags(TransientState), m["velocity"].vec3(), Position.from_json(m["begin"]),
                      Position.from_json(m["end"]) if m.has("end") else None,

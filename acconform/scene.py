@@ -1071,16 +1071,9 @@ class Mover:
             sliding_normal=r["sliding_normal"].vec3() if r.has("sliding_normal") else None,
             placement=Placement.from_json(r["placement"], vias) if r.has("placement") else None,
             motion_table=MotionTableSpec.from_json(r["motion_table"]) if vias and r.has("motion_table") else None,
-            player_killer_status=_player_killer_status(r["player_killer_status"]) if vias and r.given("player_killer_status")
+            player_killer_status=r["player_killer_status"].enum_(PlayerKillerStatus) if vias and r.given("player_killer_status")
             else PLAYER_KILLER_STATUS_NPK,
         )
-
-
-def _player_killer_status(r: Reader) -> int:
-    name = r.str_()
-    if name not in PlayerKillerStatus.__members__:
-        r.fail(f"not one of ACE's PlayerKillerStatus values: {name!r} (one of {', '.join(PlayerKillerStatus.__members__)})")
-    return int(PlayerKillerStatus[name])
 
 
 ENGINE_MODES = ("server", "client")

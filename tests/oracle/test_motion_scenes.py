@@ -143,3 +143,13 @@ def test_live_ace_and_the_port_agree_bit_for_bit_on_drawn_motion_scenes_motion_l
         assert ace.ticks and all(t.motion is not None for t in ace.ticks if t.error is None), record.scene.name
         assert compare(run_scene(record.scene, runtime=runtime), ace, "exact") == [], record.scene.name
         assert compare(ace, record.outcome, "exact") == [], record.scene.name  # the shard holds this answer
+
+
+def test_a_movers_player_killer_status_reads_back_and_an_unknown_one_is_refused_naming_the_field():
+    scene = SCENES["pk_player_jumps_while_running"]
+    doc = json.loads(scene.dumps())
+    assert doc["mover"]["player_killer_status"] == "PK" and Scene.from_json(doc) == scene
+    doc["mover"]["player_killer_status"] = "Pk"
+    with pytest.raises(InvalidScene, match=r"mover\.player_killer_status: unknown PlayerKillerStatus 'Pk'"):
+        Scene.from_json(doc)
+    assert "player_killer_status" not in json.loads(SCENES[WALK].dumps())["mover"]  # NPK, ACE's default, is not written
