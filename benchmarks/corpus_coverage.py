@@ -376,9 +376,11 @@ def motion_layer_share(cov, unexplained: list[str]) -> tuple[int, int, int]:
             if lines is None or line in lines:
                 total += exits
                 taken += took
-    untaken = sum(1 for m in unexplained
-                  if (lambda mod, ln: mod in scope and (scope[mod] is None or ln in scope[mod]))(
-                      m.split(":")[0], int(m.split(":")[1].split("->")[0])))
+    untaken = 0
+    for m in unexplained:
+        module, arc = m.split(":")
+        lines = scope.get(module, set())
+        untaken += lines is None or int(arc.split("->")[0]) in lines
     return total, taken, untaken
 
 
