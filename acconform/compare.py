@@ -42,6 +42,14 @@ fields: ``ticks[3].motion.interpreted.forward_command``, ``ticks[3].motion.frame
 commands and the animation id are compared as ids, the speeds, the frame number and the sequence's
 velocity and omega as floats, `movement_type` and `is_moving_to` as discrete values.
 
+Other movers (scene/8, outcome/6): `other_placements` right after `placement`, each other mover's
+placement field by field (``other_placements[1].cell``); per tick, after the mover's fields, its
+`collisions` (its CollisionTable: ``ticks[4].collisions[0].id``, ``.touched_time`` bit-equal as a double,
+``.ethereal``; a table of another length is one difference naming the table, both sides' ids shown) and
+then each other mover's state, named by its id: ``ticks[4].others[0x80000002].origin[0]``,
+``ticks[4].others[0x80000002].collisions[0].id``. So the first difference names the tick, the mover
+and the field.
+
 A Difference names the field by path (``contact_plane.normal[2]``) and carries both values.
 """
 
@@ -55,8 +63,8 @@ from typing import Any
 import numpy as np
 
 from .flags import ObjectInfoState, PhysicsState, TransientState, flag_names
-from .outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState, PlaneState,
-                      TickState)
+from .outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, OtherTick, Outcome,
+                      PlacementState, PlaneState, TickState)
 from .numerics import f32_bits
 
 MODES = ("exact", "fast")
@@ -64,11 +72,11 @@ FAST_ULPS = 64  # float32 ULPs allowed between a double run and ACE's float32 ru
 FAST_ABS = 1e-4  # metres / unit-vector components; below PhysicsGlobals.EPSILON (2e-4)
 
 _ID_FIELDS = frozenset({"cell", "check_cell", "cur_cell", "contact_plane_cell", "current_style", "forward_command",
-                        "side_step_command", "turn_command", "animation"})
+                        "side_step_command", "turn_command", "animation", "id"})
 _FLAG_FIELDS = {"object_info_state": ObjectInfoState, "state": PhysicsState, "transient_state": TransientState}
 _VEC_FIELDS = frozenset({"origin", "orientation", "velocity", "normal", "vector", "acceleration", "omega",
                          "cached_velocity", "sliding_normal", "sequence_velocity", "sequence_omega"})
-_DOUBLE_FIELDS = frozenset({"update_time"})
+_DOUBLE_FIELDS = frozenset({"update_time", "touched_time"})
 _FLOAT_FIELDS = frozenset({"d", "forward_speed", "side_step_speed", "turn_speed", "frame_number"})
 
 
@@ -107,6 +115,10 @@ def _show(path: str, v) -> str:
         return "a " + type(v).__name__
     if isinstance(v, tuple) and leaf == "ticks":
         return f"{len(v)} ticks"
+    if isinstance(v, tuple) and leaf == "collisions":
+        return "[" + ", ".join(f"0x{c.id:08X}" for c in v) + "]"
+    if isinstance(v, tuple) and leaf in ("others", "other_placements"):
+        return f"{len(v)} other movers"
     if isinstance(v, TickState):
         return "TickState(error=" + repr(v.error) + ")" if v.error is not None else "a TickState"
     if isinstance(v, float):
@@ -168,6 +180,8 @@ def _order(record) -> list[str]:
         names.insert(0, "error")
         names.remove("static_cells")
         names.append("static_cells")
+        names.remove("other_placements")
+        names.insert(names.index("placement") + 1, "other_placements")
     return names
 
 
@@ -192,7 +206,32 @@ def _compare_ticks(va, vb, mode: str, out: list) -> None:
         _compare_record(va[i], vb[i], f"ticks[{i}].", mode, out)
 
 
-_TICKS, _DOUBLE, _SHADOW, _PLACEMENT, _STATIC, _ERROR, _VEC, _FLOAT, _OTHER = range(9)
+def _compare_collisions(va, vb, path: str, mode: str, out: list) -> None:
+    if (va is None) != (vb is None) or (va is not None and len(va) != len(vb)):
+        out.append(Difference(path, va, vb))
+        return
+    for k, (ca, cb) in enumerate(zip(va or (), vb or ())):
+        _compare_record(ca, cb, f"{path}[{k}].", mode, out)
+
+
+def _compare_others(va, vb, path: str, mode: str, out: list) -> None:
+    """Each other mover's tick, named by its id (`others[0x80000002]`)."""
+    if (va is None) != (vb is None) or (va is not None and [o.id for o in va] != [o.id for o in vb]):
+        out.append(Difference(path, va, vb))
+        return
+    for oa, ob in zip(va or (), vb or ()):
+        _compare_record(oa.tick, ob.tick, f"{path}[0x{oa.id:08X}].", mode, out)
+
+
+def _compare_placements(va, vb, path: str, mode: str, out: list) -> None:
+    if (va is None) != (vb is None) or (va is not None and len(va) != len(vb)):
+        out.append(Difference(path, va, vb))
+        return
+    for k, (pa, pb) in enumerate(zip(va or (), vb or ())):
+        _compare_record(pa, pb, f"{path}[{k}].", mode, out)
+
+
+_TICKS, _DOUBLE, _SHADOW, _PLACEMENT, _STATIC, _ERROR, _VEC, _FLOAT, _OTHER, _COLLISIONS, _OTHERS, _PLACEMENTS = range(12)
 _RECORDS = (ContactPlaneState, NormalState, PlaneState)
 _OPTIONAL_RECORDS = (MotionTickState, CommandState)  # None on a side that has none: compared when both have one
 _PLANS: dict[type, tuple] = {}  # a record type -> its fields in `_order`, each with how it is compared
@@ -208,6 +247,10 @@ def _plan(record) -> tuple:
                 return _DOUBLE
             if name == "shadow_cells":
                 return _SHADOW
+            if isinstance(record, TickState) and name in ("collisions", "others"):
+                return _COLLISIONS if name == "collisions" else _OTHERS
+            if name == "other_placements":
+                return _PLACEMENTS
             return {"placement": _PLACEMENT, "static_cells": _STATIC, "error": _ERROR}.get(
                 name, _VEC if name in _VEC_FIELDS else _FLOAT if name in _FLOAT_FIELDS else _OTHER)
         plan = _PLANS[type(record)] = tuple((name, how(name)) for name in _order(record))
@@ -222,6 +265,12 @@ def _compare_record(a, b, prefix: str, mode: str, out: list) -> None:
         path = prefix + name
         if how == _TICKS:
             _compare_ticks(va, vb, mode, out)
+        elif how == _COLLISIONS:
+            _compare_collisions(va, vb, path, mode, out)
+        elif how == _OTHERS:
+            _compare_others(va, vb, path, mode, out)
+        elif how == _PLACEMENTS:
+            _compare_placements(va, vb, path, mode, out)
         elif how == _DOUBLE:
             if _double_bits(va) != _double_bits(vb):
                 out.append(Difference(path, va, vb))

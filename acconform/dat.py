@@ -103,7 +103,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .scene import (BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
-                    Environment, Landblock, Mover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
+                    Environment, Landblock, Mover, OtherMover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
                     StaticObject,
                     ENV_CELL_FIRST, newell_normal)
 from .staging import MOVER_ID
@@ -119,6 +119,8 @@ BUILDING_GFX_OBJ_BASE = 0x01FF0000  # GfxObj id of building 0's shell
 MAX_BUILDINGS = 0xFFFF
 MOVER_GFX_OBJ_ID = 0x01000000  # the mover's part
 MOVER_SETUP_ID = 0x02000000  # the mover's Setup
+OTHER_SETUP_BASE = 0x02F00000  # the Setup of other mover k (scene/8 `others`): above every static's Setup id
+MAX_OTHERS = 0xFFFF
 
 # ACE.Entity.Enum.GfxObjFlags, StipplingType, SetupFlags
 GFX_HAS_PHYSICS = 0x1
@@ -366,6 +368,17 @@ def mover_records(mover: Mover) -> ObjectRecords:
     if table is not None:
         records += motion_records(table)
     return ObjectRecords(MOVER_SETUP_ID, records)
+
+
+def other_records(other: OtherMover, index: int) -> ObjectRecords:
+    """Other mover `index`'s Setup (OTHER_SETUP_BASE + index): its spheres and step heights over the mover's
+    one empty part (MOVER_GFX_OBJ_ID, written with the mover's records)."""
+    if index > MAX_OTHERS:
+        raise ValueError(f"at most {MAX_OTHERS + 1} other movers have a Setup id")
+    did = OTHER_SETUP_BASE + index
+    body = setup(did, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in other.spheres],
+                 step_up=other.step_up_height, step_down=other.step_down_height)
+    return ObjectRecords(did, (DatRecord(did, "SetupModel", body),))
 
 
 _IDENTITY_PART = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
@@ -647,6 +660,7 @@ class SceneRecords:
     statics: tuple[ObjectRecords, ...]
     portal: tuple[DatRecord, ...]
     cell: tuple[DatRecord, ...]
+    others: tuple[ObjectRecords, ...] = ()  # each other mover's Setup (scene/8), in scene order
 
 
 _written: list = []  # (scene, its records) for the last two scenes `scene_records` wrote
@@ -664,7 +678,8 @@ def scene_records(scene: Scene) -> SceneRecords:
     records = SceneRecords(mover_records(scene.mover),
                            tuple(static_records(o, index) for index, o in enumerate(scene.objects)),
                            environment_records(scene) + building_model_records(scene),
-                           cell_dat_records(scene))
+                           cell_dat_records(scene),
+                           tuple(other_records(o, index) for index, o in enumerate(scene.others)))
     _written.append((scene, records))
     del _written[:-2]
     return records
@@ -703,6 +718,22 @@ class DatMover:
 
 
 @dataclass(frozen=True, slots=True)
+class DatOther:
+    """What ACE's facade takes for another mover (scene/8) beside its Setup record: its id, the Setup's id
+    (`did`), the WorldObject's class (`weenie`), and the scene's other fields for it."""
+
+    id: int
+    did: int
+    weenie: str
+    scale: float
+    state: int
+    transient_state: int
+    velocity: tuple[float, float, float]
+    begin: Position
+    player_killer_status: int = 2  # NPK
+
+
+@dataclass(frozen=True, slots=True)
 class DatWorld:
     """A scene's world as DAT records (the protocol's `dat`): the cell and portal DATs' records in the
     order ACE's facade builds from them, the statics and the mover as the facade takes them, and the
@@ -713,6 +744,7 @@ class DatWorld:
     portal: tuple[DatRecord, ...]
     statics: tuple[DatStatic, ...]
     mover: DatMover
+    others: tuple[DatOther, ...] = ()
 
 
 def dat_world(scene: Scene) -> DatWorld:
@@ -724,15 +756,19 @@ def dat_world(scene: Scene) -> DatWorld:
     cells = tuple(r for r in written.cell if r.kind == "EnvCell")
     portal = building_model_records(scene) + environment_records(scene)
     portal += tuple(r for recs in written.statics for r in recs.records) + written.mover.records
+    portal += tuple(r for recs in written.others for r in recs.records)
     m = scene.mover
     return DatWorld(
         scene.land_height_table, cell_landblock_records(scene) + infos + cells, portal,
         tuple(DatStatic(o.id, recs.did, o.position, o.state, o.scale) for o, recs in zip(scene.objects, written.statics)),
         DatMover(MOVER_ID, written.mover.did, m.scale, m.state, m.transient_state, m.velocity, m.begin, m.end,
-                 m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status))
+                 m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status),
+        tuple(DatOther(o.id, recs.did, o.weenie, o.scale, o.state, o.transient_state, o.velocity, o.begin,
+                       o.player_killer_status) for o, recs in zip(scene.others, written.others)))
 
 
-__all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatStatic", "DatWorld",
+__all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatOther", "DatStatic", "DatWorld",
+           "other_records", "OTHER_SETUP_BASE",
            "dat_world", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
            "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
            "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "setup_records", "GFX_OBJ_BASE", "PART_GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",

@@ -1,6 +1,6 @@
 """The outcome: what one transition left behind, read the same way from the port and from ACE.
 
-Format ``acconform.outcome/5``. Fields mirror ACE's objects after PhysicsObj.transition's
+Format ``acconform.outcome/6``. Fields mirror ACE's objects after PhysicsObj.transition's
 steps (FindValidPosition and its set-up): SpherePath.CurPos/CurCell, ObjectInfo.State, the
 CollisionInfo fields, the mover's velocity (ObjectInfo.StopVelocity zeroes it), and a few
 SpherePath fields that expose the transition's own state. `error` holds what a side raised
@@ -32,6 +32,13 @@ A tick's `motion` (``/5``; None for a mover without a motion table, whose outcom
 its MotionInterp's InterpretedState and RawState, its Sequence's current animation, frame number,
 Velocity and Omega, and its MoveToManager's MovementType and IsMovingTo. An ``/4`` record still
 reads (its ticks with `motion` None); a `motion` there is refused, as a field the format lacks.
+
+A scene with other movers (scene/8 ``others``) is answered as ``/6``: `other_placements` holds each
+other mover after it entered the world (in the scene's `others` order), and each tick, beside the
+mover's fields, its `collisions` (the mover's CollisionTable: the objects it touched, in the table's
+.NET Dictionary order, with each record's TouchedTime and Ethereal) and `others` (each other mover's
+`TickState`, with its own `collisions`, named by its id, in `others` order). Scenes without other
+movers are written as before.
 """
 
 from __future__ import annotations
@@ -42,7 +49,8 @@ from .codec import Reader, write_f32, write_f64, write_id, write_vec
 from .flags import ObjectInfoState, PhysicsState, SetPositionError, TransientState, flag_names
 from .scene import Frame, IDENTITY, Vec3, check_format
 
-FORMAT = "acconform.outcome/5"
+FORMAT = "acconform.outcome/6"
+FORMAT_V5 = "acconform.outcome/5"  # what an outcome with no other movers (scene/8 `others`) is written as
 FORMAT_V4 = "acconform.outcome/4"  # what a tick outcome without a motion layer (no tick has `motion`) is written as
 FORMAT_V3 = "acconform.outcome/3"  # what an outcome with a placement and no ticks is written as
 FORMAT_V2 = "acconform.outcome/2"  # what an outcome without a placement is written as
@@ -234,6 +242,23 @@ _MOTION_ALLOWED = frozenset(_MOTION_FIELDS)
 
 
 @dataclass(frozen=True, slots=True)
+class CollisionState:
+    """One record of a PhysicsObj's CollisionTable (an object it collided with and has not ended)."""
+
+    id: int = _field(0, "", "the other object's id (the table's key)")
+    touched_time: float = _field(0.0, "s (double)", "CollisionRecord.TouchedTime: the clock when it last touched")
+    ethereal: bool = _field(False, "", "CollisionRecord.Ethereal: the other object was ethereal then")
+
+    def to_json(self):
+        return {"id": write_id(self.id), "touched_time": _write_double(self.touched_time), "ethereal": self.ethereal}
+
+    @staticmethod
+    def from_json(r: Reader) -> "CollisionState":
+        r.obj({"id", "touched_time", "ethereal"})
+        return CollisionState(r["id"].id_(), _read_double(r["touched_time"]), r["ethereal"].bool_())
+
+
+@dataclass(frozen=True, slots=True)
 class TickState:
     """The mover's PhysicsObj after one tick's driver returned (update_object / the request_pos path)."""
 
@@ -256,31 +281,66 @@ class TickState:
     shadow_cells: tuple[int, ...] = _field((), "", "the cell ids of the mover's ShadowObjects, in their order")
     motion: MotionTickState | None = _field(None, "", "the mover's motion layer after the step, only for a mover with "
                                             "a motion table (then the format is acconform.outcome/5); absent otherwise")
+    collisions: tuple[CollisionState, ...] | None = _field(
+        None, "", "the PhysicsObj's CollisionTable after the step, in its order, only in a scene with other movers "
+        "(then the format is acconform.outcome/6); absent otherwise")
+    others: tuple["OtherTick", ...] | None = _field(
+        None, "", "each other mover's TickState after the step (its id, then the same fields), in the scene's `others` "
+        "order, only in a scene with other movers (acconform.outcome/6); absent otherwise")
     error: str | None = _field(None, "", "what this step threw (later steps are not run); absent when nothing was raised")
 
     def to_json(self):
         d = {name: write(getattr(self, name)) for name, write, _ in _TICK_CODECS}
         if self.motion is not None:
             d["motion"] = self.motion.to_json()
+        if self.collisions is not None:
+            d["collisions"] = [c.to_json() for c in self.collisions]
+        if self.others is not None:
+            d["others"] = [o.to_json() for o in self.others]
         if self.error is not None:
             d["error"] = self.error
         return d
 
     @staticmethod
-    def from_json(r: Reader, motion: bool = True) -> "TickState":
-        """`motion`: whether the record's format has the tick's `motion` (``/5``; ``/4`` has not)."""
-        r.obj(_TICK_ALLOWED if motion else _TICK_ALLOWED_V4)
+    def from_json(r: Reader, motion: bool = True, others: bool = True) -> "TickState":
+        """`motion`: whether the record's format has the tick's `motion` (``/5``; ``/4`` has not); `others`:
+        its `collisions` and `others` (``/6``)."""
+        allowed = _TICK_ALLOWED if motion else _TICK_ALLOWED_V4
+        r.obj(allowed if others else allowed - {"collisions", "others"})
         kw = {name: read(r[name]) for name, _, read in _TICK_CODECS}  # a missing field: the first in declaration order
         if r.has("motion"):
             kw["motion"] = MotionTickState.from_json(r["motion"])
+        if r.has("collisions"):
+            kw["collisions"] = tuple(CollisionState.from_json(c) for c in r["collisions"].list())
+        if r.has("others"):
+            kw["others"] = tuple(OtherTick.from_json(o) for o in r["others"].list())
         if r.has("error"):
             kw["error"] = r["error"].str_()
         return TickState(**kw)
 
 
+@dataclass(frozen=True, slots=True)
+class OtherTick:
+    """Another mover's state after a tick (scene/8): its id and its TickState (no `motion`, `others` or
+    `error` of its own: an error in any mover's update is the tick's)."""
+
+    id: int
+    tick: TickState
+
+    def to_json(self):
+        return {"id": write_id(self.id), **self.tick.to_json()}
+
+    @staticmethod
+    def from_json(r: Reader) -> "OtherTick":
+        oid = r["id"].id_()
+        body = Reader({k: v for k, v in r.obj(_TICK_ALLOWED_OTHER | {"id"}).value.items() if k != "id"}, r.path, exact=r.exact)
+        return OtherTick(oid, TickState.from_json(body))
+
+
 _TICK_FIELDS = tuple(f.name for f in fields(TickState))  # in declaration order (an outcome holds one per tick)
 _TICK_ALLOWED = frozenset(_TICK_FIELDS)
-_TICK_ALLOWED_V4 = _TICK_ALLOWED - {"motion"}
+_TICK_ALLOWED_V4 = _TICK_ALLOWED - {"motion", "collisions", "others"}
+_TICK_ALLOWED_OTHER = _TICK_ALLOWED - {"motion", "others", "error"}
 _TICK_IDS = frozenset({"cell", "cur_cell", "contact_plane_cell"})
 _TICK_VECS = frozenset({"origin", "orientation", "velocity", "acceleration", "omega", "cached_velocity", "sliding_normal"})
 
@@ -331,7 +391,8 @@ def _tick_field_codec(name: str):
 # (name, write, read) per field, in declaration order, looked up once: an outcome holds a TickState
 # per tick, and each one asked dataclasses.fields() and ran the field's if-chain (with flag_names
 # remembering its answers, a 25-tick outcome is written in 0.37 ms, not 0.54, and read in 0.73, not 1.1)
-_TICK_CODECS = tuple((name, *_tick_field_codec(name)) for name in _TICK_FIELDS if name not in ("motion", "error"))
+_TICK_CODECS = tuple((name, *_tick_field_codec(name)) for name in _TICK_FIELDS
+                     if name not in ("motion", "collisions", "others", "error"))
 
 
 @dataclass(frozen=True, slots=True)
@@ -362,20 +423,27 @@ class Outcome:
     ticks: tuple[TickState, ...] | None = _field(None, "", "for a tick scene (then the format is acconform.outcome/4, "
                                                  "or /5 when its ticks carry `motion`), the mover's PhysicsObj after each "
                                                  "step's driver returned, in step order")
+    other_placements: tuple[PlacementState, ...] | None = _field(
+        None, "", "for a scene with other movers (then the format is acconform.outcome/6), each other mover after it "
+        "entered the world (enter_world's answer OK or GeneralFailure, and where it is), in the scene's `others` order")
 
     @property
     def frame(self) -> Frame:
         return Frame(self.origin, self.orientation)
 
     def to_json(self):
-        d = {"format": (FORMAT if any(t.motion is not None for t in self.ticks) else FORMAT_V4) if self.ticks is not None
+        d = {"format": FORMAT if self.other_placements is not None
+             else (FORMAT_V5 if any(t.motion is not None for t in self.ticks) else FORMAT_V4) if self.ticks is not None
              else FORMAT_V3 if self.placement is not None else FORMAT_V2}
         for f in fields(self):
             v = getattr(self, f.name)
-            if f.name in ("placement", "ticks") and v is None:
+            if f.name in ("placement", "ticks", "other_placements") and v is None:
                 continue
             if f.name == "ticks":
                 d["ticks"] = [t.to_json() for t in v]
+                continue
+            if f.name == "other_placements":
+                d["other_placements"] = [p.to_json() for p in v]
                 continue
             if f.name in ("cell", "check_cell"):
                 v = write_id(v)
@@ -400,17 +468,19 @@ class Outcome:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         allowed = _OUTCOME_ALLOWED - {"static_cells"} if v1 else _OUTCOME_ALLOWED
-        if fmt not in (FORMAT, FORMAT_V4, FORMAT_V3):
+        if fmt not in (FORMAT, FORMAT_V5, FORMAT_V4, FORMAT_V3):
             allowed = allowed - {"placement"}
-        if fmt not in (FORMAT, FORMAT_V4):
+        if fmt not in (FORMAT, FORMAT_V5, FORMAT_V4):
             allowed = allowed - {"ticks"}
+        if fmt != FORMAT:
+            allowed = allowed - {"other_placements"}
         r.obj(allowed | {"format"})
-        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4):
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5):
             check_format(r, FORMAT)
         kw = {}
         for name in names:
             if not r.has(name):
-                if name in ("error", "placement", "ticks") or (name == "static_cells" and (v1 or name in r.value)):
+                if name in ("error", "placement", "ticks", "other_placements") or (name == "static_cells" and (v1 or name in r.value)):
                     continue  # absent error/placement/ticks: none; static_cells: /1 never has it, /2 may write null
                 r[name]  # raises InvalidScene: missing required field
             x = r[name]
@@ -435,7 +505,9 @@ class Outcome:
             elif name == "placement":
                 kw[name] = PlacementState.from_json(x)
             elif name == "ticks":
-                kw[name] = tuple(TickState.from_json(t, fmt == FORMAT) for t in x.list())
+                kw[name] = tuple(TickState.from_json(t, fmt in (FORMAT_V5, FORMAT), fmt == FORMAT) for t in x.list())
+            elif name == "other_placements":
+                kw[name] = tuple(PlacementState.from_json(p) for p in x.list())
             else:
                 kw[name] = x.bool_()
         return Outcome(**kw)

@@ -1,8 +1,8 @@
 """The scene: everything one transition needs, as immutable records with a versioned JSON form.
 
-A scene is what both the port and the oracle take. Format ``acconform.scene/7`` (README's
-"Scene format" section documents every field); ``/6``, ``/5``, ``/4``, ``/3``, ``/2`` and ``/1`` files still read
-(a /6 scene is a /7 scene whose statics each have one ``shape``, none a ``setup`` of several parts; a /5 scene is a /6 scene whose placements go through SetPosition: its ``placement`` has no ``via``, and
+A scene is what both the port and the oracle take. Format ``acconform.scene/8`` (README's
+"Scene format" section documents every field); ``/7``, ``/6``, ``/5``, ``/4``, ``/3``, ``/2`` and ``/1`` files still read
+(a /7 scene is a /8 scene without other movers (``others``); a /6 scene is a /7 scene whose statics each have one ``shape``, none a ``setup`` of several parts; a /5 scene is a /6 scene whose placements go through SetPosition: its ``placement`` has no ``via``, and
 means ``"via": "set_position"``; a /4 scene is a /5 scene without ``buildings``; a /3 scene is a /4 scene without ``ticks``; a /2 scene is a /3 scene whose mover has no ``placement``; a
 /1 scene is a /2 scene without indoor fields: no environments, no EnvCells, every landblock with
 terrain). A scene with ``ticks`` is a tick scene: the mover has no ``end``, and ACE's per-tick
@@ -25,7 +25,8 @@ from .motion_scene import CommandInput, MotionInput, MotionTableSpec, MoveToInpu
 from .flags import (PLAYER_KILLER_STATUS_NPK, CullMode, PhysicsState, PlayerKillerStatus, SetPositionFlags, TransientState,
                     flag_names)
 
-FORMAT = "acconform.scene/7"
+FORMAT = "acconform.scene/8"
+FORMAT_V7 = "acconform.scene/7"  # what a scene with no other movers (`others`) is written as
 FORMAT_V6 = "acconform.scene/6"  # what a scene with no multi-part static (a static's `setup`) is written as
 FORMAT_V5 = "acconform.scene/5"  # what a scene with buildings and no placement through enter_world is written as
 FORMAT_V4 = "acconform.scene/4"  # what a scene with ticks and no buildings is written as
@@ -675,7 +676,7 @@ class StaticObject:
     def from_json(r: Reader, setups: bool = True) -> "StaticObject":
         """`setups`: the format knows `setup` (scene/7)."""
         if not setups and isinstance(r.value, dict) and "setup" in r.value:
-            r["setup"].fail(f"a static's setup needs format {FORMAT!r} (older formats have one shape per static)")
+            r["setup"].fail(f"a static's setup needs format {FORMAT_V7!r} or later (older formats have one shape per static)")
         r.obj({"id", "position", "shape", "state", "scale", *(("setup",) if setups else ())})
         if setups and "shape" in r.value and "setup" in r.value:
             r["setup"].fail("a static has a shape or a setup (several parts), not both")
@@ -795,6 +796,55 @@ class DoorInput:
         return DoorInput(r["object"].id_(), r["ethereal"].bool_())
 
 
+# the inputs another mover takes (scene/8, ticks.steps[].others): the PhysicsObj's own setters and a player's jump
+OTHER_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega", "jump", "sequence_velocity",
+                "sequence_omega")
+
+
+@dataclass(frozen=True, slots=True)
+class OtherInputs:
+    """One tick's inputs to another mover (scene/8), named by its id: the same as the mover's inputs of
+    the same names (``state`` and ``transient_state`` set State / TransientState; ``velocity``,
+    ``local_velocity`` and ``omega`` call set_velocity / set_local_velocity / set_omega; ``jump`` runs
+    the physics calls of Player.HandleActionJump, for a mover whose weenie is a player;
+    ``sequence_velocity`` / ``sequence_omega`` set its Sequence's root motion), in `OTHER_INPUTS` order."""
+
+    id: int
+    state: int | None = None
+    transient_state: int | None = None
+    velocity: Vec3 | None = None
+    local_velocity: Vec3 | None = None
+    omega: Vec3 | None = None
+    jump: Vec3 | None = None
+    sequence_velocity: Vec3 | None = None
+    sequence_omega: Vec3 | None = None
+
+    def to_json(self):
+        d = {"id": write_id(self.id)}
+        if self.state is not None:
+            d["state"] = flag_names(PhysicsState, self.state)
+        if self.transient_state is not None:
+            d["transient_state"] = flag_names(TransientState, self.transient_state)
+        for name in _TICK_VECTORS:
+            v = getattr(self, name)
+            if v is not None:
+                d[name] = write_vec(v)
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "OtherInputs":
+        r.obj({"id", *OTHER_INPUTS})
+        kw = {}
+        if r.has("state"):
+            kw["state"] = r["state"].flags(PhysicsState)
+        if r.has("transient_state"):
+            kw["transient_state"] = r["transient_state"].flags(TransientState)
+        for name in _TICK_VECTORS:
+            if r.has(name):
+                kw[name] = r[name].vec3()
+        return OtherInputs(r["id"].id_(), **kw)
+
+
 @dataclass(frozen=True, slots=True)
 class TickStep:
     """One tick: the time the clock advances (a double, seconds) and the inputs applied before the
@@ -828,6 +878,7 @@ class TickStep:
     turn_to_heading: MoveToInput | None = None
     turn_to_object: ObjectMoveInput | None = None
     door: DoorInput | None = None  # scene/7: a static opens or closes (Door.Open / FinalizeClose's physics)
+    others: tuple["OtherInputs", ...] = ()  # scene/8: the other movers' inputs, applied after the mover's, in this order
 
     def to_json(self):
         d = {"dt": write_f64(self.dt)}
@@ -851,6 +902,8 @@ class TickStep:
                 d[name] = v.to_json()
         if self.door is not None:
             d["door"] = self.door.to_json()
+        if self.others:
+            d["others"] = [o.to_json() for o in self.others]
         return d
 
     def json_text(self) -> str:
@@ -875,19 +928,24 @@ class TickStep:
                 text += ',"' + name + '":' + dumps_compact(v.to_json())
         if self.door is not None:
             text += ',"door":' + dumps_compact(self.door.to_json())
+        if self.others:
+            text += ',"others":' + dumps_compact([o.to_json() for o in self.others])
         return text + "}"
 
     @staticmethod
-    def from_json(r: Reader, driver: str, motion: bool = True, doors: bool = True) -> "TickStep":
+    def from_json(r: Reader, driver: str, motion: bool = True, doors: bool = True, others: bool = True) -> "TickStep":
         """`driver`: the scene's driver (request_pos needs a RequestPos on every step, update_object refuses one).
-        `motion`: the format knows the input motion (scene/6); `doors`: the input door (scene/7)."""
+        `motion`: the format knows the input motion (scene/6); `doors`: the input door (scene/7); `others`: the
+        other movers' inputs (scene/8)."""
         if not motion and isinstance(r.value, dict):
             for name in MOTION_INPUTS:
                 if name in r.value:
                     r[name].fail(f"a motion input needs format {FORMAT_V6!r} or later (older formats have none)")
         if not doors and isinstance(r.value, dict) and "door" in r.value:
-            r["door"].fail(f"a door input needs format {FORMAT!r} (older formats have none)")
-        r.obj({"dt", *TICK_INPUTS})
+            r["door"].fail(f"a door input needs format {FORMAT_V7!r} or later (older formats have none)")
+        if not others and isinstance(r.value, dict) and "others" in r.value:
+            r["others"].fail(f"the other movers' inputs need format {FORMAT!r} (older formats have one mover)")
+        r.obj({"dt", *TICK_INPUTS, *(("others",) if others else ())})
         dt = r["dt"].f64()
         if dt < 0:
             r["dt"].fail(f"a tick's dt is the time the clock advances: 0 or more seconds, got {dt!r}")
@@ -923,6 +981,8 @@ class TickStep:
                 kw[name] = ObjectMoveInput.from_json(r[name])
         if r.has("door"):
             kw["door"] = DoorInput.from_json(r["door"])
+        if others and r.given("others"):
+            kw["others"] = tuple(OtherInputs.from_json(o) for o in r["others"].list())
         return TickStep(dt, **kw)
 
 
@@ -955,8 +1015,9 @@ class Ticks:
                 + ',"steps":[' + ",".join([s.json_text() for s in self.steps]) + "]}")
 
     @staticmethod
-    def from_json(r: Reader, motion: bool = True, doors: bool = True) -> "Ticks":
-        """`motion`: the format knows the tick input motion (scene/6); `doors`: the input door (scene/7)."""
+    def from_json(r: Reader, motion: bool = True, doors: bool = True, others: bool = True) -> "Ticks":
+        """`motion`: the format knows the tick input motion (scene/6); `doors`: the input door (scene/7);
+        `others`: the other movers' inputs (scene/8)."""
         r.obj({"driver", "start", "steps"})
         driver = r["driver"].str_()
         if driver not in DRIVERS:
@@ -965,7 +1026,7 @@ class Ticks:
         steps = r["steps"].list()
         if not steps:
             r["steps"].fail("a tick scene needs at least one step (one per tick)")
-        ticks = Ticks(driver, start, tuple(TickStep.from_json(s, driver, motion, doors) for s in steps))
+        ticks = Ticks(driver, start, tuple(TickStep.from_json(s, driver, motion, doors, others) for s in steps))
         times = ticks.times()
         if not math.isfinite(times[-1]):
             r["steps"].fail(f"the clock overflows: start plus the steps' dt reaches {times[-1]}")
@@ -1076,6 +1137,85 @@ class Mover:
         )
 
 
+# the WorldObject a server makes for another mover (scene/8 `others[].weenie`): WeenieObject(WorldObject) reads its class
+WEENIE_CLASSES = ("player", "creature", "monster", "object")
+PLAYER_ID_RANGE = (0x50000001, 0x5FFFFFFF)  # ACE.Entity.ObjectGuid.PlayerMin / PlayerMax
+DYNAMIC_ID_RANGE = (0x80000000, 0xFFFFFFFE)  # ObjectGuid.DynamicMin / DynamicMax: a server's generated objects
+
+
+@dataclass(frozen=True, slots=True)
+class OtherMover:
+    """Another moving object (scene/8 `others`): a WorldObject of ACE's server with its PhysicsObj, made
+    from its Setup (spheres and step heights, as the mover's) as WorldObject.InitPhysicsObj makes one
+    (makeAnimObject, set_object_guid(id), set_weenie_obj(new WeenieObject(the WorldObject)),
+    SetScaleStatic, State), then TransientState and Velocity, and entered into the world at `begin` as
+    WorldObject.AddPhysicsObj enters it (LScape.get_landcell, enter_world), after the mover's placement
+    and in `others` order. `weenie` names the WorldObject: ``player`` (a Player: its id in ACE's player
+    range), ``creature`` (a Creature that is not a monster: an NPC), ``monster`` (a Creature with
+    IsMonster) or ``object`` (a GenericObject: no creature); the others' ids are in ACE's dynamic range.
+    A creature's PlayerKillerStatus is its WeenieObject's (IsPK, IsPKLite, IsImpenetrable for a player).
+    Each tick steps it after the mover, in `others` order (the order the objects entered: a landblock's
+    worldObjects), by update_object."""
+
+    id: int
+    weenie: str
+    spheres: tuple[SphereRec, ...]
+    begin: Position
+    step_up_height: float
+    step_down_height: float
+    scale: float = 1.0
+    state: int = DEFAULT_MOVER_STATE
+    transient_state: int = DEFAULT_MOVER_TRANSIENT
+    velocity: Vec3 = (0.0, 0.0, 0.0)
+    player_killer_status: int = PLAYER_KILLER_STATUS_NPK
+
+    def to_json(self):
+        d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
+             "scale": write_f32(self.scale), "step_up_height": write_f32(self.step_up_height),
+             "step_down_height": write_f32(self.step_down_height), "state": flag_names(PhysicsState, self.state),
+             "transient_state": flag_names(TransientState, self.transient_state), "velocity": write_vec(self.velocity),
+             "begin": self.begin.to_json()}
+        if self.player_killer_status != PLAYER_KILLER_STATUS_NPK:
+            d["player_killer_status"] = PlayerKillerStatus(self.player_killer_status).name
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "OtherMover":
+        r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
+               "velocity", "begin", "player_killer_status"})
+        weenie = r["weenie"].str_()
+        if weenie not in WEENIE_CLASSES:
+            r["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
+        oid = r["id"].id_()
+        low, high = PLAYER_ID_RANGE if weenie == "player" else DYNAMIC_ID_RANGE
+        if not low <= oid <= high:
+            what = "a player's id is in ACE's player range" if weenie == "player" else \
+                "a server's generated object has an id in ACE's dynamic range"
+            r["id"].fail(f"{what} (0x{low:08X}..0x{high:08X}), got 0x{oid:08X}")
+        spheres = tuple(SphereRec.from_json(x) for x in r["spheres"].list(min_count=1, max_count=2))
+        scale = r["scale"].f32() if r.given("scale") else 1.0
+        if not scale > 0:
+            r["scale"].fail(f"scale must be positive, got {scale}")
+        up = r["step_up_height"].f32()
+        down = r["step_down_height"].f32()
+        for name, v in (("step_up_height", up), ("step_down_height", down)):
+            if v < 0:
+                r[name].fail(f"a step height cannot be negative, got {v}")
+        pks = PLAYER_KILLER_STATUS_NPK
+        if r.given("player_killer_status"):
+            if weenie == "object":
+                r["player_killer_status"].fail("a PlayerKillerStatus is a creature's: WeenieObject(WorldObject) copies "
+                                               "it only from a Creature (weenie player, creature or monster)")
+            pks = r["player_killer_status"].enum_(PlayerKillerStatus)
+        return OtherMover(
+            id=oid, weenie=weenie, spheres=spheres, begin=Position.from_json(r["begin"]), step_up_height=up,
+            step_down_height=down, scale=scale,
+            state=r["state"].flags(PhysicsState) if r.given("state") else DEFAULT_MOVER_STATE,
+            transient_state=r["transient_state"].flags(TransientState) if r.given("transient_state") else DEFAULT_MOVER_TRANSIENT,
+            velocity=r["velocity"].vec3() if r.given("velocity") else (0.0, 0.0, 0.0),
+            player_killer_status=pks)
+
+
 ENGINE_MODES = ("server", "client")
 
 
@@ -1091,6 +1231,7 @@ class Scene:
     env_cells: tuple[EnvCell, ...] = ()
     ticks: Ticks | None = None  # a tick scene: ACE's per-tick update moves the mover (scene/4)
     buildings: tuple[Building, ...] = ()  # scene/5
+    others: tuple[OtherMover, ...] = ()  # scene/8: the other moving objects, in the order they enter the world
 
     @property
     def indoor(self) -> bool:
@@ -1111,10 +1252,12 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/7 for a static with a setup or a door input, /6 for a placement
+        """The oldest format that holds the scene (/8 for other movers, /7 for a static with a setup or a door input, /6 for a placement
         through enter_world, /5 for buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
-        if any(o.setup is not None for o in self.objects) or self.has_doors:
+        if self.others:
             return FORMAT
+        if any(o.setup is not None for o in self.objects) or self.has_doors:
+            return FORMAT_V7
         if self.has_motion or self.mover.player_killer_status != PLAYER_KILLER_STATUS_NPK:
             return FORMAT_V6
         if self.mover.placement is not None and self.mover.placement.via == "enter_world":
@@ -1143,7 +1286,9 @@ class Scene:
             d["env_cells"] = [c.to_json() for c in self.env_cells]
         if self.buildings:
             d["buildings"] = [b.to_json() for b in self.buildings]
-        d["mover"] = self.mover.to_json(explicit_via=d["format"] == FORMAT)
+        d["mover"] = self.mover.to_json(explicit_via=d["format"] in (FORMAT_V7, FORMAT))
+        if self.others:
+            d["others"] = [o.to_json() for o in self.others]
         if self.ticks is not None:
             d["ticks"] = self.ticks.to_json()
         return d
@@ -1160,15 +1305,17 @@ class Scene:
         fmt = doc.get("format") if isinstance(doc, dict) else None
         v1 = fmt == FORMAT_V1
         indoor = () if v1 else ("environments", "env_cells")
-        ticks_field = ("ticks",) if fmt in (FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT) else ()
-        buildings_field = ("buildings",) if fmt in (FORMAT_V5, FORMAT_V6, FORMAT) else ()
+        ticks_field = ("ticks",) if fmt in (FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7, FORMAT) else ()
+        buildings_field = ("buildings",) if fmt in (FORMAT_V5, FORMAT_V6, FORMAT_V7, FORMAT) else ()
+        if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7) and "others" in doc:
+            r["others"].fail(f"other movers need format {FORMAT!r} (older formats have one mover)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3) and "ticks" in doc:
             r["ticks"].fail(f"ticks need format {FORMAT_V4!r} or later (older formats have no ticks)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4) and "buildings" in doc:
             r["buildings"].fail(f"buildings need format {FORMAT_V5!r} or later (older formats have no buildings)")
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field,
-               *buildings_field})
-        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6):
+               *buildings_field, *(("others",) if fmt == FORMAT else ())})
+        if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.given("name") else ""
         mode = "server"
@@ -1182,7 +1329,7 @@ class Scene:
         if r.given("land_height_table"):
             table = tuple(h.f32() for h in r["land_height_table"].list(count=256))
         landblocks = tuple(Landblock.from_json(lb, not v1) for lb in r["landblocks"].list(min_count=1))
-        setups = fmt == FORMAT
+        setups = fmt in (FORMAT_V7, FORMAT)
         objects = tuple(StaticObject.from_json(o, setups) for o in r["objects"].list()) if r.given("objects") else ()
         environments = env_cells = ()
         if r.given("environments"):
@@ -1190,10 +1337,12 @@ class Scene:
         if r.given("env_cells"):
             env_cells = tuple(EnvCell.from_json(c) for c in r["env_cells"].list())
         buildings = tuple(Building.from_json(b) for b in r["buildings"].list()) if r.given("buildings") else ()
-        ticks = Ticks.from_json(r["ticks"], motion=fmt in (FORMAT_V6, FORMAT), doors=fmt == FORMAT) if r.has("ticks") else None
-        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT),
-                                ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT))
-        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings)
+        ticks = Ticks.from_json(r["ticks"], motion=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), doors=fmt in (FORMAT_V7, FORMAT),
+                                others=fmt == FORMAT) if r.has("ticks") else None
+        mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7, FORMAT),
+                                ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT_V7, FORMAT))
+        others = tuple(OtherMover.from_json(o) for o in r["others"].list()) if fmt == FORMAT and r.given("others") else ()
+        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others)
         check_consistency(scene, path)
         return scene
 
@@ -1278,6 +1427,7 @@ def check_consistency(scene: Scene, path: str = "") -> None:
             check_landblock(end, scene.mover.end.cell)
     else:
         _check_ticks(scene, path, check_landblock, env_cells)
+    _check_others(scene, path, check_landblock, env_cells)
     ids = set()
     for i, o in enumerate(scene.objects):
         where = _p(path, f"objects[{i}]")
@@ -1295,6 +1445,43 @@ def check_consistency(scene: Scene, path: str = "") -> None:
             if o.scale != 1.0:
                 raise InvalidScene(f"{where}.scale", f"a static in an EnvCell is a DAT stab: ACE's "
                                    f"EnvCell.init_static_objects sets no scale (omit it, or give 1), got {o.scale}")
+
+
+def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> None:
+    """Each other mover's id is its own (not the mover's, another's or a static's: ServerObjectManager files
+    every object by its id), it begins in a cell the scene defines, and each tick's inputs name other movers,
+    each once per step; a jump is a player's (Player.HandleActionJump)."""
+    from .staging import MOVER_ID
+
+    taken = {MOVER_ID: "the mover's", **{o.id: f"objects[{i}]'s" for i, o in enumerate(scene.objects)}}
+    by_id = {}
+    for i, o in enumerate(scene.others):
+        where = _p(path, f"others[{i}]")
+        if o.id in taken:
+            raise InvalidScene(f"{where}.id", f"id 0x{o.id:08X} is already {taken[o.id]} (ServerObjectManager files every "
+                                              "object by its id)")
+        taken[o.id] = f"others[{i}]'s"
+        by_id[o.id] = o
+        cell = o.begin.cell
+        _check_cell_id(f"{where}.begin.cell", cell)
+        check_landblock(f"{where}.begin.cell", cell)
+        _check_defined(f"{where}.begin.cell", cell, env_cells, "it enters the world there (LScape.get_landcell)")
+    if scene.ticks is None:
+        return
+    for i, step in enumerate(scene.ticks.steps):
+        seen = set()
+        for k, inputs in enumerate(step.others):
+            where = _p(path, f"ticks.steps[{i}].others[{k}]")
+            other = by_id.get(inputs.id)
+            if other is None:
+                raise InvalidScene(f"{where}.id", f"no other mover has id 0x{inputs.id:08X} (the scene's others: "
+                                                  f"{', '.join(f'0x{o.id:08X}' for o in scene.others) or 'none'})")
+            if inputs.id in seen:
+                raise InvalidScene(f"{where}.id", f"other mover 0x{inputs.id:08X} is given inputs twice in one step")
+            seen.add(inputs.id)
+            if inputs.jump is not None and other.weenie != "player":
+                raise InvalidScene(f"{where}.jump", f"a jump is a player's (Player.HandleActionJump); other mover "
+                                                    f"0x{inputs.id:08X} is a {other.weenie}")
 
 
 def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> None:

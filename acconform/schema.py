@@ -271,16 +271,17 @@ def schemas() -> tuple[dict, dict]:
                           FORMAT_V4 as OUTCOME_FORMAT_V4, Outcome)
     from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
                         FORMAT_V3 as SCENE_FORMAT_V3, FORMAT_V4 as SCENE_FORMAT_V4, FORMAT_V5 as SCENE_FORMAT_V5,
-                        FORMAT_V6 as SCENE_FORMAT_V6)
+                        FORMAT_V6 as SCENE_FORMAT_V6, FORMAT_V7 as SCENE_FORMAT_V7)
 
     scenes, outcomes = _sample()
     scenes += _tick_scenes(scenes[0])
     s = _Inferrer(nonfinite_floats=False)
     # an outdoor scene is written as /1, an indoor one as /2, one with a placement as /3, a tick scene as /4,
-    # one with buildings as /5, one placed through enter_world as /6, one with a static's setup as /7
+    # one with buildings as /5, one placed through enter_world as /6, one with a static's setup as /7, one with
+    # other movers as /8
     scene = s.finish(s._plain([x.to_json() for x in scenes]), "acconform scene",
                      (SCENE_FORMAT_V1, SCENE_FORMAT_V2, SCENE_FORMAT_V3, SCENE_FORMAT_V4, SCENE_FORMAT_V5,
-                      SCENE_FORMAT_V6, SCENE_FORMAT))
+                      SCENE_FORMAT_V6, SCENE_FORMAT_V7, SCENE_FORMAT))
     o = _Inferrer(nonfinite_floats=True)
     docs = ([x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
             + [x.to_json() for x in _tick_outcomes()])

@@ -8,16 +8,16 @@ scene's values. The conventions both sides apply when staging a scene live in ac
 from __future__ import annotations
 
 import struct
-from dataclasses import fields
+from dataclasses import fields, replace
 
-from ..outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState, PlaneState,
-                       TickState)
+from ..outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, OtherTick, Outcome,
+                       PlacementState, PlaneState, TickState)
 from ..dat import cell_landblock, has_objects, scene_records
 from ..motion_scene import MOTION_TABLE_ID, STOPS
-from ..scene import DRIVERS, TICK_INPUTS, Position, Frame, Scene, Ticks
+from ..scene import DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 12
+PACK_VERSION = 13
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -86,12 +86,32 @@ def _params(p) -> bytes:
                         p.desired_heading, p.hold_key_to_apply)
 
 
-def _ticks(ticks: Ticks | None) -> bytes:
+def _other_inputs(step, index: dict) -> list[bytes]:
+    """int n, then per other mover's inputs: its index in the scene's `others`, a mask of the inputs present (bit i:
+    OTHER_INPUTS[i]) and their values in that order."""
+    out = [_I32.pack(len(step.others))]
+    for inputs in step.others:
+        mask = 0
+        values = []
+        for bit, name in enumerate(OTHER_INPUTS):
+            v = getattr(inputs, name)
+            if v is None:
+                continue
+            mask |= 1 << bit
+            values.append(_U32.pack(v) if name in ("state", "transient_state") else _3f.pack(*v))
+        out.append(struct.pack("<iI", index[inputs.id], mask))
+        out += values
+    return out
+
+
+def _ticks(ticks: Ticks | None, others=()) -> bytes:
     """byte 0 (not a tick scene), or 1, the driver (its index in scene.DRIVERS), the start clock (double), the
     number of steps, and per step: its absolute clock value from `Ticks.times()` (double, computed once by the
-    record), a mask of the inputs present (bit i: TICK_INPUTS[i]) and their values in that order."""
+    record), a mask of the inputs present (bit i: TICK_INPUTS[i]) and their values in that order, then the other
+    movers' inputs (`_other_inputs`; `others`: the scene's)."""
     if ticks is None:
         return b"\0"
+    index = {o.id: k for k, o in enumerate(others)}
     out = [_TICKS_HEAD.pack(1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
     for step, time in zip(ticks.steps, ticks.times()):
         mask = 0
@@ -124,13 +144,20 @@ def _ticks(ticks: Ticks | None) -> bytes:
                 values.append(_3f.pack(*v))
         out.append(_STEP_HEAD.pack(time, mask))
         out += values
+        out += _other_inputs(step, index) if step.others else (_NO_OTHERS,)
     return b"".join(out)
+
+
+_NO_OTHERS = struct.pack("<i", 0)
+# another mover (scene/8): its Setup id, id, weenie class (index in WEENIE_CLASSES), PlayerKillerStatus, scale, State,
+# TransientState, Velocity, begin position
+_OTHER = struct.Struct("<IIBIfII3f" + _POS)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII")
 
 
 def pack_scene(scene: Scene) -> bytes:
     out = [_HEAD.pack(PACK_VERSION, 1 if scene.engine_mode == "server" else 0),
-           _ticks(scene.ticks),
+           _ticks(scene.ticks, scene.others),
            _table_bytes(scene.land_height_table),
            struct.pack("<i", len(scene.landblocks))]
     for lb in scene.landblocks:
@@ -153,6 +180,11 @@ def pack_scene(scene: Scene) -> bytes:
     out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end if m.end is not None else _NO_END),
                            *plv, MOTION_TABLE_ID if m.motion_table is not None else 0, m.player_killer_status))
+    out.append(_I32.pack(len(scene.others)))
+    for o, recs in zip(scene.others, written.others):
+        out += _records(recs)
+        out.append(_OTHER.pack(recs.did, o.id, WEENIE_CLASSES.index(o.weenie), o.player_killer_status, o.scale, o.state,
+                               o.transient_state, *o.velocity, *_pos(o.begin)))
     return b"".join(out)
 
 
@@ -203,12 +235,6 @@ def _static_cells(data, pos: int):
 _PLACED = struct.Struct("<iI3f4fIIi")
 
 
-def _placement(data, pos: int):
-    """byte 0 (none), or 1 then SetPositionError, Position.ObjCellID, origin, orientation (w x y z), CurCell id,
-    TransientState, int n and the n ShadowObjects cell ids (Facade.WritePlacement)."""
-    return _placement_at(data, pos)[0]
-
-
 def _placement_at(data, pos: int):
     """(`_placement`, the offset after it)."""
     if data[pos] in (0, b"\0"):
@@ -240,9 +266,39 @@ def _motion_at(data, pos: int):
             pos + 1 + _MOTION_STATE.size)
 
 
+_COLLISION = struct.Struct("<IdB")
+
+
+def _collisions_at(data, pos: int):
+    """int n, then per CollisionTable record: the id, TouchedTime (double), Ethereal (byte)."""
+    (n,) = _I32.unpack_from(data, pos)
+    pos += 4
+    out = []
+    for _ in range(n):
+        i, t, e = _COLLISION.unpack_from(data, pos)
+        out.append(CollisionState(i, t, bool(e)))
+        pos += _COLLISION.size
+    return tuple(out), pos
+
+
+def _state_at(data, pos: int, collisions=None, others=None):
+    """One TickState's fields (Facade.WriteState) from `pos`: (its values, its shadow cells, its motion, the offset
+    after them)."""
+    v = _TICK.unpack_from(data, pos)
+    pos += _TICK.size
+    shadows = struct.unpack_from(f"<{v[34]}I", data, pos)
+    pos += 4 * v[34]
+    motion, pos = _motion_at(data, pos)
+    return (TickState(bool(v[0]), v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23],
+                      v[23], v[24], v[25], PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), tuple(shadows),
+                      motion), pos)
+
+
 def _ticks_at(data, pos: int):
     """int n (-1: not a tick scene), then per tick byte 0 and its state, or byte 1, int length and the error
-    message (the last tick: an error ends the scene). Returns the TickStates or None."""
+    message (the last tick: an error ends the scene). A state is its fields (`_state_at`), then byte 0, or byte 1
+    (a scene with other movers), its CollisionTable, int n and per other mover its id, state and CollisionTable.
+    Returns the TickStates or None."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
     if n < 0:
@@ -254,15 +310,38 @@ def _ticks_at(data, pos: int):
             out.append(TickState(error=bytes(data[pos + 5:pos + 5 + k]).decode("utf-8", "replace")))
             pos += 5 + k
             continue
-        v = _TICK.unpack_from(data, pos + 1)
-        pos += 1 + _TICK.size
-        shadows = struct.unpack_from(f"<{v[34]}I", data, pos)
-        pos += 4 * v[34]
-        motion, pos = _motion_at(data, pos)
-        out.append(TickState(bool(v[0]), v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23],
-                             v[23], v[24], v[25], PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), tuple(shadows),
-                             motion))
+        state, pos = _state_at(data, pos + 1)
+        has_others = data[pos] not in (0, b"\0")
+        pos += 1
+        if has_others:
+            collisions, pos = _collisions_at(data, pos)
+            (k,) = _I32.unpack_from(data, pos)
+            pos += 4
+            others = []
+            for _ in range(k):
+                (oid,) = _U32.unpack_from(data, pos)
+                other, pos = _state_at(data, pos + 4)
+                other_collisions, pos = _collisions_at(data, pos)
+                others.append(OtherTick(oid, replace(other, collisions=other_collisions)))
+            state = replace(state, collisions=collisions, others=tuple(others))
+        out.append(state)
     return tuple(out)
+
+
+def _other_placements_at(data, pos: int):
+    """int -1 (none), or n and per other mover its placement (`_placement_at` without the leading byte)."""
+    (n,) = _I32.unpack_from(data, pos)
+    pos += 4
+    if n < 0:
+        return None, pos
+    out = []
+    for _ in range(n):
+        v = _PLACED.unpack_from(data, pos)
+        pos += _PLACED.size
+        shadows = struct.unpack_from(f"<{v[11]}I", data, pos)
+        pos += 4 * v[11]
+        out.append(PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows)))
+    return tuple(out), pos
 
 
 _NO_TRANSITION = struct.Struct("<B3fd")  # tag 2 (placed in no cell): the mover's velocity, FVP time 0
@@ -308,14 +387,17 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         case_us, built, reused, build_us, trans_us = _AFTER.unpack_from(data, at)
         cells, at = _static_cells(data, at + _AFTER.size)
         placement, at = _placement_at(data, at)
-        return (Outcome(static_cells=cells, placement=placement, ticks=_ticks_at(data, at)),
+        others, at = _other_placements_at(data, at)
+        return (Outcome(static_cells=cells, placement=placement, ticks=_ticks_at(data, at), other_placements=others),
                 us, case_us, (built, reused, build_us, trans_us))
     if tag == 2 or tag == b"\x02":
         _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)
         at = offset + _NO_TRANSITION.size
         case_us, built, reused, build_us, trans_us = _AFTER.unpack_from(data, at)
         cells, at = _static_cells(data, at + _AFTER.size)
-        return (Outcome(velocity=(vx, vy, vz), static_cells=cells, placement=_placement(data, at)),
+        placement, at = _placement_at(data, at)
+        others, _ = _other_placements_at(data, at)
+        return (Outcome(velocity=(vx, vy, vz), static_cells=cells, placement=placement, other_placements=others),
                 us, case_us, (built, reused, build_us, trans_us))
     v = _OUT.unpack_from(data, offset)
     if v[0] != 1:
@@ -324,7 +406,9 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
     cp = _cps(kc, *v[11:18])
     lk = cp if kl == kc else _cps(kl, *v[18:25])
     cells, at = _static_cells(data, offset + _OUT.size)
+    placement, at = _placement_at(data, at)
+    others, _ = _other_placements_at(data, at)
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
                           bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None,
-                          cells, _placement(data, at), None),
+                          cells, placement, None, others),
             v[42], v[43], (v[44], v[45], v[46], v[47]))

@@ -576,10 +576,10 @@ class PhysicsObj:
 
     @anchor(None, "PhysicsObj.cs:enter_cell_server")
     def enter_cell_server(self, new_cell, lscape) -> None:
-        """ObjectMaint's tables (visible, known and to-be-destroyed objects) are not kept: a scene
-        has no object they could hold (every static is a DAT object, which ObjectMaint filters out,
-        and the mover is left out by its id) and nothing in the physics reads them; what can throw
-        is kept (handle_visible_cells' GetVisibleObjects)."""
+        """ObjectMaint's tables (visible, known and to-be-destroyed objects, known players) are not
+        kept: nothing in the physics reads them (they feed the server's network updates and a
+        monster's targets); what can throw is kept (GetVisibleObjects in handle_visible_cells and
+        handle_visible_cells_non_player)."""
         self.enter_cell(new_cell, lscape)
         self.request_pos.obj_cell_id = new_cell.id  # document this control flow better (ACE)
 
@@ -592,9 +592,17 @@ class PhysicsObj:
             # have none (DummyObject)
             self.handle_visible_cells()
         else:
-            raise NotImplementedError("handle_visible_cells_non_player (WeenieObject.IsMonster) is not ported")
+            self.handle_visible_cells_non_player()
 
         # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover
+
+    @anchor(None, "PhysicsObj.cs:handle_visible_cells_non_player")
+    def handle_visible_cells_non_player(self) -> None:
+        """A monster's visible attack targets, or (ObjectMaint.InitialClamp, true) the players within
+        InitialClamp_Dist another object knows; a combat pet's visible monsters. Each answer only
+        feeds ObjectMaint's tables (not kept: see enter_cell_server); the cells are walked as
+        GetVisibleObjects walks them (GetVisibleObjectsDist asks GetVisibleObjects first)."""
+        self.handle_visible_cells()
 
     @anchor(None, "PhysicsObj.cs:handle_visible_cells")
     def handle_visible_cells(self) -> list:
@@ -1414,8 +1422,10 @@ class PhysicsObj:
         if self.cur_cell is None or self.cur_cell.id != self.position.obj_cell_id:
             new_cell = lscape.get_landcell(new_pos.obj_cell_id)
 
-            player = self.weenie_obj.world_object
-            if player is not None and player.last_contact and isinstance(new_cell, LandCell):
+            from .weenie_object import Player
+
+            player = self.weenie_obj.world_object  # ACE: WeenieObj.WorldObject as Player
+            if isinstance(player, Player) and player.last_contact and isinstance(new_cell, LandCell):
                 found, walkable = new_cell.find_terrain_poly(new_pos.frame.origin, None)
                 if found:
                     self.contact_plane_cell_id = new_pos.obj_cell_id

@@ -29,11 +29,11 @@ import numpy as np
 
 from acconform.flags import PhysicsState, SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
-from acconform.outcome import (CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome, PlacementState,
-                               PlaneState, TickState)
+from acconform.outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, OtherTick,
+                               Outcome, PlacementState, PlaneState, TickState)
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
-from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, Scene, StaticObject
+from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, OtherMover, Scene, StaticObject
 
 from .anchors import anchor, harness
 from .constants import BLOCK_LENGTH, CELL_LENGTH
@@ -93,6 +93,64 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     return obj
 
 
+@harness("builds another mover and enters it into the world, as the oracle's facade does (WorldObject.InitPhysicsObj, AddPhysicsObj)")
+def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, trace) -> tuple[PhysicsObj, PlacementState, bool]:
+    """WorldObject.InitPhysicsObj for the other mover's WorldObject (acconform.scene.OtherMover): a
+    creature's PhysicsObj by ``new PhysicsObj()`` and makeAnimObject(did, true), a GenericObject's by
+    makeObject(did, id, true) (dynamic); set_object_guid(id), set_weenie_obj(new WeenieObject(the
+    WorldObject)), SetMotionTableID(0), SetScaleStatic(scale), State; then TransientState and Velocity as
+    the scene gives them, and AddPhysicsObj's physics calls: LScape.get_landcell of the begin cell,
+    Position.ObjCellID = its id, enter_world(Position(cell, frame)). Returns the object, its placement
+    and whether it is in the world (AddPhysicsObj's success: entered and in a cell); one that is not
+    keeps its PhysicsObj as enter_world left it and no tick steps it (a server's landblock ticks no
+    WorldObject without a PhysicsObj)."""
+    mode = lscape.mode
+    if o.weenie == "object":
+        obj = PhysicsObj.make_object(did, o.id, True, portal_dat)
+    else:
+        obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
+        obj.make_anim_object(did, True, portal_dat)
+    obj.set_object_guid(o.id)
+    obj.set_weenie_obj(WeenieObject.of(world_object_of(o)))
+    obj.set_motion_table_id(0)
+    obj.set_scale_static(mode.scalar(o.scale))
+    obj.state = o.state
+    obj.transient_state = o.transient_state
+    obj.velocity = mode.vec(*o.velocity)
+    cell = lscape.get_landcell(o.begin.cell)
+    entered = False
+    if cell is not None:
+        obj.position.obj_cell_id = cell.id
+        begin = Position.from_record(o.begin, mode)
+        entered = obj.enter_world(Position(cell.id, AFrame(begin.frame.origin, begin.frame.orientation)), lscape, trace) \
+            and obj.cur_cell is not None
+    return obj, _placement_state(obj, SetPositionError.OK if entered else SetPositionError.GeneralFailure), entered
+
+
+def world_object_of(o: OtherMover):
+    """The server's WorldObject for another mover: a Player, a Creature (IsMonster for a monster) or a GenericObject."""
+    from .weenie_object import Creature, GenericObject
+
+    if o.weenie == "player":
+        return Player(guid=o.id, player_killer_status=o.player_killer_status)
+    if o.weenie == "object":
+        return GenericObject(guid=o.id)
+    return Creature(guid=o.id, is_monster=o.weenie == "monster", player_killer_status=o.player_killer_status)
+
+
+def _placement_state(mover: PhysicsObj, result) -> PlacementState:
+    q = mover.position.frame.orientation
+    return PlacementState(
+        result=int(result),
+        cell=int(mover.position.obj_cell_id),
+        origin=_vec(mover.position.frame.origin),
+        orientation=(float(q.w), float(q.x), float(q.y), float(q.z)),
+        cur_cell=mover.cur_cell.id if mover.cur_cell is not None else 0,
+        transient_state=int(mover.transient_state),
+        shadow_cells=tuple(mover.shadow_objects),
+    )
+
+
 @harness("places the mover as the oracle's facade does: WorldObject.AddPhysicsObj's physics calls and enter_world, or PhysicsObj.SetPosition")
 def place_mover(m, mover: PhysicsObj, lscape: LScape, trace) -> PlacementState:
     """The begin position (its cell id first replaced by Position.GetCell when the placement asks, as
@@ -117,17 +175,7 @@ def place_mover(m, mover: PhysicsObj, lscape: LScape, trace) -> PlacementState:
             result = SetPositionError.OK if mover.enter_world(location, lscape, trace) else SetPositionError.GeneralFailure
     else:
         result = mover.set_position(pos, placement.flags, lscape, trace)
-
-    q = mover.position.frame.orientation
-    return PlacementState(
-        result=int(result),
-        cell=int(mover.position.obj_cell_id),
-        origin=_vec(mover.position.frame.origin),
-        orientation=(float(q.w), float(q.x), float(q.y), float(q.z)),
-        cur_cell=mover.cur_cell.id if mover.cur_cell is not None else 0,
-        transient_state=int(mover.transient_state),
-        shadow_cells=tuple(mover.shadow_objects),
-    )
+    return _placement_state(mover, result)
 
 
 @harness("the run's portal DAT: every record acconform/dat.py writes for the scene's objects, mover, Environments and buildings, and each static's did")
@@ -141,6 +189,9 @@ def portal_dat_for(scene: Scene, mode, timer: PhysicsTimer | None = None) -> tup
             records[dat_record.id] = dat_record.data
     for dat_record in written.portal:
         records[dat_record.id] = dat_record.data
+    for other in written.others:
+        for dat_record in other.records:
+            records[dat_record.id] = dat_record.data
     return PortalDat(records, mode, scene.engine_mode == "server", timer), [static.did for static in written.statics]
 
 
@@ -316,34 +367,39 @@ def _run(scene: Scene, mode, trace, world: dat.DatWorld | None) -> Outcome:
     if world is None:
         lscape, portal_dat, dids = scene_world(scene, mode, timer)
         objects, mover, mover_did, mover_id = scene.objects, scene.mover, dat.MOVER_SETUP_ID, MOVER_ID
+        others = tuple(zip(scene.others, (r.did for r in dat.scene_records(scene).others)))
     else:
         lscape, portal_dat = dat_landscape(world, scene.engine_mode == "server", mode, timer)
         objects, dids = world.statics, [s.did for s in world.statics]
         mover, mover_did, mover_id = world.mover, world.mover.did, world.mover.id
+        others = tuple((o, o.did) for o in world.others)
     try:
-        return _run_in(scene, mode, trace, lscape, timer, portal_dat, objects, dids, mover, mover_did, mover_id)
+        return _run_in(scene, mode, trace, lscape, timer, portal_dat, objects, dids, mover, mover_did, mover_id, others)
     finally:
         lscape.release()
 
 
 def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, portal_dat: PortalDat, objects, dids,
-            m, mover_did: int, mover_id: int) -> Outcome:
+            m, mover_did: int, mover_id: int, others=()) -> Outcome:
     """`objects`: the statics (the scene's, or a request's dat.DatStatic records) and `dids` the ids
-    makeObject takes for them; `m` the mover's record (the scene's Mover, or a dat.DatMover)."""
+    makeObject takes for them; `m` the mover's record (the scene's Mover, or a dat.DatMover); `others`
+    (record, Setup id) per other mover (the scene's OtherMover, or a dat.DatOther)."""
     statics = [build_static(record, did, portal_dat, lscape) if record.position.cell & 0xFFFF < ENV_CELL_FIRST else None
                for record, did in zip(objects, dids)]
     mover = build_mover(m, mover_did, mover_id, portal_dat, lscape)
     placement = None
     if m.placement is not None:
         placement = place_mover(m, mover, lscape, trace)
+    movers = [build_other(o, did, portal_dat, lscape, trace) for o, did in others]
+    other_placements = tuple(p for _, p, _ in movers) if others else None
     if scene.ticks is not None:
-        ticks = run_ticks(scene, mover, timer, lscape, trace)
-        return Outcome(placement=placement, ticks=ticks,
+        ticks = run_ticks(scene, mover, timer, lscape, trace, movers)
+        return Outcome(placement=placement, ticks=ticks, other_placements=other_placements,
                        static_cells=tuple(static_cells(record, did, obj, lscape)
                                           for record, did, obj in zip(objects, dids, statics)))
     if placement is not None:
         if mover.cur_cell is None:  # placed in no cell: no transition (the oracle writes the same record)
-            return Outcome(velocity=_vec(mover.velocity), placement=placement,
+            return Outcome(velocity=_vec(mover.velocity), placement=placement, other_placements=other_placements,
                            static_cells=tuple(static_cells(record, did, obj, lscape)
                                               for record, did, obj in zip(objects, dids, statics)))
     old_pos = mover.position.copy()
@@ -377,6 +433,7 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
         static_cells=tuple(static_cells(record, did, obj, lscape)
                            for record, did, obj in zip(objects, dids, statics)),
         placement=placement,
+        other_placements=other_placements,
     )
 
 
@@ -453,6 +510,27 @@ def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) ->
         object_move(mover, step.turn_to_object, True, mode)
     if step.door is not None:
         door(mover.server_objects.get_object_a(step.door.object), step.door.ethereal, lscape)
+
+
+@harness("another mover's tick inputs (scene/8 ticks.steps[].others), as the oracle's facade applies them")
+def apply_other_inputs(obj: PhysicsObj, inputs, mode) -> None:
+    """The setters and the jump, as `apply_inputs` applies the mover's, in OTHER_INPUTS order."""
+    if inputs.state is not None:
+        obj.state = inputs.state
+    if inputs.transient_state is not None:
+        obj.transient_state = inputs.transient_state
+    if inputs.velocity is not None:
+        obj.set_velocity(mode.vec(*inputs.velocity), False)
+    if inputs.local_velocity is not None:
+        obj.set_local_velocity(mode.vec(*inputs.local_velocity), False)
+    if inputs.omega is not None:
+        obj.set_omega(mode.vec(*inputs.omega), False)
+    if inputs.jump is not None:
+        handle_action_jump(obj, mode.vec(*inputs.jump))
+    if inputs.sequence_velocity is not None:
+        obj.part_array.sequence.set_velocity(mode.vec(*inputs.sequence_velocity))
+    if inputs.sequence_omega is not None:
+        obj.part_array.sequence.set_omega(mode.vec(*inputs.sequence_omega))
 
 
 @harness("the physics of ACE's server Door (Door.Open, Door.FinalizeClose), as the oracle's facade makes them")
@@ -599,11 +677,21 @@ def motion_tick_state(mover: PhysicsObj) -> MotionTickState:
     )
 
 
+@harness("reads a PhysicsObj's CollisionTable after a tick, as the oracle's facade does")
+def collision_states(obj: PhysicsObj) -> tuple[CollisionState, ...]:
+    """Its records in the table's order (none: no table yet, as ACE's CollisionTable starts null)."""
+    table = obj.collision_table
+    if table is None:
+        return ()
+    return tuple(CollisionState(int(key), float(record.touched_time), bool(record.ethereal)) for key, record in table.items())
+
+
 @harness("reads the mover's PhysicsObj after a tick, as the oracle's facade does")
-def tick_state(mover: PhysicsObj, updated: bool, motion: bool = False) -> TickState:
+def tick_state(mover: PhysicsObj, updated: bool, motion: bool = False, others=None, collisions: bool = False) -> TickState:
     """`motion`: whether the mover has a motion table (the scene's `mover.motion_table`): then the
     tick also carries its motion layer (`motion_tick_state`), and only then, so a scene without one
-    is answered as before."""
+    is answered as before. `others`: in a scene with other movers, their states (OtherTick): then the
+    tick carries them and the mover's CollisionTable; `collisions`: the table alone (another mover's tick)."""
     q = mover.position.frame.orientation
     return TickState(
         updated=bool(updated),
@@ -624,6 +712,8 @@ def tick_state(mover: PhysicsObj, updated: bool, motion: bool = False) -> TickSt
         jumped_this_frame=bool(mover.jumped_this_frame),
         shadow_cells=tuple(mover.shadow_objects),
         motion=motion_tick_state(mover) if motion else None,
+        collisions=collision_states(mover) if others is not None or collisions else None,
+        others=others,
     )
 
 
@@ -645,30 +735,40 @@ def update_player_position(mover: PhysicsObj, request_pos: Position, location_ce
 
 @anchor(None, "PhysicsObj.cs:update_object", "the tick scene driver: per step the inputs, the clock, then "
         "update_object or the legacy player path (Player.UpdatePlayerPosition's physics calls)")
-def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LScape, trace) -> tuple[TickState, ...]:
-    """Per step: the inputs (the clock still at the previous tick's time), the clock set to the
-    step's time (Ticks.times()), the driver, then the mover read back. An exception in a tick is
-    that tick's error and ends the run, as in the oracle."""
+def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LScape, trace, movers=()) -> tuple[TickState, ...]:
+    """Per step: the inputs (the mover's, then each other mover's in the step's order; the clock still
+    at the previous tick's time), the clock set to the step's time (Ticks.times()), the driver for the
+    mover, then update_object for each other mover in the world, in the order they entered (a server
+    landblock's worldObjects), then every mover read back. `movers`: `build_other`'s (object,
+    placement, entered) per other mover. An exception in a tick is that tick's error and ends the run,
+    as in the oracle."""
     ticks = scene.ticks
     mode = lscape.mode
     states = []
     location_cell = mover.position.obj_cell_id  # where it entered: its WorldObject's Location (SyncLocation)
     motion = getattr(scene.mover, "motion_table", None) is not None
+    by_id = {obj.id: obj for obj, _, _ in movers}
+    stepped = [obj for obj, _, entered in movers if entered]
     for index, (step, time) in enumerate(zip(ticks.steps, ticks.times())):
         if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
             trace.recorder.at_tick(index)
         try:
             apply_inputs(mover, step, mode, lscape)
+            for inputs in step.others:
+                apply_other_inputs(by_id[inputs.id], inputs, mode)
             timer.set(time)
             if ticks.driver == "update_object":
                 updated = mover.update_object(lscape, trace)
             else:
                 updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),
                                                                 location_cell, lscape, trace)
+            others_updated = {obj.id: obj.update_object(lscape, trace) for obj in stepped}
         except Exception as e:
             states.append(TickState(error=verdict(e)))
             break
-        states.append(tick_state(mover, updated, motion))
+        others = tuple(OtherTick(obj.id, tick_state(obj, others_updated.get(obj.id, False), False, None, True))
+                       for obj, _, _ in movers) if movers else None
+        states.append(tick_state(mover, updated, motion, others))
         if trace is not None and trace.recorder is not None:  # tracing: the mover after the tick
             trace.recorder.at_tick(index, states[-1])
     return tuple(states)

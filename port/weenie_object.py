@@ -23,6 +23,7 @@ class Player:
     otherwise (Player.cs); ScatterPos none and not Teleporting: a player walking in the world."""
 
     player_killer_status: PlayerKillerStatus = PlayerKillerStatus.NPK
+    guid: int = 0
     last_contact: bool = True
     teleporting: bool = False
     scatter_pos: object = None
@@ -49,6 +50,22 @@ class Player:
         return self.player_killer_status == PlayerKillerStatus.PKLite
 
 
+@dataclass(slots=True)
+class Creature:
+    guid: int = 0
+    is_monster: bool = False
+    player_killer_status: PlayerKillerStatus = PlayerKillerStatus.NPK
+    teleporting: bool = False
+    scatter_pos: object = None
+
+
+@dataclass(slots=True)
+class GenericObject:
+    guid: int = 0
+    teleporting: bool = False
+    scatter_pos: object = None
+
+
 @dataclass(frozen=True, slots=True)
 class WeenieObject:
     world_object: Player | None = None
@@ -58,9 +75,15 @@ class WeenieObject:
     is_corpse: bool = False
 
     @staticmethod
-    @anchor(None, "WeenieObject.cs:WeenieObject(WorldObject)", "for a Player: IsCreature, IsPlayer")
+    @anchor(None, "WeenieObject.cs:WeenieObject(WorldObject)", "IsCreature, IsPlayer")
+    def of(world_object) -> "WeenieObject":
+        if isinstance(world_object, Player):
+            return WeenieObject(world_object=world_object, is_player=True, is_creature=True)
+        return WeenieObject(world_object=world_object, is_creature=isinstance(world_object, Creature))
+
+    @staticmethod
     def of_player(player: Player) -> "WeenieObject":
-        return WeenieObject(world_object=player, is_player=True, is_creature=True)
+        return WeenieObject.of(player)
 
     @anchor(None, "WeenieObject.cs:IsImpenetrable")
     def is_impenetrable(self) -> bool:

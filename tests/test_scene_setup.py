@@ -13,7 +13,7 @@ import pytest
 from acconform import dat
 from acconform.errors import InvalidScene
 from acconform.flags import PhysicsState
-from acconform.scene import (FORMAT, FORMAT_V6, CylSphereShape, Frame, PartRec, Position, Scene, SetupRec, SphereRec,
+from acconform.scene import (FORMAT_V7 as FORMAT, FORMAT_V6, CylSphereShape, Frame, PartRec, Position, Scene, SetupRec, SphereRec,
                              StaticObject, validate_scene)
 from acconform.strategies.shapes import box
 from tests.oracle.scenes import cell_at, flat, walk

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 12;
+        public const int PackVersion = 13;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -89,7 +89,43 @@ namespace Acconform.Oracle
             public MovementParameters MoveToParams, TurnToHeadingParams, MoveToObjectParams, TurnToObjectParams;
             public uint MoveToObjectId, TurnToObjectId;
             public uint DoorId; public bool DoorEthereal;  // scene/7: a static opens (ethereal) or closes
+            public List<OtherStep> Others;  // scene/8: the other movers' inputs, in the step's order (null: none)
         }
+
+        // scene/8: another mover's inputs for one step: which (its index in `others`), a mask of the present inputs
+        // (bit i: acconform.scene.OTHER_INPUTS[i]) and their values
+        sealed class OtherStep
+        {
+            public int Index;
+            public uint Mask;
+            public uint State, Transient;
+            public Vector3 Velocity, LocalVelocity, Omega, Jump, SequenceVelocity, SequenceOmega;
+        }
+
+        // scene/8: another mover as the scene gives it (OtherMover), its PhysicsObj and WorldObject once made, and
+        // whether it entered the world (AddPhysicsObj's success: only then does a tick step it)
+        sealed class Other
+        {
+            public uint Did, Id;
+            public byte Weenie;  // acconform.scene.WEENIE_CLASSES: 0 player, 1 creature, 2 monster, 3 object
+            public PlayerKillerStatus Pks;
+            public float Scale;
+            public PhysicsState State;
+            public TransientStateFlags Transient;
+            public Vector3 Velocity;
+            public ACE.Server.Physics.Common.Position Begin;
+            public PhysicsObj Obj;
+            public ACE.Server.WorldObjects.WorldObject WorldObject;
+            public bool Entered;
+            public int PlacedResult;
+            public uint PlacedCell, PlacedCurCell, PlacedTransient;
+            public Vector3 PlacedOrigin;
+            public Quaternion PlacedOrientation;
+            public List<uint> PlacedShadowCells;
+        }
+        static readonly List<Other> sceneOthers = new List<Other>();
+        static bool errored;  // the scene ended in an exception (no placements written)
+        static bool othersRead;  // the scene has other movers: the ticks carry them and the CollisionTables
         static bool hasTicks;
         static byte tickDriver;
         static double tickStart;
@@ -264,6 +300,9 @@ namespace Acconform.Oracle
             buildMicros = transitionMicros = 0;
             staticCells = null;
             placed = false;
+            errored = false;
+            othersRead = false;
+            sceneOthers.Clear();
             ticksRun = -1;
             tickStream.SetLength(0);
             var total = Stopwatch.StartNew();
@@ -277,6 +316,7 @@ namespace Acconform.Oracle
                     Place(obj, mover.Item2);
                     oldPos = new ACE.Server.Physics.Common.Position(obj.Position);
                 }
+                EnterOthers();
                 if (hasTicks)
                 {
                     // a tick scene: ACE's per-tick update moves the mover (it enters cells: it leaves them after the scene)
@@ -302,6 +342,7 @@ namespace Acconform.Oracle
                 while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
                 staticCells = null;  // an error outcome carries no registration
                 placed = false;  // nor a placement
+                errored = true;  // nor the other movers' placements
                 ticksRun = -1;  // nor ticks
                 outcome.Position = start;
                 outcome.SetLength(start);
@@ -320,6 +361,7 @@ namespace Acconform.Oracle
             w.Write(transitionMicros);
             WriteStaticCells(w, staticCells);
             WritePlacement(w);
+            WriteOtherPlacements(w, errored);
             w.Write(ticksRun);
             if (ticksRun > 0) w.Write(tickStream.GetBuffer(), 0, (int)tickStream.Length);
         }
@@ -389,13 +431,32 @@ namespace Acconform.Oracle
                 if ((s.Mask & 32768) != 0) s.TurnToHeadingParams = Params(r);
                 if ((s.Mask & 65536) != 0) { s.TurnToObjectId = r.ReadUInt32(); s.TurnToObjectParams = Params(r); }
                 if ((s.Mask & 131072) != 0) { s.DoorId = r.ReadUInt32(); s.DoorEthereal = r.ReadByte() != 0; }
+                var nothers = r.ReadInt32();
+                if (nothers > 0)
+                {
+                    s.Others = new List<OtherStep>(nothers);
+                    for (var k = 0; k < nothers; k++)
+                    {
+                        var o = new OtherStep { Index = r.ReadInt32(), Mask = r.ReadUInt32() };
+                        if ((o.Mask & 1) != 0) o.State = r.ReadUInt32();
+                        if ((o.Mask & 2) != 0) o.Transient = r.ReadUInt32();
+                        if ((o.Mask & 4) != 0) o.Velocity = V3(r);
+                        if ((o.Mask & 8) != 0) o.LocalVelocity = V3(r);
+                        if ((o.Mask & 16) != 0) o.Omega = V3(r);
+                        if ((o.Mask & 32) != 0) o.Jump = V3(r);
+                        if ((o.Mask & 64) != 0) o.SequenceVelocity = V3(r);
+                        if ((o.Mask & 128) != 0) o.SequenceOmega = V3(r);
+                        s.Others.Add(o);
+                    }
+                }
                 tickSteps.Add(s);
             }
         }
 
-        /// <summary>Per step: the inputs (the clock still at the previous tick's time), the clock set to the step's
-        /// time, the driver, then the mover read back. An exception ACE throws is that tick's error and ends the
-        /// scene.</summary>
+        /// <summary>Per step: the inputs (the mover's, then each other mover's in the step's order; the clock still at
+        /// the previous tick's time), the clock set to the step's time, the driver for the mover, then update_object for
+        /// each other mover in the world in the order they entered (a server landblock's worldObjects), then every mover
+        /// read back. An exception ACE throws is that tick's error and ends the scene.</summary>
         static void RunTicks(PhysicsObj obj)
         {
             ticksRun = 0;
@@ -406,8 +467,13 @@ namespace Acconform.Oracle
                 try
                 {
                     ApplyInputs(obj, step);
+                    if (step.Others != null)
+                        foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o);
                     SetClock(step.Time);
                     updated = tickDriver == 0 ? obj.update_object() : UpdatePlayerPosition(obj, step.RequestPos);
+                    othersUpdated.Clear();
+                    foreach (var o in sceneOthers)
+                        othersUpdated.Add(o.Entered && o.Obj.update_object());
                 }
                 catch (Exception e)
                 {
@@ -425,6 +491,21 @@ namespace Acconform.Oracle
             TickStarted?.Invoke(-1);  // the ticks are over
         }
 
+        static readonly List<bool> othersUpdated = new List<bool>();
+
+        static void ApplyOtherInputs(Other other, OtherStep s)
+        {
+            var obj = other.Obj;
+            if ((s.Mask & 1) != 0) obj.State = (PhysicsState)s.State;
+            if ((s.Mask & 2) != 0) obj.TransientState = (TransientStateFlags)s.Transient;
+            if ((s.Mask & 4) != 0) obj.set_velocity(s.Velocity, false);
+            if ((s.Mask & 8) != 0) obj.set_local_velocity(s.LocalVelocity, false);
+            if ((s.Mask & 16) != 0) obj.set_omega(s.Omega, false);
+            if ((s.Mask & 32) != 0) Jump(obj, (ACE.Server.WorldObjects.Player)other.WorldObject, s.Jump);
+            if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
+            if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
+        }
+
         static void ApplyInputs(PhysicsObj obj, TickStep s)
         {
             if ((s.Mask & 1) != 0) obj.State = (PhysicsState)s.State;
@@ -432,7 +513,7 @@ namespace Acconform.Oracle
             if ((s.Mask & 4) != 0) obj.set_velocity(s.Velocity, false);
             if ((s.Mask & 8) != 0) obj.set_local_velocity(s.LocalVelocity, false);
             if ((s.Mask & 16) != 0) obj.set_omega(s.Omega, false);
-            if ((s.Mask & 32) != 0) Jump(obj, s.Jump);
+            if ((s.Mask & 32) != 0) Jump(obj, moverPlayer, s.Jump);
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
             if ((s.Mask & 512) != 0) MoveToState(obj, s.Motion);
@@ -558,9 +639,9 @@ namespace Acconform.Oracle
         /// RemoveLinkAnimations, MotionInterpreter.PendingMotions.Clear(), IsAnimating. A mover without a motion table has
         /// no MovementManager: IsMovingOrAnimating reaching it (every earlier term false) throws NullReferenceException,
         /// which counts as not moving, and PendingMotions has no interpreter to clear (docs/oracle.md's audit table).</summary>
-        static void Jump(PhysicsObj obj, Vector3 velocity)
+        static void Jump(PhysicsObj obj, ACE.Server.WorldObjects.Player player, Vector3 velocity)
         {
-            if (PlayerFastTick())
+            if (PlayerFastTick(player))
             {
                 bool moving;
                 try { moving = obj.IsMovingOrAnimating; }
@@ -582,12 +663,12 @@ namespace Acconform.Oracle
 
         /// <summary>The Player's FastTick, read by reflection: ACE has it since 2020, and a build of before (ACE of 2019,
         /// whose tick scenes the oracle never runs: its physics clock is wall time) must still compile the facade.</summary>
-        static bool PlayerFastTick()
+        static bool PlayerFastTick(ACE.Server.WorldObjects.Player player)
         {
             var p = typeof(ACE.Server.WorldObjects.Player).GetProperty("FastTick");
             if (p == null)
                 throw new MissingMemberException("ACE.Server.WorldObjects.Player", "FastTick");
-            return (bool)p.GetValue(moverPlayer);
+            return (bool)p.GetValue(player);
         }
 
         /// <summary>The physics calls of Player.UpdatePlayerPosition for a requested position that moves (the legacy,
@@ -617,35 +698,78 @@ namespace Acconform.Oracle
         /// A build with neither constructor gets the uninitialized Player with LastContact alone.</summary>
         static ACE.Server.WorldObjects.Player MakePlayer(uint moverId)
         {
-            var t = typeof(ACE.Server.WorldObjects.Player);
+            bool fromBiota;
+            var player = (ACE.Server.WorldObjects.Player)MakeWorldObject(typeof(ACE.Server.WorldObjects.Player),
+                                                                         typeof(ACE.Server.WorldObjects.Creature), "Creature", moverId, out fromBiota);
+            serverPlayer = fromBiota;
+            player.LastContact = true;
+            return player;
+        }
+
+        /// <summary>Another mover's WorldObject (scene/8), made as MakePlayer makes the mover's: a Player, a Creature
+        /// (IsMonster set for a monster, as Creature.SetMonsterState caches it) or a GenericObject, with its id, and a
+        /// creature's PlayerKillerStatus set before its WeenieObject copies it.</summary>
+        static ACE.Server.WorldObjects.WorldObject MakeWorldObject(Other o)
+        {
+            bool fromBiota;
+            if (o.Weenie == 0)
+            {
+                var player = (ACE.Server.WorldObjects.Player)MakeWorldObject(typeof(ACE.Server.WorldObjects.Player),
+                                                                             typeof(ACE.Server.WorldObjects.Creature), "Creature", o.Id, out fromBiota);
+                player.LastContact = true;
+                player.PlayerKillerStatus = o.Pks;
+                return player;
+            }
+            if (o.Weenie == 3)
+                return MakeWorldObject(typeof(ACE.Server.WorldObjects.GenericObject), typeof(ACE.Server.WorldObjects.GenericObject),
+                                       "Generic", o.Id, out fromBiota);
+            var creature = (ACE.Server.WorldObjects.Creature)MakeWorldObject(typeof(ACE.Server.WorldObjects.Creature),
+                                                                             typeof(ACE.Server.WorldObjects.Creature), "Creature", o.Id, out fromBiota);
+            creature.IsMonster = o.Weenie == 2;
+            creature.PlayerKillerStatus = o.Pks;
+            return creature;
+        }
+
+        /// <summary>A WorldObject of type `t` with the id `id`. A build whose type has a constructor without arguments
+        /// (the stand-ins) makes it so, and its Guid (a get-only auto-property: real ACE's constructors set it from the
+        /// Biota or the ObjectGuid they take) is set through its backing field. Otherwise (ACE's own build) an
+        /// uninitialized object of `t` on which `biotaCtorOwner`'s constructor taking a Biota runs with a fresh Biota (the
+        /// id, WeenieType `weenieType`, weenie 1, no properties), as ACE's Player(Biota, ...) runs Creature's before its
+        /// own body (which reads the authentication database); then `Invincible` (see below).</summary>
+        static ACE.Server.WorldObjects.WorldObject MakeWorldObject(Type t, Type biotaCtorOwner, string weenieType, uint id, out bool fromBiota)
+        {
             var ctor = t.GetConstructor(AnyInstance, null, Type.EmptyTypes, null);
-            serverPlayer = false;
+            fromBiota = false;
             if (ctor != null)
-                return (ACE.Server.WorldObjects.Player)ctor.Invoke(null);
-            var player = (ACE.Server.WorldObjects.Player)FormatterServices.GetUninitializedObject(t);
-            ConstructorInfo creatureCtor = null;
-            foreach (var c in typeof(ACE.Server.WorldObjects.Creature).GetConstructors(AnyInstance))
-                if (c.GetParameters().Length == 1 && c.GetParameters()[0].ParameterType.Name == "Biota") creatureCtor = c;
-            if (creatureCtor != null)
+            {
+                var made = (ACE.Server.WorldObjects.WorldObject)ctor.Invoke(null);
+                var guid = typeof(ACE.Server.WorldObjects.WorldObject).GetField("<Guid>k__BackingField", AnyInstance);
+                if (guid != null) guid.SetValue(made, new ObjectGuid(id));
+                return made;
+            }
+            var wo = (ACE.Server.WorldObjects.WorldObject)FormatterServices.GetUninitializedObject(t);
+            ConstructorInfo biotaCtor = null;
+            foreach (var c in biotaCtorOwner.GetConstructors(AnyInstance))
+                if (c.GetParameters().Length == 1 && c.GetParameters()[0].ParameterType.Name == "Biota") biotaCtor = c;
+            if (biotaCtor != null)
             {
                 PrepareServerPlayer();
-                var biotaType = creatureCtor.GetParameters()[0].ParameterType;
+                var biotaType = biotaCtor.GetParameters()[0].ParameterType;
                 var biota = Activator.CreateInstance(biotaType);
-                Need(biotaType.GetProperty("Id"), "Id").SetValue(biota, moverId);
-                var weenieType = Need(biotaType.GetProperty("WeenieType"), "WeenieType");
-                weenieType.SetValue(biota, Enum.Parse(weenieType.PropertyType, "Creature"));
+                Need(biotaType.GetProperty("Id"), "Id").SetValue(biota, id);
+                var wt = Need(biotaType.GetProperty("WeenieType"), "WeenieType");
+                wt.SetValue(biota, Enum.Parse(wt.PropertyType, weenieType));
                 Need(biotaType.GetProperty("WeenieClassId"), "WeenieClassId").SetValue(biota, 1u);
                 var ints = Need(biotaType.GetProperty("PropertiesInt"), "PropertiesInt");
                 ints.SetValue(biota, Activator.CreateInstance(typeof(Dictionary<,>).MakeGenericType(ints.PropertyType.GetGenericArguments())));
-                creatureCtor.Invoke(player, new[] { biota });
+                biotaCtor.Invoke(wo, new[] { biota });
                 // immortal, as a sentinel's @neversaydie makes a server's Player: an environment collision fast enough to
                 // hurt runs HandleFallingDamage, whose TakeDamage_Falling then returns at once (Health, chat and death
                 // reach the Player's Session, which this Player has none of; none of them is physics)
-                Need(typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("Invincible"), "Invincible").SetValue(player, true);
-                serverPlayer = true;
+                Need(typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("Invincible"), "Invincible").SetValue(wo, true);
+                fromBiota = true;
             }
-            player.LastContact = true;
-            return player;
+            return wo;
         }
 
         /// <summary>A member the full build's Player needs (MakePlayer and the two below), or a MissingMemberException naming it.</summary>
@@ -726,11 +850,44 @@ namespace Acconform.Oracle
             location.SetValue(player, locationCtor.Invoke(new object[] { begin.ObjCellID, begin.Frame.Origin, begin.Frame.Orientation }));
         }
 
-        /// <summary>byte 0, then the TickState fields (acconform.outcome.TickState, in order).</summary>
+        /// <summary>byte 0, then the TickState fields (acconform.outcome.TickState, in order), then byte 0, or in a scene
+        /// with other movers byte 1, the mover's CollisionTable, int n and per other mover its id and its TickState's
+        /// fields with its CollisionTable (no motion layer).</summary>
         static void WriteTick(PhysicsObj obj, bool updated)
         {
             var w = tickWriter;
             w.Write((byte)0);
+            WriteState(w, obj, updated, moverMotion);
+            if (!othersRead) { w.Write((byte)0); return; }
+            w.Write((byte)1);
+            WriteCollisions(w, obj);
+            w.Write(sceneOthers.Count);
+            for (var k = 0; k < sceneOthers.Count; k++)
+            {
+                var o = sceneOthers[k];
+                w.Write(o.Id);
+                WriteState(w, o.Obj, othersUpdated[k], false);
+                WriteCollisions(w, o.Obj);
+            }
+        }
+
+        /// <summary>int n, then per record of the CollisionTable in its order: the object's id, TouchedTime, Ethereal
+        /// (n 0: no table yet).</summary>
+        static void WriteCollisions(BinaryWriter w, PhysicsObj obj)
+        {
+            var table = obj.CollisionTable;
+            if (table == null) { w.Write(0); return; }
+            w.Write(table.Count);
+            foreach (var kv in table)
+            {
+                w.Write(kv.Key);
+                w.Write(kv.Value.TouchedTime);
+                w.Write((byte)(kv.Value.Ethereal ? 1 : 0));
+            }
+        }
+
+        static void WriteState(BinaryWriter w, PhysicsObj obj, bool updated, bool motion)
+        {
             w.Write((byte)(updated ? 1 : 0));
             w.Write(obj.UpdateTime);
             w.Write(obj.Position.ObjCellID);
@@ -751,7 +908,7 @@ namespace Acconform.Oracle
             w.Write((byte)(obj.JumpedThisFrame ? 1 : 0));
             w.Write(obj.ShadowObjects.Count);
             foreach (var id in obj.ShadowObjects.Keys) w.Write(id);
-            WriteMotion(w, obj);
+            WriteMotion(w, obj, motion);
         }
 
         /// <summary>byte 0 (the mover has no motion table), or 1 then the mover's motion layer as it stands
@@ -760,9 +917,9 @@ namespace Acconform.Oracle
         /// RawState's CurrentStyle, ForwardCommand, ForwardSpeed, SideStepCommand, SideStepSpeed, TurnCommand,
         /// TurnSpeed (zeros when none); byte (1: the Sequence has a CurrAnim with an Anim) and that Anim's ID; the
         /// Sequence's FrameNumber, Velocity and Omega; byte (1: a MoveToManager) and its MovementType; IsMovingTo().</summary>
-        static void WriteMotion(BinaryWriter w, PhysicsObj obj)
+        static void WriteMotion(BinaryWriter w, PhysicsObj obj, bool motion)
         {
-            if (!moverMotion) { w.Write((byte)0); return; }
+            if (!motion) { w.Write((byte)0); return; }
             w.Write((byte)1);
             var manager = obj.MovementManager;
             var minterp = manager != null ? manager.MotionInterpreter : null;
@@ -919,6 +1076,13 @@ namespace Acconform.Oracle
                 placedMover = null;
                 mover.remove_shadows_from_cells();
                 mover.leave_cell(false);
+            }
+            foreach (var o in sceneOthers)
+            {
+                if (o.Obj == null) continue;
+                o.Obj.remove_shadows_from_cells();
+                o.Obj.leave_cell(false);
+                o.Obj = null;
             }
             foreach (var obj in sceneStatics)
             {
@@ -1358,7 +1522,93 @@ namespace Acconform.Oracle
                 obj.CurCell = LScape.get_landcell(begin.ObjCellID);
             }
             // with a placement, Position and CurCell stay as makeObject left them: Place places the mover
+            ReadOthers(r);
             return Tuple.Create(obj, new ACE.Server.Physics.Common.Position(begin), end);
+        }
+
+        /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
+        /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position. They are made and enter the
+        /// world after the mover's placement (EnterOthers).</summary>
+        static void ReadOthers(BinaryReader r)
+        {
+            sceneOthers.Clear();
+            var n = r.ReadInt32();
+            othersRead = n > 0;
+            for (var i = 0; i < n; i++)
+            {
+                var nrec = r.ReadInt32();
+                for (var k = 0; k < nrec; k++) ReadRecord(r);
+                sceneOthers.Add(new Other
+                {
+                    Did = r.ReadUInt32(), Id = r.ReadUInt32(), Weenie = r.ReadByte(), Pks = (PlayerKillerStatus)r.ReadUInt32(),
+                    Scale = r.ReadSingle(), State = (PhysicsState)r.ReadUInt32(), Transient = (TransientStateFlags)r.ReadUInt32(),
+                    Velocity = V3(r), Begin = Pos(r),
+                });
+            }
+        }
+
+        /// <summary>Each other mover, in scene order, made as WorldObject.InitPhysicsObj makes its WorldObject's
+        /// PhysicsObj (a creature's by new PhysicsObj() and makeAnimObject(setup, true), a GenericObject's by
+        /// makeObject(setup, id, true); set_object_guid, set_weenie_obj(new WeenieObject(the WorldObject)),
+        /// SetMotionTableID(0), SetScaleStatic, State), with the scene's TransientState and Velocity, then entered as
+        /// WorldObject.AddPhysicsObj enters it: LScape.get_landcell of its begin cell, Position.ObjCellID = that cell's
+        /// id, enter_world(Position(cell, frame)); it is in the world when that succeeded and left it in a cell.</summary>
+        static void EnterOthers()
+        {
+            foreach (var o in sceneOthers)
+            {
+                PhysicsObj obj;
+                if (o.Weenie == 3)
+                    obj = PhysicsObj.makeObject(o.Did, o.Id, true);
+                else
+                {
+                    obj = new PhysicsObj();
+                    obj.makeAnimObject(o.Did, true);
+                }
+                o.Obj = obj;
+                obj.set_object_guid(new ObjectGuid(o.Id));
+                o.WorldObject = MakeWorldObject(o);
+                obj.set_weenie_obj(new WeenieObject(o.WorldObject));
+                obj.SetMotionTableID(0);
+                obj.SetScaleStatic(o.Scale);
+                obj.State = o.State;
+                obj.TransientState = o.Transient;
+                obj.Velocity = o.Velocity;
+                var cell = LScape.get_landcell(o.Begin.ObjCellID);
+                o.Entered = false;
+                if (cell != null)
+                {
+                    obj.Position.ObjCellID = cell.ID;
+                    var location = new ACE.Server.Physics.Common.Position(cell.ID, new AFrame(o.Begin.Frame.Origin, o.Begin.Frame.Orientation));
+                    o.Entered = obj.enter_world(location) && obj.CurCell != null;
+                }
+                o.PlacedResult = (int)(o.Entered ? SetPositionError.OK : SetPositionError.GeneralFailure);
+                o.PlacedCell = obj.Position.ObjCellID;
+                o.PlacedOrigin = obj.Position.Frame.Origin;
+                o.PlacedOrientation = obj.Position.Frame.Orientation;
+                o.PlacedCurCell = obj.CurCell != null ? obj.CurCell.ID : 0u;
+                o.PlacedTransient = (uint)obj.TransientState;
+                o.PlacedShadowCells = new List<uint>(obj.ShadowObjects.Keys);
+            }
+        }
+
+        /// <summary>int -1 (no other movers, or an error), or n and per other mover its placement as WritePlacement
+        /// writes the mover's (without the leading byte).</summary>
+        static void WriteOtherPlacements(BinaryWriter w, bool error)
+        {
+            if (error || !othersRead) { w.Write(-1); return; }
+            w.Write(sceneOthers.Count);
+            foreach (var o in sceneOthers)
+            {
+                w.Write(o.PlacedResult);
+                w.Write(o.PlacedCell);
+                W3(w, o.PlacedOrigin);
+                w.Write(o.PlacedOrientation.W); w.Write(o.PlacedOrientation.X); w.Write(o.PlacedOrientation.Y); w.Write(o.PlacedOrientation.Z);
+                w.Write(o.PlacedCurCell);
+                w.Write(o.PlacedTransient);
+                w.Write(o.PlacedShadowCells.Count);
+                foreach (var id in o.PlacedShadowCells) w.Write(id);
+            }
         }
 
         // ------------------------------------------------------------------ transition

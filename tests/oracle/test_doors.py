@@ -17,7 +17,7 @@ from acconform.errors import InvalidScene
 from acconform.flags import PhysicsState
 from acconform.oracle.pack import PACK_VERSION, pack_scene
 from acconform.protocol import scene_features
-from acconform.scene import FORMAT, FORMAT_V6, TICK_INPUTS, Scene
+from acconform.scene import FORMAT_V7 as FORMAT, FORMAT_V6, TICK_INPUTS, Scene
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from oracle.door_scenes import DOOR, scenes  # noqa: E402

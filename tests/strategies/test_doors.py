@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from acconform.scene import FORMAT, validate_scene
+from acconform.scene import FORMAT_V7 as FORMAT, validate_scene
 
 N = 120
 
