@@ -44,15 +44,15 @@ import time
 from collections.abc import Callable
 
 from . import __version__, deep
-from .codec import Reader, compact, dumps_compact, loads_answer, write_f32, write_id
-from .dat import DatMover, DatRecord, DatStatic, DatWorld, dat_world
+from .codec import Reader, compact, dumps_compact, loads_answer, write_f32, write_id, write_vec
+from .dat import DatMover, DatOther, DatRecord, DatStatic, DatWorld, dat_world
 from .errors import AcconformError, InvalidScene
 from .flags import PLAYER_KILLER_STATUS_NPK, PhysicsState, PlayerKillerStatus, TransientState, flag_names
 from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
-from .scene import ContactPlane, Placement, Position, Scene, mover_start_json
+from .scene import WEENIE_CLASSES, ContactPlane, Placement, Position, Scene, mover_start_json
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
@@ -114,6 +114,12 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
               "server Door (Open: PhysicsState.Ethereal set on its State; FinalizeClose: cleared, then "
               "ethereal_check_for_collisions sets it again when an object overlaps the door, a default server's "
               "allow_door_hold) (scene/7: ticks.steps[].door)"),
+    "objects.moving": (lambda s: bool(s.others),
+                       "other moving objects (scene/8: others, ticks.steps[].others): each a server WorldObject (a "
+                       "Player, a Creature that is or is not a monster, or a GenericObject) with its own id, Setup, "
+                       "state and inputs, entered into the world after the mover (enter_world) and stepped by "
+                       "update_object after it each tick, in the order they entered; answered with their placements "
+                       "and, per tick, their states and every mover's CollisionTable (outcome/6)"),
 }
 
 
@@ -153,7 +159,17 @@ def dat_json(world: DatWorld) -> dict:
             "portal": [_record_json(r) for r in world.portal],
             "statics": [{"id": write_id(s.id), "did": write_id(s.did), "position": s.position.to_json(),
                          "state": flag_names(PhysicsState, s.state), "scale": write_f32(s.scale)} for s in world.statics],
-            "mover": mover}
+            "mover": mover,
+            **({"others": [_other_json(o) for o in world.others]} if world.others else {})}
+
+
+def _other_json(o: DatOther) -> dict:
+    d = {"id": write_id(o.id), "did": write_id(o.did), "weenie": o.weenie, "scale": write_f32(o.scale),
+         "state": flag_names(PhysicsState, o.state), "transient_state": flag_names(TransientState, o.transient_state),
+         "velocity": write_vec(o.velocity), "begin": o.begin.to_json()}
+    if o.player_killer_status != PLAYER_KILLER_STATUS_NPK:
+        d["player_killer_status"] = PlayerKillerStatus(o.player_killer_status).name
+    return d
 
 
 def _records_from_json(r: Reader, dat: str) -> tuple[DatRecord, ...]:
@@ -178,7 +194,7 @@ def _records_from_json(r: Reader, dat: str) -> tuple[DatRecord, ...]:
 
 def dat_from_json(doc, path: str = "dat") -> DatWorld:
     """A request's ``"dat"`` read back; InvalidScene naming the field otherwise."""
-    r = Reader(doc, path).obj({"format", "land_height_table", "cell", "portal", "statics", "mover"})
+    r = Reader(doc, path).obj({"format", "land_height_table", "cell", "portal", "statics", "mover", "others"})
     if r["format"].value != DAT_FORMAT:
         r["format"].fail(f"{r['format'].value!r}; this acconform reads {DAT_FORMAT!r}")
     statics = []
@@ -197,9 +213,20 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                      m["sliding_normal"].vec3() if m.has("sliding_normal") else None,
                      Placement.from_json(m["placement"]) if m.has("placement") else None,
                      m["motion_table_id"].id_() if m.given("motion_table_id") else 0, status)
+    others = []
+    for o in (r["others"].list() if r.given("others") else ()):
+        o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status"})
+        weenie = o["weenie"].str_()
+        if weenie not in WEENIE_CLASSES:
+            o["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
+        others.append(DatOther(o["id"].id_(), o["did"].id_(), weenie, o["scale"].f32(), o["state"].flags(PhysicsState),
+                               o["transient_state"].flags(TransientState), o["velocity"].vec3(),
+                               Position.from_json(o["begin"]),
+                               o["player_killer_status"].enum_(PlayerKillerStatus) if o.given("player_killer_status")
+                               else PLAYER_KILLER_STATUS_NPK))
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
-                    tuple(statics), mover)
+                    tuple(statics), mover, tuple(others))
 
 
 def scene_features(scene: Scene, names=FEATURES) -> list[str]:
@@ -310,7 +337,8 @@ class Implementation:
         features = self.hello["features"]
         return (tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in features else ())
                 + (("motion",) if "ticks" in features and "mover.motion" in features else ())
-                + (("doors",) if "ticks" in features and "doors" in features else ()))
+                + (("doors",) if "ticks" in features and "doors" in features else ())
+                + (("movers",) if "ticks" in features and "objects.moving" in features else ()))
 
     @property
     def runs_every_scene(self) -> bool:
