@@ -76,7 +76,7 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
     obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(obj_id)
-    obj.set_weenie_obj(WeenieObject.of_player(Player(player_killer_status=m.player_killer_status)))
+    obj.set_weenie_obj(WeenieObject.of(Player(guid=obj_id, player_killer_status=m.player_killer_status)))
     obj.set_motion_table_id(m.motion_table_id)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
