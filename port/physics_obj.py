@@ -1,4 +1,4 @@
-"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_particle_shadow_to_cell, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, report_object_collision_end, get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_particle_shadow_to_cell, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, track_object_collision, report_collision_end, report_object_collision_end, report_environment_collision, report_object_collision, build_collision_profile (both), get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
 The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
 record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
@@ -9,9 +9,11 @@ back (walkable checks, StopVelocity's set_velocity), and a static's FindObjColli
 through the PartArray, or the Setup's spheres / cylspheres). The mover's PartArray is the
 harness's (run.py, as the oracle builds it). A static's WeenieObj is ACE's WeenieObject.DummyObject (no
 player, creature or PK flags), which is what a PhysicsObj made without a WorldObject carries, and its
-DatObject is true (as Landblock.init_static_objs sets it); the mover is a player's PhysicsObj
-(WorldObject.InitPhysicsObj: the WeenieObject of its Player, port/weenie_object.py), DatObject false,
-entering the world through enter_world or SetPosition.
+DatObject is true (as Landblock.init_static_objs sets it); a mover is a WorldObject's PhysicsObj
+(WorldObject.InitPhysicsObj: the WeenieObject of its Player, Creature or plain WorldObject,
+port/weenie_object.py and port/world_objects/), DatObject false, entering the world through enter_world
+or SetPosition. Two movers touching report to each other's WorldObjects (report_object_collision) and
+keep each other in their CollisionTable, a .NET Dictionary whose order report_collision_end walks.
 
 The tick (a tick scene's steps): update_object cuts the time since UpdateTime (the run's
 PhysicsTimer, port/physics_timer.py, for ACE's static clock) into sub-steps of UpdateObjectInternal:
@@ -45,7 +47,11 @@ from .errors import ArgumentException
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
+from .transition.cell_array import NetDictionary
 from .weenie_object import DUMMY_OBJECT, WeenieObject
+from .world_objects import Player
+from .env_collision_profile import EnvCollisionProfile
+from .obj_collision_profile import ObjCollisionProfile
 from .anim_hook import anim_hook_execute
 
 # PhysicsEngine.cs TransientStateFlags.StationaryComplete = StationaryStuck | StationaryStop | StationaryFall
@@ -115,7 +121,9 @@ class PhysicsObj:
     omega: Vector3 | None = None
     cur_landblock: object = None  # port.land.landblock.Landblock
     colliding_with_environment: bool = False
-    collision_table: dict | None = None  # object id -> CollisionRecord's Ethereal (TouchedTime: see report_collision_end)
+    # CollisionTable: object id -> CollisionRecord, a .NET Dictionary (report_collision_end walks it in its
+    # entry order, which a removal's free slot changes); ACE's constructor makes it, so it is never null
+    collision_table: NetDictionary = field(default_factory=NetDictionary)
     entering_world: bool = False
     elasticity: object = DEFAULT_ELASTICITY
     friction: object = DEFAULT_FRICTION
@@ -738,9 +746,9 @@ class PhysicsObj:
             return self.report_environment_collision(prev_has_contact)
 
         if self.collision_table is None:
-            self.collision_table = {}
+            self.collision_table = NetDictionary()
 
-        self.collision_table[obj.id] = CollisionRecord(self.timer.current_time, bool(obj.state & PhysicsState.Ethereal))
+        self.collision_table.set(obj.id, CollisionRecord(self.timer.current_time, bool(obj.state & PhysicsState.Ethereal)))
 
         return self.report_object_collision(obj, prev_has_contact)
 
@@ -760,26 +768,38 @@ class PhysicsObj:
                 ends.append(collision_id)
 
         for end in ends:
-            del self.collision_table[end]
+            self.collision_table.remove(end)
             self.report_object_collision_end(end)
 
     @anchor("CPhysicsObj::report_object_collision_end", "PhysicsObj.cs:report_object_collision_end")
     def report_object_collision_end(self, object_id: int) -> bool:
-        """ObjMaint is never null (the constructor makes one): whether ServerObjectManager finds the
-        object or not, the only calls left are WeenieObject.DoCollisionEnd: a static's returns at once
-        (DummyObject, no WorldObject) and the mover's Player is on no server landblock
-        (WorldObject.CurrentLandblock), so it finds no object to tell."""
+        """ObjMaint is never null (the constructor makes one): the object is looked up in ServerObjectManager
+        (the run's `server_objects`; none: an empty table) and, found and not reporting collisions as the
+        environment, each side that reports collisions is told through WeenieObject.DoCollisionEnd."""
+        collision = self.server_objects.get_object_a(object_id) if self.server_objects is not None else None
+        if collision is not None:
+            if not collision.state & PhysicsState.ReportCollisionsAsEnvironment:
+                if self.state & PhysicsState.ReportCollisions and self.weenie_obj is not None:
+                    self.weenie_obj.do_collision_end(object_id)
+
+                if collision.state & PhysicsState.ReportCollisions and collision.weenie_obj is not None:
+                    collision.weenie_obj.do_collision_end(self.id)
         return True
 
     @anchor("CPhysicsObj::report_environment_collision", "PhysicsObj.cs:report_environment_collision")
     def report_environment_collision(self, prev_has_contact: bool) -> bool:
-        """WeenieObj.DoCollision(EnvCollisionProfile): DummyObject returns at once (no WorldObject); the
-        mover's Player runs HandleFallingDamage, which changes only its Health."""
+        """WeenieObj.DoCollision(EnvCollisionProfile): DummyObject returns at once (no WorldObject); a
+        Player runs HandleFallingDamage, which changes only its Health; any other WorldObject its
+        OnCollideEnvironment."""
         if self.colliding_with_environment:
             return False
 
         result = False
         if self.state & PhysicsState.ReportCollisions and self.weenie_obj is not None:
+            collision = EnvCollisionProfile()
+            collision.velocity = self.velocity
+            collision.set_me_in_contact(prev_has_contact)
+            self.weenie_obj.do_collision_env(collision, self.id, self)
             result = True
         self.colliding_with_environment = True
         if self.state & PhysicsState.Missile:
@@ -788,24 +808,61 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::report_object_collision", "PhysicsObj.cs:report_object_collision")
     def report_object_collision(self, obj, prev_has_contact: bool) -> bool:
-        """The collision profiles and WeenieObj.DoCollision(ObjCollisionProfile): it returns at once
-        unless both objects have a WorldObject, and a scene's statics have none (DummyObject)."""
+        """Each side that reports collisions gets its profile and WeenieObj.DoCollision(ObjCollisionProfile),
+        whose answer ACE drops. Both calls pass `obj` as the target (ACE's custom parameters): the first
+        tells this object's WorldObject it touched obj's; the second asks obj's WorldObject about itself,
+        which DoCollision's "no collision with self" drops. A static's DummyObject (no WorldObject) drops
+        both."""
         if obj.state & PhysicsState.ReportCollisionsAsEnvironment:
             return self.report_environment_collision(prev_has_contact)
+
+        velocity_collide = self.velocity - obj.velocity
 
         collided = False
 
         if not obj.state & PhysicsState.IgnoreCollisions:
             if self.state & PhysicsState.ReportCollisions and self.weenie_obj is not None:
+                profile = self.build_collision_profile(obj, prev_has_contact, velocity_collide)
+
+                self.weenie_obj.do_collision_obj(profile, self.id, obj)
+
                 collided = True
 
             if self.state & PhysicsState.Missile:
                 self.state &= ~(PhysicsState.Missile | PhysicsState.AlignPath | PhysicsState.PathClipped)
 
         if obj.state & PhysicsState.ReportCollisions and not self.state & PhysicsState.IgnoreCollisions and obj.weenie_obj is not None:
+            # acclient might have a bug here, prev_has_contact and missile state params swapped? (ACE)
+            profile = obj.build_collision_profile(self, bool(obj.transient_state & TransientState.Contact), velocity_collide)
+
+            # ObjID and obj are custom parameters added by ace (ACE)
+            obj.weenie_obj.do_collision_obj(profile, self.id, obj)
+
             collided = True
 
         return collided
+
+    @anchor("CPhysicsObj::build_collision_profile", "PhysicsObj.cs:build_collision_profile(PhysicsObj, bool, Vector3)")
+    def build_collision_profile(self, obj, am_i_in_contact: bool, velocity_collide):
+        if self.state & PhysicsState.Missile:
+            raise NotImplementedError("build_collision_profile for a missile (AtkCollisionProfile, Position.DetermineQuadrant) "
+                                      "is not ported")
+        else:
+            return self.build_collision_profile_for(obj, velocity_collide, am_i_in_contact,
+                                                    bool(obj.state & PhysicsState.Missile),
+                                                    bool(obj.transient_state & TransientState.Contact))
+
+    @anchor("CPhysicsObj::build_collision_profile",
+            "PhysicsObj.cs:build_collision_profile(PhysicsObj, Vector3, bool, bool, bool)", "the overload the first calls")
+    def build_collision_profile_for(self, obj, velocity, am_i_in_contact: bool, obj_is_missile: bool, obj_has_contact: bool):
+        if self.weenie_obj is None:
+            return None
+
+        profile = ObjCollisionProfile.create(obj.id, velocity, obj_is_missile, obj_has_contact, am_i_in_contact)
+
+        self.weenie_obj.inq_collision_profile(profile)
+
+        return profile
 
     @anchor("CPhysicsObj::calc_cross_cells", "PhysicsObj.cs:calc_cross_cells")
     def calc_cross_cells(self, lscape) -> None:
@@ -1421,8 +1478,6 @@ class PhysicsObj:
 
         if self.cur_cell is None or self.cur_cell.id != self.position.obj_cell_id:
             new_cell = lscape.get_landcell(new_pos.obj_cell_id)
-
-            from .weenie_object import Player
 
             player = self.weenie_obj.world_object  # ACE: WeenieObj.WorldObject as Player
             if isinstance(player, Player) and player.last_contact and isinstance(new_cell, LandCell):

@@ -45,7 +45,8 @@ from . import db_obj, land_defs
 from .land.lscape import LScape
 from .physics_obj import PhysicsObj
 from .physics_timer import PhysicsTimer
-from .weenie_object import Player, WeenieObject
+from .weenie_object import WeenieObject
+from .world_objects import Creature, GenericObject, Player
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 from .transition.branches import Trace
 
@@ -76,7 +77,7 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
     obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(obj_id)
-    obj.set_weenie_obj(WeenieObject.of_player(Player(player_killer_status=m.player_killer_status)))
+    obj.set_weenie_obj(WeenieObject.of(Player(guid=obj_id, player_killer_status=m.player_killer_status)))
     obj.set_motion_table_id(m.motion_table_id)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state
@@ -128,14 +129,15 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
 
 
 def world_object_of(o: OtherMover):
-    """The server's WorldObject for another mover: a Player, a Creature (IsMonster for a monster) or a GenericObject."""
-    from .weenie_object import Creature, GenericObject
-
+    """The server's WorldObject for another mover: a Player, a Creature or a GenericObject. A monster is a Creature
+    with IsMonster (Creature.SetMonsterState: Attackable, ACE's default for an object without the property); an NPC
+    one that is not Attackable, so not a monster."""
     if o.weenie == "player":
         return Player(guid=o.id, player_killer_status=o.player_killer_status)
     if o.weenie == "object":
         return GenericObject(guid=o.id)
-    return Creature(guid=o.id, is_monster=o.weenie == "monster", player_killer_status=o.player_killer_status)
+    monster = o.weenie == "monster"
+    return Creature(guid=o.id, is_monster=monster, attackable=monster, player_killer_status=o.player_killer_status)
 
 
 def _placement_state(mover: PhysicsObj, result) -> PlacementState:

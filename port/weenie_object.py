@@ -1,89 +1,57 @@
-"""WeenieObject: WeenieObject(WorldObject), DummyObject, IsImpenetrable, IsPK, IsPKLite, DoCollision(EnvCollisionProfile), DoCollisionEnd -- what the physics asks of an object's game object; and the members of ACE's WorldObjects.Player the physics reads.
+"""WeenieObject: WeenieObject(WorldObject), DummyObject, IsImpenetrable, IsPK, IsPKLite, InqRunRate, InqCollisionProfile, DoCollision(ObjCollisionProfile), DoCollision(EnvCollisionProfile), DoCollisionEnd -- what the physics asks of an object's game object.
 
 ACE's Physics/Common/WeenieObject.cs. A static placed from the DAT (Landblock.init_static_objs) keeps
-DummyObject: no WorldObject, every flag false. The mover is a player: WorldObject.InitPhysicsObj gives
-its PhysicsObj ``new WeenieObject(player)``, so IsPlayer and IsCreature are true and the PK answers
-come from the Player's PlayerKillerStatus. What the Player's own code does when the physics calls it
-(HandleFallingDamage: Health only; SyncLocation: its Location) reaches nothing the physics reads.
+DummyObject: no WorldObject, every flag false. A mover's PhysicsObj gets ``new WeenieObject(worldObject)``
+(WorldObject.InitPhysicsObj): `WeenieObject.of` over a port WorldObject record (port/world_objects/:
+Player, Creature -- an NPC, or a monster with is_monster -- or a plain WorldObject, an object that moves).
+ACE's WorldObject getter reads a WeakReference (WorldObjectInfo); a scene's WorldObjects live as long as
+the run (the oracle holds them), so the port holds the record itself.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+
 from acconform.flags import PlayerKillerStatus
 
 from .anchors import anchor
-
-
-@dataclass(slots=True)
-class Player:
-    """The members of ACE's WorldObjects.Player (and the WorldObject and Creature it derives from)
-    that the physics reads. PlayerKillerStatus: a player without the property is NPK
-    (WorldObject_Properties.cs); LastContact: true until the client's first AutonomousPosition says
-    otherwise (Player.cs); ScatterPos none and not Teleporting: a player walking in the world."""
-
-    player_killer_status: PlayerKillerStatus = PlayerKillerStatus.NPK
-    guid: int = 0
-    last_contact: bool = True
-    teleporting: bool = False
-    scatter_pos: object = None
-    run_skill: int = 0  # GetCreatureSkill(Skill.Run).Current: the database-free Player's (no attributes, no skill)
-
-    @property
-    def is_pk_type(self) -> bool:
-        """Player_Combat.cs: IsPKType."""
-        return self.player_killer_status in (PlayerKillerStatus.PK, PlayerKillerStatus.PKLite)
-
-    @property
-    def fast_tick(self) -> bool:
-        """Player_Tick.cs: FastTick (which of HandleActionJump's branches runs)."""
-        return self.is_pk_type
-
-    @property
-    def is_pk(self) -> bool:
-        """Player_Combat.cs: IsPK."""
-        return self.player_killer_status == PlayerKillerStatus.PK
-
-    @property
-    def is_pkl(self) -> bool:
-        """Player_Combat.cs: IsPKL."""
-        return self.player_killer_status == PlayerKillerStatus.PKLite
-
-
-@dataclass(slots=True)
-class Creature:
-    guid: int = 0
-    is_monster: bool = False
-    player_killer_status: PlayerKillerStatus = PlayerKillerStatus.NPK
-    teleporting: bool = False
-    scatter_pos: object = None
-
-
-@dataclass(slots=True)
-class GenericObject:
-    guid: int = 0
-    teleporting: bool = False
-    scatter_pos: object = None
+from .world_objects import Creature, Player, WorldObject
 
 
 @dataclass(frozen=True, slots=True)
 class WeenieObject:
-    world_object: Player | None = None
+    world_object: WorldObject | None = None
     is_player: bool = False
     is_creature: bool = False
     is_storage: bool = False
     is_corpse: bool = False
+    is_monster: bool = False
+    is_combat_pet: bool = False
+    is_faction_mob: bool = False
+    faction1_bits: int = 0  # FactionBits
+    foe_type: int | None = None  # CreatureType?
+    player_killer_status: PlayerKillerStatus = PlayerKillerStatus.Undef  # default(PlayerKillerStatus): 0
 
     @staticmethod
-    @anchor(None, "WeenieObject.cs:WeenieObject(WorldObject)", "IsCreature, IsPlayer")
-    def of(world_object) -> "WeenieObject":
-        if isinstance(world_object, Player):
-            return WeenieObject(world_object=world_object, is_player=True, is_creature=True)
-        return WeenieObject(world_object=world_object, is_creature=isinstance(world_object, Creature))
+    @anchor(None, "WeenieObject.cs:WeenieObject(WorldObject)")
+    def of(world_object: WorldObject) -> "WeenieObject":
+        """``new WeenieObject(worldObject)``. A Corpse or Storage (IsCorpse, IsStorage) and a CombatPet
+        are classes no scene makes."""
+        if not isinstance(world_object, Creature):
+            return WeenieObject(world_object=world_object)
 
-    @staticmethod
-    def of_player(player: Player) -> "WeenieObject":
-        return WeenieObject.of(player)
+        creature = world_object
+        is_player = is_monster = False
+        if isinstance(creature, Player):
+            is_player = True
+        elif creature.is_monster:
+            is_monster = True
+
+        faction1_bits = creature.faction1_bits if creature.faction1_bits is not None else 0
+
+        return WeenieObject(world_object=creature, is_player=is_player, is_creature=True, is_monster=is_monster,
+                            faction1_bits=faction1_bits, is_faction_mob=is_monster and faction1_bits != 0,
+                            foe_type=creature.foe_type, player_killer_status=creature.player_killer_status)
 
     @anchor(None, "WeenieObject.cs:IsImpenetrable")
     def is_impenetrable(self) -> bool:
@@ -110,7 +78,7 @@ class WeenieObject:
         from .animation.movement_system import get_run_rate
 
         run_skill = 0
-        if isinstance(self.world_object, Player):
+        if isinstance(self.world_object, Creature):
             run_skill = self.world_object.run_skill
         s = type(rate)
         return True, s(get_run_rate(s(0.0), run_skill, s(1.0)))
@@ -118,6 +86,78 @@ class WeenieObject:
     @anchor(None, "WeenieObject.cs:JumpStaminaCost")
     def jump_stamina_cost(self, extent, stamina_cost: int):
         return 0
+
+    @anchor(None, "WeenieObject.cs:InqCollisionProfile")
+    def inq_collision_profile(self, prof) -> None:
+        """Completes `prof` (an ObjCollisionProfile). ``WorldObject is Door``: a scene makes no Door
+        WorldObject (its doors are statics with no WorldObject)."""
+        from .obj_collision_profile import ObjCollisionProfileFlags
+
+        if self.world_object is None:
+            return
+
+        # prof.WCID = ID; (commented out in ACE)
+        prof.item_type = self.world_object.item_type
+
+        if self.is_creature:
+            prof.flags |= ObjCollisionProfileFlags.Creature
+
+            if self.is_player:
+                prof.flags |= ObjCollisionProfileFlags.Player
+
+        if self.world_object.attackable:
+            prof.flags |= ObjCollisionProfileFlags.Attackable
+
+    @anchor(None, "WeenieObject.cs:DoCollision(ObjCollisionProfile, ObjectGuid, PhysicsObj)")
+    def do_collision_obj(self, prof, guid: int, target) -> int:
+        """-1 without a WorldObject on either side or when `target`'s WorldObject has this one's Guid (PhysicsObj
+        .report_object_collision's second call passes the touched object as its own target: always -1);
+        0 once OnCollideObject ran."""
+        wo = self.world_object
+
+        if wo is None:
+            return -1
+
+        target_wo = target.weenie_obj.world_object
+
+        if target_wo is None:
+            return -1
+
+        # no collision with self (ACE)
+        if wo.guid == target_wo.guid:
+            return -1
+
+        wo.on_collide_object(target_wo)
+
+        return 0
+
+    @anchor(None, "WeenieObject.cs:DoCollision(EnvCollisionProfile, ObjectGuid, PhysicsObj)")
+    def do_collision_env(self, prof, guid: int, target) -> int:
+        wo = self.world_object
+
+        if wo is None:
+            return 0
+
+        if self.is_player and isinstance(wo, Player):
+            wo.handle_falling_damage(prof)
+        else:
+            wo.on_collide_environment()
+
+        return 0
+
+    @anchor(None, "WeenieObject.cs:DoCollisionEnd")
+    def do_collision_end(self, target_guid: int) -> None:
+        """``wo.CurrentLandblock?.GetObject(targetGuid)``: a scene's WorldObjects are on no server
+        landblock, so no target is found and OnCollideObjectEnd is not called (as on the oracle)."""
+        wo = self.world_object
+
+        if wo is None:
+            return
+
+        target = wo.current_landblock.get_object(target_guid) if wo.current_landblock is not None else None
+
+        if target is not None:
+            wo.on_collide_object_end(target)
 
     @anchor(None, "WeenieObject.cs:OnMotionDone", "Player.HandleMotionDone: a player neither chugging nor casting does nothing")
     def on_motion_done(self, motion_id: int, success: bool) -> None:

@@ -725,6 +725,9 @@ namespace Acconform.Oracle
                                        "Generic", o.Id, out fromBiota);
             var creature = (ACE.Server.WorldObjects.Creature)MakeWorldObject(typeof(ACE.Server.WorldObjects.Creature),
                                                                              typeof(ACE.Server.WorldObjects.Creature), "Creature", o.Id, out fromBiota);
+            // a monster: Creature.SetMonsterState caches IsMonster = Attackable || TargetingTactic != None (Attackable: ACE's
+            // default, true); an NPC is not Attackable, so not a monster
+            creature.Attackable = o.Weenie == 2;
             creature.IsMonster = o.Weenie == 2;
             creature.PlayerKillerStatus = o.Pks;
             return creature;

@@ -45,6 +45,19 @@ class NetDictionary:
             self._entries.append([key, value])
         self._index[key] = slot
 
+    @harness(".NET Dictionary's indexer set (dict[key] = value): the key's entry in place, or Add")
+    def set(self, key, value) -> None:
+        slot = self._index.get(key)
+        if slot is None:
+            self.add(key, value)
+        else:
+            self._entries[slot][1] = value
+
+    @harness(".NET Dictionary's enumerator: its KeyValuePairs in entry order")
+    def items(self) -> list:
+        """``foreach (var kvp in dict)`` (a snapshot list of (key, value), in .NET order)."""
+        return [(e[0], e[1]) for e in self._entries if e is not None]
+
     @harness(".NET Dictionary.Remove: the entry's slot joins the free list")
     def remove(self, key) -> bool:
         slot = self._index.pop(key, None)

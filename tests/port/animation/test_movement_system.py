@@ -76,7 +76,7 @@ class _Mover:
         self.moving, self.update_time, self.timer, self.calls = moving, 1.0, _Timer(), []
         self.transient_state = TransientState.Contact | TransientState.OnWalkable | TransientState.WaterContact
         self.is_animating = True
-        self.weenie_obj = WeenieObject.of_player(Player(player_killer_status=status))
+        self.weenie_obj = WeenieObject.of(Player(player_killer_status=status))
         self.movement_manager = None
         if pending is not None:  # a MovementManager whose MotionInterpreter has these pending motions
             from types import SimpleNamespace
