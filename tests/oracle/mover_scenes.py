@@ -87,26 +87,27 @@ def player_walks_into_a_standing_npc_side_on():
 
 def creature_pushes_along_a_wall():
     """A monster pushed diagonally into a wall slides along it (EdgeSlide off, Gravity) towards the player
-    standing against the same wall, and stops at the player."""
+    standing against the same wall, and stops short of it (the wall, a static, is an environment collision and
+    never a CollisionTable record)."""
     wall = static(0x70000001, (60.0, 66.0, GROUND), box(12.0, 0.4, 3.0))
-    return scene("creature_pushes_along_a_wall", [land()], _player((64.0, 65.3, GROUND)),
+    return scene("creature_pushes_along_a_wall", [land()], _player((60.5, 65.3, GROUND)),
                  _steps(80, (0.0, 0.0, 0.0), {MONSTER: (2.0, 2.0, 0.0)}), [wall],
                  others=(other(MONSTER, "monster", (56.0, 64.0, GROUND), state=int(PhysicsState.Gravity)),))
 
 
 def monster_turns_ethereal_and_is_passed():
-    """The player and a monster head-on; half way the monster turns Ethereal (its State set at a tick) and the
-    player walks on through it: the collision records end (an ethereal record ends once touched before now)."""
+    """The player walks at a standing monster, which turns Ethereal (its State set at a tick) before the player
+    reaches it: the player walks on through it (an ethereal object's spheres are passed)."""
     steps = list(_steps(40, (0.0, 3.0, 0.0), {MONSTER: (0.0, 0.0, 0.0)}))
-    steps[20] = TickStep(DT, velocity=(0.0, 3.0, 0.0),
+    steps[8] = TickStep(DT, velocity=(0.0, 3.0, 0.0),
                          others=(OtherInputs(MONSTER, state=int(EDGE_SLIDE | PhysicsState.Ethereal)),))
     return scene("monster_turns_ethereal_and_is_passed", [land()], _player((60.0, 60.0, GROUND)), steps,
                  others=(other(MONSTER, "monster", (60.0, 62.5, GROUND)),))
 
 
 def a_monster_and_a_player_meet_the_player():
-    """Two others, a monster and a PK player, walk at the (PK) player from either side: the monster stops at it,
-    the other PK player collides with it too; each table lists what it touched in ACE's order."""
+    """Two others, a monster and a PK player, walk at the standing PK player from either side and stop at it: their
+    tables hold the player; the standing player, never stepped into them, has none."""
     return scene("a_monster_and_a_player_meet_the_player", [land()], _player((60.0, 60.0, GROUND), "PK"),
                  _steps(50, (0.0, 0.0, 0.0), {MONSTER: (0.0, -2.0, 0.0), PLAYER_2: (0.0, 2.0, 0.0)}),
                  others=(other(MONSTER, "monster", (60.0, 63.0, GROUND)), other(PLAYER_2, "player", (60.0, 57.0, GROUND), "PK")))
