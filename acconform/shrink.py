@@ -4,7 +4,8 @@ A live campaign's scenes are Hypothesis' own draws, and Hypothesis shrinks them.
 corpus scene was drawn long ago, so Hypothesis cannot shrink it; `shrink_scene` does, greedily,
 on the scene record itself: it tries a smaller scene (fewer objects, EnvCells, Environments,
 landblocks; one sphere; no velocity, slide or placement; flat bare terrain; a shorter path;
-fewer flags; for a tick scene fewer ticks, fewer inputs and simpler time steps) and keeps it when `still_fails(candidate)` says the difference is still there. A
+fewer flags; for a tick scene fewer ticks, fewer inputs and simpler time steps; fewer other movers and fewer of
+their inputs) and keeps it when `still_fails(candidate)` says the difference is still there. A
 candidate that is no valid scene (`validate_scene` refuses it) is never run.
 
 It knows nothing of ACE: the caller's `still_fails` compares the implementation with whatever
@@ -25,10 +26,10 @@ from dataclasses import dataclass, fields, replace
 from typing import Callable, Iterator
 
 from .errors import InvalidScene
-from .flags import PhysicsState, TransientState
+from .flags import PLAYER_KILLER_STATUS_NPK, PhysicsState, TransientState
 from .numerics import to_f32
-from .scene import (BSPLeaf, BSPNode, Building, CellBSPLeaf, CellBSPNode, EnvCell, Landblock, PolygonRec,
-                    StaticObject, TICK_INPUTS, Scene, validate_scene)
+from .scene import (BSPLeaf, BSPNode, Building, CellBSPLeaf, CellBSPNode, EnvCell, Landblock, OtherMover, PolygonRec,
+                    StaticObject, OTHER_INPUTS, TICK_INPUTS, Scene, validate_scene)
 
 DEFAULT_BUDGET = 300  # candidates tried per scene (each costs a run on both sides)
 
@@ -43,7 +44,7 @@ class Size:
 
     bytes: int
     landblocks: int
-    objects: int  # static objects and buildings
+    objects: int  # static objects, buildings and other movers
     polygons: int  # every polygon record: objects', Environments' cell structures', buildings'
     bsp_nodes: int  # nodes and leaves of every BSP, physics and cell
     cells: int  # EnvCells
@@ -54,7 +55,7 @@ class Size:
         return [f.name for f in fields(self) if getattr(self, f.name) > getattr(other, f.name)]
 
 
-_COUNTED = {Landblock: "landblocks", StaticObject: "objects", Building: "objects", PolygonRec: "polygons",
+_COUNTED = {Landblock: "landblocks", StaticObject: "objects", Building: "objects", OtherMover: "objects", PolygonRec: "polygons",
             BSPNode: "bsp_nodes", BSPLeaf: "bsp_nodes", CellBSPNode: "bsp_nodes", CellBSPLeaf: "bsp_nodes",
             EnvCell: "cells"}
 
@@ -190,7 +191,48 @@ def _motion_table(scene: Scene) -> Iterator[Scene]:
 
 
 def _inputs(step) -> bool:
-    return any(getattr(step, name) is not None for name in TICK_INPUTS)
+    return bool(step.others) or any(getattr(step, name) is not None for name in TICK_INPUTS)
+
+
+def _fewer_others(scene: Scene) -> Iterator[Scene]:
+    """Fewer other movers: all, then each, last first; a mover's inputs go with it (tried before the ticks:
+    a whole mover is the biggest cut)."""
+    others = scene.others
+    if others:
+        yield _without_others(scene, {o.id for o in others})
+        for o in reversed(others):
+            yield _without_others(scene, {o.id})
+
+
+def _without_others(scene: Scene, ids: set) -> Scene:
+    ticks = scene.ticks
+    if ticks is not None:
+        ticks = replace(ticks, steps=tuple(replace(st, others=tuple(o for o in st.others if o.id not in ids))
+                                           for st in ticks.steps))
+    return scene.replace(others=tuple(o for o in scene.others if o.id not in ids), ticks=ticks)
+
+
+def _others(scene: Scene) -> Iterator[Scene]:
+    """Fewer of the other movers' inputs (each step's entry, then each input of it), and simpler others (at
+    rest, not PK, scale 1, one sphere)."""
+    others = scene.others
+    if not others:
+        return
+    if scene.ticks is not None:
+        steps = scene.ticks.steps
+        for i, step in enumerate(steps):
+            for k, inputs in enumerate(step.others):
+                yield scene.replace(ticks=replace(scene.ticks, steps=steps[:i] + (replace(step, others=_without(step.others, k)),)
+                                                  + steps[i + 1:]))
+                for name in OTHER_INPUTS:
+                    if getattr(inputs, name) is not None:
+                        one = replace(step, others=step.others[:k] + (replace(inputs, **{name: None}),) + step.others[k + 1:])
+                        yield scene.replace(ticks=replace(scene.ticks, steps=steps[:i] + (one,) + steps[i + 1:]))
+    for k, o in enumerate(others):
+        for change in ({"velocity": (0.0, 0.0, 0.0)}, {"player_killer_status": PLAYER_KILLER_STATUS_NPK},
+                       {"scale": 1.0}, {"spheres": o.spheres[:1]}):
+            if any(getattr(o, f) != v for f, v in change.items()):
+                yield scene.replace(others=others[:k] + (replace(o, **change),) + others[k + 1:])
 
 
 def _ticks(scene: Scene) -> Iterator[Scene]:
@@ -233,12 +275,14 @@ def _ticks(scene: Scene) -> Iterator[Scene]:
 
 
 def _candidates(scene: Scene) -> Iterator[Scene]:
+    yield from _fewer_others(scene)
     if scene.ticks is not None:
         yield from _ticks(scene)
     if scene.objects:
         yield scene.replace(objects=())
         for i in reversed(range(len(scene.objects))):
             yield scene.replace(objects=_without(scene.objects, i))
+    yield from _others(scene)
     yield from _cells(scene)
     yield from _landblocks(scene)
     yield from _mover(scene)

@@ -113,10 +113,26 @@ def a_monster_and_a_player_meet_the_player():
                  others=(other(MONSTER, "monster", (60.0, 63.0, GROUND)), other(PLAYER_2, "player", (60.0, 57.0, GROUND), "PK")))
 
 
+def player_runs_into_a_slow_monster():
+    """The player runs (3 m/s) at a monster walking at it (1 m/s): the tick they meet, the player is stepped first
+    (it entered the world first) and takes the gap; the monster, stepped after it, stays where it was."""
+    return scene("player_runs_into_a_slow_monster", [land()], _player((60.0, 60.0, GROUND)),
+                 _steps(40, (0.0, 3.0, 0.0), {MONSTER: (0.0, -1.0, 0.0)}),
+                 others=(other(MONSTER, "monster", (60.0, 64.0, GROUND)),))
+
+
+def monster_bumps_the_player_and_backs_off():
+    """A monster walks into the standing player, then backs off: more than a second after they last touched, each
+    one's CollisionTable record of the other ends (report_collision_end: CollisionRecord lifetime)."""
+    steps = _steps(25, (0.0, 0.0, 0.0), {MONSTER: (0.0, -2.0, 0.0)}) + _steps(45, (0.0, 0.0, 0.0), {MONSTER: (0.0, 2.0, 0.0)})
+    return scene("monster_bumps_the_player_and_backs_off", [land()], _player((60.0, 60.0, GROUND)), steps,
+                 others=(other(MONSTER, "monster", (60.0, 61.5, GROUND)),))
+
+
 NAMED = (collide_with_a_moving_object, two_players_run_through_each_other, pk_players_run_into_each_other,
          pk_and_npk_players_pass_through_each_other, player_walks_into_a_moving_object,
          player_walks_into_a_standing_npc_side_on, creature_pushes_along_a_wall, monster_turns_ethereal_and_is_passed,
-         a_monster_and_a_player_meet_the_player)
+         a_monster_and_a_player_meet_the_player, monster_bumps_the_player_and_backs_off, player_runs_into_a_slow_monster)
 
 
 def scenes() -> dict:

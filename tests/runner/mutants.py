@@ -371,6 +371,35 @@ MUTATIONS: tuple[Mutation, ...] = (
              "                    if curr_anim.anim.pos_frames is not None:\n"
              "                        frame = AFrame.combine(frame, curr_anim.get_pos_frame(last_frame + 1))\n",
              "Sequence.update_internal applies the next frame's root motion, not the frame it leaves", TICKS),
+    # ---- several movers (issue 41): caught by replaying the movers' tick records (tick_kill)
+    Mutation("movers_pk_exemption_inverted", "physics_obj.py",
+             "                         or state & ObjectInfoState.IsPK and wobj.is_pk()\n",
+             "                         or state & ObjectInfoState.IsPK and not wobj.is_pk()\n",
+             "FindObjCollisions' PK exemption inverted: two PK players pass through each other, a PK and an NPK "
+             "one collide", TICKS),
+    Mutation("movers_second_stepped_first", "run.py",
+             "            timer.set(time)\n"
+             "            if ticks.driver == \"update_object\":\n                updated = mover.update_object(lscape, trace)\n"
+             "            else:\n"
+             "                updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),\n"
+             "                                                                location_cell, lscape, trace)\n"
+             "            others_updated = {obj.id: obj.update_object(lscape, trace) for obj in stepped}\n",
+             "            timer.set(time)\n"
+             "            others_updated = {obj.id: obj.update_object(lscape, trace) for obj in stepped}\n"
+             "            if ticks.driver == \"update_object\":\n                updated = mover.update_object(lscape, trace)\n"
+             "            else:\n"
+             "                updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),\n"
+             "                                                                location_cell, lscape, trace)\n",
+             "the other movers are stepped before the mover, not after it in the order they entered the landblock",
+             TICKS),
+    Mutation("movers_collision_records_never_end", "physics_obj.py",
+             "            if delta_time > COLLISION_RECORD_LIFETIME or collision.ethereal and delta_time > 0.0 or force_end:",
+             "            if force_end:",
+             "report_collision_end ends a CollisionTable record only when forced: never by age or ethereality", TICKS),
+    Mutation("multipart_part_scale_ignored", "part_array.py",
+             "                    part.gfx_obj_scale = self.setup.default_scale[i] * new_scale",
+             "                    part.gfx_obj_scale = new_scale",
+             "PartArray.SetScaleInternal ignores a part's DefaultScale (the Setup's per-part scale)", ("bsp",)),
 )
 
 
