@@ -596,8 +596,8 @@ def _tick_entries(runtime: str) -> tuple:
 
 
 def tick_records(runtime: str, first: tuple[str, ...] = ()):
-    """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the
-    corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first, then as
+    """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the named
+    scenes of several movers (tests/oracle/mover_scenes.py), the corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first, then as
     _tick_entries orders them), then the example tick scenes, the hand-written ones and the named ones
     (tests/oracle/data)."""
     import json
@@ -606,11 +606,18 @@ def tick_records(runtime: str, first: tuple[str, ...] = ()):
     from acconform.outcome import Outcome
     from acconform.scene import Scene
 
+    root = PORT_DIR.parent
+    data = root / "tests" / "oracle" / "data"
+    # the named scenes of several movers first: a dozen short scenes, each aimed at one of their rules
+    sys.path.insert(0, str(root / "tests"))
+    from oracle.mover_scenes import scenes as mover_scenes
+
+    movers = json.loads((data / "ace_mover_outcomes.json").read_text())["outcomes"][runtime]
+    for name, scene in mover_scenes().items():
+        yield f"tests/oracle/mover_scenes.py {name}", scene, Outcome.from_json(movers[name])
     for _, e in sorted(_tick_entries(runtime), key=lambda ke: ke[0] not in first):
         rec = Record.from_json(e.doc())
         yield e.where, rec.scene, rec.outcome
-    root = PORT_DIR.parent
-    data = root / "tests" / "oracle" / "data"
     examples = json.loads((data / "ace_tick_outcomes.json").read_text())["outcomes"][runtime]
     for p in sorted((root / "examples").glob("tick_*.json")):
         yield f"examples/{p.name}", load_document(p), Outcome.from_json(examples[p.stem])

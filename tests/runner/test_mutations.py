@@ -198,10 +198,19 @@ KILLING_RECORDS = {"tick_friction_before_velocity_clamp":
                    ("35bb9eb5229a4d5eaa76bd537580bc44fcce1607ce8b6926f8e981c8f4413caf",)}
 
 
+# a bug of several movers shows only once they meet: the shrink keeps the ticks of their approach (it cuts
+# after the first differing tick) and the movers it needs (the mover and one other: two objects counted)
+MOVERS_SHRUNK_TICKS = 45
+
+
 @pytest.mark.parametrize("index", TICK_MUTANTS, ids=[MUTATIONS[i].name for i in TICK_MUTANTS])
 def test_the_tick_records_kill_a_planted_tick_loop_bug_and_shrink_it_to_a_few_ticks(index):
     r = tick_kill(index, "coreclr", first=KILLING_RECORDS.get(MUTATIONS[index].name, ()))
     assert r["killed"], f"{MUTATIONS[index].name} ({MUTATIONS[index].what}) survives {r['records']} tick records"
+    if MUTATIONS[index].name.startswith("movers_"):
+        assert r["shrunk_ticks"] <= MOVERS_SHRUNK_TICKS and r["shrunk_objects"] <= 1 and r["shrunk_landblocks"] <= 1, r
+        assert r["shrunk_ticks"] < r["ticks"] or r["first_differing_tick"] == r["ticks"] - 1, r
+        return
     assert r["shrunk_ticks"] <= MAX_SHRUNK_TICKS and r["shrunk_objects"] <= 1 and r["shrunk_landblocks"] <= 4, r
 
 
