@@ -23,7 +23,7 @@ from .codec import Reader, dumps, dumps_compact, json_line, parse_json_text
 from .compare import MODES
 from .errors import InvalidScene
 from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V1 as OUTCOME_FORMAT_V1, FORMAT_V2 as OUTCOME_FORMAT_V2,
-                      FORMAT_V3 as OUTCOME_FORMAT_V3, FORMAT_V4 as OUTCOME_FORMAT_V4, Outcome)
+                      FORMAT_V3 as OUTCOME_FORMAT_V3, FORMAT_V4 as OUTCOME_FORMAT_V4, FORMAT_V5 as OUTCOME_FORMAT_V5, Outcome)
 from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
                     FORMAT_V3 as SCENE_FORMAT_V3, FORMAT_V4 as SCENE_FORMAT_V4, FORMAT_V5 as SCENE_FORMAT_V5,
                     FORMAT_V6 as SCENE_FORMAT_V6, FORMAT_V7 as SCENE_FORMAT_V7, Scene, check_format)
@@ -218,7 +218,7 @@ _READERS = {SCENE_FORMAT_V1: Scene.from_json, SCENE_FORMAT_V2: Scene.from_json, 
             SCENE_FORMAT_V4: Scene.from_json, SCENE_FORMAT_V5: Scene.from_json, SCENE_FORMAT_V6: Scene.from_json,
             SCENE_FORMAT_V7: Scene.from_json, SCENE_FORMAT: Scene.from_json,
             OUTCOME_FORMAT_V1: Outcome.from_json, OUTCOME_FORMAT_V2: Outcome.from_json, OUTCOME_FORMAT_V3: Outcome.from_json,
-            OUTCOME_FORMAT_V4: Outcome.from_json, OUTCOME_FORMAT: Outcome.from_json,
+            OUTCOME_FORMAT_V4: Outcome.from_json, OUTCOME_FORMAT_V5: Outcome.from_json, OUTCOME_FORMAT: Outcome.from_json,
             CASE_FORMAT_V1: Case.from_json, CASE_FORMAT_V2: Case.from_json, CASE_FORMAT: Case.from_json, RECORD_FORMAT: Record.from_json}
 
 

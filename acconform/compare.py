@@ -63,7 +63,7 @@ from typing import Any
 import numpy as np
 
 from .flags import ObjectInfoState, PhysicsState, TransientState, flag_names
-from .outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, OtherTick, Outcome,
+from .outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome,
                       PlacementState, PlaneState, TickState)
 from .numerics import f32_bits
 
@@ -220,7 +220,7 @@ def _compare_others(va, vb, path: str, mode: str, out: list) -> None:
         out.append(Difference(path, va, vb))
         return
     for oa, ob in zip(va or (), vb or ()):
-        _compare_record(oa.tick, ob.tick, f"{path}[0x{oa.id:08X}].", mode, out)
+        _compare_record(oa, ob, f"{path}[0x{oa.id:08X}].", mode, out)
 
 
 def _compare_placements(va, vb, path: str, mode: str, out: list) -> None:

@@ -43,7 +43,7 @@ movers are written as before.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field, fields, replace
 
 from .codec import Reader, write_f32, write_f64, write_id, write_vec
 from .flags import ObjectInfoState, PhysicsState, SetPositionError, TransientState, flag_names
@@ -284,13 +284,18 @@ class TickState:
     collisions: tuple[CollisionState, ...] | None = _field(
         None, "", "the PhysicsObj's CollisionTable after the step, in its order, only in a scene with other movers "
         "(then the format is acconform.outcome/6); absent otherwise")
-    others: tuple["OtherTick", ...] | None = _field(
-        None, "", "each other mover's TickState after the step (its id, then the same fields), in the scene's `others` "
-        "order, only in a scene with other movers (acconform.outcome/6); absent otherwise")
+    others: tuple["TickState", ...] | None = _field(
+        None, "", "each other mover's TickState after the step (with its `id`; no `motion`, `others` or `error` of "
+        "its own), in the scene's `others` order, only in a scene with other movers (acconform.outcome/6); absent "
+        "otherwise")
+    id: int | None = _field(None, "", "the other mover's id, in an entry of a tick's `others` only (scene/8 "
+                            "others[].id); absent otherwise")
     error: str | None = _field(None, "", "what this step threw (later steps are not run); absent when nothing was raised")
 
     def to_json(self):
         d = {name: write(getattr(self, name)) for name, write, _ in _TICK_CODECS}
+        if self.id is not None:
+            d = {"id": write_id(self.id), **d}
         if self.motion is not None:
             d["motion"] = self.motion.to_json()
         if self.collisions is not None:
@@ -306,41 +311,35 @@ class TickState:
         """`motion`: whether the record's format has the tick's `motion` (``/5``; ``/4`` has not); `others`:
         its `collisions` and `others` (``/6``)."""
         allowed = _TICK_ALLOWED if motion else _TICK_ALLOWED_V4
-        r.obj(allowed if others else allowed - {"collisions", "others"})
+        r.obj(allowed if others else allowed - {"collisions", "others", "id"})
         kw = {name: read(r[name]) for name, _, read in _TICK_CODECS}  # a missing field: the first in declaration order
         if r.has("motion"):
             kw["motion"] = MotionTickState.from_json(r["motion"])
         if r.has("collisions"):
             kw["collisions"] = tuple(CollisionState.from_json(c) for c in r["collisions"].list())
         if r.has("others"):
-            kw["others"] = tuple(OtherTick.from_json(o) for o in r["others"].list())
+            kw["others"] = tuple(TickState._other_from_json(o) for o in r["others"].list())
+        if r.has("id"):
+            r["id"].fail("only an entry of a tick's `others` names a mover by id")
         if r.has("error"):
             kw["error"] = r["error"].str_()
         return TickState(**kw)
 
 
-@dataclass(frozen=True, slots=True)
-class OtherTick:
-    """Another mover's state after a tick (scene/8): its id and its TickState (no `motion`, `others` or
-    `error` of its own: an error in any mover's update is the tick's)."""
-
-    id: int
-    tick: TickState
-
-    def to_json(self):
-        return {"id": write_id(self.id), **self.tick.to_json()}
-
-    @staticmethod
-    def from_json(r: Reader) -> "OtherTick":
-        oid = r["id"].id_()
-        body = Reader({k: v for k, v in r.obj(_TICK_ALLOWED_OTHER | {"id"}).value.items() if k != "id"}, r.path, exact=r.exact)
-        return OtherTick(oid, TickState.from_json(body))
-
-
 _TICK_FIELDS = tuple(f.name for f in fields(TickState))  # in declaration order (an outcome holds one per tick)
 _TICK_ALLOWED = frozenset(_TICK_FIELDS)
-_TICK_ALLOWED_V4 = _TICK_ALLOWED - {"motion", "collisions", "others"}
+_TICK_ALLOWED_V4 = _TICK_ALLOWED - {"motion", "collisions", "others", "id"}
 _TICK_ALLOWED_OTHER = _TICK_ALLOWED - {"motion", "others", "error"}
+
+
+def _other_from_json(r: Reader) -> TickState:
+    """An entry of a tick's `others`: its id and its TickState's fields."""
+    oid = r.obj(_TICK_ALLOWED_OTHER)["id"].id_()
+    body = Reader({k: v for k, v in r.value.items() if k != "id"}, r.path, exact=r.exact)
+    return replace(TickState.from_json(body), id=oid)
+
+
+TickState._other_from_json = staticmethod(_other_from_json)
 _TICK_IDS = frozenset({"cell", "cur_cell", "contact_plane_cell"})
 _TICK_VECS = frozenset({"origin", "orientation", "velocity", "acceleration", "omega", "cached_velocity", "sliding_normal"})
 
@@ -392,7 +391,7 @@ def _tick_field_codec(name: str):
 # per tick, and each one asked dataclasses.fields() and ran the field's if-chain (with flag_names
 # remembering its answers, a 25-tick outcome is written in 0.37 ms, not 0.54, and read in 0.73, not 1.1)
 _TICK_CODECS = tuple((name, *_tick_field_codec(name)) for name in _TICK_FIELDS
-                     if name not in ("motion", "collisions", "others", "error"))
+                     if name not in ("motion", "collisions", "others", "id", "error"))
 
 
 @dataclass(frozen=True, slots=True)

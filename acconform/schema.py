@@ -187,7 +187,27 @@ def _tick_scenes(scene):
     return [replace(scene, engine_mode="client", mover=m, name="ticks", ticks=Ticks("update_object", 1000.0, (every, TickStep(0.25)))),
             replace(scene, engine_mode="client", mover=m, ticks=Ticks("request_pos", 0.0, (
                 TickStep(0.1, request_pos=scene.mover.begin),))),
-            _motion_scene(scene, m), _door_scene(scene, m)]
+            _motion_scene(scene, m), _door_scene(scene, m), _movers_scene(scene, m)]
+
+
+def _movers_scene(scene, m):
+    """A scene with other movers (scene/8, objects.moving): one of each weenie class at the mover's start (a
+    PK player with every optional field), each given every input of a step once."""
+    from dataclasses import replace
+
+    from .flags import PhysicsState, PlayerKillerStatus, TransientState
+    from .scene import OtherInputs, OtherMover, SphereRec, Ticks, TickStep
+
+    body = (SphereRec((0.0, 0.0, 0.5), 0.5),)
+    others = (OtherMover(0x50000002, "player", body + (SphereRec((0.0, 0.0, 1.2), 0.5),), m.begin, 0.4, 0.4, scale=1.5,
+                         velocity=(0.0, 1.0, 0.0), player_killer_status=int(PlayerKillerStatus.PK)),
+              OtherMover(0x80000001, "monster", body, m.begin, 0.4, 0.4), OtherMover(0x80000002, "creature", body, m.begin, 0.4, 0.4),
+              OtherMover(0x80000003, "object", body, m.begin, 0.0, 0.0))
+    every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
+                        velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
+                        sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
+    return replace(scene, mover=m, name="movers", others=others,
+                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),)))
 
 
 def _door_scene(scene, m):
@@ -238,8 +258,9 @@ def _motion_scene(scene, m):
 
 
 def _tick_outcomes() -> list:
-    """A tick scene's outcome: a TickState of every field, and a tick ended by an error; and a motion
-    scene's (outcome/5): a tick with the motion layer, once with every part and once with none."""
+    """A tick scene's outcome: a TickState of every field, and a tick ended by an error; a motion
+    scene's (outcome/5): a tick with the motion layer, once with every part and once with none; and one with
+    other movers (outcome/6): their placements, each tick's CollisionTable and their states."""
     from dataclasses import replace
 
     from .outcome import CommandState, MotionTickState, Outcome, PlaneState, TickState
@@ -250,8 +271,14 @@ def _tick_outcomes() -> list:
     walk = CommandState(0x8000003D, 0x45000005, 1.0, 0x6500000F, 1.0, 0x6500000D, 1.0)
     motion = MotionTickState(walk, walk, 0x03000001, 1.5, (0.0, 3.0, 0.0), (0.0, 0.0, 1.0), 0, False)
     bare = MotionTickState(None, None, None, 0.0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), None, False)
+    from .outcome import CollisionState, PlacementState
+
+    placed = PlacementState(0, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0), 0xA9B40001, 0x83, (0xA9B40001,))
+    touched = (CollisionState(0x80000001, 1000.1, False),)
+    movers = replace(state, collisions=touched, others=(replace(state, id=0x80000001, collisions=touched),))
     return [Outcome(static_cells=(), ticks=(state, TickState(error="NullReferenceException: an example"))),
-            Outcome(static_cells=(), ticks=(replace(state, motion=motion), replace(state, motion=bare)))]
+            Outcome(static_cells=(), ticks=(replace(state, motion=motion), replace(state, motion=bare))),
+            Outcome(static_cells=(), ticks=(movers,), other_placements=(placed,))]
 
 
 def _every_optional_field(scene):
@@ -268,7 +295,7 @@ def _every_optional_field(scene):
 def schemas() -> tuple[dict, dict]:
     """(scene schema, outcome schema), inferred from the records' JSON for the fixed sample."""
     from .outcome import (FORMAT as OUTCOME_FORMAT, FORMAT_V2 as OUTCOME_FORMAT_V2, FORMAT_V3 as OUTCOME_FORMAT_V3,
-                          FORMAT_V4 as OUTCOME_FORMAT_V4, Outcome)
+                          FORMAT_V4 as OUTCOME_FORMAT_V4, FORMAT_V5 as OUTCOME_FORMAT_V5, Outcome)
     from .scene import (FORMAT as SCENE_FORMAT, FORMAT_V1 as SCENE_FORMAT_V1, FORMAT_V2 as SCENE_FORMAT_V2,
                         FORMAT_V3 as SCENE_FORMAT_V3, FORMAT_V4 as SCENE_FORMAT_V4, FORMAT_V5 as SCENE_FORMAT_V5,
                         FORMAT_V6 as SCENE_FORMAT_V6, FORMAT_V7 as SCENE_FORMAT_V7)
@@ -286,7 +313,7 @@ def schemas() -> tuple[dict, dict]:
     docs = ([x.to_json() for x in outcomes] + [Outcome(error="NullReferenceException: an example").to_json()]
             + [x.to_json() for x in _tick_outcomes()])
     outcome = o.finish(o._plain(docs), "acconform outcome",
-                       (OUTCOME_FORMAT_V2, OUTCOME_FORMAT_V3, OUTCOME_FORMAT_V4, OUTCOME_FORMAT))
+                       (OUTCOME_FORMAT_V2, OUTCOME_FORMAT_V3, OUTCOME_FORMAT_V4, OUTCOME_FORMAT_V5, OUTCOME_FORMAT))
     return scene, outcome
 
 
@@ -381,7 +408,7 @@ def outcome_fields_markdown(outcome_schema: dict | None = None) -> str:
         for name, sub in node["properties"].items():
             path = prefix + name
             if name == "format":
-                rows.append(f"| `{path}` | {_json_type(sub)} |  | the outcome format: /5 with ticks carrying `motion`, /4 with ticks, /3 with a placement |")
+                rows.append(f"| `{path}` | {_json_type(sub)} |  | the outcome format: /6 with other movers, /5 with ticks carrying `motion`, /4 with ticks, /3 with a placement |")
                 continue
             if name not in meta or "what" not in meta[name].metadata:
                 raise ValueError(f"outcome field {path} has no unit and meaning (acconform/outcome.py, _field)")

@@ -10,7 +10,7 @@ from __future__ import annotations
 import struct
 from dataclasses import fields, replace
 
-from ..outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, OtherTick, Outcome,
+from ..outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome,
                        PlacementState, PlaneState, TickState)
 from ..dat import cell_landblock, has_objects, scene_records
 from ..motion_scene import MOTION_TABLE_ID, STOPS
@@ -322,7 +322,7 @@ def _ticks_at(data, pos: int):
                 (oid,) = _U32.unpack_from(data, pos)
                 other, pos = _state_at(data, pos + 4)
                 other_collisions, pos = _collisions_at(data, pos)
-                others.append(OtherTick(oid, replace(other, collisions=other_collisions)))
+                others.append(replace(other, collisions=other_collisions, id=oid))
             state = replace(state, collisions=collisions, others=tuple(others))
         out.append(state)
     return tuple(out)

@@ -23,13 +23,13 @@ routines for that run).
 from __future__ import annotations
 
 import gc
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from acconform.flags import PhysicsState, SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
-from acconform.outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, OtherTick,
+from acconform.outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState,
                                Outcome, PlacementState, PlaneState, TickState)
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
@@ -692,7 +692,7 @@ def collision_states(obj: PhysicsObj) -> tuple[CollisionState, ...]:
 def tick_state(mover: PhysicsObj, updated: bool, motion: bool = False, others=None, collisions: bool = False) -> TickState:
     """`motion`: whether the mover has a motion table (the scene's `mover.motion_table`): then the
     tick also carries its motion layer (`motion_tick_state`), and only then, so a scene without one
-    is answered as before. `others`: in a scene with other movers, their states (OtherTick): then the
+    is answered as before. `others`: in a scene with other movers, their states (TickState with its id): then the
     tick carries them and the mover's CollisionTable; `collisions`: the table alone (another mover's tick)."""
     q = mover.position.frame.orientation
     return TickState(
@@ -768,7 +768,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
         except Exception as e:
             states.append(TickState(error=verdict(e)))
             break
-        others = tuple(OtherTick(obj.id, tick_state(obj, others_updated.get(obj.id, False), False, None, True))
+        others = tuple(replace(tick_state(obj, others_updated.get(obj.id, False), False, None, True), id=obj.id)
                        for obj, _, _ in movers) if movers else None
         states.append(tick_state(mover, updated, motion, others))
         if trace is not None and trace.recorder is not None:  # tracing: the mover after the tick

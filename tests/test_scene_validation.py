@@ -90,8 +90,8 @@ def test_unknown_flag_names_are_refused_listing_the_known_ones():
 
 
 def test_an_unknown_format_version_is_refused():
-    assert "format: unknown format version '8' (this acconform reads acconform.scene/7)" in refused(
-        scene_with(lambda d: d.__setitem__("format", "acconform.scene/8")))
+    assert "format: unknown format version '9' (this acconform reads acconform.scene/8)" in refused(
+        scene_with(lambda d: d.__setitem__("format", "acconform.scene/9")))
     assert "unknown format 'somethingelse/1'" in refused(scene_with(lambda d: d.__setitem__("format", "somethingelse/1")))
 
 

@@ -17,8 +17,9 @@ def test_the_outcome_schema_names_and_requires_every_outcome_field(generated):
     _, outcome = generated
     names = {f.name for f in fields(Outcome)}
     assert set(outcome["properties"]) == names | {"format"}
-    # only a placed scene's outcome has a placement, only a tick scene's has ticks
-    assert set(outcome["required"]) == names - {"placement", "ticks"} | {"format"}
+    # only a placed scene's outcome has a placement, only a tick scene's has ticks, only one with other movers
+    # has their placements
+    assert set(outcome["required"]) == names - {"placement", "ticks", "other_placements"} | {"format"}
     assert {s.get("type") for s in outcome["properties"]["error"]["anyOf"]} == {"null", "string"}
 
 
@@ -37,7 +38,8 @@ def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(g
     scene, _ = generated
     props = scene["properties"]
     assert props["format"] == {"enum": ["acconform.scene/1", "acconform.scene/2", "acconform.scene/3", "acconform.scene/4",
-                                        "acconform.scene/5", "acconform.scene/6", "acconform.scene/7"]}
+                                        "acconform.scene/5", "acconform.scene/6", "acconform.scene/7",
+                                        "acconform.scene/8"]}
     assert {"environments", "env_cells"} <= set(props) and not {"environments", "env_cells"} & set(scene["required"])
     landblock = props["landblocks"]["items"]
     assert landblock["required"] == ["id"] and {"heights", "terrain"} <= set(landblock["properties"])
@@ -65,14 +67,17 @@ def test_the_schemas_name_every_tick_record_field_and_the_tick_formats(generated
     ticks = scene["properties"]["ticks"]
     assert "ticks" not in scene["required"] and set(ticks["required"]) == {"driver", "start", "steps"}
     step = ticks["properties"]["steps"]["items"]
-    assert set(step["properties"]) == {"dt", *TICK_INPUTS} and step["required"] == ["dt"]
+    assert set(step["properties"]) == {"dt", "others", *TICK_INPUTS} and step["required"] == ["dt"]
     assert "end" not in scene["properties"]["mover"]["required"]  # a tick scene's mover has none
     tick = outcome["properties"]["ticks"]["items"]
-    assert set(tick["properties"]) == {f.name for f in fields(TickState)}
-    # an errored tick writes the defaults; a tick of a mover without a motion table has no motion
-    assert set(tick["required"]) == {f.name for f in fields(TickState)} - {"error", "motion"}
+    assert set(tick["properties"]) == {f.name for f in fields(TickState)} - {"id"}  # only an entry of others has one
+    # an errored tick writes the defaults; a tick of a mover without a motion table has no motion; only a scene with
+    # other movers has their states and the CollisionTables, and only their entries an id
+    assert set(tick["required"]) == {f.name for f in fields(TickState)} - {"error", "motion", "collisions", "others", "id"}
     assert outcome["properties"]["format"] == {"enum": ["acconform.outcome/2", "acconform.outcome/3", "acconform.outcome/4",
-                                                        "acconform.outcome/5"]}
+                                                        "acconform.outcome/5", "acconform.outcome/6"]}
+    other = tick["properties"]["others"]["items"]
+    assert "id" in other["required"] and not {"motion", "others", "error"} & set(other["properties"])
 
 
 def test_the_outcome_schema_names_every_field_of_a_ticks_motion_layer(generated):

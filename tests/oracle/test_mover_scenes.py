@@ -15,7 +15,7 @@ import pytest
 
 from acconform.compare import compare
 from acconform.errors import InvalidScene
-from acconform.outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V5 as OUTCOME_FORMAT_V5, CollisionState, OtherTick, Outcome
+from acconform.outcome import FORMAT as OUTCOME_FORMAT, FORMAT_V5 as OUTCOME_FORMAT_V5, CollisionState, Outcome
 from acconform.oracle.pack import PACK_VERSION, pack_scene, unpack_outcome
 from acconform.protocol import dat_from_json, dat_json, scene_features
 from acconform.dat import dat_world
@@ -104,8 +104,8 @@ def test_an_outcome_with_other_movers_is_format_6_and_reads_back():
 def test_the_comparator_names_the_tick_the_other_mover_and_the_field():
     outcome = recorded_outcomes(DATA, "mono")[HEAD_ON]
     last = outcome.ticks[-1]
-    moved = replace(last.others[0].tick, origin=(60.0, 62.5, 20.0))
-    other = replace(outcome, ticks=outcome.ticks[:-1] + (replace(last, others=(OtherTick(MONSTER, moved),)),))
+    moved = replace(last.others[0], origin=(60.0, 62.5, 20.0))
+    other = replace(outcome, ticks=outcome.ticks[:-1] + (replace(last, others=(moved,)),))
     assert [d.field for d in compare(other, outcome)] == [f"ticks[{len(outcome.ticks) - 1}].others[0x80000001].origin[1]"]
     touched = replace(last, collisions=(CollisionState(MONSTER, 0.5, False),))
     table = replace(outcome, ticks=outcome.ticks[:-1] + (touched,))
@@ -130,8 +130,8 @@ def test_the_port_answers_each_mover_scene_as_ace_did_every_tick(runtime):
 
 def test_ace_stops_a_player_and_a_monster_walking_into_each_other_each_with_the_other_in_its_table():
     last = recorded_outcomes(DATA, "mono")[HEAD_ON].ticks[-1]
-    assert last.origin[1] < last.others[0].tick.origin[1]  # they met and stopped, the player short of the monster
-    assert [c.id for c in last.collisions] == [MONSTER] and [c.id for c in last.others[0].tick.collisions] == [0x50000001]
+    assert last.origin[1] < last.others[0].origin[1]  # they met and stopped, the player short of the monster
+    assert [c.id for c in last.collisions] == [MONSTER] and [c.id for c in last.others[0].collisions] == [0x50000001]
 
 
 def test_ace_lets_npk_players_pass_through_each_other_and_stops_pk_players():
@@ -139,9 +139,9 @@ def test_ace_lets_npk_players_pass_through_each_other_and_stops_pk_players():
     passed = ace["two_players_run_through_each_other"].ticks[-1]
     stopped = ace["pk_players_run_into_each_other"].ticks[-1]
     mixed = ace["pk_and_npk_players_pass_through_each_other"].ticks[-1]
-    assert passed.origin[1] > passed.others[0].tick.origin[1] and not passed.collisions
-    assert mixed.origin[1] > mixed.others[0].tick.origin[1]
-    assert stopped.origin[1] < stopped.others[0].tick.origin[1] and [c.id for c in stopped.collisions] == [PLAYER_2]
+    assert passed.origin[1] > passed.others[0].origin[1] and not passed.collisions
+    assert mixed.origin[1] > mixed.others[0].origin[1]
+    assert stopped.origin[1] < stopped.others[0].origin[1] and [c.id for c in stopped.collisions] == [PLAYER_2]
 
 
 @pytest.mark.live_oracle

@@ -17,10 +17,12 @@ def _cells(cells):
 
 def _placement(p):
     """Facade.WritePlacement: byte 0, or 1 then the placement's fields."""
+    """Facade.WritePlacement's bytes, then WriteOtherPlacements' for a scene without other movers (-1)."""
+    none = struct.pack("<i", -1)
     if p is None:
-        return b"\0"
+        return b"\0" + none
     return b"\1" + struct.pack(f"<iI3f4fIIi{len(p.shadow_cells)}I", p.result, p.cell, *p.origin, *p.orientation,
-                                p.cur_cell, p.transient_state, len(p.shadow_cells), *p.shadow_cells)
+                                p.cur_cell, p.transient_state, len(p.shadow_cells), *p.shadow_cells) + none
 
 
 PLACED = PlacementState(2, 0xA9B40100, (63.0, 60.0, 20.0), (1.0, 0.0, 0.0, 0.0), 0, 0x83, (0xA9B40100, 0xA9B40101))
@@ -101,8 +103,9 @@ def test_a_packed_scene_carries_its_placement_after_the_end_position():
     placed = pack_scene(s.replace(engine_mode="client", mover=replace(
         s.mover, placement=Placement(int(SetPositionFlags.Slide), True))))
     # then the player's MotionTableId (none) and its PlayerKillerStatus (NPK, 2)
-    assert plain[-14:] == struct.pack("<BiBII", 0, 0, 0, 0, 2)
-    assert placed[-14:] == struct.pack("<BiBII", 1, int(SetPositionFlags.Slide), 1, 0, 2)
+    # then the other movers: none
+    assert plain[-18:] == struct.pack("<BiBIIi", 0, 0, 0, 0, 2, 0)
+    assert placed[-18:] == struct.pack("<BiBIIi", 1, int(SetPositionFlags.Slide), 1, 0, 2, 0)
 
 
 def test_packing_is_deterministic_and_shares_the_height_table_bytes():
@@ -131,7 +134,7 @@ def test_a_packed_scene_carries_its_indoor_records_after_its_landblocks():
         got.append((kind, ident, bytes(data[pos + 9:pos + 9 + length])))
         pos += 9 + length
     want = dat.environment_records(scene) + dat.cell_dat_records(scene)
-    assert version == PACK_VERSION == 12 and nlb == 1 and ticks == 0
+    assert version == PACK_VERSION == 13 and nlb == 1 and ticks == 0
     assert got == [({"Environment": 2, "EnvCell": 3, "LandblockInfo": 4}[r.kind], r.id, r.data) for r in want]
     assert struct.unpack_from("<i", data, pos) == (1,)  # then the statics, as before
     assert struct.unpack_from("<i", pack_scene(PROBE["flat 1-step walk"]), 6 + 1024 + 4 + 256) == (0,)
@@ -164,13 +167,14 @@ def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_
     want = (struct.pack("<BBdi", 1, 1, 1234.5, 2)
             + struct.pack("<dI", t1, 1 | 4 | 32 | 256) + struct.pack("<I", int(PhysicsState.Gravity))
             + struct.pack("<3f3f", 1.0, 2.0, 3.0, 0.0, 0.5, 4.0) + struct.pack("<I3f4f", 0xA9B40001, 12.0, 12.5, 20.0, 1, 0, 0, 0)
+            + struct.pack("<i", 0)  # no other mover's inputs
             + struct.pack("<dI", t2, 2 | 8 | 16 | 64 | 128 | 256) + struct.pack("<I", int(TransientState.Active))
             + struct.pack("<12f", 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 3.0, 0.0, 0.0, 0.0, -1.0)
-            + struct.pack("<I3f4f", 0xA9B40009, 12.0, 24.5, 20.0, 0, 0, 0, 1))
+            + struct.pack("<I3f4f", 0xA9B40009, 12.0, 24.5, 20.0, 0, 0, 0, 1) + struct.pack("<i", 0))
     assert data[5:5 + len(want)] == want
     assert data[5 + len(want):5 + len(want) + 1024] == struct.pack("<256f", *scene.land_height_table)
     # the mover has no end: an empty position is packed where a transition scene's end goes
-    assert data[-14 - 32:-14] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    assert data[-18 - 32:-18] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
 
 
 def _tick_bytes(t):
@@ -183,7 +187,7 @@ def _tick_bytes(t):
                               *t.acceleration, *t.omega, *t.cached_velocity, t.state, t.transient_state,
                               t.contact_plane_cell, *t.contact_plane.normal, t.contact_plane.d, *t.sliding_normal,
                               t.jumped_this_frame, len(t.shadow_cells)) + struct.pack(f"<{len(t.shadow_cells)}I", *t.shadow_cells) \
-        + _motion_bytes(t.motion)
+        + _motion_bytes(t.motion) + b"\0"  # no other movers
 
 
 def _commands(c):
@@ -252,8 +256,9 @@ def test_a_packed_motion_scene_carries_its_table_and_animations_with_the_movers_
         "<IIIIfIIfIIf", step.hold_key, step.style, step.forward, step.forward_hold_key, step.forward_speed, step.sidestep,
         step.sidestep_hold_key, step.sidestep_speed, step.turn, step.turn_hold_key, step.turn_speed)
     assert data[5 + 14:5 + 14 + len(want)] == want
-    assert data[-8:] == struct.pack("<II", MOTION_TABLE_ID, 2)  # the table, then the Player's status (NPK)
+    # the table, then the Player's status (NPK), then no other movers
+    assert data[-12:] == struct.pack("<IIi", MOTION_TABLE_ID, 2, 0)
     pk = pack_scene(scene.replace(mover=dataclasses.replace(scene.mover, player_killer_status=4)))
-    assert pk[:-4] == data[:-4] and pk[-4:] == struct.pack("<I", 4)  # PK
+    assert pk[:-8] == data[:-8] and pk[-8:] == struct.pack("<Ii", 4, 0)  # PK
     for kind, ident in ((5, MOTION_TABLE_ID), (6, ANIMATION_BASE), (6, ANIMATION_BASE + 4)):
         assert struct.pack("<BI", kind, ident) in data

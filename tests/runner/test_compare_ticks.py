@@ -11,7 +11,7 @@ import pytest
 
 from acconform.compare import Difference, compare, first_tick_difference
 from acconform.errors import InvalidScene
-from acconform.outcome import (FORMAT, FORMAT_V4, CommandState, MotionTickState, Outcome, PlacementState, PlaneState,
+from acconform.outcome import (FORMAT_V5 as FORMAT, FORMAT_V4, CommandState, MotionTickState, Outcome, PlacementState, PlaneState,
                                TickState)
 
 TICK = TickState(True, 1000.0999999999999, 0xA9B40001, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0),
