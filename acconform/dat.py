@@ -276,9 +276,12 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
 
 
 def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
-          placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0) -> bytes:
+          placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0,
+          holding_locations=()) -> bytes:
     """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, else 0), the parts,
-    the DefaultScale (one vector per part), no holding locations or connection points, the placement
+    the DefaultScale (one vector per part), the HoldingLocations (`holding_locations`: (location id, part
+    id, scene Frame) triples in the order given, which is the Dictionary's; none by default; a part id
+    at or past the parts holds at the object's Position, and -1 throws in UpdateChild), no connection points, the placement
     frames (none, or with `placement` (a scene Frame per part) one: key 0, Placement.Default, its
     AnimationFrame's frames and no hooks), the cylspheres ((low point, radius, height)) and spheres
     ((centre, radius)), Height and Radius 0, the step heights, zero sorting and selection spheres, no
@@ -291,7 +294,10 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
         if len(default_scale) != len(parts):
             raise ValueError(f"a DefaultScale has one vector per part: {len(default_scale)} for {len(parts)} parts")
         out += [_3f.pack(*v) for v in default_scale]
-    out.append(_i32.pack(0) * 2)  # HoldingLocations, ConnectionPoints
+    out.append(_i32.pack(len(holding_locations)))  # HoldingLocations: Dictionary<int, LocationType>
+    for location_id, part_id, f in holding_locations:
+        out.append(_i32.pack(location_id) + _i32.pack(part_id) + frame(f))
+    out.append(_i32.pack(0))  # ConnectionPoints
     if placement is None:
         out.append(_i32.pack(0))  # PlacementFrames
     else:
