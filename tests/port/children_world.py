@@ -1,9 +1,9 @@
 """A parent with holding locations and a child, as DAT records (acconform/dat.py) the port and ACE both read.
 
-The parent's Setup has two parts with a default placement (so PartArray.UpdateParts places each
+The parent's Setup has two parts with a default placement, a sphere (so a tick moves it), (so PartArray.UpdateParts places each
 part) and three holding locations: RIGHT_HAND on part 1, SHIELD at part 7 (past its two parts: the
 parent's Position) and BAD_PART on part -1 (a List index ACE's UpdateChild throws on). The child's
-Setup has one part and no placement. test_children.py runs them through the port, test_children_live.py
+Setup has one part, no placement, and a sorting sphere of radius 1 (its cells when parented). test_children.py runs them through the port, test_children_live.py
 through ACE's own PhysicsObj too.
 """
 
@@ -25,6 +25,7 @@ SHIELD = 3  # ParentLocation.Shield
 BAD_PART = 9
 MISSING = 2  # ParentLocation.LeftHand: no holding location there
 
+CHILD_SORTING_SPHERE = ((0.0, 0.0, 0.5), 1.0)  # reaches the next cell from within 1 m of an edge
 PART_FRAMES = (Frame((0.0, 0.0, 1.0)), Frame((0.5, 0.0, 1.5)))
 HOLDING = ((RIGHT_HAND, 1, Frame((0.25, 0.0, 0.0))),
            (SHIELD, 7, Frame((0.0, 0.5, 0.0), (0.0, 0.0, 0.0, 1.0))),
@@ -35,9 +36,10 @@ def records() -> dict[int, bytes]:
     """id -> the record's bytes: the parent's two parts and Setup, the child's part and Setup."""
     out = {g: dat.gfx_obj_mesh(g, []) for g in PARENT_PARTS}
     out[PARENT_SETUP] = dat.setup(PARENT_SETUP, list(PARENT_PARTS), placement=list(PART_FRAMES),
-                                  holding_locations=HOLDING)
+                                  holding_locations=HOLDING, spheres=[((0.0, 0.0, 0.5), 0.5)])
     out[CHILD_PART] = dat.gfx_obj_mesh(CHILD_PART, [])
-    out[CHILD_SETUP] = dat.setup(CHILD_SETUP, [CHILD_PART], spheres=[((0.0, 0.0, 0.25), 0.25)])
+    out[CHILD_SETUP] = dat.setup(CHILD_SETUP, [CHILD_PART], spheres=[((0.0, 0.0, 0.25), 0.25)],
+                                 sorting_sphere=CHILD_SORTING_SPHERE)
     return out
 
 

@@ -290,10 +290,11 @@ def test_a_child_parented_in_a_cell_enters_the_parents_cell_and_shadows_the_cell
     assert parenting.set_parent(child, parent, w.SHIELD, 0, lscape)
     assert child.cur_cell is cell and child.position.obj_cell_id == 0xA9B40001
     assert child in cell.object_list
-    # Position (23.9, 12, 0), identity, + (0, 0.5, 0); the sorting sphere is zero, radius 0:
-    # find_cell_list with one sphere of radius 0 at the child: its own cell only
+    # Position (23.9, 12, 0), identity, + (0, 0.5, 0); the sorting sphere (centre 0.5 up, radius 1)
+    # at (23.9, 12.5, 0.5) reaches over x 24 into the next cell east (x index 1: cell 9)
     assert bits(child.position.frame) == expect((23.9, 12.5, 0.0), HALF_TURN)
-    assert list(child.shadow_objects) == [0xA9B40001]
+    assert list(child.shadow_objects) == [0xA9B40001, 0xA9B40009]
+    assert all(any(s.physics_obj is child for s in lscape.get_landcell(c).shadow_object_list) for c in child.shadow_objects)
 
 
 @pytest.mark.anchor("CPhysicsObj::leave_cell")
