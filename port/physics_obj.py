@@ -601,7 +601,9 @@ class PhysicsObj:
         else:
             self.handle_visible_cells_non_player()
 
-        # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover
+        # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover; a child's known
+        # players only file it in their ObjectMaint tables (handle_visible_obj) and track it (enqueue_obj: a
+        # Player's network state), nothing the physics reads
 
     @anchor(None, "PhysicsObj.cs:handle_visible_cells_non_player")
     def handle_visible_cells_non_player(self) -> None:
