@@ -278,12 +278,16 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
 
 
 def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
-          placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0) -> bytes:
+          placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0,
+          holding_locations=(), sorting_sphere=((0.0, 0.0, 0.0), 0.0)) -> bytes:
     """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, else 0), the parts,
-    the DefaultScale (one vector per part), no holding locations or connection points, the placement
+    the DefaultScale (one vector per part), the HoldingLocations (`holding_locations`: (location id, part
+    id, scene Frame) triples in the order given, which is the Dictionary's; none by default; a part id
+    at or past the parts holds at the object's Position, and -1 throws in UpdateChild), no connection points, the placement
     frames (none, or with `placement` (a scene Frame per part) one: key 0, Placement.Default, its
     AnimationFrame's frames and no hooks), the cylspheres ((low point, radius, height)) and spheres
-    ((centre, radius)), Height and Radius 0, the step heights, zero sorting and selection spheres, no
+    ((centre, radius)), Height and Radius 0, the step heights, the sorting sphere ((centre, radius), zero by
+    default: what a child's calc_cross_cells finds its cells with) and a zero selection sphere, no
     lights, the DefaultAnimation and DefaultMotionTable given (0, none, by default), no default script,
     sound table or script table."""
     flags = SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0
@@ -293,7 +297,10 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
         if len(default_scale) != len(parts):
             raise ValueError(f"a DefaultScale has one vector per part: {len(default_scale)} for {len(parts)} parts")
         out += [_3f.pack(*v) for v in default_scale]
-    out.append(_i32.pack(0) * 2)  # HoldingLocations, ConnectionPoints
+    out.append(_i32.pack(len(holding_locations)))  # HoldingLocations: Dictionary<int, LocationType>
+    for location_id, part_id, f in holding_locations:
+        out.append(_i32.pack(location_id) + _i32.pack(part_id) + frame(f))
+    out.append(_i32.pack(0))  # ConnectionPoints
     if placement is None:
         out.append(_i32.pack(0))  # PlacementFrames
     else:
@@ -309,7 +316,7 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     for center, radius in spheres:
         out.append(sphere(center, radius))
     out.append(_4f.pack(0.0, 0.0, step_up, step_down))  # Height, Radius, StepUpHeight, StepDownHeight
-    out.append(sphere((0.0, 0.0, 0.0), 0.0) * 2)  # SortingSphere, SelectionSphere
+    out.append(sphere(*sorting_sphere) + sphere((0.0, 0.0, 0.0), 0.0))  # SortingSphere, SelectionSphere
     out.append(_i32.pack(0))  # Lights
     # DefaultAnimation, DefaultScript, DefaultMotionTable, DefaultSoundTable, DefaultScriptTable
     out.append(_u32.pack(default_animation) + _u32.pack(0) + _u32.pack(default_motion_table) + _u32.pack(0) * 2)

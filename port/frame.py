@@ -65,8 +65,9 @@ class AFrame:
     @anchor(None, "AFrame.cs:AFrame(DatLoader.Entity.Frame)", "the DAT constructor")
     def from_dat(frame) -> "AFrame":
         """The quaternion is built as mono's class whatever the run's runtime: it is only data.
-        The one caller (PartArray.UpdateParts) passes this frame as Combine's second frame, whose
-        fields are read but whose runtime is never asked (the first frame's runtime computes)."""
+        Its callers (PartArray.UpdateParts; PhysicsObj.add_child, whose holding frame UpdateChild
+        combines) pass this frame as Combine's second frame, whose fields are read but whose
+        runtime is never asked (the first frame's runtime computes)."""
         q = frame.orientation
         return AFrame(frame.origin, q.runtime.quaternion(q.x, q.y, q.z, q.w))
 

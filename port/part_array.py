@@ -1,4 +1,4 @@
-"""PartArray and PhysicsPart: PartArray (AddPartsShadow, Update, HandleMovement, HandleEnterWorld, HandleExitWorld, AnimationDone, CheckForCompletedMotions, DoInterpretedMotion, HasAnims, InitializeMotionTables, SetMotionTableID, StopCompletelyInternal, StopInterpretedMotion, RemoveParts, AllowsFreeHeading, CacheHasPhysicsBSP, CreateMesh, CreateSetup, DestroyParts, DestroySetup, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, InitDefaults, InitParts, SetCellID, SetFrame, SetMeshID, SetPlacementFrame, SetScaleInternal, SetSetupID, UpdateParts, calc_cross_cells_static), PhysicsPart (InitEmpty, SetPart, LoadGfxObjArray, MakePhysicsPart, MorphToExistingObject, GetBoundingBox, FindObjCollisions).
+"""PartArray and PhysicsPart: PartArray (AddPartsShadow, Update, HandleMovement, HandleEnterWorld, HandleExitWorld, AnimationDone, CheckForCompletedMotions, DoInterpretedMotion, HasAnims, InitializeMotionTables, SetMotionTableID, StopCompletelyInternal, StopInterpretedMotion, RemoveParts, SetNoDrawInternal, GetSortingSphere, AllowsFreeHeading, CacheHasPhysicsBSP, CreateMesh, CreateSetup, DestroyParts, DestroySetup, FindObjCollisions, GetCylSphere, GetNumCylsphere, GetNumSphere, GetSphere, GetStepDownHeight, GetStepUpHeight, InitDefaults, InitParts, SetCellID, SetFrame, SetMeshID, SetPlacementFrame, SetScaleInternal, SetSetupID, UpdateParts, calc_cross_cells_static), PhysicsPart (InitEmpty, SetPart, LoadGfxObjArray, MakePhysicsPart, MorphToExistingObject, SetNoDraw, GetBoundingBox, FindObjCollisions).
 
 ACE's Physics/PartArray.cs and Physics/PhysicsPart.cs. A static object's PartArray is made by
 PhysicsObj.makeObject from its DAT record: CreateMesh for a GfxObj id (one part over a simple
@@ -81,6 +81,11 @@ class PhysicsPart:
         self.gfx_obj_scale = template.gfx_obj_scale
         self.pos = template.pos
         return True
+
+    @anchor("CPhysicsPart::SetNoDraw", "PhysicsPart.cs:SetNoDraw")
+    def set_no_draw(self, no_draw: bool) -> None:
+        """Graphics omitted from server (ACE): nothing happens."""
+        return None
 
     @anchor("CPhysicsPart::GetBoundingBox", "PhysicsPart.cs:GetBoundingBox")
     def get_bounding_box(self):
@@ -356,6 +361,21 @@ class PartArray:
         for part in self.parts:
             if part is not None:
                 part.pos.obj_cell_id = cell_id
+
+    @anchor("CPartArray::SetNoDrawInternal", "PartArray.cs:SetNoDrawInternal")
+    def set_no_draw_internal(self, no_draw: bool) -> None:
+        if self.setup is None:
+            return
+        for part in self.parts:
+            if part is not None:
+                part.set_no_draw(no_draw)
+
+    @anchor("CPartArray::GetSortingSphere", "PartArray.cs:GetSortingSphere")
+    def get_sorting_sphere(self):
+        """PhysicsGlobals.DefaultSortingSphere (never assigned: null) without a Setup."""
+        if self.setup is None:
+            return None
+        return self.setup.sorting_sphere
 
     @anchor("CPartArray::calc_cross_cells_static", "PartArray.cs:calc_cross_cells_static")
     def calc_cross_cells_static(self, cell, cell_array, lscape) -> None:

@@ -1,4 +1,4 @@
-"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChildrenInternal, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_particle_shadow_to_cell, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, track_object_collision, report_collision_end, report_object_collision_end, report_environment_collision, report_object_collision, build_collision_profile (both), get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChild, UpdateChildrenInternal, add_child (both), set_parent (both), unparent_children, unset_parent, leave_world, clear_transient_states, recalc_cross_cells, calc_cross_cells, set_cell_id_recursive, SetPlacementFrame, SetPlacementFrameInternal, handle_visible_cells_non_player, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_particle_shadow_to_cell, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, track_object_collision, report_collision_end, report_object_collision_end, report_environment_collision, report_object_collision, build_collision_profile (both), get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
 The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
 record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
@@ -42,8 +42,9 @@ from .constants import (COLLISION_RECORD_LIFETIME, DEFAULT_ELASTICITY, DEFAULT_F
 from .frame import AFrame, Position
 from . import land_defs
 from .cell import obj_cell
+from .child_list import ChildList
 from .part_array import PLACEMENT_FRAME_ID, PartArray
-from .errors import ArgumentException
+from .errors import ArgumentException, ArgumentOutOfRangeException, InvalidOperationException
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
 from .transition.transition import Transition
@@ -114,7 +115,8 @@ class PhysicsObj:
     shadow_objects: dict = field(default_factory=dict)  # cell id -> ShadowObj (a .NET Dictionary)
     num_shadow_objects: int = 0
     cell_array: object = None  # transition.cell_array.CellArray (the object's own, for its placement)
-    children: list = field(default_factory=list)  # ChildList.Objects (always empty here)
+    children: ChildList = field(default_factory=ChildList)  # Children (the constructor makes an empty one)
+    examination_object: bool = False  # ExaminationObject
     translucency: object = 0.0
     translucency_original: object = 0.0
     acceleration: Vector3 | None = None
@@ -428,8 +430,12 @@ class PhysicsObj:
             self.position.obj_cell_id = cur_pos.obj_cell_id
             if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
                 self.part_array.set_cell_id(cur_pos.obj_cell_id)
-            for child in self.children:
-                raise NotImplementedError("child objects are not ported")
+            if self.children is not None:
+                for i in range(self.children.num_objects):
+                    child = self.children.item(i)
+                    child.position.obj_cell_id = cur_pos.obj_cell_id
+                    if child.part_array is not None and not child.state & PhysicsState.ParticleEmitter:
+                        child.part_array.set_cell_id(cur_pos.obj_cell_id)
         else:
             self.change_cell(transit_cell, transition.lscape)
 
@@ -485,12 +491,12 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::prepare_to_enter_world", "PhysicsObj.cs:prepare_to_enter_world")
     def prepare_to_enter_world(self) -> None:
-        """ObjMaint's destruction queue (RemoveObjectToBeDestroyed) is not kept: nothing in the
-        physics reads it."""
+        """ObjMaint's destruction queue (RemoveObjectToBeDestroyed, for the object and each child) is
+        not kept: nothing in the physics reads it."""
         self.update_time = self.timer.current_time
 
-        for child in self.children:
-            raise NotImplementedError("child objects are not ported")
+        for child in self.children.objects:
+            pass  # ObjMaint.RemoveObjectToBeDestroyed(child)
 
         if not self.state & PhysicsState.Static:
             if not self.transient_state & TransientState.Active:
@@ -500,11 +506,12 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::prepare_to_leave_visibility", "PhysicsObj.cs:prepare_to_leave_visibility")
     def prepare_to_leave_visibility(self) -> bool:
-        """ObjMaint.AddObjectToBeDestroyed (a queue nothing here reads) is not kept."""
+        """ObjMaint.AddObjectToBeDestroyed (a queue nothing here reads, for the object and each
+        child) is not kept."""
         self.remove_shadows_from_cells()
         self.leave_cell(False)
-        for child in self.children:
-            raise NotImplementedError("child objects are not ported")
+        for child in self.children.objects:
+            pass  # ObjMaint.AddObjectToBeDestroyed(child)
         return True
 
     @anchor("CPhysicsObj::leave_cell", "PhysicsObj.cs:leave_cell")
@@ -512,7 +519,7 @@ class PhysicsObj:
         if self.cur_cell is None:
             return
         self.cur_cell.remove_object(self)
-        for child in self.children:
+        for child in self.children.objects:
             child.leave_cell(is_changing_cell)
         # removed lighting (ACE)
         self.cur_cell = None
@@ -602,7 +609,9 @@ class PhysicsObj:
         else:
             self.handle_visible_cells_non_player()
 
-        # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover
+        # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover; a child's known
+        # players only file it in their ObjectMaint tables (handle_visible_obj) and track it (enqueue_obj: a
+        # Player's network state), nothing the physics reads
 
     @anchor(None, "PhysicsObj.cs:handle_visible_cells_non_player")
     def handle_visible_cells_non_player(self) -> None:
@@ -871,8 +880,17 @@ class PhysicsObj:
         if self.state & PhysicsState.HasPhysicsBSP:
             self.find_bbox_cell_list(self.cell_array, lscape)
         else:
-            raise NotImplementedError("calc_cross_cells without a physics BSP is not reached (SetPositionInternal "
-                                      "calls it only with HasPhysicsBSP)")
+            # SetPositionInternal calls it only with HasPhysicsBSP; recalc_cross_cells (a child) without
+            if self.part_array is not None and self.part_array.get_num_cylsphere() != 0:
+                obj_cell.find_cell_list_cyl(lscape, self.position, self.part_array.get_num_cylsphere(),
+                                            self.part_array.get_cyl_sphere(), self.cell_array, None)
+            else:
+                # added sorting sphere null check (ACE)
+                if self.part_array is not None and self.part_array.setup.sorting_sphere is not None:
+                    sphere = self.part_array.get_sorting_sphere()
+                else:
+                    sphere = _dummy_sphere(self.mode)
+                obj_cell.find_cell_list_sphere(lscape, self.position, sphere, self.cell_array, None)
         self.remove_shadows_from_cells()
         self.add_shadows_to_cell(self.cell_array)
 
@@ -893,7 +911,7 @@ class PhysicsObj:
         if self.part_array is None:
             return
         new_cell.add_object(self)
-        for child in self.children:
+        for child in self.children.objects:
             child.enter_cell(new_cell, lscape)
 
         self.cur_cell = new_cell
@@ -906,11 +924,214 @@ class PhysicsObj:
             if self.cur_landblock is not None:
                 self.cur_landblock.add_server_object(self)
 
+    # ------------------------------------------------------------------ children (ChildList, set_parent)
+    @anchor("CPhysicsObj::UpdateChild", "PhysicsObj.cs:UpdateChild")
+    def update_child(self, child_obj: "PhysicsObj", part_idx: int, child_frame: AFrame) -> None:
+        """The child's frame is its holding frame in the parent's part `part_idx`, or in the parent's
+        Position for an index past the parts. A part's Pos is what PartArray.UpdateParts last made it:
+        on the server only an object with a physics BSP updates its parts in set_frame, so a child
+        held by another object's part stays where the part was."""
+        if part_idx >= self.part_array.num_parts:
+            frame = AFrame.combine(self.position.frame, child_frame)
+        else:
+            if part_idx < 0:  # Parts[-1]: a List's indexer throws (a part index -1, add_child's "no part")
+                raise ArgumentOutOfRangeException(f"Parts[{part_idx}] of a PartArray of {self.part_array.num_parts} parts")
+            frame = AFrame.combine(self.part_array.parts[part_idx].pos.frame, child_frame)
+
+        child_obj.set_frame(frame)
+
+        if child_obj.particle_manager is not None:
+            child_obj.particle_manager.update_particles()
+        if child_obj.script_manager is not None:
+            child_obj.script_manager.update_scripts()
+
     @anchor("CPhysicsObj::UpdateChildrenInternal", "PhysicsObj.cs:UpdateChildrenInternal")
     def update_children_internal(self) -> None:
-        if self.part_array is None or not self.children:
+        if self.part_array is None or self.children is None or self.children.num_objects == 0:
             return
-        raise NotImplementedError("child objects (UpdateChild) are not ported")
+
+        for i in range(len(self.children.objects)):  # Objects.Count, not NumObjects (ACE)
+            self.update_child(self.children.objects[i], self.children.part_numbers[i], self.children.frames[i])
+
+    @anchor("CPhysicsObj::add_child", "PhysicsObj.cs:add_child(PhysicsObj, int)")
+    def add_child(self, obj: "PhysicsObj", where: int) -> bool:
+        """At the Setup's holding location `where` (ParentLocation): its part and frame."""
+        if self.part_array is None or obj.equals(self):
+            return False
+
+        setup = self.part_array.setup.get_holding_location(where)
+        if setup is None:
+            return False
+
+        if self.children is None:
+            self.children = ChildList()
+        self.children.add_child(obj, AFrame.from_dat(setup.frame), setup.part_id, where)
+        return True
+
+    @anchor("CPhysicsObj::add_child", "PhysicsObj.cs:add_child(PhysicsObj, int, AFrame)")
+    def add_child_frame(self, obj: "PhysicsObj", part_idx: int, frame: AFrame) -> bool:
+        """At part `part_idx` (-1: the Position) with `frame` itself (not a copy), location 0."""
+        if obj.equals(self):
+            return False
+
+        if self.part_array is None or part_idx != -1 and part_idx >= self.part_array.num_parts:
+            return False
+
+        if self.children is None:
+            self.children = ChildList()
+        self.children.add_child(obj, frame, part_idx, 0)
+        return True
+
+    @anchor("CPhysicsObj::set_parent", "PhysicsObj.cs:set_parent(PhysicsObj, int)")
+    def set_parent(self, obj: "PhysicsObj | None", idx: int, lscape) -> bool:
+        """Held at `obj`'s holding location `idx`. `lscape` is the run's world (ACE's static LScape),
+        which change_cell and recalc_cross_cells read."""
+        if obj is None:
+            return False
+        if not obj.add_child(self, idx):
+            return False
+
+        self.unset_parent()
+        self.leave_world()
+
+        self.parent = obj
+
+        if obj.cur_cell is not None:
+            self.change_cell(obj.cur_cell, lscape)
+
+            if obj.children is not None:
+                index = obj.children.find_child_index(self)
+                if index != -1:
+                    obj.update_child(self, obj.children.part_numbers[index], obj.children.frames[index])
+                    self.recalc_cross_cells(lscape)
+
+        if self.parent.state & PhysicsState.Hidden:
+            self.state |= PhysicsState.NoDraw
+            if self.part_array is not None:
+                self.part_array.set_no_draw_internal(True)
+
+        return True
+
+    @anchor("CPhysicsObj::set_parent", "PhysicsObj.cs:set_parent(PhysicsObj, int, AFrame)")
+    def set_parent_frame(self, obj: "PhysicsObj | None", part_idx: int, frame: AFrame, lscape) -> bool:
+        """Held at `obj`'s part `part_idx` with `frame` (ParticleEmitter.SetParenting's call)."""
+        if obj is None:
+            return False
+        if not obj.add_child_frame(self, part_idx, frame):
+            return False
+
+        self.examination_object = obj.examination_object
+
+        self.unset_parent()
+        self.leave_world()
+
+        self.parent = obj
+
+        if obj.cur_cell is not None:
+            self.change_cell(obj.cur_cell, lscape)
+            obj.update_child(self, part_idx, frame)
+            self.recalc_cross_cells(lscape)
+
+        return True
+
+    @anchor("CPhysicsObj::unparent_children", "PhysicsObj.cs:unparent_children")
+    def unparent_children(self) -> None:
+        """``foreach (var child in Children.Objects) child.unset_parent()``: each unset_parent removes
+        the child from the list being walked (RemoveChild, the one change that list sees, shortens
+        it), and .NET's List enumerator then throws InvalidOperationException at its next MoveNext,
+        as ACE does after the first child (nothing in ACE calls this)."""
+        if self.children is None:
+            return
+        objects = self.children.objects
+        i = 0
+        while i < len(objects):
+            count = len(objects)
+            child = objects[i]
+            i += 1
+            child.unset_parent()
+            if len(objects) != count:
+                raise InvalidOperationException("Collection was modified; enumeration operation may not execute.")
+
+    @anchor("CPhysicsObj::unset_parent", "PhysicsObj.cs:unset_parent")
+    def unset_parent(self) -> None:
+        """ACE clears Hidden (not the NoDraw set_parent set) when the parent is hidden."""
+        if self.parent is None:
+            return
+        if self.parent.children is not None:
+            self.parent.children.remove_child(self)
+        if self.parent.state & PhysicsState.Hidden:
+            self.state &= ~PhysicsState.Hidden
+            if self.part_array is not None:
+                self.part_array.set_no_draw_internal(False)
+        self.parent = None
+        self.update_time = self.timer.current_time
+        self.clear_transient_states()
+
+    @anchor("CPhysicsObj::leave_world", "PhysicsObj.cs:leave_world")
+    def leave_world(self) -> None:
+        """ObjMaint.RemoveObjectToBeDestroyed (a queue nothing here reads) is not kept."""
+        self.report_collision_end(True)
+        self.transient_state &= ~TransientState.Active
+        self.remove_shadows_from_cells()
+        self.leave_cell(False)
+
+        self.position.obj_cell_id = 0
+        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+            self.part_array.set_cell_id(0)
+
+        self.transient_state &= ~TransientState.Contact
+        self.calc_acceleration()
+        walkable = bool(self.transient_state & TransientState.OnWalkable)
+        self.transient_state &= ~(TransientState.OnWalkable | TransientState.WaterContact)
+        if self.movement_manager is not None and walkable:
+            self.movement_manager.leave_ground()
+        self.calc_acceleration()
+        self.transient_state = 0
+
+    @anchor("CPhysicsObj::clear_transient_states", "PhysicsObj.cs:clear_transient_states")
+    def clear_transient_states(self) -> None:
+        self.transient_state &= ~TransientState.Contact
+        self.calc_acceleration()
+        walkable = bool(self.transient_state & TransientState.OnWalkable)
+        self.transient_state &= ~(TransientState.OnWalkable | TransientState.WaterContact)
+        if self.movement_manager is not None and walkable:
+            self.movement_manager.leave_ground()
+        self.calc_acceleration()
+        self.transient_state = 0
+
+    @anchor("CPhysicsObj::recalc_cross_cells", "PhysicsObj.cs:recalc_cross_cells")
+    def recalc_cross_cells(self, lscape) -> None:
+        if self.part_array is None:
+            return
+        if self.position.obj_cell_id != 0:
+            self.calc_cross_cells(lscape)
+        else:
+            if not self.examination_object or not self.state & PhysicsState.ParticleEmitter:
+                return
+            self.add_particle_shadow_to_cell()
+        for child in self.children.objects:
+            child.recalc_cross_cells(lscape)
+
+    @anchor("CPhysicsObj::set_cell_id_recursive", "PhysicsObj.cs:set_cell_id_recursive")
+    def set_cell_id_recursive(self, new_cell_id: int) -> None:
+        self.set_cell_id(new_cell_id)
+        for i in range(len(self.children.objects)):
+            child = self.children.objects[i]
+            if child is not None:
+                child.set_cell_id_recursive(new_cell_id)
+
+    @anchor("CPhysicsObj::SetPlacementFrame", "PhysicsObj.cs:SetPlacementFrame")
+    def set_placement_frame(self, frame_id: int, send_event: bool) -> bool:
+        return self.set_placement_frame_internal(frame_id)
+
+    @anchor("CPhysicsObj::SetPlacementFrameInternal", "PhysicsObj.cs:SetPlacementFrameInternal")
+    def set_placement_frame_internal(self, frame_id: int) -> bool:
+        result = False
+        if self.part_array is not None:
+            result = self.part_array.set_placement_frame(frame_id)
+            if not self.state & PhysicsState.ParticleEmitter:
+                self.part_array.set_frame(self.position.frame)
+        return result
 
     @anchor("CPhysicsObj::calc_cross_cells_static", "PhysicsObj.cs:calc_cross_cells_static")
     def calc_cross_cells_static(self, lscape) -> None:
@@ -954,8 +1175,17 @@ class PhysicsObj:
             if self.part_array is not None:
                 self.part_array.remove_parts(cell)
         self.num_shadow_objects = 0  # should be ShadowObjects.Count (ACE)
-        for child in self.children:
-            child.remove_shadows_from_cells()
+        i = 0
+        while True:
+            total_childs = 0 if self.children is None else self.children.num_objects
+            if i >= total_childs:
+                break
+            if self.children is not None:
+                child = self.children.item(i)  # Children.Objects[i++] (ACE)
+                i += 1
+                child.remove_shadows_from_cells()
+            else:
+                self.remove_shadows_from_cells()
 
     @anchor("CPhysicsObj::add_particle_shadow_to_cell", "PhysicsObj.cs:add_particle_shadow_to_cell")
     def add_particle_shadow_to_cell(self) -> None:
@@ -990,8 +1220,9 @@ class PhysicsObj:
 
                 if self.part_array is not None:
                     self.part_array.add_parts_shadow(cell, self.num_shadow_objects)
-        for child in self.children:
-            child.add_shadows_to_cell(cell_array)
+        if self.children is not None:
+            for child in self.children.objects:
+                child.add_shadows_to_cell(cell_array)
 
     @anchor("CPhysicsObj::is_completely_visible", "PhysicsObj.cs:is_completely_visible")
     def is_completely_visible(self) -> bool:

@@ -1,9 +1,9 @@
-"""Setup: Setup(), Setup(SetupModel), Get, MakeSimpleSetup -- an object's parts, spheres, cylspheres and dimensions.
+"""Setup: Setup(), Setup(SetupModel), GetHoldingLocation, Get, MakeSimpleSetup -- an object's parts, spheres, cylspheres and dimensions.
 
 ACE's Physics/Setup.cs over DatLoader's SetupModel (``_dat``). A static object's Setup comes from
 its DAT record (`get`, or `make_simple_setup` for a bare GfxObj); the fields the physics reads
 from ``_dat`` (step heights, Height, Radius, AllowFreeHeading, DefaultScale, the placement
-frames, Id) are copied beside the lists the constructor builds. The mover's Setup comes from its
+frames, the holding locations, Id) are copied beside the lists the constructor builds. The mover's Setup comes from its
 own record (acconform/dat.py mover_records) the same way.
 """
 
@@ -38,6 +38,7 @@ class Setup:
     allow_free_heading: bool = False
     default_scale: list = field(default_factory=list)  # Vector3 per part
     placement_frames: dict = field(default_factory=dict)  # int -> dat PlacementType
+    holding_locations: dict = field(default_factory=dict)  # int (ParentLocation) -> dat LocationType
     default_animation: int = 0
     default_script: int = 0
     default_motion_table: int = 0
@@ -52,6 +53,7 @@ class Setup:
         self.allow_free_heading = dat.allow_free_heading
         self.default_scale = dat.default_scale
         self.placement_frames = dat.placement_frames
+        self.holding_locations = dat.holding_locations
         self.default_animation = dat.default_animation
         self.default_script = dat.default_script
         self.default_motion_table = dat.default_motion_table
@@ -80,6 +82,11 @@ class Setup:
         setup.num_cylsphere = len(setup.cyl_sphere)
         setup.num_sphere = len(setup.sphere)
         return setup
+
+    @anchor("CSetup::GetHoldingLocation", "Setup.cs:GetHoldingLocation")
+    def get_holding_location(self, location_idx: int):
+        """``_dat.HoldingLocations.TryGetValue``: the LocationType (part id, frame), or None."""
+        return self.holding_locations.get(location_idx)
 
     @staticmethod
     @anchor(None, "Setup.cs:Get")

@@ -1,4 +1,4 @@
-"""ObjCell: Init, AddObject, AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells (the sphere and parts overloads), point_in_cell, get_block_water_type, get_water_depth, Equals, find_cell_list (the sphere and cylsphere overloads), GetVisible.
+"""ObjCell: Init, AddObject, AddShadowObject, FindCollisions, FindEnvCollisions, FindObjCollisions, check_entry_restrictions, handle_move_restriction, find_transit_cells (the sphere and parts overloads), point_in_cell, get_block_water_type, get_water_depth, Equals, find_cell_list (the sphere, one-sphere and cylsphere overloads), GetVisible.
 
 ACE's Common/ObjCell.cs: the fields and base behaviour every cell has. SortCell (sort_cell.py)
 derives from it, and LandCell (land_cell.py) from SortCell, as in ACE. `EMPTY_CELL` is ACE's ObjCell.EmptyCell (id 0, FindCollisions -> Invalid), which
@@ -294,6 +294,21 @@ def find_cell_list_cyl(lscape, position, num_cyl_sphere: int, cyl_sphere: list, 
         spheres.append(sphere)
 
     find_cell_list(lscape, position, num_cyl_sphere, spheres, cell_array, None, path)
+
+
+@anchor("CObjCell::find_cell_list", "ObjCell.cs:find_cell_list(Position, Sphere, CellArray, SpherePath)",
+        "the one-sphere overload (calc_cross_cells of an object with neither a physics BSP nor a cylsphere)")
+def find_cell_list_sphere(lscape, position, sphere, cell_array, path) -> None:
+    """The sphere centred in `position`'s frame (no scale), its radius; then the sphere overload
+    (through find_cell_list(Position, int, Sphere, ...): a list of that one sphere, one sphere
+    counted) with no current cell asked for."""
+    from ..geom.sphere import Sphere
+
+    global_sphere = Sphere()
+    global_sphere.center = position.local_to_global(sphere.center)
+    global_sphere.radius = sphere.radius
+
+    find_cell_list(lscape, position, 1, [global_sphere], cell_array, None, path)
 
 
 @anchor("CObjCell::find_cell_list", "ObjCell.cs:find_cell_list(CellArray, ref ObjCell, SpherePath)")

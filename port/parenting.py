@@ -1,0 +1,31 @@
+"""The harness's parenting call: a child PhysicsObj held by a parent (a mover) at a holding location.
+
+ACE's server never parents one PhysicsObj to another: a wielded item gets only the WorldObject
+properties Placement, ParentLocation and Location (WorldObjects/Creature_Equipment.cs TrySetChild /
+GetPlacementLocation), which CreateObject sends to the client, and the client parents the item's
+physics object (retail's CPhysicsObj::set_parent(parent, location) with the placement frame). The
+one set_parent call in ACE's server, ParticleEmitter.SetParenting, has no caller. The harness makes
+the client's calls on ACE's own PhysicsObj (oracle/facade: `SetParent`, Child.cs.txt) and on the
+port's, the same ones in the same order: the child's placement frame (SetPlacementFrame), then
+set_parent at the location. From then on the parent carries the child: every set_frame of the
+parent (its own, SetPositionInternal's, add_obj_to_cell's, a tick's) runs UpdateChildrenInternal.
+
+What a child needs: its own Setup (any; its placement frames if `placement` should choose one), and
+a parent whose Setup has a HoldingLocation keyed `parent_location` (ParentLocation: RightHand 1,
+LeftHand 2, Shield 3, ... ACE.Entity.Enum.ParentLocation) naming a part and a frame in that part
+(a part id at or past the Setup's parts: the frame is in the parent's Position).
+"""
+
+from __future__ import annotations
+
+from .anchors import harness
+from .physics_obj import PhysicsObj
+
+
+@harness("a child held by a parent at a holding location, as the client parents a wielded item (the oracle's facade SetParent)")
+def set_parent(child: PhysicsObj, parent: PhysicsObj, parent_location: int, placement: int, lscape) -> bool:
+    """``child.SetPlacementFrame(placement, false)`` then ``child.set_parent(parent, parent_location)``;
+    returns set_parent's answer (False: the parent has no PartArray, no such holding location, or is
+    the child). `lscape` is the run's world (ACE's static LScape)."""
+    child.set_placement_frame(placement, False)
+    return child.set_parent(parent, parent_location, lscape)
