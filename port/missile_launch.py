@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from acconform.flags import PhysicsState
-from acconform.numerics import Vector3, f32_from_bits, normalize
+from acconform.numerics import MONO, Runtime, Vector3, f32_from_bits, normalize
 
 from .anchors import harness
 from .constants import GRAVITY
@@ -40,11 +40,12 @@ UNDEF, BOLT, BLAST, VOLLEY, STREAK, ARC, RING, WALL, STRIKE = range(9)
 
 @harness("Creature.GetProjectileVelocity: which Trajectory solver a missile launch calls, and with what")
 def get_projectile_velocity(origin: Vector3, dest: Vector3, speed, target_velocity: Vector3, use_gravity: bool = True,
-                            lead_target: bool = True, alt_solver: bool = False) -> tuple[Vector3, object]:
+                            lead_target: bool = True, alt_solver: bool = False, runtime: Runtime = MONO) -> tuple[Vector3, object]:
     """(velocity, time). `target_velocity` is the target PhysicsObj's CachedVelocity; `lead_target`
     false is a Player launcher without the LeadMissileTargets option (a monster always leads);
     `alt_solver` the server's trajectory_alt_solver property (false by default). Gravity is
-    ``-PhysicsGlobals.Gravity`` (9.8f, positive down) or 0.00001f."""
+    ``-PhysicsGlobals.Gravity`` (9.8f, positive down) or 0.00001f. `runtime`: the run's (its
+    Math.Sin/Math.Cos, port/trajectory.py)."""
     s = type(speed)
     time = s(0.0)
 
@@ -54,26 +55,26 @@ def get_projectile_velocity(origin: Vector3, dest: Vector3, speed, target_veloci
         if lead_target:
             # use movement quartic solver (ACE)
             if not alt_solver:
-                num_solutions, s0, _, time = solve_ballistic_arc_moving(origin, speed, dest, target_velocity, gravity)
+                num_solutions, s0, _, time = solve_ballistic_arc_moving(origin, speed, dest, target_velocity, gravity, runtime)
 
                 if num_solutions > 0:
                     return s0, time
             else:
-                return calculate_trajectory(origin, dest, target_velocity, speed, use_gravity), time
+                return calculate_trajectory(origin, dest, target_velocity, speed, use_gravity, runtime), time
 
     # use stationary solver (ACE)
     if not alt_solver:
-        _, s0, _, t0, _ = solve_ballistic_arc(origin, speed, dest, gravity)
+        _, s0, _, t0, _ = solve_ballistic_arc(origin, speed, dest, gravity, runtime)
 
         time = t0
         return s0, time
     else:
-        return calculate_trajectory(origin, dest, zero_like(speed), speed, use_gravity), time
+        return calculate_trajectory(origin, dest, zero_like(speed), speed, use_gravity, runtime), time
 
 
 @harness("WorldObject.CalculateProjectileVelocity's solver for a spell projectile aimed at a target, from its start and end points")
 def calculate_spell_projectile_velocity(start_pos: Vector3, end_pos: Vector3, speed, target_velocity: Vector3,
-                                        spell_type: int, alt_solver: bool = False) -> Vector3:
+                                        spell_type: int, alt_solver: bool = False, runtime: Runtime = MONO) -> Vector3:
     """`target_velocity` is the target's CachedVelocity for a tracking spell, else zero. An Arc spell
     falls under PhysicsGlobals.Gravity; the others fly straight (``dir * speed``) unless the target
     moves."""
@@ -89,14 +90,14 @@ def calculate_spell_projectile_velocity(start_pos: Vector3, end_pos: Vector3, sp
         if not alt_solver:
             _, velocity, _, _ = solve_ballistic_arc_lateral(start_pos, speed, end_pos, target_velocity, gravity)
         else:
-            velocity = calculate_trajectory(start_pos, end_pos, target_velocity, speed, use_gravity)
+            velocity = calculate_trajectory(start_pos, end_pos, target_velocity, speed, use_gravity, runtime)
 
         if velocity == zero and use_gravity and not target_velocity == zero:
             # intractable? try to solve w/ zero velocity (ACE)
             if not alt_solver:
                 _, velocity, _, _ = solve_ballistic_arc_lateral(start_pos, speed, end_pos, zero, gravity)
             else:
-                velocity = calculate_trajectory(start_pos, end_pos, zero, speed, use_gravity)
+                velocity = calculate_trajectory(start_pos, end_pos, zero, speed, use_gravity, runtime)
         if not velocity == zero:
             return velocity
 

@@ -11,7 +11,10 @@ C# ``out`` parameters come back in a tuple after the result, in ACE's order. The
 all double (``np.float64``: IEEE division, so a zero leading coefficient gives inf/NaN as in C#,
 never a Python ZeroDivisionError); the arc solvers are float32 where ACE declares floats, double
 where ``Math`` returns a double, cast back where ACE casts. ``Math.Pow`` of a negative base and
-``Math.Acos`` out of [-1, 1] are NaN as in C# (Python would raise).
+``Math.Acos`` out of [-1, 1] are NaN as in C# (Python would raise). ``Math.Sin``/``Math.Cos`` are
+the runtime's: mono's JIT computes them with the x87 (acconform/x87.py), .NET 10 with libm, and
+near their zeros the two differ in the last bits; `runtime` says which (mono by default, as the
+port's modes are).
 
 Kept as ACE has them, since they decide the launch velocity:
 
@@ -27,7 +30,8 @@ from __future__ import annotations
 
 import math
 
-from acconform.numerics import D, Vector3, cast_float, dot, normalize
+from acconform import x87
+from acconform.numerics import MONO, D, Runtime, Vector3, cast_float, dot, normalize
 
 from .anchors import anchor
 from .constants import GRAVITY
@@ -60,12 +64,18 @@ def _sqrt(x):
     return D(math.sqrt(x)) if x >= 0.0 else NAN
 
 
-def _cos(x):
+def _cos(x, runtime: Runtime):
+    """C# ``Math.Cos``: mono's JIT runs x87 FCOS (acconform/x87.py), .NET 10 libm's cos."""
+    if runtime.name == "mono":
+        return D(x87.fcos(x))
     x = float(x)
     return D(math.cos(x)) if math.isfinite(x) else NAN
 
 
-def _sin(x):
+def _sin(x, runtime: Runtime):
+    """C# ``Math.Sin``: mono's JIT runs x87 FSIN (acconform/x87.py), .NET 10 libm's sin."""
+    if runtime.name == "mono":
+        return D(x87.fsin(x))
     x = float(x)
     return D(math.sin(x)) if math.isfinite(x) else NAN
 
@@ -109,7 +119,7 @@ def solve_quadric(c0, c1, c2):
 
 
 @anchor(None, "Trajectory.cs:SolveCubic")
-def solve_cubic(c0, c1, c2, c3):
+def solve_cubic(c0, c1, c2, c3, runtime: Runtime = MONO):
     """c0*x^3 + c1*x^2 + c2*x + c3 = 0: (num, s0, s1, s2), unset roots NaN."""
     c0, c1, c2, c3 = D(c0), D(c1), D(c2), D(c3)
     s0 = NAN
@@ -143,9 +153,9 @@ def solve_cubic(c0, c1, c2, c3):
         phi = 1.0 / 3 * _acos(-q / _sqrt(-cb_p))
         t = 2 * _sqrt(-p)
 
-        s0 = t * _cos(phi)
-        s1 = -t * _cos(phi + math.pi / 3)
-        s2 = -t * _cos(phi - math.pi / 3)
+        s0 = t * _cos(phi, runtime)
+        s1 = -t * _cos(phi + math.pi / 3, runtime)
+        s2 = -t * _cos(phi - math.pi / 3, runtime)
         num = 3
     else:  # one real solution
         sqrt_d = _sqrt(disc)
@@ -169,7 +179,7 @@ def solve_cubic(c0, c1, c2, c3):
 
 
 @anchor(None, "Trajectory.cs:SolveQuartic")
-def solve_quartic(c0, c1, c2, c3, c4):
+def solve_quartic(c0, c1, c2, c3, c4, runtime: Runtime = MONO):
     """c0*x^4 + ... + c4 = 0: (num, s0, s1, s2, s3). A slot past `num` may hold a stale root."""
     c0, c1, c2, c3, c4 = D(c0), D(c1), D(c2), D(c3), D(c4)
     s0 = s1 = s2 = s3 = NAN
@@ -188,10 +198,10 @@ def solve_quartic(c0, c1, c2, c3, c4):
 
     if is_zero(r):
         # no absolute term: y(y^3 + py + q) = 0
-        num, s0, s1, s2 = solve_cubic(D(1), D(0), p, q)
+        num, s0, s1, s2 = solve_cubic(D(1), D(0), p, q, runtime)
     else:
         # solve the resolvent cubic ...
-        _, s0, s1, s2 = solve_cubic(D(1), -1.0 / 2 * p, -r, 1.0 / 2 * r * p - 1.0 / 8 * q * q)
+        _, s0, s1, s2 = solve_cubic(D(1), -1.0 / 2 * p, -r, 1.0 / 2 * r * p - 1.0 / 8 * q * q, runtime)
 
         # ... and take the one real solution ...
         z = s0
@@ -245,14 +255,14 @@ def solve_quartic(c0, c1, c2, c3, c4):
 
 
 @anchor(None, "Trajectory.cs:ballistic_range")
-def ballistic_range(speed, gravity, initial_height):
+def ballistic_range(speed, gravity, initial_height, runtime: Runtime = MONO):
     """The range at 45 degrees (a float); speed and gravity > 0, initial_height >= 0, else 0."""
     if speed <= 0 or gravity <= 0 or initial_height < 0:
         return cast_float(speed, 0.0)
 
     angle = D(45 * 0.0174533)  # no air resistance: 45 degrees gives the maximum range (ACE)
-    cos = _cos(angle)
-    sin = _sin(angle)
+    cos = _cos(angle, runtime)
+    sin = _sin(angle, runtime)
 
     # float products stay float until they meet a double, as C# widens them
     rng = (D(speed) * cos / D(gravity)) * (D(speed) * sin + _sqrt(D(speed * speed) * sin * sin + D(2 * gravity * initial_height)))
@@ -260,7 +270,7 @@ def ballistic_range(speed, gravity, initial_height):
 
 
 @anchor(None, "Trajectory.cs:solve_ballistic_arc", "the fixed-target overload (s0, s1, t0, t1)")
-def solve_ballistic_arc(proj_pos: Vector3, proj_speed, target: Vector3, gravity):
+def solve_ballistic_arc(proj_pos: Vector3, proj_speed, target: Vector3, gravity, runtime: Runtime = MONO):
     """Firing solutions at `proj_speed` under `gravity` (positive down) to a fixed point:
     (num, s0 low angle, s1 high angle, t0, t1). Creature.GetProjectileVelocity's stationary solver
     (gravity 9.8: -PhysicsGlobals.Gravity)."""
@@ -297,18 +307,19 @@ def solve_ballistic_arc(proj_pos: Vector3, proj_speed, target: Vector3, gravity)
 
     ground_dir = normalize(diff_xy)
     unit_z = Vector3(s(0.0), s(0.0), s(1.0))
-    s0 = ground_dir * cast_float(proj_speed, _cos(low_ang)) * proj_speed + unit_z * cast_float(proj_speed, _sin(low_ang)) * proj_speed
+    s0 = ground_dir * cast_float(proj_speed, _cos(low_ang, runtime)) * proj_speed + unit_z * cast_float(proj_speed, _sin(low_ang, runtime)) * proj_speed
     if num_solutions > 1:
-        s1 = ground_dir * cast_float(proj_speed, _cos(high_ang)) * proj_speed + unit_z * cast_float(proj_speed, _sin(high_ang)) * proj_speed
+        s1 = ground_dir * cast_float(proj_speed, _cos(high_ang, runtime)) * proj_speed + unit_z * cast_float(proj_speed, _sin(high_ang, runtime)) * proj_speed
 
-    t0 = x / (cast_float(proj_speed, _cos(low_ang)) * proj_speed)
-    t1 = x / (cast_float(proj_speed, _cos(high_ang)) * proj_speed)
+    t0 = x / (cast_float(proj_speed, _cos(low_ang, runtime)) * proj_speed)
+    t1 = x / (cast_float(proj_speed, _cos(high_ang, runtime)) * proj_speed)
 
     return num_solutions, s0, s1, t0, t1
 
 
 @anchor(None, "Trajectory.cs:solve_ballistic_arc(target_velocity)", "the moving-target overload (s0, s1, time)")
-def solve_ballistic_arc_moving(proj_pos: Vector3, proj_speed, target_pos: Vector3, target_velocity: Vector3, gravity):
+def solve_ballistic_arc_moving(proj_pos: Vector3, proj_speed, target_pos: Vector3, target_velocity: Vector3, gravity,
+                               runtime: Runtime = MONO):
     """Firing solutions to a target moving at constant velocity: (num, s0, s1, time), the quartic
     in time solved in double. Creature.GetProjectileVelocity's solver for a moving target."""
     s = type(proj_speed)
@@ -340,7 +351,7 @@ def solve_ballistic_arc_moving(proj_pos: Vector3, proj_speed, target_pos: Vector
     c3 = 2 * k * q + 2 * h * p + 2 * j * r
     c4 = k * k + h * h + j * j
 
-    num_times, *slots = solve_quartic(c0, c1, c2, c3, c4)
+    num_times, *slots = solve_quartic(c0, c1, c2, c3, c4, runtime)
 
     # sort so the faster collision comes first (ACE): NaN slots sort first
     times = sorted(slots, key=_sort_key)

@@ -3,14 +3,15 @@
 ACE's Physics/Trajectory2.cs: the "alternate" solver the server uses for missiles and spell
 projectiles when its trajectory_alt_solver property is set (false by default, so a default
 server never calls it). Float32 throughout except the quadratic's roots, which ``Math.Sqrt``
-makes double; ``Math.Min(double, double)`` of the two roots is cast back to float.
+makes double; ``Math.Min(double, double)`` of the two roots (the runtime's: `runtime`) is cast back
+to float.
 """
 
 from __future__ import annotations
 
 import math
 
-from acconform.numerics import D, Vector3, cast_float
+from acconform.numerics import MONO, D, Runtime, Vector3, cast_float
 
 from .anchors import anchor
 from .constants import GRAVITY
@@ -24,16 +25,26 @@ def _sqrt(x):
     return D(math.sqrt(x)) if x >= 0.0 else D(math.nan)
 
 
-def _min(a, b):
-    """``Math.Min(double, double)``: NaN when either is NaN. (Mono and .NET differ only on a -0/+0
-    tie, which needs both roots zero; not reproduced.)"""
-    if a != a or b != b:
-        return D(math.nan)
-    return a if a <= b else b
+def _min(a, b, runtime: Runtime):
+    """``Math.Min(double, double)``: NaN when either is NaN; the runtimes differ on a -0/+0 tie (both
+    roots zero: a target straight above or below the start). Mono (the reference source):
+    ``val1 < val2 ? val1 : IsNaN(val1) ? val1 : val2``, so the second; .NET 10 the negative one."""
+    if runtime.name == "mono":
+        if a < b:
+            return a
+        if a != a:
+            return a
+        return b
+    if a != b:
+        if a == a:
+            return b if b < a else a
+        return a
+    return b if math.copysign(1.0, b) < 0 else a
 
 
 @anchor(None, "Trajectory2.cs:CalculateTrajectory")
-def calculate_trajectory(start_pos: Vector3, end_pos: Vector3, target_velocity: Vector3, speed, gravity: bool) -> Vector3:
+def calculate_trajectory(start_pos: Vector3, end_pos: Vector3, target_velocity: Vector3, speed, gravity: bool,
+                         runtime: Runtime = MONO) -> Vector3:
     s = type(speed)
     target_offset = end_pos - start_pos
 
@@ -68,10 +79,10 @@ def calculate_trajectory(start_pos: Vector3, end_pos: Vector3, target_velocity: 
         if t2 < 0:
             t2 = FLOAT_MAX_VALUE
 
-        t = cast_float(speed, _min(t1, t2))
+        t = cast_float(speed, _min(t1, t2, runtime))
 
         if t >= 100:
-            return calculate_trajectory(start_pos, end_pos, zero_like(speed), speed, gravity)
+            return calculate_trajectory(start_pos, end_pos, zero_like(speed), speed, gravity, runtime)
 
         s0 = target_velocity.length()
 
