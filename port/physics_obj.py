@@ -605,9 +605,19 @@ class PhysicsObj:
             # have none (DummyObject)
             self.handle_visible_cells()
         else:
-            raise NotImplementedError("handle_visible_cells_non_player (WeenieObject.IsMonster) is not ported")
+            self.handle_visible_cells_non_player()
 
-        # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover
+        # handle known players (ACE): each known player's handle_visible_obj(this) and enqueue_obj only feed
+        # that player's ObjectMaint tables and its network queue; nothing in the physics reads them
+
+    @anchor(None, "PhysicsObj.cs:handle_visible_cells_non_player")
+    def handle_visible_cells_non_player(self) -> None:
+        """A non-player entering a cell (a monster, a pet, a projectile): ObjMaint's visible targets
+        (a monster's, a combat pet's) or known players (anything else), from GetVisibleObjects or,
+        with ObjectMaint.InitialClamp (true), GetVisibleObjectsDist of CurCell. Those tables are not
+        kept (see enter_cell_server), and neither lookup throws (no CurLandblock or no cell: an
+        empty list), so nothing here changes the physics."""
+        return None
 
     @anchor(None, "PhysicsObj.cs:handle_visible_cells")
     def handle_visible_cells(self) -> list:

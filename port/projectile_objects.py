@@ -35,6 +35,7 @@ class Projectile:
     listed: bool = False  # in the landblock's worldObjects or pendingAdditions
     hit_msg: bool = False  # HitMsg
     is_destroyed: bool = False  # IsDestroyed
+    scatter_pos: object = None  # ScatterPos (PhysicsObj.SetPositionInternal reads it): never set for a projectile
 
 
 @dataclass(slots=True, eq=False)
