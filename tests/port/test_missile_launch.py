@@ -25,7 +25,7 @@ from acconform.port.weenie_object import WeenieObject
 from acconform.scene import SphereRec, SphereShape
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "objects"))
-from object_scenes import GROUND, LB, cell_id, obj, walk  # noqa: E402
+from object_scenes import BSP_STATE, GROUND, LB, box, cell_id, obj, walk  # noqa: E402
 
 F = np.float32
 ARROW_ID = 0x80000001
@@ -40,22 +40,39 @@ def _quiet_numpy():
         yield
 
 
-@pytest.fixture
-def world():
-    """Flat ground at 20 m, a 0.5 m sphere target (a dynamic object: not Static) at (100, 97), and an
-    arrow: a 0.05 m sphere with gravity, built but not in the world (InitPhysicsObj leaves CurCell
-    null), whose WorldObject is Ammunition."""
+def make_world(extra=()):
+    """Flat ground at 20 m, a 0.5 m sphere target (a dynamic object: not Static) at (100, 97), the
+    `extra` statics, and an arrow: a 0.05 m sphere with gravity, built but not in the world
+    (InitPhysicsObj leaves CurCell null), whose WorldObject is Ammunition."""
     target_rec = obj(0, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)), *TARGET, state=0)
-    scene = walk("arrow", (90, 97, GROUND + 0.5), (91, 97, GROUND + 0.5), [target_rec], spheres=(SphereRec((0.0, 0.0, 0.0), 0.05),),
-                 state=int(PhysicsState.Gravity), transient=0, contact=False)
+    scene = walk("arrow", (90, 97, GROUND + 0.5), (91, 97, GROUND + 0.5), [target_rec, *extra],
+                 spheres=(SphereRec((0.0, 0.0, 0.0), 0.05),), state=int(PhysicsState.Gravity), transient=0, contact=False)
     timer = PhysicsTimer(10.0)
     lscape, portal_dat, dids = scene_world(scene, EXACT, timer)
-    target = build_static(target_rec, dids[0], portal_dat, lscape)
+    statics = [build_static(rec, did, portal_dat, lscape) for rec, did in zip(scene.objects, dids)]
     arrow = build_mover(scene.mover, dat.MOVER_SETUP_ID, ARROW_ID, portal_dat, lscape)
     arrow.cur_cell = None
     arrow.position = Position(0, AFrame.identity(EXACT))
-    yield lscape, timer, target, arrow
+    return lscape, timer, statics, arrow
+
+
+@pytest.fixture
+def world():
+    lscape, timer, statics, arrow = make_world()
+    yield lscape, timer, statics[0], arrow
     lscape.release()
+
+
+def fly(wo, lscape, timer, ticks=40):
+    """Ticks of 0.05 s until the arrow's Missile bit is gone (it touched something)."""
+    t = timer.current_time
+    for _ in range(ticks):
+        t += 0.05
+        timer.set(t)
+        ml.update_object_physics(wo, lscape)
+        if not wo.physics_obj.state & PhysicsState.Missile:
+            break
+    return t
 
 
 def v(x, y, z):
@@ -89,13 +106,7 @@ def test_an_arrow_flies_until_it_strikes_its_target_and_the_hit_destroys_its_phy
     lscape, timer, target, arrow = world
     wo, ok, _ = launch(lscape, timer, target, arrow)
     assert ok
-    t = timer.current_time
-    for _ in range(40):
-        t += 0.05
-        timer.set(t)
-        ml.update_object_physics(wo, lscape)
-        if not arrow.state & PhysicsState.Missile:
-            break
+    t = fly(wo, lscape, timer)
     # report_object_collision cleared Missile | AlignPath | PathClipped on touching the target
     assert not arrow.state & MISSILE_BITS
     # stopped at the target's surface: the arrow's 0.05 m sphere against the target's 0.5 m one, whose
@@ -178,3 +189,42 @@ def test_a_spell_projectile_impact_makes_it_ethereal_inert_and_still(world):
     assert arrow.cur_cell is not None  # destroyed only 5 s later (its action chain)
     ml.destroy(wo)
     assert arrow.cur_cell is None and not wo.listed
+
+
+def test_an_arrow_flies_through_an_ethereal_object_that_is_not_its_target():
+    # ObjectInfo.MissileIgnore: a missile ignores an ethereal object that is not its target
+    lscape, timer, statics, arrow = make_world([obj(1, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)), 95.0, 97.0,
+                                                    state=int(PhysicsState.Ethereal))])
+    try:
+        target = statics[0]
+        wo, ok, _ = launch(lscape, timer, target, arrow)
+        t = timer.current_time
+        while arrow.position.frame.origin.x < 96.0:  # through the sphere's x = 94.5 .. 95.5
+            t += 0.05
+            timer.set(t)
+            ml.update_object_physics(wo, lscape)
+        # no collision was reported: an ethereal obstacle would otherwise be a CollideObject, whose report
+        # clears the missile bits
+        assert arrow.state & MISSILE_BITS == MISSILE_BITS and not arrow.collision_table
+        fly(wo, lscape, timer)
+        assert not arrow.state & MISSILE_BITS
+        assert arrow.position.frame.origin.x > 99.0  # stopped at the target
+    finally:
+        lscape.release()
+
+
+def test_an_arrow_striking_a_wall_loses_only_its_missile_bit_and_the_environment_hit_destroys_it():
+    # a static BSP wall 1 m thick across the path at x = 95: track_object_collision of a Static reports an
+    # environment collision, which clears Missile alone (AlignPath and PathClipped stay; an object hit clears all three)
+    lscape, timer, statics, arrow = make_world([obj(1, box(1.0, 6.0, 4.0), 95.0, 97.0, state=BSP_STATE)])
+    try:
+        target = statics[0]
+        wo, ok, _ = launch(lscape, timer, target, arrow)
+        fly(wo, lscape, timer)
+        assert not arrow.state & PhysicsState.Missile
+        assert arrow.state & (PhysicsState.AlignPath | PhysicsState.PathClipped) == PhysicsState.AlignPath | PhysicsState.PathClipped
+        assert 94.0 < arrow.position.frame.origin.x < 94.5  # at the wall's near face (x = 94.5), not through it
+        ml.on_collide_environment(wo)  # what DoCollision(EnvCollisionProfile) runs for Ammunition
+        assert arrow.cur_cell is None and not arrow.is_active() and wo.hit_msg
+    finally:
+        lscape.release()
