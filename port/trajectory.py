@@ -307,9 +307,11 @@ def solve_ballistic_arc(proj_pos: Vector3, proj_speed, target: Vector3, gravity,
 
     ground_dir = normalize(diff_xy)
     unit_z = Vector3(s(0.0), s(0.0), s(1.0))
-    s0 = ground_dir * cast_float(proj_speed, _cos(low_ang, runtime)) * proj_speed + unit_z * cast_float(proj_speed, _sin(low_ang, runtime)) * proj_speed
+    s0 = (ground_dir * cast_float(proj_speed, _cos(low_ang, runtime)) * proj_speed
+          + unit_z * cast_float(proj_speed, _sin(low_ang, runtime)) * proj_speed)
     if num_solutions > 1:
-        s1 = ground_dir * cast_float(proj_speed, _cos(high_ang, runtime)) * proj_speed + unit_z * cast_float(proj_speed, _sin(high_ang, runtime)) * proj_speed
+        s1 = (ground_dir * cast_float(proj_speed, _cos(high_ang, runtime)) * proj_speed
+              + unit_z * cast_float(proj_speed, _sin(high_ang, runtime)) * proj_speed)
 
     t0 = x / (cast_float(proj_speed, _cos(low_ang, runtime)) * proj_speed)
     t1 = x / (cast_float(proj_speed, _cos(high_ang, runtime)) * proj_speed)
