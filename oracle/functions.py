@@ -352,5 +352,65 @@ class AceFunctions:
         except self._net_exception as e:
             return self._error(e)
 
+    # ---------------------------------------------------------------- Trajectory, Trajectory2 (the launch solvers)
+    def _trajectory(self):
+        from ACE.Server.Physics import Trajectory, Trajectory2
+
+        return Trajectory, Trajectory2
+
+    def solve_quadric(self, c0, c1, c2) -> tuple:
+        """(num, s0, s1): C# doubles."""
+        r = self._trajectory()[0].SolveQuadric(float(c0), float(c1), float(c2), 0.0, 0.0)
+        return (int(r[0]), float(r[1]), float(r[2]))
+
+    def solve_cubic(self, c0, c1, c2, c3) -> tuple:
+        r = self._trajectory()[0].SolveCubic(float(c0), float(c1), float(c2), float(c3), 0.0, 0.0, 0.0)
+        return (int(r[0]), *(float(x) for x in r[1:]))
+
+    def solve_quartic(self, c0, c1, c2, c3, c4) -> tuple:
+        r = self._trajectory()[0].SolveQuartic(float(c0), float(c1), float(c2), float(c3), float(c4), 0.0, 0.0, 0.0, 0.0)
+        return (int(r[0]), *(float(x) for x in r[1:]))
+
+    def ballistic_range(self, speed, gravity, initial_height) -> float:
+        return float(self._trajectory()[0].ballistic_range(float(speed), float(gravity), float(initial_height)))
+
+    def solve_ballistic_arc(self, proj_pos, proj_speed, target, gravity) -> tuple:
+        """(num, s0, s1, t0, t1): the fixed-target overload."""
+        z = self._vec((0, 0, 0))
+        r = self._trajectory()[0].solve_ballistic_arc(self._vec(proj_pos), float(proj_speed), self._vec(target),
+                                                      float(gravity), z, z, 0.0, 0.0)
+        return (int(r[0]), _v(r[1]), _v(r[2]), float(r[3]), float(r[4]))
+
+    def solve_ballistic_arc_moving(self, proj_pos, proj_speed, target, target_velocity, gravity) -> tuple:
+        """(num, s0, s1, time): the moving-target overload."""
+        z = self._vec((0, 0, 0))
+        r = self._trajectory()[0].solve_ballistic_arc(self._vec(proj_pos), float(proj_speed), self._vec(target),
+                                                      self._vec(target_velocity), float(gravity), z, z, 0.0)
+        return (int(r[0]), _v(r[1]), _v(r[2]), float(r[3]))
+
+    def solve_ballistic_arc_fixed_gravity(self, proj_pos, lateral_speed, target) -> tuple:
+        """SolveBallisticArc: (ok, velocity, time)."""
+        z = self._vec((0, 0, 0))
+        r = self._trajectory()[0].SolveBallisticArc(self._vec(proj_pos), float(lateral_speed), self._vec(target), z, 0.0)
+        return (bool(r[0]), _v(r[1]), float(r[2]))
+
+    def solve_ballistic_arc_lateral_max_height(self, proj_pos, lateral_speed, target, max_height) -> tuple:
+        """(ok, fire_velocity, gravity)."""
+        z = self._vec((0, 0, 0))
+        r = self._trajectory()[0].solve_ballistic_arc_lateral(self._vec(proj_pos), float(lateral_speed), self._vec(target),
+                                                              float(max_height), z, 0.0)
+        return (bool(r[0]), _v(r[1]), float(r[2]))
+
+    def solve_ballistic_arc_lateral(self, proj_pos, lateral_speed, target, target_velocity, gravity) -> tuple:
+        """(ok, fire_velocity, time, impact_point): the moving-target overload."""
+        z = self._vec((0, 0, 0))
+        r = self._trajectory()[0].solve_ballistic_arc_lateral(self._vec(proj_pos), float(lateral_speed), self._vec(target),
+                                                              self._vec(target_velocity), float(gravity), z, 0.0, z)
+        return (bool(r[0]), _v(r[1]), float(r[2]), _v(r[3]))
+
+    def calculate_trajectory(self, start_pos, end_pos, target_velocity, speed, gravity: bool) -> tuple:
+        return _v(self._trajectory()[1].CalculateTrajectory(self._vec(start_pos), self._vec(end_pos),
+                                                             self._vec(target_velocity), float(speed), bool(gravity)))
+
 
 __all__ = ["AceFunctions"]

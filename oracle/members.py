@@ -153,6 +153,10 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.Animation.AFrame", ("LocalToGlobal", "GlobalToLocal", "LocalToGlobalVec", "GlobalToLocalVec",
                                              "Combine")),
     ("ACE.Server.Physics.Common.Position", ("GetOffset", "LocalToLocal", "LocalToGlobal")),
+    # the launch solvers (tests/port/functions/test_trajectory_live.py)
+    ("ACE.Server.Physics.Trajectory", ("IsZero", "SolveQuadric", "SolveCubic", "SolveQuartic", "ballistic_range",
+                                       "solve_ballistic_arc", "SolveBallisticArc", "solve_ballistic_arc_lateral")),
+    ("ACE.Server.Physics.Trajectory2", ("CalculateTrajectory",)),
 )
 
 

@@ -44,6 +44,7 @@ from . import land_defs
 from .cell import obj_cell
 from .child_list import ChildList
 from .part_array import PLACEMENT_FRAME_ID, PartArray
+from .projectile_objects import SpellProjectile
 from .errors import ArgumentException, ArgumentOutOfRangeException, InvalidOperationException
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
@@ -58,6 +59,9 @@ from .anim_hook import anim_hook_execute
 # PhysicsEngine.cs TransientStateFlags.StationaryComplete = StationaryStuck | StationaryStop | StationaryFall
 STATIONARY_COMPLETE = TransientState.StationaryStuck | TransientState.StationaryStop | TransientState.StationaryFall
 # PhysicsGlobals.DefaultState
+# PropertyManager's spell_projectile_ethereal on a default server (PhysicsObj.SetPositionInternal reads it)
+SPELL_PROJECTILE_ETHEREAL = False
+
 DEFAULT_STATE = PhysicsState.EdgeSlide | PhysicsState.LightingOn | PhysicsState.Gravity | PhysicsState.ReportCollisions
 
 
@@ -372,14 +376,23 @@ class PhysicsObj:
         if transition.sphere_path.cur_cell is None:
             return SetPositionError.NoCell
 
-        # custom (ACE): a non-ethereal spell projectile's collision on world entry; the mover's WorldObject
-        # is a Player, so `WeenieObj.WorldObject is SpellProjectile` is false
+        # custom: test for non-ethereal spell projectile collision on world entry (ACE); a default
+        # server's spell_projectile_ethereal is false
+        spell_collide = isinstance(self.weenie_obj.world_object, SpellProjectile) and \
+            len(transition.collision_info.collide_object) > 0 and not SPELL_PROJECTILE_ETHEREAL
+
+        if spell_collide:
+            # send initial CO as ethereal (ACE): the PropertyBool only, not the PhysicsState bit
+            self.weenie_obj.world_object.ethereal = True
 
         if self.entering_world and transition.sphere_path.cur_pos.landblock != pos.landblock:
             return SetPositionError.NoValidPosition
 
         if not self.set_position_internal(transition):
             return SetPositionError.GeneralFailure
+
+        if spell_collide:
+            self.handle_all_collisions(transition.collision_info, False, False, transition.trace)
 
         transition._hit("set_position:placed")
         return SetPositionError.OK
@@ -609,17 +622,17 @@ class PhysicsObj:
         else:
             self.handle_visible_cells_non_player()
 
-        # handle known players (ACE): ObjMaint.GetKnownPlayersValues() is empty for the mover; a child's known
-        # players only file it in their ObjectMaint tables (handle_visible_obj) and track it (enqueue_obj: a
-        # Player's network state), nothing the physics reads
+        # handle known players (ACE): each known player's handle_visible_obj(this) and enqueue_obj only feed
+        # that player's ObjectMaint tables and its network queue; nothing in the physics reads them
 
     @anchor(None, "PhysicsObj.cs:handle_visible_cells_non_player")
     def handle_visible_cells_non_player(self) -> None:
-        """A monster's visible attack targets, or (ObjectMaint.InitialClamp, true) the players within
-        InitialClamp_Dist another object knows; a combat pet's visible monsters. Each answer only
-        feeds ObjectMaint's tables (not kept: see enter_cell_server); the cells are walked as
-        GetVisibleObjects walks them (GetVisibleObjectsDist asks GetVisibleObjects first)."""
-        self.handle_visible_cells()
+        """A non-player entering a cell (a monster, a pet, a projectile): ObjMaint's visible targets
+        (a monster's, a combat pet's) or known players (anything else), from GetVisibleObjects or,
+        with ObjectMaint.InitialClamp (true), GetVisibleObjectsDist of CurCell. Those tables are not
+        kept (see enter_cell_server), and neither lookup throws (no CurLandblock or no cell: an
+        empty list), so nothing here changes the physics."""
+        return None
 
     @anchor(None, "PhysicsObj.cs:handle_visible_cells")
     def handle_visible_cells(self) -> list:
@@ -2134,12 +2147,69 @@ class PhysicsObj:
     def get_velocity(self):
         return self.cached_velocity
 
+    @anchor("CPhysicsObj::is_active", "PhysicsObj.cs:is_active")
+    def is_active(self) -> bool:
+        return bool(self.transient_state & TransientState.Active)
+
+    @anchor("CPhysicsObj::leave_world", "PhysicsObj.cs:leave_world")
+    def leave_world(self) -> None:
+        """ObjMaint.RemoveObjectToBeDestroyed: the destruction queue is not kept (see
+        prepare_to_enter_world)."""
+        self.report_collision_end(True)
+        self.transient_state &= ~TransientState.Active
+        self.remove_shadows_from_cells()
+        self.leave_cell(False)
+
+        self.position.obj_cell_id = 0
+        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
+            self.part_array.set_cell_id(0)
+
+        self.transient_state &= ~TransientState.Contact
+        self.calc_acceleration()
+        walkable = bool(self.transient_state & TransientState.OnWalkable)
+        self.transient_state &= ~(TransientState.OnWalkable | TransientState.WaterContact)
+        if self.movement_manager is not None and walkable:
+            self.movement_manager.leave_ground()
+        self.calc_acceleration()
+        self.transient_state = 0
+
+    @anchor("CPhysicsObj::exit_world", "PhysicsObj.cs:exit_world")
+    def exit_world(self) -> None:
+        if self.part_array is not None:
+            self.part_array.handle_exit_world()
+        if self.movement_manager is not None:
+            self.movement_manager.handle_exit_world()
+        if self.position_manager is not None:
+            self.position_manager.unstick()
+        if self.target_manager is not None:
+            from .combat.target_info import TargetStatus
+
+            self.target_manager.clear_target()
+            self.target_manager.notify_voyeur_of_event(TargetStatus.ExitWorld)
+        if self.detection_manager is not None:
+            raise NotImplementedError("DetectionManager.DestroyDetectionCylsphere is not ported")
+
+        self.report_collision_end(True)
+
+    @anchor(None, "PhysicsObj.cs:DestroyObject")
+    def destroy_object(self) -> None:
+        """What the server's Landblock.RemoveWorldObject does to a removed object's physics.
+        ObjMaint.DestroyObject: the other objects' ObjMaint tables are not kept (nothing in the
+        physics reads them); its last step, ServerObjectManager.RemoveServerObject, is."""
+        self.leave_cell(False)
+        self.remove_shadows_from_cells()
+        self.leave_world()
+        self.exit_world()
+
+        if self.server_objects is not None:
+            self.server_objects.remove_server_object(self)
+
     @anchor("CPhysicsObj::enter_world", "PhysicsObj.cs:enter_world(Position)")
     def enter_world(self, pos, lscape, trace=None) -> bool:
         self.entering_world = True
 
         self.store_position(pos, lscape)
-        slide = self.projectile_target is None  # or WeenieObj.WorldObject is SpellProjectile: a Player is not
+        slide = self.projectile_target is None or isinstance(self.weenie_obj.world_object, SpellProjectile)
         result = self.enter_world_slide(slide, lscape, trace)
 
         self.entering_world = False

@@ -1,0 +1,543 @@
+"""The server's physics calls for a projectile: launch (Creature_Missile, WorldObject_Magic, SpellProjectile.Setup), entering the world (Landblock.AddWorldObject, WorldObject.AddPhysicsObj, IsProjectileVisible), the per-tick missile branch of WorldObject.UpdateObjectPhysics, and hits (ProjectileCollisionHelper, SpellProjectile.ProjectileImpact, WorldObject.Destroy).
+
+Harness glue, not ACE's physics: these are the calls ACE's WorldObject code makes on a projectile's
+PhysicsObj, as the oracle's facade makes them (oracle/facade/Missile.cs.txt), with everything else
+those methods do (damage, broadcasts, chat, sounds, proc effects) left out because no physics reads
+it. The projectile's WorldObject is a record from port/projectile_objects.py (Ammunition, Missile,
+SpellProjectile); the launcher and target are PhysicsObjs. The solvers are ACE's own, ported in
+port/trajectory.py and port/trajectory2.py.
+
+The WorldObject property setters ACE calls change the PhysicsState bits directly
+(WorldObject.SetPhysicsState: ``State |= bit`` or ``State &= ~bit``), never through set_ethereal
+or a PhysicsObj setter; so do these functions.
+"""
+
+from __future__ import annotations
+
+import math
+
+from acconform.flags import PhysicsState
+from acconform.numerics import MONO, Runtime, Vector3, f32_from_bits, normalize
+
+from .anchors import harness
+from .constants import GRAVITY
+from .frame import AFrame, Position
+from .projectile_objects import Ammunition, Missile, Projectile, SpellProjectile
+from .trajectory import solve_ballistic_arc, solve_ballistic_arc_lateral, solve_ballistic_arc_moving
+from .trajectory2 import calculate_trajectory
+from .vec import zero_like
+
+# Creature.GetProjectileVelocity's gravity without gravity: 0.00001f
+NO_GRAVITY = f32_from_bits(0x3727C5AC)
+# WorldObject.ProjectileTimeout = 30.0f, stored in a double
+PROJECTILE_TIMEOUT = 30.0
+# ProjectileSpellType (ACE.Server/Entity/SpellProjectileType.cs)
+UNDEF, BOLT, BLAST, VOLLEY, STREAK, ARC, RING, WALL, STRIKE = range(9)
+
+
+# ---------------------------------------------------------------- launch arithmetic
+
+
+@harness("Creature.GetProjectileVelocity: which Trajectory solver a missile launch calls, and with what")
+def get_projectile_velocity(origin: Vector3, dest: Vector3, speed, target_velocity: Vector3, use_gravity: bool = True,
+                            lead_target: bool = True, alt_solver: bool = False, runtime: Runtime = MONO) -> tuple[Vector3, object]:
+    """(velocity, time). `target_velocity` is the target PhysicsObj's CachedVelocity; `lead_target`
+    false is a Player launcher without the LeadMissileTargets option (a monster always leads);
+    `alt_solver` the server's trajectory_alt_solver property (false by default). Gravity is
+    ``-PhysicsGlobals.Gravity`` (9.8f, positive down) or 0.00001f. `runtime`: the run's (its
+    Math.Sin/Math.Cos, port/trajectory.py)."""
+    s = type(speed)
+    time = s(0.0)
+
+    gravity = -s(GRAVITY) if use_gravity else s(NO_GRAVITY)
+
+    if not target_velocity == zero_like(speed):
+        if lead_target:
+            # use movement quartic solver (ACE)
+            if not alt_solver:
+                num_solutions, s0, _, time = solve_ballistic_arc_moving(origin, speed, dest, target_velocity, gravity, runtime)
+
+                if num_solutions > 0:
+                    return s0, time
+            else:
+                return calculate_trajectory(origin, dest, target_velocity, speed, use_gravity, runtime), time
+
+    # use stationary solver (ACE)
+    if not alt_solver:
+        _, s0, _, t0, _ = solve_ballistic_arc(origin, speed, dest, gravity, runtime)
+
+        time = t0
+        return s0, time
+    else:
+        return calculate_trajectory(origin, dest, zero_like(speed), speed, use_gravity, runtime), time
+
+
+@harness("WorldObject.CalculateProjectileVelocity's solver for a spell projectile aimed at a target, from its start and end points")
+def calculate_spell_projectile_velocity(start_pos: Vector3, end_pos: Vector3, speed, target_velocity: Vector3,
+                                        spell_type: int, alt_solver: bool = False, runtime: Runtime = MONO) -> Vector3:
+    """`target_velocity` is the target's CachedVelocity for a tracking spell, else zero. An Arc spell
+    falls under PhysicsGlobals.Gravity; the others fly straight (``dir * speed``) unless the target
+    moves."""
+    s = type(speed)
+    direction = normalize(end_pos - start_pos)
+
+    zero = zero_like(speed)
+    use_gravity = spell_type == ARC
+
+    if use_gravity or not target_velocity == zero:
+        gravity = s(GRAVITY) if use_gravity else s(0.0)
+
+        if not alt_solver:
+            _, velocity, _, _ = solve_ballistic_arc_lateral(start_pos, speed, end_pos, target_velocity, gravity)
+        else:
+            velocity = calculate_trajectory(start_pos, end_pos, target_velocity, speed, use_gravity, runtime)
+
+        if velocity == zero and use_gravity and not target_velocity == zero:
+            # intractable? try to solve w/ zero velocity (ACE)
+            if not alt_solver:
+                _, velocity, _, _ = solve_ballistic_arc_lateral(start_pos, speed, end_pos, zero, gravity)
+            else:
+                velocity = calculate_trajectory(start_pos, end_pos, zero, speed, use_gravity, runtime)
+        if not velocity == zero:
+            return velocity
+
+    return direction * speed
+
+
+# ---------------------------------------------------------------- launch: the physics state
+
+
+def _set(obj, bit: int, value: bool) -> None:
+    """WorldObject.SetPhysicsState(bit, value)."""
+    if value:
+        obj.state |= bit
+    else:
+        obj.state &= ~bit
+
+
+@harness("Creature.SetProjectilePhysicsState's physics calls on an arrow's, bolt's or thrown weapon's PhysicsObj")
+def set_projectile_physics_state(wo: Projectile, target, velocity: Vector3, origin: Vector3, orientation) -> None:
+    """After InitPhysicsObj (the caller builds the PhysicsObj as WorldObject.InitPhysicsObj does: a
+    non-creature's makeObject(setup, guid, dynamic), set_object_guid, set_weenie_obj,
+    SetMotionTableID, SetScaleStatic, State = the weenie's PhysicsState): ReportCollisions,
+    Missile, AlignPath and PathClipped set, Ethereal and IgnoreCollisions cleared; Position.Frame
+    = (origin, orientation) (LaunchProjectile's Location); Velocity assigned (the field, not
+    set_velocity: no MaxVelocity clamp); ProjectileTarget = the target's PhysicsObj; a RotationSpeed
+    clears AlignPath and sets Omega = ((float)(2 pi RotationSpeed), 0, 0); set_active(true).
+    Placement and CurrentMotionState are not physics."""
+    obj = wo.physics_obj
+    s = type(velocity.x)
+
+    wo.report_collisions = True
+    _set(obj, PhysicsState.ReportCollisions, True)
+    _set(obj, PhysicsState.Missile, True)
+    _set(obj, PhysicsState.AlignPath, True)
+    _set(obj, PhysicsState.PathClipped, True)
+    wo.ethereal = False
+    _set(obj, PhysicsState.Ethereal, False)
+    _set(obj, PhysicsState.IgnoreCollisions, False)
+
+    obj.position.frame.origin = origin
+    obj.position.frame.orientation = orientation
+
+    obj.velocity = velocity
+    obj.projectile_target = target
+    wo.projectile_target = target
+
+    # projectiles with RotationSpeed get omega values and "align path" turned off (ACE)
+    if (wo.rotation_speed or 0) != 0:
+        _set(obj, PhysicsState.AlignPath, False)
+        obj.omega = Vector3(s(math.pi * 2 * wo.rotation_speed), s(0.0), s(0.0))
+
+    obj.set_active(True)
+
+
+@harness("SpellProjectile.Setup's physics calls on a spell projectile's PhysicsObj (after InitPhysicsObj)")
+def spell_projectile_setup(wo: SpellProjectile, rolling_death: bool = False, scripted_collision: bool | None = None) -> None:
+    """ReportCollisions, Missile, AlignPath, PathClipped set; IgnoreCollisions cleared; Ethereal
+    cleared unless the spell is "Rolling Death"; ScriptedCollision set or cleared where Setup does
+    (`scripted_collision`: None leaves it: wall spells 7278/7281/7282/23144 and Ring spells clear
+    it, Ring spell 3818 sets it); AllowEdgeSlide false clears EdgeSlide; a RotationSpeed clears
+    AlignPath and sets Omega."""
+    obj = wo.physics_obj
+    s = type(obj.scale)
+
+    wo.report_collisions = True
+    _set(obj, PhysicsState.ReportCollisions, True)
+    _set(obj, PhysicsState.Missile, True)
+    _set(obj, PhysicsState.AlignPath, True)
+    _set(obj, PhysicsState.PathClipped, True)
+    _set(obj, PhysicsState.IgnoreCollisions, False)
+
+    if not rolling_death:  # FIXME: use data here (ACE)
+        wo.ethereal = False
+        _set(obj, PhysicsState.Ethereal, False)
+
+    if scripted_collision is not None:
+        _set(obj, PhysicsState.ScriptedCollision, scripted_collision)
+
+    _set(obj, PhysicsState.EdgeSlide, False)
+
+    if (wo.rotation_speed or 0) != 0:
+        _set(obj, PhysicsState.AlignPath, False)
+        obj.omega = Vector3(s(math.pi * 2 * wo.rotation_speed), s(0.0), s(0.0))
+
+
+@harness("LaunchSpellProjectiles' and SpellProjectile.SetProjectilePhysicsState's physics calls for one spell projectile")
+def spell_projectile_set_physics_state(wo: SpellProjectile, target, velocity: Vector3, origin: Vector3) -> None:
+    """``sp.PhysicsObj.Velocity = velocity`` (a spread angle's rotation is the caller's), the
+    heading: Position.Frame.set_vector_heading(Normalize(Velocity)), whose orientation becomes
+    Location.Rotation; then SetProjectilePhysicsState(target, useGravity): GravityStatus set for an
+    Arc spell, Position.Frame = (Location.Pos, Location.Rotation), ProjectileTarget = the target's
+    PhysicsObj when there is one (ACE gives only the first of a spell's projectiles its target),
+    set_active(true). `origin` is Location.Pos (the caster's position plus the rotated spawn
+    offset)."""
+    obj = wo.physics_obj
+
+    obj.velocity = velocity
+
+    # set orientation (ACE)
+    obj.position.frame.set_vector_heading(normalize(obj.velocity))
+    rotation = obj.position.frame.orientation
+
+    wo.projectile_target = target
+
+    # SpellProjectile.SetProjectilePhysicsState
+    if wo.spell_type == ARC:
+        _set(obj, PhysicsState.Gravity, True)
+
+    obj.position.frame.origin = origin
+    obj.position.frame.orientation = rotation
+
+    if target is not None:
+        obj.projectile_target = target
+
+    obj.set_active(True)
+
+
+# ---------------------------------------------------------------- entering the world
+
+
+@harness("WorldObject.AddPhysicsObj: the projectile's PhysicsObj entered at its Location (enter_world, slide unless it has a ProjectileTarget)")
+def add_physics_obj(wo: Projectile, location: Position, lscape, trace=None) -> bool:
+    """CurCell already set: false. LScape.get_landcell(Location.Cell) (none: DestroyObject,
+    PhysicsObj = null, false); Position.ObjCellID = that cell's id; enter_world(Position(cell,
+    Location's frame)); failing, or without a CurCell after: DestroyObject, PhysicsObj = null,
+    false. AdjustDungeon (a dungeon's Location moved to the cell holding it) is the caller's, as
+    place_mover's get_cell is."""
+    obj = wo.physics_obj
+    if obj.cur_cell is not None:
+        return False
+
+    cell = lscape.get_landcell(location.obj_cell_id)
+    if cell is None:
+        obj.destroy_object()
+        wo.physics_obj = None
+        return False
+
+    obj.position.obj_cell_id = cell.id
+
+    entry = Position(cell.id, AFrame(location.frame.origin, location.frame.orientation))
+
+    success = obj.enter_world(entry, lscape, trace)
+
+    if not success or obj.cur_cell is None:
+        obj.destroy_object()
+        wo.physics_obj = None
+        return False
+
+    return True
+
+
+@harness("Landblock.AddWorldObject's physics: the projectile joins the landblock (CurrentLandblock), then AddPhysicsObj")
+def add_world_object(wo: Projectile, location: Position, lscape, trace=None) -> bool:
+    """CurrentLandblock is set before AddPhysicsObj (so a hit during enter_world finds it, but the
+    landblock does not list the object yet: RemoveWorldObject then returns without destroying);
+    an object already holding a PhysicsObj is filed again (set_object_guid); failing, CurrentLandblock
+    is cleared; succeeding, the object is listed (pendingAdditions)."""
+    wo.in_landblock = True
+
+    wo.physics_obj.set_object_guid(wo.physics_obj.id)
+
+    if wo.physics_obj.cur_cell is None:
+        if not add_physics_obj(wo, location, lscape, trace):
+            wo.in_landblock = False
+            return False
+
+    wo.listed = True
+    return True
+
+
+@harness("WorldObject.IsProjectileVisible: the line-of-sight transition from the projectile back to its launcher's eye level")
+def is_projectile_visible(launcher, wo: Projectile, lscape, launcher_is_creature: bool = True,
+                          launcher_ethereal: bool | None = None, trace=None) -> bool:
+    """A launcher that is no Creature, or whose Ethereal property is true, sees every projectile.
+    Otherwise: a transition of the projectile's PhysicsObj from its Position to the launcher's, the
+    launcher's raised by (launcher height - projectile height), with ProjectileTarget the launcher
+    for the duration; visible when the transition is valid and the launcher is among its
+    CollideObject."""
+    if not launcher_is_creature or (launcher_ethereal or False):
+        return True
+
+    proj = wo.physics_obj
+    if launcher is None or proj is None:
+        return False
+
+    start_pos = Position(proj.position.obj_cell_id, AFrame(proj.position.frame.origin, proj.position.frame.orientation))
+    target_frame = launcher.position.frame
+    target_pos = Position(launcher.position.obj_cell_id, AFrame(target_frame.origin, target_frame.orientation))
+
+    # set to eye level (ACE)
+    target_pos.frame.origin = target_pos.frame.origin.with_z(
+        target_pos.frame.origin.z + (launcher.get_height() - proj.get_height()))
+
+    prev_target = proj.projectile_target
+    proj.projectile_target = launcher
+
+    # perform line of sight test (ACE)
+    transit, valid = proj.transition(start_pos, target_pos, False, lscape, trace)
+
+    proj.projectile_target = prev_target
+
+    if not valid:
+        return False
+
+    # check if target object was reached (ACE)
+    return any(c.id == launcher.id for c in transit.collision_info.collide_object)
+
+
+@harness("Creature.LaunchProjectile's physics: SetProjectilePhysicsState, AddObject, IsProjectileVisible, and the Destroy of a failed launch")
+def launch_projectile(wo: Projectile, launcher, target, origin: Vector3, orientation, cell_id: int, velocity: Vector3,
+                      lscape, launcher_ethereal: bool | None = None, trace=None) -> bool:
+    """Whether the projectile is in flight after LaunchProjectile. An invalid velocity (a NaN
+    component: the moving-target solver's NaN answers) misfires before anything is made. The
+    projectile's Location is the launcher's cell with Pos = origin and Rotation = orientation.
+    ProjectileSource is the launcher."""
+    if math.isnan(velocity.x) or math.isnan(velocity.y) or math.isnan(velocity.z):
+        return False  # YourAttackMisfired (ACE)
+
+    wo.projectile_source = launcher
+    wo.projectile_target = target
+
+    set_projectile_physics_state(wo, target, velocity, origin, orientation)
+
+    location = Position(cell_id, AFrame(origin, orientation))
+    success = add_world_object(wo, location, lscape, trace)
+
+    if not success or wo.physics_obj is None:
+        destroy(wo)
+        return False
+
+    if not is_projectile_visible(launcher, wo, lscape, True, launcher_ethereal, trace):
+        on_collide_environment(wo)
+
+        destroy(wo)
+        return False
+
+    return True
+
+
+@harness("LaunchSpellProjectiles' entering of one spell projectile: AddObject, WorldEntryCollision, IsProjectileVisible")
+def launch_spell_projectile(wo: SpellProjectile, caster, location: Position, lscape, caster_is_creature: bool = True,
+                            caster_ethereal: bool | None = None, trace=None) -> bool:
+    """After spell_projectile_setup and spell_projectile_set_physics_state. Whether the projectile
+    is in flight: AddObject failing destroys it; a WorldEntryCollision (ProjectileImpact during
+    enter_world) leaves it in the world, inactive; a projectile the caster cannot see hits the
+    environment (ProjectileImpact)."""
+    wo.projectile_source = caster
+
+    if not add_world_object(wo, location, lscape, trace):
+        destroy(wo)
+        return False
+
+    if wo.world_entry_collision:
+        return False
+
+    if not is_projectile_visible(caster, wo, lscape, caster_is_creature, caster_ethereal, trace):
+        on_collide_environment(wo)
+        return False
+
+    return True
+
+
+# ---------------------------------------------------------------- the tick
+
+
+@harness("WorldObject.UpdateObjectPhysics for a projectile (not a Creature): the missile timeout, update_object, and the Destroy of one without a cell")
+def update_object_physics(wo: Projectile, lscape, trace=None) -> bool:
+    """Returns ACE's landblockUpdate (the object's landblock changed); a projectile already hit or
+    never active returns false before any physics. A missile (PhysicsState.Missile still set) runs
+    every tick until 30 s after its creation (then set_active(false) and Destroy); once its Missile
+    bit is gone it runs only while animating or in its first two updates. Left to the caller: a Ring
+    spell's range check (ACE.Entity.Position.DistanceTo from SpawnPos, then set_active(false) and
+    ProjectileImpact) and relocating to another landblock (a SpellProjectile entering a dormant one
+    is destroyed)."""
+    obj = wo.physics_obj
+    if obj is None or not obj.is_active():
+        return False
+
+    if obj.state & PhysicsState.Missile:
+        if wo.physics_creation_time + PROJECTILE_TIMEOUT <= obj.timer.current_time:
+            obj.set_active(False)
+            destroy(wo)
+            return False
+        # missiles always run an update (ACE)
+    else:
+        run_update = obj.is_animating or obj.initial_updates <= 1
+        if not run_update:
+            return False
+
+    cell_before = obj.cur_cell.id if obj.cur_cell is not None else 0
+
+    obj.update_object(lscape, trace)
+
+    if obj.cur_cell is None:
+        obj.set_active(False)
+        destroy(wo)
+        return False
+
+    landblock_update = (cell_before >> 16) != (obj.cur_cell.id >> 16)
+
+    return landblock_update
+
+
+# ---------------------------------------------------------------- hits
+
+
+@harness("Landblock.RemoveWorldObject's physics: DestroyObject when the landblock lists the object")
+def remove_world_object(wo: Projectile) -> None:
+    """Neither in worldObjects nor pendingAdditions (a hit during AddPhysicsObj's enter_world): it
+    returns at once, CurrentLandblock kept. Otherwise CurrentLandblock = null and
+    PhysicsObj.DestroyObject (leave_cell, remove_shadows_from_cells, leave_world, exit_world,
+    ServerObjectManager.RemoveServerObject)."""
+    if not wo.listed:
+        return
+
+    wo.listed = False
+    wo.in_landblock = False
+    wo.physics_obj.destroy_object()
+
+
+@harness("WorldObject.Destroy's physics: CurrentLandblock?.RemoveWorldObject, once")
+def destroy(wo: Projectile) -> None:
+    if wo.is_destroyed:
+        return
+
+    wo.is_destroyed = True
+
+    if wo.in_landblock:
+        remove_world_object(wo)
+
+
+@harness("ProjectileCollisionHelper.OnCollideObject's physics: the intended target hit, any other object as the environment")
+def projectile_collision_helper_on_collide_object(wo: Projectile, target) -> None:
+    """Nothing once the projectile is inactive. `target` (a PhysicsObj) other than ProjectileTarget:
+    OnCollideEnvironment. The target: (damage, procs: no physics) CurrentLandblock?.RemoveWorldObject,
+    set_active(false), HitMsg. A target creature's death from the damage is not modelled here."""
+    obj = wo.physics_obj
+    if not obj.is_active():
+        return
+
+    if wo.projectile_target is None or wo.projectile_target is not target:
+        projectile_collision_helper_on_collide_environment(wo)
+        return
+
+    if wo.in_landblock:
+        remove_world_object(wo)
+    obj.set_active(False)
+
+    wo.hit_msg = True
+
+
+@harness("ProjectileCollisionHelper.OnCollideEnvironment's physics")
+def projectile_collision_helper_on_collide_environment(wo: Projectile) -> None:
+    """Nothing once inactive, nor while the projectile is still entering the world; else
+    CurrentLandblock?.RemoveWorldObject, set_active(false), HitMsg."""
+    obj = wo.physics_obj
+    if not obj.is_active():
+        return
+
+    # no 'hit the environment' while the projectile is still spawning (ACE)
+    if obj.entering_world:
+        return
+
+    if wo.in_landblock:
+        remove_world_object(wo)
+    obj.set_active(False)
+
+    wo.hit_msg = True
+
+
+@harness("SpellProjectile.ProjectileImpact's physics: the bits it sets and clears, set_active(false), Velocity zero")
+def projectile_impact(wo: SpellProjectile) -> None:
+    """ReportCollisions cleared, Ethereal, IgnoreCollisions, NoDraw and Cloaked set, LightingOn
+    cleared (each PhysicsState bit directly); set_active(false); WorldEntryCollision when still
+    entering the world; Velocity = zero (the field). Its Destroy comes 5 s later through an action
+    chain: the caller's clock calls `destroy`."""
+    obj = wo.physics_obj
+
+    wo.report_collisions = False
+    _set(obj, PhysicsState.ReportCollisions, False)
+    wo.ethereal = True
+    _set(obj, PhysicsState.Ethereal, True)
+    _set(obj, PhysicsState.IgnoreCollisions, True)
+    _set(obj, PhysicsState.NoDraw, True)
+    _set(obj, PhysicsState.Cloaked, True)
+    _set(obj, PhysicsState.LightingOn, False)
+
+    obj.set_active(False)
+
+    if obj.entering_world:
+        wo.world_entry_collision = True
+
+    obj.velocity = zero_like(obj.velocity.x if obj.velocity is not None else obj.scale)
+
+
+@harness("WorldObject.OnCollideObject as a projectile's class overrides it (Ammunition, Missile, SpellProjectile)")
+def on_collide_object(wo: Projectile, target) -> None:
+    """What WeenieObject.DoCollision(ObjCollisionProfile) runs for a projectile whose transition hit
+    `target` (a PhysicsObj with a WorldObject): Ammunition always the helper; a thrown Missile (the
+    base WorldObject's) the helper only with a ProjectileTarget; a SpellProjectile ProjectileImpact
+    (its damage to a creature target is not physics)."""
+    if isinstance(wo, SpellProjectile):
+        projectile_impact(wo)
+    elif isinstance(wo, Ammunition):
+        projectile_collision_helper_on_collide_object(wo, target)
+    elif isinstance(wo, Missile):
+        if wo.projectile_target is None:
+            return
+        projectile_collision_helper_on_collide_object(wo, target)
+    else:
+        raise TypeError(f"not a projectile record: {type(wo).__name__}")
+
+
+@harness("WorldObject.OnCollideEnvironment as a projectile's class overrides it (Ammunition, Missile, SpellProjectile)")
+def on_collide_environment(wo: Projectile) -> None:
+    """What WeenieObject.DoCollision(EnvCollisionProfile) runs for a projectile (not a Player)."""
+    if isinstance(wo, SpellProjectile):
+        projectile_impact(wo)
+    elif isinstance(wo, Ammunition):
+        projectile_collision_helper_on_collide_environment(wo)
+    elif isinstance(wo, Missile):
+        if wo.projectile_target is None:
+            return
+        projectile_collision_helper_on_collide_environment(wo)
+    else:
+        raise TypeError(f"not a projectile record: {type(wo).__name__}")
+
+
+@harness("Player.OnCollideObject's projectile branches: a player walking into a projectile")
+def player_on_collide_object(player_obj, wo: Projectile) -> None:
+    """A projectile whose ReportCollisions property is false is ignored; a SpellProjectile runs its
+    OnCollideObject(player) (ProjectileImpact); another projectile with a ProjectileTarget runs
+    ProjectileCollisionHelper.OnCollideObject(projectile, player): the player is hit when it is the
+    target, and otherwise the projectile counts as hitting the environment. (Portal, PressurePlate
+    and Hotspot come first in ACE: not projectiles.)"""
+    if wo.report_collisions is False:
+        return
+
+    if isinstance(wo, SpellProjectile):
+        projectile_impact(wo)
+    elif wo.projectile_target is not None:
+        projectile_collision_helper_on_collide_object(wo, player_obj)
+

@@ -1,0 +1,230 @@
+"""A projectile's physics from launch to hit (port/missile_launch.py and the PhysicsObj calls it
+makes: enter_world, update_object, DestroyObject), on flat ground with a sphere target, as ACE's
+server code makes those calls (Creature_Missile.cs, WorldObject.AddPhysicsObj, WorldObject_Tick.cs
+UpdateObjectPhysics, ProjectileCollisionHelper.cs, SpellProjectile.cs at 7b47913).
+"""
+
+from __future__ import annotations
+
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from acconform import dat
+from acconform.flags import PhysicsState, TransientState
+from acconform.numerics import EXACT, normalize
+from acconform.port import missile_launch as ml
+from acconform.port.frame import AFrame, Position
+from acconform.port.physics_timer import PhysicsTimer
+from acconform.port.projectile_objects import Ammunition, Missile, SpellProjectile
+from acconform.port.run import build_mover, build_static, scene_world
+from acconform.port.weenie_object import WeenieObject
+from acconform.scene import SphereRec, SphereShape
+
+sys.path.insert(0, str(Path(__file__).resolve().parent / "objects"))
+from object_scenes import BSP_STATE, GROUND, LB, box, cell_id, obj, walk  # noqa: E402
+
+F = np.float32
+ARROW_ID = 0x80000001
+TARGET = (100.0, 97.0)  # off the cell border at y = 96 (a placement on it lands in the cell below)
+MISSILE_BITS = PhysicsState.Missile | PhysicsState.AlignPath | PhysicsState.PathClipped
+
+
+@pytest.fixture(autouse=True)
+def _quiet_numpy():
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore", RuntimeWarning)
+        yield
+
+
+def make_world(extra=()):
+    """Flat ground at 20 m, a 0.5 m sphere target (a dynamic object: not Static) at (100, 97), the
+    `extra` statics, and an arrow: a 0.05 m sphere with gravity, built but not in the world
+    (InitPhysicsObj leaves CurCell null), whose WorldObject is Ammunition."""
+    target_rec = obj(0, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)), *TARGET, state=0)
+    scene = walk("arrow", (90, 97, GROUND + 0.5), (91, 97, GROUND + 0.5), [target_rec, *extra],
+                 spheres=(SphereRec((0.0, 0.0, 0.0), 0.05),), state=int(PhysicsState.Gravity), transient=0, contact=False)
+    timer = PhysicsTimer(10.0)
+    lscape, portal_dat, dids = scene_world(scene, EXACT, timer)
+    statics = [build_static(rec, did, portal_dat, lscape) for rec, did in zip(scene.objects, dids)]
+    arrow = build_mover(scene.mover, dat.MOVER_SETUP_ID, ARROW_ID, portal_dat, lscape)
+    arrow.cur_cell = None
+    arrow.position = Position(0, AFrame.identity(EXACT))
+    return lscape, timer, statics, arrow
+
+
+@pytest.fixture
+def world():
+    lscape, timer, statics, arrow = make_world()
+    yield lscape, timer, statics[0], arrow
+    lscape.release()
+
+
+def fly(wo, lscape, timer, ticks=40):
+    """Ticks of 0.05 s until the arrow's Missile bit is gone (it touched something)."""
+    t = timer.current_time
+    for _ in range(ticks):
+        t += 0.05
+        timer.set(t)
+        ml.update_object_physics(wo, lscape)
+        if not wo.physics_obj.state & PhysicsState.Missile:
+            break
+    return t
+
+
+def v(x, y, z):
+    return EXACT.vec(x, y, z)
+
+
+def launch(lscape, timer, target, arrow, kind=Ammunition, speed=20.0):
+    wo = kind(physics_obj=arrow, physics_creation_time=timer.current_time)
+    arrow.weenie_obj = WeenieObject(world_object=wo)
+    origin = v(90, 97, GROUND + 0.5)
+    dest = target.position.frame.origin + v(0, 0, 0.5)
+    velocity, _ = ml.get_projectile_velocity(origin, dest, F(speed), v(0, 0, 0))
+    ok = ml.launch_projectile(wo, None, target, origin, EXACT.quat(0, 0, 0, 1), cell_id(LB, 90, 97), velocity, lscape,
+                              launcher_ethereal=True)
+    return wo, ok, velocity
+
+
+def test_a_launched_arrow_enters_the_world_active_with_the_missile_bits_and_its_target(world):
+    lscape, timer, target, arrow = world
+    wo, ok, velocity = launch(lscape, timer, target, arrow)
+    assert ok and wo.listed and wo.in_landblock
+    assert arrow.cur_cell is not None and arrow.is_active()
+    assert arrow.state & MISSILE_BITS == MISSILE_BITS and arrow.state & PhysicsState.ReportCollisions
+    assert not arrow.state & (PhysicsState.Ethereal | PhysicsState.IgnoreCollisions)
+    assert arrow.projectile_target is target and wo.projectile_target is target
+    assert arrow.velocity == velocity  # assigned, not set_velocity's clamp
+    assert arrow.server_objects.get_object_a(ARROW_ID) is arrow
+
+
+def test_an_arrow_flies_until_it_strikes_its_target_and_the_hit_destroys_its_physics(world):
+    lscape, timer, target, arrow = world
+    wo, ok, _ = launch(lscape, timer, target, arrow)
+    assert ok
+    t = fly(wo, lscape, timer)
+    # report_object_collision cleared Missile | AlignPath | PathClipped on touching the target
+    assert not arrow.state & MISSILE_BITS
+    # stopped at the target's surface: the arrow's 0.05 m sphere against the target's 0.5 m one, whose
+    # centre is 0.5 m up (PathClipped: the rest of the step is cut off, not slid along)
+    gap = (arrow.position.frame.origin - (target.position.frame.origin + v(0, 0, 0.5))).length()
+    assert 0.55 <= gap < 0.6
+    cell = arrow.cur_cell
+
+    # what DoCollision runs for Ammunition: ProjectileCollisionHelper.OnCollideObject(target)
+    ml.on_collide_object(wo, target)
+    assert arrow.cur_cell is None and not arrow.is_active() and arrow.transient_state == 0
+    assert arrow.position.obj_cell_id == 0
+    assert arrow not in cell.object_list and cell.id & 0xFFFF0000 == LB
+    assert arrow.server_objects.get_object_a(ARROW_ID) is None
+    assert wo.hit_msg and not wo.listed and not wo.in_landblock
+    # the next tick does nothing: UpdateObjectPhysics returns at its is_active check
+    timer.set(t + 0.05)
+    assert ml.update_object_physics(wo, lscape) is False
+
+
+def test_an_arrow_hitting_another_object_counts_as_hitting_the_environment(world):
+    lscape, timer, target, arrow = world
+    wo, ok, _ = launch(lscape, timer, target, arrow)
+    other = object()
+    ml.on_collide_object(wo, other)
+    assert arrow.cur_cell is None and not arrow.is_active() and wo.hit_msg
+
+
+def test_a_hit_while_the_arrow_is_still_entering_the_world_is_no_environment_hit(world):
+    lscape, timer, target, arrow = world
+    wo, ok, _ = launch(lscape, timer, target, arrow)
+    arrow.entering_world = True
+    ml.on_collide_environment(wo)
+    assert arrow.is_active() and arrow.cur_cell is not None and not wo.hit_msg
+
+
+def test_a_thrown_weapon_without_a_target_ignores_its_collisions(world):
+    lscape, timer, target, arrow = world
+    wo, ok, _ = launch(lscape, timer, target, arrow, kind=Missile)
+    wo.projectile_target = None  # WorldObject.OnCollideObject/OnCollideEnvironment: no ProjectileTarget, no helper
+    ml.on_collide_environment(wo)
+    ml.on_collide_object(wo, target)
+    assert arrow.is_active() and arrow.cur_cell is not None
+
+
+def test_a_missile_times_out_thirty_seconds_after_it_was_made(world):
+    lscape, timer, target, arrow = world
+    wo, ok, _ = launch(lscape, timer, target, arrow, speed=1.0)
+    timer.set(wo.physics_creation_time + 30.0)
+    assert ml.update_object_physics(wo, lscape) is False
+    assert wo.is_destroyed and arrow.cur_cell is None and not arrow.is_active()
+
+
+def test_an_invalid_velocity_misfires_before_anything_is_made(world):
+    lscape, timer, target, arrow = world
+    wo = Ammunition(physics_obj=arrow)
+    nan = float("nan")
+    assert ml.launch_projectile(wo, None, target, v(90, 97, GROUND + 0.5), EXACT.quat(0, 0, 0, 1), cell_id(LB, 90, 97),
+                                v(nan, 0, 0), lscape, launcher_ethereal=True) is False
+    assert arrow.state & PhysicsState.Missile == 0 and wo.projectile_target is None
+
+
+def test_a_spell_projectile_impact_makes_it_ethereal_inert_and_still(world):
+    lscape, timer, target, arrow = world
+    wo = SpellProjectile(physics_obj=arrow, spell_type=ml.BOLT, physics_creation_time=timer.current_time)
+    arrow.weenie_obj = WeenieObject(world_object=wo)
+    ml.spell_projectile_setup(wo)
+    assert arrow.state & MISSILE_BITS == MISSILE_BITS and not arrow.state & PhysicsState.EdgeSlide
+    velocity = ml.calculate_spell_projectile_velocity(v(90, 97, GROUND + 1), v(100, 97, GROUND + 0.5), F(15), v(0, 0, 0), ml.BOLT)
+    assert velocity == normalize(v(10, 0, -0.5)) * F(15)  # a Bolt at a still target: dir * speed
+    ml.spell_projectile_set_physics_state(wo, target, velocity, v(90, 97, GROUND + 1))
+    assert ml.launch_spell_projectile(wo, None, Position(cell_id(LB, 90, 97), AFrame(v(90, 97, GROUND + 1), arrow.position.frame.orientation)),
+                                      lscape, caster_ethereal=True)
+    assert arrow.is_active() and arrow.projectile_target is target
+    ml.on_collide_object(wo, target)
+    for bit in (PhysicsState.Ethereal, PhysicsState.IgnoreCollisions, PhysicsState.NoDraw, PhysicsState.Cloaked):
+        assert arrow.state & bit
+    assert not arrow.state & (PhysicsState.ReportCollisions | PhysicsState.LightingOn)
+    assert not arrow.is_active() and arrow.velocity == v(0, 0, 0)
+    assert arrow.cur_cell is not None  # destroyed only 5 s later (its action chain)
+    ml.destroy(wo)
+    assert arrow.cur_cell is None and not wo.listed
+
+
+def test_an_arrow_flies_through_an_ethereal_object_that_is_not_its_target():
+    # ObjectInfo.MissileIgnore: a missile ignores an ethereal object that is not its target
+    lscape, timer, statics, arrow = make_world([obj(1, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)), 95.0, 97.0,
+                                                    state=int(PhysicsState.Ethereal))])
+    try:
+        target = statics[0]
+        wo, ok, _ = launch(lscape, timer, target, arrow)
+        t = timer.current_time
+        while arrow.position.frame.origin.x < 96.0:  # through the sphere's x = 94.5 .. 95.5
+            t += 0.05
+            timer.set(t)
+            ml.update_object_physics(wo, lscape)
+        # no collision was reported: an ethereal obstacle would otherwise be a CollideObject, whose report
+        # clears the missile bits
+        assert arrow.state & MISSILE_BITS == MISSILE_BITS and not arrow.collision_table
+        fly(wo, lscape, timer)
+        assert not arrow.state & MISSILE_BITS
+        assert arrow.position.frame.origin.x > 99.0  # stopped at the target
+    finally:
+        lscape.release()
+
+
+def test_an_arrow_striking_a_wall_loses_only_its_missile_bit_and_the_environment_hit_destroys_it():
+    # a static BSP wall 1 m thick across the path at x = 95: track_object_collision of a Static reports an
+    # environment collision, which clears Missile alone (AlignPath and PathClipped stay; an object hit clears all three)
+    lscape, timer, statics, arrow = make_world([obj(1, box(1.0, 6.0, 4.0), 95.0, 97.0, state=BSP_STATE)])
+    try:
+        target = statics[0]
+        wo, ok, _ = launch(lscape, timer, target, arrow)
+        fly(wo, lscape, timer)
+        assert not arrow.state & PhysicsState.Missile
+        assert arrow.state & (PhysicsState.AlignPath | PhysicsState.PathClipped) == PhysicsState.AlignPath | PhysicsState.PathClipped
+        assert 94.0 < arrow.position.frame.origin.x < 94.5  # at the wall's near face (x = 94.5), not through it
+        ml.on_collide_environment(wo)  # what DoCollision(EnvCollisionProfile) runs for Ammunition
+        assert arrow.cur_cell is None and not arrow.is_active() and wo.hit_msg
+    finally:
+        lscape.release()
