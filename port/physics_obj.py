@@ -2151,28 +2151,6 @@ class PhysicsObj:
     def is_active(self) -> bool:
         return bool(self.transient_state & TransientState.Active)
 
-    @anchor("CPhysicsObj::leave_world", "PhysicsObj.cs:leave_world")
-    def leave_world(self) -> None:
-        """ObjMaint.RemoveObjectToBeDestroyed: the destruction queue is not kept (see
-        prepare_to_enter_world)."""
-        self.report_collision_end(True)
-        self.transient_state &= ~TransientState.Active
-        self.remove_shadows_from_cells()
-        self.leave_cell(False)
-
-        self.position.obj_cell_id = 0
-        if self.part_array is not None and not self.state & PhysicsState.ParticleEmitter:
-            self.part_array.set_cell_id(0)
-
-        self.transient_state &= ~TransientState.Contact
-        self.calc_acceleration()
-        walkable = bool(self.transient_state & TransientState.OnWalkable)
-        self.transient_state &= ~(TransientState.OnWalkable | TransientState.WaterContact)
-        if self.movement_manager is not None and walkable:
-            self.movement_manager.leave_ground()
-        self.calc_acceleration()
-        self.transient_state = 0
-
     @anchor("CPhysicsObj::exit_world", "PhysicsObj.cs:exit_world")
     def exit_world(self) -> None:
         if self.part_array is not None:

@@ -128,6 +128,7 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     return obj, _placement_state(obj, SetPositionError.OK if entered else SetPositionError.GeneralFailure), entered
 
 
+@harness("the server WorldObject another mover's PhysicsObj is made for (a Player, a Creature or a GenericObject)")
 def world_object_of(o: OtherMover):
     """The server's WorldObject for another mover: a Player, a Creature or a GenericObject. A monster is a Creature
     with IsMonster (Creature.SetMonsterState: Attackable, ACE's default for an object without the property); an NPC
