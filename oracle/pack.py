@@ -203,6 +203,7 @@ def _frozen_maker(cls):
 
 
 _make_outcome = _frozen_maker(Outcome)
+_make_tick = _frozen_maker(TickState)
 _make_cps = _frozen_maker(ContactPlaneState)
 _make_ns = _frozen_maker(NormalState)
 _parts: dict = {}  # (valid, cell, water, nx, ny, nz, d) / (valid, x, y, z) -> the shared immutable record
@@ -267,38 +268,35 @@ def _motion_at(data, pos: int):
 
 
 _COLLISION = struct.Struct("<IdB")
+_make_collision = _frozen_maker(CollisionState)
 
 
 def _collisions_at(data, pos: int):
     """int n, then per CollisionTable record: the id, TouchedTime (double), Ethereal (byte)."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
-    out = []
-    for _ in range(n):
-        i, t, e = _COLLISION.unpack_from(data, pos)
-        out.append(CollisionState(i, t, bool(e)))
-        pos += _COLLISION.size
-    return tuple(out), pos
+    out = [_make_collision(i, t, bool(e)) for i, t, e in _COLLISION.iter_unpack(data[pos:pos + n * _COLLISION.size])]
+    return tuple(out), pos + n * _COLLISION.size
 
 
-def _state_at(data, pos: int, collisions=None, others=None):
-    """One TickState's fields (Facade.WriteState) from `pos`: (its values, its shadow cells, its motion, the offset
-    after them)."""
+def _state_at(data, pos: int):
+    """One TickState's fields (Facade.WriteState) from `pos`: (its values as TickState's first 18 positional
+    arguments, the offset after them)."""
     v = _TICK.unpack_from(data, pos)
     pos += _TICK.size
     shadows = struct.unpack_from(f"<{v[34]}I", data, pos)
     pos += 4 * v[34]
     motion, pos = _motion_at(data, pos)
-    return (TickState(bool(v[0]), v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23],
-                      v[23], v[24], v[25], PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), tuple(shadows),
-                      motion), pos)
+    return (bool(v[0]), v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23], v[23], v[24], v[25],
+            PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), shadows, motion), pos
 
 
 def _ticks_at(data, pos: int):
     """int n (-1: not a tick scene), then per tick byte 0 and its state, or byte 1, int length and the error
     message (the last tick: an error ends the scene). A state is its fields (`_state_at`), then byte 0, or byte 1
     (a scene with other movers), its CollisionTable, int n and per other mover its id, state and CollisionTable.
-    Returns the TickStates or None."""
+    Returns the TickStates or None. Each TickState is made once, with all its fields (a scene with several movers
+    has one per mover and tick)."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
     if n < 0:
@@ -310,21 +308,22 @@ def _ticks_at(data, pos: int):
             out.append(TickState(error=bytes(data[pos + 5:pos + 5 + k]).decode("utf-8", "replace")))
             pos += 5 + k
             continue
-        state, pos = _state_at(data, pos + 1)
+        fields_, pos = _state_at(data, pos + 1)
         has_others = data[pos] not in (0, b"\0")
         pos += 1
-        if has_others:
-            collisions, pos = _collisions_at(data, pos)
-            (k,) = _I32.unpack_from(data, pos)
-            pos += 4
-            others = []
-            for _ in range(k):
-                (oid,) = _U32.unpack_from(data, pos)
-                other, pos = _state_at(data, pos + 4)
-                other_collisions, pos = _collisions_at(data, pos)
-                others.append(replace(other, collisions=other_collisions, id=oid))
-            state = replace(state, collisions=collisions, others=tuple(others))
-        out.append(state)
+        if not has_others:
+            out.append(_make_tick(*fields_, None, None, None, None))
+            continue
+        collisions, pos = _collisions_at(data, pos)
+        (k,) = _I32.unpack_from(data, pos)
+        pos += 4
+        others = []
+        for _ in range(k):
+            (oid,) = _U32.unpack_from(data, pos)
+            other, pos = _state_at(data, pos + 4)
+            other_collisions, pos = _collisions_at(data, pos)
+            others.append(_make_tick(*other, other_collisions, None, oid, None))
+        out.append(_make_tick(*fields_, collisions, tuple(others), None, None))
     return tuple(out)
 
 
