@@ -333,6 +333,12 @@ def _extras(draw, world: _Flat, ids: _Ids, tl: _Timeline, mx: float, my: float, 
     return out
 
 
+def _within(distance: float, speed: float, dts: list[float]) -> float:
+    """`distance`, or less: what `speed` covers in 0.6 of the scene's time (so the meeting falls within the
+    ticks), but at least a metre."""
+    return min(distance, max(0.6 * speed * sum(dts), 1.0))
+
+
 def draw_movers_ticks(draw, clock, policy: str | None = None) -> Scene:
     """A movers tick scene; `clock(draw, n)` is strategies.ticks._clock (start, dts, label)."""
     policy = policy or draw(POLICIES)
@@ -358,9 +364,9 @@ def _crossing(draw, clock, policy: str) -> Scene:
     rad = math.radians(dr.take(draw, HEADINGS))
     ux, uy = math.cos(rad), math.sin(rad)
     vm, vo = float(dr.take(draw, SPEEDS)), float(dr.take(draw, SPEEDS))
-    lm = float(dr.take(draw, GAPS))  # the mover's distance to the meeting point
     n = dr.take(draw, TICK_COUNTS)
     start, dts, label = clock(draw, n)
+    lm = _within(float(dr.take(draw, GAPS)), vm, dts)  # the mover's distance to the meeting point
     tl = _Timeline(dts)
     ids = _Ids()
     weenie = draw(WEENIES)
@@ -402,11 +408,11 @@ def _box_corner(draw, clock) -> Scene:
     sm, so = _spheres(draw), _spheres(draw)
     rm, ro = sm[0].radius, so[0].radius
     gm, go = draw(LANE_GAPS), draw(LANE_GAPS)
-    a = float(dr.take(draw, GAPS))
     vm, vo = float(dr.take(draw, SPEEDS)), float(dr.take(draw, SPEEDS))
-    b = min(max(vo / vm * (a + ro + go) - rm - gm + draw(TIMING), 0.1), MAX_LEAD)
     n = dr.take(draw, TICK_COUNTS)
     start, dts, label = clock(draw, n)
+    a = _within(float(dr.take(draw, GAPS)), vm, dts)
+    b = min(max(vo / vm * (a + ro + go) - rm - gm + draw(TIMING), 0.1), MAX_LEAD)
     tl, ids = _Timeline(dts), _Ids()
     mu, ou = (cs, sn), (-sn, cs)  # the box's +x and +y in the block frame
     mkind, okind = draw(INPUT_KINDS), draw(INPUT_KINDS)
@@ -494,11 +500,11 @@ def _chase(draw, clock, doorway: bool) -> Scene:
     for c in range(count):
         weenie = draw(CHASERS)
         so = _spheres(draw)
-        lead = float(dr.take(draw, CHASE_LEADS))
+        speed = max(vm, 1.0) * draw(CHASE_FASTER)
+        lead = _within(float(dr.take(draw, CHASE_LEADS)), max(speed - vm, 0.5), dts)
         lat = draw(CHASE_LATERAL)
         cx, cy = mx - ux * lead + px * lat, my - uy * lead + py * lat
         o = _other(draw, ids, weenie, so, world.position(cx, cy), scale=draw(SCALES))
-        speed = max(vm, 1.0) * draw(CHASE_FASTER)
         rows = tl.of(o.id)
         t, x, y = 0.0, cx, cy
         for i, dt in enumerate(dts):  # the mover where its held velocity puts it at the tick's start
