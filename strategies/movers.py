@@ -39,7 +39,7 @@ from hypothesis import strategies as st
 from acconform.flags import PhysicsState, PlayerKillerStatus, TransientState
 from acconform.numerics import f32_bits, f32_from_bits, to_f32
 from acconform.port.constants import EPSILON
-from acconform.scene import (IDENTITY, ContactPlane, Frame, Mover, OtherInputs, OtherMover, Placement, PlaneRec,
+from acconform.scene import (IDENTITY, ContactPlane, Mover, OtherInputs, OtherMover, Placement, PlaneRec,
                              Position, Scene, SphereRec, StaticObject)
 
 from . import buildings as bl
@@ -562,7 +562,7 @@ def touch_radius(rm: float, touch: str) -> tuple[float, float] | None:
     return None
 
 
-def _touch_pair(draw, world: _Flat):
+def _touch_pair(draw):
     """The mover's and the other's spheres (the same centres; the other's radius solved by touch_radius, its
     scale a power of two with its spheres divided by it), the other's weenie and the touch label."""
     rm = _on_grid(draw(EXACT_RADII))
@@ -587,7 +587,7 @@ def _touch(draw, clock) -> Scene:
     """The mover and another at rest (velocity 0), their centres `dist` apart along an axis on GRID: touching
     exactly (touch_radius), or an ulp apart or into each other, for a few ticks of any clock."""
     world = _Flat(draw, False)
-    sm, so, scale, dist, touch = _touch_pair(draw, world)
+    sm, so, scale, dist, touch = _touch_pair(draw)
     ax, ay = draw(AXES)
     x0, y0 = _on_grid(96.0 + float(draw(NEAR)) * 10), _on_grid(96.0 + float(draw(NEAR)) * 10)
     n = dr.take(draw, TICK_COUNTS)
@@ -605,7 +605,7 @@ def _approach(draw) -> Scene:
     (speed x dt, dt a binary fraction between MinQuantum and MaxQuantum) is exact, so its k-th tick puts it
     exactly k steps on; the other stands where, at a drawn tick, the centre distance is the touch's."""
     world = _Flat(draw, False)
-    sm, so, scale, dist, touch = _touch_pair(draw, world)
+    sm, so, scale, dist, touch = _touch_pair(draw)
     # along +y or -y, facing it: the identity or a half turn, whose float32 quaternions rotate the root
     # motion's local +y exactly (a quarter turn's do not: cos 45 degrees is not a float32)
     ay = draw(st.sampled_from((1, -1)))
