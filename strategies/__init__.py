@@ -14,7 +14,8 @@ frames, statics inside and across cells, portals to outside -- strategies/dungeo
 entered through the building's portal: doors barely wider than the mover, in and out, along the
 walls, porches, cellars, borders, a static in the doorway, placements inside -- strategies/buildings.py), "ticks"
 (any of those worlds with a timeline of ticks: falls, jumps, slides, sledding, presses, crossings,
-portals, quantum-exact clocks, threshold velocities, both drivers -- strategies/ticks.py), and
+portals, quantum-exact clocks, threshold velocities, both drivers -- strategies/ticks.py), "motion",
+"doors" and "movers" (tick scenes of one ticks policy: strategies/motion.py, doors.py, movers.py), and
 "ticks:<world>" (tick scenes over that world only, e.g. "ticks:buildings": through a house's door,
 off its porch, down its cellar, along its shell; recorded as "ticks"). DEFAULT_KINDS
 is what the port supports today; grow it as the port does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
@@ -49,6 +50,11 @@ MOTION_KIND = "motion"
 # "doors": tick scenes of the ticks policy door only (strategies/doors.py: a door on the path opens or closes at a
 # tick); recorded as "ticks"; an implementation runs it when it lists "ticks" and the feature doors
 DOORS_KIND = "doors"
+# "movers": tick scenes of the ticks policy movers only (strategies/movers.py: one to three other moving objects
+# beside the mover -- head-on, side-on, at corners, chasing, exactly touching, jumping over); recorded as "ticks";
+# an implementation runs it when it lists "ticks" and the feature objects.moving
+MOVERS_KIND = "movers"
+EXTRA_KINDS: tuple[str, ...] = (MOTION_KIND, DOORS_KIND, MOVERS_KIND)  # tick scenes of one policy
 
 
 def kind_supported(kind: str, supported) -> bool:
@@ -71,8 +77,8 @@ def check_kinds(kinds) -> tuple[str, ...]:
         if not k:
             raise AcconformError(f"--kinds {given!r}: an empty kind name between commas "
                                  f"(known: {', '.join(ALL_KINDS)})")
-        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS and k not in (MOTION_KIND, DOORS_KIND):
-            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, {MOTION_KIND}, {DOORS_KIND}, or ticks:<world> for "
+        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS and k not in EXTRA_KINDS:
+            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS + EXTRA_KINDS)}, or ticks:<world> for "
                                  f"tick scenes over one of {', '.join(GEOMETRY_KINDS)})")
     if len(set(kinds)) != len(kinds):
         twice = next(k for k in kinds if kinds.count(k) > 1)

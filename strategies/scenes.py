@@ -164,6 +164,10 @@ def scenes_of(draw, kind: str):
         from .ticks import draw_tick_scene
 
         return draw_tick_scene(draw, None, "door")
+    if kind == "movers":  # the ticks policy movers only (strategies/movers.py)
+        from .ticks import draw_tick_scene
+
+        return draw_tick_scene(draw, None, "movers")
     if kind == "motion":  # the ticks policy motion only (strategies/motion.py)
         from .ticks import draw_tick_scene
 

@@ -342,6 +342,10 @@ def _draw_tick_scene(draw, world: str | None, policy: str | None) -> Scene:
     from .scenes import draw_scene
 
     policy = policy or draw(POLICIES_OVER[world])
+    if policy == "movers":  # other movers beside the mover, on their own flat ground or a house (strategies/movers.py)
+        from .movers import draw_movers_ticks
+
+        return draw_movers_ticks(draw, _clock)
     sites = SITES_OVER[world][policy]
     if policy == "sled":
         return _sled(draw, draw(sites)[0])

@@ -1,0 +1,674 @@
+"""Several movers (issue 41; campaign kind ``movers``, the ticks policy ``movers``): tick scenes with one to
+three other moving objects (scene/8 ``others``) beside the mover, entered into the world after it
+(enter_world) and stepped after it each tick.
+
+    draw_movers_ticks(draw, clock)     a tick scene of a drawn MOVER_POLICIES entry
+
+The world is flat ground (strategies/buildings.py's flat landblocks: the home block, and for a meeting at a
+landblock border its neighbours toward -x and -y), or a house of strategies/buildings.py. The policies:
+
+- ``head_on``: the mover and another walk into each other along one line; ``side_on``: the other crosses the
+  mover's path at right angles, timed to reach the crossing when the mover does (or a little off);
+- ``corner``: both walk along the two faces of a BSP box toward the corner they share, out of each other's
+  sight, or the mover waits at a house's corner (buildings "along") while the other comes along its front;
+- ``chase``: a monster (or an NPC) chases the mover, its velocity aimed each tick at where the mover's held
+  velocity puts it; ``doorway``: the same through a doorway of two static slabs with a gap between them;
+- ``touch``: the mover and another at rest, their spheres exactly touching (the centre distance the radius
+  sum as float32, or ACE's radsum, the sum less EPSILON; or one ulp either side), placed on a 2^-16 grid
+  so the distance is exact; ``approach``: one walks by root motion on an exact grid (dt 1/16, 3/32, 5/64 s,
+  a speed whose step is exact) toward the other standing where that distance is met exactly at a drawn tick;
+- ``jump``: a player (the mover, or another player) jumps onto or over another standing ahead.
+
+Across policies: the pair's weenies (player/player in every PlayerKillerStatus combination: two players
+whose statuses exempt them pass through each other, FindObjCollisions; player/monster, player/creature,
+player/object), one or two spheres, scaled others, velocity / local_velocity / root-motion inputs, an other
+(or the mover) turning Ethereal at a tick (`state`) and back, bystanders (up to three others in all), the
+ticks strategies' clocks (strategies/ticks.py _clock) but where the policy needs an exact grid, and
+ACE's server mode three times in four. Players' ids from 0x50000002 (0x50000001 is the mover's), the
+others' from 0x80000001.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+from hypothesis import strategies as st
+
+from acconform.flags import PhysicsState, PlayerKillerStatus, TransientState
+from acconform.numerics import f32_bits, f32_from_bits, to_f32
+from acconform.port.constants import EPSILON
+from acconform.scene import (IDENTITY, ContactPlane, Mover, OtherInputs, OtherMover, Placement, PlaneRec,
+                             Position, Scene, SphereRec, StaticObject)
+
+from . import buildings as bl
+from . import draws as dr
+from . import shapes as sh
+from .terrain import BLOCK, CELL
+
+POLICY_NAMES = ("head_on", "head_on", "side_on", "side_on", "corner", "chase", "chase", "doorway", "touch", "touch",
+                "approach", "approach", "jump", "jump")
+POLICIES = st.sampled_from(POLICY_NAMES)
+
+FIRST_PLAYER, FIRST_OBJECT = 0x50000002, 0x80000001
+WALKING = int(TransientState.Contact | TransientState.OnWalkable | TransientState.Active)
+STATIC_BSP = int(PhysicsState.Static | PhysicsState.HasPhysicsBSP)
+NPK = int(PlayerKillerStatus.NPK)
+
+# the pair: who the other is, and the players' PlayerKillerStatus (every member of ACE's enum, the
+# ones FindObjCollisions reads -- NPK, PK, PKLite, Free -- most often)
+WEENIES = st.sampled_from(("player", "player", "player", "monster", "monster", "creature", "object"))
+PKS = dr.OneOf(st.sampled_from(tuple(int(s) for s in (PlayerKillerStatus.NPK, PlayerKillerStatus.NPK, PlayerKillerStatus.PK,
+                                                      PlayerKillerStatus.PKLite, PlayerKillerStatus.Free))),
+               st.sampled_from(tuple(int(s) for s in PlayerKillerStatus)))
+CREATURE_PKS = st.sampled_from(("npk", "npk", "npk", "drawn"))
+
+# bodies
+RADII = dr.OneOf(st.sampled_from((0.48, 0.35, 0.5, 0.3, 1.0)), dr.f32(0.2, 1.2))
+TWO_SPHERES = st.sampled_from((False, False, True))
+HEAD_HEIGHTS = st.sampled_from((1.0, 1.6, 2.0, 0.5))
+SCALES = st.sampled_from(tuple(to_f32(x) for x in (1.0, 1.0, 1.0, 1.0, 1.0, 0.5, 2.0, 1.5, 0.8)))
+EXACT_SCALES = st.sampled_from((1.0, 1.0, 1.0, 1.0, 0.5, 2.0))  # powers of two: a scaled radius stays exact
+STEPS = st.sampled_from(tuple(to_f32(x) for x in (0.4, 0.4, 0.2, 0.6, 1.0, 0.0)))
+
+# motion
+SPEEDS = dr.OneOf(st.sampled_from((3.0, 1.0, 4.0, 2.5, 6.0)), dr.f32(0.5, 8.0))
+INPUT_KINDS = st.sampled_from(("velocity", "velocity", "velocity", "local", "root"))
+HOLDS = st.sampled_from(("all", "all", "all", "stop"))
+WALK_LIMIT = 40.0  # metres a walk holds its velocity for: from 30 m off a block's middle it stays in the block
+TICK_COUNTS = dr.OneOf(dr.ints(20, 40), dr.ints(40, 90), dr.ints(5, 20))
+GAPS = dr.OneOf(st.sampled_from((2.0, 4.0, 1.0, 6.0)), dr.f32(0.2, 10.0))
+TIMING = st.sampled_from((0.0, 0.0, 0.0, 0.5, -0.5, 1.5, -1.5))  # metres off a timed meeting
+MAX_LEAD = 20.0  # the other starts at most this far from the meeting (a slow mover's is not waited for)
+WHERE = st.sampled_from(("middle", "middle", "middle", "middle", "cell", "cell", "block", "corner"))
+HEADINGS = dr.OneOf(st.sampled_from((0.0, 90.0, 180.0, 270.0, 45.0)), dr.ints(0, 359))
+NEAR = dr.f32(-3.0, 3.0)
+EXTRAS = st.sampled_from((0, 0, 0, 1, 1, 2))
+EXTRA_KINDS = st.sampled_from(("stand", "stand", "cross", "follow"))
+EXTRA_GAPS = st.sampled_from((0.0, 0.1, 0.5, 1.0, 2.0))
+ETHEREAL_AT = st.sampled_from((None, None, None, None, "other", "other", "mover"))
+
+# corners
+BOX_SIDES = dr.OneOf(st.sampled_from((2.0, 4.0, 1.0)), dr.f32(0.5, 6.0))
+BOX_YAWS = st.sampled_from((0.0, 0.0, 90.0, 45.0, 30.0, 200.0))
+LANE_GAPS = st.sampled_from((0.0, 0.01, 0.1, 0.3, 1.0))
+CORNER_SITES = st.sampled_from(("box", "box", "box", "house"))
+HOUSE_WAITS = st.sampled_from(("all", "all", "some", "none"))
+
+# chases
+CHASE_LEADS = dr.OneOf(st.sampled_from((3.0, 5.0, 1.5)), dr.f32(0.5, 10.0))
+CHASE_LATERAL = st.sampled_from((0.0, 0.0, 1.0, -1.0, 2.5, -2.5))
+CHASE_FASTER = st.sampled_from((1.5, 1.2, 2.0, 1.0))
+TARGET_SPEEDS = st.sampled_from((2.0, 3.0, 1.0, 0.0, 4.0))
+CHASERS = st.sampled_from(("monster", "monster", "monster", "creature"))
+DOOR_SLACK = dr.OneOf(st.sampled_from((0.2, 0.05, 0.5, 1.0, 0.01)), dr.f32(0.0, 2.0))
+DOOR_AHEAD = dr.OneOf(st.sampled_from((2.0, 4.0, 1.0)), dr.f32(0.5, 6.0))
+SLAB_WIDTHS = st.sampled_from((2.0, 3.0, 1.0))
+SLAB_THICKNESS = st.sampled_from((0.2, 0.5, 0.1))
+DOORWAY_ID = 0x7D000011
+
+# exact touches
+GRID = 2.0 ** -16  # coordinates and radii on it: a sum of two stays exact below 256
+TOUCHES = st.sampled_from(("sum", "sum", "sum-1ulp", "sum+1ulp", "ace", "ace", "ace-1ulp", "ace+1ulp"))
+EXACT_RADII = st.sampled_from((0.48, 0.5, 0.35, 0.3, 0.75, 1.0, 0.4375))
+AXES = st.sampled_from(((1, 0), (-1, 0), (0, 1), (0, -1)))
+HALF_TURN = (0.0, 0.0, 0.0, 1.0)
+EXACT_DTS = st.sampled_from((1 / 16, 3 / 32, 5 / 64))  # binary fractions in [MinQuantum, MaxQuantum]
+EXACT_SPEEDS = st.sampled_from((2.0, 3.0, 1.0, 1.5, 4.0, 2.5))
+EXACT_STARTS = st.sampled_from((1000.0, 0.0, 5000.0))
+MEET_AT = dr.ints(1, 20)
+APPROACHERS = st.sampled_from(("mover", "mover", "other"))
+
+# jumps
+JUMP_UPS = dr.OneOf(st.sampled_from((6.0, 8.0, 4.0, 10.0)), dr.f32(2.0, 12.0))
+JUMP_FORWARD = dr.OneOf(st.sampled_from((2.0, 3.0, 4.0, 1.0)), dr.f32(0.0, 6.0))
+JUMP_AHEAD = dr.OneOf(st.sampled_from((1.0, 1.5, 0.5, 2.0)), dr.f32(0.0, 4.0))
+JUMP_AT = dr.ints(0, 4)
+JUMPERS = st.sampled_from(("mover", "mover", "other"))
+
+
+# ---------------------------------------------------------------- bodies, ids, the world
+
+class _Ids:
+    def __init__(self):
+        self.player, self.object = FIRST_PLAYER, FIRST_OBJECT
+
+    def take(self, weenie: str) -> int:
+        if weenie == "player":
+            self.player += 1
+            return self.player - 1
+        self.object += 1
+        return self.object - 1
+
+
+def _spheres(draw, r: float | None = None) -> tuple[SphereRec, ...]:
+    r = to_f32(r if r is not None else dr.take(draw, RADII))
+    out = [SphereRec((0.0, 0.0, r), r)]
+    if draw(TWO_SPHERES):
+        out.append(SphereRec((0.0, 0.0, to_f32(r + r * draw(HEAD_HEIGHTS))), r))
+    return tuple(out)
+
+
+def _pks(draw, weenie: str) -> int:
+    if weenie == "player" or (weenie in ("monster", "creature") and draw(CREATURE_PKS) == "drawn"):
+        return int(dr.take(draw, PKS))
+    return NPK
+
+
+def _heading_quat(ux: float, uy: float):
+    """The yaw that turns the local +y (an object's forward) onto (ux, uy)."""
+    h = math.atan2(-ux, uy) / 2
+    return (to_f32(math.cos(h)), 0.0, 0.0, to_f32(math.sin(h)))
+
+
+def _unit(dx: float, dy: float) -> tuple[float, float]:
+    h = math.hypot(dx, dy)
+    return (dx / h, dy / h) if h > 0 else (1.0, 0.0)
+
+
+def _vec(*v):
+    return tuple(to_f32(c) for c in v)
+
+
+class _Flat:
+    """Flat ground at a height index of the default table: the home block (and its -x, -y neighbours)."""
+
+    def __init__(self, draw, neighbours: bool):
+        self.home = draw(bl.HOME_BLOCKS)
+        index = draw(bl.GROUND_INDEX)
+        self.z = to_f32(2.0 * index)
+        self.landblocks = bl._landblocks(self.home, index, neighbours)
+
+    def position(self, x: float, y: float, q=IDENTITY) -> Position:
+        """A point of the home block's frame (past its -x / -y edges: the neighbours) on the ground."""
+        return bl._outdoor_position(self.home, (to_f32(x), to_f32(y), self.z), q)
+
+
+def _meeting_point(draw, world_where: str) -> tuple[float, float]:
+    if world_where == "cell":
+        return 4 * CELL + draw(st.sampled_from((0.0, 0.5, -0.5, 1.0))), 96.0 + float(draw(NEAR))
+    if world_where == "block":
+        return draw(st.sampled_from((0.0, 0.5, -0.5, 1.5))), 96.0 + float(draw(NEAR))
+    if world_where == "corner":
+        return draw(st.sampled_from((0.0, 0.5, -0.5))), draw(st.sampled_from((0.0, 0.5, -0.5)))
+    return 96.0 + float(draw(NEAR)) * 10, 96.0 + float(draw(NEAR)) * 10
+
+
+def _mover(draw, spheres, begin: Position, z: float, pks: int, scale: float = 1.0) -> Mover:
+    plane = ContactPlane(begin.cell, PlaneRec((0.0, 0.0, 1.0), to_f32(-z)))
+    return Mover(spheres=spheres, begin=begin, end=None, step_up_height=to_f32(draw(STEPS)),
+                 step_down_height=to_f32(draw(STEPS)), scale=scale,
+                 state=int(PhysicsState.Gravity) | (int(PhysicsState.EdgeSlide) if draw(dr.BOOLEANS) else 0),
+                 transient_state=WALKING, contact_plane=plane, placement=Placement(via="enter_world"),
+                 player_killer_status=pks)
+
+
+def _other(draw, ids: _Ids, weenie: str, spheres, begin: Position, scale: float = 1.0, pks: int | None = None) -> OtherMover:
+    return OtherMover(ids.take(weenie), weenie, spheres, begin, to_f32(draw(STEPS)), to_f32(draw(STEPS)), scale=scale,
+                      transient_state=WALKING, player_killer_status=_pks(draw, weenie) if pks is None else pks)
+
+
+# ---------------------------------------------------------------- inputs
+
+class _Timeline:
+    """Per-tick inputs of the mover (dicts of TickStep fields) and of each other mover (dicts of OtherInputs fields)."""
+
+    def __init__(self, dts: list[float]):
+        self.n = n = len(dts)
+        self.dts = dts
+        self.mover = [{} for _ in range(n)]
+        self.others: dict[int, list[dict]] = {}
+
+    def of(self, oid: int) -> list[dict]:
+        return self.others.setdefault(oid, [{} for _ in range(self.n)])
+
+    def walk(self, draw, inputs: list[dict], ux: float, uy: float, speed: float, kind: str | None = None,
+             hold: str | None = None, first: int = 0, limit: float = WALK_LIMIT) -> str:
+        """Walk toward (ux, uy) at `speed` from tick `first`: a held velocity, a held local velocity (the body faces
+        its heading: see `facing`), or root motion (the Sequence's velocity, set once; the ground flags kept);
+        held every tick, or stopped at a drawn tick, and stopped once `limit` metres are walked (the scene's
+        landblocks end). Returns the kind."""
+        kind = kind or draw(INPUT_KINDS)
+        hold = hold or draw(HOLDS)
+        stop = self.n if hold == "all" else draw(st.integers(first, self.n - 1))
+        walked = 0.0
+        for i in range(first, stop):
+            walked += speed * self.dts[i]
+            if walked > limit:
+                stop = i + 1
+                break
+        for i in range(first, stop):
+            if kind == "velocity":
+                inputs[i]["velocity"] = _vec(ux * speed, uy * speed, 0.0)
+            elif kind == "local":
+                inputs[i]["local_velocity"] = _vec(0.0, speed, 0.0)
+            else:
+                if i == first:
+                    inputs[i]["sequence_velocity"] = _vec(0.0, speed, 0.0)
+                inputs[i]["transient_state"] = WALKING
+        if stop < self.n:
+            if kind == "root":
+                inputs[stop]["sequence_velocity"] = (0.0, 0.0, 0.0)
+            else:
+                inputs[stop]["velocity"] = (0.0, 0.0, 0.0)
+        return kind if hold == "all" else f"{kind}-stop"
+
+    def steps_inputs(self, others: tuple[OtherMover, ...]) -> list[dict]:
+        out = []
+        for i in range(self.n):
+            inp = dict(self.mover[i])
+            row = tuple(OtherInputs(o.id, **self.others[o.id][i]) for o in others
+                        if o.id in self.others and self.others[o.id][i])
+            if row:
+                inp["others"] = row
+            out.append(inp)
+        return out
+
+
+def facing(kind: str, ux: float, uy: float):
+    """The orientation a body walking toward (ux, uy) starts with: its heading for local and root inputs."""
+    return _heading_quat(ux, uy) if kind in ("local", "root") else IDENTITY
+
+
+def _ethereal(draw, tl: _Timeline, scene_mover: Mover, others: tuple[OtherMover, ...]) -> str:
+    """Maybe an other (or the mover) turns Ethereal at a drawn tick, and half the time back later."""
+    who = draw(ETHEREAL_AT)
+    if who is None or (who == "other" and not others) or tl.n < 2:
+        return ""
+    k = draw(st.integers(0, tl.n - 1))
+    back = draw(st.integers(k + 1, tl.n - 1)) if k + 1 < tl.n and draw(dr.BOOLEANS) else None
+    if who == "mover":
+        rows, state = tl.mover, scene_mover.state
+    else:
+        o = others[dr.index(draw, len(others))]
+        rows, state = tl.of(o.id), o.state
+    rows[k]["state"] = state | int(PhysicsState.Ethereal)
+    if back is not None:
+        rows[back]["state"] = state
+    return f":ethereal-{who}" + ("-back" if back is not None else "")
+
+
+# ---------------------------------------------------------------- the scene
+
+def _finish(draw, clock_start, dts, tl: _Timeline, world_landblocks, mover: Mover, others, objects, name,
+            buildings=(), environments=(), env_cells=(), ethereal: bool = True) -> Scene:
+    from .ticks import _tick_scene
+
+    others = tuple(others)
+    blocks = {lb.id >> 16 for lb in world_landblocks}
+    assert all(p.cell >> 16 in blocks for p in (mover.begin,) + tuple(o.begin for o in others)), name  # stays on them
+    if ethereal:
+        name += _ethereal(draw, tl, mover, others)
+    base = Scene(tuple(world_landblocks), mover, tuple(objects), name=name, buildings=tuple(buildings),
+                 environments=tuple(environments), env_cells=tuple(env_cells))
+    scene = _tick_scene(base, clock_start, dts, tl.steps_inputs(others), "update_object", None, name)
+    return scene.replace(mover=replace(scene.mover, placement=Placement(via="enter_world")), others=others)
+
+
+def _extras(draw, world: _Flat, ids: _Ids, tl: _Timeline, mx: float, my: float, ux: float, uy: float,
+            reach: float, count: int) -> list[OtherMover]:
+    """Bystanders near the meeting point (mx, my): standing beside the line, crossing it, or following the other."""
+    out = []
+    for j in range(count):
+        weenie = draw(WEENIES)
+        spheres = _spheres(draw)
+        r = spheres[0].radius
+        side = draw(st.sampled_from((1.0, -1.0)))
+        px, py = -uy * side, ux * side
+        how = draw(EXTRA_KINDS)
+        gap = draw(EXTRA_GAPS)
+        off = reach + r + gap + j * (2 * r + gap)
+        if how == "follow":  # behind the other, on its line
+            bx, by = mx + ux * (off + 2.0), my + uy * (off + 2.0)
+            dx, dy = -ux, -uy
+        else:
+            bx, by = mx + px * off, my + py * off
+            dx, dy = -px, -py
+        kind = draw(INPUT_KINDS)
+        o = _other(draw, ids, weenie, spheres, world.position(bx, by, facing(kind, dx, dy)), scale=draw(SCALES))
+        if how != "stand":
+            tl.walk(draw, tl.of(o.id), dx, dy, float(dr.take(draw, SPEEDS)), kind)
+        out.append(o)
+    return out
+
+
+def _within(distance: float, speed: float, dts: list[float]) -> float:
+    """`distance`, or less: what `speed` covers in 0.6 of the scene's time (so the meeting falls within the
+    ticks), but at least a metre."""
+    return min(distance, max(0.6 * speed * sum(dts), 1.0))
+
+
+def draw_movers_ticks(draw, clock, policy: str | None = None) -> Scene:
+    """A movers tick scene; `clock(draw, n)` is strategies.ticks._clock (start, dts, label)."""
+    policy = policy or draw(POLICIES)
+    if policy in ("head_on", "side_on"):
+        return _crossing(draw, clock, policy)
+    if policy == "corner":
+        return _house_corner(draw, clock) if draw(CORNER_SITES) == "house" else _box_corner(draw, clock)
+    if policy in ("chase", "doorway"):
+        return _chase(draw, clock, policy == "doorway")
+    if policy == "touch":
+        return _touch(draw, clock)
+    if policy == "approach":
+        return _approach(draw)
+    return _jump(draw, clock)
+
+
+def _crossing(draw, clock, policy: str) -> Scene:
+    """Head-on (the other on the mover's line, walking back along it) or side-on (across it at right angles,
+    timed to reach the crossing when the mover does, or a little off)."""
+    where = draw(WHERE)
+    world = _Flat(draw, where in ("block", "corner"))
+    mx, my = _meeting_point(draw, where)
+    rad = math.radians(dr.take(draw, HEADINGS))
+    ux, uy = math.cos(rad), math.sin(rad)
+    vm, vo = float(dr.take(draw, SPEEDS)), float(dr.take(draw, SPEEDS))
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, label = clock(draw, n)
+    lm = _within(float(dr.take(draw, GAPS)), vm, dts)  # the mover's distance to the meeting point
+    tl = _Timeline(dts)
+    ids = _Ids()
+    weenie = draw(WEENIES)
+    sm, so = _spheres(draw), _spheres(draw)
+    mkind = draw(INPUT_KINDS)
+    begin = world.position(mx - ux * lm, my - uy * lm, facing(mkind, ux, uy))
+    mover = _mover(draw, sm, begin, world.z, _pks(draw, "player"), scale=1.0 if draw(dr.BOOLEANS) else draw(SCALES))
+    mlabel = tl.walk(draw, tl.mover, ux, uy, vm, mkind)
+    if policy == "head_on":
+        dx, dy = -ux, -uy
+        lo = vo / vm * lm + draw(TIMING)
+    else:
+        side = draw(st.sampled_from((1.0, -1.0)))
+        dx, dy = uy * side, -ux * side  # toward the line, at right angles
+        lo = vo / vm * lm + draw(TIMING)
+    lo = min(max(lo, 0.0), MAX_LEAD)
+    okind = draw(INPUT_KINDS)
+    other = _other(draw, ids, weenie, so, world.position(mx - dx * lo, my - dy * lo, facing(okind, dx, dy)),
+                   scale=draw(SCALES))
+    olabel = tl.walk(draw, tl.of(other.id), dx, dy, vo, okind)
+    reach = max(s.radius for s in sm)
+    others = [other] + _extras(draw, world, ids, tl, mx, my, ux, uy, reach, draw(EXTRAS))
+    name = f"movers:{policy}:{weenie}:{where}:{mlabel}/{olabel}:{len(others)}others:{label}"
+    return _finish(draw, start, dts, tl, world.landblocks, mover, others, (), name)
+
+
+def _box_corner(draw, clock) -> Scene:
+    """A BSP box; the mover walks along its +y face toward its (+x, +y) corner, the other along its +x face
+    toward the same corner, each a lane gap off its face, timed to cross just outside the corner."""
+    world = _Flat(draw, False)
+    cx, cy = 96.0 + float(draw(NEAR)) * 10, 96.0 + float(draw(NEAR)) * 10
+    w, d = float(dr.take(draw, BOX_SIDES)), float(dr.take(draw, BOX_SIDES))
+    yaw = draw(BOX_YAWS)
+    cs, sn = math.cos(math.radians(yaw)), math.sin(math.radians(yaw))
+
+    def at(x, y):  # box frame -> the home block's frame
+        return cx + x * cs - y * sn, cy + x * sn + y * cs
+
+    sm, so = _spheres(draw), _spheres(draw)
+    rm, ro = sm[0].radius, so[0].radius
+    gm, go = draw(LANE_GAPS), draw(LANE_GAPS)
+    vm, vo = float(dr.take(draw, SPEEDS)), float(dr.take(draw, SPEEDS))
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, label = clock(draw, n)
+    a = _within(float(dr.take(draw, GAPS)), vm, dts)
+    b = min(max(vo / vm * (a + ro + go) - rm - gm + draw(TIMING), 0.1), MAX_LEAD)
+    tl, ids = _Timeline(dts), _Ids()
+    mu, ou = (cs, sn), (-sn, cs)  # the box's +x and +y in the block frame
+    mkind, okind = draw(INPUT_KINDS), draw(INPUT_KINDS)
+    mover = _mover(draw, sm, world.position(*at(w / 2 - a, d / 2 + rm + gm), facing(mkind, *mu)), world.z,
+                   _pks(draw, "player"))
+    weenie = draw(WEENIES)
+    other = _other(draw, ids, weenie, so, world.position(*at(w / 2 + ro + go, d / 2 - b), facing(okind, *ou)),
+                   scale=1.0)
+    mlabel = tl.walk(draw, tl.mover, *mu, vm, mkind)
+    olabel = tl.walk(draw, tl.of(other.id), *ou, vo, okind)
+    box = StaticObject(0x7D000021, world.position(cx, cy, bl.dg.yaw_quat(yaw)), sh.box(w, d, 3.0), STATIC_BSP)
+    name = f"movers:corner:box:{weenie}:{mlabel}/{olabel}:{label}"
+    return _finish(draw, start, dts, tl, world.landblocks, mover, [other], (box,), name)
+
+
+def _house_corner(draw, clock) -> Scene:
+    """A house (buildings "along": the mover outside its front corner, beside its side wall); the mover waits
+    there (all the ticks, some, or none) then walks along the side, while the other comes along the front
+    face toward the corner."""
+    from .scenes import step_heights
+
+    base = bl.draw_building(draw, _spheres(draw), step_heights, "along")
+    b = base.buildings[0]
+    (ox, oy, _), q = b.frame.origin, b.frame.orientation
+    yaw = 2 * math.atan2(q[3], q[0])
+    cs, sn = math.cos(yaw), math.sin(yaw)
+    m = base.mover
+    home_x = (m.begin.cell >> 24) - (b.landblock >> 24)
+    home_y = ((m.begin.cell >> 16) & 0xFF) - ((b.landblock >> 16) & 0xFF)
+    gx, gy, gz = m.begin.frame.origin
+    gx, gy = gx + home_x * BLOCK, gy + home_y * BLOCK
+    # the mover in the house frame (x into the house, y across it)
+    hx, hy = (gx - ox) * cs + (gy - oy) * sn, -(gx - ox) * sn + (gy - oy) * cs
+    side = 1.0 if hy >= 0 else -1.0
+    so = _spheres(draw)
+    rm, ro = m.spheres[0].radius, so[0].radius
+    lead = float(dr.take(draw, GAPS))
+    x = hx - max(ro - rm, 0.0) - draw(LANE_GAPS)
+    y = hy - side * (lead + rm + ro)
+
+    def at(px, py):
+        return ox + px * cs - py * sn, oy + px * sn + py * cs
+
+    home = (b.landblock >> 24, (b.landblock >> 16) & 0xFF)
+    ux, uy = -sn * side, cs * side  # along the front, toward the corner
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, label = clock(draw, n)
+    tl, ids = _Timeline(dts), _Ids()
+    okind = draw(INPUT_KINDS)
+    weenie = draw(WEENIES)
+    px, py = at(x, y)
+    other = _other(draw, ids, weenie, so, bl._outdoor_position(home, (to_f32(px), to_f32(py), gz), facing(okind, ux, uy)))
+    olabel = tl.walk(draw, tl.of(other.id), ux, uy, float(dr.take(draw, SPEEDS)), okind)
+    wait = draw(HOUSE_WAITS)
+    first = n if wait == "all" else 0 if wait == "none" else draw(st.integers(0, n - 1))
+    if first < n:
+        tl.walk(draw, tl.mover, cs, sn, float(dr.take(draw, SPEEDS)), "velocity", "all", first)
+    mover = replace(m, placement=Placement(via="enter_world"), transient_state=WALKING,
+                    player_killer_status=_pks(draw, "player"))
+    name = f"movers:corner:house:{weenie}:wait-{wait}:{olabel}:{label}"
+    return _finish(draw, start, dts, tl, base.landblocks, mover, [other], base.objects, name,
+                   base.buildings, base.environments, base.env_cells)
+
+
+def _chase(draw, clock, doorway: bool) -> Scene:
+    """A monster (or an NPC) behind the mover chases it: each tick its velocity points at where the mover's held
+    velocity puts the mover then (from where its own chase put it), at a speed a little above the mover's; in
+    a doorway scene the mover walks through the gap between two static slabs ahead of it."""
+    where = draw(WHERE) if not doorway else "middle"
+    world = _Flat(draw, where in ("block", "corner"))
+    mx, my = _meeting_point(draw, where)
+    rad = math.radians(dr.take(draw, HEADINGS))
+    ux, uy = math.cos(rad), math.sin(rad)
+    px, py = -uy, ux
+    vm = draw(TARGET_SPEEDS)
+    sm = _spheres(draw)
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, label = clock(draw, n)
+    tl, ids = _Timeline(dts), _Ids()
+    mover = _mover(draw, sm, world.position(mx, my), world.z, _pks(draw, "player"))
+    if vm > 0:
+        tl.walk(draw, tl.mover, ux, uy, vm, "velocity", "all")
+    chasers = []
+    count = draw(st.sampled_from((1, 1, 1, 2)))
+    for c in range(count):
+        weenie = draw(CHASERS)
+        so = _spheres(draw)
+        speed = max(vm, 1.0) * draw(CHASE_FASTER)
+        lead = _within(float(dr.take(draw, CHASE_LEADS)), max(speed - vm, 0.5), dts)
+        lat = draw(CHASE_LATERAL)
+        cx, cy = mx - ux * lead + px * lat, my - uy * lead + py * lat
+        o = _other(draw, ids, weenie, so, world.position(cx, cy), scale=draw(SCALES))
+        rows = tl.of(o.id)
+        t, x, y = 0.0, cx, cy
+        for i, dt in enumerate(dts):  # the mover where its held velocity puts it at the tick's start
+            tx, ty = mx + ux * vm * t, my + uy * vm * t
+            dx, dy = tx - x, ty - y
+            h = math.hypot(dx, dy)
+            v = (0.0, 0.0, 0.0) if h < 0.05 else _vec(dx / h * speed, dy / h * speed, 0.0)
+            rows[i]["velocity"] = v
+            step = min(dt, h / speed) if h > 0 else 0.0
+            x, y = x + v[0] * step, y + v[1] * step
+            t += dt
+        chasers.append(o)
+    objects = ()
+    name = f"movers:{'doorway' if doorway else 'chase'}:{'/'.join(o.weenie for o in chasers)}:{where}:v{vm}:{label}"
+    if doorway:
+        reach = max(max(s.radius for s in sm), max(o.spheres[0].radius * o.scale for o in chasers))
+        gap = 2 * reach + float(dr.take(draw, DOOR_SLACK))
+        ahead = float(dr.take(draw, DOOR_AHEAD))
+        w, t = draw(SLAB_WIDTHS), draw(SLAB_THICKNESS)
+        q = bl.dg.yaw_quat(math.degrees(math.atan2(py, px)))  # the slab's x along the doorway
+        dx0, dy0 = mx + ux * ahead, my + uy * ahead
+        objects = tuple(StaticObject(DOORWAY_ID + k, world.position(dx0 + s * px * (gap + w) / 2, dy0 + s * py * (gap + w) / 2, q),
+                                     sh.box(w, t, 3.0), STATIC_BSP) for k, s in enumerate((1.0, -1.0)))
+    return _finish(draw, start, dts, tl, world.landblocks, mover, chasers, objects, name)
+
+
+# ---------------------------------------------------------------- exact touches
+
+def _on_grid(x: float) -> float:
+    return round(x / GRID) * GRID
+
+
+def touch_radius(rm: float, touch: str) -> tuple[float, float] | None:
+    """(the other's radius, the centre distance) for a mover of radius `rm` (on GRID): the distance on GRID
+    and the other's radius such that in float32 the radius sum (``sum``) or ACE's radsum, the sum less
+    EPSILON (``ace``), is exactly the distance, or one ulp of it above or below (``-1ulp``: the sum an ulp
+    short of the distance; ``+1ulp``: an ulp past it). None when no float32 radius does it."""
+    kind = "ace" if touch.startswith("ace") else "sum"
+    shift = -1 if touch.endswith("-1ulp") else 1 if touch.endswith("+1ulp") else 0
+    f = np.float32
+    rm32 = f(rm)
+    dist = _on_grid(2 * rm - (float(EPSILON) if kind == "ace" else 0.0))
+    target = f32_from_bits(f32_bits(dist) + shift)
+
+    def value(ro):
+        s = rm32 + f(ro)
+        return s - f(EPSILON) if kind == "ace" else s
+
+    guess = f(float(target) - float(rm) + (float(EPSILON) if kind == "ace" else 0.0))
+    bits = f32_bits(float(guess))
+    for k in sorted(range(-24, 25), key=abs):
+        ro = f32_from_bits(bits + k)
+        if value(ro) == f(target):
+            return float(ro), dist
+    return None
+
+
+def _touch_pair(draw):
+    """The mover's and the other's spheres (the same centres; the other's radius solved by touch_radius, its
+    scale a power of two with its spheres divided by it), the other's weenie and the touch label."""
+    rm = _on_grid(draw(EXACT_RADII))
+    touch = draw(TOUCHES)
+    solved = touch_radius(rm, touch)
+    if solved is None:
+        touch, solved = "sum", touch_radius(rm, "sum")
+    ro, dist = solved
+    two = draw(TWO_SPHERES)
+    # both bodies' spheres at the same heights, the larger radius's (the smaller floats a few ulps above the
+    # ground: a sphere dipping into it would be lifted by the placement, and the distance no longer axial)
+    low = max(rm, ro)
+    head = to_f32(low + rm * draw(HEAD_HEIGHTS))
+    centres = (low, head) if two else (low,)
+    scale = draw(EXACT_SCALES)
+    sm = tuple(SphereRec((0.0, 0.0, c), rm) for c in centres)
+    so = tuple(SphereRec((0.0, 0.0, to_f32(c / scale)), to_f32(ro / scale)) for c in centres)
+    return sm, so, scale, dist, touch
+
+
+def _touch(draw, clock) -> Scene:
+    """The mover and another at rest (velocity 0), their centres `dist` apart along an axis on GRID: touching
+    exactly (touch_radius), or an ulp apart or into each other, for a few ticks of any clock."""
+    world = _Flat(draw, False)
+    sm, so, scale, dist, touch = _touch_pair(draw)
+    ax, ay = draw(AXES)
+    x0, y0 = _on_grid(96.0 + float(draw(NEAR)) * 10), _on_grid(96.0 + float(draw(NEAR)) * 10)
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, label = clock(draw, n)
+    tl, ids = _Timeline(dts), _Ids()
+    weenie = draw(WEENIES)
+    mover = _mover(draw, sm, world.position(x0, y0), world.z, _pks(draw, "player"))
+    other = _other(draw, ids, weenie, so, world.position(x0 + ax * dist, y0 + ay * dist), scale=scale)
+    name = f"movers:touch:{touch}:{weenie}:x{scale}:{label}"
+    return _finish(draw, start, dts, tl, world.landblocks, mover, [other], (), name, ethereal=False)
+
+
+def _approach(draw) -> Scene:
+    """One of the pair (the mover or the other) walks by root motion along an axis, at a speed whose step
+    (speed x dt, dt a binary fraction between MinQuantum and MaxQuantum) is exact, so its k-th tick puts it
+    exactly k steps on; the other stands where, at a drawn tick, the centre distance is the touch's."""
+    world = _Flat(draw, False)
+    sm, so, scale, dist, touch = _touch_pair(draw)
+    # along +y or -y, facing it: the identity or a half turn, whose float32 quaternions rotate the root
+    # motion's local +y exactly (a quarter turn's do not: cos 45 degrees is not a float32)
+    ay = draw(st.sampled_from((1, -1)))
+    ax, q = 0, (IDENTITY if ay > 0 else HALF_TURN)
+    dt = draw(EXACT_DTS)
+    speed = draw(EXACT_SPEEDS)
+    while speed * dt > 1.9 * sm[0].radius:  # at most two transition steps: halves stay exact
+        speed /= 2
+    step = speed * dt
+    k = draw(MEET_AT)
+    n = k + dr.take(draw, dr.ints(2, 20))
+    x0, y0 = _on_grid(96.0 + float(draw(NEAR)) * 10), _on_grid(96.0 + float(draw(NEAR)) * 10)
+    walker = draw(APPROACHERS)
+    dts = [dt] * n
+    tl, ids = _Timeline(dts), _Ids()
+    weenie = draw(WEENIES)
+    # the walker at (x0, y0) + k steps meets the stander `dist` further on
+    wx, wy = x0, y0
+    sx, sy = x0 + ax * (k * step + dist), y0 + ay * (k * step + dist)
+    if walker == "mover":
+        mover = _mover(draw, sm, world.position(wx, wy, q), world.z, _pks(draw, "player"))
+        other = _other(draw, ids, weenie, so, world.position(sx, sy), scale=scale)
+        tl.walk(draw, tl.mover, ax, ay, speed, "root", "all")
+    else:  # the other walks (its spheres scaled: its step is speed x dt x scale on the ground)
+        mover = _mover(draw, sm, world.position(sx, sy), world.z, _pks(draw, "player"))
+        other = _other(draw, ids, weenie, so, world.position(wx, wy, q), scale=scale)
+        tl.walk(draw, tl.of(other.id), ax, ay, speed / scale, "root", "all")
+    start = draw(EXACT_STARTS)
+    name = f"movers:approach:{walker}:{touch}:{weenie}:x{scale}:at{k}:dt{dt}:v{speed}"
+    return _finish(draw, start, dts, tl, world.landblocks, mover, [other], (), name, ethereal=False)
+
+
+def _jump(draw, clock) -> Scene:
+    """A player (the mover, or another player) jumps toward another standing ahead of it: onto it, over it,
+    or short of it."""
+    world = _Flat(draw, False)
+    mx, my = _meeting_point(draw, "middle")
+    rad = math.radians(dr.take(draw, HEADINGS))
+    ux, uy = math.cos(rad), math.sin(rad)
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, label = clock(draw, n)
+    tl, ids = _Timeline(dts), _Ids()
+    jumper = draw(JUMPERS)
+    sj, ss = _spheres(draw), _spheres(draw)
+    ahead = sj[0].radius + ss[0].radius + float(dr.take(draw, JUMP_AHEAD))
+    at = min(dr.take(draw, JUMP_AT), n - 1)
+    fwd = float(dr.take(draw, JUMP_FORWARD))
+    jump = _vec(ux * fwd, uy * fwd, float(dr.take(draw, JUMP_UPS)))
+    standing = draw(WEENIES)
+    if jumper == "mover":
+        mover = _mover(draw, sj, world.position(mx, my), world.z, _pks(draw, "player"))
+        others = [_other(draw, ids, standing, ss, world.position(mx + ux * ahead, my + uy * ahead), scale=draw(SCALES))]
+        tl.mover[at]["jump"] = jump
+    else:  # another player jumps over the mover (or over a third)
+        over_mover = draw(dr.BOOLEANS)
+        jp = _other(draw, ids, "player", sj, world.position(mx, my))
+        if over_mover:
+            mover = _mover(draw, ss, world.position(mx + ux * ahead, my + uy * ahead), world.z, _pks(draw, "player"))
+            others = [jp]
+        else:
+            mover = _mover(draw, _spheres(draw), world.position(mx - uy * 5.0, my + ux * 5.0), world.z,
+                           _pks(draw, "player"))
+            others = [jp, _other(draw, ids, standing, ss, world.position(mx + ux * ahead, my + uy * ahead))]
+        tl.of(jp.id)[at]["jump"] = jump
+    name = f"movers:jump:{jumper}:{standing}:at{at}:{label}"
+    return _finish(draw, start, dts, tl, world.landblocks, mover, others, (), name)
