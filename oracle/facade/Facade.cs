@@ -668,6 +668,30 @@ namespace Acconform.Oracle
             player.AugmentationIncreasedCarryingCapacity = carryingCapacityAugs;
         }
 
+        /// <summary>What the WeenieObject of a Player with these skills (SetPlayerSkills, on a Player made as the mover's
+        /// is) answers the physics, which no scene on ACE's server reaches past InqRunRate: InqRunRate's rate, InqBurden
+        /// (NaN for null), then per extent InqJumpVelocity's bool (1 or 0) and velocity_z. For the live tests of the
+        /// port's WeenieObject (LiveOracle.player_answers).</summary>
+        public static float[] PlayerAnswers(uint run, uint jump, uint stamina, uint strength, int encumbranceVal,
+                                            int carryingCapacityAugs, float[] extents)
+        {
+            var player = MakePlayer(0x50000001);  // acconform.staging.MOVER_ID
+            SetPlayerSkills(player, run, jump, stamina, strength, encumbranceVal, carryingCapacityAugs);
+            var weenie = new WeenieObject(player);
+            var answers = new float[2 + 2 * extents.Length];
+            var rate = 0.0f;
+            weenie.InqRunRate(ref rate);
+            answers[0] = rate;
+            answers[1] = weenie.InqBurden() ?? float.NaN;
+            for (var i = 0; i < extents.Length; i++)
+            {
+                answers[2 + 2 * i] = weenie.InqJumpVelocity(extents[i], out var vz) ? 1.0f : 0.0f;
+                answers[3 + 2 * i] = vz;
+            }
+            GC.KeepAlive(player);  // WeenieObject holds it by a WeakReference
+            return answers;
+        }
+
         /// <summary>A member the full build's Player needs (MakePlayer and the two below), or a MissingMemberException naming it.</summary>
         static T Need<T>(T member, string name) where T : MemberInfo
         {
