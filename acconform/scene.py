@@ -1027,6 +1027,7 @@ class MoverSkills:
 
 DEFAULT_SKILLS = MoverSkills()
 
+
 @dataclass(frozen=True, slots=True)
 class Mover:
     """The moving PhysicsObj: its Setup spheres and step heights, flags, and the path to try
@@ -1153,7 +1154,8 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/7 for a static with a setup or a door input, /6 for a placement
+        """The oldest format that holds the scene (/7 for a static with a setup, a door input or the mover's skills (scene/8
+        fields, written as the newest format), /6 for a placement
         through enter_world, /5 for buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
         if any(o.setup is not None for o in self.objects) or self.has_doors or self.mover.skills != DEFAULT_SKILLS:
             return FORMAT
