@@ -102,7 +102,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .scene import (BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
+from .scene import (DEFAULT_SKILLS, MoverSkills, BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
                     Environment, Landblock, Mover, OtherMover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
                     StaticObject,
                     ENV_CELL_FIRST, newell_normal)
@@ -722,6 +722,7 @@ class DatMover:
     placement: Placement | None
     motion_table_id: int = 0  # the player's MotionTableId (its Setup names the same table; 0: none)
     player_killer_status: int = 2  # the Player's PlayerKillerStatus (NPK)
+    skills: MoverSkills = DEFAULT_SKILLS  # the Player's skills, vitals, attributes and burden (the scene's)
 
 
 @dataclass(frozen=True, slots=True)
@@ -769,7 +770,7 @@ def dat_world(scene: Scene) -> DatWorld:
         scene.land_height_table, cell_landblock_records(scene) + infos + cells, portal,
         tuple(DatStatic(o.id, recs.did, o.position, o.state, o.scale) for o, recs in zip(scene.objects, written.statics)),
         DatMover(MOVER_ID, written.mover.did, m.scale, m.state, m.transient_state, m.velocity, m.begin, m.end,
-                 m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status),
+                 m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status, m.skills),
         tuple(DatOther(o.id, recs.did, o.weenie, o.scale, o.state, o.transient_state, o.velocity, o.begin,
                        o.player_killer_status) for o, recs in zip(scene.others, written.others)))
 

@@ -52,7 +52,7 @@ from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
-from .scene import WEENIE_CLASSES, ContactPlane, Placement, Position, Scene, mover_start_json
+from .scene import DEFAULT_SKILLS, WEENIE_CLASSES, ContactPlane, MoverSkills, Placement, Position, Scene, mover_start_json
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
@@ -106,6 +106,11 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                                    "the mover's Player has a PlayerKillerStatus other than NPK (scene/6: "
                                    "mover.player_killer_status): its WeenieObject's IsPK/IsPKLite answers, and a PK or "
                                    "PKLite player's jump takes HandleActionJump's FastTick branch"),
+    "mover.skills": (lambda s: s.mover.skills != DEFAULT_SKILLS,
+                     "the mover's Player has skills, vitals, attributes or a burden other than the database-free "
+                     "Player's (scene/8: mover.skills): GetCreatureSkill(Skill.Run/Jump).Current, Stamina.Current, "
+                     "Strength.Current, EncumbranceVal and AugmentationIncreasedCarryingCapacity, what "
+                     "WeenieObject.InqRunRate, InqJumpVelocity and InqBurden read"),
     "setup.multipart": (lambda s: any(o.setup is not None for o in s.objects),
                         "a static object made from a Setup of several parts (each a BSP GfxObj at its placement frame, "
                         "with or without a per-part DefaultScale) and the Setup's spheres and cylspheres (scene/7)"),
@@ -153,6 +158,8 @@ def dat_json(world: DatWorld) -> dict:
         mover["motion_table_id"] = write_id(m.motion_table_id)
     if m.player_killer_status != PLAYER_KILLER_STATUS_NPK:
         mover["player_killer_status"] = PlayerKillerStatus(m.player_killer_status).name
+    if m.skills != DEFAULT_SKILLS:
+        mover["skills"] = m.skills.to_json()
     return {"format": DAT_FORMAT,
             "land_height_table": [write_f32(h) for h in world.land_height_table],
             "cell": [_record_json(r) for r in world.cell],
@@ -203,7 +210,7 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
         statics.append(DatStatic(s["id"].id_(), s["did"].id_(), Position.from_json(s["position"]),
                                  s["state"].flags(PhysicsState), s["scale"].f32()))
     m = r["mover"].obj({"id", "did", "scale", "state", "transient_state", "velocity", "begin", "end", "contact_plane",
-                        "sliding_normal", "placement", "motion_table_id", "player_killer_status"})
+                        "sliding_normal", "placement", "motion_table_id", "player_killer_status", "skills"})
     status = m["player_killer_status"].enum_(PlayerKillerStatus) if m.given("player_killer_status") \
         else PLAYER_KILLER_STATUS_NPK
     mover = DatMover(m["id"].id_(), m["did"].id_(), m["scale"].f32(), m["state"].flags(PhysicsState),
@@ -212,7 +219,8 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                      ContactPlane.from_json(m["contact_plane"]) if m.has("contact_plane") else None,
                      m["sliding_normal"].vec3() if m.has("sliding_normal") else None,
                      Placement.from_json(m["placement"]) if m.has("placement") else None,
-                     m["motion_table_id"].id_() if m.given("motion_table_id") else 0, status)
+                     m["motion_table_id"].id_() if m.given("motion_table_id") else 0, status,
+                     MoverSkills.from_json(m["skills"]) if m.given("skills") else DEFAULT_SKILLS)
     others = []
     for o in (r["others"].list() if r.given("others") else ()):
         o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status"})

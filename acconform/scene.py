@@ -1055,6 +1055,41 @@ def mover_start_json(m, d: dict, explicit_via: bool = False) -> dict:
 
 
 @dataclass(frozen=True, slots=True)
+class MoverSkills:
+    """scene/8: what the physics reads of the mover's Player beyond its flags (WeenieObject.InqRunRate,
+    InqJumpVelocity, InqBurden): ``GetCreatureSkill(Skill.Run).Current``, ``GetCreatureSkill(Skill.Jump).Current``,
+    ``Stamina.Current``, ``Strength.Current``, ``EncumbranceVal`` and ``AugmentationIncreasedCarryingCapacity``.
+    The defaults are what ACE's database-free Player answers (docs/oracle.md's audit): no skill, Stamina its
+    MaxValue's floor 1 (Creature's constructor fills an empty vital), Strength its attribute floor 1, no load.
+    The bounds are where ACE's own values stay exact: a skill's and an attribute's Current is rounded through a
+    float (2^24), and an attribute's Current is never under 1 (CreatureAttribute.GetCurrent)."""
+
+    run: int = 0
+    jump: int = 0
+    stamina: int = 1
+    strength: int = 1
+    encumbrance_val: int = 0
+    augmentation_increased_carrying_capacity: int = 0
+
+    # (field, lo, hi)
+    BOUNDS = (("run", 0, 1 << 24), ("jump", 0, 1 << 24), ("stamina", 0, 0xFFFFFFFF), ("strength", 1, 1 << 24),
+              ("encumbrance_val", -(1 << 31), (1 << 31) - 1),
+              ("augmentation_increased_carrying_capacity", -(1 << 31), (1 << 31) - 1))
+
+    def to_json(self) -> dict:
+        """The fields that differ from the default."""
+        return {name: getattr(self, name) for name, _, _ in self.BOUNDS if getattr(self, name) != getattr(DEFAULT_SKILLS, name)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "MoverSkills":
+        r.obj({name for name, _, _ in MoverSkills.BOUNDS})
+        return MoverSkills(**{name: r[name].int_(lo, hi) for name, lo, hi in MoverSkills.BOUNDS if r.given(name)})
+
+
+DEFAULT_SKILLS = MoverSkills()
+
+
+@dataclass(frozen=True, slots=True)
 class Mover:
     """The moving PhysicsObj: its Setup spheres and step heights, flags, and the path to try
     (`end`; None in a tick scene, whose ticks move the mover)."""
@@ -1075,6 +1110,7 @@ class Mover:
     # scene/6: the mover's Player's PlayerKillerStatus (ACE.Entity.Enum), set before its WeenieObject is made
     # (which copies it); a player without the property is NPK. PK and PKLite are IsPKType: FastTick's jump.
     player_killer_status: int = PLAYER_KILLER_STATUS_NPK
+    skills: MoverSkills = DEFAULT_SKILLS  # scene/8: its Player's skills, vitals, attributes and burden
 
     @property
     def motion_table_id(self) -> int:
@@ -1093,12 +1129,18 @@ class Mover:
             d["motion_table"] = self.motion_table.to_json()
         if self.player_killer_status != PLAYER_KILLER_STATUS_NPK:
             d["player_killer_status"] = PlayerKillerStatus(self.player_killer_status).name
+        if self.skills != DEFAULT_SKILLS:
+            d["skills"] = self.skills.to_json()
         return d
 
     @staticmethod
-    def from_json(r: Reader, placement: bool = True, ticks: bool = False, vias: bool = True) -> "Mover":
+    def from_json(r: Reader, placement: bool = True, ticks: bool = False, vias: bool = True,
+                  skills: bool = True) -> "Mover":
         """`placement`: the format may hold one (scene/3 and later). `ticks`: the scene is a tick
-        scene, whose mover has no end. `vias`: a placement may say `via` (scene/6)."""
+        scene, whose mover has no end. `vias`: a placement may say `via` (scene/6). `skills`: the
+        format holds the mover's `skills` (scene/8)."""
+        if not skills and isinstance(r.value, dict) and "skills" in r.value:
+            r["skills"].fail(f"skills need format {FORMAT!r} (older formats have none)")
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
             r["placement"].fail(f"a placement needs format {FORMAT_V3!r} or later (older formats have no placement)")
         if ticks and isinstance(r.value, dict) and "end" in r.value:
@@ -1108,7 +1150,7 @@ class Mover:
                 r[field].fail(f"{field} needs format {FORMAT_V6!r} or later (older formats have none)")
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
-               *(("motion_table", "player_killer_status") if vias else ())})
+               *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
         scale = r["scale"].f32() if r.given("scale") else 1.0
         if not scale > 0:
@@ -1134,6 +1176,7 @@ class Mover:
             motion_table=MotionTableSpec.from_json(r["motion_table"]) if vias and r.has("motion_table") else None,
             player_killer_status=r["player_killer_status"].enum_(PlayerKillerStatus) if vias and r.given("player_killer_status")
             else PLAYER_KILLER_STATUS_NPK,
+            skills=MoverSkills.from_json(r["skills"]) if skills and r.given("skills") else DEFAULT_SKILLS,
         )
 
 
@@ -1252,9 +1295,10 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/8 for other movers, /7 for a static with a setup or a door input, /6 for a placement
-        through enter_world, /5 for buildings, /4 for ticks, /3 for a placement, /2 indoors, else /1)."""
-        if self.others:
+        """The oldest format that holds the scene (/8 for other movers or the mover's skills, /7 for a static with a
+        setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for ticks, /3 for a
+        placement, /2 indoors, else /1)."""
+        if self.others or self.mover.skills != DEFAULT_SKILLS:
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7
@@ -1340,7 +1384,7 @@ class Scene:
         ticks = Ticks.from_json(r["ticks"], motion=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), doors=fmt in (FORMAT_V7, FORMAT),
                                 others=fmt == FORMAT) if r.has("ticks") else None
         mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7, FORMAT),
-                                ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT_V7, FORMAT))
+                                ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), skills=fmt == FORMAT)
         others = tuple(OtherMover.from_json(o) for o in r["others"].list()) if fmt == FORMAT and r.given("others") else ()
         scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others)
         check_consistency(scene, path)

@@ -243,7 +243,7 @@ def _motion_scene(scene, m):
     # static the scene gains (an outdoor sphere at the mover's start)
     from .motion_enums import MovementParamFlags as MPF
     from .motion_scene import CommandInput, MovementParams, MoveToInput, ObjectMoveInput
-    from .scene import SphereRec, SphereShape, StaticObject
+    from .scene import MoverSkills, SphereRec, SphereShape, StaticObject
 
     params = MovementParams(int(MPF.Sticky | MPF.CanWalk), 0.5, 0.1, 15.0, 1.5, 15.0, 90.0, run)
     ball = StaticObject(0x7F000001, m.begin, SphereShape(SphereRec((0.0, 0.0, 0.5), 0.5)))
@@ -253,7 +253,10 @@ def _motion_scene(scene, m):
                         turn_to_object=ObjectMoveInput(ball.id, params))
     objects = scene.objects + (ball,) if m.begin.cell & 0xFFFF < 0x100 else scene.objects
     steps = (TickStep(1 / 30, motion=motion),) + ((managers,) if objects is not scene.objects else ())
-    return replace(scene, mover=replace(m, motion_table=table), name="motion", objects=objects,
+    # the Player's skills (scene/8), every field other than the database-free Player's so each is written
+    skills = MoverSkills(run=300, jump=250, stamina=0, strength=100, encumbrance_val=20000,
+                         augmentation_increased_carrying_capacity=1)
+    return replace(scene, mover=replace(m, motion_table=table, skills=skills), name="motion", objects=objects,
                    ticks=Ticks("update_object", 1000.0, steps))
 
 

@@ -341,6 +341,8 @@ MOTION_LAYER_METHODS = {
     "part_array.py": tuple(f"PartArray.{m}" for m in (
         "handle_exit_world", "animation_done", "check_for_completed_motions", "do_interpreted_motion",
         "initialize_motion_tables", "set_motion_table_id", "stop_completely_internal", "stop_interpreted_motion")),
+    # what MotionInterp asks of the Player (scene/8 mover.skills)
+    "weenie_object.py": tuple(f"WeenieObject.{m}" for m in ("inq_jump_velocity", "inq_burden", "inq_run_rate")),
 }
 
 

@@ -82,6 +82,18 @@ class LiveOracle:
          self.last_transition_micros) = counts
         return outcome, us
 
+    def player_answers(self, skills, extents) -> tuple[float, float | None, list[tuple[bool, float]]]:
+        """What ACE's WeenieObject answers for the mover's Player with `skills` (acconform.scene.MoverSkills), set as
+        a scene's are (Facade.PlayerAnswers): InqRunRate's rate, InqBurden (None for null) and, per extent,
+        InqJumpVelocity's (bool, velocity_z). Floats are the float32 values."""
+        from System import Array, Single
+
+        out = list(self._facade.PlayerAnswers(
+            skills.run, skills.jump, skills.stamina, skills.strength, skills.encumbrance_val,
+            skills.augmentation_increased_carrying_capacity, Array[Single]([float(e) for e in extents])))
+        burden = None if out[1] != out[1] else float(out[1])
+        return float(out[0]), burden, [(out[2 + 2 * i] == 1.0, float(out[3 + 2 * i])) for i in range(len(extents))]
+
     # -------------------------------------------------------------- the pinned buffers
     def _buffers(self) -> None:
         """Addresses of the facade's pinned input and output arrays (they move only when they grow)."""

@@ -70,6 +70,13 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.Common.WeenieObject", (".ctor",)),
     # (and FastTick, read by reflection in Facade.PlayerFastTick: ACE of 2019 has none, and runs no tick scene)
     ("ACE.Server.WorldObjects.Player", ("LastContact", "PlayerKillerStatus")),
+    # the Player's skills, vitals, attributes and burden (scene/8 mover.skills: Facade.SetPlayerSkills)
+    ("ACE.Server.WorldObjects.Creature", ("GetCreatureSkill", "Stamina", "Strength")),
+    ("ACE.Server.WorldObjects.Entity.CreatureSkill", ("InitLevel",)),
+    ("ACE.Server.WorldObjects.Entity.CreatureVital", ("Current",)),
+    ("ACE.Server.WorldObjects.Entity.CreatureAttribute", ("StartingValue",)),
+    ("ACE.Server.WorldObjects.WorldObject", ("EncumbranceVal",)),
+    ("ACE.Server.WorldObjects.Player", ("AugmentationIncreasedCarryingCapacity",)),
     ("ACE.Entity.ObjectGuid", (".ctor",)),
     ("ACE.Server.Physics.Common.Position", ("GetCell",)),
     ("ACE.Server.Physics.Common.SetPosition", (".ctor",)),

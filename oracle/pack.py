@@ -152,7 +152,9 @@ _NO_OTHERS = struct.pack("<i", 0)
 # another mover (scene/8): its Setup id, id, weenie class (index in WEENIE_CLASSES), PlayerKillerStatus, scale, State,
 # TransientState, Velocity, begin position
 _OTHER = struct.Struct("<IIBIfII3f" + _POS)
-_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII")
+# ... then the Player's skills (acconform.scene.MoverSkills): Run, Jump, Stamina, Strength (u32), EncumbranceVal and
+# AugmentationIncreasedCarryingCapacity (i32)
+_MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -177,9 +179,12 @@ def pack_scene(scene: Scene) -> bytes:
     snv = (0, 0.0, 0.0, 0.0) if sn is None else (1, *sn)
     pl = m.placement
     plv = (0, 0, 0) if pl is None else (2 if pl.via == "enter_world" else 1, pl.flags, 1 if pl.get_cell else 0)
+    sk = m.skills
     out.append(_MOVER.pack(recs.did, MOVER_ID, m.scale, m.state, m.transient_state,
                            *m.velocity, *cpv, *snv, *_pos(m.begin), *_pos(m.end if m.end is not None else _NO_END),
-                           *plv, MOTION_TABLE_ID if m.motion_table is not None else 0, m.player_killer_status))
+                           *plv, MOTION_TABLE_ID if m.motion_table is not None else 0, m.player_killer_status,
+                           sk.run, sk.jump, sk.stamina, sk.strength, sk.encumbrance_val,
+                           sk.augmentation_increased_carrying_capacity))
     out.append(_I32.pack(len(scene.others)))
     for o, recs in zip(scene.others, written.others):
         out += _records(recs)

@@ -80,6 +80,8 @@ DEFAULT_WALK_RUN_THRESHOLD = f32_from_bits(0x3F800000)
 JUMP_SKILL_HEIGHT = f32_from_bits(0x41B1999A)
 JUMP_BASE_HEIGHT = f32_from_bits(0x3D4CCCCD)
 MIN_JUMP_HEIGHT = f32_from_bits(0x3EB33333)
+# WeenieObject.InqJumpVelocity: `Math.Sqrt(height * 19.6)`, a double literal (2 * 9.8: v^2 = 2 g h)
+JUMP_VELOCITY_FACTOR = 19.6
 # MovementSystem.GetRunRate: `18.0f / 4.0f` (folded in float32) at a run skill of `800.0f` or more
 MAX_RUN_RATE = f32_from_bits(0x40900000)
 RUN_SKILL_FOR_MAX_RATE = f32_from_bits(0x44480000)

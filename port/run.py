@@ -66,7 +66,7 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     """The mover as the oracle builds it (docs/oracle.md's audit): a player's PhysicsObj as
     WorldObject.InitPhysicsObj makes a Creature's -- ``new PhysicsObj()``, makeAnimObject(did) over
     dat.mover_records (its Setup: its spheres and step heights, one empty mesh part),
-    set_object_guid(obj_id), set_weenie_obj(the WeenieObject of its Player), SetMotionTableID(its motion
+    set_object_guid(obj_id), set_weenie_obj(the WeenieObject of its Player: its PlayerKillerStatus and skills), SetMotionTableID(its motion
     table: the one its Setup names, acconform.motion_scene.MOTION_TABLE_ID, or 0),
     SetScaleStatic(scale), State -- then TransientState, Velocity, the contact plane (and its cell) and
     the sliding normal as `m` gives them (the scene's Mover, or a request's dat.DatMover), Position =
@@ -77,7 +77,7 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
     obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
     obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(obj_id)
-    obj.set_weenie_obj(WeenieObject.of(Player(guid=obj_id, player_killer_status=m.player_killer_status)))
+    obj.set_weenie_obj(WeenieObject.of(Player.of_skills(obj_id, m.player_killer_status, m.skills)))
     obj.set_motion_table_id(m.motion_table_id)
     obj.set_scale_static(s(m.scale))
     obj.state = m.state

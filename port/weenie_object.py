@@ -1,4 +1,4 @@
-"""WeenieObject: WeenieObject(WorldObject), DummyObject, IsImpenetrable, IsPK, IsPKLite, InqRunRate, InqCollisionProfile, DoCollision(ObjCollisionProfile), DoCollision(EnvCollisionProfile), DoCollisionEnd -- what the physics asks of an object's game object.
+"""WeenieObject: WeenieObject(WorldObject), DummyObject, IsImpenetrable, IsPK, IsPKLite, InqJumpVelocity, InqBurden, InqRunRate, InqCollisionProfile, DoCollision(ObjCollisionProfile), DoCollision(EnvCollisionProfile), DoCollisionEnd -- what the physics asks of an object's game object.
 
 ACE's Physics/Common/WeenieObject.cs. A static placed from the DAT (Landblock.init_static_objs) keeps
 DummyObject: no WorldObject, every flag false. A mover's PhysicsObj gets ``new WeenieObject(worldObject)``
@@ -12,10 +12,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from acconform.flags import PlayerKillerStatus
+from acconform.numerics import D, MODES, wrap_i32
 
 from .anchors import anchor
+from .constants import JUMP_VELOCITY_FACTOR
+from .encumbrance_system import encumbrance_capacity, get_burden
 from .world_objects import Creature, Player, WorldObject
+
+# the run's mode from the float type a routine is given (InqJumpVelocity's extent): ACE's static float type
+_MODE_OF = {m.scalar: m for m in MODES.values()}
+_MODE_OF[float] = MODES["fast"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,6 +79,66 @@ class WeenieObject:
     def can_jump(self, extent) -> bool:
         return True
 
+    @anchor(None, "WeenieObject.cs:InqJumpVelocity")
+    def inq_jump_velocity(self, extent):
+        """``InqJumpVelocity(float extent, out float velocity_z)``: returns (the bool, velocity_z) in
+        `extent`'s float type. A Player with no stamina jumps as with no skill; the height is
+        ``MovementSystem.GetJumpHeight((float)burden, jumpSkill, extent, 1.0f)`` and the velocity
+        ``(float)Math.Sqrt(height * 19.6)`` (JUMP_VELOCITY_FACTOR) (a double product and root, cast back)."""
+        from .animation.movement_system import get_jump_height
+
+        s = type(extent)
+        velocity_z = s(0.0)
+
+        if not self.is_player:
+            return False, velocity_z
+
+        player = self.world_object if isinstance(self.world_object, Player) else None
+
+        if player is None:
+            return False, velocity_z
+
+        burden = self.inq_burden(_MODE_OF[s])
+        if burden is None:
+            return False, velocity_z
+
+        stamina = player.stamina
+
+        jump_skill = player.jump_skill
+
+        if stamina == 0:
+            jump_skill = 0
+
+        height = get_jump_height(s(burden), jump_skill, extent, s(1.0))
+
+        velocity_z = s(np.sqrt(D(height) * D(JUMP_VELOCITY_FACTOR)))
+
+        return True, velocity_z
+
+    @anchor(None, "WeenieObject.cs:InqBurden")
+    def inq_burden(self, mode):
+        """``float? InqBurden()``: None, or the load over the capacity as a float in `mode`'s scalar
+        type (the port's mode stands for C#'s static float type)."""
+        if not self.is_player:
+            return None
+
+        player = self.world_object if isinstance(self.world_object, Player) else None
+
+        if player is None:
+            return None
+
+        strength = wrap_i32(player.strength)  # (int)player.Strength.Current
+
+        num_augs = player.augmentation_increased_carrying_capacity
+
+        capacity = encumbrance_capacity(strength, num_augs)
+
+        encumbrance = player.encumbrance_val if player.encumbrance_val is not None else 0
+
+        burden = get_burden(capacity, encumbrance, mode)
+
+        return burden
+
     @anchor(None, "WeenieObject.cs:InqRunRate")
     def inq_run_rate(self, rate):
         """``InqRunRate(ref float rate)``: returns (true, the new rate); `rate` (its float type) is
@@ -81,7 +150,7 @@ class WeenieObject:
         if isinstance(self.world_object, Creature):
             run_skill = self.world_object.run_skill
         s = type(rate)
-        return True, s(get_run_rate(s(0.0), run_skill, s(1.0)))
+        return True, s(get_run_rate(s(0.0), wrap_i32(run_skill), s(1.0)))  # (int)runSkill
 
     @anchor(None, "WeenieObject.cs:JumpStaminaCost")
     def jump_stamina_cost(self, extent, stamina_cost: int):

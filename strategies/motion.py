@@ -40,7 +40,7 @@ from acconform.motion_scene import (DEFAULT_MOVEMENT_FLAGS, STOPS, AnimationSpec
                                     MotionEntry, MotionInput, MotionTableSpec, MovementParams, MoveToInput,
                                     ObjectMoveInput)
 from acconform.numerics import to_f32
-from acconform.scene import ENV_CELL_FIRST, Frame, Position, Scene, SphereRec, SphereShape, StaticObject
+from acconform.scene import DEFAULT_SKILLS, ENV_CELL_FIRST, Frame, MoverSkills, Position, Scene, SphereRec, SphereShape, StaticObject
 
 from . import draws as dr
 
@@ -73,6 +73,18 @@ LAST_STOP = st.sampled_from((True, True, False))
 JUMPS = st.sampled_from((False, False, False, True))  # a jump (the tick input jump) among the keys
 # the Player's PlayerKillerStatus: PK and PKLite jump by HandleActionJump's FastTick branch, Free is impenetrable
 PLAYER_KILLER_STATUSES = st.sampled_from((PKS.NPK, PKS.NPK, PKS.NPK, PKS.NPK, PKS.PK, PKS.PK, PKS.PKLite, PKS.Free))
+# the Player's skills, vitals, attributes and burden (scene/8 mover.skills): the database-free Player's one
+# scene in two, else each drawn with the values where ACE's formulas change: GetRunRate's 800 (4.5 from there
+# on), GetJumpHeight's floor 0.35 (a jump skill under 19), a stamina of 0 (no jump skill), EncumbranceCapacity's
+# augmentation cap (6 and more count as 5) and negative bonus, its int wrap (150 * 14,316,558), GetBurden's
+# negative load and GetBurdenMod's 1 and 2 (a load of 15,000 and 30,000 on Strength 100)
+DEFAULT_PLAYER = st.sampled_from((True, False))
+RUN_SKILLS = dr.OneOf(st.sampled_from((0, 300, 799, 800, 801, 100)), dr.ints(0, 1000))
+JUMP_SKILLS = dr.OneOf(st.sampled_from((0, 250, 18, 19, 1300)), dr.ints(0, 1000))
+STAMINAS = st.sampled_from((1, 100, 0, 0xFFFFFFFF))
+STRENGTHS = st.sampled_from((100, 1, 10, 290, 14316557, 14316558))
+ENCUMBRANCES = dr.OneOf(st.sampled_from((0, 15000, 30000, 14999, -1, 45000)), dr.ints(0, 50000))
+CARRYING_AUGS = st.sampled_from((0, 1, 5, 6, -1))
 TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
 
 # the server's calls into the managers (one scene in two): what drives the mover first
@@ -191,6 +203,14 @@ def draw_motion_input(draw) -> tuple[MotionInput, str]:
     return MotionInput(**kw), tag or "none"
 
 
+def draw_skills(draw) -> MoverSkills:
+    if draw(DEFAULT_PLAYER):
+        return DEFAULT_SKILLS
+    return MoverSkills(run=dr.take(draw, RUN_SKILLS), jump=dr.take(draw, JUMP_SKILLS), stamina=draw(STAMINAS),
+                       strength=draw(STRENGTHS), encumbrance_val=dr.take(draw, ENCUMBRANCES),
+                       augmentation_increased_carrying_capacity=draw(CARRYING_AUGS))
+
+
 def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
     """`clock(draw, n)` -> (start, dts, label): strategies/ticks.py's clock."""
     from .ticks import _path, _tick_scene, _unit
@@ -205,7 +225,9 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
         inputs[0].update(first_inputs)
         for at, inp in later:
             inputs[at].update(inp)
-        return _motion_scene(base, table, start, dts, inputs, g0, g1, f"{tlabel}:managed:{mlabel}:{clabel}")
+        skills = draw_skills(draw)
+        return _motion_scene(base, table, start, dts, inputs, g0, g1, f"{tlabel}:managed:{mlabel}:run{skills.run}:{clabel}",
+                             skills=skills)
     first, tag = draw_motion_input(draw)
     if tag == "stop":
         first, tag = MotionInput(hold_key=int(HoldKey.None_), forward=WALK, forward_hold_key=int(HoldKey.None_),
@@ -226,18 +248,20 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
         inputs[at]["jump"] = (0.0, to_f32(dr.take(draw, JUMP_FORWARD)), to_f32(dr.take(draw, JUMP_UPS)))
         tags.append(f"jump@{at}")
     status = draw(PLAYER_KILLER_STATUSES)
-    return _motion_scene(base, table, start, dts, inputs, g0, g1, f"{tlabel}:{'+'.join(tags)}:{status.name}:{clabel}",
-                         status)
+    skills = draw_skills(draw)
+    return _motion_scene(base, table, start, dts, inputs, g0, g1,
+                         f"{tlabel}:{'+'.join(tags)}:{status.name}:run{skills.run}:{clabel}", status, skills)
 
 
-def _motion_scene(base: Scene, table, start, dts, inputs, g0, g1, label: str, status=PKS.NPK) -> Scene:
+def _motion_scene(base: Scene, table, start, dts, inputs, g0, g1, label: str, status=PKS.NPK,
+                  skills: MoverSkills = DEFAULT_SKILLS) -> Scene:
     from .ticks import _tick_scene, _unit
 
     ux, uy = _unit(g1[0] - g0[0], g1[1] - g0[1])
     heading = math.degrees(math.atan2(-ux, uy))  # local +y along the path (a yaw about z)
     m = base.mover
     begin = Position(m.begin.cell, Frame(m.begin.frame.origin, _yaw(heading)))
-    base = base.replace(mover=replace(m, begin=begin, motion_table=table, player_killer_status=int(status),
+    base = base.replace(mover=replace(m, begin=begin, motion_table=table, player_killer_status=int(status), skills=skills,
                                       transient_state=m.transient_state | int(TransientState.Active)))
     return _tick_scene(base, start, dts, inputs, "update_object", None, f"ticks:motion:{base.name}:{label}")
 

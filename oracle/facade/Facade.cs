@@ -775,6 +775,50 @@ namespace Acconform.Oracle
             return wo;
         }
 
+        /// <summary>The scene's skills, vitals, attributes and burden (acconform.scene.MoverSkills) on the Player, through
+        /// ACE's own members, as a server's play sets them on a Player it has made: each writes the Biota's record
+        /// the Player was made from (CreatureSkill.InitLevel its PropertiesSkill, added Untrained by GetCreatureSkill;
+        /// CreatureAttribute.StartingValue its PropertiesAttribute; CreatureVital.Current its PropertiesAttribute2nd's
+        /// CurrentLevel, as UpdateVital does; EncumbranceVal and AugmentationIncreasedCarryingCapacity its properties,
+        /// EncumbranceVal ephemeral as adding an item sets it). An Untrained skill whose SkillTable entry has no
+        /// MinLevel 1 adds no formula, so each Current is the value given (a skill or attribute within 2^24, the
+        /// attribute 1 or more: CreatureAttribute.GetCurrent's floor). Set after Creature's constructor, whose top-up
+        /// of an empty vital to its MaxValue would otherwise turn a stamina of 0 into 1.</summary>
+        static void SetPlayerSkills(ACE.Server.WorldObjects.Player player, uint run, uint jump, uint stamina, uint strength,
+                                    int encumbranceVal, int carryingCapacityAugs)
+        {
+            player.GetCreatureSkill(Skill.Run, true).InitLevel = run;
+            player.GetCreatureSkill(Skill.Jump, true).InitLevel = jump;
+            player.Stamina.Current = stamina;
+            player.Strength.StartingValue = strength;
+            player.EncumbranceVal = encumbranceVal;
+            player.AugmentationIncreasedCarryingCapacity = carryingCapacityAugs;
+        }
+
+        /// <summary>What the WeenieObject of a Player with these skills (SetPlayerSkills, on a Player made as the mover's
+        /// is) answers the physics, which no scene on ACE's server reaches past InqRunRate: InqRunRate's rate, InqBurden
+        /// (NaN for null), then per extent InqJumpVelocity's bool (1 or 0) and velocity_z. For the live tests of the
+        /// port's WeenieObject (LiveOracle.player_answers).</summary>
+        public static float[] PlayerAnswers(uint run, uint jump, uint stamina, uint strength, int encumbranceVal,
+                                            int carryingCapacityAugs, float[] extents)
+        {
+            var player = MakePlayer(0x50000001);  // acconform.staging.MOVER_ID
+            SetPlayerSkills(player, run, jump, stamina, strength, encumbranceVal, carryingCapacityAugs);
+            var weenie = new WeenieObject(player);
+            var answers = new float[2 + 2 * extents.Length];
+            var rate = 0.0f;
+            weenie.InqRunRate(ref rate);
+            answers[0] = rate;
+            answers[1] = weenie.InqBurden() ?? float.NaN;
+            for (var i = 0; i < extents.Length; i++)
+            {
+                answers[2 + 2 * i] = weenie.InqJumpVelocity(extents[i], out var vz) ? 1.0f : 0.0f;
+                answers[3 + 2 * i] = vz;
+            }
+            GC.KeepAlive(player);  // WeenieObject holds it by a WeakReference
+            return answers;
+        }
+
         /// <summary>A member the full build's Player needs (MakePlayer and the two below), or a MissingMemberException naming it.</summary>
         static T Need<T>(T member, string name) where T : MemberInfo
         {
@@ -1497,6 +1541,12 @@ namespace Acconform.Oracle
             placementGetCell = r.ReadByte() != 0;
             var motionTableId = r.ReadUInt32();  // the player's MotionTableId (0: none); its Setup names the same table
             var playerKillerStatus = (PlayerKillerStatus)r.ReadUInt32();  // the Player's, set before its WeenieObject copies it
+            var runSkill = r.ReadUInt32();  // the Player's skills, vitals, attributes and burden (SetPlayerSkills)
+            var jumpSkill = r.ReadUInt32();
+            var stamina = r.ReadUInt32();
+            var strength = r.ReadUInt32();
+            var encumbranceVal = r.ReadInt32();
+            var carryingCapacityAugs = r.ReadInt32();
 
             // the mover from its Setup (spheres, step heights) by ACE, as WorldObject.InitPhysicsObj makes a Creature's
             // (a player's): makeAnimObject, its guid, the WeenieObject of its Player, its motion table, scale, state
@@ -1505,6 +1555,7 @@ namespace Acconform.Oracle
             obj.set_object_guid(new ObjectGuid(moverId));
             moverPlayer = MakePlayer(moverId);  // held as a server's landblock holds its objects: WeenieObject keeps a WeakReference
             moverPlayer.PlayerKillerStatus = playerKillerStatus;
+            SetPlayerSkills(moverPlayer, runSkill, jumpSkill, stamina, strength, encumbranceVal, carryingCapacityAugs);
             obj.set_weenie_obj(new WeenieObject(moverPlayer));
             SetServerPlayerPhysics(moverPlayer, obj, begin);
             obj.SetMotionTableID(motionTableId);

@@ -19,7 +19,12 @@ class Creature(WorldObject):
     is_monster: bool = False  # IsMonster
     faction1_bits: int | None = None  # Faction1Bits (FactionBits?)
     foe_type: int | None = None  # FoeType (CreatureType?)
-    run_skill: int = 0  # GetCreatureSkill(Skill.Run).Current: the database-free creature's (no attributes, no skill)
+    # the skills, vitals and attributes the physics reads (acconform.scene.MoverSkills, scene/8); the defaults are the
+    # database-free creature's: no skill, Stamina and Strength 1 (their floors)
+    run_skill: int = 0  # GetCreatureSkill(Skill.Run).Current (a uint)
+    jump_skill: int = 0  # GetCreatureSkill(Skill.Jump).Current (a uint)
+    stamina: int = 1  # Stamina.Current (a uint)
+    strength: int = 1  # Strength.Current (a uint)
 
     @anchor(None, "ACE.Server/WorldObjects/Creature.cs:OnCollideObject")
     def on_collide_object(self, target: WorldObject) -> None:

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from acconform.flags import PlayerKillerStatus
 
-from ..anchors import anchor
+from ..anchors import anchor, harness
 from .creature import Creature
 from .world_object import WorldObject
 
@@ -22,6 +22,16 @@ class Player(Creature):
     true until the client's first AutonomousPosition says otherwise (Player.cs)."""
 
     last_contact: bool = True
+    augmentation_increased_carrying_capacity: int = 0  # AugmentationIncreasedCarryingCapacity (an int)
+
+    @staticmethod
+    @harness("the mover's Player as the oracle's facade makes it: its id, PlayerKillerStatus and skills (Facade.SetPlayerSkills)")
+    def of_skills(guid: int, player_killer_status: PlayerKillerStatus, skills) -> "Player":
+        """The Player of a scene's mover (or a request's dat.DatMover): its id, its PlayerKillerStatus and its
+        acconform.scene.MoverSkills, field by field."""
+        return Player(guid=guid, player_killer_status=player_killer_status, run_skill=skills.run, jump_skill=skills.jump,
+                      stamina=skills.stamina, strength=skills.strength, encumbrance_val=skills.encumbrance_val,
+                      augmentation_increased_carrying_capacity=skills.augmentation_increased_carrying_capacity)
 
     @property
     def is_pk_type(self) -> bool:

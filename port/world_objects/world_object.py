@@ -32,6 +32,7 @@ class WorldObject:
     current_landblock: object = None
     scatter_pos: object = None  # ScatterPos: none for an object walking in the world
     teleporting: bool = False  # Teleporting
+    encumbrance_val: int | None = 0  # EncumbranceVal (an int?; a Container's is 0 from its constructor on)
 
     @anchor(None, "ACE.Server/WorldObjects/WorldObject.cs:OnCollideObject")
     def on_collide_object(self, target: "WorldObject") -> None:

@@ -261,3 +261,24 @@ def test_a_request_with_a_bad_record_names_the_field():
     doc["portal"][0].update(type="GfxObj", data="not base64!")
     with pytest.raises(InvalidScene, match=r"dat\.portal\[0\]\.data: not base64"):
         dat_from_json(doc)
+
+
+def test_the_records_carry_the_movers_skills_and_the_builtin_port_takes_them_from_there():
+    """mover.skills (scene/8) travels in the dat feature's mover, written only where it is not the database-free
+    Player's; the built-in port's Player takes it from the records, as it takes the PlayerKillerStatus."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+    from oracle.motion_scenes import scenes
+
+    from acconform.scene import DEFAULT_SKILLS
+
+    scene = scenes()["skilled_player_jumps_while_running"]
+    doc = json.loads(dumps_compact(dat_json(dat.dat_world(scene))))
+    assert doc["mover"]["skills"] == scene.mover.to_json()["skills"]
+    world = dat_from_json(doc)
+    assert world.mover.skills == scene.mover.skills
+    plain = scene.replace(mover=replace(scene.mover, skills=DEFAULT_SKILLS))
+    assert "skills" not in dat_json(dat.dat_world(plain))["mover"]
+    assert run_scene(plain, runtime="mono", world=world) == run_scene(scene, runtime="mono") != run_scene(plain, runtime="mono")
+    doc["mover"]["skills"]["strength"] = 0
+    with pytest.raises(InvalidScene, match=r"dat\.mover\.skills\.strength: expected an integer in \[1, 16777216\]"):
+        dat_from_json(doc)

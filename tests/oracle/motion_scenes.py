@@ -194,6 +194,33 @@ def run_jump_onto_lip():
     return scene("a player runs and jumps onto a lip above its step-up height", [land()], m, steps, [slab])
 
 
+def run_with_run_skill_300():
+    """Walk forward with the Run hold key for 30 ticks at 30 fps, then release for 12: a Player whose run skill
+    is 300 (GetCreatureSkill(Skill.Run).Current). apply_run_to_command makes the key RunForward at the speed
+    InqRunRate answers, GetRunRate(0, 300, 1) = 2.65, not the database-free Player's 1."""
+    from acconform.scene import MoverSkills
+
+    steps = _held(FPS30, 30, _keys(forward=MC.WalkForward, hold=HoldKey.Run)) + _held(FPS30, 12, RELEASE)
+    m = replace(mover((60.0, 40.0, 20.0)), motion_table=player_like_table(), skills=MoverSkills(run=300))
+    return scene("a player with a run skill of 300 runs, then stops", [land(A9B4)], m, steps)
+
+
+def skilled_player_jumps_while_running():
+    """An ordinary player with a run skill of 300, a jump skill of 250, no stamina, Strength 100 and a load
+    of 20,000 (burden 4/3 of its capacity 15,000 + 1 carrying-capacity augmentation's 3,000) runs (the
+    WalkForward key held with Run: RunForward at the run rate 2.65) for 16 ticks at 60 fps, jumps with
+    the local velocity (0, 4, 5) and lands: HandleActionJump's physics sets the JumpPack's velocity;
+    leaving the ground asks get_state_velocity, capped at the run rate's speed."""
+    from acconform.scene import MoverSkills
+
+    steps = (_held(FPS60, 16, _keys(forward=MC.WalkForward, hold=HoldKey.Run)) + (TickStep(FPS60, jump=(0.0, 4.0, 5.0)),)
+             + tuple(TickStep(FPS60) for _ in range(83)))
+    skills = MoverSkills(run=300, jump=250, stamina=0, strength=100, encumbrance_val=20000,
+                         augmentation_increased_carrying_capacity=1)
+    m = replace(mover((40.0, 40.0, 20.0)), motion_table=player_like_table(), skills=skills)
+    return scene("a skilled, loaded player without stamina jumps while running", [land(A9B4)], m, steps)
+
+
 MOTION = (
     ("player_walks_turns_and_stops", "the MoveToState keys become interpreted motions, the table's cycles, links and "
      "modifier play, and update_object moves the mover by root motion and get_state_velocity", walk_turn_stop),
@@ -209,6 +236,10 @@ MOTION = (
     ("run_up_48_degree_slope_by_key", "root motion and the run cycle's velocity carry the mover up a walkable slope",
      run_up_48_degree_slope_by_key),
     ("run_jump_onto_lip", "a running PK player's jump clears a lip it cannot step up", run_jump_onto_lip),
+    ("run_with_run_skill_300", "the Player's run skill sets the run rate (InqRunRate): the run cycle's speed and "
+     "get_state_velocity's cap", run_with_run_skill_300),
+    ("skilled_player_jumps_while_running", "a Player's run and jump skills, stamina, strength and burden (scene/8 "
+     "mover.skills) under a running jump", skilled_player_jumps_while_running),
 )
 
 

@@ -16,6 +16,7 @@ import json
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from acconform.compare import compare
@@ -153,3 +154,63 @@ def test_a_movers_player_killer_status_reads_back_and_an_unknown_one_is_refused_
     with pytest.raises(InvalidScene, match=r"mover\.player_killer_status: unknown PlayerKillerStatus 'Pk'"):
         Scene.from_json(doc)
     assert "player_killer_status" not in json.loads(SCENES[WALK].dumps())["mover"]  # NPK, ACE's default, is not written
+
+
+RUN300 = "run_with_run_skill_300"
+SKILLED_JUMP = "skilled_player_jumps_while_running"
+
+
+def test_a_movers_skills_read_back_and_only_the_fields_that_differ_from_the_database_free_players_are_written():
+    from acconform.scene import FORMAT
+
+    scene = SCENES[SKILLED_JUMP]
+    doc = json.loads(scene.dumps())
+    assert doc["format"] == FORMAT and Scene.from_json(doc) == scene
+    assert doc["mover"]["skills"] == {"run": 300, "jump": 250, "stamina": 0, "strength": 100, "encumbrance_val": 20000,
+                                      "augmentation_increased_carrying_capacity": 1}
+    assert json.loads(SCENES[RUN300].dumps())["mover"]["skills"] == {"run": 300}
+    assert "skills" not in json.loads(SCENES[WALK].dumps())["mover"]  # the database-free Player's are not written
+
+
+@pytest.mark.parametrize("field, value, problem", [
+    ("strength", 0, r"expected an integer in \[1, 16777216\], got 0"),
+    ("run", 16777217, r"expected an integer in \[0, 16777216\]"),
+    ("stamina", -1, r"expected an integer in \[0, 4294967295\]"),
+    ("encumbrance_val", 2**31, r"expected an integer in \[-2147483648, 2147483647\]"),
+    ("jump", 1.5, r"expected an integer, got"),
+    ("sprint", 1, r"unknown field 'sprint'"),
+])
+def test_a_movers_skill_out_of_aces_range_is_refused_naming_the_field(field, value, problem):
+    doc = json.loads(SCENES[RUN300].dumps())
+    doc["mover"]["skills"][field] = value
+    where = r"mover\.skills" + ("" if field == "sprint" else rf"\.{field}")
+    with pytest.raises(InvalidScene, match=rf"{where}: {problem}"):
+        Scene.from_json(doc)
+
+
+def test_a_movers_skills_in_an_older_format_are_refused_naming_the_field():
+    from acconform.scene import FORMAT
+
+    doc = json.loads(SCENES[RUN300].dumps())
+    doc["format"] = "acconform.scene/6"
+    with pytest.raises(InvalidScene, match=rf"mover\.skills: skills need format '{FORMAT}'"):
+        Scene.from_json(doc)
+
+
+def test_the_ports_runner_runs_faster_with_a_run_skill_of_300_than_the_database_free_player():
+    from acconform.port.run import run_scene
+    from acconform.scene import DEFAULT_SKILLS
+
+    scene = SCENES[RUN300]
+    skilled = run_scene(scene, runtime="mono").ticks
+    plain = run_scene(scene.replace(mover=dataclasses.replace(scene.mover, skills=DEFAULT_SKILLS)), runtime="mono").ticks
+    assert skilled[0].motion.interpreted.forward_speed == np.float32(2.65)  # GetRunRate(0, 300, 1)
+    assert plain[0].motion.interpreted.forward_speed == 1.0
+    assert skilled[29].origin[1] - scene.mover.begin.frame.origin[1] > 2.5 * (plain[29].origin[1] - scene.mover.begin.frame.origin[1])
+
+
+@pytest.mark.parametrize("runtime", RUNTIMES)
+def test_ace_runs_the_player_with_a_run_skill_of_300_at_its_run_rate(runtime):
+    ace = recorded_outcomes(DATA, runtime)
+    assert ace[RUN300].ticks[0].motion.interpreted.forward_speed == np.float32(2.65)
+    assert ace[SKILLED_JUMP].ticks[0].motion.interpreted.forward_speed == np.float32(2.65)

@@ -102,10 +102,24 @@ def test_a_packed_scene_carries_its_placement_after_the_end_position():
     plain = pack_scene(s)
     placed = pack_scene(s.replace(engine_mode="client", mover=replace(
         s.mover, placement=Placement(int(SetPositionFlags.Slide), True))))
-    # then the player's MotionTableId (none) and its PlayerKillerStatus (NPK, 2)
-    # then the other movers: none
-    assert plain[-18:] == struct.pack("<BiBIIi", 0, 0, 0, 0, 2, 0)
-    assert placed[-18:] == struct.pack("<BiBIIi", 1, int(SetPositionFlags.Slide), 1, 0, 2, 0)
+    # then the player's MotionTableId (none) and its PlayerKillerStatus (NPK, 2), then its skills, then the other
+    # movers: none
+    assert plain[-42:-28] == struct.pack("<BiBII", 0, 0, 0, 0, 2) and plain[-4:] == struct.pack("<i", 0)
+    assert placed[-42:-28] == struct.pack("<BiBII", 1, int(SetPositionFlags.Slide), 1, 0, 2)
+
+
+def test_a_packed_mover_ends_with_its_players_skills_vitals_attributes_and_burden():
+    from dataclasses import replace
+
+    from acconform.scene import MoverSkills
+
+    s = PROBE["flat 1-step walk"]
+    # the database-free Player's: no skill, Stamina 1, Strength 1, no load, no augmentation; then no other movers
+    assert pack_scene(s)[-28:] == struct.pack("<IIIIiii", 0, 0, 1, 1, 0, 0, 0)
+    skilled = replace(s.mover, skills=MoverSkills(run=300, jump=250, stamina=0, strength=100, encumbrance_val=-7,
+                                                  augmentation_increased_carrying_capacity=-1))
+    packed = pack_scene(s.replace(mover=skilled))
+    assert packed[-28:-4] == struct.pack("<IIIIii", 300, 250, 0, 100, -7, -1) and packed[:-28] == pack_scene(s)[:-28]
 
 
 def test_packing_is_deterministic_and_shares_the_height_table_bytes():
@@ -174,7 +188,7 @@ def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_
     assert data[5:5 + len(want)] == want
     assert data[5 + len(want):5 + len(want) + 1024] == struct.pack("<256f", *scene.land_height_table)
     # the mover has no end: an empty position is packed where a transition scene's end goes
-    assert data[-18 - 32:-18] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    assert data[-42 - 32:-42] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
 
 
 def _tick_bytes(t):
@@ -256,9 +270,9 @@ def test_a_packed_motion_scene_carries_its_table_and_animations_with_the_movers_
         "<IIIIfIIfIIf", step.hold_key, step.style, step.forward, step.forward_hold_key, step.forward_speed, step.sidestep,
         step.sidestep_hold_key, step.sidestep_speed, step.turn, step.turn_hold_key, step.turn_speed)
     assert data[5 + 14:5 + 14 + len(want)] == want
-    # the table, then the Player's status (NPK), then no other movers
-    assert data[-12:] == struct.pack("<IIi", MOTION_TABLE_ID, 2, 0)
+    # the table, then the Player's status (NPK), its skills, no other movers
+    assert data[-36:-28] == struct.pack("<II", MOTION_TABLE_ID, 2)
     pk = pack_scene(scene.replace(mover=dataclasses.replace(scene.mover, player_killer_status=4)))
-    assert pk[:-8] == data[:-8] and pk[-8:] == struct.pack("<Ii", 4, 0)  # PK
+    assert pk[:-32] == data[:-32] and pk[-32:-28] == struct.pack("<I", 4) and pk[-28:] == data[-28:]  # PK
     for kind, ident in ((5, MOTION_TABLE_ID), (6, ANIMATION_BASE), (6, ANIMATION_BASE + 4)):
         assert struct.pack("<BI", kind, ident) in data

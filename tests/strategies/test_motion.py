@@ -92,3 +92,17 @@ def test_the_port_runs_motion_scenes_and_a_walk_moves_the_mover(motion_scenes):
         last = out.ticks[-1]
         moved += last.origin != s.mover.begin.frame.origin or last.cell != s.mover.begin.cell
     assert moved >= 10
+
+
+def test_the_players_skills_are_drawn_default_or_at_the_values_where_aces_formulas_change(motion_scenes):
+    """mover.skills (scene/8): the database-free Player's in about half the scenes, else a run skill of 0, below or
+    at GetRunRate's 800, a stamina of 0 now and then, and the burden's boundaries among the loads."""
+    from acconform.scene import DEFAULT_SKILLS, FORMAT
+
+    skills = [sc.mover.skills for sc in motion_scenes]
+    drawn = [s for s in skills if s != DEFAULT_SKILLS]
+    assert 0.3 < len(drawn) / len(skills) < 0.7
+    runs = {s.run for s in drawn}
+    assert any(r >= 800 for r in runs) and any(0 < r < 800 for r in runs)
+    assert any(s.stamina == 0 for s in drawn) and any(s.encumbrance_val in (15000, 30000) for s in drawn)
+    assert all(sc.format == FORMAT for sc in motion_scenes if sc.mover.skills != DEFAULT_SKILLS)
