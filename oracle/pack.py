@@ -209,6 +209,7 @@ def _frozen_maker(cls):
 
 _make_outcome = _frozen_maker(Outcome)
 _make_tick = _frozen_maker(TickState)
+_make_plane = _frozen_maker(PlaneState)
 _make_cps = _frozen_maker(ContactPlaneState)
 _make_ns = _frozen_maker(NormalState)
 _parts: dict = {}  # (valid, cell, water, nx, ny, nz, d) / (valid, x, y, z) -> the shared immutable record
@@ -284,16 +285,34 @@ def _collisions_at(data, pos: int):
     return tuple(out), pos + n * _COLLISION.size
 
 
+_PLANE_AT = _TICK.size - 4 - 1 - 12 - 16  # the ContactPlane's 16 bytes within a tick's fixed part
+
+
+def _plane(data, pos: int, v) -> PlaneState:
+    """A tick's ContactPlane, shared between ticks with the same bits (a mover on one plane for many ticks)."""
+    key = bytes(data[pos:pos + 16])
+    p = _parts.get(key)
+    if p is None:
+        if len(_parts) >= _PARTS_LIMIT:
+            _parts.clear()
+        p = _parts[key] = _make_plane(v[26:29], v[29])
+    return p
+
+
 def _state_at(data, pos: int):
     """One TickState's fields (Facade.WriteState) from `pos`: (its values as TickState's first 18 positional
     arguments, the offset after them)."""
     v = _TICK.unpack_from(data, pos)
-    pos += _TICK.size
-    shadows = struct.unpack_from(f"<{v[34]}I", data, pos)
-    pos += 4 * v[34]
-    motion, pos = _motion_at(data, pos)
-    return (bool(v[0]), v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23], v[23], v[24], v[25],
-            PlaneState(v[26:29], v[29]), v[30:33], bool(v[33]), shadows, motion), pos
+    n = v[34]
+    at = pos + _TICK.size
+    shadows = struct.unpack_from(f"<{n}I", data, at) if n else ()
+    at += 4 * n
+    if data[at] in (0, b"\0"):
+        motion, at = None, at + 1
+    else:
+        motion, at = _motion_at(data, at)
+    return (v[0] != 0, v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23], v[23], v[24], v[25],
+            _plane(data, pos + _PLANE_AT, v), v[30:33], v[33] != 0, shadows, motion), at
 
 
 def _ticks_at(data, pos: int):
