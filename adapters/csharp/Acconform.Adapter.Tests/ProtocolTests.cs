@@ -111,6 +111,22 @@ public class ProtocolTests
         Assert.Equal("""{"normal":[0,0,1],"d":-20}""", ticked["ticks"]![0]!["contact_plane"]!.ToJsonString());
         Assert.Equal(1000.05, (double)ticked["ticks"]![0]!["update_time"]!);
         Assert.False(ticked["ticks"]![0]!.AsObject().ContainsKey("error"));
+        var movers = Answer(new Port(_ => new Outcome
+        {
+            Ticks = [new TickState
+            {
+                Collisions = [new CollisionRecord(0x80000001, 1000.05, false)],
+                Others = [new TickState { Id = 0x80000001, Collisions = [new CollisionRecord(0x50000001, 1000.05, false)] }],
+            }],
+            OtherPlacements = [new Placement()],
+        }), Request())["outcome"]!;
+        Assert.Equal("acconform.outcome/6", (string)movers["format"]!);
+        Assert.Equal("""{"id":"0x80000001","touched_time":1000.05,"ethereal":false}""", movers["ticks"]![0]!["collisions"]![0]!.ToJsonString());
+        var other = movers["ticks"]![0]!["others"]![0]!.AsObject();
+        Assert.Equal("id", other.First().Key);
+        Assert.Equal("0x80000001", (string)other["id"]!);
+        Assert.False(movers["ticks"]![0]!.AsObject().ContainsKey("id"));
+        Assert.Single(movers["other_placements"]!.AsArray());
     }
 
     [Fact]

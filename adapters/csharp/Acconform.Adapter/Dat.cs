@@ -16,7 +16,22 @@ public sealed record DatWorld(
     IReadOnlyList<DatRecord> Cell,  // CellLandblocks, LandblockInfos, EnvCells
     IReadOnlyList<DatRecord> Portal,  // buildings' shells, Environments, each static's records, the mover's
     IReadOnlyList<DatStatic> Statics,  // scene order; one standing in an EnvCell is also a stab of its record
-    DatMover Mover);
+    DatMover Mover,
+    IReadOnlyList<DatOther>? Others = null);  // scene/8: the other movers, in the order they enter the world
+
+/// <summary>Another mover (feature objects.moving): made as WorldObject.InitPhysicsObj makes its WorldObject's
+/// PhysicsObj (Weenie "player", "creature", "monster": makeAnimObject(Did, true); "object": makeObject(Did, Id, true)),
+/// then entered into the world at Begin by enter_world after the mover's placement.</summary>
+public sealed record DatOther(
+    uint Id,
+    uint Did,
+    string Weenie,
+    float Scale,
+    IReadOnlyList<string> State,
+    IReadOnlyList<string> TransientState,
+    Vector3 Velocity,
+    Position Begin,
+    string PlayerKillerStatus = "NPK");
 
 /// <summary>A static object: PhysicsObj.makeObject(Did, Id, false), then SetScaleStatic, State, and
 /// Landblock.init_static_objs' placement at Position.</summary>

@@ -9,9 +9,9 @@ namespace Acconform.Adapter;
 
 public sealed record Outcome
 {
-    /// <summary>acconform.outcome/4 with ticks, /3 with a placement, else /2.</summary>
+    /// <summary>acconform.outcome/6 with other movers, /4 with ticks, /3 with a placement, else /2.</summary>
     [JsonPropertyOrder(-1)]
-    public string Format => Ticks is not null ? "acconform.outcome/4"
+    public string Format => OtherPlacements is not null ? "acconform.outcome/6" : Ticks is not null ? "acconform.outcome/4"
         : Placement is not null ? "acconform.outcome/3" : "acconform.outcome/2";
 
     public bool Ok { get; init; }  // FindValidPosition's answer
@@ -42,6 +42,11 @@ public sealed record Outcome
 
     [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)]
     public IReadOnlyList<TickState>? Ticks { get; init; }  // only for a tick scene, one per step
+
+    /// <summary>Each other mover (scene/8 `others`) after it entered the world (enter_world: OK or GeneralFailure),
+    /// in the scene's order; only for a scene with other movers (feature objects.moving).</summary>
+    [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)]
+    public IReadOnlyList<Placement>? OtherPlacements { get; init; }
 
     /// <summary>The answer when the port threw: every field at its default, the exception in Error.</summary>
     public static Outcome Failed(Exception e) => new() { Error = $"{e.GetType().Name}: {e.Message}" };
@@ -76,9 +81,13 @@ public sealed record Placement
     public IReadOnlyList<uint> ShadowCells { get; init; } = [];
 }
 
-/// <summary>The mover's PhysicsObj after one step of a tick scene.</summary>
+/// <summary>The mover's PhysicsObj after one step of a tick scene (or, in its Others, another mover's).</summary>
 public sealed record TickState
 {
+    /// <summary>The other mover's id, in an entry of Others only.</summary>
+    [JsonPropertyOrder(-1), JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)]
+    public uint? Id { get; init; }
+
     public bool Updated { get; init; }
     public double UpdateTime { get; init; }  // PhysicsObj.UpdateTime: a double, bit-equal in every mode
     public uint Cell { get; init; }
@@ -97,9 +106,23 @@ public sealed record TickState
     public bool JumpedThisFrame { get; init; }
     public IReadOnlyList<uint> ShadowCells { get; init; } = [];
 
+    /// <summary>In a scene with other movers: the PhysicsObj's CollisionTable after the step, in its .NET
+    /// Dictionary order (a removed record's slot is the next one filled).</summary>
+    [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)]
+    public IReadOnlyList<CollisionRecord>? Collisions { get; init; }
+
+    /// <summary>In a scene with other movers, on the mover's TickState: each other mover's, with its Id and
+    /// Collisions, in the scene's order.</summary>
+    [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)]
+    public IReadOnlyList<TickState>? Others { get; init; }
+
     [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)]
     public string? Error { get; init; }  // what this step threw; later steps are not run
 }
+
+/// <summary>One record of a PhysicsObj's CollisionTable: the object touched, when (PhysicsTimer.CurrentTime, a
+/// double, bit-equal in every mode) and whether it was ethereal then.</summary>
+public sealed record CollisionRecord(uint Id, double TouchedTime, bool Ethereal);
 
 /// <summary>Flag names as acconform writes them: the names of the set members of a [Flags] enum whose
 /// members are ACE's (ObjectInfoState, TransientStateFlags, PhysicsState).</summary>
