@@ -41,7 +41,9 @@ What each shape becomes (`static_records(obj, index)`):
 The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
 the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
 Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxObj mesh, id
-``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition).
+``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition). Its
+HoldingLocations (scene/8 `holding_locations`) are written in the order given; another mover's Setup
+(`other_records`) likewise, with its sorting sphere (`sorting_sphere`, zero when none: a child's cells).
 
 Records are listed parts first; every record of a scene has a distinct id (the index is the
 object's place in the scene's list).

@@ -215,3 +215,13 @@ def test_live_ace_answers_each_child_scene_as_recorded_and_as_the_port(live, nam
     ace = live.run(SCENES[name])
     assert compare(ace, recorded_outcomes(DATA, live.location.runtime)[name], "exact") == [], name
     assert compare(run_scene(SCENES[name], runtime=live.location.runtime), ace, "exact") == [], name
+
+
+def test_the_shrinker_takes_a_child_away_with_its_parent():
+    from acconform.scene import validate_scene
+    from acconform.shrink import _fewer_others
+
+    scene = SCENES["monster_walks_carrying_a_child"]
+    for smaller in _fewer_others(scene):
+        validate_scene(smaller)
+    assert [o.id for o in list(_fewer_others(scene))[-1].others] == []  # the monster taken, its sword with it
