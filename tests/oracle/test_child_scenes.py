@@ -64,9 +64,12 @@ def test_a_location_may_be_a_number_and_a_location_ace_has_no_name_for_is_kept()
     assert Scene.loads(scene.dumps()) == scene
 
 
-def _add_other(doc: dict, index: int, **fields) -> None:
-    other = dict(doc["others"][0], **fields)
-    doc["others"].insert(index, other)
+def _parent_comes_later(doc: dict) -> None:
+    """A standing GenericObject after the sword, named as the sword's parent."""
+    later = {k: v for k, v in doc["others"][0].items() if k != "parent"}
+    later.update(id="0x80000011", begin={"cell": "0xA9B40013", "origin": [61, 61, 20]})
+    doc["others"].append(later)
+    doc["others"][0]["parent"]["id"] = "0x80000011"
 
 
 @pytest.mark.parametrize("edit, where, problem", [
@@ -75,9 +78,7 @@ def _add_other(doc: dict, index: int, **fields) -> None:
     (lambda d: d["others"][0]["parent"].__setitem__("id", "0x80000010"), r"others\[0\]\.parent\.id",
      "no mover before it has id 0x80000010"),
     # a parent that comes later: the child is parented when it is made, in `others` order
-    (lambda d: _add_other(d, 1, id="0x80000011", parent=None, begin={"cell": "0xA9B40013", "origin": [61, 61, 20]})
-     or d["others"][1].pop("parent") or d["others"][0]["parent"].__setitem__("id", "0x80000011"),
-     r"others\[0\]\.parent\.id", "an earlier other"),
+    (_parent_comes_later, r"others\[0\]\.parent\.id", "an earlier other"),
     (lambda d: d["others"][0].__setitem__("begin", {"cell": "0xA9B40013", "origin": [61, 61, 20]}),
      r"others\[0\]\.begin", "omit begin"),
     (lambda d: d["others"][0].pop("parent"), r"others\[0\]\.begin", "missing required field"),
