@@ -41,7 +41,9 @@ What each shape becomes (`static_records(obj, index)`):
 The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
 the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
 Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxObj mesh, id
-``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition).
+``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition). Its
+HoldingLocations (scene/8 `holding_locations`) are written in the order given; another mover's Setup
+(`other_records`) likewise, with its sorting sphere (`sorting_sphere`, zero when none: a child's cells).
 
 Records are listed parts first; every record of a scene has a distinct id (the index is the
 object's place in the scene's list).
@@ -102,7 +104,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .scene import (DEFAULT_SKILLS, MoverSkills, BSPLeaf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
+from .scene import (DEFAULT_SKILLS, MoverSkills, BSPLeaf, ChildOf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
                     Environment, Landblock, Mover, OtherMover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
                     StaticObject,
                     ENV_CELL_FIRST, newell_normal)
@@ -370,7 +372,8 @@ def mover_records(mover: Mover) -> ObjectRecords:
     table = mover.motion_table
     body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
                  step_up=mover.step_up_height, step_down=mover.step_down_height,
-                 default_motion_table=MOTION_TABLE_ID if table is not None else 0)
+                 default_motion_table=MOTION_TABLE_ID if table is not None else 0,
+                 holding_locations=holding_location_triples(mover.holding_locations))
     records = (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body))
     if table is not None:
         records += motion_records(table)
@@ -379,13 +382,22 @@ def mover_records(mover: Mover) -> ObjectRecords:
 
 def other_records(other: OtherMover, index: int) -> ObjectRecords:
     """Other mover `index`'s Setup (OTHER_SETUP_BASE + index): its spheres and step heights over the mover's
-    one empty part (MOVER_GFX_OBJ_ID, written with the mover's records)."""
+    one empty part (MOVER_GFX_OBJ_ID, written with the mover's records), its holding locations and its sorting
+    sphere (zero when it gives none: the bytes of a Setup before children)."""
     if index > MAX_OTHERS:
         raise ValueError(f"at most {MAX_OTHERS + 1} other movers have a Setup id")
     did = OTHER_SETUP_BASE + index
+    sorting = other.sorting_sphere
     body = setup(did, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in other.spheres],
-                 step_up=other.step_up_height, step_down=other.step_down_height)
+                 step_up=other.step_up_height, step_down=other.step_down_height,
+                 holding_locations=holding_location_triples(other.holding_locations),
+                 sorting_sphere=((0.0, 0.0, 0.0), 0.0) if sorting is None else (sorting.center, sorting.radius))
     return ObjectRecords(did, (DatRecord(did, "SetupModel", body),))
+
+
+def holding_location_triples(locations) -> list:
+    """A scene's HoldingLocation records as `setup` takes them: (location id, part id, Frame)."""
+    return [(h.location, h.part, h.frame) for h in locations]
 
 
 _IDENTITY_PART = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
@@ -737,8 +749,9 @@ class DatOther:
     state: int
     transient_state: int
     velocity: tuple[float, float, float]
-    begin: Position
+    begin: Position | None  # None: a child (scene/8 `parent`)
     player_killer_status: int = 2  # NPK
+    parent: ChildOf | None = None  # a child: its parent's id, location and placement
 
 
 @dataclass(frozen=True, slots=True)
@@ -772,7 +785,7 @@ def dat_world(scene: Scene) -> DatWorld:
         DatMover(MOVER_ID, written.mover.did, m.scale, m.state, m.transient_state, m.velocity, m.begin, m.end,
                  m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status, m.skills),
         tuple(DatOther(o.id, recs.did, o.weenie, o.scale, o.state, o.transient_state, o.velocity, o.begin,
-                       o.player_killer_status) for o, recs in zip(scene.others, written.others)))
+                       o.player_killer_status, o.parent) for o, recs in zip(scene.others, written.others)))
 
 
 __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatOther", "DatStatic", "DatWorld",

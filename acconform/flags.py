@@ -139,6 +139,22 @@ class PlayerKillerStatus(IntEnum):
 PLAYER_KILLER_STATUS_NPK = int(PlayerKillerStatus.NPK)
 
 
+class ParentLocation(IntEnum):
+    """ACE.Entity.Enum.ParentLocation: the key of a Setup's HoldingLocations a child is held at (set_parent's
+    location; a server sends it to the client as a wielded item's ParentLocation)."""
+
+    None_ = 0
+    RightHand = 1
+    LeftHand = 2
+    Shield = 3
+    Belt = 4
+    Quiver = 5
+    Hearldry = 6  # sic, ACE's spelling
+    Mouth = 7
+    LeftWeapon = 8
+    LeftUnarmed = 9
+
+
 class ObjectInfoState(metaclass=FlagSet):
     Contact = 0x1
     OnWalkable = 0x2

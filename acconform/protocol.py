@@ -52,7 +52,7 @@ from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
-from .scene import DEFAULT_SKILLS, WEENIE_CLASSES, ContactPlane, MoverSkills, Placement, Position, Scene, mover_start_json
+from .scene import DEFAULT_SKILLS, WEENIE_CLASSES, ChildOf, ContactPlane, MoverSkills, Placement, Position, Scene, mover_start_json
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
@@ -125,6 +125,12 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                        "state and inputs, entered into the world after the mover (enter_world) and stepped by "
                        "update_object after it each tick, in the order they entered; answered with their placements "
                        "and, per tick, their states and every mover's CollisionTable (outcome/6)"),
+    "objects.children": (lambda s: any(o.parent is not None for o in s.others),
+                         "children (scene/8: others[].parent, the holders' holding_locations, others[].sorting_sphere): "
+                         "another mover held by the mover or an earlier other at a holding location of its Setup, "
+                         "parented as the client parents a wielded item (SetPlacementFrame, then set_parent) instead "
+                         "of entering the world, never stepped itself and carried by its parent's UpdateChild each "
+                         "tick; needs objects.moving too"),
 }
 
 
@@ -173,9 +179,13 @@ def dat_json(world: DatWorld) -> dict:
 def _other_json(o: DatOther) -> dict:
     d = {"id": write_id(o.id), "did": write_id(o.did), "weenie": o.weenie, "scale": write_f32(o.scale),
          "state": flag_names(PhysicsState, o.state), "transient_state": flag_names(TransientState, o.transient_state),
-         "velocity": write_vec(o.velocity), "begin": o.begin.to_json()}
+         "velocity": write_vec(o.velocity)}
+    if o.begin is not None:
+        d["begin"] = o.begin.to_json()
     if o.player_killer_status != PLAYER_KILLER_STATUS_NPK:
         d["player_killer_status"] = PlayerKillerStatus(o.player_killer_status).name
+    if o.parent is not None:
+        d["parent"] = o.parent.to_json()
     return d
 
 
@@ -223,15 +233,19 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                      MoverSkills.from_json(m["skills"]) if m.given("skills") else DEFAULT_SKILLS)
     others = []
     for o in (r["others"].list() if r.given("others") else ()):
-        o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status"})
+        o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status",
+               "parent"})
         weenie = o["weenie"].str_()
         if weenie not in WEENIE_CLASSES:
             o["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
+        parent = ChildOf.from_json(o["parent"]) if o.given("parent") else None
+        if parent is not None and o.given("begin"):
+            o["begin"].fail("a child enters the world with its parent (set_parent, not enter_world): omit begin")
         others.append(DatOther(o["id"].id_(), o["did"].id_(), weenie, o["scale"].f32(), o["state"].flags(PhysicsState),
                                o["transient_state"].flags(TransientState), o["velocity"].vec3(),
-                               Position.from_json(o["begin"]),
+                               None if parent is not None else Position.from_json(o["begin"]),
                                o["player_killer_status"].enum_(PlayerKillerStatus) if o.given("player_killer_status")
-                               else PLAYER_KILLER_STATUS_NPK))
+                               else PLAYER_KILLER_STATUS_NPK, parent))
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
                     tuple(statics), mover, tuple(others))

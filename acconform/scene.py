@@ -22,8 +22,8 @@ from .codec import (Reader, as_text, dumps, dumps_compact, f32_text, ints_text, 
                     write_f64, write_id, write_vec)
 from .errors import InvalidScene
 from .motion_scene import CommandInput, MotionInput, MotionTableSpec, MoveToInput, ObjectMoveInput, read_stop
-from .flags import (PLAYER_KILLER_STATUS_NPK, CullMode, PhysicsState, PlayerKillerStatus, SetPositionFlags, TransientState,
-                    flag_names)
+from .flags import (PLAYER_KILLER_STATUS_NPK, CullMode, ParentLocation, PhysicsState, PlayerKillerStatus, SetPositionFlags,
+                    TransientState, flag_names)
 
 FORMAT = "acconform.scene/8"
 FORMAT_V7 = "acconform.scene/7"  # what a scene with no other movers (`others`) is written as
@@ -1054,6 +1054,79 @@ def mover_start_json(m, d: dict, explicit_via: bool = False) -> dict:
     return d
 
 
+INT32 = (-0x80000000, 0x7FFFFFFF)
+_LOCATION_NAMES = {("None" if m is ParentLocation.None_ else m.name): int(m) for m in ParentLocation}
+_LOCATION_BY_VALUE = {v: k for k, v in _LOCATION_NAMES.items()}
+
+
+def _location_json(location: int):
+    return _LOCATION_BY_VALUE.get(location, location)
+
+
+def _read_location(r: Reader) -> int:
+    """A ParentLocation by its name (ACE.Entity.Enum.ParentLocation) or any int32 (a Setup's HoldingLocations
+    and set_parent take an int)."""
+    if isinstance(r.value, str):
+        if r.value not in _LOCATION_NAMES:
+            r.fail(f"unknown ParentLocation {r.value!r} (known: {', '.join(_LOCATION_NAMES)}, or a number)")
+        return _LOCATION_NAMES[r.value]
+    return r.int_(*INT32)
+
+
+@dataclass(frozen=True, slots=True)
+class HoldingLocation:
+    """One of a Setup's HoldingLocations (scene/8 `holding_locations`, on the mover and on another mover): the
+    ParentLocation a child is held at -> the part holding it and the child's frame in that part. A part id at or
+    past the Setup's parts holds the frame in the holder's Position (PhysicsObj.UpdateChild); -1 (add_child's own
+    "no part") throws there, as in ACE; any int32 is written as given."""
+
+    location: int
+    part: int
+    frame: Frame
+
+    def to_json(self):
+        return {"location": _location_json(self.location), "part": self.part, "frame": self.frame.to_json()}
+
+    @staticmethod
+    def from_json(r: Reader) -> "HoldingLocation":
+        r.obj({"location", "part", "frame"})
+        return HoldingLocation(_read_location(r["location"]), r["part"].int_(*INT32), Frame.from_json(r["frame"]))
+
+
+def _read_holding_locations(r: Reader) -> tuple[HoldingLocation, ...]:
+    """A Setup's HoldingLocations, in the order given (its Dictionary's); a location given twice is refused (the
+    DAT's dictionary holds each key once)."""
+    out, seen = [], {}
+    for i, item in enumerate(r.list()):
+        h = HoldingLocation.from_json(item)
+        if h.location in seen:
+            item["location"].fail(f"location {_location_json(h.location)} is given twice (also [{seen[h.location]}]): a "
+                                  "Setup's HoldingLocations is a dictionary keyed by location")
+        seen[h.location] = i
+        out.append(h)
+    return tuple(out)
+
+
+@dataclass(frozen=True, slots=True)
+class ChildOf:
+    """Another mover held by a parent (scene/8 `others[].parent`) instead of entering the world: the parent's id
+    (the mover's or an earlier other's), the ParentLocation it is held at and the child's Placement id, as the
+    client parents a wielded item: SetPlacementFrame(placement), then set_parent(parent, location) (port/parenting.py)."""
+
+    id: int
+    location: int
+    placement: int = 0  # ACE.Entity.Enum.Placement.Default
+
+    def to_json(self):
+        return {"id": write_id(self.id), "location": _location_json(self.location), "placement": self.placement}
+
+    @staticmethod
+    def from_json(r: Reader) -> "ChildOf":
+        r.obj({"id", "location", "placement"})
+        return ChildOf(r["id"].id_(), _read_location(r["location"]),
+                       r["placement"].int_(*INT32) if r.given("placement") else 0)
+
+
 @dataclass(frozen=True, slots=True)
 class MoverSkills:
     """scene/8: what the physics reads of the mover's Player beyond its flags (WeenieObject.InqRunRate,
@@ -1111,6 +1184,7 @@ class Mover:
     # (which copies it); a player without the property is NPK. PK and PKLite are IsPKType: FastTick's jump.
     player_killer_status: int = PLAYER_KILLER_STATUS_NPK
     skills: MoverSkills = DEFAULT_SKILLS  # scene/8: its Player's skills, vitals, attributes and burden
+    holding_locations: tuple[HoldingLocation, ...] = ()  # scene/8: its Setup's HoldingLocations (a child's parent)
 
     @property
     def motion_table_id(self) -> int:
@@ -1131,16 +1205,20 @@ class Mover:
             d["player_killer_status"] = PlayerKillerStatus(self.player_killer_status).name
         if self.skills != DEFAULT_SKILLS:
             d["skills"] = self.skills.to_json()
+        if self.holding_locations:
+            d["holding_locations"] = [h.to_json() for h in self.holding_locations]
         return d
 
     @staticmethod
     def from_json(r: Reader, placement: bool = True, ticks: bool = False, vias: bool = True,
-                  skills: bool = True) -> "Mover":
+                  skills: bool = True, children: bool = False) -> "Mover":
         """`placement`: the format may hold one (scene/3 and later). `ticks`: the scene is a tick
         scene, whose mover has no end. `vias`: a placement may say `via` (scene/6). `skills`: the
-        format holds the mover's `skills` (scene/8)."""
+        format holds the mover's `skills` (scene/8). `children`: its Setup may have holding locations (scene/8)."""
         if not skills and isinstance(r.value, dict) and "skills" in r.value:
             r["skills"].fail(f"skills need format {FORMAT!r} (older formats have none)")
+        if not children and isinstance(r.value, dict) and "holding_locations" in r.value:
+            r["holding_locations"].fail(f"holding_locations need format {FORMAT!r} (older formats have none)")
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
             r["placement"].fail(f"a placement needs format {FORMAT_V3!r} or later (older formats have no placement)")
         if ticks and isinstance(r.value, dict) and "end" in r.value:
@@ -1150,7 +1228,8 @@ class Mover:
                 r[field].fail(f"{field} needs format {FORMAT_V6!r} or later (older formats have none)")
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
-               *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ())})
+               *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ()),
+               *(("holding_locations",) if children else ())})
         spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
         scale = r["scale"].f32() if r.given("scale") else 1.0
         if not scale > 0:
@@ -1177,6 +1256,8 @@ class Mover:
             player_killer_status=r["player_killer_status"].enum_(PlayerKillerStatus) if vias and r.given("player_killer_status")
             else PLAYER_KILLER_STATUS_NPK,
             skills=MoverSkills.from_json(r["skills"]) if skills and r.given("skills") else DEFAULT_SKILLS,
+            holding_locations=_read_holding_locations(r["holding_locations"]) if children and r.given("holding_locations")
+            else (),
         )
 
 
@@ -1198,12 +1279,19 @@ class OtherMover:
     IsMonster) or ``object`` (a GenericObject: no creature); the others' ids are in ACE's dynamic range.
     A creature's PlayerKillerStatus is its WeenieObject's (IsPK, IsPKLite, IsImpenetrable for a player).
     Each tick steps it after the mover, in `others` order (the order the objects entered: a landblock's
-    worldObjects), by update_object."""
+    worldObjects), by update_object.
+
+    Children (feature objects.children): its Setup may have `holding_locations` (as the mover's) and a
+    `sorting_sphere` (None: a zero one; what calc_cross_cells finds a child's cells with when its Setup has no
+    cylspheres). With `parent` (and no `begin`) it is a child: made as the others are, then held by its parent
+    (SetPlacementFrame, set_parent: port/parenting.py) in `others` order instead of entering the world, and never
+    stepped itself (its parent's UpdateChild carries it: a server's landblock never ticks a wielded item, which is
+    no landblock object, and update_object of an object with a Parent only clears its Active flag)."""
 
     id: int
     weenie: str
     spheres: tuple[SphereRec, ...]
-    begin: Position
+    begin: Position | None  # None: a child (it enters the world with its parent)
     step_up_height: float
     step_down_height: float
     scale: float = 1.0
@@ -1211,21 +1299,34 @@ class OtherMover:
     transient_state: int = DEFAULT_MOVER_TRANSIENT
     velocity: Vec3 = (0.0, 0.0, 0.0)
     player_killer_status: int = PLAYER_KILLER_STATUS_NPK
+    holding_locations: tuple[HoldingLocation, ...] = ()
+    sorting_sphere: SphereRec | None = None
+    parent: ChildOf | None = None
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
              "scale": write_f32(self.scale), "step_up_height": write_f32(self.step_up_height),
              "step_down_height": write_f32(self.step_down_height), "state": flag_names(PhysicsState, self.state),
-             "transient_state": flag_names(TransientState, self.transient_state), "velocity": write_vec(self.velocity),
-             "begin": self.begin.to_json()}
+             "transient_state": flag_names(TransientState, self.transient_state), "velocity": write_vec(self.velocity)}
+        if self.begin is not None:
+            d["begin"] = self.begin.to_json()
         if self.player_killer_status != PLAYER_KILLER_STATUS_NPK:
             d["player_killer_status"] = PlayerKillerStatus(self.player_killer_status).name
+        if self.holding_locations:
+            d["holding_locations"] = [h.to_json() for h in self.holding_locations]
+        if self.sorting_sphere is not None:
+            d["sorting_sphere"] = self.sorting_sphere.to_json()
+        if self.parent is not None:
+            d["parent"] = self.parent.to_json()
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
-               "velocity", "begin", "player_killer_status"})
+               "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent"})
+        parent = ChildOf.from_json(r["parent"]) if r.given("parent") else None
+        if parent is not None and r.given("begin"):
+            r["begin"].fail("a child enters the world with its parent (set_parent, not enter_world): omit begin")
         weenie = r["weenie"].str_()
         if weenie not in WEENIE_CLASSES:
             r["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
@@ -1251,12 +1352,15 @@ class OtherMover:
                                                "it only from a Creature (weenie player, creature or monster)")
             pks = r["player_killer_status"].enum_(PlayerKillerStatus)
         return OtherMover(
-            id=oid, weenie=weenie, spheres=spheres, begin=Position.from_json(r["begin"]), step_up_height=up,
-            step_down_height=down, scale=scale,
+            id=oid, weenie=weenie, spheres=spheres, begin=None if parent is not None else Position.from_json(r["begin"]),
+            step_up_height=up, step_down_height=down, scale=scale,
             state=r["state"].flags(PhysicsState) if r.given("state") else DEFAULT_MOVER_STATE,
             transient_state=r["transient_state"].flags(TransientState) if r.given("transient_state") else DEFAULT_MOVER_TRANSIENT,
             velocity=r["velocity"].vec3() if r.given("velocity") else (0.0, 0.0, 0.0),
-            player_killer_status=pks)
+            player_killer_status=pks,
+            holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
+            sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
+            parent=parent)
 
 
 ENGINE_MODES = ("server", "client")
@@ -1295,10 +1399,10 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/8 for other movers or the mover's skills, /7 for a static with a
-        setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for ticks, /3 for a
-        placement, /2 indoors, else /1)."""
-        if self.others or self.mover.skills != DEFAULT_SKILLS:
+        """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, /7
+        for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
+        ticks, /3 for a placement, /2 indoors, else /1)."""
+        if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations:
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7
@@ -1384,7 +1488,8 @@ class Scene:
         ticks = Ticks.from_json(r["ticks"], motion=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), doors=fmt in (FORMAT_V7, FORMAT),
                                 others=fmt == FORMAT) if r.has("ticks") else None
         mover = Mover.from_json(r["mover"], placement=fmt in (FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7, FORMAT),
-                                ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), skills=fmt == FORMAT)
+                                ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), skills=fmt == FORMAT,
+                                children=fmt == FORMAT)
         others = tuple(OtherMover.from_json(o) for o in r["others"].list()) if fmt == FORMAT and r.given("others") else ()
         scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others)
         check_consistency(scene, path)
@@ -1506,6 +1611,15 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
                                               "object by its id)")
         taken[o.id] = f"others[{i}]'s"
         by_id[o.id] = o
+        if o.parent is not None:
+            # the parent is in the world (or held) when the child is parented: the mover, or an other made before it;
+            # a location its Setup lacks is ACE's answer (set_parent refuses it), not the scene's error
+            if o.parent.id != MOVER_ID and o.parent.id not in by_id or o.parent.id == o.id:
+                earlier = ", ".join(f"0x{x.id:08X}" for x in scene.others[:i])
+                raise InvalidScene(f"{where}.parent.id", f"no mover before it has id 0x{o.parent.id:08X} (a child's parent "
+                                                         f"is the mover 0x{MOVER_ID:08X} or an earlier other: "
+                                                         f"{earlier or 'none'})")
+            continue
         cell = o.begin.cell
         _check_cell_id(f"{where}.begin.cell", cell)
         check_landblock(f"{where}.begin.cell", cell)

@@ -192,17 +192,21 @@ def _tick_scenes(scene):
 
 def _movers_scene(scene, m):
     """A scene with other movers (scene/8, objects.moving): one of each weenie class at the mover's start (a
-    PK player with every optional field), each given every input of a step once."""
+    PK player with every optional field), each given every input of a step once, and a child held by the mover
+    (objects.children: its parent, the mover's holding location, its sorting sphere)."""
     from dataclasses import replace
 
     from .flags import PhysicsState, PlayerKillerStatus, TransientState
-    from .scene import OtherInputs, OtherMover, SphereRec, Ticks, TickStep
+    from .scene import ChildOf, Frame, HoldingLocation, OtherInputs, OtherMover, SphereRec, Ticks, TickStep
 
     body = (SphereRec((0.0, 0.0, 0.5), 0.5),)
     others = (OtherMover(0x50000002, "player", body + (SphereRec((0.0, 0.0, 1.2), 0.5),), m.begin, 0.4, 0.4, scale=1.5,
                          velocity=(0.0, 1.0, 0.0), player_killer_status=int(PlayerKillerStatus.PK)),
               OtherMover(0x80000001, "monster", body, m.begin, 0.4, 0.4), OtherMover(0x80000002, "creature", body, m.begin, 0.4, 0.4),
-              OtherMover(0x80000003, "object", body, m.begin, 0.0, 0.0))
+              OtherMover(0x80000003, "object", body, m.begin, 0.0, 0.0),
+              OtherMover(0x80000004, "object", body, None, 0.0, 0.0, sorting_sphere=SphereRec((0.0, 0.0, 0.5), 0.6),
+                         parent=ChildOf(0x50000001, 1, 0)))
+    m = replace(m, holding_locations=(HoldingLocation(1, 1, Frame((0.4, 0.1, 1.0))),))
     every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))

@@ -205,6 +205,12 @@ def _fewer_others(scene: Scene) -> Iterator[Scene]:
 
 
 def _without_others(scene: Scene, ids: set) -> Scene:
+    """The scene without the other movers `ids` and their children (a child names an earlier other as its parent:
+    it goes with it)."""
+    ids = set(ids)
+    for o in scene.others:
+        if o.parent is not None and o.parent.id in ids:
+            ids.add(o.id)
     ticks = scene.ticks
     if ticks is not None:
         ticks = replace(ticks, steps=tuple(replace(st, others=tuple(o for o in st.others if o.id not in ids))

@@ -90,6 +90,8 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
                                        "set_velocity", "set_local_velocity", "set_omega", "calc_acceleration",
                                        "set_on_walkable", "RemoveLinkAnimations", "IsAnimating", "IsMovingOrAnimating")),
     ("ACE.Server.Physics.PartArray", ("Sequence",)),
+    # children (scene/8 `parent`): the client's calls that parent a wielded item (Facade.SetParent)
+    ("ACE.Server.Physics.PhysicsObj", ("ID", "SetPlacementFrame", "set_parent")),
     ("ACE.Server.Physics.Animation.Sequence", ("SetVelocity", "SetOmega")),
     # the motion layer (scene/6, mover.motion): the mover's MotionTable and Animation records, and a MoveToState
     ("ACE.DatLoader.FileTypes.MotionTable", (".ctor", "Unpack")),

@@ -17,7 +17,7 @@ from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 13
+PACK_VERSION = 14
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -152,6 +152,10 @@ _NO_OTHERS = struct.pack("<i", 0)
 # another mover (scene/8): its Setup id, id, weenie class (index in WEENIE_CLASSES), PlayerKillerStatus, scale, State,
 # TransientState, Velocity, begin position
 _OTHER = struct.Struct("<IIBIfII3f" + _POS)
+# then (scene/8 children) whether it is a child (1) and its parent's id, ParentLocation and Placement (a child's begin is
+# written as zeros: it enters the world with its parent)
+_CHILD = struct.Struct("<BIii")
+_NOT_A_CHILD = _CHILD.pack(0, 0, 0, 0)
 # ... then the Player's skills (acconform.scene.MoverSkills): Run, Jump, Stamina, Strength (u32), EncumbranceVal and
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
@@ -189,7 +193,9 @@ def pack_scene(scene: Scene) -> bytes:
     for o, recs in zip(scene.others, written.others):
         out += _records(recs)
         out.append(_OTHER.pack(recs.did, o.id, WEENIE_CLASSES.index(o.weenie), o.player_killer_status, o.scale, o.state,
-                               o.transient_state, *o.velocity, *_pos(o.begin)))
+                               o.transient_state, *o.velocity, *_pos(o.begin if o.begin is not None else _NO_END)))
+        p = o.parent
+        out.append(_NOT_A_CHILD if p is None else _CHILD.pack(1, p.id, p.location, p.placement))
     return b"".join(out)
 
 

@@ -5,7 +5,7 @@ properties Placement, ParentLocation and Location (WorldObjects/Creature_Equipme
 GetPlacementLocation), which CreateObject sends to the client, and the client parents the item's
 physics object (retail's CPhysicsObj::set_parent(parent, location) with the placement frame). The
 one set_parent call in ACE's server, ParticleEmitter.SetParenting, has no caller. The harness makes
-the client's calls on ACE's own PhysicsObj (oracle/facade: `SetParent`, Child.cs.txt) and on the
+the client's calls on ACE's own PhysicsObj (oracle/facade/Facade.cs: `SetParent`, called by EnterOthers for a scene's child) and on the
 port's, the same ones in the same order: the child's placement frame (SetPlacementFrame), then
 set_parent at the location. From then on the parent carries the child: every set_frame of the
 parent (its own, SetPositionInternal's, add_obj_to_cell's, a tick's) runs UpdateChildrenInternal.

@@ -41,7 +41,7 @@ from .errors import AceException, NullReferenceException
 from .dat.cell_dat import CellDat
 from .dat.portal_dat import PortalDat
 from .frame import AFrame, Position
-from . import db_obj, land_defs
+from . import db_obj, land_defs, parenting
 from .land.lscape import LScape
 from .physics_obj import PhysicsObj
 from .physics_timer import PhysicsTimer
@@ -95,7 +95,8 @@ def build_mover(m, did: int, obj_id: int, portal_dat: PortalDat, lscape: LScape)
 
 
 @harness("builds another mover and enters it into the world, as the oracle's facade does (WorldObject.InitPhysicsObj, AddPhysicsObj)")
-def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, trace) -> tuple[PhysicsObj, PlacementState, bool]:
+def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, trace,
+                holders=None) -> tuple[PhysicsObj, PlacementState, bool]:
     """WorldObject.InitPhysicsObj for the other mover's WorldObject (acconform.scene.OtherMover): a
     creature's PhysicsObj by ``new PhysicsObj()`` and makeAnimObject(did, true), a GenericObject's by
     makeObject(did, id, true) (dynamic); set_object_guid(id), set_weenie_obj(new WeenieObject(the
@@ -104,7 +105,10 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     Position.ObjCellID = its id, enter_world(Position(cell, frame)). Returns the object, its placement
     and whether it is in the world (AddPhysicsObj's success: entered and in a cell); one that is not
     keeps its PhysicsObj as enter_world left it and no tick steps it (a server's landblock ticks no
-    WorldObject without a PhysicsObj)."""
+    WorldObject without a PhysicsObj). A child (`o.parent`) is held instead by its parent, found in `holders`
+    (id -> PhysicsObj: the mover and the others made before it), as the client parents a wielded item
+    (parenting.set_parent: SetPlacementFrame, set_parent); its placement's result is set_parent's answer and it is
+    never in the world itself (no tick steps it: its parent's UpdateChild carries it)."""
     mode = lscape.mode
     if o.weenie == "object":
         obj = PhysicsObj.make_object(did, o.id, True, portal_dat)
@@ -118,6 +122,9 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     obj.state = o.state
     obj.transient_state = o.transient_state
     obj.velocity = mode.vec(*o.velocity)
+    if o.parent is not None:
+        held = parenting.set_parent(obj, holders[o.parent.id], o.parent.location, o.parent.placement, lscape)
+        return obj, _placement_state(obj, SetPositionError.OK if held else SetPositionError.GeneralFailure), False
     cell = lscape.get_landcell(o.begin.cell)
     entered = False
     if cell is not None:
@@ -393,7 +400,11 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
     placement = None
     if m.placement is not None:
         placement = place_mover(m, mover, lscape, trace)
-    movers = [build_other(o, did, portal_dat, lscape, trace) for o, did in others]
+    holders = {mover_id: mover}  # a child's parent: the mover or an other made before it
+    movers = []
+    for o, did in others:
+        movers.append(build_other(o, did, portal_dat, lscape, trace, holders))
+        holders[o.id] = movers[-1][0]
     other_placements = tuple(p for _, p, _ in movers) if others else None
     if scene.ticks is not None:
         ticks = run_ticks(scene, mover, timer, lscape, trace, movers)

@@ -111,3 +111,13 @@ def test_the_scene_schema_names_a_statics_setup_and_every_field_of_its_parts(gen
     setup = obj["properties"]["setup"]
     assert set(setup["properties"]) == {"parts", "spheres", "cylspheres"} and setup["required"] == ["parts"]
     assert set(setup["properties"]["parts"]["items"]["properties"]) == {"shape", "origin", "orientation", "scale"}
+
+
+def test_the_scene_schema_names_a_childs_parent_and_the_holding_locations_and_a_child_has_no_begin(generated):
+    scene, _ = generated
+    other = scene["properties"]["others"]["items"]
+    assert {"parent", "sorting_sphere", "begin"} <= set(other["properties"])
+    assert not {"parent", "sorting_sphere", "begin"} & set(other["required"])
+    assert set(other["properties"]["parent"]["properties"]) == {"id", "location", "placement"}
+    held = scene["properties"]["mover"]["properties"]["holding_locations"]["items"]
+    assert set(held["properties"]) == {"location", "part", "frame"} == set(held["required"])

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 13;
+        public const int PackVersion = 14;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -122,6 +122,10 @@ namespace Acconform.Oracle
             public Vector3 PlacedOrigin;
             public Quaternion PlacedOrientation;
             public List<uint> PlacedShadowCells;
+            // a child (scene/8 `parent`): held by the mover or an earlier other at a ParentLocation with a Placement
+            public bool HasParent;
+            public uint ParentId;
+            public int ParentLocation, Placement;
         }
         static readonly List<Other> sceneOthers = new List<Other>();
         static bool errored;  // the scene ended in an exception (no placements written)
@@ -316,7 +320,7 @@ namespace Acconform.Oracle
                     Place(obj, mover.Item2);
                     oldPos = new ACE.Server.Physics.Common.Position(obj.Position);
                 }
-                EnterOthers();
+                EnterOthers(obj);
                 if (hasTicks)
                 {
                     // a tick scene: ACE's per-tick update moves the mover (it enters cells: it leaves them after the scene)
@@ -1597,6 +1601,8 @@ namespace Acconform.Oracle
                     Did = r.ReadUInt32(), Id = r.ReadUInt32(), Weenie = r.ReadByte(), Pks = (PlayerKillerStatus)r.ReadUInt32(),
                     Scale = r.ReadSingle(), State = (PhysicsState)r.ReadUInt32(), Transient = (TransientStateFlags)r.ReadUInt32(),
                     Velocity = V3(r), Begin = Pos(r),
+                    HasParent = r.ReadByte() != 0, ParentId = r.ReadUInt32(), ParentLocation = r.ReadInt32(),
+                    Placement = r.ReadInt32(),
                 });
             }
         }
@@ -1606,8 +1612,10 @@ namespace Acconform.Oracle
         /// makeObject(setup, id, true); set_object_guid, set_weenie_obj(new WeenieObject(the WorldObject)),
         /// SetMotionTableID(0), SetScaleStatic, State), with the scene's TransientState and Velocity, then entered as
         /// WorldObject.AddPhysicsObj enters it: LScape.get_landcell of its begin cell, Position.ObjCellID = that cell's
-        /// id, enter_world(Position(cell, frame)); it is in the world when that succeeded and left it in a cell.</summary>
-        static void EnterOthers()
+        /// id, enter_world(Position(cell, frame)); it is in the world when that succeeded and left it in a cell. A child
+        /// (scene/8 `parent`) is held by its parent instead (SetParent: the mover `mover`, or an earlier other): its
+        /// placement's result is set_parent's answer, and no tick steps it (its parent's UpdateChild carries it).</summary>
+        static void EnterOthers(PhysicsObj mover)
         {
             foreach (var o in sceneOthers)
             {
@@ -1628,8 +1636,16 @@ namespace Acconform.Oracle
                 obj.State = o.State;
                 obj.TransientState = o.Transient;
                 obj.Velocity = o.Velocity;
-                var cell = LScape.get_landcell(o.Begin.ObjCellID);
                 o.Entered = false;
+                if (o.HasParent)
+                {
+                    var parent = o.ParentId == mover.ID ? mover : sceneOthers.Find(x => x.Id == o.ParentId).Obj;
+                    var held = SetParent(obj, parent, o.ParentLocation, o.Placement);
+                    o.PlacedResult = (int)(held ? SetPositionError.OK : SetPositionError.GeneralFailure);
+                    ReadPlaced(o, obj);
+                    continue;
+                }
+                var cell = LScape.get_landcell(o.Begin.ObjCellID);
                 if (cell != null)
                 {
                     obj.Position.ObjCellID = cell.ID;
@@ -1637,13 +1653,32 @@ namespace Acconform.Oracle
                     o.Entered = obj.enter_world(location) && obj.CurCell != null;
                 }
                 o.PlacedResult = (int)(o.Entered ? SetPositionError.OK : SetPositionError.GeneralFailure);
-                o.PlacedCell = obj.Position.ObjCellID;
-                o.PlacedOrigin = obj.Position.Frame.Origin;
-                o.PlacedOrientation = obj.Position.Frame.Orientation;
-                o.PlacedCurCell = obj.CurCell != null ? obj.CurCell.ID : 0u;
-                o.PlacedTransient = (uint)obj.TransientState;
-                o.PlacedShadowCells = new List<uint>(obj.ShadowObjects.Keys);
+                ReadPlaced(o, obj);
             }
+        }
+
+        static void ReadPlaced(Other o, PhysicsObj obj)
+        {
+            o.PlacedCell = obj.Position.ObjCellID;
+            o.PlacedOrigin = obj.Position.Frame.Origin;
+            o.PlacedOrientation = obj.Position.Frame.Orientation;
+            o.PlacedCurCell = obj.CurCell != null ? obj.CurCell.ID : 0u;
+            o.PlacedTransient = (uint)obj.TransientState;
+            o.PlacedShadowCells = new List<uint>(obj.ShadowObjects.Keys);
+        }
+
+        // ------------------------------------------------------------------ children (issue 41)
+        /// <summary>A child held by a parent (a mover) at a holding location, as the client parents a wielded
+        /// item: ACE's server never calls set_parent (a wielded item gets only Placement, ParentLocation and
+        /// Location: Creature_Equipment.cs TrySetChild), so these are the calls its CreateObject asks the client
+        /// to make, on ACE's own PhysicsObj: the child's placement frame, then set_parent at the location
+        /// (PhysicsObj.set_parent(PhysicsObj, int): add_child at the Setup's HoldingLocation, unset_parent,
+        /// leave_world, change_cell into the parent's cell, UpdateChild, recalc_cross_cells). The port's
+        /// counterpart is port/parenting.py set_parent.</summary>
+        static bool SetParent(PhysicsObj child, PhysicsObj parent, int parentLocation, int placement)
+        {
+            child.SetPlacementFrame(placement, false);
+            return child.set_parent(parent, parentLocation);
         }
 
         /// <summary>int -1 (no other movers, or an error), or n and per other mover its placement as WritePlacement

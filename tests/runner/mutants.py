@@ -396,6 +396,12 @@ MUTATIONS: tuple[Mutation, ...] = (
              "            if delta_time > COLLISION_RECORD_LIFETIME or collision.ethereal and delta_time > 0.0 or force_end:",
              "            if force_end:",
              "report_collision_end ends a CollisionTable record only when forced: never by age or ethereality", TICKS),
+    # ---- children (issue 41): caught by replaying the named child scenes' tick records (tick_kill)
+    Mutation("children_frame_not_combined", "physics_obj.py",
+             "            frame = AFrame.combine(self.position.frame, child_frame)\n",
+             "            frame = self.position.frame\n",
+             "UpdateChild: the holding location's frame is not combined with the parent's frame (a child held past "
+             "its parent's parts sits at the parent's Position)", TICKS),
     Mutation("multipart_part_scale_ignored", "part_array.py",
              "                    part.gfx_obj_scale = self.setup.default_scale[i] * new_scale",
              "                    part.gfx_obj_scale = new_scale",
@@ -597,7 +603,7 @@ def _tick_entries(runtime: str) -> tuple:
 
 def tick_records(runtime: str, first: tuple[str, ...] = ()):
     """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the named
-    scenes of several movers (tests/oracle/mover_scenes.py), the corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first, then as
+    scenes of several movers (tests/oracle/mover_scenes.py) and of a carried child (tests/oracle/child_scenes.py), the corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first, then as
     _tick_entries orders them), then the example tick scenes, the hand-written ones and the named ones
     (tests/oracle/data)."""
     import json
@@ -612,9 +618,15 @@ def tick_records(runtime: str, first: tuple[str, ...] = ()):
     sys.path.insert(0, str(root / "tests"))
     from oracle.mover_scenes import scenes as mover_scenes
 
+    from oracle.child_scenes import scenes as child_scenes
+
     movers = json.loads((data / "ace_mover_outcomes.json").read_text())["outcomes"][runtime]
     for name, scene in mover_scenes().items():
         yield f"tests/oracle/mover_scenes.py {name}", scene, Outcome.from_json(movers[name])
+    # then the named scenes of a carried child (tests/oracle/child_scenes.py), as short and as aimed
+    children = json.loads((data / "ace_child_outcomes.json").read_text())["outcomes"][runtime]
+    for name, scene in child_scenes().items():
+        yield f"tests/oracle/child_scenes.py {name}", scene, Outcome.from_json(children[name])
     for _, e in sorted(_tick_entries(runtime), key=lambda ke: ke[0] not in first):
         rec = Record.from_json(e.doc())
         yield e.where, rec.scene, rec.outcome
