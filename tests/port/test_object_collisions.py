@@ -177,9 +177,10 @@ def test_a_static_without_a_world_object_drops_both_calls_and_the_missile_flags_
     me = obj(RecordedPlayer(guid=0x5000_0001))
     me.state |= PhysicsState.Missile | PhysicsState.AlignPath | PhysicsState.PathClipped
     static = obj(None)
-    with pytest.raises(NotImplementedError, match="missile"):
-        me.report_object_collision(static, False)  # a missile's AtkCollisionProfile is not ported
-    me.state &= ~PhysicsState.Missile
+    # a missile builds an AtkCollisionProfile (Position.DetermineQuadrant), whose DoCollision the static's missing
+    # WorldObject drops; the missile bits clear all the same
+    assert me.report_object_collision(static, False) is True
+    assert not me.state & (PhysicsState.Missile | PhysicsState.AlignPath | PhysicsState.PathClipped) and CALLS == []
     me.state |= PhysicsState.AlignPath
     static.state |= PhysicsState.IgnoreCollisions
     assert me.report_object_collision(static, False) is True  # the static reports: collided, its call dropped
@@ -292,25 +293,32 @@ def test_the_profile_marks_creatures_players_and_attackable_objects():
 @pytest.mark.anchor("ACE.Server/WorldObjects/Player.cs:OnCollideObject")
 @pytest.mark.anchor("ACE.Server/WorldObjects/Creature.cs:OnCollideObject")
 def test_a_target_that_reports_no_collisions_is_left_before_any_thrown_weapon_branch():
-    thrown = GenericObject(guid=9, projectile_target=object())
+    thrown = GenericObject(guid=9, projectile_target=Creature(guid=3))
+    thrown.physics_obj = obj(thrown)
     for toucher in (Player(guid=1), Creature(guid=2)):
+        thrown.physics_obj.set_active(True)
+        thrown.hit_msg = False
         thrown.report_collisions = False
         toucher.on_collide_object(thrown)  # returns at `ReportCollisions == false`
+        assert thrown.physics_obj.is_active() and not thrown.hit_msg
         thrown.report_collisions = None  # no property: not false
-        if isinstance(toucher, Player):
-            with pytest.raises(NotImplementedError, match="ProjectileCollisionHelper"):
-                toucher.on_collide_object(thrown)
-        else:
-            toucher.on_collide_object(thrown)  # a Creature has no thrown weapon branch
+        toucher.on_collide_object(thrown)
+        # a player runs ProjectileCollisionHelper.OnCollideObject(thrown, player): not its target, so the
+        # environment's hit (set_active(false), HitMsg); a Creature has no thrown weapon branch
+        assert thrown.hit_msg is isinstance(toucher, Player)
+        assert thrown.physics_obj.is_active() is not isinstance(toucher, Player)
 
 
 @pytest.mark.anchor("ACE.Server/WorldObjects/WorldObject.cs:OnCollideObject")
 @pytest.mark.anchor("ACE.Server/WorldObjects/WorldObject.cs:OnCollideEnvironment")
 def test_a_plain_object_reacts_to_collisions_only_as_a_thrown_weapon():
-    GenericObject(guid=1).on_collide_object(Player(guid=2))
+    GenericObject(guid=1).on_collide_object(Player(guid=2))  # no ProjectileTarget: returns before touching anything
     GenericObject(guid=1).on_collide_environment()
-    with pytest.raises(NotImplementedError):
-        GenericObject(guid=1, projectile_target=object()).on_collide_environment()
+    thrown = GenericObject(guid=1, projectile_target=Player(guid=2))
+    thrown.physics_obj = obj(thrown)
+    thrown.physics_obj.set_active(True)
+    thrown.on_collide_environment()  # ProjectileCollisionHelper.OnCollideEnvironment: on no landblock, set inactive
+    assert not thrown.physics_obj.is_active() and thrown.hit_msg
 
 
 @pytest.mark.anchor("CPhysicsObj::report_collision_end")
