@@ -30,6 +30,11 @@ from .trajectory import solve_ballistic_arc, solve_ballistic_arc_lateral, solve_
 from .trajectory2 import calculate_trajectory
 from .vec import zero_like
 
+# WorldObject_Magic.cs: ProjHeight = 2.0f / 3.0f, ProjHeightArc = 5.0f / 6.0f (a spell's aim point up the target)
+PROJ_HEIGHT = f32_from_bits(0x3F2AAAAB)
+PROJ_HEIGHT_ARC = f32_from_bits(0x3F555555)
+# Creature_Combat.cs GetAimHeight: 2.0f (a creature's; a player's at AttackHeight Medium)
+AIM_HEIGHT = 2.0
 # Creature.GetProjectileVelocity's gravity without gravity: 0.00001f
 NO_GRAVITY = f32_from_bits(0x3727C5AC)
 # WorldObject.ProjectileTimeout = 30.0f, stored in a double
@@ -398,3 +403,57 @@ def update_object_physics(wo: WorldObject, lscape, trace=None) -> bool:
     landblock_update = (cell_before >> 16) != (obj.cur_cell.id >> 16)
 
     return landblock_update
+
+
+# ---------------------------------------------------------------- a scene's launch
+
+
+@harness("a scene's projectile launch (scene/8 others[].launch), as the oracle's facade makes it: ACE's launch calls for an arrow or a spell")
+def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, lscape, trace=None) -> bool:
+    """`wo` is the projectile's WorldObject (Ammunition or SpellProjectile) holding its PhysicsObj as made;
+    `launch` the scene's Launch; `launcher_obj` / `target_obj` the PhysicsObjs (their WorldObjects are their
+    WeenieObjects'; a static's is none); `landblock` the server Landblock of the launcher's cell. The
+    launcher's Location is its PhysicsObj's Position (SyncLocation keeps them one). The WorldObject is made
+    now (physicsCreationTime: the clock now). An arrow: CalculateProjectileVelocity's aim (the target's
+    origin raised by Height / GetAimHeight) and GetProjectileVelocity from `origin`, then LaunchProjectile. A
+    spell: CalculateProjectileVelocity's aim (raised by Height * ProjHeight or ProjHeightArc) and solver, then
+    Setup, the physics state and LaunchSpellProjectiles' AddObject. A launcher and target in different
+    landblocks would need ACE.Entity.Position.ToGlobal: refused (NotSupportedException), as the facade
+    refuses it."""
+    from .errors import NotSupportedException
+    from .world_objects import Player
+
+    mode = lscape.mode
+    runtime = mode.runtime
+    obj = wo.physics_obj
+    s = type(obj.scale)
+
+    if launcher_obj.position.landblock != target_obj.position.landblock:
+        raise NotSupportedException("acconform: a launch across landblocks (ACE.Entity.Position.ToGlobal) is not modelled")
+
+    wo.physics_creation_time = obj.timer.current_time
+
+    launcher = launcher_obj.weenie_obj.world_object
+    target = target_obj.weenie_obj.world_object
+    speed = s(launch.speed)
+    origin = mode.vec(*launch.origin)
+    end_pos = target_obj.position.frame.origin
+    height = target_obj.get_height()
+
+    if isinstance(wo, SpellProjectile):
+        end_pos = end_pos.with_z(end_pos.z + height * (s(PROJ_HEIGHT_ARC) if launch.arc else s(PROJ_HEIGHT)))
+        target_velocity = target_obj.cached_velocity if launch.tracking else zero_like(speed)
+        velocity = calculate_spell_projectile_velocity(origin, end_pos, speed, target_velocity, wo.spell_type,
+                                                       False, runtime)
+        spell_projectile_setup(wo)
+        spell_projectile_set_physics_state(wo, target, target_obj, velocity, origin)
+        location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
+        return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)
+
+    end_pos = end_pos.with_z(end_pos.z + height / s(AIM_HEIGHT))
+    lead = launch.lead_target or not isinstance(launcher, Player)
+    velocity, _ = get_projectile_velocity(origin, end_pos, speed, target_obj.cached_velocity, True, lead, False, runtime)
+    w, x, y, z = launch.orientation  # written (w, x, y, z), as a scene's frames are
+    orientation = mode.quat(x, y, z, w)
+    return launch_projectile(wo, launcher, launcher_obj, target, target_obj, origin, orientation, landblock,
+                             launcher_obj.position.obj_cell_id, velocity, lscape, trace)
