@@ -17,7 +17,7 @@ from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 13
+PACK_VERSION = 14
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -152,6 +152,10 @@ _NO_OTHERS = struct.pack("<i", 0)
 # another mover (scene/8): its Setup id, id, weenie class (index in WEENIE_CLASSES), PlayerKillerStatus, scale, State,
 # TransientState, Velocity, begin position
 _OTHER = struct.Struct("<IIBIfII3f" + _POS)
+# then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id, speed, origin, orientation
+# (w x y z), lead_target, arc, tracking
+_NO_LAUNCH = b"\0"
+_LAUNCH = struct.Struct("<BiIIf3f4fBBB")
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII")
 
 
@@ -185,6 +189,10 @@ def pack_scene(scene: Scene) -> bytes:
         out += _records(recs)
         out.append(_OTHER.pack(recs.did, o.id, WEENIE_CLASSES.index(o.weenie), o.player_killer_status, o.scale, o.state,
                                o.transient_state, *o.velocity, *_pos(o.begin)))
+        la = o.launch
+        out.append(_NO_LAUNCH if la is None else
+                   _LAUNCH.pack(1, la.tick, la.launcher, la.target, la.speed, *la.origin, *la.orientation,
+                                1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0))
     return b"".join(out)
 
 
