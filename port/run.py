@@ -749,6 +749,26 @@ def update_player_position(mover: PhysicsObj, request_pos: Position, location_ce
     return success, request_pos.obj_cell_id if success else location_cell
 
 
+@harness("steps the other movers after the mover, in `others` order, as the oracle's facade does: update_object, or a projectile's UpdateObjectPhysics")
+def step_others(launches, stepped: list, lscape: LScape, trace) -> dict:
+    """`launches`: (PhysicsObj, its Launch or None) per other mover; `stepped`: whether each is in the world (a
+    projectile: launched), updated here when a projectile's landblock no longer holds it (destroyed, or never
+    entered: the landblock ticks it no more). Returns {id: updated} for those stepped."""
+    others_updated = {}
+    for k, (obj, launch) in enumerate(launches):
+        if not stepped[k]:
+            continue
+        if launch is None:
+            others_updated[obj.id] = obj.update_object(lscape, trace)
+        else:
+            wo = obj.weenie_obj.world_object
+            if wo.current_landblock is None:
+                stepped[k] = False
+                continue
+            others_updated[obj.id] = missile_launch.update_object_physics(wo, lscape, trace)
+    return others_updated
+
+
 @anchor(None, "PhysicsObj.cs:update_object", "the tick scene driver: per step the inputs, the clock, then "
         "update_object or the legacy player path (Player.UpdatePlayerPosition's physics calls)")
 def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LScape, trace, movers=(), records=(),
@@ -795,18 +815,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             else:
                 updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),
                                                                 location_cell, lscape, trace)
-            others_updated = {}
-            for k, (obj, launch) in enumerate(launches):
-                if not stepped[k]:
-                    continue
-                if launch is None:
-                    others_updated[obj.id] = obj.update_object(lscape, trace)
-                else:
-                    wo = obj.weenie_obj.world_object
-                    if wo.current_landblock is None:  # destroyed, or never entered: the landblock ticks it no more
-                        stepped[k] = False
-                        continue
-                    others_updated[obj.id] = missile_launch.update_object_physics(wo, lscape, trace)
+            others_updated = step_others(launches, stepped, lscape, trace)
         except Exception as e:
             states.append(TickState(error=verdict(e)))
             break
