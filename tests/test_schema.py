@@ -111,3 +111,14 @@ def test_the_scene_schema_names_a_statics_setup_and_every_field_of_its_parts(gen
     setup = obj["properties"]["setup"]
     assert set(setup["properties"]) == {"parts", "spheres", "cylspheres"} and setup["required"] == ["parts"]
     assert set(setup["properties"]["parts"]["items"]["properties"]) == {"shape", "origin", "orientation", "scale"}
+
+
+def test_the_scene_schema_names_every_field_of_a_projectiles_launch(generated):
+    scene, _ = generated
+    other = scene["properties"]["others"]["items"]
+    assert "launch" in other["properties"] and "launch" not in other.get("required", [])
+    launch = other["properties"]["launch"]
+    assert set(launch["properties"]) == {"tick", "launcher", "target", "speed", "origin", "orientation", "lead_target",
+                                         "arc", "tracking"}
+    assert {"ammunition", "spell_projectile"} <= set(other["properties"]["weenie"].get("enum", ())) or \
+        other["properties"]["weenie"].get("type") == "string"
