@@ -49,6 +49,9 @@ MOTION_KIND = "motion"
 # "doors": tick scenes of the ticks policy door only (strategies/doors.py: a door on the path opens or closes at a
 # tick); recorded as "ticks"; an implementation runs it when it lists "ticks" and the feature doors
 DOORS_KIND = "doors"
+# "missiles": tick scenes of a projectile launched at a tick (strategies/missiles.py); recorded as "ticks"; an
+# implementation runs it when it lists "ticks" and the features objects.moving and missiles
+MISSILES_KIND = "missiles"
 
 
 def kind_supported(kind: str, supported) -> bool:
@@ -71,8 +74,8 @@ def check_kinds(kinds) -> tuple[str, ...]:
         if not k:
             raise AcconformError(f"--kinds {given!r}: an empty kind name between commas "
                                  f"(known: {', '.join(ALL_KINDS)})")
-        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS and k not in (MOTION_KIND, DOORS_KIND):
-            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, {MOTION_KIND}, {DOORS_KIND}, or ticks:<world> for "
+        if k not in ALL_KINDS and k not in TICK_WORLD_KINDS and k not in (MOTION_KIND, DOORS_KIND, MISSILES_KIND):
+            raise AcconformError(f"unknown scene kind {k!r} (known: {', '.join(ALL_KINDS)}, {MOTION_KIND}, {DOORS_KIND}, {MISSILES_KIND}, or ticks:<world> for "
                                  f"tick scenes over one of {', '.join(GEOMETRY_KINDS)})")
     if len(set(kinds)) != len(kinds):
         twice = next(k for k in kinds if kinds.count(k) > 1)
