@@ -333,3 +333,45 @@ def test_the_collision_record_lifetime_is_compared_in_double():
     timer.set(math.nextafter(1.0, 2.0))
     me.report_collision_end(False)
     assert len(me.collision_table) == 0
+
+
+# ---------------------------------------------------------------- a missile's profile (issue 41)
+
+
+def _at(o: PhysicsObj, x, y, z, yaw_degrees=0.0, cell=0xA9B40013):
+    from acconform.port.frame import AFrame, Position
+
+    half = math.radians(yaw_degrees) / 2
+    o.position = Position(cell, AFrame(EXACT.vec(x, y, z), EXACT.quat(0.0, 0.0, math.sin(half), math.cos(half))))
+    return o
+
+
+@pytest.mark.anchor("Position.cs:DetermineQuadrant")
+def test_a_quadrant_is_left_or_right_front_or_back_and_a_third_of_the_height():
+    from acconform.flags import Quadrant as Q
+
+    target = _at(obj(Creature(guid=2)), 10.0, 10.0, 0.0)
+    h = EXACT.scalar(1.8)
+    for (x, y, z), want in (((10.5, 10.3, 0.1), Q.Right | Q.Front | Q.Low), ((9.5, 9.7, 1.5), Q.Left | Q.Back | Q.High),
+                            ((10.0, 10.0, 0.9), Q.Right | Q.Front | Q.Medium)):  # x = 0 is Right, y = 0 Front
+        assert target.position.determine_quadrant(h, _at(obj(), x, y, z).position) == want
+    # in the target's own frame (LocalToLocal): turned 90 degrees about z, its front (+y) faces the world's -x, so a
+    # point at world offset (0.5, 0.2) is 0.5 behind it and 0.2 to its right
+    turned = _at(obj(Creature(guid=3)), 10.0, 10.0, 0.0, yaw_degrees=90.0)
+    assert turned.position.determine_quadrant(h, _at(obj(), 10.5, 10.2, 0.1).position) == Q.Right | Q.Back | Q.Low
+
+
+@pytest.mark.anchor("CPhysicsObj::build_collision_profile")
+@pytest.mark.anchor("AtkCollisionProfile.cs:AtkCollisionProfile(uint, int, Quadrant)")
+def test_a_missiles_profile_is_an_attack_profile_of_the_struck_objects_id_no_part_and_the_quadrant():
+    from acconform.flags import Quadrant as Q
+    from acconform.port.atk_collision_profile import AtkCollisionProfile
+
+    arrow = _at(obj(GenericObject(guid=0x8000_0010)), 10.2, 9.5, 1.7)
+    arrow.state |= PhysicsState.Missile
+    target = _at(obj(Creature(guid=0x8000_0001)), 10.0, 10.0, 0.0)
+    p = arrow.build_collision_profile(target, False, EXACT.vec(0, 20, 0))
+    assert isinstance(p, AtkCollisionProfile)
+    # target's GetHeight is its Setup's (0 here: a PhysicsObj with no part array), so any z >= 0 is High
+    assert (p.id, p.part, p.location) == (target.id, -1, Q.Right | Q.Back | Q.High)
+    assert p.velocity is None and p.flags == 0  # ACE's constructor sets only ID, Part and Location
