@@ -153,6 +153,41 @@ def test_ace_makes_a_spell_that_hits_a_player_ethereal_inert_and_still_in_the_wo
     assert last.origin[1] < 62.0  # at the player
 
 
+def _across_landblocks():
+    """The player at the north edge of A9B4 shoots at a monster just over the border, in A9B5."""
+    from oracle.missile_scenes import BODY, GROUND, WALKING, EDGE_SLIDE, _player, _steps, arrow, scene
+    from oracle.named_scenes import cell_at, land
+    from acconform.scene import Frame, OtherMover, Position
+
+    north = 0xA9B50000
+    monster = OtherMover(MONSTER, "monster", BODY, Position(cell_at(60.0, 3.0, north), Frame((60.0, 3.0, GROUND))), 0.4,
+                         0.4, state=EDGE_SLIDE, transient_state=WALKING)
+    return scene("across_landblocks", [land(), land(north)], _player((60.0, 186.0, GROUND)), _steps(6),
+                 others=(monster, arrow((60.0, 186.0, GROUND), MONSTER)))
+
+
+ACROSS = "NotSupportedException: acconform: a launch across landblocks (ACE.Entity.Position.ToGlobal) is not modelled"
+
+
+def test_a_launch_across_landblocks_is_the_launch_ticks_error_on_both_sides():
+    """ACE.Entity.Position.ToGlobal (CalculateProjectileVelocity's cross-landblock arm) is not modelled: the port and
+    the facade refuse the launch with one verdict, which ends the scene at that tick."""
+    from acconform.port.run import run_scene
+
+    out = run_scene(_across_landblocks(), runtime="mono")
+    assert [t.error for t in out.ticks] == [None] * LAUNCH_TICK + [ACROSS]
+
+
+@pytest.mark.live_oracle
+def test_live_ace_refuses_a_launch_across_landblocks_as_the_port_does(live):
+    from acconform.port.run import run_scene
+
+    scene = _across_landblocks()
+    ace = live.run(scene)
+    assert ace.ticks[-1].error == ACROSS
+    assert compare(run_scene(scene, runtime=live.location.runtime), ace, "exact") == []
+
+
 @pytest.mark.live_oracle
 @pytest.mark.parametrize("name", sorted(SCENES))
 def test_live_ace_answers_each_missile_scene_as_recorded_and_as_the_port(live, name):
