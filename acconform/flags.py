@@ -123,6 +123,19 @@ class SetPositionError(IntEnum):
     InvalidArguments = 0x100
 
 
+class Quadrant(IntEnum):
+    """ACE.Entity.Enum.Quadrant: where a missile struck (Position.DetermineQuadrant, AtkCollisionProfile.Location)."""
+
+    None_ = 0x0
+    High = 0x1
+    Medium = 0x2
+    Low = 0x4
+    Left = 0x8
+    Right = 0x10
+    Front = 0x20
+    Back = 0x40
+
+
 class PlayerKillerStatus(IntEnum):
     """ACE.Entity.Enum.PlayerKillerStatus (a [Flags] enum in ACE; a player holds one of them)."""
 

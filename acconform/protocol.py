@@ -52,7 +52,7 @@ from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
-from .scene import DEFAULT_SKILLS, WEENIE_CLASSES, ChildOf, ContactPlane, MoverSkills, Placement, Position, Scene, mover_start_json
+from .scene import DEFAULT_SKILLS, PROJECTILE_WEENIES, WEENIE_CLASSES, ChildOf, ContactPlane, Launch, MoverSkills, Placement, Position, Scene, mover_start_json
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
@@ -131,6 +131,12 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                          "parented as the client parents a wielded item (SetPlacementFrame, then set_parent) instead "
                          "of entering the world, never stepped itself and carried by its parent's UpdateChild each "
                          "tick; needs objects.moving too"),
+    "missiles": (lambda s: any(o.launch is not None for o in s.others),
+                 "projectiles (scene/8: others[] of weenie ammunition or spell_projectile with a launch): made at the "
+                 "start, launched at their step by ACE's launch code (Creature.GetProjectileVelocity or "
+                 "WorldObject.CalculateProjectileVelocity, SetProjectilePhysicsState or SpellProjectile.Setup, "
+                 "Landblock.AddWorldObject, IsProjectileVisible) and stepped by WorldObject.UpdateObjectPhysics; a hit "
+                 "runs ProjectileCollisionHelper or SpellProjectile.ProjectileImpact (needs objects.moving)"),
 }
 
 
@@ -186,6 +192,8 @@ def _other_json(o: DatOther) -> dict:
         d["player_killer_status"] = PlayerKillerStatus(o.player_killer_status).name
     if o.parent is not None:
         d["parent"] = o.parent.to_json()
+    if o.launch is not None:
+        d["launch"] = o.launch.to_json(o.weenie == "spell_projectile")
     return d
 
 
@@ -234,18 +242,25 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
     others = []
     for o in (r["others"].list() if r.given("others") else ()):
         o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status",
-               "parent"})
+               "parent", "launch"})
         weenie = o["weenie"].str_()
         if weenie not in WEENIE_CLASSES:
             o["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
         parent = ChildOf.from_json(o["parent"]) if o.given("parent") else None
         if parent is not None and o.given("begin"):
             o["begin"].fail("a child enters the world with its parent (set_parent, not enter_world): omit begin")
+        launch = None
+        if weenie in PROJECTILE_WEENIES:
+            if not o.given("launch"):
+                o.fail(f"a projectile (weenie {weenie}) needs its launch")
+            launch = Launch.from_json(o["launch"], weenie == "spell_projectile")
+        elif o.given("launch"):
+            o["launch"].fail(f"a launch is a projectile's, not a {weenie}'s")
         others.append(DatOther(o["id"].id_(), o["did"].id_(), weenie, o["scale"].f32(), o["state"].flags(PhysicsState),
                                o["transient_state"].flags(TransientState), o["velocity"].vec3(),
                                None if parent is not None else Position.from_json(o["begin"]),
                                o["player_killer_status"].enum_(PlayerKillerStatus) if o.given("player_killer_status")
-                               else PLAYER_KILLER_STATUS_NPK, parent))
+                               else PLAYER_KILLER_STATUS_NPK, parent, launch))
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
                     tuple(statics), mover, tuple(others))
@@ -355,12 +370,14 @@ class Implementation:
     @property
     def kinds(self) -> tuple[str, ...]:
         """The campaign kinds it can run: its handshake's, "ticks" when it lists the feature, and "motion"
-        (motion tick scenes) when it lists ticks and mover.motion."""
+        (motion tick scenes) when it lists ticks and mover.motion, "missiles" when it lists ticks, objects.moving and
+        missiles."""
         features = self.hello["features"]
         return (tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in features else ())
                 + (("motion",) if "ticks" in features and "mover.motion" in features else ())
                 + (("doors",) if "ticks" in features and "doors" in features else ())
-                + (("movers",) if "ticks" in features and "objects.moving" in features else ()))
+                + (("movers",) if "ticks" in features and "objects.moving" in features else ())
+                + (("missiles",) if "ticks" in features and "objects.moving" in features and "missiles" in features else ()))
 
     @property
     def runs_every_scene(self) -> bool:

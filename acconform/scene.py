@@ -1261,8 +1261,62 @@ class Mover:
         )
 
 
-# the WorldObject a server makes for another mover (scene/8 `others[].weenie`): WeenieObject(WorldObject) reads its class
-WEENIE_CLASSES = ("player", "creature", "monster", "object")
+# the WorldObject a server makes for another mover (scene/8 `others[].weenie`): WeenieObject(WorldObject) reads its class;
+# the last two are projectiles (an Ammunition: an arrow, bolt or dart; a SpellProjectile), which a `launch` puts in the world
+WEENIE_CLASSES = ("player", "creature", "monster", "object", "ammunition", "spell_projectile")
+PROJECTILE_WEENIES = ("ammunition", "spell_projectile")
+
+
+@dataclass(frozen=True, slots=True)
+class Launch:
+    """A projectile's launch (scene/8 `others[].launch`, for weenie ``ammunition`` or ``spell_projectile``): at
+    step `tick`, after that step's inputs and before its clock (a server's launch is an action, run after a
+    landblock's physics with that tick's clock: the next physics step is the projectile's first), `launcher`
+    (the mover's id or another mover's, not a projectile) launches it at `target` (the mover, another mover
+    that is no projectile, or an outdoor static) at `speed` m/s. `origin` and `orientation` are where it
+    appears: its Location (the launcher's cell, Pos = origin, Rotation = orientation), what ACE's
+    CalculateProjectileVelocity (an arrow) or LaunchSpellProjectiles (a spell) computes from the launcher's
+    spawn offset; a spell projectile's orientation is its velocity's heading (set_vector_heading), so it gives
+    none. ACE computes the velocity: an arrow's by Creature.GetProjectileVelocity from `origin` to the target's
+    aim point (its origin raised by Height / 2, GetAimHeight's answer for a creature and for a player at
+    Medium), leading a moving target (its CachedVelocity) unless the launcher is a player without
+    LeadMissileTargets (`lead_target` false); a spell's by WorldObject.CalculateProjectileVelocity (the aim
+    point raised by Height * 2/3, or 5/6 for an `arc`, which falls under gravity; a `tracking` spell leads
+    the target)."""
+
+    tick: int
+    launcher: int
+    target: int
+    speed: float
+    origin: Vec3
+    orientation: Quat = IDENTITY
+    lead_target: bool = True
+    arc: bool = False
+    tracking: bool = False
+
+    def to_json(self, spell: bool) -> dict:
+        d = {"tick": self.tick, "launcher": write_id(self.launcher), "target": write_id(self.target),
+             "speed": write_f32(self.speed), "origin": write_vec(self.origin)}
+        if spell:
+            d["arc"] = self.arc
+            d["tracking"] = self.tracking
+        else:
+            d["orientation"] = write_vec(self.orientation)
+            d["lead_target"] = self.lead_target
+        return d
+
+    @staticmethod
+    def from_json(r: Reader, spell: bool) -> "Launch":
+        r.obj({"tick", "launcher", "target", "speed", "origin", *(("arc", "tracking") if spell else ("orientation", "lead_target"))})
+        speed = r["speed"].f32()
+        if not speed > 0:
+            r["speed"].fail(f"a launch speed is positive, got {speed}")
+        frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
+        return Launch(tick=r["tick"].int_(0, 2 ** 31 - 1), launcher=r["launcher"].id_(), target=r["target"].id_(), speed=speed,
+                      origin=frame.origin, orientation=frame.orientation,
+                      lead_target=r["lead_target"].bool_() if r.given("lead_target") else True,
+                      arc=r["arc"].bool_() if r.given("arc") else False,
+                      tracking=r["tracking"].bool_() if r.given("tracking") else False)
 PLAYER_ID_RANGE = (0x50000001, 0x5FFFFFFF)  # ACE.Entity.ObjectGuid.PlayerMin / PlayerMax
 DYNAMIC_ID_RANGE = (0x80000000, 0xFFFFFFFE)  # ObjectGuid.DynamicMin / DynamicMax: a server's generated objects
 
@@ -1302,6 +1356,7 @@ class OtherMover:
     holding_locations: tuple[HoldingLocation, ...] = ()
     sorting_sphere: SphereRec | None = None
     parent: ChildOf | None = None
+    launch: Launch | None = None  # a projectile's (weenie ammunition or spell_projectile): made at the start, in the world from its launch
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
@@ -1318,12 +1373,14 @@ class OtherMover:
             d["sorting_sphere"] = self.sorting_sphere.to_json()
         if self.parent is not None:
             d["parent"] = self.parent.to_json()
+        if self.launch is not None:
+            d["launch"] = self.launch.to_json(self.weenie == "spell_projectile")
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
-               "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent"})
+               "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch"})
         parent = ChildOf.from_json(r["parent"]) if r.given("parent") else None
         if parent is not None and r.given("begin"):
             r["begin"].fail("a child enters the world with its parent (set_parent, not enter_world): omit begin")
@@ -1345,9 +1402,17 @@ class OtherMover:
         for name, v in (("step_up_height", up), ("step_down_height", down)):
             if v < 0:
                 r[name].fail(f"a step height cannot be negative, got {v}")
+        launch = None
+        if weenie in PROJECTILE_WEENIES:
+            if not r.given("launch"):
+                raise InvalidScene(f"{r.path}.launch", f"a projectile (weenie {weenie}) needs a launch: its tick, launcher, "
+                                                       "target, speed and origin")
+            launch = Launch.from_json(r["launch"], weenie == "spell_projectile")
+        elif r.given("launch"):
+            r["launch"].fail(f"a launch is a projectile's (weenie {' or '.join(PROJECTILE_WEENIES)}), not a {weenie}'s")
         pks = PLAYER_KILLER_STATUS_NPK
         if r.given("player_killer_status"):
-            if weenie == "object":
+            if weenie == "object" or weenie in PROJECTILE_WEENIES:
                 r["player_killer_status"].fail("a PlayerKillerStatus is a creature's: WeenieObject(WorldObject) copies "
                                                "it only from a Creature (weenie player, creature or monster)")
             pks = r["player_killer_status"].enum_(PlayerKillerStatus)
@@ -1360,7 +1425,7 @@ class OtherMover:
             player_killer_status=pks,
             holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
             sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
-            parent=parent)
+            parent=parent, launch=launch)
 
 
 ENGINE_MODES = ("server", "client")
@@ -1624,6 +1689,7 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
         _check_cell_id(f"{where}.begin.cell", cell)
         check_landblock(f"{where}.begin.cell", cell)
         _check_defined(f"{where}.begin.cell", cell, env_cells, "it enters the world there (LScape.get_landcell)")
+    _check_launches(scene, path, by_id)
     if scene.ticks is None:
         return
     for i, step in enumerate(scene.ticks.steps):
@@ -1634,12 +1700,58 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
             if other is None:
                 raise InvalidScene(f"{where}.id", f"no other mover has id 0x{inputs.id:08X} (the scene's others: "
                                                   f"{', '.join(f'0x{o.id:08X}' for o in scene.others) or 'none'})")
+            if other.weenie in PROJECTILE_WEENIES:
+                raise InvalidScene(f"{where}.id", f"other mover 0x{inputs.id:08X} is a projectile: its launch and ACE's "
+                                                  "flight move it, no input does")
             if inputs.id in seen:
                 raise InvalidScene(f"{where}.id", f"other mover 0x{inputs.id:08X} is given inputs twice in one step")
             seen.add(inputs.id)
             if inputs.jump is not None and other.weenie != "player":
                 raise InvalidScene(f"{where}.jump", f"a jump is a player's (Player.HandleActionJump); other mover "
                                                     f"0x{inputs.id:08X} is a {other.weenie}")
+
+
+def _check_launches(scene: Scene, path: str, by_id: dict) -> None:
+    """Each projectile's launch: in a tick scene on a server engine, at one of its steps, from the mover or another
+    mover that is no projectile, at the mover, such another mover or an outdoor static (the facade holds a
+    PhysicsObj for those only)."""
+    from .staging import MOVER_ID
+
+    statics = {o.id: o for o in scene.objects}
+    for i, o in enumerate(scene.others):
+        if o.launch is None:
+            continue
+        where = _p(path, f"others[{i}].launch")
+        launch = o.launch
+        if scene.ticks is None:
+            raise InvalidScene(f"{where}.tick", "a launch happens at a tick: the scene needs ticks")
+        if scene.engine_mode != "server":
+            raise InvalidScene(_p(path, "engine.mode"), "a projectile joins a server landblock (Landblock.AddWorldObject): "
+                                                        "the engine mode must be server")
+        if not launch.tick < len(scene.ticks.steps):
+            raise InvalidScene(f"{where}.tick", f"the scene has {len(scene.ticks.steps)} steps (0..{len(scene.ticks.steps) - 1}), "
+                                                f"got {launch.tick}")
+
+        def mover(key, value, what):
+            if value == MOVER_ID:
+                return
+            other = by_id.get(value)
+            if other is not None and other.weenie not in PROJECTILE_WEENIES:
+                return
+            if other is not None:
+                raise InvalidScene(f"{where}.{key}", f"0x{value:08X} is a projectile; {what}")
+            static = statics.get(value) if key == "target" else None
+            if static is not None:
+                if static.position.cell & 0xFFFF >= ENV_CELL_FIRST:
+                    raise InvalidScene(f"{where}.{key}", f"static 0x{value:08X} is in an EnvCell (a DAT stab, which the "
+                                                         "oracle's facade holds no PhysicsObj of): aim at an outdoor static")
+                return
+            raise InvalidScene(f"{where}.{key}", f"no mover{' or static' if key == 'target' else ''} has id 0x{value:08X}; {what}")
+
+        mover("launcher", launch.launcher, "the launcher is the mover (0x50000001) or another mover that is no projectile")
+        mover("target", launch.target, "the target is the mover, another mover that is no projectile, or an outdoor static")
+        if launch.launcher == launch.target:
+            raise InvalidScene(f"{where}.target", f"the launcher 0x{launch.launcher:08X} cannot be its own target")
 
 
 def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> None:

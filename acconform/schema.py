@@ -187,7 +187,7 @@ def _tick_scenes(scene):
     return [replace(scene, engine_mode="client", mover=m, name="ticks", ticks=Ticks("update_object", 1000.0, (every, TickStep(0.25)))),
             replace(scene, engine_mode="client", mover=m, ticks=Ticks("request_pos", 0.0, (
                 TickStep(0.1, request_pos=scene.mover.begin),))),
-            _motion_scene(scene, m), _door_scene(scene, m), _movers_scene(scene, m)]
+            _motion_scene(scene, m), _door_scene(scene, m), _movers_scene(scene, m), _missiles_scene(scene, m)]
 
 
 def _movers_scene(scene, m):
@@ -212,6 +212,25 @@ def _movers_scene(scene, m):
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
     return replace(scene, mover=m, name="movers", others=others,
                    ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),)))
+
+
+def _missiles_scene(scene, m):
+    """A scene with projectiles (scene/8, missiles; a server engine): a monster at the mover's start, an arrow it
+    launches at the mover and a spell the mover casts at it (an arc, tracking), both at tick 0, every launch field
+    written."""
+    from dataclasses import replace
+
+    from .scene import Launch, OtherMover, SphereRec, Ticks, TickStep
+
+    body = (SphereRec((0.0, 0.0, 0.5), 0.5),)
+    x, y, z = m.begin.frame.origin
+    others = (OtherMover(0x80000001, "monster", body, m.begin, 0.4, 0.4),
+              OtherMover(0x80000010, "ammunition", (SphereRec((0.0, 0.0, 0.0), 0.05),), m.begin, 0.0, 0.0,
+                         launch=Launch(0, 0x80000001, 0x50000001, 20.0, (x, y, z + 1.2), (1.0, 0.0, 0.0, 0.0), False)),
+              OtherMover(0x80000011, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), 0.15),), m.begin, 0.0, 0.0,
+                         launch=Launch(0, 0x50000001, 0x80000001, 15.0, (x, y, z + 1.2), arc=True, tracking=True)))
+    return replace(scene, engine_mode="server", mover=m, name="missiles", others=others,
+                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30),)))
 
 
 def _door_scene(scene, m):

@@ -166,6 +166,19 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.Trajectory", ("IsZero", "SolveQuadric", "SolveCubic", "SolveQuartic", "ballistic_range",
                                        "solve_ballistic_arc", "SolveBallisticArc", "solve_ballistic_arc_lateral")),
     ("ACE.Server.Physics.Trajectory2", ("CalculateTrajectory",)),
+    # projectiles (scene/8 others[].launch: Facade.SceneLaunch and the methods after it): the WorldObject members ACE's
+    # launch and hit code uses, the projectile classes, and the server landblock's object tables
+    ("ACE.Server.WorldObjects.WorldObject", ("PhysicsObj", "CurrentLandblock", "ProjectileSource", "ProjectileTarget",
+                                             "Ethereal", "ReportCollisions", "IgnoreCollisions", "Missile", "AlignPath",
+                                             "PathClipped", "GravityStatus", "AllowEdgeSlide", "RotationSpeed", "Destroy",
+                                             "OnCollideEnvironment", "Guid")),
+    ("ACE.Server.WorldObjects.Ammunition", ()),
+    ("ACE.Server.WorldObjects.SpellProjectile", ("SpellType", "WorldEntryCollision")),
+    ("ACE.Server.Entity.ProjectileSpellType", ("Bolt", "Arc")),
+    ("ACE.Server.Entity.Landblock", ("pendingAdditions", "worldObjects", "pendingRemovals")),
+    ("ACE.Server.Physics.PhysicsObj", ("ProjectileTarget", "CachedVelocity", "GetHeight", "transition", "set_active",
+                                       "is_active", "IsAnimating", "InitialUpdates", "update_object", "Omega")),
+    ("ACE.Server.Physics.Animation.AFrame", ("set_vector_heading",)),
 )
 
 

@@ -17,7 +17,7 @@ from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 14
+PACK_VERSION = 15
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -159,6 +159,10 @@ _NOT_A_CHILD = _CHILD.pack(0, 0, 0, 0)
 # ... then the Player's skills (acconform.scene.MoverSkills): Run, Jump, Stamina, Strength (u32), EncumbranceVal and
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
+# then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id, speed, origin, orientation
+# (w x y z), lead_target, arc, tracking
+_NO_LAUNCH = b"\0"
+_LAUNCH = struct.Struct("<BiIIf3f4fBBB")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -196,6 +200,10 @@ def pack_scene(scene: Scene) -> bytes:
                                o.transient_state, *o.velocity, *_pos(o.begin if o.begin is not None else _NO_END)))
         p = o.parent
         out.append(_NOT_A_CHILD if p is None else _CHILD.pack(1, p.id, p.location, p.placement))
+        la = o.launch
+        out.append(_NO_LAUNCH if la is None else
+                   _LAUNCH.pack(1, la.tick, la.launcher, la.target, la.speed, *la.origin, *la.orientation,
+                                1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0))
     return b"".join(out)
 
 

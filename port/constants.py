@@ -22,6 +22,9 @@ GRAVITY = f32_from_bits(0xC11CCCCD)
 DEFAULT_STEP_HEIGHT = f32_from_bits(0x3C23D70A)
 # Transition.cs StepDown/CheckWalkable literal 0.039999999f: the probe distance for edges
 STEP_DOWN_PROBE = f32_from_bits(0x3D23D70A)
+# Position.ThresholdMed = 1.0f / 3.0f and ThresholdHigh = 2.0f / 3.0f (DetermineQuadrant's height bands)
+THRESHOLD_MED = f32_from_bits(0x3EAAAAAB)
+THRESHOLD_HIGH = f32_from_bits(0x3F2AAAAB)
 # LandDefs: BlockLength 192, CellLength 24, 8 cells a side, 9 vertices a side
 BLOCK_LENGTH = 192.0
 CELL_LENGTH = 24.0

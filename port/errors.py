@@ -72,6 +72,13 @@ class NotImplementedException(AceException):
     dotnet_type = "NotImplementedException"
 
 
+class NotSupportedException(AceException):
+    """The oracle's facade refuses what the harness does not model (a projectile's launch across landblocks);
+    the port refuses it with the same verdict."""
+
+    dotnet_type = "NotSupportedException"
+
+
 class ArgumentOutOfRangeException(AceException):
     """A .NET List indexer or ``Enumerable.ElementAt`` past the end, e.g. ConstructVertices reading
     Height[0] of the empty CellLandblock ACE's DAT read gives for a landblock its DAT lacks, or

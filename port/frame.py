@@ -15,9 +15,9 @@ from dataclasses import dataclass
 
 from acconform.numerics import D, MONO, Matrix4x4, Mode, Quaternion, Runtime, Vector3, cast_float, cs_fmod, cs_math, wrap_u32
 from acconform.port.anchors import anchor, harness
-from acconform.port.constants import CELL_LENGTH, EPSILON, QUAT_VALID_SLACK
+from acconform.port.constants import CELL_LENGTH, EPSILON, QUAT_VALID_SLACK, THRESHOLD_HIGH, THRESHOLD_MED
 from acconform.port import land_defs
-from acconform.port.vec import normalize_check_small
+from acconform.port.vec import normalize_check_small, zero_like
 
 # C# literals used by the heading code, exact in float32
 _F450 = 450.0
@@ -237,6 +237,28 @@ class Position:
         cell_offset = pos.frame.local_to_global(offset)
         block_offset = land_defs.get_block_offset(self.obj_cell_id, pos.obj_cell_id)
         return self.frame.global_to_local(block_offset + cell_offset)
+
+    @anchor(None, "Position.cs:DetermineQuadrant")
+    def determine_quadrant(self, height, position: "Position") -> int:
+        """Where `position` (a missile's) is relative to this object of `height`: left or right, front or
+        back, and low, medium or high (ACE.Entity.Enum.Quadrant bits)."""
+        from acconform.flags import Quadrant
+
+        hitpoint = self.local_to_local(position, zero_like(height))
+
+        quadrant = int(Quadrant.Left if hitpoint.x < 0.0 else Quadrant.Right)
+
+        quadrant |= Quadrant.Front if hitpoint.y >= 0.0 else Quadrant.Back
+
+        s = type(height)
+        if hitpoint.z < height * s(THRESHOLD_MED):
+            quadrant |= Quadrant.Low
+        elif hitpoint.z < height * s(THRESHOLD_HIGH):
+            quadrant |= Quadrant.Medium
+        else:
+            quadrant |= Quadrant.High
+
+        return quadrant
 
     @anchor("Position::local_to_global", "Position.cs:LocalToGlobal(Vector3)")
     def local_to_global(self, point: Vector3) -> Vector3:

@@ -1,11 +1,13 @@
-"""The server's physics calls for a projectile: launch (Creature_Missile, WorldObject_Magic, SpellProjectile.Setup), entering the world (Landblock.AddWorldObject, WorldObject.AddPhysicsObj, IsProjectileVisible), the per-tick missile branch of WorldObject.UpdateObjectPhysics, and hits (ProjectileCollisionHelper, SpellProjectile.ProjectileImpact, WorldObject.Destroy).
+"""The server's physics calls for a projectile: launch (Creature_Missile: GetProjectileVelocity, SetProjectilePhysicsState, LaunchProjectile; WorldObject_Magic: CalculateProjectileVelocity, LaunchSpellProjectiles; SpellProjectile.Setup), entering the world (Landblock.AddWorldObject, WorldObject.AddPhysicsObj, IsProjectileVisible) and the per-tick missile branch of WorldObject.UpdateObjectPhysics.
 
 Harness glue, not ACE's physics: these are the calls ACE's WorldObject code makes on a projectile's
-PhysicsObj, as the oracle's facade makes them (oracle/facade/Missile.cs.txt), with everything else
-those methods do (damage, broadcasts, chat, sounds, proc effects) left out because no physics reads
-it. The projectile's WorldObject is a record from port/projectile_objects.py (Ammunition, Missile,
-SpellProjectile); the launcher and target are PhysicsObjs. The solvers are ACE's own, ported in
-port/trajectory.py and port/trajectory2.py.
+PhysicsObj, as the oracle's facade makes them (oracle/facade/Facade.cs), with everything else those
+methods do (damage, broadcasts, chat, sounds, proc effects) left out because no physics reads it.
+The projectile is a WorldObject of port/world_objects (Ammunition, Missile, SpellProjectile), whose
+OnCollideObject / OnCollideEnvironment (ProjectileCollisionHelper, SpellProjectile.ProjectileImpact)
+WeenieObject.DoCollision runs on a hit; its landblock a port/server_landblock.py Landblock. The
+launcher and the target are given as their WorldObject (None for a static: it has none) and their
+PhysicsObj. The solvers are ACE's own, ported in port/trajectory.py and port/trajectory2.py.
 
 The WorldObject property setters ACE calls change the PhysicsState bits directly
 (WorldObject.SetPhysicsState: ``State |= bit`` or ``State &= ~bit``), never through set_ethereal
@@ -22,17 +24,21 @@ from acconform.numerics import MONO, Runtime, Vector3, f32_from_bits, normalize
 from .anchors import harness
 from .constants import GRAVITY
 from .frame import AFrame, Position
-from .projectile_objects import Ammunition, Missile, Projectile, SpellProjectile
+from .world_objects import Creature, SpellProjectile, WorldObject
+from .world_objects.spell_projectile import ARC, BLAST, BOLT, RING, STREAK, STRIKE, UNDEF, VOLLEY, WALL  # noqa: F401
 from .trajectory import solve_ballistic_arc, solve_ballistic_arc_lateral, solve_ballistic_arc_moving
 from .trajectory2 import calculate_trajectory
 from .vec import zero_like
 
+# WorldObject_Magic.cs: ProjHeight = 2.0f / 3.0f, ProjHeightArc = 5.0f / 6.0f (a spell's aim point up the target)
+PROJ_HEIGHT = f32_from_bits(0x3F2AAAAB)
+PROJ_HEIGHT_ARC = f32_from_bits(0x3F555555)
+# Creature_Combat.cs GetAimHeight: 2.0f (a creature's; a player's at AttackHeight Medium)
+AIM_HEIGHT = 2.0
 # Creature.GetProjectileVelocity's gravity without gravity: 0.00001f
 NO_GRAVITY = f32_from_bits(0x3727C5AC)
 # WorldObject.ProjectileTimeout = 30.0f, stored in a double
 PROJECTILE_TIMEOUT = 30.0
-# ProjectileSpellType (ACE.Server/Entity/SpellProjectileType.cs)
-UNDEF, BOLT, BLAST, VOLLEY, STREAK, ARC, RING, WALL, STRIKE = range(9)
 
 
 # ---------------------------------------------------------------- launch arithmetic
@@ -116,15 +122,15 @@ def _set(obj, bit: int, value: bool) -> None:
 
 
 @harness("Creature.SetProjectilePhysicsState's physics calls on an arrow's, bolt's or thrown weapon's PhysicsObj")
-def set_projectile_physics_state(wo: Projectile, target, velocity: Vector3, origin: Vector3, orientation) -> None:
-    """After InitPhysicsObj (the caller builds the PhysicsObj as WorldObject.InitPhysicsObj does: a
-    non-creature's makeObject(setup, guid, dynamic), set_object_guid, set_weenie_obj,
-    SetMotionTableID, SetScaleStatic, State = the weenie's PhysicsState): ReportCollisions,
-    Missile, AlignPath and PathClipped set, Ethereal and IgnoreCollisions cleared; Position.Frame
-    = (origin, orientation) (LaunchProjectile's Location); Velocity assigned (the field, not
-    set_velocity: no MaxVelocity clamp); ProjectileTarget = the target's PhysicsObj; a RotationSpeed
-    clears AlignPath and sets Omega = ((float)(2 pi RotationSpeed), 0, 0); set_active(true).
-    Placement and CurrentMotionState are not physics."""
+def set_projectile_physics_state(wo: WorldObject, target_obj, velocity: Vector3, origin: Vector3, orientation) -> None:
+    """After InitPhysicsObj (the caller built the PhysicsObj as WorldObject.InitPhysicsObj does: a
+    non-creature's makeObject(setup, guid, dynamic), set_object_guid, set_weenie_obj, SetMotionTableID,
+    SetScaleStatic, State = the weenie's PhysicsState): ReportCollisions, Missile, AlignPath and
+    PathClipped set, Ethereal and IgnoreCollisions cleared; Position.Frame = (origin, orientation)
+    (Location's); Velocity assigned (the field, not set_velocity: no MaxVelocity clamp);
+    PhysicsObj.ProjectileTarget = the target's PhysicsObj (`target_obj`); a RotationSpeed clears AlignPath
+    and sets Omega = ((float)(2 pi RotationSpeed), 0, 0); set_active(true). Placement and
+    CurrentMotionState are no physics."""
     obj = wo.physics_obj
     s = type(velocity.x)
 
@@ -141,8 +147,7 @@ def set_projectile_physics_state(wo: Projectile, target, velocity: Vector3, orig
     obj.position.frame.orientation = orientation
 
     obj.velocity = velocity
-    obj.projectile_target = target
-    wo.projectile_target = target
+    obj.projectile_target = target_obj
 
     # projectiles with RotationSpeed get omega values and "align path" turned off (ACE)
     if (wo.rotation_speed or 0) != 0:
@@ -154,11 +159,10 @@ def set_projectile_physics_state(wo: Projectile, target, velocity: Vector3, orig
 
 @harness("SpellProjectile.Setup's physics calls on a spell projectile's PhysicsObj (after InitPhysicsObj)")
 def spell_projectile_setup(wo: SpellProjectile, rolling_death: bool = False, scripted_collision: bool | None = None) -> None:
-    """ReportCollisions, Missile, AlignPath, PathClipped set; IgnoreCollisions cleared; Ethereal
-    cleared unless the spell is "Rolling Death"; ScriptedCollision set or cleared where Setup does
-    (`scripted_collision`: None leaves it: wall spells 7278/7281/7282/23144 and Ring spells clear
-    it, Ring spell 3818 sets it); AllowEdgeSlide false clears EdgeSlide; a RotationSpeed clears
-    AlignPath and sets Omega."""
+    """ReportCollisions, Missile, AlignPath, PathClipped set, IgnoreCollisions cleared; Ethereal
+    cleared unless the spell is Rolling Death; ScriptedCollision as `scripted_collision` (None leaves
+    it: Setup clears it for some wall spells and Ring spells, Ring spell 3818 sets it); AllowEdgeSlide
+    false clears EdgeSlide; a RotationSpeed clears AlignPath and sets Omega."""
     obj = wo.physics_obj
     s = type(obj.scale)
 
@@ -184,14 +188,15 @@ def spell_projectile_setup(wo: SpellProjectile, rolling_death: bool = False, scr
 
 
 @harness("LaunchSpellProjectiles' and SpellProjectile.SetProjectilePhysicsState's physics calls for one spell projectile")
-def spell_projectile_set_physics_state(wo: SpellProjectile, target, velocity: Vector3, origin: Vector3) -> None:
-    """``sp.PhysicsObj.Velocity = velocity`` (a spread angle's rotation is the caller's), the
-    heading: Position.Frame.set_vector_heading(Normalize(Velocity)), whose orientation becomes
-    Location.Rotation; then SetProjectilePhysicsState(target, useGravity): GravityStatus set for an
-    Arc spell, Position.Frame = (Location.Pos, Location.Rotation), ProjectileTarget = the target's
-    PhysicsObj when there is one (ACE gives only the first of a spell's projectiles its target),
-    set_active(true). `origin` is Location.Pos (the caster's position plus the rotated spawn
-    offset)."""
+def spell_projectile_set_physics_state(wo: SpellProjectile, target: WorldObject | None, target_obj, velocity: Vector3,
+                                       origin: Vector3) -> None:
+    """``sp.PhysicsObj.Velocity = velocity`` (a spread angle's rotation is the caller's), the heading:
+    Position.Frame.set_vector_heading(Normalize(Velocity)), whose orientation becomes Location.Rotation;
+    ProjectileTarget = `target`; then SetProjectilePhysicsState(target, useGravity): GravityStatus set for
+    an Arc spell, Position.Frame = (Location.Pos, Location.Rotation), PhysicsObj.ProjectileTarget = the
+    target's PhysicsObj when there is a target, set_active(true). `origin` is Location.Pos (the caster's
+    position plus the rotated spawn offset). A static target has no WorldObject: `target` None and
+    `target_obj` its PhysicsObj."""
     obj = wo.physics_obj
 
     obj.velocity = velocity
@@ -209,8 +214,8 @@ def spell_projectile_set_physics_state(wo: SpellProjectile, target, velocity: Ve
     obj.position.frame.origin = origin
     obj.position.frame.orientation = rotation
 
-    if target is not None:
-        obj.projectile_target = target
+    if target_obj is not None:
+        obj.projectile_target = target_obj
 
     obj.set_active(True)
 
@@ -219,7 +224,7 @@ def spell_projectile_set_physics_state(wo: SpellProjectile, target, velocity: Ve
 
 
 @harness("WorldObject.AddPhysicsObj: the projectile's PhysicsObj entered at its Location (enter_world, slide unless it has a ProjectileTarget)")
-def add_physics_obj(wo: Projectile, location: Position, lscape, trace=None) -> bool:
+def add_physics_obj(wo: WorldObject, location: Position, lscape, trace=None) -> bool:
     """CurCell already set: false. LScape.get_landcell(Location.Cell) (none: DestroyObject,
     PhysicsObj = null, false); Position.ObjCellID = that cell's id; enter_world(Position(cell,
     Location's frame)); failing, or without a CurCell after: DestroyObject, PhysicsObj = null,
@@ -250,49 +255,48 @@ def add_physics_obj(wo: Projectile, location: Position, lscape, trace=None) -> b
 
 
 @harness("Landblock.AddWorldObject's physics: the projectile joins the landblock (CurrentLandblock), then AddPhysicsObj")
-def add_world_object(wo: Projectile, location: Position, lscape, trace=None) -> bool:
-    """CurrentLandblock is set before AddPhysicsObj (so a hit during enter_world finds it, but the
-    landblock does not list the object yet: RemoveWorldObject then returns without destroying);
-    an object already holding a PhysicsObj is filed again (set_object_guid); failing, CurrentLandblock
-    is cleared; succeeding, the object is listed (pendingAdditions)."""
-    wo.in_landblock = True
+def add_world_object(wo: WorldObject, landblock, location: Position, lscape, trace=None) -> bool:
+    """AddWorldObjectInternal: CurrentLandblock = the landblock before AddPhysicsObj (so a hit during
+    enter_world finds it, but the landblock lists the object only after: RemoveWorldObject then
+    returns without destroying); an object already holding a PhysicsObj is filed again
+    (set_object_guid); failing, CurrentLandblock is cleared; succeeding, pendingAdditions holds it."""
+    wo.current_landblock = landblock
 
-    wo.physics_obj.set_object_guid(wo.physics_obj.id)
+    wo.physics_obj.set_object_guid(wo.guid)
 
     if wo.physics_obj.cur_cell is None:
         if not add_physics_obj(wo, location, lscape, trace):
-            wo.in_landblock = False
+            wo.current_landblock = None
             return False
 
-    wo.listed = True
+    landblock.add_pending(wo)
     return True
 
 
 @harness("WorldObject.IsProjectileVisible: the line-of-sight transition from the projectile back to its launcher's eye level")
-def is_projectile_visible(launcher, wo: Projectile, lscape, launcher_is_creature: bool = True,
-                          launcher_ethereal: bool | None = None, trace=None) -> bool:
+def is_projectile_visible(launcher: WorldObject, launcher_obj, wo: WorldObject, lscape, trace=None) -> bool:
     """A launcher that is no Creature, or whose Ethereal property is true, sees every projectile.
-    Otherwise: a transition of the projectile's PhysicsObj from its Position to the launcher's, the
-    launcher's raised by (launcher height - projectile height), with ProjectileTarget the launcher
-    for the duration; visible when the transition is valid and the launcher is among its
-    CollideObject."""
-    if not launcher_is_creature or (launcher_ethereal or False):
+    Otherwise: a transition of the projectile's PhysicsObj from its Position to the launcher's
+    (`launcher_obj`), the launcher's raised by (launcher height - projectile height), with
+    ProjectileTarget the launcher for the duration; visible when the transition is valid and the
+    launcher is among its CollideObject."""
+    if not isinstance(launcher, Creature) or (launcher.ethereal or False):
         return True
 
     proj = wo.physics_obj
-    if launcher is None or proj is None:
+    if launcher_obj is None or proj is None:
         return False
 
     start_pos = Position(proj.position.obj_cell_id, AFrame(proj.position.frame.origin, proj.position.frame.orientation))
-    target_frame = launcher.position.frame
-    target_pos = Position(launcher.position.obj_cell_id, AFrame(target_frame.origin, target_frame.orientation))
+    target_frame = launcher_obj.position.frame
+    target_pos = Position(launcher_obj.position.obj_cell_id, AFrame(target_frame.origin, target_frame.orientation))
 
     # set to eye level (ACE)
     target_pos.frame.origin = target_pos.frame.origin.with_z(
-        target_pos.frame.origin.z + (launcher.get_height() - proj.get_height()))
+        target_pos.frame.origin.z + (launcher_obj.get_height() - proj.get_height()))
 
     prev_target = proj.projectile_target
-    proj.projectile_target = launcher
+    proj.projectile_target = launcher_obj
 
     # perform line of sight test (ACE)
     transit, valid = proj.transition(start_pos, target_pos, False, lscape, trace)
@@ -303,58 +307,58 @@ def is_projectile_visible(launcher, wo: Projectile, lscape, launcher_is_creature
         return False
 
     # check if target object was reached (ACE)
-    return any(c.id == launcher.id for c in transit.collision_info.collide_object)
+    return any(c.id == launcher_obj.id for c in transit.collision_info.collide_object)
 
 
 @harness("Creature.LaunchProjectile's physics: SetProjectilePhysicsState, AddObject, IsProjectileVisible, and the Destroy of a failed launch")
-def launch_projectile(wo: Projectile, launcher, target, origin: Vector3, orientation, cell_id: int, velocity: Vector3,
-                      lscape, launcher_ethereal: bool | None = None, trace=None) -> bool:
+def launch_projectile(wo: WorldObject, launcher: WorldObject, launcher_obj, target: WorldObject | None, target_obj,
+                      origin: Vector3, orientation, landblock, cell_id: int, velocity: Vector3, lscape, trace=None) -> bool:
     """Whether the projectile is in flight after LaunchProjectile. An invalid velocity (a NaN
     component: the moving-target solver's NaN answers) misfires before anything is made. The
     projectile's Location is the launcher's cell with Pos = origin and Rotation = orientation.
-    ProjectileSource is the launcher."""
+    ProjectileSource is the launcher, ProjectileTarget the target (None for a static)."""
     if math.isnan(velocity.x) or math.isnan(velocity.y) or math.isnan(velocity.z):
         return False  # YourAttackMisfired (ACE)
 
     wo.projectile_source = launcher
     wo.projectile_target = target
 
-    set_projectile_physics_state(wo, target, velocity, origin, orientation)
+    set_projectile_physics_state(wo, target_obj, velocity, origin, orientation)
 
     location = Position(cell_id, AFrame(origin, orientation))
-    success = add_world_object(wo, location, lscape, trace)
+    success = add_world_object(wo, landblock, location, lscape, trace)
 
     if not success or wo.physics_obj is None:
-        destroy(wo)
+        wo.destroy()
         return False
 
-    if not is_projectile_visible(launcher, wo, lscape, True, launcher_ethereal, trace):
-        on_collide_environment(wo)
+    if not is_projectile_visible(launcher, launcher_obj, wo, lscape, trace):
+        wo.on_collide_environment()
 
-        destroy(wo)
+        wo.destroy()
         return False
 
     return True
 
 
 @harness("LaunchSpellProjectiles' entering of one spell projectile: AddObject, WorldEntryCollision, IsProjectileVisible")
-def launch_spell_projectile(wo: SpellProjectile, caster, location: Position, lscape, caster_is_creature: bool = True,
-                            caster_ethereal: bool | None = None, trace=None) -> bool:
+def launch_spell_projectile(wo: SpellProjectile, caster: WorldObject, caster_obj, landblock, location: Position, lscape,
+                            trace=None) -> bool:
     """After spell_projectile_setup and spell_projectile_set_physics_state. Whether the projectile
     is in flight: AddObject failing destroys it; a WorldEntryCollision (ProjectileImpact during
     enter_world) leaves it in the world, inactive; a projectile the caster cannot see hits the
     environment (ProjectileImpact)."""
     wo.projectile_source = caster
 
-    if not add_world_object(wo, location, lscape, trace):
-        destroy(wo)
+    if not add_world_object(wo, landblock, location, lscape, trace):
+        wo.destroy()
         return False
 
     if wo.world_entry_collision:
         return False
 
-    if not is_projectile_visible(caster, wo, lscape, caster_is_creature, caster_ethereal, trace):
-        on_collide_environment(wo)
+    if not is_projectile_visible(caster, caster_obj, wo, lscape, trace):
+        wo.on_collide_environment()
         return False
 
     return True
@@ -364,7 +368,7 @@ def launch_spell_projectile(wo: SpellProjectile, caster, location: Position, lsc
 
 
 @harness("WorldObject.UpdateObjectPhysics for a projectile (not a Creature): the missile timeout, update_object, and the Destroy of one without a cell")
-def update_object_physics(wo: Projectile, lscape, trace=None) -> bool:
+def update_object_physics(wo: WorldObject, lscape, trace=None) -> bool:
     """Returns ACE's landblockUpdate (the object's landblock changed); a projectile already hit or
     never active returns false before any physics. A missile (PhysicsState.Missile still set) runs
     every tick until 30 s after its creation (then set_active(false) and Destroy); once its Missile
@@ -379,7 +383,7 @@ def update_object_physics(wo: Projectile, lscape, trace=None) -> bool:
     if obj.state & PhysicsState.Missile:
         if wo.physics_creation_time + PROJECTILE_TIMEOUT <= obj.timer.current_time:
             obj.set_active(False)
-            destroy(wo)
+            wo.destroy()
             return False
         # missiles always run an update (ACE)
     else:
@@ -393,7 +397,7 @@ def update_object_physics(wo: Projectile, lscape, trace=None) -> bool:
 
     if obj.cur_cell is None:
         obj.set_active(False)
-        destroy(wo)
+        wo.destroy()
         return False
 
     landblock_update = (cell_before >> 16) != (obj.cur_cell.id >> 16)
@@ -401,143 +405,55 @@ def update_object_physics(wo: Projectile, lscape, trace=None) -> bool:
     return landblock_update
 
 
-# ---------------------------------------------------------------- hits
+# ---------------------------------------------------------------- a scene's launch
 
 
-@harness("Landblock.RemoveWorldObject's physics: DestroyObject when the landblock lists the object")
-def remove_world_object(wo: Projectile) -> None:
-    """Neither in worldObjects nor pendingAdditions (a hit during AddPhysicsObj's enter_world): it
-    returns at once, CurrentLandblock kept. Otherwise CurrentLandblock = null and
-    PhysicsObj.DestroyObject (leave_cell, remove_shadows_from_cells, leave_world, exit_world,
-    ServerObjectManager.RemoveServerObject)."""
-    if not wo.listed:
-        return
+@harness("a scene's projectile launch (scene/8 others[].launch), as the oracle's facade makes it: ACE's launch calls for an arrow or a spell")
+def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, lscape, trace=None) -> bool:
+    """`wo` is the projectile's WorldObject (Ammunition or SpellProjectile) holding its PhysicsObj as made;
+    `launch` the scene's Launch; `launcher_obj` / `target_obj` the PhysicsObjs (their WorldObjects are their
+    WeenieObjects'; a static's is none); `landblock` the server Landblock of the launcher's cell. The
+    launcher's Location is its PhysicsObj's Position (SyncLocation keeps them one). The WorldObject is made
+    now (physicsCreationTime: the clock now). An arrow: CalculateProjectileVelocity's aim (the target's
+    origin raised by Height / GetAimHeight) and GetProjectileVelocity from `origin`, then LaunchProjectile. A
+    spell: CalculateProjectileVelocity's aim (raised by Height * ProjHeight or ProjHeightArc) and solver, then
+    Setup, the physics state and LaunchSpellProjectiles' AddObject. A launcher and target in different
+    landblocks would need ACE.Entity.Position.ToGlobal: refused (NotSupportedException), as the facade
+    refuses it."""
+    from .errors import NotSupportedException
+    from .world_objects import Player
 
-    wo.listed = False
-    wo.in_landblock = False
-    wo.physics_obj.destroy_object()
-
-
-@harness("WorldObject.Destroy's physics: CurrentLandblock?.RemoveWorldObject, once")
-def destroy(wo: Projectile) -> None:
-    if wo.is_destroyed:
-        return
-
-    wo.is_destroyed = True
-
-    if wo.in_landblock:
-        remove_world_object(wo)
-
-
-@harness("ProjectileCollisionHelper.OnCollideObject's physics: the intended target hit, any other object as the environment")
-def projectile_collision_helper_on_collide_object(wo: Projectile, target) -> None:
-    """Nothing once the projectile is inactive. `target` (a PhysicsObj) other than ProjectileTarget:
-    OnCollideEnvironment. The target: (damage, procs: no physics) CurrentLandblock?.RemoveWorldObject,
-    set_active(false), HitMsg. A target creature's death from the damage is not modelled here."""
+    mode = lscape.mode
+    runtime = mode.runtime
     obj = wo.physics_obj
-    if not obj.is_active():
-        return
+    s = type(obj.scale)
 
-    if wo.projectile_target is None or wo.projectile_target is not target:
-        projectile_collision_helper_on_collide_environment(wo)
-        return
+    if launcher_obj.position.landblock != target_obj.position.landblock:
+        raise NotSupportedException("acconform: a launch across landblocks (ACE.Entity.Position.ToGlobal) is not modelled")
 
-    if wo.in_landblock:
-        remove_world_object(wo)
-    obj.set_active(False)
+    wo.physics_creation_time = obj.timer.current_time
 
-    wo.hit_msg = True
-
-
-@harness("ProjectileCollisionHelper.OnCollideEnvironment's physics")
-def projectile_collision_helper_on_collide_environment(wo: Projectile) -> None:
-    """Nothing once inactive, nor while the projectile is still entering the world; else
-    CurrentLandblock?.RemoveWorldObject, set_active(false), HitMsg."""
-    obj = wo.physics_obj
-    if not obj.is_active():
-        return
-
-    # no 'hit the environment' while the projectile is still spawning (ACE)
-    if obj.entering_world:
-        return
-
-    if wo.in_landblock:
-        remove_world_object(wo)
-    obj.set_active(False)
-
-    wo.hit_msg = True
-
-
-@harness("SpellProjectile.ProjectileImpact's physics: the bits it sets and clears, set_active(false), Velocity zero")
-def projectile_impact(wo: SpellProjectile) -> None:
-    """ReportCollisions cleared, Ethereal, IgnoreCollisions, NoDraw and Cloaked set, LightingOn
-    cleared (each PhysicsState bit directly); set_active(false); WorldEntryCollision when still
-    entering the world; Velocity = zero (the field). Its Destroy comes 5 s later through an action
-    chain: the caller's clock calls `destroy`."""
-    obj = wo.physics_obj
-
-    wo.report_collisions = False
-    _set(obj, PhysicsState.ReportCollisions, False)
-    wo.ethereal = True
-    _set(obj, PhysicsState.Ethereal, True)
-    _set(obj, PhysicsState.IgnoreCollisions, True)
-    _set(obj, PhysicsState.NoDraw, True)
-    _set(obj, PhysicsState.Cloaked, True)
-    _set(obj, PhysicsState.LightingOn, False)
-
-    obj.set_active(False)
-
-    if obj.entering_world:
-        wo.world_entry_collision = True
-
-    obj.velocity = zero_like(obj.velocity.x if obj.velocity is not None else obj.scale)
-
-
-@harness("WorldObject.OnCollideObject as a projectile's class overrides it (Ammunition, Missile, SpellProjectile)")
-def on_collide_object(wo: Projectile, target) -> None:
-    """What WeenieObject.DoCollision(ObjCollisionProfile) runs for a projectile whose transition hit
-    `target` (a PhysicsObj with a WorldObject): Ammunition always the helper; a thrown Missile (the
-    base WorldObject's) the helper only with a ProjectileTarget; a SpellProjectile ProjectileImpact
-    (its damage to a creature target is not physics)."""
-    if isinstance(wo, SpellProjectile):
-        projectile_impact(wo)
-    elif isinstance(wo, Ammunition):
-        projectile_collision_helper_on_collide_object(wo, target)
-    elif isinstance(wo, Missile):
-        if wo.projectile_target is None:
-            return
-        projectile_collision_helper_on_collide_object(wo, target)
-    else:
-        raise TypeError(f"not a projectile record: {type(wo).__name__}")
-
-
-@harness("WorldObject.OnCollideEnvironment as a projectile's class overrides it (Ammunition, Missile, SpellProjectile)")
-def on_collide_environment(wo: Projectile) -> None:
-    """What WeenieObject.DoCollision(EnvCollisionProfile) runs for a projectile (not a Player)."""
-    if isinstance(wo, SpellProjectile):
-        projectile_impact(wo)
-    elif isinstance(wo, Ammunition):
-        projectile_collision_helper_on_collide_environment(wo)
-    elif isinstance(wo, Missile):
-        if wo.projectile_target is None:
-            return
-        projectile_collision_helper_on_collide_environment(wo)
-    else:
-        raise TypeError(f"not a projectile record: {type(wo).__name__}")
-
-
-@harness("Player.OnCollideObject's projectile branches: a player walking into a projectile")
-def player_on_collide_object(player_obj, wo: Projectile) -> None:
-    """A projectile whose ReportCollisions property is false is ignored; a SpellProjectile runs its
-    OnCollideObject(player) (ProjectileImpact); another projectile with a ProjectileTarget runs
-    ProjectileCollisionHelper.OnCollideObject(projectile, player): the player is hit when it is the
-    target, and otherwise the projectile counts as hitting the environment. (Portal, PressurePlate
-    and Hotspot come first in ACE: not projectiles.)"""
-    if wo.report_collisions is False:
-        return
+    launcher = launcher_obj.weenie_obj.world_object
+    target = target_obj.weenie_obj.world_object
+    speed = s(launch.speed)
+    origin = mode.vec(*launch.origin)
+    end_pos = target_obj.position.frame.origin
+    height = target_obj.get_height()
 
     if isinstance(wo, SpellProjectile):
-        projectile_impact(wo)
-    elif wo.projectile_target is not None:
-        projectile_collision_helper_on_collide_object(wo, player_obj)
+        end_pos = end_pos.with_z(end_pos.z + height * (s(PROJ_HEIGHT_ARC) if launch.arc else s(PROJ_HEIGHT)))
+        target_velocity = target_obj.cached_velocity if launch.tracking else zero_like(speed)
+        velocity = calculate_spell_projectile_velocity(origin, end_pos, speed, target_velocity, wo.spell_type,
+                                                       False, runtime)
+        spell_projectile_setup(wo)
+        spell_projectile_set_physics_state(wo, target, target_obj, velocity, origin)
+        location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
+        return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)
 
+    end_pos = end_pos.with_z(end_pos.z + height / s(AIM_HEIGHT))
+    lead = launch.lead_target or not isinstance(launcher, Player)
+    velocity, _ = get_projectile_velocity(origin, end_pos, speed, target_obj.cached_velocity, True, lead, False, runtime)
+    w, x, y, z = launch.orientation  # written (w, x, y, z), as a scene's frames are
+    orientation = mode.quat(x, y, z, w)
+    return launch_projectile(wo, launcher, launcher_obj, target, target_obj, origin, orientation, landblock,
+                             launcher_obj.position.obj_cell_id, velocity, lscape, trace)

@@ -44,7 +44,7 @@ from . import land_defs
 from .cell import obj_cell
 from .child_list import ChildList
 from .part_array import PLACEMENT_FRAME_ID, PartArray
-from .projectile_objects import SpellProjectile
+from .world_objects import SpellProjectile
 from .errors import ArgumentException, ArgumentOutOfRangeException, InvalidOperationException
 from .shadow_obj import ShadowObj
 from .transition.object_info import ObjectInfo
@@ -867,8 +867,9 @@ class PhysicsObj:
     @anchor("CPhysicsObj::build_collision_profile", "PhysicsObj.cs:build_collision_profile(PhysicsObj, bool, Vector3)")
     def build_collision_profile(self, obj, am_i_in_contact: bool, velocity_collide):
         if self.state & PhysicsState.Missile:
-            raise NotImplementedError("build_collision_profile for a missile (AtkCollisionProfile, Position.DetermineQuadrant) "
-                                      "is not ported")
+            from .atk_collision_profile import AtkCollisionProfile
+
+            return AtkCollisionProfile.create_atk(obj.id, -1, obj.position.determine_quadrant(obj.get_height(), self.position))
         else:
             return self.build_collision_profile_for(obj, velocity_collide, am_i_in_contact,
                                                     bool(obj.state & PhysicsState.Missile),

@@ -46,7 +46,10 @@ from .land.lscape import LScape
 from .physics_obj import PhysicsObj
 from .physics_timer import PhysicsTimer
 from .weenie_object import WeenieObject
-from .world_objects import Creature, GenericObject, Player
+from .world_objects import Ammunition, Creature, GenericObject, Player, SpellProjectile
+from .world_objects.spell_projectile import ARC, BOLT
+from . import missile_launch
+from .server_landblock import Landblock as ServerLandblock
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 from .transition.branches import Trace
 
@@ -110,13 +113,14 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     (parenting.set_parent: SetPlacementFrame, set_parent); its placement's result is set_parent's answer and it is
     never in the world itself (no tick steps it: its parent's UpdateChild carries it)."""
     mode = lscape.mode
-    if o.weenie == "object":
+    if o.weenie in ("object", "ammunition", "spell_projectile"):
         obj = PhysicsObj.make_object(did, o.id, True, portal_dat)
     else:
         obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
         obj.make_anim_object(did, True, portal_dat)
     obj.set_object_guid(o.id)
-    obj.set_weenie_obj(WeenieObject.of(world_object_of(o)))
+    wo = world_object_of(o)
+    obj.set_weenie_obj(WeenieObject.of(wo))
     obj.set_motion_table_id(0)
     obj.set_scale_static(mode.scalar(o.scale))
     obj.state = o.state
@@ -125,6 +129,10 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     if o.parent is not None:
         held = parenting.set_parent(obj, holders[o.parent.id], o.parent.location, o.parent.placement, lscape)
         return obj, _placement_state(obj, SetPositionError.OK if held else SetPositionError.GeneralFailure), False
+    if getattr(o, "launch", None) is not None:
+        # a projectile: made, not entered; its launch puts it in the world (run_ticks)
+        wo.physics_obj = obj
+        return obj, _placement_state(obj, SetPositionError.GeneralFailure), False
     cell = lscape.get_landcell(o.begin.cell)
     entered = False
     if cell is not None:
@@ -135,15 +143,20 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     return obj, _placement_state(obj, SetPositionError.OK if entered else SetPositionError.GeneralFailure), entered
 
 
-@harness("the server WorldObject another mover's PhysicsObj is made for (a Player, a Creature or a GenericObject)")
+@harness("the server WorldObject another mover's PhysicsObj is made for (a Player, a Creature, a GenericObject, an Ammunition or a SpellProjectile)")
 def world_object_of(o: OtherMover):
-    """The server's WorldObject for another mover: a Player, a Creature or a GenericObject. A monster is a Creature
+    """The server's WorldObject for another mover: a Player, a Creature, a GenericObject, or a projectile's Ammunition
+    or SpellProjectile (a Bolt, or an Arc: the two ProjectileSpellTypes a scene's spell flies as). A monster is a Creature
     with IsMonster (Creature.SetMonsterState: Attackable, ACE's default for an object without the property); an NPC
     one that is not Attackable, so not a monster."""
     if o.weenie == "player":
         return Player(guid=o.id, player_killer_status=o.player_killer_status)
     if o.weenie == "object":
         return GenericObject(guid=o.id)
+    if o.weenie == "ammunition":
+        return Ammunition(guid=o.id)
+    if o.weenie == "spell_projectile":
+        return SpellProjectile(guid=o.id, spell_type=ARC if o.launch.arc else BOLT)
     monster = o.weenie == "monster"
     return Creature(guid=o.id, is_monster=monster, attackable=monster, player_killer_status=o.player_killer_status)
 
@@ -407,7 +420,7 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
         holders[o.id] = movers[-1][0]
     other_placements = tuple(p for _, p, _ in movers) if others else None
     if scene.ticks is not None:
-        ticks = run_ticks(scene, mover, timer, lscape, trace, movers)
+        ticks = run_ticks(scene, mover, timer, lscape, trace, movers, tuple(o for o, _ in others), statics)
         return Outcome(placement=placement, ticks=ticks, other_placements=other_placements,
                        static_cells=tuple(static_cells(record, did, obj, lscape)
                                           for record, did, obj in zip(objects, dids, statics)))
@@ -747,22 +760,52 @@ def update_player_position(mover: PhysicsObj, request_pos: Position, location_ce
     return success, request_pos.obj_cell_id if success else location_cell
 
 
+@harness("steps the other movers after the mover, in `others` order, as the oracle's facade does: update_object, or a projectile's UpdateObjectPhysics")
+def step_others(launches, stepped: list, lscape: LScape, trace) -> dict:
+    """`launches`: (PhysicsObj, its Launch or None) per other mover; `stepped`: whether each is in the world (a
+    projectile: launched), updated here when a projectile's landblock no longer holds it (destroyed, or never
+    entered: the landblock ticks it no more). Returns {id: updated} for those stepped."""
+    others_updated = {}
+    for k, (obj, launch) in enumerate(launches):
+        if not stepped[k]:
+            continue
+        if launch is None:
+            others_updated[obj.id] = obj.update_object(lscape, trace)
+        else:
+            wo = obj.weenie_obj.world_object
+            if wo.current_landblock is None:
+                stepped[k] = False
+                continue
+            others_updated[obj.id] = missile_launch.update_object_physics(wo, lscape, trace)
+    return others_updated
+
+
 @anchor(None, "PhysicsObj.cs:update_object", "the tick scene driver: per step the inputs, the clock, then "
         "update_object or the legacy player path (Player.UpdatePlayerPosition's physics calls)")
-def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LScape, trace, movers=()) -> tuple[TickState, ...]:
+def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LScape, trace, movers=(), records=(),
+              statics=()) -> tuple[TickState, ...]:
     """Per step: the inputs (the mover's, then each other mover's in the step's order; the clock still
     at the previous tick's time), the clock set to the step's time (Ticks.times()), the driver for the
     mover, then update_object for each other mover in the world, in the order they entered (a server
     landblock's worldObjects), then every mover read back. `movers`: `build_other`'s (object,
-    placement, entered) per other mover. An exception in a tick is that tick's error and ends the run,
-    as in the oracle."""
+    placement, entered) per other mover, `records` their scene records (OtherMover or dat.DatOther), `statics`
+    the statics' PhysicsObjs (a launch may aim at one). A projectile (a record with a `launch`) is launched at
+    its step after the inputs and before the clock (missile_launch.scene_launch), then stepped each tick by
+    WorldObject.UpdateObjectPhysics (missile_launch.update_object_physics) while its landblock holds it; its
+    `updated` is that method's answer. An exception in a tick is that tick's error and ends the run, as in
+    the oracle."""
     ticks = scene.ticks
     mode = lscape.mode
     states = []
     location_cell = mover.position.obj_cell_id  # where it entered: its WorldObject's Location (SyncLocation)
     motion = getattr(scene.mover, "motion_table", None) is not None
     by_id = {obj.id: obj for obj, _, _ in movers}
-    stepped = [obj for obj, _, entered in movers if entered]
+    by_id[mover.id] = mover
+    if statics:
+        by_id.update((obj.id, obj) for obj in statics if obj is not None)
+    launches = [(obj, o.launch) for (obj, _, _), o in zip(movers, records)] if records else [(obj, None) for obj, _, _ in movers]
+    stepped = [entered for _, _, entered in movers]  # per other mover: in the world (a projectile: launched)
+    landblocks = {}  # the server Landblocks the projectiles joined, by landblock id
     for index, (step, time) in enumerate(zip(ticks.steps, ticks.times())):
         if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
             trace.recorder.at_tick(index)
@@ -770,13 +813,20 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             apply_inputs(mover, step, mode, lscape)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
+            for k, (obj, launch) in enumerate(launches):
+                if launch is not None and launch.tick == index:
+                    launcher = by_id[launch.launcher]
+                    landblock = landblocks.setdefault(launcher.position.landblock, ServerLandblock(launcher.position.landblock))
+                    missile_launch.scene_launch(obj.weenie_obj.world_object, launch, launcher, by_id[launch.target],
+                                                landblock, lscape, trace)
+                    stepped[k] = True
             timer.set(time)
             if ticks.driver == "update_object":
                 updated = mover.update_object(lscape, trace)
             else:
                 updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),
                                                                 location_cell, lscape, trace)
-            others_updated = {obj.id: obj.update_object(lscape, trace) for obj in stepped}
+            others_updated = step_others(launches, stepped, lscape, trace)
         except Exception as e:
             states.append(TickState(error=verdict(e)))
             break

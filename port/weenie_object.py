@@ -3,7 +3,8 @@
 ACE's Physics/Common/WeenieObject.cs. A static placed from the DAT (Landblock.init_static_objs) keeps
 DummyObject: no WorldObject, every flag false. A mover's PhysicsObj gets ``new WeenieObject(worldObject)``
 (WorldObject.InitPhysicsObj): `WeenieObject.of` over a port WorldObject record (port/world_objects/:
-Player, Creature -- an NPC, or a monster with is_monster -- or a plain WorldObject, an object that moves).
+Player, Creature -- an NPC, or a monster with is_monster -- a plain WorldObject, an object that moves, or a
+projectile's Ammunition or SpellProjectile, whose OnCollideObject / OnCollideEnvironment DoCollision runs on a hit).
 ACE's WorldObject getter reads a WeakReference (WorldObjectInfo); a scene's WorldObjects live as long as
 the run (the oracle holds them), so the port holds the record itself.
 """

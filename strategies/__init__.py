@@ -50,11 +50,14 @@ MOTION_KIND = "motion"
 # "doors": tick scenes of the ticks policy door only (strategies/doors.py: a door on the path opens or closes at a
 # tick); recorded as "ticks"; an implementation runs it when it lists "ticks" and the feature doors
 DOORS_KIND = "doors"
+# "missiles": tick scenes of a projectile launched at a tick (strategies/missiles.py); recorded as "ticks"; an
+# implementation runs it when it lists "ticks" and the features objects.moving and missiles
+MISSILES_KIND = "missiles"
 # "movers": tick scenes of the ticks policy movers only (strategies/movers.py: one to three other moving objects
 # beside the mover -- head-on, side-on, at corners, chasing, exactly touching, jumping over); recorded as "ticks";
 # an implementation runs it when it lists "ticks" and the feature objects.moving
 MOVERS_KIND = "movers"
-EXTRA_KINDS: tuple[str, ...] = (MOTION_KIND, DOORS_KIND, MOVERS_KIND)  # tick scenes of one policy
+EXTRA_KINDS: tuple[str, ...] = (MOTION_KIND, DOORS_KIND, MOVERS_KIND, MISSILES_KIND)  # tick scenes of one policy
 
 
 def kind_supported(kind: str, supported) -> bool:

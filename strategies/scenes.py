@@ -168,6 +168,10 @@ def scenes_of(draw, kind: str):
         from .ticks import draw_tick_scene
 
         return draw_tick_scene(draw, None, "movers")
+    if kind == "missiles":  # a projectile launched at a tick (strategies/missiles.py)
+        from .missiles import draw_missile_scene
+
+        return draw_missile_scene(draw)
     if kind == "motion":  # the ticks policy motion only (strategies/motion.py)
         from .ticks import draw_tick_scene
 

@@ -121,3 +121,14 @@ def test_the_scene_schema_names_a_childs_parent_and_the_holding_locations_and_a_
     assert set(other["properties"]["parent"]["properties"]) == {"id", "location", "placement"}
     held = scene["properties"]["mover"]["properties"]["holding_locations"]["items"]
     assert set(held["properties"]) == {"location", "part", "frame"} == set(held["required"])
+
+
+def test_the_scene_schema_names_every_field_of_a_projectiles_launch(generated):
+    scene, _ = generated
+    other = scene["properties"]["others"]["items"]
+    assert "launch" in other["properties"] and "launch" not in other.get("required", [])
+    launch = other["properties"]["launch"]
+    assert set(launch["properties"]) == {"tick", "launcher", "target", "speed", "origin", "orientation", "lead_target",
+                                         "arc", "tracking"}
+    assert {"ammunition", "spell_projectile"} <= set(other["properties"]["weenie"].get("enum", ())) or \
+        other["properties"]["weenie"].get("type") == "string"

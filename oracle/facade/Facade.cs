@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 14;
+        public const int PackVersion = 15;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -126,6 +126,15 @@ namespace Acconform.Oracle
             public bool HasParent;
             public uint ParentId;
             public int ParentLocation, Placement;
+            // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
+            public bool HasLaunch, LeadTarget, Arc, Tracking;
+            public int LaunchTick;
+            public uint Launcher, Target;
+            public float Speed;
+            public Vector3 Origin;
+            public Quaternion Orientation;
+            public bool Launched;
+            public double CreationTime;  // WorldObject.physicsCreationTime: the clock when the launch made it
         }
         static readonly List<Other> sceneOthers = new List<Other>();
         static bool errored;  // the scene ended in an exception (no placements written)
@@ -458,9 +467,11 @@ namespace Acconform.Oracle
         }
 
         /// <summary>Per step: the inputs (the mover's, then each other mover's in the step's order; the clock still at
-        /// the previous tick's time), the clock set to the step's time, the driver for the mover, then update_object for
-        /// each other mover in the world in the order they entered (a server landblock's worldObjects), then every mover
-        /// read back. An exception ACE throws is that tick's error and ends the scene.</summary>
+        /// the previous tick's time), the launches of the step's projectiles (SceneLaunch, in `others` order), the clock
+        /// set to the step's time, the driver for the mover, then update_object for each other mover in the world in the
+        /// order they entered (a server landblock's worldObjects) and WorldObject.UpdateObjectPhysics's physics for each
+        /// launched projectile its landblock still holds, then every mover read back. An exception ACE throws is that
+        /// tick's error and ends the scene.</summary>
         static void RunTicks(PhysicsObj obj)
         {
             ticksRun = 0;
@@ -473,11 +484,23 @@ namespace Acconform.Oracle
                     ApplyInputs(obj, step);
                     if (step.Others != null)
                         foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o);
+                    foreach (var o in sceneOthers)
+                        if (o.HasLaunch && o.LaunchTick == ticksRun) SceneLaunch(o, obj);
                     SetClock(step.Time);
                     updated = tickDriver == 0 ? obj.update_object() : UpdatePlayerPosition(obj, step.RequestPos);
                     othersUpdated.Clear();
                     foreach (var o in sceneOthers)
-                        othersUpdated.Add(o.Entered && o.Obj.update_object());
+                    {
+                        if (!o.HasLaunch)
+                            othersUpdated.Add(o.Entered && o.Obj.update_object());
+                        else if (o.Launched && o.WorldObject.CurrentLandblock == null)
+                        {
+                            o.Launched = false;  // destroyed, or never entered: its landblock ticks it no more
+                            othersUpdated.Add(false);
+                        }
+                        else
+                            othersUpdated.Add(o.Launched && UpdateObjectPhysics(o.WorldObject, o.CreationTime));
+                    }
                 }
                 catch (Exception e)
                 {
@@ -496,6 +519,369 @@ namespace Acconform.Oracle
         }
 
         static readonly List<bool> othersUpdated = new List<bool>();
+
+        // ------------------------------------------------------------------ projectiles (issue 41)
+        // The physics calls ACE's server code makes on a projectile, as port/missile_launch.py makes them: ACE's own
+        // Physics code (Trajectory, PhysicsObj) wherever the stand-ins have it, the WorldObject members real ACE
+        // names (the stand-ins' Ammunition, SpellProjectile, ProjectileCollisionHelper, Landblock.RemoveWorldObject),
+        // and in acconform's words the WorldObject code around them that the stand-in builds lack (Creature_Missile.cs,
+        // WorldObject_Magic.cs, SpellProjectile.Setup, Landblock.AddWorldObjectInternal, WorldObject.AddPhysicsObj,
+        // WorldObject.IsProjectileVisible, WorldObject_Tick.cs UpdateObjectPhysics), kept to their physics.
+
+        /// <summary>A projectile's launch at its step (port: missile_launch.scene_launch): the launcher and target by id
+        /// (the mover, another mover, or an outdoor static: its PhysicsObj, no WorldObject); their landblocks must be one
+        /// (a launch across landblocks would need ACE.Entity.Position.ToGlobal: NotSupportedException); the WorldObject is
+        /// made now (physicsCreationTime: the clock now). An arrow: Creature.CalculateProjectileVelocity's aim point (the
+        /// target's origin raised by Height / GetAimHeight, 2: a creature's, a player's at Medium) and
+        /// GetProjectileVelocity from the scene's origin, then LaunchProjectile. A spell: WorldObject.CalculateProjectileVelocity
+        /// (raised by Height * ProjHeight or ProjHeightArc), SpellProjectile.Setup, LaunchSpellProjectiles' physics state
+        /// and AddObject. The Location's cell is the launcher's (its Location: SyncLocation keeps it its PhysicsObj's).</summary>
+        static void SceneLaunch(Other o, PhysicsObj mover)
+        {
+            var launcherObj = FindObj(o.Launcher, mover);
+            var targetObj = FindObj(o.Target, mover);
+            if (launcherObj.Position.Landblock != targetObj.Position.Landblock)
+                throw new NotSupportedException("acconform: a launch across landblocks (ACE.Entity.Position.ToGlobal) is not modelled");
+            o.Launched = true;
+            o.CreationTime = PhysicsTimer.CurrentTime;
+            var wo = o.WorldObject;
+            var launcher = launcherObj.WeenieObj.WorldObject;
+            var target = targetObj.WeenieObj.WorldObject;
+            var origin = o.Origin;
+            var endPos = targetObj.Position.Frame.Origin;
+            var height = targetObj.GetHeight();
+            var landblock = ServerLandblockOf(launcherObj.Position.ObjCellID);
+            var sp = wo as ACE.Server.WorldObjects.SpellProjectile;
+            if (sp != null)
+            {
+                endPos.Z += height * (o.Arc ? 5.0f / 6.0f : 2.0f / 3.0f);  // ProjHeightArc, ProjHeight
+                var targetVelocity = o.Tracking ? targetObj.CachedVelocity : Vector3.Zero;
+                var velocity = CalculateSpellProjectileVelocity(origin, endPos, o.Speed, targetVelocity, o.Arc, false);
+                SpellProjectileSetup(sp);
+                SpellProjectileSetPhysicsState(sp, target, targetObj, velocity, origin, o.Arc);
+                LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
+                                      sp.PhysicsObj.Position.Frame.Orientation);
+                return;
+            }
+            endPos.Z += height / 2.0f;  // target.Height / GetAimHeight(target)
+            var lead = o.LeadTarget || !(launcher is ACE.Server.WorldObjects.Player);
+            var v = GetProjectileVelocity(origin, endPos, o.Speed, targetObj.CachedVelocity, true, lead, false, out _);
+            LaunchProjectile(wo, launcher, launcherObj, target, targetObj, origin, o.Orientation, landblock,
+                             launcherObj.Position.ObjCellID, v);
+        }
+
+        /// <summary>The PhysicsObj of the mover, another mover or a static by id.</summary>
+        static PhysicsObj FindObj(uint id, PhysicsObj mover)
+        {
+            if (mover.ID == id) return mover;
+            foreach (var o in sceneOthers) if (o.Id == id) return o.Obj;
+            foreach (var s in staticObjs) if (s != null && s.ID == id) return s;
+            throw new InvalidOperationException("acconform: no object has id " + id.ToString("X8"));
+        }
+
+        /// <summary>The scene's server Landblock of a cell (LandblockManager.GetLandblock finds it in its table: BuildScene
+        /// loaded it).</summary>
+        static ACE.Server.Entity.Landblock ServerLandblockOf(uint cellId)
+        {
+            var id = new LandblockId(cellId | 0xFFFF);
+            var lb = LandblockTable()[id.LandblockX, id.LandblockY];
+            if (lb == null)
+                throw new InvalidOperationException("acconform: no server landblock " + (cellId >> 16).ToString("X4"));
+            return lb;
+        }
+
+        /// <summary>port: get_projectile_velocity. Creature.GetProjectileVelocity with a default server's properties
+        /// (trajectory_alt_solver false unless `altSolver`): a moving target (CachedVelocity not zero) and a launcher that
+        /// leads (a monster, or a player with LeadMissileTargets) takes the quartic solve_ballistic_arc when it has a
+        /// solution; otherwise the fixed-target solve_ballistic_arc. Gravity is -PhysicsGlobals.Gravity (positive down),
+        /// or 0.00001f without gravity.</summary>
+        static Vector3 GetProjectileVelocity(Vector3 origin, Vector3 dest, float speed, Vector3 targetVelocity,
+                                             bool useGravity, bool leadTarget, bool altSolver, out float time)
+        {
+            time = 0.0f;
+            Vector3 s0;
+            float t0;
+            var gravity = useGravity ? -PhysicsGlobals.Gravity : 0.00001f;
+            if (!targetVelocity.Equals(Vector3.Zero))
+            {
+                if (leadTarget)
+                {
+                    if (!altSolver)
+                    {
+                        var numSolutions = Trajectory.solve_ballistic_arc(origin, speed, dest, targetVelocity, gravity, out s0, out _, out time);
+                        if (numSolutions > 0)
+                            return s0;
+                    }
+                    else
+                        return Trajectory2.CalculateTrajectory(origin, dest, targetVelocity, speed, useGravity);
+                }
+            }
+            if (!altSolver)
+            {
+                Trajectory.solve_ballistic_arc(origin, speed, dest, gravity, out s0, out _, out t0, out _);
+                time = t0;
+                return s0;
+            }
+            return Trajectory2.CalculateTrajectory(origin, dest, Vector3.Zero, speed, useGravity);
+        }
+
+        /// <summary>port: calculate_spell_projectile_velocity. WorldObject.CalculateProjectileVelocity's solver from its
+        /// start and end points, as ACE writes it.</summary>
+        static Vector3 CalculateSpellProjectileVelocity(Vector3 startPos, Vector3 endPos, float speed, Vector3 targetVelocity,
+                                                        bool arc, bool altSolver)
+        {
+            var dir = Vector3.Normalize(endPos - startPos);
+            var useGravity = arc;
+            var velocity = Vector3.Zero;
+            if (useGravity || targetVelocity != Vector3.Zero)
+            {
+                var gravity = useGravity ? PhysicsGlobals.Gravity : 0.0f;
+                if (!altSolver)
+                    Trajectory.solve_ballistic_arc_lateral(startPos, speed, endPos, targetVelocity, gravity, out velocity, out _, out _);
+                else
+                    velocity = Trajectory2.CalculateTrajectory(startPos, endPos, targetVelocity, speed, useGravity);
+                if (velocity == Vector3.Zero && useGravity && targetVelocity != Vector3.Zero)
+                {
+                    if (!altSolver)
+                        Trajectory.solve_ballistic_arc_lateral(startPos, speed, endPos, Vector3.Zero, gravity, out velocity, out _, out _);
+                    else
+                        velocity = Trajectory2.CalculateTrajectory(startPos, endPos, Vector3.Zero, speed, useGravity);
+                }
+                if (velocity != Vector3.Zero)
+                    return velocity;
+            }
+            return dir * speed;
+        }
+
+        /// <summary>WorldObject.PhysicsObj's setter is protected (real ACE's and the stand-in's): WorldObject.InitPhysicsObj
+        /// sets it; the facade through the setter.</summary>
+        static void SetPhysicsObj(ACE.Server.WorldObjects.WorldObject wo, PhysicsObj obj)
+        {
+            Need(typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("PhysicsObj", AnyInstance), "PhysicsObj")
+                .GetSetMethod(true).Invoke(wo, new object[] { obj });
+        }
+
+        /// <summary>WorldObject.CurrentLandblock's setter is internal: Landblock.AddWorldObjectInternal sets it; the facade
+        /// through the setter.</summary>
+        static void SetCurrentLandblock(ACE.Server.WorldObjects.WorldObject wo, ACE.Server.Entity.Landblock landblock)
+        {
+            Need(typeof(ACE.Server.WorldObjects.WorldObject).GetProperty("CurrentLandblock", AnyInstance), "CurrentLandblock")
+                .GetSetMethod(true).Invoke(wo, new object[] { landblock });
+        }
+
+        /// <summary>port: set_projectile_physics_state. Creature.SetProjectilePhysicsState after InitPhysicsObj (EnterOthers
+        /// made the PhysicsObj), through real ACE's WorldObject properties.</summary>
+        static void SetProjectilePhysicsState(ACE.Server.WorldObjects.WorldObject obj, PhysicsObj targetObj, Vector3 velocity,
+                                              Vector3 pos, Quaternion rotation)
+        {
+            obj.ReportCollisions = true;
+            obj.Missile = true;
+            obj.AlignPath = true;
+            obj.PathClipped = true;
+            obj.Ethereal = false;
+            obj.IgnoreCollisions = false;
+            obj.PhysicsObj.Position.Frame.Origin = pos;
+            obj.PhysicsObj.Position.Frame.Orientation = rotation;
+            obj.PhysicsObj.Velocity = velocity;
+            obj.PhysicsObj.ProjectileTarget = targetObj;
+            if ((obj.RotationSpeed ?? 0) != 0)
+            {
+                obj.AlignPath = false;
+                obj.PhysicsObj.Omega = new Vector3((float)(Math.PI * 2 * obj.RotationSpeed), 0, 0);
+            }
+            obj.PhysicsObj.set_active(true);
+        }
+
+        /// <summary>port: spell_projectile_setup. SpellProjectile.Setup after InitPhysicsObj (not Rolling Death, no wall or
+        /// Ring spell: ScriptedCollision left).</summary>
+        static void SpellProjectileSetup(ACE.Server.WorldObjects.SpellProjectile sp)
+        {
+            sp.ReportCollisions = true;
+            sp.Missile = true;
+            sp.AlignPath = true;
+            sp.PathClipped = true;
+            sp.IgnoreCollisions = false;
+            sp.Ethereal = false;
+            sp.AllowEdgeSlide = false;
+            if ((sp.RotationSpeed ?? 0) != 0)
+            {
+                sp.AlignPath = false;
+                sp.PhysicsObj.Omega = new Vector3((float)(Math.PI * 2 * sp.RotationSpeed), 0, 0);
+            }
+        }
+
+        /// <summary>port: spell_projectile_set_physics_state. LaunchSpellProjectiles' Velocity and heading, ProjectileTarget,
+        /// then SpellProjectile.SetProjectilePhysicsState(target, useGravity); a static target (no WorldObject) gives its
+        /// PhysicsObj as the ProjectileTarget all the same.</summary>
+        static void SpellProjectileSetPhysicsState(ACE.Server.WorldObjects.SpellProjectile sp, ACE.Server.WorldObjects.WorldObject target,
+                                                   PhysicsObj targetObj, Vector3 velocity, Vector3 origin, bool useGravity)
+        {
+            var obj = sp.PhysicsObj;
+            obj.Velocity = velocity;
+            var dir = Vector3.Normalize(obj.Velocity);
+            obj.Position.Frame.set_vector_heading(dir);
+            var rotation = obj.Position.Frame.Orientation;
+            sp.ProjectileTarget = target;
+            if (useGravity)
+                sp.GravityStatus = true;
+            obj.Position.Frame.Origin = origin;
+            obj.Position.Frame.Orientation = rotation;
+            if (targetObj != null)
+                obj.ProjectileTarget = targetObj;
+            obj.set_active(true);
+        }
+
+        /// <summary>port: add_physics_obj. WorldObject.AddPhysicsObj's physics (AdjustDungeon: an outdoor scene's Location
+        /// is its own cell).</summary>
+        static bool AddPhysicsObj(ACE.Server.WorldObjects.WorldObject wo, uint cellId, Vector3 origin, Quaternion orientation)
+        {
+            if (wo.PhysicsObj.CurCell != null)
+                return false;
+            var cell = LScape.get_landcell(cellId);
+            if (cell == null)
+            {
+                wo.PhysicsObj.DestroyObject();
+                SetPhysicsObj(wo, null);
+                return false;
+            }
+            wo.PhysicsObj.Position.ObjCellID = cell.ID;
+            var location = new ACE.Server.Physics.Common.Position();
+            location.ObjCellID = cell.ID;
+            location.Frame.Origin = origin;
+            location.Frame.Orientation = orientation;
+            var success = wo.PhysicsObj.enter_world(location);
+            if (!success || wo.PhysicsObj.CurCell == null)
+            {
+                wo.PhysicsObj.DestroyObject();
+                SetPhysicsObj(wo, null);
+                return false;
+            }
+            return true;
+        }
+
+        /// <summary>port: add_world_object. Landblock.AddWorldObjectInternal's physics: CurrentLandblock first, the guid
+        /// filed again, AddPhysicsObj (failing: CurrentLandblock cleared), then pendingAdditions[Guid] = wo (the
+        /// stand-in's and real ACE's private table).</summary>
+        static bool AddWorldObject(ACE.Server.WorldObjects.WorldObject wo, ACE.Server.Entity.Landblock landblock, uint cellId,
+                                   Vector3 origin, Quaternion orientation)
+        {
+            SetCurrentLandblock(wo, landblock);
+            wo.PhysicsObj.set_object_guid(wo.Guid);
+            if (wo.PhysicsObj.CurCell == null)
+            {
+                if (!AddPhysicsObj(wo, cellId, origin, orientation))
+                {
+                    SetCurrentLandblock(wo, null);
+                    return false;
+                }
+            }
+            var pending = (System.Collections.IDictionary)Need(typeof(ACE.Server.Entity.Landblock).GetField("pendingAdditions", AnyInstance),
+                                                              "pendingAdditions").GetValue(landblock);
+            pending[wo.Guid] = wo;
+            return true;
+        }
+
+        /// <summary>port: is_projectile_visible. WorldObject.IsProjectileVisible, as ACE writes it.</summary>
+        static bool IsProjectileVisible(ACE.Server.WorldObjects.WorldObject launcher, PhysicsObj launcherObj,
+                                        ACE.Server.WorldObjects.WorldObject proj)
+        {
+            if (!(launcher is ACE.Server.WorldObjects.Creature) || (launcher.Ethereal ?? false))
+                return true;
+            if (launcherObj == null || proj.PhysicsObj == null)
+                return false;
+            var startPos = new ACE.Server.Physics.Common.Position(proj.PhysicsObj.Position);
+            var targetPos = new ACE.Server.Physics.Common.Position(launcherObj.Position);
+            targetPos.Frame.Origin.Z += launcherObj.GetHeight() - proj.PhysicsObj.GetHeight();
+            var prevTarget = proj.PhysicsObj.ProjectileTarget;
+            proj.PhysicsObj.ProjectileTarget = launcherObj;
+            var transition = proj.PhysicsObj.transition(startPos, targetPos, false);
+            proj.PhysicsObj.ProjectileTarget = prevTarget;
+            if (transition == null) return false;
+            foreach (var c in transition.CollisionInfo.CollideObject)
+                if (c.ID == launcherObj.ID)
+                    return true;
+            return false;
+        }
+
+        /// <summary>port: launch_projectile. Creature.LaunchProjectile's physics.</summary>
+        static bool LaunchProjectile(ACE.Server.WorldObjects.WorldObject proj, ACE.Server.WorldObjects.WorldObject launcher,
+                                     PhysicsObj launcherObj, ACE.Server.WorldObjects.WorldObject target, PhysicsObj targetObj,
+                                     Vector3 origin, Quaternion orientation, ACE.Server.Entity.Landblock landblock, uint cellId,
+                                     Vector3 velocity)
+        {
+            if (float.IsNaN(velocity.X) || float.IsNaN(velocity.Y) || float.IsNaN(velocity.Z))
+                return false;  // YourAttackMisfired
+            proj.ProjectileSource = launcher;
+            proj.ProjectileTarget = target;
+            SetProjectilePhysicsState(proj, targetObj, velocity, origin, orientation);
+            var success = AddWorldObject(proj, landblock, cellId, origin, orientation);
+            if (!success || proj.PhysicsObj == null)
+            {
+                proj.Destroy();
+                return false;
+            }
+            if (!IsProjectileVisible(launcher, launcherObj, proj))
+            {
+                proj.OnCollideEnvironment();
+                proj.Destroy();
+                return false;
+            }
+            return true;
+        }
+
+        /// <summary>port: launch_spell_projectile. LaunchSpellProjectiles' AddObject, WorldEntryCollision and (LaunchSpell's)
+        /// IsProjectileVisible.</summary>
+        static bool LaunchSpellProjectile(ACE.Server.WorldObjects.SpellProjectile sp, ACE.Server.WorldObjects.WorldObject caster,
+                                          PhysicsObj casterObj, ACE.Server.Entity.Landblock landblock, uint cellId, Vector3 origin,
+                                          Quaternion rotation)
+        {
+            sp.ProjectileSource = caster;
+            if (!AddWorldObject(sp, landblock, cellId, origin, rotation))
+            {
+                sp.Destroy();
+                return false;
+            }
+            if (sp.WorldEntryCollision)
+                return false;
+            if (!IsProjectileVisible(caster, casterObj, sp))
+            {
+                sp.OnCollideEnvironment();
+                return false;
+            }
+            return true;
+        }
+
+        /// <summary>port: update_object_physics. WorldObject.UpdateObjectPhysics for a projectile (no Creature): nothing when
+        /// inactive; a missile 30 s after its WorldObject was made is set inactive and destroyed; once its Missile bit is gone
+        /// it runs only while animating or in its first two updates; update_object; no CurCell after: set_active(false),
+        /// Destroy. Returns ACE's landblockUpdate.</summary>
+        static bool UpdateObjectPhysics(ACE.Server.WorldObjects.WorldObject wo, double creationTime)
+        {
+            var obj = wo.PhysicsObj;
+            if (obj == null || !obj.is_active())
+                return false;
+            if ((obj.State & PhysicsState.Missile) != 0)
+            {
+                if (creationTime + 30.0 <= PhysicsTimer.CurrentTime)
+                {
+                    obj.set_active(false);
+                    wo.Destroy();
+                    return false;
+                }
+            }
+            else if (!(obj.IsAnimating || obj.InitialUpdates <= 1))
+                return false;
+            var cellBefore = obj.CurCell != null ? obj.CurCell.ID : 0;
+            obj.update_object();
+            if (obj.CurCell == null)
+            {
+                obj.set_active(false);
+                wo.Destroy();
+                return false;
+            }
+            return (cellBefore >> 16) != (obj.CurCell.ID >> 16);
+        }
+
 
         static void ApplyOtherInputs(Other other, OtherStep s)
         {
@@ -711,8 +1097,9 @@ namespace Acconform.Oracle
         }
 
         /// <summary>Another mover's WorldObject (scene/8), made as MakePlayer makes the mover's: a Player, a Creature
-        /// (IsMonster set for a monster, as Creature.SetMonsterState caches it) or a GenericObject, with its id, and a
-        /// creature's PlayerKillerStatus set before its WeenieObject copies it.</summary>
+        /// (IsMonster set for a monster, as Creature.SetMonsterState caches it), a GenericObject, an Ammunition or a
+        /// SpellProjectile (SpellType Bolt, or Arc for an arc), with its id, and a creature's PlayerKillerStatus set before
+        /// its WeenieObject copies it.</summary>
         static ACE.Server.WorldObjects.WorldObject MakeWorldObject(Other o)
         {
             bool fromBiota;
@@ -727,6 +1114,16 @@ namespace Acconform.Oracle
             if (o.Weenie == 3)
                 return MakeWorldObject(typeof(ACE.Server.WorldObjects.GenericObject), typeof(ACE.Server.WorldObjects.GenericObject),
                                        "Generic", o.Id, out fromBiota);
+            if (o.Weenie == 4)
+                return MakeWorldObject(typeof(ACE.Server.WorldObjects.Ammunition), typeof(ACE.Server.WorldObjects.Ammunition),
+                                       "Ammunition", o.Id, out fromBiota);
+            if (o.Weenie == 5)
+            {
+                var sp = (ACE.Server.WorldObjects.SpellProjectile)MakeWorldObject(typeof(ACE.Server.WorldObjects.SpellProjectile),
+                    typeof(ACE.Server.WorldObjects.SpellProjectile), "ProjectileSpell", o.Id, out fromBiota);
+                sp.SpellType = o.Arc ? ACE.Server.Entity.ProjectileSpellType.Arc : ACE.Server.Entity.ProjectileSpellType.Bolt;
+                return sp;
+            }
             var creature = (ACE.Server.WorldObjects.Creature)MakeWorldObject(typeof(ACE.Server.WorldObjects.Creature),
                                                                              typeof(ACE.Server.WorldObjects.Creature), "Creature", o.Id, out fromBiota);
             // a monster: Creature.SetMonsterState caches IsMonster = Attackable || TargetingTactic != None (Attackable: ACE's
@@ -1307,6 +1704,12 @@ namespace Acconform.Oracle
             cellFiles[id.Raw | 0xFFFF] = clb;  // where the constructor's ReadFromDat<CellLandblock> keeps it
             serverLbCellLandblock.SetValue(lb, clb);
             serverLbInfo.SetValue(lb, DatManager.CellDat.ReadFromDat<LandblockInfo>((uint)id.Landblock << 16 | 0xFFFE));
+            // the object tables the constructor's field initializers make (a launched projectile joins pendingAdditions)
+            foreach (var name in new[] { "worldObjects", "pendingAdditions", "pendingRemovals" })
+            {
+                var f = t.GetField(name, BindingFlags.NonPublic | BindingFlags.Instance);
+                if (f != null && f.GetValue(lb) == null) f.SetValue(lb, Activator.CreateInstance(f.FieldType));
+            }
             return lb;
         }
 
@@ -1585,8 +1988,9 @@ namespace Acconform.Oracle
         }
 
         /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
-        /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position. They are made and enter the
-        /// world after the mover's placement (EnterOthers).</summary>
+        /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position, then byte 0 or a projectile's
+        /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking). They are
+        /// made and enter the world after the mover's placement (EnterOthers); a projectile enters at its launch.</summary>
         static void ReadOthers(BinaryReader r)
         {
             sceneOthers.Clear();
@@ -1596,14 +2000,28 @@ namespace Acconform.Oracle
             {
                 var nrec = r.ReadInt32();
                 for (var k = 0; k < nrec; k++) ReadRecord(r);
-                sceneOthers.Add(new Other
+                var o = new Other
                 {
                     Did = r.ReadUInt32(), Id = r.ReadUInt32(), Weenie = r.ReadByte(), Pks = (PlayerKillerStatus)r.ReadUInt32(),
                     Scale = r.ReadSingle(), State = (PhysicsState)r.ReadUInt32(), Transient = (TransientStateFlags)r.ReadUInt32(),
                     Velocity = V3(r), Begin = Pos(r),
                     HasParent = r.ReadByte() != 0, ParentId = r.ReadUInt32(), ParentLocation = r.ReadInt32(),
                     Placement = r.ReadInt32(),
-                });
+                };
+                o.HasLaunch = r.ReadByte() != 0;
+                if (o.HasLaunch)
+                {
+                    o.LaunchTick = r.ReadInt32();
+                    o.Launcher = r.ReadUInt32();
+                    o.Target = r.ReadUInt32();
+                    o.Speed = r.ReadSingle();
+                    o.Origin = V3(r);
+                    o.Orientation = Q(r);
+                    o.LeadTarget = r.ReadByte() != 0;
+                    o.Arc = r.ReadByte() != 0;
+                    o.Tracking = r.ReadByte() != 0;
+                }
+                sceneOthers.Add(o);
             }
         }
 
@@ -1614,13 +2032,15 @@ namespace Acconform.Oracle
         /// WorldObject.AddPhysicsObj enters it: LScape.get_landcell of its begin cell, Position.ObjCellID = that cell's
         /// id, enter_world(Position(cell, frame)); it is in the world when that succeeded and left it in a cell. A child
         /// (scene/8 `parent`) is held by its parent instead (SetParent: the mover `mover`, or an earlier other): its
-        /// placement's result is set_parent's answer, and no tick steps it (its parent's UpdateChild carries it).</summary>
+        /// placement's result is set_parent's answer, and no tick steps it (its parent's UpdateChild carries it). A
+        /// projectile is made (a GenericObject's way, its WorldObject an Ammunition or SpellProjectile holding the
+        /// PhysicsObj) and not entered: its placement reads it as made, GeneralFailure; its launch enters it.</summary>
         static void EnterOthers(PhysicsObj mover)
         {
             foreach (var o in sceneOthers)
             {
                 PhysicsObj obj;
-                if (o.Weenie == 3)
+                if (o.Weenie >= 3)  // a GenericObject, an Ammunition or a SpellProjectile: no creature
                     obj = PhysicsObj.makeObject(o.Did, o.Id, true);
                 else
                 {
@@ -1636,6 +2056,9 @@ namespace Acconform.Oracle
                 obj.State = o.State;
                 obj.TransientState = o.Transient;
                 obj.Velocity = o.Velocity;
+                o.Launched = false;
+                if (o.HasLaunch)
+                    SetPhysicsObj(o.WorldObject, obj);  // WorldObject.InitPhysicsObj's PhysicsObj = ...: the launch code reads it
                 o.Entered = false;
                 if (o.HasParent)
                 {
@@ -1645,7 +2068,7 @@ namespace Acconform.Oracle
                     ReadPlaced(o, obj);
                     continue;
                 }
-                var cell = LScape.get_landcell(o.Begin.ObjCellID);
+                var cell = o.HasLaunch ? null : LScape.get_landcell(o.Begin.ObjCellID);  // a projectile enters at its launch
                 if (cell != null)
                 {
                     obj.Position.ObjCellID = cell.ID;

@@ -13,6 +13,8 @@ from acconform.flags import PlayerKillerStatus
 
 from ..anchors import anchor, harness
 from .creature import Creature
+from .projectile_collision_helper import ProjectileCollisionHelper
+from .spell_projectile import SpellProjectile
 from .world_object import WorldObject
 
 
@@ -63,10 +65,12 @@ class Player(Creature):
         if target.report_collisions is False:  # `== false` on a bool?: null goes on
             return
 
-        # `target is Portal`, `is PressurePlate`, `is Hotspot`, `is SpellProjectile` -> that object's
-        # OnCollideObject(this): a scene makes none of these WorldObjects
-        if target.projectile_target is not None:
-            raise NotImplementedError("ProjectileCollisionHelper.OnCollideObject (a thrown weapon's collision) is not ported")
+        # `target is Portal`, `is PressurePlate`, `is Hotspot` -> that object's OnCollideObject(this): a scene makes
+        # none of these WorldObjects
+        if isinstance(target, SpellProjectile):
+            target.on_collide_object(self)
+        elif target.projectile_target is not None:
+            ProjectileCollisionHelper.on_collide_object(target, self)
 
     @anchor(None, "ACE.Server/WorldObjects/Player.cs:OnCollideObjectEnd")
     def on_collide_object_end(self, target: WorldObject) -> None:

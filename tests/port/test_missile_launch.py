@@ -1,7 +1,9 @@
 """A projectile's physics from launch to hit (port/missile_launch.py and the PhysicsObj calls it
 makes: enter_world, update_object, DestroyObject), on flat ground with a sphere target, as ACE's
 server code makes those calls (Creature_Missile.cs, WorldObject.AddPhysicsObj, WorldObject_Tick.cs
-UpdateObjectPhysics, ProjectileCollisionHelper.cs, SpellProjectile.cs at 7b47913).
+UpdateObjectPhysics, ProjectileCollisionHelper.cs, SpellProjectile.cs at 7b47913). The projectiles are
+port/world_objects' Ammunition, Missile and SpellProjectile; the sphere target gets a Creature WorldObject,
+so WeenieObject.DoCollision runs the projectile's OnCollideObject on a hit, as on a server.
 """
 
 from __future__ import annotations
@@ -19,7 +21,8 @@ from acconform.numerics import EXACT, normalize
 from acconform.port import missile_launch as ml
 from acconform.port.frame import AFrame, Position
 from acconform.port.physics_timer import PhysicsTimer
-from acconform.port.projectile_objects import Ammunition, Missile, SpellProjectile
+from acconform.port.server_landblock import Landblock
+from acconform.port.world_objects import Ammunition, Creature, Missile, SpellProjectile
 from acconform.port.run import build_mover, build_static, scene_world
 from acconform.port.weenie_object import WeenieObject
 from acconform.scene import SphereRec, SphereShape
@@ -50,6 +53,7 @@ def make_world(extra=()):
     timer = PhysicsTimer(10.0)
     lscape, portal_dat, dids = scene_world(scene, EXACT, timer)
     statics = [build_static(rec, did, portal_dat, lscape) for rec, did in zip(scene.objects, dids)]
+    statics[0].weenie_obj = WeenieObject.of(Creature(guid=statics[0].id, is_monster=True))
     arrow = build_mover(scene.mover, dat.MOVER_SETUP_ID, ARROW_ID, portal_dat, lscape)
     arrow.cur_cell = None
     arrow.position = Position(0, AFrame.identity(EXACT))
@@ -70,7 +74,7 @@ def fly(wo, lscape, timer, ticks=40):
         t += 0.05
         timer.set(t)
         ml.update_object_physics(wo, lscape)
-        if not wo.physics_obj.state & PhysicsState.Missile:
+        if not wo.physics_obj.state & PhysicsState.Missile or not wo.physics_obj.is_active():
             break
     return t
 
@@ -80,24 +84,25 @@ def v(x, y, z):
 
 
 def launch(lscape, timer, target, arrow, kind=Ammunition, speed=20.0):
-    wo = kind(physics_obj=arrow, physics_creation_time=timer.current_time)
-    arrow.weenie_obj = WeenieObject(world_object=wo)
+    """Launched by no Creature (IsProjectileVisible: seen), at the target's WorldObject and PhysicsObj."""
+    wo = kind(guid=ARROW_ID, physics_obj=arrow, physics_creation_time=timer.current_time)
+    arrow.weenie_obj = WeenieObject.of(wo)
     origin = v(90, 97, GROUND + 0.5)
     dest = target.position.frame.origin + v(0, 0, 0.5)
     velocity, _ = ml.get_projectile_velocity(origin, dest, F(speed), v(0, 0, 0))
-    ok = ml.launch_projectile(wo, None, target, origin, EXACT.quat(0, 0, 0, 1), cell_id(LB, 90, 97), velocity, lscape,
-                              launcher_ethereal=True)
+    ok = ml.launch_projectile(wo, None, None, target.weenie_obj.world_object, target, origin, EXACT.quat(0, 0, 0, 1),
+                              Landblock(LB >> 16), cell_id(LB, 90, 97), velocity, lscape)
     return wo, ok, velocity
 
 
 def test_a_launched_arrow_enters_the_world_active_with_the_missile_bits_and_its_target(world):
     lscape, timer, target, arrow = world
     wo, ok, velocity = launch(lscape, timer, target, arrow)
-    assert ok and wo.listed and wo.in_landblock
+    assert ok and wo.current_landblock is not None and wo.current_landblock.pending_additions == {ARROW_ID: wo}
     assert arrow.cur_cell is not None and arrow.is_active()
     assert arrow.state & MISSILE_BITS == MISSILE_BITS and arrow.state & PhysicsState.ReportCollisions
     assert not arrow.state & (PhysicsState.Ethereal | PhysicsState.IgnoreCollisions)
-    assert arrow.projectile_target is target and wo.projectile_target is target
+    assert arrow.projectile_target is target and wo.projectile_target is target.weenie_obj.world_object
     assert arrow.velocity == velocity  # assigned, not set_velocity's clamp
     assert arrow.server_objects.get_object_a(ARROW_ID) is arrow
 
@@ -106,22 +111,20 @@ def test_an_arrow_flies_until_it_strikes_its_target_and_the_hit_destroys_its_phy
     lscape, timer, target, arrow = world
     wo, ok, _ = launch(lscape, timer, target, arrow)
     assert ok
+    cell = arrow.cur_cell
     t = fly(wo, lscape, timer)
-    # report_object_collision cleared Missile | AlignPath | PathClipped on touching the target
+    # report_object_collision cleared Missile | AlignPath | PathClipped on touching the target, built the
+    # missile's AtkCollisionProfile and ran Ammunition.OnCollideObject(target): ProjectileCollisionHelper's hit
     assert not arrow.state & MISSILE_BITS
     # stopped at the target's surface: the arrow's 0.05 m sphere against the target's 0.5 m one, whose
     # centre is 0.5 m up (PathClipped: the rest of the step is cut off, not slid along)
     gap = (arrow.position.frame.origin - (target.position.frame.origin + v(0, 0, 0.5))).length()
     assert 0.55 <= gap < 0.6
-    cell = arrow.cur_cell
-
-    # what DoCollision runs for Ammunition: ProjectileCollisionHelper.OnCollideObject(target)
-    ml.on_collide_object(wo, target)
-    assert arrow.cur_cell is None and not arrow.is_active() and arrow.transient_state == 0
+    assert arrow.cur_cell is None and not arrow.is_active()  # destroyed inside its own set_position_internal
     assert arrow.position.obj_cell_id == 0
     assert arrow not in cell.object_list and cell.id & 0xFFFF0000 == LB
     assert arrow.server_objects.get_object_a(ARROW_ID) is None
-    assert wo.hit_msg and not wo.listed and not wo.in_landblock
+    assert wo.hit_msg and wo.current_landblock is None
     # the next tick does nothing: UpdateObjectPhysics returns at its is_active check
     timer.set(t + 0.05)
     assert ml.update_object_physics(wo, lscape) is False
@@ -130,8 +133,8 @@ def test_an_arrow_flies_until_it_strikes_its_target_and_the_hit_destroys_its_phy
 def test_an_arrow_hitting_another_object_counts_as_hitting_the_environment(world):
     lscape, timer, target, arrow = world
     wo, ok, _ = launch(lscape, timer, target, arrow)
-    other = object()
-    ml.on_collide_object(wo, other)
+    other = Creature(guid=0x80000002)
+    wo.on_collide_object(other)
     assert arrow.cur_cell is None and not arrow.is_active() and wo.hit_msg
 
 
@@ -139,7 +142,7 @@ def test_a_hit_while_the_arrow_is_still_entering_the_world_is_no_environment_hit
     lscape, timer, target, arrow = world
     wo, ok, _ = launch(lscape, timer, target, arrow)
     arrow.entering_world = True
-    ml.on_collide_environment(wo)
+    wo.on_collide_environment()
     assert arrow.is_active() and arrow.cur_cell is not None and not wo.hit_msg
 
 
@@ -147,8 +150,8 @@ def test_a_thrown_weapon_without_a_target_ignores_its_collisions(world):
     lscape, timer, target, arrow = world
     wo, ok, _ = launch(lscape, timer, target, arrow, kind=Missile)
     wo.projectile_target = None  # WorldObject.OnCollideObject/OnCollideEnvironment: no ProjectileTarget, no helper
-    ml.on_collide_environment(wo)
-    ml.on_collide_object(wo, target)
+    wo.on_collide_environment()
+    wo.on_collide_object(target.weenie_obj.world_object)
     assert arrow.is_active() and arrow.cur_cell is not None
 
 
@@ -162,33 +165,35 @@ def test_a_missile_times_out_thirty_seconds_after_it_was_made(world):
 
 def test_an_invalid_velocity_misfires_before_anything_is_made(world):
     lscape, timer, target, arrow = world
-    wo = Ammunition(physics_obj=arrow)
+    wo = Ammunition(guid=ARROW_ID, physics_obj=arrow)
     nan = float("nan")
-    assert ml.launch_projectile(wo, None, target, v(90, 97, GROUND + 0.5), EXACT.quat(0, 0, 0, 1), cell_id(LB, 90, 97),
-                                v(nan, 0, 0), lscape, launcher_ethereal=True) is False
+    assert ml.launch_projectile(wo, None, None, target.weenie_obj.world_object, target, v(90, 97, GROUND + 0.5),
+                                EXACT.quat(0, 0, 0, 1), Landblock(LB >> 16), cell_id(LB, 90, 97), v(nan, 0, 0), lscape) is False
     assert arrow.state & PhysicsState.Missile == 0 and wo.projectile_target is None
 
 
 def test_a_spell_projectile_impact_makes_it_ethereal_inert_and_still(world):
     lscape, timer, target, arrow = world
-    wo = SpellProjectile(physics_obj=arrow, spell_type=ml.BOLT, physics_creation_time=timer.current_time)
-    arrow.weenie_obj = WeenieObject(world_object=wo)
+    wo = SpellProjectile(guid=ARROW_ID, physics_obj=arrow, spell_type=ml.BOLT, physics_creation_time=timer.current_time)
+    arrow.weenie_obj = WeenieObject.of(wo)
     ml.spell_projectile_setup(wo)
     assert arrow.state & MISSILE_BITS == MISSILE_BITS and not arrow.state & PhysicsState.EdgeSlide
     velocity = ml.calculate_spell_projectile_velocity(v(90, 97, GROUND + 1), v(100, 97, GROUND + 0.5), F(15), v(0, 0, 0), ml.BOLT)
     assert velocity == normalize(v(10, 0, -0.5)) * F(15)  # a Bolt at a still target: dir * speed
-    ml.spell_projectile_set_physics_state(wo, target, velocity, v(90, 97, GROUND + 1))
-    assert ml.launch_spell_projectile(wo, None, Position(cell_id(LB, 90, 97), AFrame(v(90, 97, GROUND + 1), arrow.position.frame.orientation)),
-                                      lscape, caster_ethereal=True)
+    ml.spell_projectile_set_physics_state(wo, target.weenie_obj.world_object, target, velocity, v(90, 97, GROUND + 1))
+    landblock = Landblock(LB >> 16)
+    assert ml.launch_spell_projectile(wo, None, None, landblock,
+                                      Position(cell_id(LB, 90, 97), AFrame(v(90, 97, GROUND + 1), arrow.position.frame.orientation)),
+                                      lscape)
     assert arrow.is_active() and arrow.projectile_target is target
-    ml.on_collide_object(wo, target)
+    wo.on_collide_object(target.weenie_obj.world_object)
     for bit in (PhysicsState.Ethereal, PhysicsState.IgnoreCollisions, PhysicsState.NoDraw, PhysicsState.Cloaked):
         assert arrow.state & bit
     assert not arrow.state & (PhysicsState.ReportCollisions | PhysicsState.LightingOn)
     assert not arrow.is_active() and arrow.velocity == v(0, 0, 0)
     assert arrow.cur_cell is not None  # destroyed only 5 s later (its action chain)
-    ml.destroy(wo)
-    assert arrow.cur_cell is None and not wo.listed
+    wo.destroy()
+    assert arrow.cur_cell is None and wo.current_landblock is None and landblock.pending_additions == {}
 
 
 def test_an_arrow_flies_through_an_ethereal_object_that_is_not_its_target():
@@ -207,7 +212,7 @@ def test_an_arrow_flies_through_an_ethereal_object_that_is_not_its_target():
         # clears the missile bits
         assert arrow.state & MISSILE_BITS == MISSILE_BITS and not arrow.collision_table
         fly(wo, lscape, timer)
-        assert not arrow.state & MISSILE_BITS
+        assert not arrow.state & MISSILE_BITS and wo.hit_msg
         assert arrow.position.frame.origin.x > 99.0  # stopped at the target
     finally:
         lscape.release()
@@ -224,7 +229,8 @@ def test_an_arrow_striking_a_wall_loses_only_its_missile_bit_and_the_environment
         assert not arrow.state & PhysicsState.Missile
         assert arrow.state & (PhysicsState.AlignPath | PhysicsState.PathClipped) == PhysicsState.AlignPath | PhysicsState.PathClipped
         assert 94.0 < arrow.position.frame.origin.x < 94.5  # at the wall's near face (x = 94.5), not through it
-        ml.on_collide_environment(wo)  # what DoCollision(EnvCollisionProfile) runs for Ammunition
+        # the wall is a static (DummyObject): track_object_collision reported it as the environment, and
+        # DoCollision(EnvCollisionProfile) ran Ammunition.OnCollideEnvironment: the helper destroyed it
         assert arrow.cur_cell is None and not arrow.is_active() and wo.hit_msg
     finally:
         lscape.release()

@@ -177,9 +177,10 @@ def test_a_static_without_a_world_object_drops_both_calls_and_the_missile_flags_
     me = obj(RecordedPlayer(guid=0x5000_0001))
     me.state |= PhysicsState.Missile | PhysicsState.AlignPath | PhysicsState.PathClipped
     static = obj(None)
-    with pytest.raises(NotImplementedError, match="missile"):
-        me.report_object_collision(static, False)  # a missile's AtkCollisionProfile is not ported
-    me.state &= ~PhysicsState.Missile
+    # a missile builds an AtkCollisionProfile (Position.DetermineQuadrant), whose DoCollision the static's missing
+    # WorldObject drops; the missile bits clear all the same
+    assert me.report_object_collision(static, False) is True
+    assert not me.state & (PhysicsState.Missile | PhysicsState.AlignPath | PhysicsState.PathClipped) and CALLS == []
     me.state |= PhysicsState.AlignPath
     static.state |= PhysicsState.IgnoreCollisions
     assert me.report_object_collision(static, False) is True  # the static reports: collided, its call dropped
@@ -292,25 +293,32 @@ def test_the_profile_marks_creatures_players_and_attackable_objects():
 @pytest.mark.anchor("ACE.Server/WorldObjects/Player.cs:OnCollideObject")
 @pytest.mark.anchor("ACE.Server/WorldObjects/Creature.cs:OnCollideObject")
 def test_a_target_that_reports_no_collisions_is_left_before_any_thrown_weapon_branch():
-    thrown = GenericObject(guid=9, projectile_target=object())
+    thrown = GenericObject(guid=9, projectile_target=Creature(guid=3))
+    thrown.physics_obj = obj(thrown)
     for toucher in (Player(guid=1), Creature(guid=2)):
+        thrown.physics_obj.set_active(True)
+        thrown.hit_msg = False
         thrown.report_collisions = False
         toucher.on_collide_object(thrown)  # returns at `ReportCollisions == false`
+        assert thrown.physics_obj.is_active() and not thrown.hit_msg
         thrown.report_collisions = None  # no property: not false
-        if isinstance(toucher, Player):
-            with pytest.raises(NotImplementedError, match="ProjectileCollisionHelper"):
-                toucher.on_collide_object(thrown)
-        else:
-            toucher.on_collide_object(thrown)  # a Creature has no thrown weapon branch
+        toucher.on_collide_object(thrown)
+        # a player runs ProjectileCollisionHelper.OnCollideObject(thrown, player): not its target, so the
+        # environment's hit (set_active(false), HitMsg); a Creature has no thrown weapon branch
+        assert thrown.hit_msg is isinstance(toucher, Player)
+        assert thrown.physics_obj.is_active() is not isinstance(toucher, Player)
 
 
 @pytest.mark.anchor("ACE.Server/WorldObjects/WorldObject.cs:OnCollideObject")
 @pytest.mark.anchor("ACE.Server/WorldObjects/WorldObject.cs:OnCollideEnvironment")
 def test_a_plain_object_reacts_to_collisions_only_as_a_thrown_weapon():
-    GenericObject(guid=1).on_collide_object(Player(guid=2))
+    GenericObject(guid=1).on_collide_object(Player(guid=2))  # no ProjectileTarget: returns before touching anything
     GenericObject(guid=1).on_collide_environment()
-    with pytest.raises(NotImplementedError):
-        GenericObject(guid=1, projectile_target=object()).on_collide_environment()
+    thrown = GenericObject(guid=1, projectile_target=Player(guid=2))
+    thrown.physics_obj = obj(thrown)
+    thrown.physics_obj.set_active(True)
+    thrown.on_collide_environment()  # ProjectileCollisionHelper.OnCollideEnvironment: on no landblock, set inactive
+    assert not thrown.physics_obj.is_active() and thrown.hit_msg
 
 
 @pytest.mark.anchor("CPhysicsObj::report_collision_end")
@@ -325,3 +333,45 @@ def test_the_collision_record_lifetime_is_compared_in_double():
     timer.set(math.nextafter(1.0, 2.0))
     me.report_collision_end(False)
     assert len(me.collision_table) == 0
+
+
+# ---------------------------------------------------------------- a missile's profile (issue 41)
+
+
+def _at(o: PhysicsObj, x, y, z, yaw_degrees=0.0, cell=0xA9B40013):
+    from acconform.port.frame import AFrame, Position
+
+    half = math.radians(yaw_degrees) / 2
+    o.position = Position(cell, AFrame(EXACT.vec(x, y, z), EXACT.quat(0.0, 0.0, math.sin(half), math.cos(half))))
+    return o
+
+
+@pytest.mark.anchor("Position.cs:DetermineQuadrant")
+def test_a_quadrant_is_left_or_right_front_or_back_and_a_third_of_the_height():
+    from acconform.flags import Quadrant as Q
+
+    target = _at(obj(Creature(guid=2)), 10.0, 10.0, 0.0)
+    h = EXACT.scalar(1.8)
+    for (x, y, z), want in (((10.5, 10.3, 0.1), Q.Right | Q.Front | Q.Low), ((9.5, 9.7, 1.5), Q.Left | Q.Back | Q.High),
+                            ((10.0, 10.0, 0.9), Q.Right | Q.Front | Q.Medium)):  # x = 0 is Right, y = 0 Front
+        assert target.position.determine_quadrant(h, _at(obj(), x, y, z).position) == want
+    # in the target's own frame (LocalToLocal): turned 90 degrees about z, its front (+y) faces the world's -x, so a
+    # point at world offset (0.5, 0.2) is 0.5 behind it and 0.2 to its right
+    turned = _at(obj(Creature(guid=3)), 10.0, 10.0, 0.0, yaw_degrees=90.0)
+    assert turned.position.determine_quadrant(h, _at(obj(), 10.5, 10.2, 0.1).position) == Q.Right | Q.Back | Q.Low
+
+
+@pytest.mark.anchor("CPhysicsObj::build_collision_profile")
+@pytest.mark.anchor("AtkCollisionProfile.cs:AtkCollisionProfile(uint, int, Quadrant)")
+def test_a_missiles_profile_is_an_attack_profile_of_the_struck_objects_id_no_part_and_the_quadrant():
+    from acconform.flags import Quadrant as Q
+    from acconform.port.atk_collision_profile import AtkCollisionProfile
+
+    arrow = _at(obj(GenericObject(guid=0x8000_0010)), 10.2, 9.5, 1.7)
+    arrow.state |= PhysicsState.Missile
+    target = _at(obj(Creature(guid=0x8000_0001)), 10.0, 10.0, 0.0)
+    p = arrow.build_collision_profile(target, False, EXACT.vec(0, 20, 0))
+    assert isinstance(p, AtkCollisionProfile)
+    # target's GetHeight is its Setup's (0 here: a PhysicsObj with no part array), so any z >= 0 is High
+    assert (p.id, p.part, p.location) == (target.id, -1, Q.Right | Q.Back | Q.High)
+    assert p.velocity is None and p.flags == 0  # ACE's constructor sets only ID, Part and Location

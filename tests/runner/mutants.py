@@ -383,9 +383,9 @@ MUTATIONS: tuple[Mutation, ...] = (
              "            else:\n"
              "                updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),\n"
              "                                                                location_cell, lscape, trace)\n"
-             "            others_updated = {obj.id: obj.update_object(lscape, trace) for obj in stepped}\n",
+             "            others_updated = step_others(launches, stepped, lscape, trace)\n",
              "            timer.set(time)\n"
-             "            others_updated = {obj.id: obj.update_object(lscape, trace) for obj in stepped}\n"
+             "            others_updated = step_others(launches, stepped, lscape, trace)\n"
              "            if ticks.driver == \"update_object\":\n                updated = mover.update_object(lscape, trace)\n"
              "            else:\n"
              "                updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),\n"
@@ -402,6 +402,11 @@ MUTATIONS: tuple[Mutation, ...] = (
              "            frame = self.position.frame\n",
              "UpdateChild: the holding location's frame is not combined with the parent's frame (a child held past "
              "its parent's parts sits at the parent's Position)", TICKS),
+    Mutation("missile_ignore_player_test_dropped", "transition/object_info.py",
+             "        if collide_obj.state & PhysicsState.Missile:\n            if not self.object.is_player:\n                return True\n",
+             "        if collide_obj.state & PhysicsState.Missile:\n",
+             "missile_ignore's player test dropped: a mover that is no player collides with a missile aimed at it "
+             "instead of ignoring it", TICKS),
     Mutation("multipart_part_scale_ignored", "part_array.py",
              "                    part.gfx_obj_scale = self.setup.default_scale[i] * new_scale",
              "                    part.gfx_obj_scale = new_scale",
@@ -603,7 +608,7 @@ def _tick_entries(runtime: str) -> tuple:
 
 def tick_records(runtime: str, first: tuple[str, ...] = ()):
     """(source, scene, ACE's outcome) for every tick scene with ACE's recorded answer on `runtime`: the named
-    scenes of several movers (tests/oracle/mover_scenes.py) and of a carried child (tests/oracle/child_scenes.py), the corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first, then as
+    scenes of several movers (tests/oracle/mover_scenes.py) of a carried child (tests/oracle/child_scenes.py) and of missiles (tests/oracle/missile_scenes.py), the corpus's tick shards (ticks-NNNN.jsonl.gz) when present (the records keyed `first` first, then as
     _tick_entries orders them), then the example tick scenes, the hand-written ones and the named ones
     (tests/oracle/data)."""
     import json
@@ -627,6 +632,12 @@ def tick_records(runtime: str, first: tuple[str, ...] = ()):
     children = json.loads((data / "ace_child_outcomes.json").read_text())["outcomes"][runtime]
     for name, scene in child_scenes().items():
         yield f"tests/oracle/child_scenes.py {name}", scene, Outcome.from_json(children[name])
+    # then the named missile scenes (tests/oracle/missile_scenes.py): eight, each an arrow or a spell launched at a tick
+    from oracle.missile_scenes import scenes as missile_scenes
+
+    missiles = json.loads((data / "ace_missile_outcomes.json").read_text())["outcomes"][runtime]
+    for name, scene in missile_scenes().items():
+        yield f"tests/oracle/missile_scenes.py {name}", scene, Outcome.from_json(missiles[name])
     for _, e in sorted(_tick_entries(runtime), key=lambda ke: ke[0] not in first):
         rec = Record.from_json(e.doc())
         yield e.where, rec.scene, rec.outcome

@@ -1,0 +1,208 @@
+"""Missile tick scenes (issue 41; campaign kind ``missiles``, feature missiles): an arrow or a spell launched at a
+drawn tick from a player or a monster at a creature standing at a wall, through a door, past a cylsphere post, at a
+moving target, or at a wall.
+
+    draw_missile_scene(draw)     a tick scene of flat land with one projectile and its site
+
+The site lies on one landblock of flat land (its height drawn), away from its borders (a launch across landblocks
+is refused: ACE.Entity.Position.ToGlobal is not modelled). The launcher stands at a drawn point facing a drawn
+heading; the target 3-25 m along it. Policies:
+
+- ``creature_at_wall``: a monster target stands with a wall (a BSP slab across the line) just behind it;
+- ``through_door``: a door slab across the line part way (open: Ethereal; closed; Static one time in eight),
+  a monster or the wall behind it the target;
+- ``graze_cylsphere``: a cylsphere post whose edge lies within a few centimetres of the projectile's line
+  (either side, or touching exactly), the target beyond;
+- ``moving_target``: a monster walking toward, away from or across the line, held every tick (the arrow
+  leads it: the moving-target solver; a tracking spell leads it too);
+- ``wall``: the wall itself is the target (a static).
+
+The launcher is the player (the mover) three times in four, else a monster launching at the player. The
+projectile: an arrow (an Ammunition, one sphere of 2-10 cm, Gravity) two times in three, else a spell (a
+SpellProjectile, 10-30 cm; an arc one time in three, tracking half the time); it spawns 0.8 m ahead at eye height
+(1-1.5 m), is made at the start and listed before or after the monsters (which the server steps in the order
+they entered), and launches at tick 0-5 of 20-60 ticks.
+"""
+
+from __future__ import annotations
+
+import math
+
+from hypothesis import strategies as st
+
+from acconform.flags import PhysicsState, TransientState
+from acconform.numerics import to_f32
+from acconform.scene import (CylSphereShape, ContactPlane, Frame, Landblock, Launch, Mover, OtherInputs, OtherMover,
+                             Placement, PlaneRec, Position, Scene, SphereRec, StaticObject, Ticks, TickStep, validate_scene)
+from acconform.strategies.shapes import box
+
+from . import draws as dr
+
+PLAYER = 0x50000001
+MONSTER = 0x80000001
+CASTER = 0x80000002
+PROJECTILE = 0x80000010
+WALL = 0x70000001
+DOOR = 0x70000002
+POST = 0x70000003
+WALKING = int(TransientState.Contact | TransientState.OnWalkable | TransientState.Active)
+EDGE_SLIDE = int(PhysicsState.Gravity | PhysicsState.EdgeSlide)
+BODY = (SphereRec((0.0, 0.0, 0.48), 0.48),)
+
+POLICIES = st.sampled_from(("creature_at_wall", "through_door", "graze_cylsphere", "moving_target", "wall"))
+BLOCKS = st.sampled_from((0xA9B4, 0x7F7F, 0x2B10, 0xC6A0))
+HEIGHTS = dr.ints(5, 60)  # the land height index: z = 2 m per index
+SPOTS = dr.f32(60.0, 132.0)
+HEADINGS = dr.OneOf(st.sampled_from((0.0, 90.0, 45.0, 180.0)), dr.f32(0.0, 360.0))
+DISTANCES = dr.OneOf(st.sampled_from((8.0, 5.0, 12.0)), dr.f32(3.0, 25.0))
+ARROW_RADII = dr.OneOf(st.sampled_from((0.05, 0.03)), dr.f32(0.02, 0.1))
+SPELL_RADII = dr.f32(0.1, 0.3)
+ARROW_SPEEDS = dr.OneOf(st.sampled_from((20.0, 12.0, 30.0)), dr.f32(6.0, 40.0))
+SPELL_SPEEDS = dr.OneOf(st.sampled_from((15.0, 10.0)), dr.f32(5.0, 25.0))
+EYES = dr.f32(1.0, 1.5)
+WALL_GAPS = dr.OneOf(st.sampled_from((0.0, 0.02)), dr.f32(0.0, 0.4))
+DOOR_AT = dr.f32(0.25, 0.75)
+DOOR_WIDTHS = dr.f32(1.2, 3.0)
+THICKNESS = dr.OneOf(st.sampled_from((0.2, 0.4)), dr.f32(0.05, 0.6))
+POST_RADII = dr.f32(0.1, 0.6)
+GRAZES = dr.OneOf(st.sampled_from((0.0, -0.01, 0.01)), dr.f32(-0.08, 0.08))  # the gap between post and projectile
+WAYS = st.sampled_from(("toward", "away", "across", "across"))
+WALK_SPEEDS = dr.OneOf(st.sampled_from((3.0, 1.0, 6.0)), dr.f32(0.5, 8.0))
+LAUNCH_TICKS = dr.ints(0, 5)
+TICK_COUNTS = dr.OneOf(dr.ints(20, 40), dr.ints(40, 60))
+DTS = st.sampled_from((1 / 30, 1 / 30, 1 / 30, 1 / 60, 1 / 10))
+
+
+def _cell(lb: int, x: float, y: float) -> int:
+    return lb << 16 | (int(x // 24) * 8 + int(y // 24) + 1)
+
+
+def _heading(ux: float, uy: float):
+    """The quaternion (w x y z) turning +y onto (ux, uy), in float32."""
+    theta = math.atan2(-ux, uy)
+    return (to_f32(math.cos(theta / 2)), 0.0, 0.0, to_f32(math.sin(theta / 2)))
+
+
+def _slab(ident: int, lb: int, x: float, y: float, z: float, ux: float, uy: float, width: float, thickness: float,
+          height: float, state: int) -> StaticObject:
+    """A BSP slab across the line (its thin axis along (ux, uy)), centred at (x, y) on the ground z."""
+    x, y = to_f32(x), to_f32(y)
+    return StaticObject(ident, Position(_cell(lb, x, y), Frame((x, y, to_f32(z)), _heading(ux, uy))),
+                        box(width, thickness, height), state)
+
+
+def _monster(ident: int, lb: int, x: float, y: float, z: float) -> OtherMover:
+    x, y = to_f32(x), to_f32(y)
+    return OtherMover(ident, "monster", BODY, Position(_cell(lb, x, y), Frame((x, y, to_f32(z)))), 0.4, 0.4,
+                      state=EDGE_SLIDE, transient_state=WALKING)
+
+
+def draw_missile_scene(draw) -> Scene:
+    lb = draw(BLOCKS)
+    h = dr.take(draw, HEIGHTS)
+    ground = 2.0 * h
+    x0, y0 = float(dr.take(draw, SPOTS)), float(dr.take(draw, SPOTS))
+    phi = math.radians(float(dr.take(draw, HEADINGS)))
+    ux, uy = -math.sin(phi), math.cos(phi)
+    d = float(dr.take(draw, DISTANCES))
+    d = min(d, max(3.0, min((x0 - 8.0) / -ux if ux < -1e-6 else 1e9, (184.0 - x0) / ux if ux > 1e-6 else 1e9,
+                            (y0 - 8.0) / -uy if uy < -1e-6 else 1e9, (184.0 - y0) / uy if uy > 1e-6 else 1e9) - 2.0))
+    tx, ty = x0 + ux * d, y0 + uy * d
+    policy = draw(POLICIES)
+    player_launches = draw(st.sampled_from((True, True, True, False)))
+    arrow = draw(st.sampled_from((True, True, False)))
+    n = dr.take(draw, TICK_COUNTS)
+    dt = draw(DTS)
+    launch_tick = min(dr.take(draw, LAUNCH_TICKS), n - 1)
+
+    objects, monsters = [], []
+    mover_inputs = [{} for _ in range(n)]
+    monster_velocity = None
+    if player_launches:
+        launcher_at, launcher = (x0, y0), PLAYER
+        mover_at = (x0, y0)
+    else:
+        launcher_at, launcher = (x0, y0), CASTER
+        mover_at = (tx, ty)
+        monsters.append(_monster(CASTER, lb, x0, y0, ground))
+    target = MONSTER
+    if policy == "wall":
+        target = WALL
+    monster_at = (tx, ty)
+    if policy == "creature_at_wall" or policy == "wall":
+        t = float(dr.take(draw, THICKNESS))
+        back = (0.0 if policy == "wall" else 0.48) + t / 2 + float(dr.take(draw, WALL_GAPS))
+        objects.append(_slab(WALL, lb, tx + ux * back, ty + uy * back, ground, ux, uy, 8.0, t, 4.0,
+                             int(PhysicsState.Static | PhysicsState.HasPhysicsBSP)))
+    elif policy == "through_door":
+        at = float(dr.take(draw, DOOR_AT))
+        state = int(PhysicsState.HasPhysicsBSP)
+        if draw(dr.BOOLEANS):
+            state |= int(PhysicsState.Ethereal)
+        if draw(st.sampled_from((False,) * 7 + (True,))):
+            state |= int(PhysicsState.Static)
+        objects.append(_slab(DOOR, lb, x0 + ux * d * at, y0 + uy * d * at, ground, ux, uy, float(dr.take(draw, DOOR_WIDTHS)),
+                             float(dr.take(draw, THICKNESS)), 3.0, state))
+        if draw(dr.BOOLEANS):  # the wall behind is the target
+            objects.append(_slab(WALL, lb, tx, ty, ground, ux, uy, 8.0, 0.4, 4.0,
+                                 int(PhysicsState.Static | PhysicsState.HasPhysicsBSP)))
+            target = WALL
+    elif policy == "graze_cylsphere":
+        at = float(dr.take(draw, DOOR_AT))
+        r = float(dr.take(draw, POST_RADII))
+        side = 1.0 if draw(dr.BOOLEANS) else -1.0
+        reach = (0.05 if arrow else 0.2) + r + float(dr.take(draw, GRAZES))
+        px, py = x0 + ux * d * at + side * uy * reach, y0 + uy * d * at - side * ux * reach
+        px, py = to_f32(px), to_f32(py)
+        objects.append(StaticObject(POST, Position(_cell(lb, px, py), Frame((px, py, to_f32(ground)))),
+                                    CylSphereShape((0.0, 0.0, 0.0), to_f32(r), 4.0), int(PhysicsState.Static)))
+    elif policy == "moving_target":
+        way = draw(WAYS)
+        speed = float(dr.take(draw, WALK_SPEEDS))
+        vx, vy = {"toward": (-ux, -uy), "away": (ux, uy), "across": (uy, -ux)}[way]
+        monster_velocity = (to_f32(vx * speed), to_f32(vy * speed), 0.0)
+    if target == MONSTER:
+        if player_launches:
+            monsters.append(_monster(MONSTER, lb, *monster_at, ground))
+        else:
+            target = PLAYER  # a monster launches at the player
+            if monster_velocity is not None:
+                for k in range(n):
+                    mover_inputs[k]["velocity"] = monster_velocity
+                monster_velocity = None
+
+    eye = float(dr.take(draw, EYES))
+    lx, ly = launcher_at
+    origin = (to_f32(lx + ux * 0.8), to_f32(ly + uy * 0.8), to_f32(ground + eye))
+    if arrow:
+        radius = float(dr.take(draw, ARROW_RADII))
+        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, ARROW_SPEEDS)), origin, _heading(ux, uy),
+                        lead_target=draw(dr.BOOLEANS))
+        projectile = OtherMover(PROJECTILE, "ammunition", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
+                                Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
+                                state=int(PhysicsState.Gravity), transient_state=0, launch=launch)
+    else:
+        radius = float(dr.take(draw, SPELL_RADII))
+        arc = draw(st.sampled_from((False, False, True)))
+        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, SPELL_SPEEDS)), origin, arc=arc,
+                        tracking=draw(dr.BOOLEANS))
+        projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
+                                Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
+                                state=0, transient_state=0, launch=launch)
+    others = tuple(monsters) + (projectile,)
+    if monsters and draw(dr.BOOLEANS):  # the projectile entered first: stepped before the monsters
+        others = (projectile,) + tuple(monsters)
+
+    mx, my = mover_at
+    cell = _cell(lb, mx, my)
+    mover = Mover(spheres=BODY, begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(ux, uy))),
+                  end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
+                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"))
+    steps = []
+    for k in range(n):
+        theirs = (OtherInputs(MONSTER, velocity=monster_velocity),) if monster_velocity is not None else ()
+        steps.append(TickStep(dt, others=theirs, **mover_inputs[k]))
+    land = Landblock(lb << 16 | 0xFFFF, (h,) * 81, (0,) * 81)
+    name = f"missiles:{policy}:{'arrow' if arrow else 'spell'}:{'player' if player_launches else 'monster'}"
+    return validate_scene(Scene((land,), mover, tuple(objects), engine_mode="server", name=name,
+                                ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))

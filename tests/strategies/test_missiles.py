@@ -1,0 +1,68 @@
+"""strategies/missiles.py: the missiles kind's scenes (an arrow or a spell launched at a tick), drawn as a campaign
+draws them, and what the port does with them."""
+
+from __future__ import annotations
+
+import collections
+
+import pytest
+
+from acconform.scene import FORMAT, validate_scene
+
+N = 150
+
+
+@pytest.fixture(scope="module")
+def missile_scenes():
+    from acconform.strategies import sample_scenes
+
+    return list(sample_scenes(("missiles",), N, 41))
+
+
+def _projectile(scene):
+    return next(o for o in scene.others if o.launch is not None)
+
+
+def test_every_missile_scene_validates_in_format_8_with_one_launch_inside_its_ticks(missile_scenes):
+    for s in missile_scenes:
+        assert validate_scene(s) == s and s.format == FORMAT and s.engine_mode == "server"
+        launched = [o for o in s.others if o.launch is not None]
+        assert len(launched) == 1 and launched[0].launch.tick < len(s.ticks.steps)
+        assert len({o.begin.cell >> 16 for o in s.others} | {s.mover.begin.cell >> 16}) == 1  # one landblock
+
+
+def test_missile_scenes_draw_every_policy_both_projectiles_both_launchers_and_both_orders(missile_scenes):
+    names = [s.name.split(":") for s in missile_scenes]
+    assert {n[1] for n in names} == {"creature_at_wall", "through_door", "graze_cylsphere", "moving_target", "wall"}
+    assert {n[2] for n in names} == {"arrow", "spell"} and {n[3] for n in names} == {"player", "monster"}
+    firsts = {s.others[0].launch is not None for s in missile_scenes if len(s.others) > 1}
+    assert firsts == {True, False}  # the projectile stepped before the monsters, and after them
+    spells = [_projectile(s).launch for s in missile_scenes if _projectile(s).weenie == "spell_projectile"]
+    assert {la.arc for la in spells} == {True, False} and {la.tracking for la in spells} == {True, False}
+
+
+def test_the_port_flies_most_missile_scenes_projectiles_into_something(missile_scenes):
+    """A campaign that never hit anything would test the flight alone: most projectiles end destroyed (an arrow's
+    hit) or without their Missile bit (a spell's impact, an arrow that struck a door or post)."""
+    from acconform.port.run import run_scene
+
+    ends = collections.Counter()
+    for s in missile_scenes[:60]:
+        out = run_scene(s, runtime="coreclr")
+        proj = _projectile(s)
+        last = next(o for o in out.ticks[-1].others if o.id == proj.id)
+        ends["gone" if last.cur_cell == 0 else "hit" if not last.state & 0x8 else "flying"] += 1
+    assert ends["gone"] + ends["hit"] > 2 * ends["flying"], ends
+
+
+def test_the_missiles_kind_is_a_campaign_kind_the_port_runs_and_an_implementation_needs_the_feature():
+    from acconform.impl import BuiltinPort
+    from acconform.protocol import Implementation
+    from acconform.strategies import check_kinds
+
+    assert check_kinds("missiles") == ("missiles",) and "missiles" in BuiltinPort.kinds
+    impl = object.__new__(Implementation)
+    impl.hello = {"kinds": ["terrain"], "features": ["ticks", "objects.moving"]}
+    assert "missiles" not in impl.kinds
+    impl.hello["features"].append("missiles")
+    assert "missiles" in impl.kinds
