@@ -11,7 +11,8 @@ import pytest
 
 from acconform.flags import PlayerKillerStatus
 from acconform.numerics import EXACT, f32_bits
-from acconform.port.weenie_object import Player, WeenieObject
+from acconform.port.weenie_object import WeenieObject
+from acconform.port.world_objects import Player
 from acconform.scene import DEFAULT_SKILLS, MoverSkills
 
 EXTENTS = (0.0, 0.25, 0.5, 1.0, 1.5, -0.5)
@@ -31,7 +32,7 @@ SKILLS = (
 
 
 def port_answers(skills: MoverSkills):
-    weenie = WeenieObject.of_player(Player.of_skills(PlayerKillerStatus.NPK, skills))
+    weenie = WeenieObject.of(Player.of_skills(0x50000001, PlayerKillerStatus.NPK, skills))
     f = np.float32
     _, rate = weenie.inq_run_rate(f(0.0))
     burden = weenie.inq_burden(EXACT)
@@ -52,7 +53,7 @@ def test_aces_weenie_object_answers_the_players_run_rate_burden_and_jump_velocit
 def test_the_cases_reach_every_branch_of_the_burden_and_the_jump_height():
     """Burden under 1, between 1 and 2, 2 and over, 3 with no capacity, 0 for a negative load; the jump height's
     floor and a stamina of 0."""
-    burdens = {float(np.float32(WeenieObject.of_player(Player.of_skills(PlayerKillerStatus.NPK, s)).inq_burden(EXACT)))
+    burdens = {float(np.float32(WeenieObject.of(Player.of_skills(0x50000001, PlayerKillerStatus.NPK, s)).inq_burden(EXACT)))
                for s in SKILLS}
     assert {0.0, 1.0, 2.0, 3.0} <= burdens and any(1.0 < b < 2.0 for b in burdens)
     assert any(s.stamina == 0 and s.jump > 0 for s in SKILLS)

@@ -16,7 +16,7 @@ f = np.float32
 
 
 def weenie(**skills) -> WeenieObject:
-    return WeenieObject.of_player(Player.of_skills(PlayerKillerStatus.NPK, MoverSkills(**skills)))
+    return WeenieObject.of(Player.of_skills(0x50000001, PlayerKillerStatus.NPK, MoverSkills(**skills)))
 
 
 @pytest.mark.anchor("WeenieObject.cs:InqRunRate")
@@ -54,4 +54,7 @@ def test_the_jump_velocity_comes_from_the_jump_skill_and_burden_and_none_without
 
 
 def test_the_default_player_is_the_database_free_players():
-    assert Player.of_skills(PlayerKillerStatus.NPK, DEFAULT_SKILLS) == Player()
+    from dataclasses import fields
+
+    made, plain = Player.of_skills(0, PlayerKillerStatus.NPK, DEFAULT_SKILLS), Player()
+    assert [getattr(made, f.name) for f in fields(Player)] == [getattr(plain, f.name) for f in fields(Player)]
