@@ -343,6 +343,12 @@ TRANSITION = "PhysicsObj.cs:transition"
 TICK_DRIVER = "PhysicsObj.cs:update_object"
 
 
+def run_start(records) -> int:
+    """The index of a trace's first record of the run (the first of RUN_STARTS, or the first tick): what comes
+    before it is the world's building (its statics' placement among it), len(records) when the run never started."""
+    return next((i for i, r in enumerate(records) if r.tick is not None or r.anchor in RUN_STARTS), len(records))
+
+
 def run_part(records, ticks: bool) -> tuple:
     """The records of a trace that a comparison with ACE's own reads: the placement of the static objects
     (the records labelled `placing`, written while the world is built) and the run, from its start
@@ -352,7 +358,7 @@ def run_part(records, ticks: bool) -> tuple:
     update_object, a call outside any routine). What either driver calls is called from outside any routine, as
     ACE's facade calls it (`within` None): at a tick, set_request_pos and update_object_server in server mode,
     update_object in client mode."""
-    start = next((i for i, r in enumerate(records) if r.tick is not None or r.anchor in RUN_STARTS), len(records))
+    start = run_start(records)
     # what follows the last tick, or the transition's cleanup, is the harness's (the facade removes the statics)
     last = (lambda r: r.event == "tick") if ticks else (lambda r: r.anchor == RUN_ENDS)
     end = max((i + 1 for i, r in enumerate(records) if last(r)), default=len(records))

@@ -5,9 +5,12 @@ the server) and loads a missing one from the cell DAT. A run here builds one LSc
 scene. ACE builds and PostInits every landblock up front; here a landblock is built on the
 first get_landblock that asks for it (most scenes list landblocks a transition never enters),
 into a dict keyed by landblock id (0xXXYYFFFF). That is observably the same because building is
-deterministic and independent of the other landblocks, with one exception kept eager: a
+deterministic and independent of the other landblocks, with two exceptions kept eager: a
 landblock whose construction throws (an id past the world edge, where blockid_to_lcoord has
-no value) is built up front, so the run fails as ACE's does. Building is deterministic, so built landblocks are pooled across
+no value) is built up front, so the run fails as ACE's does; and a landblock with buildings is
+built up front (constructed in the scene's order, then PostInit'd, as the facade's BuildScene
+does), since its PostInit places its buildings (SortCell.add_building), records a traced run
+writes: built on first use, they fell inside the run, where ACE's trace has none. Building is deterministic, so built landblocks are pooled across
 runs (`LandblockPool`), keyed by everything they are built from (id, heights, terrain, land
 height table, mode): a run checks one out of the pool (no other LScape can hold it meanwhile),
 its cells' per-run object lists are reset (shadow objects never leak between scenes), and
@@ -135,18 +138,35 @@ class LScape:
                     db_obj.get_cell_landblock(cell_dat, landblock_id)
                     info = db_obj.get_landblock_info(cell_dat, (record.id & 0xFFFF0000) | 0xFFFE)
                 self.landblock_manager.get_landblock(ServerLandblock(record, info, self))
+        # a landblock with buildings is built now, before anything is placed, as the oracle's facade builds the scene's
+        # landblocks (BuildScene: each constructed in the scene's order, then each PostInit'd): its PostInit places
+        # its buildings (init_buildings: BuildingObj.add_to_cell, SortCell.add_building), which is the world's
+        # building, not the work of whichever get_landcell first reaches the landblock in the run or in a static's
+        # placement (the traces compared with ACE's own would part there for no bug)
+        built = [self.construct_landblock(landblock_id) for landblock_id in self.records
+                 if landblock_id in self.has_objects and landblock_id not in self.landblocks]
+        for landblock in built:
+            landblock.post_init(self)
 
     @harness("a scene landblock built (new Landblock, PostInit) or taken from the pool on first use")
     def build_landblock(self, landblock_id: int) -> Landblock:
         """``new Landblock(CellLandblock)`` then PostInit (pooled unless it has buildings), on first use;
         in server mode it takes the adjacents LandblockManager's SetAdjacents gave it (pSync)."""
         if landblock_id in self.has_objects:
-            landblock = Landblock(self.records[landblock_id], self.land_height_table, self.mode, True, self.cell_dat)
-            self.landblocks[landblock_id] = landblock
-            self.take_adjacents(landblock_id, landblock)
+            landblock = self.construct_landblock(landblock_id)
             landblock.post_init(self)
             return landblock
         landblock = POOL.checkout(self.records[landblock_id], self.land_height_table, self.mode)
+        self.landblocks[landblock_id] = landblock
+        self.take_adjacents(landblock_id, landblock)
+        return landblock
+
+    @harness("a scene landblock with buildings constructed (new Landblock, before its PostInit), for this run only")
+    def construct_landblock(self, landblock_id: int) -> Landblock:
+        """``new Landblock(CellLandblock)`` of a landblock with buildings (it reads its LandblockInfo from the run's
+        cell DAT, so it is never pooled), registered before its PostInit as LScape.get_landblock registers it, with
+        the adjacents LandblockManager's SetAdjacents gave it in server mode."""
+        landblock = Landblock(self.records[landblock_id], self.land_height_table, self.mode, True, self.cell_dat)
         self.landblocks[landblock_id] = landblock
         self.take_adjacents(landblock_id, landblock)
         return landblock

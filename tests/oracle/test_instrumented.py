@@ -48,18 +48,41 @@ def test_an_instrumented_ace_answers_each_scene_of_a_corpus_sample_exactly_as_th
 
 
 def test_aces_own_trace_and_the_ports_agree_on_the_sample_at_the_grain_both_write(live, traced, sample):
-    """Buildings are left out: ACE builds a landblock's buildings and their cells when LScape.get_landcell
-    first reaches them, in another order than the port's (docs/oracle.md, "The instrumented ACE")."""
+    """Buildings too: a landblock with buildings is built, its buildings placed, before the run on both sides (the
+    facade's BuildScene, the port's LScape), and the EnvCells behind a building's portal load in the same order."""
     from acconform.port.run import traced_run
     from acconform.trace import against_ace
 
+    assert "buildings" in {scene_kind(scene) for scene in sample}
     for scene in sample:
-        if scene_kind(scene) == "buildings":
-            continue
         _, ace = traced.trace(scene)
         _, port = traced_run(scene, "exact", live.location.runtime)
         d = against_ace(ace, port, traced.kinds, scene.ticks is not None, traced.overloaded)
         assert d is None, f"{scene_kind(scene)}: {d.routine} {d.field}: ACE {d.a_value!r}, port {d.b_value!r}"
+
+
+def test_aces_own_trace_and_the_ports_agree_on_building_scenes_whose_run_first_reaches_the_buildings_landblock(
+        live, traced):
+    """Issue 20's named building scenes whose run (or placement) is the first to reach the landblock with the
+    building (tests/port/cell/building_load_order.py): built on first use, the port placed the building there, where
+    ACE's trace has the facade's building of the world, and the traces parted for no bug."""
+    import sys
+    from pathlib import Path
+
+    from acconform.port.run import traced_run
+    from acconform.trace import against_ace
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "port" / "cell"))
+    from building_load_order import SCENES  # noqa: E402
+    from building_scenes import load  # noqa: E402
+
+    named, _ = load()
+    for name in SCENES:
+        scene = named[name]
+        _, ace = traced.trace(scene)
+        _, port = traced_run(scene, "exact", live.location.runtime)
+        d = against_ace(ace, port, traced.kinds, scene.ticks is not None, traced.overloaded)
+        assert d is None, f"{name}: {d.routine} {d.field}: ACE {d.a_value!r}, port {d.b_value!r}"
 
 
 def test_a_planted_sign_flip_is_named_in_cliff_slide_against_aces_trace_as_against_the_ports(live, traced, monkeypatch):
