@@ -150,6 +150,7 @@ HOLD_TURNS = st.sampled_from(((1.0, 0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0), (0.707
                               (0.0, 0.0, 0.0, 1.0), (0.70710677, 0.70710677, 0.0, 0.0), (0.5, 0.5, 0.5, 0.5),
                               (0.9238795, 0.0, 0.38268343, 0.0), "drawn"))
 QUAT_PARTS = dr.f32(-1.0, 1.0)
+PART_FRAMES = st.sampled_from(("origin", "origin", "origin", "start"))  # by part 0: near its landblock's origin, or the start
 EXTRA_LOCATION = st.sampled_from((False, False, True))  # a holding location no child is held at
 CHILD_WEENIES = st.sampled_from(("object", "object", "object", "object", "object", "creature", "monster"))
 CHILD_RADII = st.sampled_from((0.1, 0.05, 0.2, 0.3))
@@ -711,16 +712,21 @@ def _jump(draw, clock) -> Scene:
 # ---------------------------------------------------------------- carries
 
 def _holding_frame(draw, holder_origin, by_part: bool) -> Frame:
-    """A child's frame in its holding part: an offset and a turn (exact float32s). By part 0 the part never moves on
-    a server (it stays at its landblock's origin), so the frame is written near the holder's start (landblock
-    coordinates: near the origin the child's sorting sphere would reach a landblock the scene lacks)."""
+    """A child's frame in its holding part: an offset and a turn (exact float32s). Part 0 of a server's object
+    without a physics BSP is where makeAnimObject put it, the origin of its landblock (until a set_frame of its
+    PartArray makes it the holder's Position itself), so a frame by part 0 is in landblock coordinates: a
+    metre or more into the landblock (a child's sorting sphere at its -x or -y edge would reach a landblock the
+    scene lacks: ACE's empty CellLandblock throws), or one time in four near the holder's start."""
     x, y, z = (float(dr.take(draw, HOLD_XY)), float(dr.take(draw, HOLD_XY)), float(dr.take(draw, HOLD_Z)))
     if by_part:
-        x, y, z = x + holder_origin[0], y + holder_origin[1], z + holder_origin[2]
+        if draw(PART_FRAMES) == "start":
+            x, y, z = x + holder_origin[0], y + holder_origin[1], z + holder_origin[2]
+        else:
+            x, y = abs(x) + 1.25, abs(y) + 1.25
     q = draw(HOLD_TURNS)
     if q == "drawn":
         v = [float(draw(QUAT_PARTS)) for _ in range(4)]
-        h = math.sqrt(sum(c * c for c in v)) or 1.0
+        h = math.sqrt(sum(c * c for c in v))
         q = tuple(c / h for c in v) if h > 1e-3 else (1.0, 0.0, 0.0, 0.0)
     return Frame(_vec(x, y, z), _vec(*q))
 
