@@ -40,7 +40,14 @@ def survey(n: int, seed: int) -> Counter:
         parts = s.name.split(":")
         pol = parts[1]
         c["policy " + pol] += 1
-        c[f"{len(s.others)} other movers"] += 1
+        c[f"{sum(o.parent is None for o in s.others)} other movers"] += 1
+        if pol == "carry":  # carrier, motion, where, the children and how each is held
+            c[f"carry: carrier {parts[2]}"] += 1
+            c[f"carry: {parts[3].split('-')[0]}"] += 1
+            c[f"carry: {parts[4]}"] += 1
+            c[f"carry: {parts[5]}hildren"] += 1
+            for k in parts[6].split("/"):
+                c[f"carry: a child held {k.split('-')[0]}"] += 1
         c["engine mode " + s.engine_mode] += 1
         if pol in ("head_on", "side_on", "chase"):
             c["meeting " + parts[3]] += 1
@@ -58,7 +65,7 @@ def survey(n: int, seed: int) -> Counter:
                   for f in ("velocity", "local_velocity", "sequence_velocity", "jump") if getattr(d, f) is not None}
         for f in inputs:
             c["input " + f] += 1
-        for w in {o.weenie for o in s.others}:
+        for w in {o.weenie for o in s.others if o.parent is None}:
             c["an other " + w] += 1
         out = run_scene(s)
         if out.error:
@@ -66,9 +73,12 @@ def survey(n: int, seed: int) -> Counter:
             continue
         if any(t.error for t in out.ticks):
             c["a tick ending in ACE's error"] += 1
+        for o, placed in zip(s.others, out.other_placements or ()):
+            if o.parent is not None:
+                c["carry: a child placed " + ("OK" if placed.result == 0 else "GeneralFailure")] += 1
         hit, prev = set(), {}
         for t in out.ticks:
-            tables = {MOVER: t.collisions or ()} | {o.id: o.tick.collisions or () for o in (t.others or ())}
+            tables = {MOVER: t.collisions or ()} | {o.id: o.collisions or () for o in (t.others or ())}
             for who, table in tables.items():
                 hit.update((who, r.id) for r in table)
                 if len(table) > len(prev.get(who, ())):
@@ -79,7 +89,7 @@ def survey(n: int, seed: int) -> Counter:
         if any(a in ids or b in ids for a, b in hit):
             c["scenes with a collision between movers"] += 1
             c[f"policy {pol}: a collision"] += 1
-        for o in s.others:
+        for o in (o for o in s.others if o.parent is None):
             met = (MOVER, o.id) in hit or (o.id, MOVER) in hit
             if o.weenie == "player":
                 pair = "exempt" if exempt(s.mover.player_killer_status, o.player_killer_status) else "not exempt"
@@ -101,7 +111,7 @@ def survey(n: int, seed: int) -> Counter:
                 walker_first = parts[2] == "mover"
 
                 def touched(t):
-                    table = t.collisions if walker_first else t.others[0].tick.collisions
+                    table = t.collisions if walker_first else t.others[0].collisions
                     return any(r.id == (o.id if walker_first else MOVER) for r in (table or ()))
 
                 first = next((i for i, t in enumerate(out.ticks) if touched(t)), None)

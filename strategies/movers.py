@@ -17,7 +17,11 @@ landblock border its neighbours toward -x and -y), or a house of strategies/buil
   sum as float32, or ACE's radsum, the sum less EPSILON; or one ulp either side), placed on a 2^-16 grid
   so the distance is exact; ``approach``: one walks by root motion on an exact grid (dt 1/16, 3/32, 5/64 s,
   a speed whose step is exact) toward the other standing where that distance is met exactly at a drawn tick;
-- ``jump``: a player (the mover, or another player) jumps onto or over another standing ahead.
+- ``jump``: a player (the mover, or another player) jumps onto or over another standing ahead;
+- ``carry``: the mover, or another mover (a monster, a player, an NPC), carries one or two children (scene/8
+  ``others[].parent``: small objects, a sorting sphere or none) at holding locations of its Setup -- past its
+  parts (in its Position, the common case), by part 0, or at a location it lacks (set_parent refuses it) -- and
+  walks, turns, jumps, crosses a cell or landblock border, walks into a wall or into another mover.
 
 Across policies: the pair's weenies (player/player in every PlayerKillerStatus combination: two players
 whose statuses exempt them pass through each other, FindObjCollisions; player/monster, player/creature,
@@ -36,11 +40,11 @@ from dataclasses import replace
 import numpy as np
 from hypothesis import strategies as st
 
-from acconform.flags import PhysicsState, PlayerKillerStatus, TransientState
+from acconform.flags import ParentLocation, PhysicsState, PlayerKillerStatus, TransientState
 from acconform.numerics import f32_bits, f32_from_bits, to_f32
 from acconform.port.constants import EPSILON
-from acconform.scene import (IDENTITY, ContactPlane, Mover, OtherInputs, OtherMover, Placement, PlaneRec,
-                             Position, Scene, SphereRec, StaticObject)
+from acconform.scene import (IDENTITY, ChildOf, ContactPlane, Frame, HoldingLocation, Mover, OtherInputs, OtherMover,
+                             Placement, PlaneRec, Position, Scene, SphereRec, StaticObject)
 
 from . import buildings as bl
 from . import draws as dr
@@ -48,7 +52,7 @@ from . import shapes as sh
 from .terrain import BLOCK, CELL
 
 POLICY_NAMES = ("head_on", "head_on", "side_on", "side_on", "corner", "chase", "chase", "doorway", "touch", "touch",
-                "approach", "approach", "jump", "jump")
+                "approach", "approach", "jump", "jump", "carry", "carry")
 POLICIES = st.sampled_from(POLICY_NAMES)
 
 FIRST_PLAYER, FIRST_OBJECT = 0x50000002, 0x80000001
@@ -126,6 +130,34 @@ JUMP_FORWARD = dr.OneOf(st.sampled_from((2.0, 3.0, 4.0, 1.0)), dr.f32(0.0, 6.0))
 JUMP_AHEAD = dr.OneOf(st.sampled_from((1.0, 1.5, 0.5, 2.0)), dr.f32(0.0, 4.0))
 JUMP_AT = dr.ints(0, 4)
 JUMPERS = st.sampled_from(("mover", "mover", "other"))
+
+# carries: who holds, what it does, where; each child's holding location: past the holder's parts (the frame in its
+# Position: the common case), by part 0 (a server never moves it: the frame is in landblock coordinates), or one
+# the holder's Setup lacks (set_parent refuses it: GeneralFailure)
+CARRIERS = st.sampled_from(("mover", "mover", "mover", "monster", "monster", "player", "creature"))
+CARRY_MOVES = st.sampled_from(("walk", "walk", "walk", "turn", "turn", "jump", "wall", "bump", "bump", "stand"))
+CARRY_WHERE = st.sampled_from(("middle", "middle", "middle", "cell", "cell", "block"))
+CROSS_HEADINGS = st.sampled_from((0.0, 180.0, 0.0, 180.0, 10.0, 190.0, 165.0, -20.0))  # across x = const borders
+CHILD_COUNTS = st.sampled_from((1, 1, 1, 2))
+HOLDS_AT = st.sampled_from(("position", "position", "position", "position", "position", "part0", "missing"))
+SECOND_HOLDER = st.sampled_from(("same", "same", "same", "mover"))  # a second child of another holder: the mover's
+PAST_PARTS = st.sampled_from((1, 1, 1, 1, 2, 5, 255))  # the Setup has one part: any of these is past it
+LOCATIONS = st.sampled_from(tuple(int(p) for p in ParentLocation if p) + (1, 1, 2, 3, 0, 12, 40, 255))
+PLACEMENTS = st.sampled_from((0, 0, 0, 0, 0, 1, 2, 3, 13, 101))
+HOLD_XY = dr.OneOf(st.sampled_from((0.4, 0.0, -0.4, 0.1, 0.25, -0.3, 1.0)), dr.f32(-1.5, 1.5))
+HOLD_Z = dr.OneOf(st.sampled_from((1.0, 0.5, 1.2, 0.0, -0.2)), dr.f32(-0.5, 2.0))
+HOLD_TURNS = st.sampled_from(((1.0, 0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0), (0.70710677, 0.0, 0.0, 0.70710677),
+                              (0.0, 0.0, 0.0, 1.0), (0.70710677, 0.70710677, 0.0, 0.0), (0.5, 0.5, 0.5, 0.5),
+                              (0.9238795, 0.0, 0.38268343, 0.0), "drawn"))
+QUAT_PARTS = dr.f32(-1.0, 1.0)
+PART_FRAMES = st.sampled_from(("origin", "origin", "origin", "start"))  # by part 0: near its landblock's origin, or the start
+EXTRA_LOCATION = st.sampled_from((False, False, True))  # a holding location no child is held at
+CHILD_WEENIES = st.sampled_from(("object", "object", "object", "object", "object", "creature", "monster"))
+CHILD_RADII = st.sampled_from((0.1, 0.05, 0.2, 0.3))
+SORTING = st.sampled_from(((0.0, 0.5, 0.6), (0.0, 0.5, 0.6), (0.0, 0.0, 0.3), (0.2, 0.3, 1.0), (0.0, 0.0, 0.0), None))
+CARRY_OMEGAS = st.sampled_from((1.5, -1.0, 3.0, 0.5, -2.5))
+CARRY_SPEEDS = st.sampled_from((0.0, 0.5, 1.0))  # a turning holder's walk
+CARRY_WALL_ID = 0x7D000031
 
 
 # ---------------------------------------------------------------- bodies, ids, the world
@@ -297,9 +329,10 @@ def _finish(draw, clock_start, dts, tl: _Timeline, world_landblocks, mover: Move
 
     others = tuple(others)
     blocks = {lb.id >> 16 for lb in world_landblocks}
-    assert all(p.cell >> 16 in blocks for p in (mover.begin,) + tuple(o.begin for o in others)), name  # stays on them
+    in_world = tuple(o for o in others if o.parent is None)  # a child enters with its parent and takes no input
+    assert all(p.cell >> 16 in blocks for p in (mover.begin,) + tuple(o.begin for o in in_world)), name  # stays on them
     if ethereal:
-        name += _ethereal(draw, tl, mover, others)
+        name += _ethereal(draw, tl, mover, in_world)
     base = Scene(tuple(world_landblocks), mover, tuple(objects), name=name, buildings=tuple(buildings),
                  environments=tuple(environments), env_cells=tuple(env_cells))
     scene = _tick_scene(base, clock_start, dts, tl.steps_inputs(others), "update_object", None, name)
@@ -352,6 +385,8 @@ def draw_movers_ticks(draw, clock, policy: str | None = None) -> Scene:
         return _touch(draw, clock)
     if policy == "approach":
         return _approach(draw)
+    if policy == "carry":
+        return _carry(draw, clock)
     return _jump(draw, clock)
 
 
@@ -672,3 +707,139 @@ def _jump(draw, clock) -> Scene:
         tl.of(jp.id)[at]["jump"] = jump
     name = f"movers:jump:{jumper}:{standing}:at{at}:{label}"
     return _finish(draw, start, dts, tl, world.landblocks, mover, others, (), name)
+
+
+# ---------------------------------------------------------------- carries
+
+def _holding_frame(draw, holder_origin, by_part: bool) -> Frame:
+    """A child's frame in its holding part: an offset and a turn (exact float32s). Part 0 of a server's object
+    without a physics BSP is where makeAnimObject put it, the origin of its landblock (until a set_frame of its
+    PartArray makes it the holder's Position itself), so a frame by part 0 is in landblock coordinates: a
+    metre or more into the landblock (a child's sorting sphere at its -x or -y edge would reach a landblock the
+    scene lacks: ACE's empty CellLandblock throws), or one time in four near the holder's start."""
+    x, y, z = (float(dr.take(draw, HOLD_XY)), float(dr.take(draw, HOLD_XY)), float(dr.take(draw, HOLD_Z)))
+    if by_part:
+        if draw(PART_FRAMES) == "start":
+            x, y, z = x + holder_origin[0], y + holder_origin[1], z + holder_origin[2]
+        else:
+            x, y = abs(x) + 1.25, abs(y) + 1.25
+    q = draw(HOLD_TURNS)
+    if q == "drawn":
+        v = [float(draw(QUAT_PARTS)) for _ in range(4)]
+        h = math.sqrt(sum(c * c for c in v))
+        q = tuple(c / h for c in v) if h > 1e-3 else (1.0, 0.0, 0.0, 0.0)
+    return Frame(_vec(x, y, z), _vec(*q))
+
+
+def _child(draw, ids: _Ids, parent: int, location: int) -> OtherMover:
+    """A small held object (a GenericObject mostly), with a sorting sphere or none."""
+    weenie = draw(CHILD_WEENIES)
+    r = to_f32(draw(CHILD_RADII))
+    spheres = (SphereRec((0.0, 0.0, r), r),)
+    sorting = draw(SORTING)
+    sphere = None if sorting is None else SphereRec(_vec(sorting[0], 0.0, sorting[1]), to_f32(sorting[2]))
+    return OtherMover(ids.take(weenie), weenie, spheres, None, 0.0, 0.0, scale=to_f32(draw(SCALES)) if draw(dr.BOOLEANS) else 1.0,
+                      sorting_sphere=sphere, parent=ChildOf(parent, location, draw(PLACEMENTS)))
+
+
+def _carry(draw, clock) -> Scene:
+    """The mover or another mover (a monster, a player, an NPC) carries one or two children at holding locations of
+    its Setup, and walks (velocity, local_velocity, root motion), turns (omega, walking slowly), jumps (a player),
+    walks into a wall or into another mover walking at it, or stands; across a cell or landblock border or
+    mid-block. A second child may be the mover's while another holds the first."""
+    from acconform.staging import MOVER_ID
+
+    where = draw(CARRY_WHERE)
+    world = _Flat(draw, where == "block")
+    mx, my = _meeting_point(draw, where)
+    rad = math.radians(dr.take(draw, HEADINGS) if where == "middle" else draw(CROSS_HEADINGS))
+    ux, uy = math.cos(rad), math.sin(rad)
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, label = clock(draw, n)
+    tl, ids = _Timeline(dts), _Ids()
+    carrier = draw(CARRIERS)
+    move = draw(CARRY_MOVES)
+    if move == "jump" and carrier in ("monster", "creature"):
+        move = "walk"
+    speed = float(dr.take(draw, SPEEDS))
+    lead = _within(float(dr.take(draw, GAPS)), speed, dts)  # to the border, the wall, the meeting
+    kind = draw(INPUT_KINDS) if move in ("walk", "wall", "bump") else "velocity"
+    sh_ = _spheres(draw)
+    hx, hy = mx - ux * lead, my - uy * lead
+    hq = facing(kind, ux, uy) if move != "turn" else IDENTITY
+    objects, others = (), []
+    if carrier == "mover":
+        mover = _mover(draw, sh_, world.position(hx, hy, hq), world.z, _pks(draw, "player"))
+        rows, holder_id, holder_begin = tl.mover, MOVER_ID, mover.begin
+        holder = None
+    else:
+        holder = _other(draw, ids, carrier, sh_, world.position(hx, hy, hq), scale=draw(SCALES))
+        rows, holder_id, holder_begin = tl.of(holder.id), holder.id, holder.begin
+        others.append(holder)
+        if move == "bump":  # the mover walks at it
+            mover = _mover(draw, _spheres(draw), world.position(mx + ux * lead, my + uy * lead, facing(kind, -ux, -uy)),
+                           world.z, _pks(draw, "player"))
+        else:  # the mover stands aside
+            mover = _mover(draw, _spheres(draw), world.position(mx - uy * 5.0, my + ux * 5.0), world.z, _pks(draw, "player"))
+    # the motion
+    label_move = move
+    if move in ("walk", "wall", "bump"):
+        label_move += "-" + tl.walk(draw, rows, ux, uy, speed, kind)
+    elif move == "turn":
+        w, v = draw(CARRY_OMEGAS), draw(CARRY_SPEEDS)
+        local = draw(dr.BOOLEANS)
+        for i in range(n):
+            rows[i]["omega"] = _vec(0.0, 0.0, w)
+            if v:
+                rows[i]["local_velocity" if local else "velocity"] = _vec(0.0, v, 0.0) if local else _vec(ux * v, uy * v, 0.0)
+        label_move += f"-w{w}-v{v}" + ("-local" if local and v else "")
+    elif move == "jump":
+        at = min(dr.take(draw, JUMP_AT), n - 1)
+        label_move += "-" + tl.walk(draw, rows, ux, uy, min(speed, 4.0), "velocity")
+        fwd = float(dr.take(draw, JUMP_FORWARD))
+        rows[at]["jump"] = _vec(ux * fwd, uy * fwd, float(dr.take(draw, JUMP_UPS)))
+    if move == "wall":
+        ahead = max(s.radius for s in sh_) + float(draw(LANE_GAPS)) + lead
+        q = bl.dg.yaw_quat(math.degrees(rad) + 90.0)  # the box's x across the walk
+        objects = (StaticObject(CARRY_WALL_ID, world.position(hx + ux * (ahead + 0.2), hy + uy * (ahead + 0.2), q),
+                                sh.box(draw(SLAB_WIDTHS) * 2, 0.4, 3.0), STATIC_BSP),)
+    # the children and their holding locations
+    locations: dict[int, list[HoldingLocation]] = {holder_id: []}
+    begins = {holder_id: holder_begin, MOVER_ID: mover.begin}
+    held, kinds = [], []
+    for c in range(draw(CHILD_COUNTS)):
+        who = holder_id
+        if c == 1 and holder_id != MOVER_ID and draw(SECOND_HOLDER) == "mover":
+            who = MOVER_ID
+        taken = locations.setdefault(who, [])
+        at_kind = draw(HOLDS_AT)
+        location = draw(LOCATIONS)
+        for k in range(12):  # a location of its own (a Setup keys each once), or one not given
+            if location not in {h.location for h in taken} and location not in {ch.parent.location for ch in held
+                                                                               if ch.parent.id == who}:
+                break
+            location = draw(LOCATIONS) if k < 11 else 1000 + c
+        if at_kind != "missing":
+            part = 0 if at_kind == "part0" else draw(PAST_PARTS)
+            taken.append(HoldingLocation(location, part, _holding_frame(draw, begins[who].frame.origin, part == 0)))
+        held.append(_child(draw, ids, who, location))
+        kinds.append(at_kind + ("-mover" if who != holder_id else ""))
+    for who, taken in locations.items():
+        if draw(EXTRA_LOCATION):
+            used = {h.location for h in taken} | {ch.parent.location for ch in held if ch.parent.id == who}
+            spare = next(l for l in (9, 8, 7, 6, 500) if l not in used)
+            taken.append(HoldingLocation(spare, draw(PAST_PARTS), _holding_frame(draw, begins[who].frame.origin, False)))
+    if locations.get(MOVER_ID):
+        mover = replace(mover, holding_locations=tuple(locations[MOVER_ID]))
+    if holder is not None and locations[holder_id]:
+        others[0] = replace(holder, holding_locations=tuple(locations[holder_id]))
+    others += held
+    if move == "bump" and carrier == "mover":  # another mover walks at the holder
+        weenie = draw(WEENIES)
+        okind = draw(INPUT_KINDS)
+        bumper = _other(draw, ids, weenie, _spheres(draw), world.position(mx + ux * lead, my + uy * lead,
+                                                                          facing(okind, -ux, -uy)), scale=draw(SCALES))
+        tl.walk(draw, tl.of(bumper.id), -ux, -uy, float(dr.take(draw, SPEEDS)), okind)
+        others.append(bumper)
+    name = f"movers:carry:{carrier}:{label_move}:{where}:{len(held)}c:{'/'.join(kinds)}:{label}"
+    return _finish(draw, start, dts, tl, world.landblocks, mover, others, objects, name)

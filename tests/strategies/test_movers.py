@@ -37,7 +37,8 @@ def test_every_movers_scene_validates_in_format_8_round_trips_and_keeps_ids_in_t
         assert validate_scene(s) == s and s.format == FORMAT
         assert Scene.from_json(json.loads(s.dumps())) == s
         assert s.mover.placement is not None and s.mover.placement.via == "enter_world"
-        assert 1 <= len(s.others) <= 3
+        in_world = [o for o in s.others if o.parent is None]  # a carry's children enter with their holders
+        assert len(in_world) <= 3 and 1 <= len(s.others) <= 5 and (in_world or s.mover.holding_locations)
         for o in s.others:
             assert o.id != MOVER_ID
             assert (0x50000002 <= o.id <= 0x5FFFFFFF) if o.weenie == "player" else (0x80000001 <= o.id <= 0xFFFFFFFE)
@@ -125,8 +126,67 @@ def test_an_approach_meets_its_standing_pair_exactly_at_the_drawn_tick_in_the_po
     assert checked >= 3
 
 
+def _rotate(q, v):
+    w, x, y, z = q
+    u = np.array([x, y, z])
+    v = np.array(v, dtype=float)
+    return v + 2 * np.cross(u, np.cross(u, v) + w * v)
+
+
+def test_carry_scenes_hold_children_at_their_holders_locations_and_stay_valid():
+    from acconform.scene import validate_scene
+
+    scenes = _draw(60, 13, "carry")
+    kinds, carriers = set(), set()
+    for s in scenes:
+        assert validate_scene(s) == s and Scene.from_json(json.loads(s.dumps())) == s
+        p = s.name.split(":")
+        carriers.add(p[2])
+        kinds |= {k.split("-")[0] for k in p[6].split("/")}
+        ids = [MOVER_ID] + [o.id for o in s.others]
+        children = [o for o in s.others if o.parent is not None]
+        assert 1 <= len(children) <= 2
+        for c, kind in zip(children, p[6].split("/")):  # its holder comes first, and holds the location unless "missing"
+            assert ids.index(c.parent.id) < ids.index(c.id) and c.begin is None
+            holder = s.mover if c.parent.id == MOVER_ID else next(o for o in s.others if o.id == c.parent.id)
+            assert getattr(holder, "parent", None) is None
+            hold = [h for h in holder.holding_locations if h.location == c.parent.location]
+            assert (not hold) if kind.startswith("missing") else hold[0].part == 0 if kind.startswith("part0") else hold[0].part >= 1
+        assert not any(t.others and any(o.id in {c.id for c in children} for o in t.others) for t in s.ticks.steps)
+    assert carriers == {"mover", "monster", "player", "creature"} and kinds == {"position", "part0", "missing"}
+
+
+def test_a_drawn_carry_scene_s_child_follows_its_walking_holder_in_the_port():
+    """A child held past its holder's parts sits at the holder's frame combined with the holding frame, every tick:
+    as the holder walks, the child's origin moves with it."""
+    from acconform.port.run import run_scene
+
+    f = np.float32
+    checked = 0
+    for s in _draw(80, 21, "carry"):
+        p = s.name.split(":")
+        if p[2] != "mover" or not p[3].startswith("walk") or p[5] != "1c" or p[6] != "position":
+            continue
+        child = next(o for o in s.others if o.parent is not None)
+        hold = next(h for h in s.mover.holding_locations if h.location == child.parent.location)
+        out = run_scene(s)
+        assert out.error is None, s.name
+        seen = []
+        for t in out.ticks:
+            c = next(o for o in t.others if o.id == child.id)
+            if c.cell >> 16 != t.cell >> 16:
+                continue
+            want = np.array(t.origin) + _rotate(t.orientation, hold.frame.origin)
+            assert np.allclose(c.origin, want, atol=1e-3), (s.name, c.origin, want)
+            seen.append((t.origin, c.origin))
+        assert seen[0][0] != seen[-1][0] and seen[0][1] != seen[-1][1], s.name  # both moved
+        checked += 1
+    assert checked >= 3
+
+
 def test_movers_scenes_are_the_same_for_a_seed():
     assert [s.dumps() for s in _draw(20, 77)] == [s.dumps() for s in _draw(20, 77)]
+    assert [s.dumps() for s in _draw(10, 78, "carry")] == [s.dumps() for s in _draw(10, 78, "carry")]
 
 
 def test_the_movers_kind_is_a_campaign_kind_the_port_runs():
