@@ -88,7 +88,10 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.PhysicsObj", ("update_object",
                                        "UpdateTime", "Acceleration", "Omega", "CachedVelocity", "JumpedThisFrame",
                                        "set_velocity", "set_local_velocity", "set_omega", "calc_acceleration",
-                                       "set_on_walkable", "RemoveLinkAnimations", "IsAnimating", "IsMovingOrAnimating")),
+                                       "set_on_walkable", "RemoveLinkAnimations", "IsAnimating", "IsMovingOrAnimating",
+                                       # several movers (scene/8 others): every mover's table read after each tick
+                                       "CollisionTable")),
+    ("ACE.Server.Physics.Collision.CollisionRecord", ("TouchedTime", "Ethereal")),
     ("ACE.Server.Physics.PartArray", ("Sequence",)),
     # children (scene/8 `parent`): the client's calls that parent a wielded item (Facade.SetParent)
     ("ACE.Server.Physics.PhysicsObj", ("ID", "SetPlacementFrame", "set_parent")),

@@ -671,25 +671,25 @@ namespace Acconform.Oracle
 
         /// <summary>port: set_projectile_physics_state. Creature.SetProjectilePhysicsState after InitPhysicsObj (EnterOthers
         /// made the PhysicsObj), through real ACE's WorldObject properties.</summary>
-        static void SetProjectilePhysicsState(ACE.Server.WorldObjects.WorldObject obj, PhysicsObj targetObj, Vector3 velocity,
+        static void SetProjectilePhysicsState(ACE.Server.WorldObjects.WorldObject proj, PhysicsObj targetObj, Vector3 velocity,
                                               Vector3 pos, Quaternion rotation)
         {
-            obj.ReportCollisions = true;
-            obj.Missile = true;
-            obj.AlignPath = true;
-            obj.PathClipped = true;
-            obj.Ethereal = false;
-            obj.IgnoreCollisions = false;
-            obj.PhysicsObj.Position.Frame.Origin = pos;
-            obj.PhysicsObj.Position.Frame.Orientation = rotation;
-            obj.PhysicsObj.Velocity = velocity;
-            obj.PhysicsObj.ProjectileTarget = targetObj;
-            if ((obj.RotationSpeed ?? 0) != 0)
+            proj.ReportCollisions = true;
+            proj.Missile = true;
+            proj.AlignPath = true;
+            proj.PathClipped = true;
+            proj.Ethereal = false;
+            proj.IgnoreCollisions = false;
+            proj.PhysicsObj.Position.Frame.Origin = pos;
+            proj.PhysicsObj.Position.Frame.Orientation = rotation;
+            proj.PhysicsObj.Velocity = velocity;
+            proj.PhysicsObj.ProjectileTarget = targetObj;
+            if ((proj.RotationSpeed ?? 0) != 0)
             {
-                obj.AlignPath = false;
-                obj.PhysicsObj.Omega = new Vector3((float)(Math.PI * 2 * obj.RotationSpeed), 0, 0);
+                proj.AlignPath = false;
+                proj.PhysicsObj.Omega = new Vector3((float)(Math.PI * 2 * proj.RotationSpeed), 0, 0);
             }
-            obj.PhysicsObj.set_active(true);
+            proj.PhysicsObj.set_active(true);
         }
 
         /// <summary>port: spell_projectile_setup. SpellProjectile.Setup after InitPhysicsObj (not Rolling Death, no wall or

@@ -99,7 +99,7 @@ def _facade_records(scene) -> tuple[bytes, list[tuple[str, int, bytes]]]:
 
     packed = pack_scene(scene)
     kinds = {v: k for k, v in _RECORD_KIND.items()}
-    at = 5 + len(_ticks(scene.ticks))  # PackVersion and engine mode, then the ticks
+    at = 5 + len(_ticks(scene.ticks, scene.others))  # PackVersion and engine mode, then the ticks
     table = packed[at:at + 1024]
     at += 1024
     out = []
@@ -128,6 +128,15 @@ def _facade_records(scene) -> tuple[bytes, list[tuple[str, int, bytes]]]:
         at += 48  # id, position, state, scale, did
         record_list()
     record_list()  # the mover's
+    from acconform.oracle.pack import _CHILD, _LAUNCH, _MOVER, _OTHER
+
+    at += _MOVER.size
+    (n,) = struct.unpack_from("<i", packed, at)
+    at += 4
+    for _ in range(n):  # the other movers' (scene/8): each one's Setup, then its fixed record, child and launch
+        record_list()
+        at += _OTHER.size + _CHILD.size
+        at += _LAUNCH.size if packed[at] else 1
     return table, out
 
 
