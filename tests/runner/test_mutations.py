@@ -147,12 +147,17 @@ FOUND_BY_THE_CORPUS = {
                                           "(doorway_placement_head_ahead)",
     "building_collisions_before_terrain": "an airborne mover on the ground whose head hits a low lintel: the terrain "
                                           "sets the contact plane before the shell answers Collided (low_lintel_airborne)",
+    # a part's DefaultScale shows only on a Setup of several parts with per-part scales: the bsp policy multipart
+    # draws one in ~6 bsp scenes, with per-part scales in some; shard bsp-0016 (multi-part statics) kills it at its
+    # 13th record (coreclr)
+    "multipart_part_scale_ignored": "a static Setup of several parts with per-part DefaultScale (bsp policy multipart)",
 }
 # the shard holding the records that kill a FOUND_BY_THE_CORPUS mutant, where the rest of the corpus
 # holds none (the whole corpus's seeded shuffle meets the first of them only after thousands of records)
 KILLED_IN_SHARD = {name: "buildings-0005" for name in ("building_check_ignored", "building_hits_interior_cell_never_set",
                                                         "building_transit_first_sphere_only",
                                                         "building_collisions_before_terrain")}
+KILLED_IN_SHARD["multipart_part_scale_ignored"] = "bsp-0016"
 
 
 @pytest.mark.slow
