@@ -126,8 +126,8 @@ def _crossing(draw, x0: float, y0: float, ux: float, uy: float, d: float, dt: fl
     short of the target) when the projectile passes it, give or take a lag (the projectile's first step is the tick
     after its launch; gravity and the target's lead ignored). Across the line it walks as far again, then stops;
     along it (toward the launcher, or away ahead of the projectile) it walks slowly from no nearer the target or the
-    launcher than a body's width, and stops 0.3 s after. Returns where it starts, its velocity per tick, and (way,
-    start, heading)."""
+    launcher than a body's width, and stops 0.3 s after. Returns its velocity per tick and (way, where it starts, its
+    heading)."""
     way = draw(CROSSINGS)
     v = float(dr.take(draw, WALK_SPEEDS))
     dc = 1.8 + max(d - 3.6, 0.0) * float(dr.take(draw, CROSS_AT))
