@@ -15,9 +15,15 @@ heading; the target 3-25 m along it. Policies:
   (either side, or touching exactly), the target beyond;
 - ``moving_target``: a monster walking toward, away from or across the line, held every tick (the arrow
   leads it: the moving-target solver; a tracking spell leads it too);
-- ``wall``: the wall itself is the target (a static).
+- ``wall``: the wall itself is the target (a static);
+- ``bystander``: a player (the mover, or another player: NPK, PK or PKLite, a body of two spheres reaching above
+  the projectile's line) crosses the line of flight (across it, or along it toward or away from the launcher, a
+  slow walk) timed to reach it as the projectile passes (a lag of up to 0.3 s either way). The projectile is
+  launched at a monster or another player by a monster or another player (the mover crossing), or by the mover
+  (another player crossing): a player's transition meets a Missile whose ProjectileTarget is someone else, which
+  it ignores (ObjectInfo.MissileIgnore); sometimes the crossing player is the target instead.
 
-The launcher is the player (the mover) three times in four, else a monster launching at the player. The
+Outside ``bystander``, the launcher is the player (the mover) three times in four, else a monster launching at the player. The
 projectile: an arrow (an Ammunition, one sphere of 2-10 cm, Gravity) two times in three, else a spell (a
 SpellProjectile, 10-30 cm; an arc one time in three, tracking half the time); it spawns 0.8 m ahead at eye height
 (1-1.5 m), is made at the start and listed before or after the monsters (which the server steps in the order
@@ -30,7 +36,7 @@ import math
 
 from hypothesis import strategies as st
 
-from acconform.flags import PhysicsState, TransientState
+from acconform.flags import PhysicsState, PlayerKillerStatus, TransientState
 from acconform.numerics import to_f32
 from acconform.scene import (CylSphereShape, ContactPlane, Frame, Landblock, Launch, Mover, OtherInputs, OtherMover,
                              Placement, PlaneRec, Position, Scene, SphereRec, StaticObject, Ticks, TickStep, validate_scene)
@@ -39,6 +45,7 @@ from acconform.strategies.shapes import box
 from . import draws as dr
 
 PLAYER = 0x50000001
+OTHER = 0x50000002  # another player (bystander)
 MONSTER = 0x80000001
 CASTER = 0x80000002
 PROJECTILE = 0x80000010
@@ -48,8 +55,9 @@ POST = 0x70000003
 WALKING = int(TransientState.Contact | TransientState.OnWalkable | TransientState.Active)
 EDGE_SLIDE = int(PhysicsState.Gravity | PhysicsState.EdgeSlide)
 BODY = (SphereRec((0.0, 0.0, 0.48), 0.48),)
+TALL = (SphereRec((0.0, 0.0, 0.48), 0.48), SphereRec((0.0, 0.0, 1.44), 0.48))  # up to 1.92 m: across a 1-1.5 m flight
 
-POLICIES = st.sampled_from(("creature_at_wall", "through_door", "graze_cylsphere", "moving_target", "wall"))
+POLICIES = st.sampled_from(("creature_at_wall", "through_door", "graze_cylsphere", "moving_target", "wall", "bystander"))
 BLOCKS = st.sampled_from((0xA9B4, 0x7F7F, 0x2B10, 0xC6A0))
 HEIGHTS = dr.ints(5, 60)  # the land height index: z = 2 m per index
 SPOTS = dr.f32(60.0, 132.0)
@@ -70,6 +78,15 @@ WAYS = st.sampled_from(("toward", "away", "across", "across"))
 WALK_SPEEDS = dr.OneOf(st.sampled_from((3.0, 1.0, 6.0)), dr.f32(0.5, 8.0))
 LAUNCH_TICKS = dr.ints(0, 5)
 TICK_COUNTS = dr.OneOf(dr.ints(20, 40), dr.ints(40, 60))
+ROLES = st.sampled_from(("mover_crosses", "mover_crosses", "other_crosses", "mover_is_target", "other_is_target"))
+BY_LAUNCHERS = st.sampled_from((CASTER, CASTER, OTHER))
+BY_TARGETS = st.sampled_from((MONSTER, MONSTER, OTHER))
+CROSSINGS = st.sampled_from(("across", "across", "toward", "away"))
+CROSS_AT = dr.f32(0.0, 1.0)
+MEET_LAGS = dr.OneOf(st.sampled_from((0.0,)), dr.f32(-0.3, 0.3))  # seconds the player reaches the line after the projectile
+PLAYER_PKS = st.sampled_from(tuple(int(s) for s in (PlayerKillerStatus.NPK, PlayerKillerStatus.NPK, PlayerKillerStatus.PK,
+                                                    PlayerKillerStatus.PKLite)))
+PK_NAMES = {int(s): s.name.lower() for s in PlayerKillerStatus}
 DTS = st.sampled_from((1 / 30, 1 / 30, 1 / 30, 1 / 60, 1 / 10))
 
 
@@ -97,6 +114,36 @@ def _monster(ident: int, lb: int, x: float, y: float, z: float) -> OtherMover:
                       state=EDGE_SLIDE, transient_state=WALKING)
 
 
+def _player(ident: int, body, lb: int, x: float, y: float, z: float, ux: float, uy: float, pks: int) -> OtherMover:
+    x, y = to_f32(x), to_f32(y)
+    return OtherMover(ident, "player", body, Position(_cell(lb, x, y), Frame((x, y, to_f32(z)), _heading(ux, uy))), 0.4, 0.4,
+                      state=EDGE_SLIDE, transient_state=WALKING, player_killer_status=pks)
+
+
+def _crossing(draw, x0: float, y0: float, ux: float, uy: float, d: float, dt: float, n: int, launch_tick: int,
+              speed: float):
+    """A bystander's walk: it reaches the line of flight at a point 1.8 m or more from the launcher (at least 1.2 m
+    short of the target) when the projectile passes it, give or take a lag (the projectile's first step is the tick
+    after its launch; gravity and the target's lead ignored). Across the line it walks as far again, then stops;
+    along it (toward the launcher, or away ahead of the projectile) it walks slowly from no nearer the target or the
+    launcher than a body's width, and stops 0.3 s after. Returns its velocity per tick and (way, where it starts, its
+    heading)."""
+    way = draw(CROSSINGS)
+    v = float(dr.take(draw, WALK_SPEEDS))
+    dc = 1.8 + max(d - 3.6, 0.0) * float(dr.take(draw, CROSS_AT))
+    t_meet = max(dt, (launch_tick + 1) * dt + max(dc - 0.8, 0.0) / speed + float(dr.take(draw, MEET_LAGS)))
+    side = 1.0 if draw(dr.BOOLEANS) else -1.0
+    wx, wy = {"across": (side * uy, -side * ux), "toward": (-ux, -uy), "away": (ux, uy)}[way]
+    room = {"across": 15.0, "toward": max(d - dc - 1.0, 0.05), "away": dc - 1.3}[way]
+    v = min(v, room / t_meet)
+    cx, cy = x0 + ux * dc, y0 + uy * dc
+    start = (cx - wx * v * t_meet, cy - wy * v * t_meet)
+    walking = t_meet + (t_meet if way == "across" else 0.3)
+    vel = (to_f32(wx * v), to_f32(wy * v), 0.0)
+    walk = [vel if k * dt < walking else (0.0, 0.0, 0.0) for k in range(n)]
+    return walk, (way, start, (wx, wy))
+
+
 def draw_missile_scene(draw) -> Scene:
     lb = draw(BLOCKS)
     h = dr.take(draw, HEIGHTS)
@@ -118,14 +165,34 @@ def draw_missile_scene(draw) -> Scene:
     objects, monsters = [], []
     mover_inputs = [{} for _ in range(n)]
     monster_velocity = None
-    if player_launches:
+    crosser = None  # bystander: the player who crosses the line of flight
+    if policy == "bystander":
+        role = draw(ROLES)
+        crosser = PLAYER if role.startswith("mover") else OTHER
+        if role == "mover_crosses":
+            launcher = draw(BY_LAUNCHERS)
+            target = MONSTER if launcher == OTHER else draw(BY_TARGETS)
+        elif role == "mover_is_target":
+            launcher, target = draw(BY_LAUNCHERS), PLAYER
+        else:  # the mover launches: at a monster another player crosses in front of, or at that player
+            launcher, target = PLAYER, MONSTER if role == "other_crosses" else OTHER
+        player_launches = launcher != CASTER
+        launcher_at = mover_at = (x0, y0)
+        mover_pks, other_pks = draw(PLAYER_PKS), draw(PLAYER_PKS)
+        for who, (wx, wy) in ((launcher, (x0, y0)), (target, (tx, ty))):  # those who stand
+            if who in (CASTER, MONSTER):
+                monsters.append(_monster(who, lb, wx, wy, ground))
+            elif who == OTHER and crosser != OTHER:
+                monsters.append(_player(OTHER, BODY, lb, wx, wy, ground, ux, uy, other_pks))
+    elif player_launches:
         launcher_at, launcher = (x0, y0), PLAYER
         mover_at = (x0, y0)
     else:
         launcher_at, launcher = (x0, y0), CASTER
         mover_at = (tx, ty)
         monsters.append(_monster(CASTER, lb, x0, y0, ground))
-    target = MONSTER
+    if crosser is None:
+        target = MONSTER
     if policy == "wall":
         target = WALL
     monster_at = (tx, ty)
@@ -161,7 +228,7 @@ def draw_missile_scene(draw) -> Scene:
         speed = float(dr.take(draw, WALK_SPEEDS))
         vx, vy = {"toward": (-ux, -uy), "away": (ux, uy), "across": (uy, -ux)}[way]
         monster_velocity = (to_f32(vx * speed), to_f32(vy * speed), 0.0)
-    if target == MONSTER:
+    if target == MONSTER and policy != "bystander":
         if player_launches:
             monsters.append(_monster(MONSTER, lb, *monster_at, ground))
         else:
@@ -189,20 +256,37 @@ def draw_missile_scene(draw) -> Scene:
         projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
                                 state=0, transient_state=0, launch=launch)
+    walkers = {}  # id -> velocity, per tick
+    if crosser is not None:
+        walk, walker = _crossing(draw, x0, y0, ux, uy, d, dt, n, launch_tick, float(launch.speed))
+        way = walker[0]
+        if crosser == PLAYER:
+            mover_at = walker[1]
+            for k in range(n):
+                mover_inputs[k]["velocity"] = walk[k]
+        else:
+            walkers[OTHER] = walk
+            monsters.append(_player(OTHER, TALL, lb, *walker[1], ground, *walker[2], other_pks))
     others = tuple(monsters) + (projectile,)
     if monsters and draw(dr.BOOLEANS):  # the projectile entered first: stepped before the monsters
         others = (projectile,) + tuple(monsters)
 
     mx, my = mover_at
     cell = _cell(lb, mx, my)
-    mover = Mover(spheres=BODY, begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(ux, uy))),
+    facing = walker[2] if crosser == PLAYER else (ux, uy)
+    mover = Mover(spheres=TALL if crosser == PLAYER else BODY,
+                  begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(*facing))),
                   end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
-                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"))
+                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"),
+                  player_killer_status=mover_pks if crosser is not None else int(PlayerKillerStatus.NPK))
     steps = []
     for k in range(n):
         theirs = (OtherInputs(MONSTER, velocity=monster_velocity),) if monster_velocity is not None else ()
+        theirs += tuple(OtherInputs(i, velocity=v[k]) for i, v in walkers.items())
         steps.append(TickStep(dt, others=theirs, **mover_inputs[k]))
     land = Landblock(lb << 16 | 0xFFFF, (h,) * 81, (0,) * 81)
     name = f"missiles:{policy}:{'arrow' if arrow else 'spell'}:{'player' if player_launches else 'monster'}"
+    if crosser is not None:  # who crosses (or is the target), how, and the players' PlayerKillerStatus
+        name += f":{role}:{way}:{PK_NAMES[mover_pks]}:{PK_NAMES[other_pks]}"
     return validate_scene(Scene((land,), mover, tuple(objects), engine_mode="server", name=name,
                                 ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))

@@ -33,12 +33,53 @@ def test_every_missile_scene_validates_in_format_8_with_one_launch_inside_its_ti
 
 def test_missile_scenes_draw_every_policy_both_projectiles_both_launchers_and_both_orders(missile_scenes):
     names = [s.name.split(":") for s in missile_scenes]
-    assert {n[1] for n in names} == {"creature_at_wall", "through_door", "graze_cylsphere", "moving_target", "wall"}
+    assert {n[1] for n in names} == {"creature_at_wall", "through_door", "graze_cylsphere", "moving_target", "wall",
+                                     "bystander"}
     assert {n[2] for n in names} == {"arrow", "spell"} and {n[3] for n in names} == {"player", "monster"}
     firsts = {s.others[0].launch is not None for s in missile_scenes if len(s.others) > 1}
     assert firsts == {True, False}  # the projectile stepped before the monsters, and after them
     spells = [_projectile(s).launch for s in missile_scenes if _projectile(s).weenie == "spell_projectile"]
     assert {la.arc for la in spells} == {True, False} and {la.tracking for la in spells} == {True, False}
+
+
+def test_bystander_scenes_draw_every_role_and_way_and_npk_and_pk_players(missile_scenes):
+    names = [s.name.split(":") for s in missile_scenes if s.name.startswith("missiles:bystander:")]
+    assert {n[4] for n in names} == {"mover_crosses", "other_crosses", "mover_is_target", "other_is_target"}
+    assert {n[5] for n in names} == {"across", "toward", "away"}
+    assert {"npk", "pk"} <= {n[6] for n in names} and {"npk", "pk"} <= {n[7] for n in names}
+    for s in missile_scenes:
+        if s.name.startswith("missiles:bystander:"):
+            players = {o.id for o in s.others if o.weenie == "player"}
+            assert _projectile(s).launch.target != _projectile(s).launch.launcher and players <= {0x50000002}
+
+
+def test_in_the_port_a_bystander_player_ignores_a_missile_aimed_at_someone_else(missile_scenes, monkeypatch):
+    """ObjectInfo.MissileIgnore's arm no other policy takes: a player's transition meets a Missile whose
+    ProjectileTarget is set and is someone else, and passes it (True); a crossing player that is the target does
+    not (False)."""
+    from acconform.flags import PhysicsState
+    from acconform.port.run import run_scene
+    from acconform.port.transition.object_info import ObjectInfo
+
+    original = ObjectInfo.missile_ignore
+    seen = []
+
+    def spy(self, collide_obj):
+        ignored = original(self, collide_obj)
+        if collide_obj.state & PhysicsState.Missile and self.object.is_player:
+            seen.append((ignored, collide_obj.projectile_target is self.object))
+        return ignored
+
+    monkeypatch.setattr(ObjectInfo, "missile_ignore", spy)
+    arms = collections.Counter()
+    for s in [s for s in missile_scenes if s.name.startswith("missiles:bystander:")][:16]:
+        seen.clear()
+        assert run_scene(s, runtime="coreclr").error is None
+        arms[s.name.split(":")[4]] += any(ignored for ignored, _ in seen)
+        arms["target"] += any(mine and not ignored for ignored, mine in seen)
+        assert not any(mine and ignored for ignored, mine in seen)
+    assert arms["mover_crosses"] >= 2 and arms["other_crosses"] >= 1 and arms["target"] >= 1, arms
+    assert arms["mover_is_target"] == arms["other_is_target"] == 0, arms
 
 
 def test_the_port_flies_most_missile_scenes_projectiles_into_something(missile_scenes):
