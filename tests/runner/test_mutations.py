@@ -212,7 +212,10 @@ MOVERS_SHRUNK_TICKS = 45
 def test_the_tick_records_kill_a_planted_tick_loop_bug_and_shrink_it_to_a_few_ticks(index):
     r = tick_kill(index, "coreclr", first=KILLING_RECORDS.get(MUTATIONS[index].name, ()))
     assert r["killed"], f"{MUTATIONS[index].name} ({MUTATIONS[index].what}) survives {r['records']} tick records"
-    if MUTATIONS[index].name.startswith("movers_"):
+    # a record of several movers, a projectile or a carried child (the named issue-41 scenes come first) keeps the
+    # ticks of an approach or a flight
+    if MUTATIONS[index].name.startswith("movers_") or r["record"].startswith(
+            ("tests/oracle/mover_scenes.py", "tests/oracle/missile_scenes.py", "tests/oracle/child_scenes.py")):
         assert r["shrunk_ticks"] <= MOVERS_SHRUNK_TICKS and r["shrunk_objects"] <= 1 and r["shrunk_landblocks"] <= 1, r
         assert r["shrunk_ticks"] < r["ticks"] or r["first_differing_tick"] == r["ticks"] - 1, r
         return
