@@ -796,6 +796,32 @@ class DoorInput:
         return DoorInput(r["object"].id_(), r["ethereal"].bool_())
 
 
+def _setters_json(step, d: dict) -> dict:
+    """The setters and the jump (OTHER_INPUTS: a TickStep's first inputs, an OtherInputs' all), written into `d`."""
+    if step.state is not None:
+        d["state"] = flag_names(PhysicsState, step.state)
+    if step.transient_state is not None:
+        d["transient_state"] = flag_names(TransientState, step.transient_state)
+    for name in _TICK_VECTORS:
+        v = getattr(step, name)
+        if v is not None:
+            d[name] = write_vec(v)
+    return d
+
+
+def _read_setters(r: Reader) -> dict:
+    """The setters and the jump a step or another mover's inputs give, as keyword arguments."""
+    kw = {}
+    if r.has("state"):
+        kw["state"] = r["state"].flags(PhysicsState)
+    if r.has("transient_state"):
+        kw["transient_state"] = r["transient_state"].flags(TransientState)
+    for name in _TICK_VECTORS:
+        if r.has(name):
+            kw[name] = r[name].vec3()
+    return kw
+
+
 # the inputs another mover takes (scene/8, ticks.steps[].others): the PhysicsObj's own setters and a player's jump
 OTHER_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega", "jump", "sequence_velocity",
                 "sequence_omega")
@@ -820,28 +846,13 @@ class OtherInputs:
     sequence_omega: Vec3 | None = None
 
     def to_json(self):
-        d = {"id": write_id(self.id)}
-        if self.state is not None:
-            d["state"] = flag_names(PhysicsState, self.state)
-        if self.transient_state is not None:
-            d["transient_state"] = flag_names(TransientState, self.transient_state)
-        for name in _TICK_VECTORS:
-            v = getattr(self, name)
-            if v is not None:
-                d[name] = write_vec(v)
+        d = _setters_json(self, {"id": write_id(self.id)})
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherInputs":
         r.obj({"id", *OTHER_INPUTS})
-        kw = {}
-        if r.has("state"):
-            kw["state"] = r["state"].flags(PhysicsState)
-        if r.has("transient_state"):
-            kw["transient_state"] = r["transient_state"].flags(TransientState)
-        for name in _TICK_VECTORS:
-            if r.has(name):
-                kw[name] = r[name].vec3()
+        kw = _read_setters(r)
         return OtherInputs(r["id"].id_(), **kw)
 
 
@@ -881,15 +892,7 @@ class TickStep:
     others: tuple["OtherInputs", ...] = ()  # scene/8: the other movers' inputs, applied after the mover's, in this order
 
     def to_json(self):
-        d = {"dt": write_f64(self.dt)}
-        if self.state is not None:
-            d["state"] = flag_names(PhysicsState, self.state)
-        if self.transient_state is not None:
-            d["transient_state"] = flag_names(TransientState, self.transient_state)
-        for name in _TICK_VECTORS:
-            v = getattr(self, name)
-            if v is not None:
-                d[name] = write_vec(v)
+        d = _setters_json(self, {"dt": write_f64(self.dt)})
         if self.request_pos is not None:
             d["request_pos"] = self.request_pos.to_json()
         if self.motion is not None:
@@ -949,14 +952,7 @@ class TickStep:
         dt = r["dt"].f64()
         if dt < 0:
             r["dt"].fail(f"a tick's dt is the time the clock advances: 0 or more seconds, got {dt!r}")
-        kw = {}
-        if r.has("state"):
-            kw["state"] = r["state"].flags(PhysicsState)
-        if r.has("transient_state"):
-            kw["transient_state"] = r["transient_state"].flags(TransientState)
-        for name in _TICK_VECTORS:
-            if r.has(name):
-                kw[name] = r[name].vec3()
+        kw = _read_setters(r)
         if driver == "request_pos":
             if not r.has("request_pos"):
                 raise InvalidScene(_p(r.path, "request_pos"), "missing: driver request_pos moves the mover to a "

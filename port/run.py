@@ -503,22 +503,8 @@ def handle_action_jump(mover: PhysicsObj, velocity) -> None:
 
 @harness("a tick step's inputs, in the scene's order, as the oracle's facade applies them")
 def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) -> None:
-    if step.state is not None:
-        mover.state = step.state
-    if step.transient_state is not None:
-        mover.transient_state = step.transient_state
-    if step.velocity is not None:
-        mover.set_velocity(mode.vec(*step.velocity), False)
-    if step.local_velocity is not None:
-        mover.set_local_velocity(mode.vec(*step.local_velocity), False)
-    if step.omega is not None:
-        mover.set_omega(mode.vec(*step.omega), False)
-    if step.jump is not None:
-        handle_action_jump(mover, mode.vec(*step.jump))
-    if step.sequence_velocity is not None:
-        mover.part_array.sequence.set_velocity(mode.vec(*step.sequence_velocity))
-    if step.sequence_omega is not None:
-        mover.part_array.sequence.set_omega(mode.vec(*step.sequence_omega))
+    """The setters and the jump first (TICK_INPUTS begins with OTHER_INPUTS, in their order), then the rest."""
+    apply_other_inputs(mover, step, mode)
     if step.motion is not None:
         move_to_state(mover, step.motion, mode)
     if step.stop is not None:
@@ -541,7 +527,8 @@ def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) ->
 
 @harness("another mover's tick inputs (scene/8 ticks.steps[].others), as the oracle's facade applies them")
 def apply_other_inputs(obj: PhysicsObj, inputs, mode) -> None:
-    """The setters and the jump, as `apply_inputs` applies the mover's, in OTHER_INPUTS order."""
+    """The setters and the jump in OTHER_INPUTS order (`inputs`: an OtherInputs, or the mover's TickStep, whose
+    TICK_INPUTS begin with the same inputs in the same order)."""
     if inputs.state is not None:
         obj.state = inputs.state
     if inputs.transient_state is not None:
