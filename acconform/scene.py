@@ -1158,6 +1158,21 @@ class MoverSkills:
 DEFAULT_SKILLS = MoverSkills()
 
 
+def _read_body(r: Reader) -> tuple:
+    """A mover's Setup as the scene gives it (the mover's and another mover's): its spheres (1 or 2), scale and step
+    heights, each checked."""
+    spheres = tuple(SphereRec.from_json(x) for x in r["spheres"].list(min_count=1, max_count=2))
+    scale = r["scale"].f32() if r.given("scale") else 1.0
+    if not scale > 0:
+        r["scale"].fail(f"scale must be positive, got {scale}")
+    up = r["step_up_height"].f32()
+    down = r["step_down_height"].f32()
+    for name, v in (("step_up_height", up), ("step_down_height", down)):
+        if v < 0:
+            r[name].fail(f"a step height cannot be negative, got {v}")
+    return spheres, scale, up, down
+
+
 @dataclass(frozen=True, slots=True)
 class Mover:
     """The moving PhysicsObj: its Setup spheres and step heights, flags, and the path to try
@@ -1226,15 +1241,7 @@ class Mover:
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
                *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ()),
                *(("holding_locations",) if children else ())})
-        spheres = tuple(SphereRec.from_json(s) for s in r["spheres"].list(min_count=1, max_count=2))
-        scale = r["scale"].f32() if r.given("scale") else 1.0
-        if not scale > 0:
-            r["scale"].fail(f"scale must be positive, got {scale}")
-        up = r["step_up_height"].f32()
-        down = r["step_down_height"].f32()
-        for name, v in (("step_up_height", up), ("step_down_height", down)):
-            if v < 0:
-                r[name].fail(f"a step height cannot be negative, got {v}")
+        spheres, scale, up, down = _read_body(r)
         return Mover(
             spheres=spheres,
             begin=Position.from_json(r["begin"]),
@@ -1389,15 +1396,7 @@ class OtherMover:
             what = "a player's id is in ACE's player range" if weenie == "player" else \
                 "a server's generated object has an id in ACE's dynamic range"
             r["id"].fail(f"{what} (0x{low:08X}..0x{high:08X}), got 0x{oid:08X}")
-        spheres = tuple(SphereRec.from_json(x) for x in r["spheres"].list(min_count=1, max_count=2))
-        scale = r["scale"].f32() if r.given("scale") else 1.0
-        if not scale > 0:
-            r["scale"].fail(f"scale must be positive, got {scale}")
-        up = r["step_up_height"].f32()
-        down = r["step_down_height"].f32()
-        for name, v in (("step_up_height", up), ("step_down_height", down)):
-            if v < 0:
-                r[name].fail(f"a step height cannot be negative, got {v}")
+        spheres, scale, up, down = _read_body(r)
         launch = None
         if weenie in PROJECTILE_WEENIES:
             if not r.given("launch"):

@@ -299,20 +299,6 @@ def _collisions_at(data, pos: int):
     return tuple(out), pos + n * _COLLISION.size
 
 
-_PLANE_AT = _TICK.size - 4 - 1 - 12 - 16  # the ContactPlane's 16 bytes within a tick's fixed part
-
-
-def _plane(data, pos: int, v) -> PlaneState:
-    """A tick's ContactPlane, shared between ticks with the same bits (a mover on one plane for many ticks)."""
-    key = bytes(data[pos:pos + 16])
-    p = _parts.get(key)
-    if p is None:
-        if len(_parts) >= _PARTS_LIMIT:
-            _parts.clear()
-        p = _parts[key] = _make_plane(v[26:29], v[29])
-    return p
-
-
 def _state_at(data, pos: int):
     """One TickState's fields (Facade.WriteState) from `pos`: (its values as TickState's first 18 positional
     arguments, the offset after them)."""
@@ -326,7 +312,7 @@ def _state_at(data, pos: int):
     else:
         motion, at = _motion_at(data, at)
     return (v[0] != 0, v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23], v[23], v[24], v[25],
-            _plane(data, pos + _PLANE_AT, v), v[30:33], v[33] != 0, shadows, motion), at
+            _make_plane(v[26:29], v[29]), v[30:33], v[33] != 0, shadows, motion), at
 
 
 def _ticks_at(data, pos: int):
