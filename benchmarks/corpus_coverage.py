@@ -623,6 +623,8 @@ def main(argv=None) -> int:
     ap.add_argument("-j", "--workers", type=int, default=1)
     ap.add_argument("--json", type=Path, default=None)
     ap.add_argument("--missed", type=Path, default=None)
+    ap.add_argument("--unlisted", type=Path, default=None,
+                    help="with --kernel: write the branches never taken and not listed (the work left), one per line")
     ap.add_argument("--markdown", type=Path, default=None)
     ap.add_argument("--summary", action="store_true", help="print the summary lines only, not the per-module table")
     ap.add_argument("--kernel", action="store_true",
@@ -729,6 +731,8 @@ def main(argv=None) -> int:
               f"corpus' reach ({UNREACHABLE.relative_to(UNREACHABLE.parents[2])}); {len(unexplained)} are not listed yet")
         print(kinds_line(counts))
         listed = len(missed) - len(unexplained)
+        if a.unlisted:
+            a.unlisted.write_text("".join(m + "\n" for m in missed if m in set(unexplained)))
         print(f"of the {b - listed} branches not listed (those a scene can make ACE take, or not yet shown "
               f"otherwise) the corpus takes {t}: {pct(t, b - listed):.1f} %")
         _, m_taken, m_untaken = motion_layer_share(cov, unexplained)
