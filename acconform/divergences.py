@@ -71,7 +71,10 @@ KNOWN: tuple[Known, ...] = (
           "`MaxQuantum` 0.2 s (5 fps): the same tick is one sub-step", DOCS + "; " + DERETH + " (the quantum)",
           "tests/port/test_physics_obj_tick.py::test_a_tick_of_0_15_s_is_two_sub_steps_as_aces_max_quantum_is_0_1_not_retails_0_2",
           SourceCheck("PhysicsGlobals.cs", ("public const float MaxQuantum = 0.1f;", "//public const float MaxQuantum = 0.2f;")),
-          SourceCheck("constants.py", ("MAX_QUANTUM = f32_from_bits(0x3DCCCCCD)",))),
+          SourceCheck("constants.py", ("MAX_QUANTUM = f32_from_bits(0x3DCCCCCD)",)),
+          # another quantum shows as the arguments update_object hands its sub-steps; a different callee (another
+          # mover stepped first, a step skipped) is no quantum of retail's
+          ("args",)),
     Known("sledding_threshold", ("PhysicsObj.cs:calc_friction",),
           "takes the low-friction sledding branch (0.2) at 2.5 m/s or more when the contact plane is nearly flat: "
           "`ContactPlane.Normal.Z > 0.99999536f`",

@@ -67,3 +67,9 @@ def test_a_first_divergence_in_a_rows_routine_and_field_is_known_and_another_is_
     assert known_for(_divergence("LandCell.cs:FindEnvCollisions", "path.check_pos[2]")) is None
     assert known_for(_divergence("Transition.cs:StepDown", "result")) is None
     assert known_for(None) is None
+
+
+def test_a_quantum_handed_on_by_update_object_is_max_quantum_but_another_callee_is_not():
+    # the stepped-first mover mutant parts at update_object's `anchor` (another mover's sub-step called first)
+    assert known_for(_divergence("PhysicsObj.cs:update_object", "args[1]")).name == "max_quantum"
+    assert known_for(_divergence("PhysicsObj.cs:update_object", "anchor")) is None
