@@ -109,7 +109,7 @@ from .scene import (DEFAULT_SKILLS, MoverSkills, BSPLeaf, ChildOf, BSPShape, Bui
                     StaticObject,
                     ENV_CELL_FIRST, newell_normal)
 from .staging import MOVER_ID
-from .motion_scene import ANIMATION_BASE, MOTION_TABLE_ID, cycle_key
+from .motion_scene import ANIMATION_BASE, HOOKS, MOTION_TABLE_ID, cycle_key
 
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
@@ -367,12 +367,15 @@ def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
 
 def mover_records(mover: Mover) -> ObjectRecords:
     """The DAT records the mover is made from: its Setup (did) and the Setup's one part; with a motion
-    table (scene/6), the Setup names it (DefaultMotionTable) and its MotionTable and Animations follow."""
+    table (scene/6), the Setup names it (DefaultMotionTable; and the table's default_animation, scene/8, as its
+    DefaultAnimation) and its MotionTable and Animations follow."""
     part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
     table = mover.motion_table
     body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
                  step_up=mover.step_up_height, step_down=mover.step_down_height,
                  default_motion_table=MOTION_TABLE_ID if table is not None else 0,
+                 default_animation=ANIMATION_BASE + table.default_animation
+                 if table is not None and table.default_animation is not None else 0,
                  holding_locations=holding_location_triples(mover.holding_locations))
     records = (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body))
     if table is not None:
@@ -405,8 +408,8 @@ _IDENTITY_PART = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
 
 def motion_records(table) -> tuple:
     """A scene's motion table (acconform.motion_scene.MotionTableSpec) as DAT records: the MotionTable
-    (MOTION_TABLE_ID), then animation i as Animation ANIMATION_BASE + i, with its PosFrames and, for the
-    mover's one part, an identity frame per frame and no hooks."""
+    (MOTION_TABLE_ID), then animation i as Animation ANIMATION_BASE + i, with its PosFrames (none when
+    its root_motion is off) and, for the mover's one part, an identity frame per frame with its hooks."""
     def data(entry) -> MotionDataRec:
         d = entry.data
         return MotionDataRec(tuple(AnimDataRec(ANIMATION_BASE + a.animation, a.low_frame, a.high_frame, a.framerate)
@@ -420,7 +423,10 @@ def motion_records(table) -> tuple:
                                {cycle_key(e.style, e.motion): data(e) for e in table.modifiers}, links)]
     for i, a in enumerate(table.animations):
         frames = tuple((f.origin, f.orientation) for f in a.pos_frames)
-        out.append(animation_record(ANIMATION_BASE + i, 1, [AnimationFrameRec((_IDENTITY_PART,)) for _ in frames], frames))
+        hooks = [tuple(HookRec(HOOKS[h.hook][0], h.direction, HOOKS[h.hook][1]) for h in a.hooks if h.frame == k)
+                 for k in range(len(frames))]
+        out.append(animation_record(ANIMATION_BASE + i, 1, [AnimationFrameRec((_IDENTITY_PART,), hooks[k]) for k in range(len(frames))],
+                                    frames if a.root_motion else None))
     return tuple(out)
 
 

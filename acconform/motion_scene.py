@@ -130,21 +130,72 @@ class MotionEntry:
         return MotionEntry(style, _command(r["motion"]), MotionDataSpec.read(r, n_animations))
 
 
-@dataclass(frozen=True, slots=True)
-class AnimationSpec:
-    """An Animation: its root motion, one PosFrame (a Frame) per frame."""
+# the hooks a scene's animation may carry (ACE.Entity.Enum.AnimationHookType names), with the bytes
+# DatLoader's hook class reads after type and direction: AnimHook.Execute acts on AnimationDone only
+# (PhysicsObj.Hook_AnimDone); ACE's server physics ignores the others (their Execute arms are the client's,
+# Ethereal's is commented out)
+HOOKS = {"AnimationDone": (4, b""), "DefaultScript": (17, b""), "Ethereal": (6, b"\x01\x00\x00\x00"),
+         "Sound": (1, b"\x00\x00\x00\x00")}  # name: (AnimationHookType, the fields' bytes)
+HOOK_DIRECTIONS = {"Backward": -1, "Both": 0, "Forward": 1}
 
-    pos_frames: tuple  # of scene.Frame
+
+@dataclass(frozen=True, slots=True)
+class HookSpec:
+    """An AnimationHook on frame `frame` of an animation: its type (a HOOKS name) and direction
+    (AnimationHookDir: Backward -1, Both 0, Forward 1: Sequence.execute_hooks runs a hook when its
+    direction is Both or the way the frame is crossed)."""
+
+    frame: int
+    hook: str
+    direction: int = 0
 
     def to_json(self):
-        return {"pos_frames": [f.to_json() for f in self.pos_frames]}
+        d = {"frame": self.frame, "hook": self.hook}
+        if self.direction:
+            d["direction"] = {v: k for k, v in HOOK_DIRECTIONS.items()}[self.direction]
+        return d
+
+    @staticmethod
+    def from_json(r: Reader, n_frames: int) -> "HookSpec":
+        r.obj({"frame", "hook", "direction"})
+        hook = r["hook"].str_()
+        if hook not in HOOKS:
+            r["hook"].fail(f"unknown hook {hook!r} (known: {', '.join(HOOKS)})")
+        direction = 0
+        if r.given("direction"):
+            name = r["direction"].str_()
+            if name not in HOOK_DIRECTIONS:
+                r["direction"].fail(f"unknown hook direction {name!r} (known: {', '.join(HOOK_DIRECTIONS)})")
+            direction = HOOK_DIRECTIONS[name]
+        return HookSpec(r["frame"].int_(0, n_frames - 1), hook, direction)
+
+
+@dataclass(frozen=True, slots=True)
+class AnimationSpec:
+    """An Animation: its root motion, one PosFrame (a Frame) per frame (`root_motion` false: the
+    Animation has as many frames but no PosFrames, its Flags without them), and its hooks."""
+
+    pos_frames: tuple  # of scene.Frame
+    root_motion: bool = True
+    hooks: tuple = ()  # of HookSpec
+
+    def to_json(self):
+        d = {"pos_frames": [f.to_json() for f in self.pos_frames]}
+        if not self.root_motion:
+            d["root_motion"] = False
+        if self.hooks:
+            d["hooks"] = [h.to_json() for h in self.hooks]
+        return d
 
     @staticmethod
     def from_json(r: Reader) -> "AnimationSpec":
         from .scene import Frame
 
-        r.obj({"pos_frames"})
-        return AnimationSpec(tuple(Frame.from_json(f) for f in r["pos_frames"].list(min_count=1)))
+        r.obj({"pos_frames", "root_motion", "hooks"})
+        frames = tuple(Frame.from_json(f) for f in r["pos_frames"].list(min_count=1))
+        return AnimationSpec(frames, r["root_motion"].bool_() if r.given("root_motion") else True,
+                             tuple(HookSpec.from_json(h, len(frames)) for h in r["hooks"].list(max_count=64))
+                             if r.given("hooks") else ())
 
 
 @dataclass(frozen=True, slots=True)
@@ -155,6 +206,15 @@ class MotionTableSpec:
     cycles: tuple[MotionEntry, ...]
     links: tuple[MotionEntry, ...] = ()
     modifiers: tuple[MotionEntry, ...] = ()
+    # scene/8: the mover's Setup's DefaultAnimation, animation `default_animation` of this table (None: 0,
+    # none): PartArray.InitDefaults plays it before SetMotionTableID's default state replaces it
+    default_animation: int | None = None
+
+    @property
+    def needs_v8(self) -> bool:
+        """Whether the table uses a scene/8 field: the Setup's default_animation, an animation's hooks or
+        its root_motion off."""
+        return self.default_animation is not None or any(a.hooks or not a.root_motion for a in self.animations)
 
     def to_json(self):
         d = {"default_style": _command_name(self.default_style),
@@ -165,11 +225,13 @@ class MotionTableSpec:
             d["links"] = [c.to_json() for c in self.links]
         if self.modifiers:
             d["modifiers"] = [c.to_json() for c in self.modifiers]
+        if self.default_animation is not None:
+            d["default_animation"] = self.default_animation
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "MotionTableSpec":
-        r.obj({"default_style", "style_defaults", "animations", "cycles", "links", "modifiers"})
+        r.obj({"default_style", "style_defaults", "animations", "cycles", "links", "modifiers", "default_animation"})
         animations = tuple(AnimationSpec.from_json(a) for a in r["animations"].list(max_count=MAX_ANIMATIONS))
         n = len(animations)
         pairs = []
@@ -183,7 +245,9 @@ class MotionTableSpec:
             _command(r["default_style"]), tuple(pairs), animations,
             tuple(MotionEntry.from_json(c, n, False) for c in r["cycles"].list()),
             tuple(MotionEntry.from_json(c, n, True) for c in r["links"].list()) if r.given("links") else (),
-            tuple(MotionEntry.from_json(c, n, False) for c in r["modifiers"].list()) if r.given("modifiers") else ())
+            tuple(MotionEntry.from_json(c, n, False) for c in r["modifiers"].list()) if r.given("modifiers") else (),
+            (r["default_animation"].int_(0, n - 1) if n else r["default_animation"].fail("the table has no animations"))
+            if r.given("default_animation") else None)
         for name, entries in (("cycles", table.cycles), ("modifiers", table.modifiers)):
             seen = set()
             for i, e in enumerate(entries):

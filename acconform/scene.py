@@ -1242,6 +1242,8 @@ class Mover:
                *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ()),
                *(("holding_locations",) if children else ())})
         spheres, scale, up, down = _read_body(r)
+        if vias and not skills and r.has("motion_table") and MotionTableSpec.from_json(r["motion_table"]).needs_v8:
+            r["motion_table"].fail(f"hooks, root_motion and default_animation need format {FORMAT!r} (older formats have none)")
         return Mover(
             spheres=spheres,
             begin=Position.from_json(r["begin"]),
@@ -1459,10 +1461,12 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, /7
+        """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
+        motion table's hooks, animations without root motion or DefaultAnimation, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
-        if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations:
+        if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
+                self.mover.motion_table is not None and self.mover.motion_table.needs_v8):
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7

@@ -252,14 +252,15 @@ def _motion_scene(scene, m):
     from dataclasses import replace
 
     from .motion_enums import HoldKey, MotionCommand as MC
-    from .motion_scene import AnimationSpec, AnimRef, MotionDataSpec, MotionEntry, MotionInput, MotionTableSpec
+    from .motion_scene import AnimationSpec, AnimRef, HookSpec, MotionDataSpec, MotionEntry, MotionInput, MotionTableSpec
     from .scene import Frame, Ticks, TickStep
 
     nc = int(MC.NonCombat)
     data = MotionDataSpec((AnimRef(0, 30.0, 0, -1),), (0.0, 3.0, 0.0), (0.0, 0.0, 1.0), 1)
-    table = MotionTableSpec(nc, ((nc, int(MC.Ready)),), (AnimationSpec((Frame((0.0, 0.1, 0.0)),)),),
+    table = MotionTableSpec(nc, ((nc, int(MC.Ready)),),
+                            (AnimationSpec((Frame((0.0, 0.1, 0.0)),), False, (HookSpec(0, "AnimationDone", 1),)),),
                             (MotionEntry(nc, int(MC.Ready), data),), (MotionEntry(nc, int(MC.Ready), data, int(MC.WalkForward)),),
-                            (MotionEntry(nc, int(MC.TurnRight), data),))
+                            (MotionEntry(nc, int(MC.TurnRight), data),), 0)
     run, key = int(HoldKey.Run), int(HoldKey.None_)
     motion = MotionInput(run, nc, int(MC.WalkForward), key, 1.0, int(MC.SideStepRight), key, 1.0, int(MC.TurnRight), key, 1.0)
     # the server's calls into the managers: every input once, the MovementParameters with every field, the target a

@@ -36,7 +36,7 @@ from hypothesis import strategies as st
 from acconform.flags import PlayerKillerStatus as PKS, TransientState
 from acconform.motion_enums import HoldKey, MotionCommand as MC
 from acconform.motion_enums import MovementParamFlags as MPF
-from acconform.motion_scene import (DEFAULT_MOVEMENT_FLAGS, STOPS, AnimationSpec, AnimRef, CommandInput, MotionDataSpec,
+from acconform.motion_scene import (DEFAULT_MOVEMENT_FLAGS, STOPS, AnimationSpec, AnimRef, CommandInput, HookSpec, MotionDataSpec,
                                     MotionEntry, MotionInput, MotionTableSpec, MovementParams, MoveToInput,
                                     ObjectMoveInput)
 from acconform.numerics import to_f32
@@ -47,12 +47,31 @@ from . import draws as dr
 NC = int(MC.NonCombat)
 READY, WALK, RUN = int(MC.Ready), int(MC.WalkForward), int(MC.RunForward)
 SIDE, TURN = int(MC.SideStepRight), int(MC.TurnRight)
+HC, SC = int(MC.HandCombat), int(MC.SwordCombat)
+ACTIONS = (int(MC.Twitch1), int(MC.Twitch2))
 
-FRAMERATES = st.sampled_from((30.0, 30.0, 15.0, 60.0, 10.0, 24.0, 7.5, -30.0, -15.0))  # negative: played backward
+# negative: played backward; 0 and +-0.0001 (under AnimSequenceNode's EPSILON): a frame that never ends,
+# Sequence's arms that skip apply_physics
+FRAMERATES = st.sampled_from(tuple(float(to_f32(r)) for r in (30.0, 30.0, 15.0, 60.0, 10.0, 24.0, 7.5, -30.0, -15.0,
+                                                                -30.0, 0.0, 0.0001, -0.0001)))
 FRAME_COUNTS = st.integers(1, 8)
-FRAME_RANGES = st.sampled_from(("all", "all", "all", "low1", "first3", "high_past_end", "one"))
+FRAME_RANGES = st.sampled_from(("all", "all", "all", "low1", "first3", "high_past_end", "one", "low_past_high",
+                                "low_past_end"))
+ROOT_MOTION = st.sampled_from((True, True, True, True, False))  # False: an Animation without PosFrames
+HOOKED = st.sampled_from((False, False, False, True))  # an animation with hooks
+HOOK_NAMES = st.sampled_from(("AnimationDone", "AnimationDone", "DefaultScript", "Ethereal", "Sound"))
+HOOK_DIRS = st.sampled_from((0, 0, 1, -1))
 BITFIELDS = st.sampled_from((0, 0, 0, 0, 1, 2, 3))
 MOSTLY = st.sampled_from((True, True, True, False))
+RICH = st.sampled_from((False, True))  # a second style, actions, more animations (_rich_entries)
+# a table that leaves the mover without a state now and then: the default style without a default substate,
+# or its default substate without a cycle (SetDefaultState fails: style and substate stay 0)
+STATELESS = st.sampled_from((None,) * 10 + ("no_default", "no_cycle"))
+DEFAULT_ANIMATIONS = st.sampled_from((False, False, False, True))  # the Setup's DefaultAnimation (a table animation)
+EMPTY_LINKS = st.sampled_from((False, False, False, True))
+ACTION_LINKS = st.sampled_from(("ready", "ready", "walk", "any", "none"))
+STYLES = st.sampled_from((0, 0, 0, HC, NC, SC))  # a MoveToState's style (0: unflagged, NonCombat)
+ACTION_INPUTS = st.sampled_from((False, False, True))  # a key scene's DoMotion of an action at a drawn tick
 HALF = st.sampled_from((True, False))
 # root motion per frame (metres or degrees)
 STRIDES = dr.OneOf(st.sampled_from((0.05, 0.1, 0.02, 0.2)), dr.f32(0.0, 0.3))
@@ -66,7 +85,9 @@ FORWARDS = st.sampled_from((WALK, WALK, 0, int(MC.WalkBackwards), RUN))
 SIDESTEPS = st.sampled_from((0, 0, 0, SIDE, int(MC.SideStepLeft)))
 TURNS = st.sampled_from((0, 0, TURN, int(MC.TurnLeft)))
 HOLD_KEYS = st.sampled_from((int(HoldKey.None_), int(HoldKey.Run), 0))
-INPUT_SPEEDS = dr.OneOf(st.sampled_from((1.0, 1.0, 1.0, 0.5, 1.5, 2.0)), dr.f32(0.1, 3.0))
+# speeds under MotionTable's EPSILON (change_cycle_speed's arms) and negative ones (a command played backward)
+INPUT_SPEEDS = dr.OneOf(st.sampled_from((1.0, 1.0, 1.0, 0.5, 1.5, 2.0, 1.0, 0.5, 0.0001, 0.00001, -1.0, -0.5)),
+                        dr.f32(0.1, 3.0))
 INPUT_KINDS = st.sampled_from(("move", "move", "stop"))
 SEGMENTS = dr.ints(0, 4)  # inputs after the first
 LAST_STOP = st.sampled_from((True, True, False))
@@ -103,7 +124,8 @@ HOLD_TO_APPLY = st.sampled_from((0, 0, int(HoldKey.Run), int(HoldKey.None_)))
 TARGET_TS = st.sampled_from((1.0, 1.0, 0.5, 1.5, 0.25))  # where along the path (1: its end, past its obstacles)
 LATER = dr.ints(0, 3)  # stops, turns and keys after the first
 LATER_KINDS = st.sampled_from(("stop", "stop", "turn_to_heading", "move_to", "do_motion", "stop_motion"))
-KEY_COMMANDS = st.sampled_from((WALK, RUN, TURN, SIDE, int(MC.TurnLeft), int(MC.WalkBackwards), READY))
+KEY_COMMANDS = st.sampled_from((WALK, RUN, TURN, SIDE, int(MC.TurnLeft), int(MC.WalkBackwards), READY,
+                                 int(MC.Twitch1), int(MC.Twitch2), HC, NC, SC))
 TARGET_ID = 0x7F000001  # a sphere the scene gains to follow when its world has no outdoor static
 
 
@@ -116,11 +138,16 @@ def _animation(draw, move: str) -> AnimationSpec:
     n = draw(FRAME_COUNTS)
     if move == "turn":
         step = float(dr.take(draw, TURN_STEPS))
-        return AnimationSpec(tuple(Frame((0.0, 0.0, 0.0), _yaw(step * i)) for i in range(n)))
-    stride = float(dr.take(draw, STRIDES))
-    axis = 0 if move == "side" else 1
-    return AnimationSpec(tuple(Frame(tuple(to_f32(stride * i) if k == axis else 0.0 for k in range(3)))
-                               for i in range(n)))
+        frames = tuple(Frame((0.0, 0.0, 0.0), _yaw(step * i)) for i in range(n))
+    else:
+        stride = float(dr.take(draw, STRIDES))
+        axis = 0 if move == "side" else 1
+        frames = tuple(Frame(tuple(to_f32(stride * i) if k == axis else 0.0 for k in range(3))) for i in range(n))
+    hooks = ()
+    if draw(HOOKED):
+        hooks = tuple(HookSpec(draw(st.integers(0, n - 1)), draw(HOOK_NAMES), draw(HOOK_DIRS))
+                      for _ in range(draw(st.integers(1, 3))))
+    return AnimationSpec(frames, draw(ROOT_MOTION), hooks)
 
 
 def _anim_ref(draw, index: int, frames: int) -> AnimRef:
@@ -134,6 +161,10 @@ def _anim_ref(draw, index: int, frames: int) -> AnimRef:
         return AnimRef(index, fr, 0, frames + 2)
     if how == "one":  # a single frame: low == high
         return AnimRef(index, fr, frames - 1, frames - 1)
+    if how == "low_past_high" and frames > 2:  # set_animation_id raises the high frame to the low
+        return AnimRef(index, fr, 2, 1)
+    if how == "low_past_end":  # set_animation_id lowers the low frame to the last
+        return AnimRef(index, fr, frames + 1, -1)
     return AnimRef(index, fr)
 
 
@@ -182,8 +213,72 @@ def draw_motion_table(draw) -> tuple[MotionTableSpec, str]:
             om = (0.0, 0.0, v) if move == "turn" else None
             modifiers.append(MotionEntry(NC, motion, data(move, vel, om)))
     label += (f"l{len(links)}" if links else "") + (f"m{len(modifiers)}" if modifiers else "")
-    table = MotionTableSpec(NC, ((NC, READY),), tuple(animations), tuple(cycles), tuple(links), tuple(modifiers))
+    style_defaults = ((NC, READY),)
+    if draw(RICH):
+        style_defaults, more = _rich_entries(draw, cycles, links, modifiers, data)
+        label += ":" + more
+    default_animation = draw(st.integers(0, len(animations) - 1)) if draw(DEFAULT_ANIMATIONS) else None
+    table = MotionTableSpec(NC, style_defaults, tuple(animations), tuple(cycles), tuple(links), tuple(modifiers),
+                            default_animation)
     return table, label or "ready"
+
+
+def _rich_entries(draw, cycles: list, links: list, modifiers: list, data) -> tuple[tuple, str]:
+    """What a richer table adds (one table in two; `cycles`, `links` and `modifiers` grow in place): a
+    second style, HandCombat, its default substate Ready (or, now and then, WalkForward: a style change
+    then ends in a cycle of the other style's walk), its own Ready cycle (Bitfield 1 now and then: it clears
+    the modifiers) and the links between the styles' Readys each mostly there (without, GetObjectSequence
+    links through the default style); the Ready cycle played by two or three animations; the action
+    commands Twitch1 and Twitch2 (links from Ready, from WalkForward, or from any substate: a link keyed by
+    the style alone, get_link's last lookup); a modifier keyed by its motion alone (no style: the modifiers'
+    second lookup); and a link from any substate to Ready. Returns (the style defaults, a label)."""
+    tags = []
+    hc_default = draw(st.sampled_from((READY, READY, READY, WALK)))
+    if hc_default == WALK and not any(c.motion == WALK for c in cycles):
+        hc_default = READY
+    cycles.append(MotionEntry(HC, READY, replace(data("still"), bitfield=draw(st.sampled_from((0, 0, 1))))))
+    if hc_default == WALK or draw(HALF):
+        cycles.append(MotionEntry(HC, WALK, data("walk", velocity=(0.0, to_f32(dr.take(draw, WALK_VELOCITIES)), 0.0))))
+        tags.append("hw")
+    for style, frm, to in dict.fromkeys(((NC, READY, HC), (HC, hc_default, NC), (HC, READY, NC))):
+        if draw(MOSTLY):
+            links.append(MotionEntry(style, frm, data("walk"), to=to))
+    if draw(HALF):  # the Ready cycle with more animations
+        ready = cycles[0]
+        extra = tuple(data("still").anims[0] for _ in range(draw(st.integers(1, 2))))
+        cycles[0] = replace(ready, data=replace(ready.data, anims=ready.data.anims + extra))
+        tags.append(f"a{1 + len(extra)}")
+    for action in ACTIONS:
+        where = draw(ACTION_LINKS)
+        if where == "none":
+            continue
+        frm = {"ready": READY, "walk": WALK, "any": 0}[where]
+        link = data("walk")
+        if draw(EMPTY_LINKS):  # no animation: its pending motion has 0 animations (CheckForCompletedMotions ends it)
+            link = replace(link, anims=())
+            tags.append("e")
+        links.append(MotionEntry(NC, frm, link, to=action))
+        if draw(HALF):
+            links.append(MotionEntry(HC, READY, data("walk"), to=action))
+        tags.append(f"{action & 0xFF:x}{where[0]}")
+    if draw(HALF):  # a link from any substate to Ready
+        links.append(MotionEntry(NC, 0, data("walk"), to=READY))
+        tags.append("anyR")
+    if draw(HALF) and not any(m.motion == TURN for m in modifiers):  # a modifier of no style
+        modifiers.append(MotionEntry(0, TURN, data("turn", None, (0.0, 0.0, to_f32(dr.take(draw, OMEGAS))))))
+        tags.append("m0")
+    if draw(HALF):  # a style with a cycle and no default substate (its link lookups find no default)
+        cycles.append(MotionEntry(SC, READY, data("still")))
+        tags.append("sc")
+    defaults = ((NC, READY), (HC, hc_default))
+    stateless = draw(STATELESS)
+    if stateless == "no_default":
+        defaults = ((HC, hc_default),)
+    elif stateless == "no_cycle":
+        defaults = ((NC, int(MC.Sleeping)), (HC, hc_default))
+    if stateless:
+        tags.append(stateless)
+    return defaults, "hc" + ("-walk" if hc_default == WALK else "") + "".join(f".{t}" for t in tags)
 
 
 def _speed(draw) -> float:
@@ -193,8 +288,8 @@ def _speed(draw) -> float:
 def draw_motion_input(draw) -> tuple[MotionInput, str]:
     if draw(INPUT_KINDS) == "stop":
         return MotionInput(hold_key=int(HoldKey.None_)), "stop"
-    kw = {"hold_key": draw(HOLD_KEYS)}
-    tag = ""
+    kw = {"hold_key": draw(HOLD_KEYS), "style": draw(STYLES)}
+    tag = {0: "", HC: "hc", NC: "nc", SC: "sc"}[kw["style"]]
     for name, commands, short in (("forward", FORWARDS, "f"), ("sidestep", SIDESTEPS, "s"), ("turn", TURNS, "t")):
         c = draw(commands)
         if c:
@@ -241,6 +336,10 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
     if n > 2 and draw(LAST_STOP):
         inputs[n - 1]["motion"] = MotionInput(hold_key=int(HoldKey.None_))
         tags.append("stop-last")
+    if n > 1 and draw(ACTION_INPUTS):  # an action's DoMotion (Player.OnMoveToState's path for one key)
+        at = draw(st.integers(0, n - 1))
+        inputs[at]["do_motion"] = CommandInput(draw(st.sampled_from(ACTIONS + ACTIONS + (HC, SC))), draw(HOLD_TO_APPLY))
+        tags.append(f"do{inputs[at]['do_motion'].motion & 0xFF:x}@{at}")
     if n > 1 and draw(JUMPS):  # HandleActionJump's physics with the motion layer: LeaveGround, then HitGround
         from .ticks import JUMP_FORWARD, JUMP_UPS
 

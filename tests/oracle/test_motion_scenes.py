@@ -214,3 +214,28 @@ def test_ace_runs_the_player_with_a_run_skill_of_300_at_its_run_rate(runtime):
     ace = recorded_outcomes(DATA, runtime)
     assert ace[RUN300].ticks[0].motion.interpreted.forward_speed == np.float32(2.65)
     assert ace[SKILLED_JUMP].ticks[0].motion.interpreted.forward_speed == np.float32(2.65)
+
+
+def test_a_table_with_hooks_no_root_motion_or_a_default_animation_is_format_8_and_refused_in_older_ones():
+    from acconform.motion_scene import HookSpec
+
+    table = SCENES[WALK].mover.motion_table
+    for changed in (dataclasses.replace(table, default_animation=0),
+                    dataclasses.replace(table, animations=(dataclasses.replace(table.animations[0], root_motion=False),)
+                                        + table.animations[1:]),
+                    dataclasses.replace(table, animations=(dataclasses.replace(
+                        table.animations[0], hooks=(HookSpec(0, "AnimationDone", -1),)),) + table.animations[1:])):
+        scene = SCENES[WALK].replace(mover=dataclasses.replace(SCENES[WALK].mover, motion_table=changed))
+        assert scene.format == "acconform.scene/8" and Scene.loads(scene.dumps()) == scene
+        doc = json.loads(scene.dumps())
+        doc["format"] = "acconform.scene/6"
+        with pytest.raises(InvalidScene, match=r"mover\.motion_table.*need format 'acconform.scene/8'"):
+            Scene.from_json(doc)
+
+
+def test_an_unknown_hook_is_refused_naming_it():
+    doc = json.loads(SCENES[WALK].dumps())
+    doc["format"] = "acconform.scene/8"
+    doc["mover"]["motion_table"]["animations"][0]["hooks"] = [{"frame": 0, "hook": "Attack"}]
+    with pytest.raises(InvalidScene, match=r"animations\[0\]\.hooks\[0\]\.hook.*unknown hook 'Attack'"):
+        Scene.from_json(doc)

@@ -106,3 +106,24 @@ def test_a_setup_names_its_default_animation_and_motion_table_only_when_given():
     assert len(plain) == len(named) and plain[:-20] == named[:-20] and plain[-20:] == bytes(20)
     s = _read(named, SetupModel.unpack)
     assert (s.default_animation, s.default_script, s.default_motion_table) == (mt.A_READY, 0, mt.TABLE_ID)
+
+
+@pytest.mark.anchor("ACE.DatLoader/FileTypes/Animation.cs:Unpack")
+def test_a_scene_animation_without_root_motion_and_with_hooks_is_written_as_ace_reads_it():
+    from acconform.motion_scene import ANIMATION_BASE, AnimationSpec, AnimRef, HookSpec, MotionDataSpec, MotionEntry, MotionTableSpec
+    from acconform.scene import Frame
+
+    nc, ready = 0x8000003D, 0x41000003
+    frames = (Frame((0.0, 0.1, 0.0)), Frame((0.0, 0.2, 0.0)))
+    table = MotionTableSpec(nc, ((nc, ready),), (AnimationSpec(frames, False, (HookSpec(1, "AnimationDone", -1),
+                                                                                HookSpec(1, "Ethereal"))),),
+                            (MotionEntry(nc, ready, MotionDataSpec((AnimRef(0, 30.0),))),), default_animation=0)
+    anim = _read(dat.motion_records(table)[1].data, Animation.unpack)
+    assert anim.flags == 0 and anim.pos_frames == [] and anim.num_frames == 2 and anim.part_frames[0].hooks == []
+    got = [(type(h).__name__, h.hook_type, h.direction) for h in anim.part_frames[1].hooks]
+    assert got == [("AnimationHook", H.AnimationDone, -1), ("EtherealHook", H.Ethereal, 0)]
+    from acconform.scene import Mover, Position
+
+    mover = Mover((), Position(0xA9B40001, Frame((12.0, 12.0, 20.0))), None, 0.4, 0.4, motion_table=table)
+    setup = next(r for r in dat.mover_records(mover).records if r.kind == "SetupModel")
+    assert _read(setup.data, SetupModel.unpack).default_animation == ANIMATION_BASE
