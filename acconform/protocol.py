@@ -131,6 +131,16 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                          "parented as the client parents a wielded item (SetPlacementFrame, then set_parent) instead "
                          "of entering the world, never stepped itself and carried by its parent's UpdateChild each "
                          "tick; needs objects.moving too"),
+    "objects.targets": (lambda s: s.ticks is not None and any(
+                            step.stick_to is not None or any(o.destroy for o in step.others) or any(t is not None and t.object in {o.id for o in s.others}
+                                                             for t in (step.move_to_object, step.turn_to_object))
+                            for step in s.ticks.steps),
+                        "the tick input stick_to (scene/8: a melee swing's PhysicsObj.stick_to_object(the target's id), "
+                        "Monster_Melee / Player_Melee) or a move_to_object or turn_to_object whose target is another "
+                        "mover (its id among others'), found as the server finds a creature or player "
+                        "(ServerObjectManager, set_object_guid): a MoveTo, a sticky follow or a turn at a moving target, "
+                        "TargetManager's voyeur updates between the two PhysicsObjs; and another mover destroyed at a tick "
+                        "(scene/8 ticks.steps[].others[].destroy: WorldObject.Destroy's PhysicsObj.DestroyObject)"),
     "missiles": (lambda s: any(o.launch is not None for o in s.others),
                  "projectiles (scene/8: others[] of weenie ammunition or spell_projectile with a launch): made at the "
                  "start, launched at their step by ACE's launch code (Creature.GetProjectileVelocity or "

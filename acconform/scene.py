@@ -765,7 +765,7 @@ DRIVERS = ("update_object", "request_pos")  # PhysicsObj.update_object / the leg
 # a step's inputs, in the order both sides apply them (the clock still at the previous tick's time)
 TICK_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega", "jump", "sequence_velocity",
                "sequence_omega", "request_pos", "motion", "stop", "do_motion", "stop_motion", "move_to",
-               "move_to_object", "turn_to_heading", "turn_to_object", "door")
+               "move_to_object", "turn_to_heading", "turn_to_object", "door", "stick_to")
 # the motion layer's inputs (scene/6, feature mover.motion): each needs the mover's motion table
 MOTION_INPUTS = ("motion", "stop", "do_motion", "stop_motion", "move_to", "move_to_object", "turn_to_heading",
                  "turn_to_object")
@@ -844,15 +844,22 @@ class OtherInputs:
     jump: Vec3 | None = None
     sequence_velocity: Vec3 | None = None
     sequence_omega: Vec3 | None = None
+    # feature objects.targets: after the setters the server destroys it (WorldObject.Destroy: its landblock's
+    # RemoveWorldObject, PhysicsObj.DestroyObject), and no tick steps it again
+    destroy: bool = False
 
     def to_json(self):
         d = _setters_json(self, {"id": write_id(self.id)})
+        if self.destroy:
+            d["destroy"] = True
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherInputs":
-        r.obj({"id", *OTHER_INPUTS})
+        r.obj({"id", *OTHER_INPUTS, "destroy"})
         kw = _read_setters(r)
+        if r.given("destroy"):
+            kw["destroy"] = r["destroy"].bool_()
         return OtherInputs(r["id"].id_(), **kw)
 
 
@@ -889,6 +896,9 @@ class TickStep:
     turn_to_heading: MoveToInput | None = None
     turn_to_object: ObjectMoveInput | None = None
     door: DoorInput | None = None  # scene/7: a static opens or closes (Door.Open / FinalizeClose's physics)
+    # scene/8 (feature objects.targets): a melee swing's PhysicsObj.stick_to_object(the target's id), as
+    # Monster_Melee.MeleeAttack and Player_Melee.DoSwingMotion call it: an outdoor static's or another mover's id
+    stick_to: int | None = None
     others: tuple["OtherInputs", ...] = ()  # scene/8: the other movers' inputs, applied after the mover's, in this order
 
     def to_json(self):
@@ -905,6 +915,8 @@ class TickStep:
                 d[name] = v.to_json()
         if self.door is not None:
             d["door"] = self.door.to_json()
+        if self.stick_to is not None:
+            d["stick_to"] = write_id(self.stick_to)
         if self.others:
             d["others"] = [o.to_json() for o in self.others]
         return d
@@ -931,6 +943,8 @@ class TickStep:
                 text += ',"' + name + '":' + dumps_compact(v.to_json())
         if self.door is not None:
             text += ',"door":' + dumps_compact(self.door.to_json())
+        if self.stick_to is not None:
+            text += ',"stick_to":' + dumps_compact(write_id(self.stick_to))
         if self.others:
             text += ',"others":' + dumps_compact([o.to_json() for o in self.others])
         return text + "}"
@@ -948,6 +962,8 @@ class TickStep:
             r["door"].fail(f"a door input needs format {FORMAT_V7!r} or later (older formats have none)")
         if not others and isinstance(r.value, dict) and "others" in r.value:
             r["others"].fail(f"the other movers' inputs need format {FORMAT!r} (older formats have one mover)")
+        if not others and isinstance(r.value, dict) and "stick_to" in r.value:
+            r["stick_to"].fail(f"the input stick_to needs format {FORMAT!r}")
         r.obj({"dt", *TICK_INPUTS, *(("others",) if others else ())})
         dt = r["dt"].f64()
         if dt < 0:
@@ -977,6 +993,8 @@ class TickStep:
                 kw[name] = ObjectMoveInput.from_json(r[name])
         if r.has("door"):
             kw["door"] = DoorInput.from_json(r["door"])
+        if r.has("stick_to"):
+            kw["stick_to"] = r["stick_to"].id_()
         if others and r.given("others"):
             kw["others"] = tuple(OtherInputs.from_json(o) for o in r["others"].list())
         return TickStep(dt, **kw)
@@ -1595,6 +1613,9 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         # a target is an outdoor static: ACE makes an EnvCell's statics itself when it loads the cell and
         # files none of them in ServerObjectManager (no WorldObject's set_object_guid)
         statics = {o.id for o in scene.objects if o.position.cell & 0xFFFF < ENV_CELL_FIRST}
+        # or another mover that enters the world (feature objects.targets): its WorldObject's PhysicsObj is filed
+        # under its id too (set_object_guid), and it moves, as the creature or player a server's MoveToObject chases
+        movers = {o.id for o in scene.others if o.begin is not None and o.parent is None and o.launch is None}
         for i, step in enumerate(scene.ticks.steps):
             for name in MOTION_INPUTS:
                 if getattr(step, name) is not None and scene.mover.motion_table is None:
@@ -1603,10 +1624,15 @@ def check_consistency(scene: Scene, path: str = "") -> None:
                                        "table to play and no MovementManager)")
             for name in ("move_to_object", "turn_to_object"):
                 target = getattr(step, name)
-                if target is not None and target.object not in statics:
+                if target is not None and target.object not in statics and target.object not in movers:
                     raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}.object"),
-                                       f"no outdoor static object has id {write_id(target.object)} (the target is "
-                                       "one of the scene's objects outside EnvCells, named by its id)")
+                                       f"no outdoor static object or other mover in the world has id "
+                                       f"{write_id(target.object)} (the target is one of the scene's objects outside "
+                                       "EnvCells, or one of its others with a begin, named by its id)")
+            if step.stick_to is not None and step.stick_to not in statics and step.stick_to not in movers:
+                raise InvalidScene(_p(path, f"ticks.steps[{i}].stick_to"),
+                                   f"no outdoor static object or other mover in the world has id {write_id(step.stick_to)} "
+                                   "(the melee swing's target, named by its id)")
             if step.door is not None and step.door.object not in statics:
                 raise InvalidScene(_p(path, f"ticks.steps[{i}].door.object"),
                                    f"no outdoor static object has id {write_id(step.door.object)} (the door is one of "
@@ -1691,6 +1717,7 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
     _check_launches(scene, path, by_id)
     if scene.ticks is None:
         return
+    destroyed = {}  # id -> the step that destroyed it
     for i, step in enumerate(scene.ticks.steps):
         seen = set()
         for k, inputs in enumerate(step.others):
@@ -1708,6 +1735,14 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
             if inputs.jump is not None and other.weenie != "player":
                 raise InvalidScene(f"{where}.jump", f"a jump is a player's (Player.HandleActionJump); other mover "
                                                     f"0x{inputs.id:08X} is a {other.weenie}")
+            if inputs.id in destroyed:
+                raise InvalidScene(f"{where}.id", f"other mover 0x{inputs.id:08X} was destroyed at step "
+                                                  f"{destroyed[inputs.id]}: it takes no input after")
+            if inputs.destroy:
+                if other.begin is None or any(o.parent is not None and o.parent.id == inputs.id for o in scene.others):
+                    raise InvalidScene(f"{where}.destroy", f"other mover 0x{inputs.id:08X} is a child or holds one: "
+                                                           "only a mover that entered the world alone is destroyed")
+                destroyed[inputs.id] = i
 
 
 def _check_launches(scene: Scene, path: str, by_id: dict) -> None:

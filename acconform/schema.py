@@ -193,7 +193,8 @@ def _tick_scenes(scene):
 def _movers_scene(scene, m):
     """A scene with other movers (scene/8, objects.moving): one of each weenie class at the mover's start (a
     PK player with every optional field), each given every input of a step once, and a child held by the mover
-    (objects.children: its parent, the mover's holding location, its sorting sphere)."""
+    (objects.children: its parent, the mover's holding location, its sorting sphere); then (objects.targets) the
+    mover's stick_to at the monster and the NPC destroyed."""
     from dataclasses import replace
 
     from .flags import PhysicsState, PlayerKillerStatus, TransientState
@@ -211,7 +212,10 @@ def _movers_scene(scene, m):
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
     return replace(scene, mover=m, name="movers", others=others,
-                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),)))
+                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),
+                                                          # objects.targets: a melee swing's stick_to, a destroyed NPC
+                                                          TickStep(1 / 30, stick_to=0x80000001,
+                                                                   others=(OtherInputs(0x80000002, destroy=True),)))))
 
 
 def _missiles_scene(scene, m):

@@ -105,9 +105,11 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.Animation.MotionInterp", ("RawState", "InterpretedState", "motion_allows_jump",
                                                    "apply_raw_movement")),
     ("ACE.Server.Physics.Animation.RawMotionState", ("SetState",)),
-    # the server's calls into the managers (Facade.StopMovement, KeyMotion, MoveToPosition, TurnToHeading, ObjectMove)
+    # the server's calls into the managers (Facade.StopMovement, KeyMotion, MoveToPosition, TurnToHeading, ObjectMove,
+    # and the tick input stick_to: a melee swing's stick_to_object)
     ("ACE.Server.Physics.PhysicsObj", ("StopCompletely", "cancel_moveto", "MovementManager", "DoMotion", "StopMotion",
-                                       "MoveToPosition", "MoveToObject", "TurnToHeading", "TurnToObject")),
+                                       "MoveToPosition", "MoveToObject", "TurnToHeading", "TurnToObject",
+                                       "stick_to_object")),
     ("ACE.Server.Physics.Animation.MovementManager", ("MoveToManager",)),
     ("ACE.Server.Physics.Animation.MoveToManager", ("CancelMoveTo", "FailProgressCount")),
     ("ACE.Server.Physics.Managers.ServerObjectManager", ("GetObjectA",)),

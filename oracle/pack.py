@@ -99,6 +99,8 @@ def _other_inputs(step, index: dict) -> list[bytes]:
                 continue
             mask |= 1 << bit
             values.append(_U32.pack(v) if name in ("state", "transient_state") else _3f.pack(*v))
+        if inputs.destroy:  # bit 8, no value: destroyed after the setters
+            mask |= 1 << len(OTHER_INPUTS)
         out.append(struct.pack("<iI", index[inputs.id], mask))
         out += values
     return out
@@ -140,6 +142,8 @@ def _ticks(ticks: Ticks | None, others=()) -> bytes:
                 values.append(_U32.pack(v.object) + _params(v.params))
             elif name == "door":
                 values.append(_DOOR.pack(v.object, 1 if v.ethereal else 0))
+            elif name == "stick_to":
+                values.append(_U32.pack(v))
             else:
                 values.append(_3f.pack(*v))
         out.append(_STEP_HEAD.pack(time, mask))

@@ -523,6 +523,18 @@ def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) ->
         object_move(mover, step.turn_to_object, True, mode)
     if step.door is not None:
         door(mover.server_objects.get_object_a(step.door.object), step.door.ethereal, lscape)
+    if step.stick_to is not None:  # a melee swing's stick (Monster_Melee.MeleeAttack, Player_Melee.DoSwingMotion)
+        mover.stick_to_object(step.stick_to)
+
+
+@harness("another mover destroyed by the server (scene/8 others[].destroy), as the oracle's facade destroys it")
+def destroy_other(obj: PhysicsObj, oid: int, movers, stepped: list) -> None:
+    """WorldObject.Destroy's physics for another mover in the world: its landblock's RemoveWorldObject calls
+    PhysicsObj.DestroyObject, and the landblock ticks it no more (one not in the world: nothing)."""
+    k = next(k for k, (o, _, _) in enumerate(movers) if o.id == oid)
+    if stepped[k]:
+        obj.destroy_object()
+        stepped[k] = False
 
 
 @harness("another mover's tick inputs (scene/8 ticks.steps[].others), as the oracle's facade applies them")
@@ -800,6 +812,8 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             apply_inputs(mover, step, mode, lscape)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
+                if inputs.destroy:
+                    destroy_other(by_id[inputs.id], inputs.id, movers, stepped)
             for k, (obj, launch) in enumerate(launches):
                 if launch is not None and launch.tick == index:
                     launcher = by_id[launch.launcher]

@@ -468,3 +468,168 @@ def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, 
             later.append((at, {kind: MoveToInput(_params(draw))}))
         tags.append(f"{kind}@{at}")
     return first, later, scene, "+".join(tags)
+
+
+# ---------------------------------------------------------------- a MoveTo, sticky follow or turn at a moving mover
+
+# how the target (another mover, scene/8 others) moves: standing, walking away (the mover follows), toward the
+# mover, across its line, or stop-and-go (away, stopped, back toward the mover, stopped again)
+TARGET_MOVES = st.sampled_from(("stand", "away", "away", "toward", "across", "stop_and_go", "stop_and_go", "stop_and_go"))
+TARGET_WEENIES = st.sampled_from(("player", "player", "monster", "creature"))
+TARGET_GAPS = dr.OneOf(st.sampled_from((3.0, 1.0, 6.0, 0.5, 12.0, 20.0)), dr.f32(0.2, 16.0))
+TARGET_MOVE_SPEEDS = dr.OneOf(st.sampled_from((1.0, 2.5, 4.0, 0.5, 6.0)), dr.f32(0.2, 7.0))
+CHASE_GOALS = st.sampled_from(("move_to_object", "move_to_object", "sticky", "sticky", "sticky", "turn_to_object",
+                               "stick", "stick"))
+TARGET_FATES = st.sampled_from(("stays", "stays", "stays", "destroyed"))  # the server destroys the target at a tick
+NO_TABLE = st.sampled_from((False, False, False, True))  # a stick_to scene's mover without a motion table (no MotionInterp)
+# the MovementParameters the server's callers build (ACE 7b47913): Monster_Navigation.GetMovementParameters (CanWalk
+# off; a melee monster adds FailWalk, UseFinalHeading, Sticky and MoveAway; a ranged one turns with the rest),
+# Player_Move.GetChargeParameters (the melee charge: CanCharge too, HoldKey Run, FailDistance 15, Speed 1.5),
+# Monster_Navigation's MoveTo home (DistanceToObject 0.6, a DesiredHeading), or drawn flags (each flag flipped)
+CHASE_PARAMS = st.sampled_from(("monster", "monster", "charge", "charge", "ranged", "drawn", "drawn", "drawn"))
+FLIP_COUNTS = dr.ints(0, 3)
+FLAG_FLIPS = (st.sampled_from((MPF.CanWalk, MPF.CanRun, MPF.CanSidestep, MPF.CanWalkBackwards, MPF.CanCharge,
+                                       MPF.FailWalk, MPF.UseFinalHeading, MPF.MoveAway, MPF.MoveTowards, MPF.UseSpheres,
+                                       MPF.SetHoldKey, MPF.StopCompletely, MPF.CancelMoveTo)))
+CHASE_DISTANCES = dr.OneOf(st.sampled_from((0.6, 0.0, 1.0, 2.0, 4.0, 0.1)), dr.f32(0.0, 6.0))
+CHASE_MIN_DISTANCES = dr.OneOf(st.sampled_from((0.0, 0.0, 0.0, 1.0, 3.0, 8.0)), dr.f32(0.0, 10.0))
+CHASE_FAIL_DISTANCES = st.sampled_from((None, None, 15.0, 5.0, 2.0, 0.5))
+CHASE_LATER = dr.ints(0, 4)
+CHASE_LATER_KINDS = st.sampled_from(("stop", "stop", "again", "turn_to_object", "sticky", "do_motion", "move_to",
+                                     "turn_to_heading", "stick"))
+
+
+def _chase_params(draw, goal: str) -> tuple[MovementParams, str]:
+    how = draw(CHASE_PARAMS)
+    melee = int(MPF.FailWalk | MPF.UseFinalHeading | MPF.Sticky | MPF.MoveAway)
+    if how == "monster":
+        p = MovementParams(flags=(DEFAULT_MOVEMENT_FLAGS & ~int(MPF.CanWalk)) | melee)
+    elif how == "charge":
+        p = MovementParams(flags=(DEFAULT_MOVEMENT_FLAGS & ~int(MPF.CanWalk)) | melee | int(MPF.CanCharge),
+                           hold_key_to_apply=int(HoldKey.Run), fail_distance=15.0, speed=1.5)
+    elif how == "ranged":
+        p = MovementParams(flags=DEFAULT_MOVEMENT_FLAGS & ~int(MPF.CanWalk))
+    else:
+        flags = DEFAULT_MOVEMENT_FLAGS
+        for _ in range(dr.take(draw, FLIP_COUNTS)):
+            flags ^= int(draw(FLAG_FLIPS))
+        fail = draw(CHASE_FAIL_DISTANCES)
+        p = MovementParams(flags=flags, distance_to_object=float(to_f32(dr.take(draw, CHASE_DISTANCES))),
+                           min_distance=float(to_f32(dr.take(draw, CHASE_MIN_DISTANCES))),
+                           fail_distance=MovementParams().fail_distance if fail is None else fail,
+                           speed=float(to_f32(dr.take(draw, MOVE_SPEEDS))),
+                           walk_run_threshold=float(to_f32(dr.take(draw, WALK_RUN))),
+                           desired_heading=float(to_f32(dr.take(draw, HEADINGS))), hold_key_to_apply=draw(HOLD_TO_APPLY))
+    if goal == "sticky":
+        p = replace(p, flags=p.flags | int(MPF.Sticky))
+    elif goal == "move_to_object" and how == "drawn" and draw(HALF):
+        p = replace(p, flags=p.flags & ~int(MPF.Sticky))
+    return p, how
+
+
+def _target_walk(draw, rows: list[dict], dts: list[float], ux: float, uy: float, how: str) -> str:
+    """The target's held velocities (OtherInputs.velocity each tick) for `how`; (ux, uy) points from the mover to it."""
+    from .movers import _vec
+
+    n = len(dts)
+    speed = float(dr.take(draw, TARGET_MOVE_SPEEDS))
+    if how == "stand":
+        return how
+    if how in ("away", "toward", "across"):
+        dx, dy = {"away": (ux, uy), "toward": (-ux, -uy), "across": (-uy, ux)}[how]
+        stop = n if draw(HALF) else draw(st.integers(0, n - 1))
+        for i in range(min(stop, n)):
+            rows[i]["velocity"] = _vec(dx * speed, dy * speed, 0.0)
+        if stop < n:
+            rows[stop]["velocity"] = (0.0, 0.0, 0.0)
+        return f"{how}{speed:g}" + ("" if stop >= n else f"-stop@{stop}")
+    # stop-and-go: away from 0, stopped at a, toward the mover from b, stopped at c
+    cuts = sorted(draw(st.integers(1, max(n - 1, 1))) for _ in range(3))
+    a, b, c = cuts
+    for i in range(n):
+        if i < a:
+            v = _vec(ux * speed, uy * speed, 0.0)
+        elif i < b:
+            v = (0.0, 0.0, 0.0)
+        elif i < c:
+            v = _vec(-ux * speed, -uy * speed, 0.0)
+        else:
+            v = (0.0, 0.0, 0.0)
+        if i == 0 or v != rows[i - 1].get("velocity") or v != (0.0, 0.0, 0.0):
+            rows[i]["velocity"] = v
+    return f"stopgo{speed:g}@{a}/{b}/{c}"
+
+
+def draw_managed_chase(draw, clock) -> Scene:
+    """The server's MoveToObject, sticky MoveToObject (StickTo on arrival) or TurnToObject at another mover that
+    moves (a creature chasing a player, a player's melee charge at a monster): the mover (a player with a drawn
+    motion table) on flat ground, the target (scene/8 others: a player, a monster or an NPC) a gap away, standing,
+    walking away, toward it, across its line or stop-and-go; the parameters the server's callers build or drawn
+    flags; then at drawn ticks a stop (each of the server's), the MoveTo again, a turn or a sticky MoveTo at the
+    target, a key, a MoveTo to a point or a turn in place. The target's TargetManager answers the mover's voyeur
+    requests as it moves (HandleTargetting each update_object)."""
+    from .movers import _Flat, _Ids, _Timeline, _finish, _mover, _other, _pks, _spheres
+    from .ticks import _unit
+
+    world = _Flat(draw, False)
+    mx, my = 96.0 + float(draw(st.sampled_from((0.0, 0.5, -3.0)))), 96.0 + float(draw(st.sampled_from((0.0, 0.25, 2.0))))
+    rad = math.radians(dr.take(draw, HEADINGS))
+    ux, uy = math.cos(rad), math.sin(rad)
+    n = dr.take(draw, TICK_COUNTS)
+    start, dts, clabel = clock(draw, n)
+    tl, ids = _Timeline(dts), _Ids()
+    table, tlabel = draw_motion_table(draw)
+    facing = math.degrees(math.atan2(-ux, uy)) + float(draw(st.sampled_from((0.0, 0.0, 90.0, 180.0, -45.0))))
+    mover = _mover(draw, _spheres(draw), world.position(mx, my, _yaw(facing)), world.z, _pks(draw, "player"))
+    gap = float(dr.take(draw, TARGET_GAPS))
+    weenie = draw(TARGET_WEENIES)
+    target = _other(draw, ids, weenie, _spheres(draw), world.position(mx + ux * gap, my + uy * gap))
+    moves = _target_walk(draw, tl.of(target.id), dts, ux, uy, draw(TARGET_MOVES))
+    gone = n  # the tick the server destroys the target at (WorldObject.Destroy), n: never
+    if n > 1 and draw(TARGET_FATES) == "destroyed":
+        gone = draw(st.integers(1, n - 1))
+        rows = tl.of(target.id)
+        rows[gone] = {"destroy": True}
+        for i in range(gone + 1, n):
+            rows[i].clear()
+        moves += f":destroyed@{gone}"
+    goal = draw(CHASE_GOALS)
+    first = tl.mover[0]
+    no_table = goal == "stick" and draw(NO_TABLE)
+    if goal == "stick":  # a melee swing's stick_to_object (Monster_Melee / Player_Melee), the mover beside the target
+        first["stick_to"] = target.id
+        tags = ["stick" + (":no-table" if no_table else "")]
+    else:
+        params, how = _chase_params(draw, goal)
+        first["turn_to_object" if goal == "turn_to_object" else "move_to_object"] = ObjectMoveInput(target.id, params)
+        tags = [f"{goal}:{how}"]
+    for _ in range(min(dr.take(draw, CHASE_LATER), n - 1)):
+        at = draw(st.integers(1, n - 1))
+        kind = "stick" if no_table else draw(CHASE_LATER_KINDS)
+        if at >= gone and kind in ("stick", "again", "turn_to_object", "sticky"):
+            continue  # the server aims nothing at a destroyed object
+        row = tl.mover[at]
+        if kind == "stick":
+            row["stick_to"] = target.id
+        elif kind == "stop":
+            kind = draw(st.sampled_from(STOPS))
+            row["stop"] = kind
+        elif kind in ("again", "sticky"):
+            row["move_to_object"] = ObjectMoveInput(target.id, _chase_params(draw, "sticky" if kind == "sticky" else "move_to_object")[0])
+        elif kind == "turn_to_object":
+            row["turn_to_object"] = ObjectMoveInput(target.id, _chase_params(draw, kind)[0])
+        elif kind == "do_motion":
+            row["do_motion"] = CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))
+        elif kind == "move_to":
+            row["move_to"] = MoveToInput(_params(draw), world.position(mx - ux * 3.0, my - uy * 3.0))
+        else:
+            row["turn_to_heading"] = MoveToInput(_params(draw))
+        tags.append(f"{kind}@{at}")
+    skills = draw_skills(draw)
+    name = f"movers:managed_chase:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
+    scene = _finish(draw, start, dts, tl, world.landblocks, mover, (target,), (), name, ethereal=False)
+    m = scene.mover
+    if no_table:
+        return scene.replace(mover=replace(m, transient_state=m.transient_state | int(TransientState.Active)))
+    return scene.replace(mover=replace(m, motion_table=table, skills=skills,
+                                       transient_state=m.transient_state | int(TransientState.Active)))

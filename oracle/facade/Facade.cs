@@ -87,7 +87,7 @@ namespace Acconform.Oracle
             public uint DoMotion, DoMotionHoldKey, StopMotion, StopMotionHoldKey;
             public ACE.Server.Physics.Common.Position MoveToPos;
             public MovementParameters MoveToParams, TurnToHeadingParams, MoveToObjectParams, TurnToObjectParams;
-            public uint MoveToObjectId, TurnToObjectId;
+            public uint MoveToObjectId, TurnToObjectId, StickToId;
             public uint DoorId; public bool DoorEthereal;  // scene/7: a static opens (ethereal) or closes
             public List<OtherStep> Others;  // scene/8: the other movers' inputs, in the step's order (null: none)
         }
@@ -444,6 +444,7 @@ namespace Acconform.Oracle
                 if ((s.Mask & 32768) != 0) s.TurnToHeadingParams = Params(r);
                 if ((s.Mask & 65536) != 0) { s.TurnToObjectId = r.ReadUInt32(); s.TurnToObjectParams = Params(r); }
                 if ((s.Mask & 131072) != 0) { s.DoorId = r.ReadUInt32(); s.DoorEthereal = r.ReadByte() != 0; }
+                if ((s.Mask & 262144) != 0) s.StickToId = r.ReadUInt32();
                 var nothers = r.ReadInt32();
                 if (nothers > 0)
                 {
@@ -894,6 +895,13 @@ namespace Acconform.Oracle
             if ((s.Mask & 32) != 0) Jump(obj, (ACE.Server.WorldObjects.Player)other.WorldObject, s.Jump);
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
+            if ((s.Mask & 256) != 0 && other.Entered)
+            {
+                // WorldObject.Destroy's physics: its landblock's RemoveWorldObject -> PhysicsObj.DestroyObject; the
+                // landblock ticks it no more
+                obj.DestroyObject();
+                other.Entered = false;
+            }
         }
 
         static void ApplyInputs(PhysicsObj obj, TickStep s)
@@ -915,6 +923,8 @@ namespace Acconform.Oracle
             if ((s.Mask & 32768) != 0) TurnToHeading(obj, s.TurnToHeadingParams);
             if ((s.Mask & 65536) != 0) ObjectMove(obj, s.TurnToObjectId, s.TurnToObjectParams, true);
             if ((s.Mask & 131072) != 0) Door(s.DoorId, s.DoorEthereal);
+            // a melee swing's stick (Monster_Melee.MeleeAttack, Player_Melee.DoSwingMotion): the target's PhysicsObj.ID
+            if ((s.Mask & 262144) != 0) obj.stick_to_object(s.StickToId);
         }
 
         /// <summary>The physics of ACE's server Door (WorldObjects/Door.cs) on the static ServerObjectManager filed

@@ -20,7 +20,7 @@ from pathlib import Path
 from acconform.motion_enums import MotionCommand as MC, MovementParamFlags as MPF
 from acconform.motion_scene import DEFAULT_MOVEMENT_FLAGS, CommandInput, MovementParams, MoveToInput, ObjectMoveInput
 from acconform.flags import PhysicsState
-from acconform.scene import Frame, Position, SphereRec, SphereShape, StaticObject, TickStep
+from acconform.scene import Frame, OtherInputs, Placement, Position, SphereRec, SphereShape, StaticObject, TickStep
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from oracle.motion_scenes import FPS30, player_like_table  # noqa: E402
@@ -80,7 +80,31 @@ def scenes() -> dict:
     for stop in ("stop_completely", "cancel_moveto", "move_to_manager_cancel"):
         out[f"move_to_then_{stop}"] = _scene(f"move_to_then_{stop}", (TickStep(FPS30, move_to=_to(66.0, 64.0)),)
                                              + _idle(8) + (TickStep(FPS30, stop=stop),) + _idle(8))
+    out["sticky_follow_of_a_moving_target"] = sticky_follow_of_a_moving_target()
     return out
+
+
+def sticky_follow_of_a_moving_target():
+    """A monster's melee chase (scene/8, feature objects.targets): the player makes the sticky MoveToObject a
+    melee monster makes (Monster_Navigation.GetMovementParameters: CanWalk off; FailWalk, UseFinalHeading,
+    Sticky, MoveAway) at another player 4 m ahead, who walks away along +x at 2 m/s for a second, stands for
+    two thirds of one, walks back toward it for a second and stands for two: the MoveTo follows the target's
+    voyeur updates (TargetManager.HandleTargetting, ReceiveUpdate), arrives, sticks to it (StickyManager)
+    and is drawn along as the target walks on and back (stop-and-go)."""
+    from oracle.mover_scenes import PLAYER_2, other
+
+    flags = (DEFAULT_MOVEMENT_FLAGS & ~int(MPF.CanWalk)) | int(MPF.FailWalk | MPF.UseFinalHeading | MPF.Sticky
+                                                                | MPF.MoveAway)
+    m = replace(mover((60.0, 60.0, GROUND)), motion_table=player_like_table(), placement=Placement(via="enter_world"))
+
+    def walk(n: int, vx: float) -> tuple:
+        return tuple(TickStep(FPS30, others=(OtherInputs(PLAYER_2, velocity=(vx, 0.0, 0.0)),)) for _ in range(n))
+
+    steps = ((TickStep(FPS30, move_to_object=ObjectMoveInput(PLAYER_2, MovementParams(flags=flags)),
+                       others=(OtherInputs(PLAYER_2, velocity=(2.0, 0.0, 0.0)),)),)
+             + walk(29, 2.0) + walk(20, 0.0) + walk(30, -2.0) + walk(1, 0.0) + _idle(59))
+    target = other(PLAYER_2, "player", (64.0, 60.0, GROUND))
+    return scene("sticky_follow_of_a_moving_target", [land()], m, steps, (), others=(target,))
 
 
 if __name__ == "__main__" and "--record" in sys.argv:

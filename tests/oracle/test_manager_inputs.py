@@ -35,7 +35,9 @@ def _doc(name: str) -> dict:
 def test_each_manager_scene_reads_back_as_the_same_scene_and_needs_the_motion_feature(name):
     scene = SCENES[name]
     assert Scene.loads(scene.dumps()) == scene
-    assert "mover.motion" in scene_features(scene) and scene.format == "acconform.scene/6"
+    # a scene with another mover (the target of sticky_follow_of_a_moving_target) is written as scene/8
+    assert "mover.motion" in scene_features(scene)
+    assert scene.format == ("acconform.scene/8" if scene.others else "acconform.scene/6")
 
 
 def test_movement_parameters_left_at_the_constructors_values_are_left_out_of_the_json():
@@ -48,7 +50,7 @@ def test_movement_parameters_left_at_the_constructors_values_are_left_out_of_the
 @pytest.mark.parametrize("edit, where, problem", [
     (lambda s: s.__setitem__("stop", "halt"), r"steps\[0\]\.stop", "unknown stop 'halt'"),
     (lambda s: s["move_to_object"].__setitem__("object", "0x70000003"), r"steps\[0\]\.move_to_object\.object",
-     "no outdoor static object has id 0x70000003"),
+     "no outdoor static object or other mover in the world has id 0x70000003"),
     (lambda s: s["move_to_object"]["params"].__setitem__("flags", ["Sticky", "Glue"]), r"params\.flags\[1\]",
      "unknown MovementParamFlags flag 'Glue'"),
     (lambda s: s["move_to_object"]["params"].__setitem__("speed", "fast"), r"params\.speed", ""),
@@ -141,3 +143,64 @@ def test_live_ace_and_the_port_answer_each_manager_scene_bit_for_bit(live, name)
     ace = live.run(scene)
     assert ace.error is None and len(ace.ticks) == len(scene.ticks.steps) and not any(t.error for t in ace.ticks)
     assert compare(run_scene(scene, runtime=live.location.runtime), ace, "exact") == [], name
+
+
+# ---------------------------------------------------------------- a moving target (feature objects.targets)
+
+def _follow_with(stick_at: int | None = None, destroy_at: int | None = None):
+    """sticky_follow_of_a_moving_target with a melee swing's stick_to at a step and the target destroyed at one."""
+    from dataclasses import replace
+
+    from acconform.scene import OtherInputs
+    from oracle.mover_scenes import PLAYER_2
+
+    scene = SCENES["sticky_follow_of_a_moving_target"]
+    steps = list(scene.ticks.steps)
+    if stick_at is not None:
+        steps[stick_at] = replace(steps[stick_at], stick_to=PLAYER_2)
+    if destroy_at is not None:
+        steps[destroy_at] = replace(steps[destroy_at], others=(OtherInputs(PLAYER_2, destroy=True),))
+        steps[destroy_at + 1:] = [replace(s, others=()) for s in steps[destroy_at + 1:]]
+    return scene.replace(ticks=replace(scene.ticks, steps=tuple(steps)))
+
+
+def test_a_move_to_object_at_another_mover_needs_objects_targets_and_a_static_target_does_not():
+    assert {"objects.moving", "objects.targets"} <= set(scene_features(SCENES["sticky_follow_of_a_moving_target"]))
+    assert "objects.targets" not in scene_features(SCENES["sticky_move_to_a_static"])
+
+
+def test_stick_to_and_destroy_read_back_and_pack_their_bits():
+    from oracle.mover_scenes import PLAYER_2
+
+    scene = _follow_with(stick_at=3, destroy_at=50)
+    assert Scene.loads(scene.dumps()) == scene and "objects.targets" in scene_features(scene)
+    doc = json.loads(scene.dumps())["ticks"]["steps"]
+    assert doc[3]["stick_to"] == "0x50000002" and doc[50]["others"] == [{"id": "0x50000002", "destroy": True}]
+    assert 1 << TICK_INPUTS.index("stick_to") == 262144
+    stick = _step_bytes(scene, 3)
+    assert stick[8:12] == struct.pack("<I", 262144) and stick[12:16] == struct.pack("<I", PLAYER_2)
+    # no input of the mover; one other's inputs: its index 0 and the mask of bit 8 (destroy) with no value
+    assert _step_bytes(scene, 50)[8:24] == struct.pack("<Iiii", 0, 1, 0, 256)
+
+
+@pytest.mark.parametrize("edit, where, problem", [
+    (lambda d: d["ticks"]["steps"][3].__setitem__("stick_to", "0x50000009"), r"steps\[3\]\.stick_to",
+     "no outdoor static object or other mover in the world has id 0x50000009"),
+    (lambda d: d["ticks"]["steps"][60].__setitem__("others", [{"id": "0x50000002", "velocity": [1, 0, 0]}]),
+     r"steps\[60\]\.others\[0\]\.id", "was destroyed at step 50: it takes no input after"),
+])
+def test_a_stick_to_at_no_object_and_an_input_to_a_destroyed_mover_are_refused(edit, where, problem):
+    doc = json.loads(_follow_with(stick_at=3, destroy_at=50).dumps())
+    edit(doc)
+    with pytest.raises(InvalidScene, match=where + ".*" + problem):
+        Scene.from_json(doc)
+
+
+def test_the_port_stops_stepping_a_destroyed_target_and_the_follower_lets_go_of_it():
+    from acconform.port.run import run_scene
+
+    ticks = run_scene(_follow_with(destroy_at=20)).ticks
+    assert not any(t.error for t in ticks)
+    assert ticks[20].others[0].origin == ticks[-1].others[0].origin  # destroyed: no landblock steps it
+    follow = run_scene(SCENES["sticky_follow_of_a_moving_target"]).ticks
+    assert ticks[-1].origin != follow[-1].origin  # the MoveTo lost its target (ObjectGone) and stopped short

@@ -106,3 +106,54 @@ def test_the_players_skills_are_drawn_default_or_at_the_values_where_aces_formul
     assert any(r >= 800 for r in runs) and any(0 < r < 800 for r in runs)
     assert any(s.stamina == 0 for s in drawn) and any(s.encumbrance_val in (15000, 30000) for s in drawn)
     assert all(sc.format == FORMAT for sc in motion_scenes if sc.mover.skills != DEFAULT_SKILLS)
+
+
+# ---------------------------------------------------------------- a moving target (draw_managed_chase)
+
+@pytest.fixture(scope="module")
+def chase_scenes():
+    """80 scenes of the movers policy managed_chase, drawn as tests/runner/managed_chase_scenes.py draws them."""
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.movers import draw_movers_ticks
+
+    with pinned_constants():
+        drawer = FastDrawer(st.composite(lambda draw: draw_movers_ticks(draw, tk._clock, "managed_chase"))(), 49)
+        return [drawer.draw()[0] for _ in range(80)]
+
+
+def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_other(chase_scenes):
+    from acconform.protocol import scene_features
+
+    for sc in chase_scenes:
+        validate_scene(sc)
+        assert len(sc.others) == 1 and "objects.targets" in scene_features(sc), sc.name
+        first = sc.ticks.steps[0]
+        target = first.stick_to if first.stick_to is not None else (first.move_to_object or first.turn_to_object).object
+        assert target == sc.others[0].id, sc.name
+
+
+def test_chase_scenes_draw_every_goal_target_walk_and_a_destroyed_target(chase_scenes):
+    names = " ".join(sc.name for sc in chase_scenes)
+    for part in (":move_to_object:", ":sticky:", ":turn_to_object:", ":stick", ":no-table", "destroyed@", ":stand:",
+                 ":away", ":toward", ":across", ":stopgo", ":monster", ":charge", ":ranged", ":drawn"):
+        assert part in names, part
+    steps = [s for sc in chase_scenes for s in sc.ticks.steps]
+    assert {s.stop for s in steps} >= {"stop_completely", "cancel_moveto", "move_to_manager_cancel"}
+    # nothing is aimed at a target after the server destroyed it
+    for sc in chase_scenes:
+        gone = next((i for i, s in enumerate(sc.ticks.steps) if any(o.destroy for o in s.others)), None)
+        if gone is not None:
+            assert all(s.stick_to is None and s.move_to_object is None and s.turn_to_object is None
+                       for s in sc.ticks.steps[gone:]), sc.name
+
+
+def test_the_port_runs_chase_scenes_and_a_sticky_follower_moves(chase_scenes):
+    moved = 0
+    for sc in chase_scenes[:12]:
+        ticks = run_scene(sc).ticks
+        assert len(ticks) == len(sc.ticks.steps) and not any(t.error for t in ticks), sc.name
+        moved += ticks[-1].origin != ticks[0].origin
+    assert moved
