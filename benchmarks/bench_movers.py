@@ -14,6 +14,16 @@ medians printed:
   ACE/.NET    ACE's share over its in-runtime time (issue 41 asks at most 2x)
   port/ACE    the port's time over ACE's
 and per column the ratio to the one-mover scene.
+
+Measured (2-core machine shared with other jobs, load average 4-6; stop 49: oracle/pack.py's faster unpack and
+step packing), one run of --rounds 5 on each runtime, ACE/.NET for 1, 2, 3, 4 movers:
+  mono 6.8   1.61  1.83  1.72  1.67   (.NET ms 0.40  0.66  0.95  1.26)
+  .NET 10    1.67  1.88  1.71  1.62   (.NET ms 0.52  0.70  1.02  1.43)
+  before     1.96  2.35  2.46  2.64   (the last figures before stop 49)
+At that load other runs had rows several times over 2x where the scheduler preempted the timed call (a median of
+5 samples), and once 2.02 (one mover, .NET 10). With more rounds .NET 10's tiered JIT recompiles the facade and ACE
+(.NET ms 0.26, 0.34, 0.54, 0.63 at --rounds 25) and the same Python cost is then 2.5-4x: about 1.5-2.5 us of Python
+per TickState (making its objects, with caches cold after the port's run) against 1-2.5 us of optimised .NET.
 """
 
 from __future__ import annotations

@@ -79,6 +79,7 @@ _MOTION = struct.Struct("<IIIIfIIfIIf")
 # HoldKeyToApply
 _PARAMS = struct.Struct("<I6fI")
 _COMMAND = struct.Struct("<II")  # do_motion / stop_motion: the motion, the HoldKeyToApply
+_INDEX_MASK = struct.Struct("<iI")  # another mover's index in the scene's `others`, its inputs' mask
 
 
 def _params(p) -> bytes:
@@ -86,22 +87,42 @@ def _params(p) -> bytes:
                         p.desired_heading, p.hold_key_to_apply)
 
 
+# how each input's value is packed (`v`; the rest: a vector, 3 floats), as the facade reads it
+_INPUT_BYTES = {
+    "state": "_U32.pack(v)", "transient_state": "_U32.pack(v)", "request_pos": "_POS_S.pack(*_pos(v))",
+    "motion": "_MOTION.pack(v.hold_key, v.style, v.forward, v.forward_hold_key, v.forward_speed, v.sidestep, "
+              "v.sidestep_hold_key, v.sidestep_speed, v.turn, v.turn_hold_key, v.turn_speed)",
+    "stop": "_U32.pack(STOPS.index(v))", "do_motion": "_COMMAND.pack(v.motion, v.hold_key)",
+    "stop_motion": "_COMMAND.pack(v.motion, v.hold_key)", "move_to": "_POS_S.pack(*_pos(v.position)) + _params(v.params)",
+    "turn_to_heading": "_params(v.params)", "move_to_object": "_U32.pack(v.object) + _params(v.params)",
+    "turn_to_object": "_U32.pack(v.object) + _params(v.params)", "door": "_DOOR.pack(v.object, 1 if v.ethereal else 0)",
+    "stick_to": "_U32.pack(v)"}
+
+
+def _inputs_packer(names: tuple):
+    """A function of a TickStep or an OtherInputs: (a mask of its inputs present, bit i: names[i]; their values' bytes
+    in that order). Written out per input (a tick scene packs a TickStep, and an OtherInputs per other mover, per
+    tick, and most of their inputs are None)."""
+    body = "".join(f"    v = r.{name}\n    if v is not None:\n        mask |= {1 << bit}\n"
+                   f"        out.append({_INPUT_BYTES.get(name, '_3f.pack(*v)')})\n" for bit, name in enumerate(names))
+    ns: dict = {}
+    exec(f"def inputs(r):\n    mask = 0\n    out = []\n{body}    return mask, out\n", globals(), ns)
+    return ns["inputs"]
+
+
+_tick_inputs = _inputs_packer(TICK_INPUTS)
+_other_mover_inputs = _inputs_packer(OTHER_INPUTS)
+
+
 def _other_inputs(step, index: dict) -> list[bytes]:
     """int n, then per other mover's inputs: its index in the scene's `others`, a mask of the inputs present (bit i:
     OTHER_INPUTS[i]) and their values in that order."""
     out = [_I32.pack(len(step.others))]
     for inputs in step.others:
-        mask = 0
-        values = []
-        for bit, name in enumerate(OTHER_INPUTS):
-            v = getattr(inputs, name)
-            if v is None:
-                continue
-            mask |= 1 << bit
-            values.append(_U32.pack(v) if name in ("state", "transient_state") else _3f.pack(*v))
+        mask, values = _other_mover_inputs(inputs)
         if inputs.destroy:  # bit 8, no value: destroyed after the setters
             mask |= 1 << len(OTHER_INPUTS)
-        out.append(struct.pack("<iI", index[inputs.id], mask))
+        out.append(_INDEX_MASK.pack(index[inputs.id], mask))
         out += values
     return out
 
@@ -116,36 +137,7 @@ def _ticks(ticks: Ticks | None, others=()) -> bytes:
     index = {o.id: k for k, o in enumerate(others)}
     out = [_TICKS_HEAD.pack(1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
     for step, time in zip(ticks.steps, ticks.times()):
-        mask = 0
-        values = []
-        for bit, name in enumerate(TICK_INPUTS):
-            v = getattr(step, name)
-            if v is None:
-                continue
-            mask |= 1 << bit
-            if name in ("state", "transient_state"):
-                values.append(_U32.pack(v))
-            elif name == "request_pos":
-                values.append(_POS_S.pack(*_pos(v)))
-            elif name == "motion":
-                values.append(_MOTION.pack(v.hold_key, v.style, v.forward, v.forward_hold_key, v.forward_speed, v.sidestep,
-                                           v.sidestep_hold_key, v.sidestep_speed, v.turn, v.turn_hold_key, v.turn_speed))
-            elif name == "stop":
-                values.append(_U32.pack(STOPS.index(v)))
-            elif name in ("do_motion", "stop_motion"):
-                values.append(_COMMAND.pack(v.motion, v.hold_key))
-            elif name == "move_to":
-                values.append(_POS_S.pack(*_pos(v.position)) + _params(v.params))
-            elif name == "turn_to_heading":
-                values.append(_params(v.params))
-            elif name in ("move_to_object", "turn_to_object"):
-                values.append(_U32.pack(v.object) + _params(v.params))
-            elif name == "door":
-                values.append(_DOOR.pack(v.object, 1 if v.ethereal else 0))
-            elif name == "stick_to":
-                values.append(_U32.pack(v))
-            else:
-                values.append(_3f.pack(*v))
+        mask, values = _tick_inputs(step)
         out.append(_STEP_HEAD.pack(time, mask))
         out += values
         out += _other_inputs(step, index) if step.others else (_NO_OTHERS,)
@@ -211,22 +203,31 @@ def pack_scene(scene: Scene) -> bytes:
     return b"".join(out)
 
 
-def _frozen_maker(cls):
-    """A positional constructor for a frozen, slotted dataclass that fills its slots directly.
+def _frozen_maker(cls, params: str | None = None, values: dict | None = None, names: dict | None = None):
+    """A constructor for a frozen, slotted dataclass that fills its slots directly: positional, one
+    argument per field, or with `params` (its parameters) and `values` (a field -> the expression of
+    them it is set to, which may use `names`; a field not named there is set to the parameter of its name).
 
     The generated ``__init__`` of a frozen dataclass goes through ``object.__setattr__`` by name for
-    every field (about 3.6 us for Outcome's 17); setting the slots through their descriptors gives
-    the same object (equal, same hash: tests/oracle/test_pack.py) in about a third of the time."""
-    names = [f.name for f in fields(cls)]
-    ns = {"_new": object.__new__, "_cls": cls}
-    ns.update({f"_s_{n}": getattr(cls, n).__set__ for n in names})
-    body = "".join(f"    _s_{n}(o, {n})\n" for n in names)
-    exec(f"def make({', '.join(names)}):\n    o = _new(_cls)\n{body}    return o\n", ns)
+    every field (about 3.6 us for Outcome's 17). The maker fills an object of a plain class with the
+    same slots (a plain attribute store is the interpreter's fastest write) and then makes it a `cls`:
+    Python lets ``__class__`` be assigned between classes of one layout (it checks; a class whose layout
+    differs fails here, at import). The object is the constructor's (equal, same hash:
+    tests/oracle/test_pack.py) in about a quarter of the time of setting each slot through its
+    descriptor, which counts in a tick scene's outcome (a TickState per mover and tick)."""
+    fields_ = [f.name for f in fields(cls)]
+    shell = type(f"{cls.__name__}Shell", (), {"__slots__": tuple(fields_), "__module__": __name__})
+    probe = object.__new__(shell)
+    probe.__class__ = cls  # the layouts agree, or a TypeError now
+    values = values or {}
+    ns = {"_new": object.__new__, "_shell": shell, "_cls": cls, **(names or {})}
+    body = "".join(f"    o.{n} = {values.get(n, n)}\n" for n in fields_)
+    exec(f"def make({params if params is not None else ', '.join(fields_)}):\n    o = _new(_shell)\n{body}"
+         f"    o.__class__ = _cls\n    return o\n", ns)
     return ns["make"]
 
 
 _make_outcome = _frozen_maker(Outcome)
-_make_tick = _frozen_maker(TickState)
 _make_plane = _frozen_maker(PlaneState)
 _make_cps = _frozen_maker(ContactPlaneState)
 _make_ns = _frozen_maker(NormalState)
@@ -278,6 +279,8 @@ _TICK = struct.Struct("<BdII3f4f3f3f3f3fIII3ff3fBi")
 # a MotionInterpreter (byte) and its InterpretedState's and RawState's commands, a CurrAnim's Anim (byte) and its ID,
 # Sequence.FrameNumber, Velocity, Omega, a MoveToManager (byte) and its MovementType, IsMovingTo()
 _MOTION_STATE = struct.Struct("<B" + "IIfIfIf" * 2 + "BIf3f3fBBB")
+_make_command = _frozen_maker(CommandState)
+_make_motion = _frozen_maker(MotionTickState)
 
 
 def _motion_at(data, pos: int):
@@ -285,9 +288,9 @@ def _motion_at(data, pos: int):
     if data[pos] in (0, b"\0"):
         return None, pos + 1
     v = _MOTION_STATE.unpack_from(data, pos + 1)
-    interpreted, raw = (CommandState(*v[1:8]), CommandState(*v[8:15])) if v[0] else (None, None)
-    return (MotionTickState(interpreted, raw, v[16] if v[15] else None, v[17], v[18:21], v[21:24],
-                            v[25] if v[24] else None, bool(v[26])),
+    interpreted, raw = (_make_command(*v[1:8]), _make_command(*v[8:15])) if v[0] else (None, None)
+    return (_make_motion(interpreted, raw, v[16] if v[15] else None, v[17], v[18:21], v[21:24],
+                         v[25] if v[24] else None, bool(v[26])),
             pos + 1 + _MOTION_STATE.size)
 
 
@@ -299,32 +302,79 @@ def _collisions_at(data, pos: int):
     """int n, then per CollisionTable record: the id, TouchedTime (double), Ethereal (byte)."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
-    out = [_make_collision(i, t, bool(e)) for i, t, e in _COLLISION.iter_unpack(data[pos:pos + n * _COLLISION.size])]
-    return tuple(out), pos + n * _COLLISION.size
+    if not n:  # most ticks: nothing touched
+        return (), pos
+    end = pos + n * _COLLISION.size
+    return tuple([_make_collision(i, t, e != 0) for i, t, e in _COLLISION.iter_unpack(data[pos:end])]), end
 
 
-def _state_at(data, pos: int):
-    """One TickState's fields (Facade.WriteState) from `pos`: (its values as TickState's first 18 positional
-    arguments, the offset after them)."""
-    v = _TICK.unpack_from(data, pos)
-    n = v[34]
-    at = pos + _TICK.size
-    shadows = struct.unpack_from(f"<{n}I", data, at) if n else ()
-    at += 4 * n
-    if data[at] in (0, b"\0"):
-        motion, at = None, at + 1
-    else:
-        motion, at = _motion_at(data, at)
-    return (v[0] != 0, v[1], v[2], v[3], v[4:7], v[7:11], v[11:14], v[14:17], v[17:20], v[20:23], v[23], v[24], v[25],
-            _make_plane(v[26:29], v[29]), v[30:33], v[33] != 0, shadows, motion), at
+# A state (Facade.WriteState) is read in one unpack: _TICK's fields, its vectors but the origin as their bytes (the key
+# of the one shared tuple of their floats, by bits as `_RAW`'s: a mover's orientation, velocity, ... mostly stay from
+# tick to tick) and its ContactPlane too (the key of its one PlaneState), then its n ShadowObjects ids and the motion
+# byte: the mover's as `_STATE` + n + "IB"; another mover's with its id before (`_OTHER_AT`) and its CollisionTable's
+# count after (another mover has no motion layer: the byte is 0). One Struct per n and kind, made on first use. So a
+# scene with several movers (one TickState per mover and tick) pays one unpack and one call per TickState.
+_STATE = "BdII3f16s12s12s12s12sIII16s12sBi"
+_N_AT = _TICK.size - 4  # the offset of n in a state
+_OTHER_AT = 1  # where another mover's state starts in its values (after its id)
+_states: dict = {}  # n -> the mover's state Struct
+_other_states: dict = {}  # n -> another mover's
+_vectors: dict = {}  # 12 or 16 bytes -> the tuple of their 3 or 4 floats
+
+
+def _state_struct(n: int):
+    s = _states[n] = struct.Struct(f"<{_STATE}{n}IB")
+    return s
+
+
+def _other_state_struct(n: int):
+    s = _other_states[n] = struct.Struct(f"<I{_STATE}{n}IBi")
+    return s
+
+
+def _plane(key: bytes):
+    v = _parts.get(key)
+    if v is None:
+        if len(_parts) >= _PARTS_LIMIT:
+            _parts.clear()
+        x, y, z, d = _4f.unpack(key)
+        v = _parts[key] = _make_plane((x, y, z), d)
+    return v
+
+
+def _vector(key: bytes) -> tuple:
+    if len(_vectors) >= _PARTS_LIMIT:
+        _vectors.clear()
+    v = _vectors[key] = (_4f if len(key) == 16 else _3f).unpack(key)
+    return v
+
+
+def _tick_maker(at: int):
+    """TickState from a state's values `v` (from index `at`), its n ShadowObjects, its PlaneState, motion layer,
+    CollisionTable, others and id."""
+    def i(k):
+        return f"v[{at + k}]"
+
+    def vec(k):
+        return f"(_vg(v[{at + k}]) or _vector(v[{at + k}]))"
+
+    return _frozen_maker(TickState, "v, n, plane, motion, collisions, others, oid", {
+        "updated": f"{i(0)} != 0", "update_time": i(1), "cell": i(2), "cur_cell": i(3), "origin": f"v[{at + 4}:{at + 7}]",
+        "orientation": vec(7), "velocity": vec(8), "acceleration": vec(9), "omega": vec(10), "cached_velocity": vec(11),
+        "state": i(12), "transient_state": i(13), "contact_plane_cell": i(14), "contact_plane": "plane",
+        "sliding_normal": vec(16), "jumped_this_frame": f"{i(17)} != 0", "shadow_cells": f"v[{at + 19}:{at + 19} + n]",
+        "id": "oid", "error": "None"}, {"_vg": _vectors.get, "_vector": _vector})
+
+
+_mover_tick = _tick_maker(0)
+_other_tick = _tick_maker(_OTHER_AT)
 
 
 def _ticks_at(data, pos: int):
     """int n (-1: not a tick scene), then per tick byte 0 and its state, or byte 1, int length and the error
-    message (the last tick: an error ends the scene). A state is its fields (`_state_at`), then byte 0, or byte 1
+    message (the last tick: an error ends the scene). A state is its fields (`_STATE`), then byte 0, or byte 1
     (a scene with other movers), its CollisionTable, int n and per other mover its id, state and CollisionTable.
-    Returns the TickStates or None. Each TickState is made once, with all its fields (a scene with several movers
-    has one per mover and tick)."""
+    Returns the TickStates or None. Each TickState is made once, with all its fields."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
     if n < 0:
@@ -336,22 +386,33 @@ def _ticks_at(data, pos: int):
             out.append(TickState(error=bytes(data[pos + 5:pos + 5 + k]).decode("utf-8", "replace")))
             pos += 5 + k
             continue
-        fields_, pos = _state_at(data, pos + 1)
-        has_others = data[pos] not in (0, b"\0")
         pos += 1
-        if not has_others:
-            out.append(_make_tick(*fields_, None, None, None, None))
+        (m,) = _I32.unpack_from(data, pos + _N_AT)
+        s = _states.get(m) or _state_struct(m)
+        v = s.unpack_from(data, pos)
+        pos += s.size
+        motion = None
+        if v[-1]:
+            motion, pos = _motion_at(data, pos - 1)
+        plane = _parts.get(v[15]) or _plane(v[15])
+        if data[pos] in (0, b"\0"):  # no other movers
+            out.append(_mover_tick(v, m, plane, motion, None, None, None))
+            pos += 1
             continue
-        collisions, pos = _collisions_at(data, pos)
+        collisions, pos = _collisions_at(data, pos + 1)
         (k,) = _I32.unpack_from(data, pos)
         pos += 4
         others = []
         for _ in range(k):
-            (oid,) = _U32.unpack_from(data, pos)
-            other, pos = _state_at(data, pos + 4)
-            other_collisions, pos = _collisions_at(data, pos)
-            others.append(_make_tick(*other, other_collisions, None, oid, None))
-        out.append(_make_tick(*fields_, collisions, tuple(others), None, None))
+            (j,) = _I32.unpack_from(data, pos + 4 + _N_AT)
+            s = _other_states.get(j) or _other_state_struct(j)
+            w = s.unpack_from(data, pos)
+            pos += s.size
+            table = ()
+            if w[-1]:
+                table, pos = _collisions_at(data, pos - 4)
+            others.append(_other_tick(w, j, _parts.get(w[16]) or _plane(w[16]), None, table, None, w[0]))
+        out.append(_mover_tick(v, m, plane, motion, collisions, tuple(others), None))
     return tuple(out)
 
 

@@ -192,16 +192,32 @@ def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_
 
 
 def _tick_bytes(t):
-    from acconform.oracle.pack import _TICK
-
     if t.error is not None:
         msg = t.error.encode()
         return b"\1" + struct.pack("<i", len(msg)) + msg
-    return b"\0" + _TICK.pack(t.updated, t.update_time, t.cell, t.cur_cell, *t.origin, *t.orientation, *t.velocity,
-                              *t.acceleration, *t.omega, *t.cached_velocity, t.state, t.transient_state,
-                              t.contact_plane_cell, *t.contact_plane.normal, t.contact_plane.d, *t.sliding_normal,
-                              t.jumped_this_frame, len(t.shadow_cells)) + struct.pack(f"<{len(t.shadow_cells)}I", *t.shadow_cells) \
-        + _motion_bytes(t.motion) + b"\0"  # no other movers
+    return b"\0" + _state_bytes(t) + b"\0"  # no other movers
+
+
+def _state_bytes(t):
+    """Facade.WriteState's bytes."""
+    from acconform.oracle.pack import _TICK
+
+    return _TICK.pack(t.updated, t.update_time, t.cell, t.cur_cell, *t.origin, *t.orientation, *t.velocity,
+                      *t.acceleration, *t.omega, *t.cached_velocity, t.state, t.transient_state,
+                      t.contact_plane_cell, *t.contact_plane.normal, t.contact_plane.d, *t.sliding_normal,
+                      t.jumped_this_frame, len(t.shadow_cells)) + struct.pack(f"<{len(t.shadow_cells)}I", *t.shadow_cells) \
+        + _motion_bytes(t.motion)
+
+
+def _collision_bytes(table):
+    return struct.pack("<i", len(table)) + b"".join(struct.pack("<IdB", c.id, c.touched_time, c.ethereal) for c in table)
+
+
+def _tick_with_others_bytes(t):
+    """Facade.WriteTick's bytes in a scene with other movers: the mover's state and CollisionTable, then per other
+    mover its id, state and CollisionTable."""
+    return (b"\0" + _state_bytes(t) + b"\1" + _collision_bytes(t.collisions) + struct.pack("<i", len(t.others))
+            + b"".join(struct.pack("<I", o.id) + _state_bytes(o) + _collision_bytes(o.collisions) for o in t.others))
 
 
 def _commands(c):
@@ -234,6 +250,31 @@ def test_unpacking_a_tick_scene_reads_every_tick_state_and_the_error_that_ended_
     assert (fvp, case, counts) == (0.0, 9.0, (1, 0, 5.0, 2.5))
     # a transition scene's outcome ends with -1: no ticks
     assert unpack_outcome(_packed() + struct.pack("<i", -1))[0].ticks is None
+
+
+def test_unpacking_a_tick_with_other_movers_reads_each_ones_id_state_and_collision_table_keeping_negative_zero():
+    from dataclasses import replace
+
+    from acconform.outcome import CollisionState, PlaneState, TickState
+
+    base = TickState(True, 1000.1, 0xA9B40001, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0), (0.0, 2.0, 0.0),
+                     (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 2.0, 0.0), 0x400, 0x83, 0xA9B40001,
+                     PlaneState((0.0, 0.0, 1.0), -20.0), (0.0, 0.0, 0.0), False, (0xA9B40001,))
+    # vectors equal but for the sign of a zero: shared between ticks by their bits, so each keeps its own
+    other = replace(base, origin=(14.0, 12.5, 20.0), velocity=(-0.0, 2.0, 0.0), sliding_normal=(-0.0, 0.0, 0.0),
+                    shadow_cells=(0xA9B40001, 0xA9B40009), collisions=(CollisionState(0x50000001, 1000.1, False),),
+                    id=0x80000001)
+    quiet = replace(base, contact_plane=PlaneState((0.0, 0.0, 1.0), -0.0), collisions=(), id=0x80000002)
+    mover = replace(base, collisions=(CollisionState(0x80000001, 1000.1, True),), others=(other, quiet))
+    ticks = (mover, replace(mover, origin=(12.0, 12.625, 20.0), collisions=(), others=(quiet, other)))
+    data = (struct.pack("<Bd", 3, 0.0) + struct.pack("<diidd", 9.0, 1, 0, 5.0, 2.5) + _cells(()) + _placement(None)
+            + struct.pack("<i", 2) + b"".join(_tick_with_others_bytes(t) for t in ticks))
+    o = unpack_outcome(data)[0]
+    assert o.ticks == ticks
+    signs = [(math.copysign(1.0, t.velocity[0]), math.copysign(1.0, t.sliding_normal[0]),
+              math.copysign(1.0, t.contact_plane.d)) for t in o.ticks[1].others]
+    assert signs == [(1.0, 1.0, -1.0), (-1.0, -1.0, -1.0)] and o.ticks[0].others[1].contact_plane.d == 0.0
+    assert math.copysign(1.0, o.ticks[0].others[1].contact_plane.d) == -1.0
 
 
 def test_unpacking_a_motion_scenes_ticks_reads_each_ticks_motion_layer_and_the_parts_it_lacks():
