@@ -629,6 +629,9 @@ class SetupRec:
     parts: tuple[PartRec, ...]
     spheres: tuple[SphereRec, ...] = ()
     cylspheres: tuple[CylSphereShape, ...] = ()
+    # scene/8: the Setup's ParentIndex, one uint per part (SetupFlags.HasParent): the DAT reader's, which ACE's
+    # physics never reads (Physics/Setup.cs leaves it commented out); None: the flag clear, no array
+    parent_index: tuple[int, ...] | None = None
 
     def to_json(self):
         d = {"parts": [p.to_json() for p in self.parts]}
@@ -636,11 +639,13 @@ class SetupRec:
             d["spheres"] = [s.to_json() for s in self.spheres]
         if self.cylspheres:
             d["cylspheres"] = [{k: v for k, v in c.to_json().items() if k != "kind"} for c in self.cylspheres]
+        if self.parent_index is not None:
+            d["parent_index"] = list(self.parent_index)
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "SetupRec":
-        r.obj({"parts", "spheres", "cylspheres"})
+        r.obj({"parts", "spheres", "cylspheres", "parent_index"})
         parts = tuple(PartRec.from_json(p) for p in r["parts"].list(min_count=1, max_count=MAX_SETUP_PARTS))
         scaled = [p.scale is not None for p in parts]
         if any(scaled) and not all(scaled):
@@ -652,7 +657,11 @@ class SetupRec:
         if r.given("cylspheres"):
             cylspheres = tuple(_shape_from_json(Reader({"kind": "cylsphere", **c.obj({"low_point", "radius", "height"}).value},
                                                        c.path)) for c in r["cylspheres"].list())
-        return SetupRec(parts, spheres, cylspheres)
+        parent_index = None
+        if r.given("parent_index"):
+            parent_index = tuple(x.int_(0, 0xFFFFFFFF) for x in r["parent_index"].list(min_count=len(parts),
+                                                                                       max_count=len(parts)))
+        return SetupRec(parts, spheres, cylspheres, parent_index)
 
 
 @dataclass(frozen=True, slots=True)
@@ -844,15 +853,28 @@ class OtherInputs:
     jump: Vec3 | None = None
     sequence_velocity: Vec3 | None = None
     sequence_omega: Vec3 | None = None
+    # scene/8 children (objects.children), after the setters: the client's calls on a held item when the server moves
+    # it (a ParentEvent: SetPlacementFrame, then set_parent at another holder's or location; a PickupEvent:
+    # unset_parent): `unparent` first, then `parent`
+    unparent: bool = False
+    parent: "ChildOf | None" = None
 
     def to_json(self):
         d = _setters_json(self, {"id": write_id(self.id)})
+        if self.unparent:
+            d["unparent"] = True
+        if self.parent is not None:
+            d["parent"] = self.parent.to_json()
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherInputs":
-        r.obj({"id", *OTHER_INPUTS})
+        r.obj({"id", *OTHER_INPUTS, "unparent", "parent"})
         kw = _read_setters(r)
+        if r.has("unparent"):
+            kw["unparent"] = r["unparent"].bool_()
+        if r.has("parent"):
+            kw["parent"] = ChildOf.from_json(r["parent"])
         return OtherInputs(r["id"].id_(), **kw)
 
 
@@ -1459,10 +1481,12 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, /7
+        """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
+        setup's parent_index, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
-        if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations:
+        if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or any(
+                o.setup is not None and o.setup.parent_index is not None for o in self.objects):
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7
@@ -1704,6 +1728,29 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
             if inputs.jump is not None and other.weenie != "player":
                 raise InvalidScene(f"{where}.jump", f"a jump is a player's (Player.HandleActionJump); other mover "
                                                     f"0x{inputs.id:08X} is a {other.weenie}")
+            if inputs.parent is not None:
+                _check_reparent(scene, f"{where}.parent.id", inputs.id, inputs.parent.id, by_id)
+
+
+def _check_reparent(scene: Scene, where: str, child: int, parent: int, by_id: dict) -> None:
+    """A tick's `parent` input names the mover or another other, and no object both holds and is held in one scene
+    (a child held by its own child would carry itself: UpdateChild without end): the objects held (a child, or the
+    target of a `parent` input) and the holders (the parents named) are apart."""
+    from .staging import MOVER_ID
+
+    if parent != MOVER_ID and parent not in by_id or parent == child:
+        raise InvalidScene(where, f"no other mover but 0x{child:08X} has id 0x{parent:08X} (a holder is the mover "
+                                  f"0x{MOVER_ID:08X} or another other)")
+    held = {o.id for o in scene.others if o.parent is not None}
+    holders = {o.parent.id for o in scene.others if o.parent is not None}
+    for step in scene.ticks.steps:
+        for inputs in step.others:
+            if inputs.parent is not None:
+                held.add(inputs.id)
+                holders.add(inputs.parent.id)
+    if held & holders:
+        both = ", ".join(f"0x{x:08X}" for x in sorted(held & holders))
+        raise InvalidScene(where, f"{both} would both hold and be held (a holder is never held in a scene)")
 
 
 def _check_launches(scene: Scene, path: str, by_id: dict) -> None:

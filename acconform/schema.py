@@ -166,7 +166,8 @@ def _setup_scenes(scenes):
             if isinstance(o.shape, BSPShape):
                 plain = SetupRec((PartRec(o.shape), PartRec(o.shape, Frame((1.0, 0.0, 0.5), (0.0, 0.0, 0.0, 1.0)))))
                 full = SetupRec(tuple(replace(p, scale=(1.0, 1.0, 2.0)) for p in plain.parts),
-                                (SphereRec((0.0, 0.0, 0.5), 0.5),), (CylSphereShape((0.0, 0.0, 0.0), 0.5, 1.0),))
+                                (SphereRec((0.0, 0.0, 0.5), 0.5),), (CylSphereShape((0.0, 0.0, 0.0), 0.5, 1.0),),
+                                (0xFFFFFFFF, 0))
                 objects = list(scene.objects)
                 return [replace(scene, objects=tuple(objects[:i] + [replace(o, shape=None, setup=s)] + objects[i + 1:]))
                         for s in (plain, full)]
@@ -210,8 +211,10 @@ def _movers_scene(scene, m):
     every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
+    held = OtherInputs(0x80000004, unparent=True, parent=ChildOf(0x50000001, 1, 0))  # the child dropped, held again
     return replace(scene, mover=m, name="movers", others=others,
-                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),)))
+                   ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),
+                                                         TickStep(1 / 30, others=(held,)))))
 
 
 def _missiles_scene(scene, m):

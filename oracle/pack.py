@@ -88,7 +88,7 @@ def _params(p) -> bytes:
 
 def _other_inputs(step, index: dict) -> list[bytes]:
     """int n, then per other mover's inputs: its index in the scene's `others`, a mask of the inputs present (bit i:
-    OTHER_INPUTS[i]) and their values in that order."""
+    OTHER_INPUTS[i], then bit 8 unparent and bit 9 parent) and their values in that order."""
     out = [_I32.pack(len(step.others))]
     for inputs in step.others:
         mask = 0
@@ -99,6 +99,11 @@ def _other_inputs(step, index: dict) -> list[bytes]:
                 continue
             mask |= 1 << bit
             values.append(_U32.pack(v) if name in ("state", "transient_state") else _3f.pack(*v))
+        if inputs.unparent:  # bit 8: unset_parent (no value)
+            mask |= 1 << len(OTHER_INPUTS)
+        if inputs.parent is not None:  # bit 9: held anew (the holder's id, the ParentLocation, the Placement)
+            mask |= 2 << len(OTHER_INPUTS)
+            values.append(struct.pack("<Iii", inputs.parent.id, inputs.parent.location, inputs.parent.placement))
         out.append(struct.pack("<iI", index[inputs.id], mask))
         out += values
     return out

@@ -29,3 +29,15 @@ def set_parent(child: PhysicsObj, parent: PhysicsObj, parent_location: int, plac
     the child). `lscape` is the run's world (ACE's static LScape)."""
     child.set_placement_frame(placement, False)
     return child.set_parent(parent, parent_location, lscape)
+
+
+@harness("a held item moved by the server, as the client handles it (the oracle's facade ApplyOtherInputs' last inputs)")
+def apply_parenting_inputs(child: PhysicsObj, inputs, holders: dict, lscape) -> None:
+    """A tick's children inputs (scene/8 ticks.steps[].others[]): `unparent`, a PickupEvent's
+    ``child.unset_parent()``; then `parent`, a ParentEvent's SetPlacementFrame and set_parent at the
+    holder's location (`set_parent` above; its answer is not kept: the child's state says it). `holders`:
+    id -> PhysicsObj (the mover and the others)."""
+    if inputs.unparent:
+        child.unset_parent()
+    if inputs.parent is not None:
+        set_parent(child, holders[inputs.parent.id], inputs.parent.location, inputs.parent.placement, lscape)

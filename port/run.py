@@ -800,6 +800,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             apply_inputs(mover, step, mode, lscape)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
+                parenting.apply_parenting_inputs(by_id[inputs.id], inputs, by_id, lscape)
             for k, (obj, launch) in enumerate(launches):
                 if launch is not None and launch.tick == index:
                     launcher = by_id[launch.launcher]

@@ -100,6 +100,8 @@ namespace Acconform.Oracle
             public uint Mask;
             public uint State, Transient;
             public Vector3 Velocity, LocalVelocity, Omega, Jump, SequenceVelocity, SequenceOmega;
+            public uint ParentId;  // bit 512: held anew by the mover or another other (bit 256: unset_parent first)
+            public int ParentLocation, Placement;
         }
 
         // scene/8: another mover as the scene gives it (OtherMover), its PhysicsObj and WorldObject once made, and
@@ -459,6 +461,10 @@ namespace Acconform.Oracle
                         if ((o.Mask & 32) != 0) o.Jump = V3(r);
                         if ((o.Mask & 64) != 0) o.SequenceVelocity = V3(r);
                         if ((o.Mask & 128) != 0) o.SequenceOmega = V3(r);
+                        if ((o.Mask & 512) != 0)
+                        {
+                            o.ParentId = r.ReadUInt32(); o.ParentLocation = r.ReadInt32(); o.Placement = r.ReadInt32();
+                        }
                         s.Others.Add(o);
                     }
                 }
@@ -483,7 +489,7 @@ namespace Acconform.Oracle
                 {
                     ApplyInputs(obj, step);
                     if (step.Others != null)
-                        foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o);
+                        foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o, obj);
                     foreach (var o in sceneOthers)
                         if (o.HasLaunch && o.LaunchTick == ticksRun) SceneLaunch(o, obj);
                     SetClock(step.Time);
@@ -883,7 +889,7 @@ namespace Acconform.Oracle
         }
 
 
-        static void ApplyOtherInputs(Other other, OtherStep s)
+        static void ApplyOtherInputs(Other other, OtherStep s, PhysicsObj mover)
         {
             var obj = other.Obj;
             if ((s.Mask & 1) != 0) obj.State = (PhysicsState)s.State;
@@ -894,6 +900,13 @@ namespace Acconform.Oracle
             if ((s.Mask & 32) != 0) Jump(obj, (ACE.Server.WorldObjects.Player)other.WorldObject, s.Jump);
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
+            // children (issue 41): the client's calls when the server moves a held item, on ACE's own PhysicsObj: a
+            // PickupEvent's unset_parent, a ParentEvent's SetPlacementFrame and set_parent (SetParent)
+            if ((s.Mask & 256) != 0) obj.unset_parent();
+            if ((s.Mask & 512) != 0)
+            {
+                SetParent(obj, FindObj(s.ParentId, mover), s.ParentLocation, s.Placement);
+            }
         }
 
         static void ApplyInputs(PhysicsObj obj, TickStep s)
@@ -1512,6 +1525,14 @@ namespace Acconform.Oracle
             return copy;
         }
 
+        /// <summary>The harness's own cleanup, after the scene's answer is written: ChildList.RemoveChild leaves
+        /// NumObjects one past its lists (a child held anew or unparented in a tick), and remove_shadows_from_cells,
+        /// which loops to NumObjects, would throw before leave_cell takes the object out of its cell.</summary>
+        static void CountChildren(PhysicsObj obj)
+        {
+            if (obj.Children != null) obj.Children.NumObjects = obj.Children.Objects.Count;
+        }
+
         static void RemoveStatics()
         {
             // leave cached landblocks as they were built: a placed mover and this scene's statics leave their cells
@@ -1522,12 +1543,14 @@ namespace Acconform.Oracle
             {
                 var mover = placedMover;
                 placedMover = null;
+                CountChildren(mover);
                 mover.remove_shadows_from_cells();
                 mover.leave_cell(false);
             }
             foreach (var o in sceneOthers)
             {
                 if (o.Obj == null) continue;
+                CountChildren(o.Obj);
                 o.Obj.remove_shadows_from_cells();
                 o.Obj.leave_cell(false);
                 o.Obj = null;
