@@ -1134,12 +1134,24 @@ class ChildOf:
     id: int
     location: int
     placement: int = 0  # ACE.Entity.Enum.Placement.Default
+    # the frame form instead of a location (scene/8, `part` and `frame`): set_parent(parent, part, frame), the
+    # client's call for an object attached to a part (ParticleEmitter.SetParenting): add_child at that part (-1:
+    # the parent's Position) with that frame, location 0, and no SetPlacementFrame
+    part: int | None = None
+    frame: Frame | None = None
 
     def to_json(self):
+        if self.part is not None:
+            return {"id": write_id(self.id), "part": self.part, "frame": self.frame.to_json()}
         return {"id": write_id(self.id), "location": _location_json(self.location), "placement": self.placement}
 
     @staticmethod
     def from_json(r: Reader) -> "ChildOf":
+        if isinstance(r.value, dict) and ("part" in r.value or "frame" in r.value):
+            r.obj({"id", "part", "frame"})
+            if not (r.given("part") and r.given("frame")):
+                r.fail("the frame form gives both part and frame (set_parent(parent, part, frame)), and no location")
+            return ChildOf(r["id"].id_(), 0, 0, r["part"].int_(*INT32), Frame.from_json(r["frame"]))
         r.obj({"id", "location", "placement"})
         return ChildOf(r["id"].id_(), _read_location(r["location"]),
                        r["placement"].int_(*INT32) if r.given("placement") else 0)

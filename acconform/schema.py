@@ -211,7 +211,8 @@ def _movers_scene(scene, m):
     every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
-    held = OtherInputs(0x80000004, unparent=True, parent=ChildOf(0x50000001, 1, 0))  # the child dropped, held again
+    # the child dropped, then held again by the frame form (part 0 and a frame)
+    held = OtherInputs(0x80000004, unparent=True, parent=ChildOf(0x50000001, 0, 0, 0, Frame((0.4, 0.1, 1.0))))
     return replace(scene, mover=m, name="movers", others=others,
                    ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),
                                                          TickStep(1 / 30, others=(held,)))))

@@ -162,6 +162,11 @@ CARRY_WALL_ID = 0x7D000031
 # others[].unparent / .parent): none, dropped (unset_parent), dropped and picked up again, moved to another
 # location of its holder, handed to the other holder; the old holder stands from then on, or moves on (a holder that
 # lost a child throws at its next move within a cell: ChildList.RemoveChild leaves NumObjects one too high)
+# a child held by part 0 or at a missing location whose drawn Placement is one of these is attached by the frame
+# form instead, set_parent(holder, part, frame) (the client's call for an object attached to a part,
+# ParticleEmitter.SetParenting; no placement frame): part 0 with the holding frame drawn for it, or part 1, past
+# the Setup's one part, which add_child refuses. Picked from a draw made already: no draw of its own.
+FRAME_FORM_PLACEMENTS = (13, 101)
 HANDINGS = st.sampled_from(("none", "none", "drop", "drop-pick", "other-hand", "hand-over", "hand-over"))
 HANDING_STOPS = st.sampled_from((True, True, True, False))
 HIDDEN_TAKERS = st.sampled_from((False, False, False, True))  # the new holder is Hidden (set_parent: NoDraw)
@@ -829,8 +834,13 @@ def _carry(draw, clock) -> Scene:
         if at_kind != "missing":
             part = 0 if at_kind == "part0" else draw(PAST_PARTS)
             taken.append(HoldingLocation(location, part, _holding_frame(draw, begins[who].frame.origin, part == 0)))
-        held.append(_child(draw, ids, who, location))
-        kinds.append(at_kind + ("-mover" if who != holder_id else ""))
+        ch = _child(draw, ids, who, location)
+        frame_form = ch.parent.placement in FRAME_FORM_PLACEMENTS and at_kind != "position"
+        if frame_form:  # attached by its part and a frame instead (part 0 the holding frame's, else part 1: refused)
+            part, f = (0, taken[-1].frame) if at_kind == "part0" else (1, Frame(_vec(0.0, 0.0, 1.0)))
+            ch = replace(ch, parent=ChildOf(who, 0, 0, part, f))
+        held.append(ch)
+        kinds.append(at_kind + ("-frame" if frame_form else "") + ("-mover" if who != holder_id else ""))
     for who, taken in locations.items():
         if draw(EXTRA_LOCATION):
             used = {h.location for h in taken} | {ch.parent.location for ch in held if ch.parent.id == who}
@@ -877,7 +887,7 @@ def _handing(draw, tl: _Timeline, rows: list[dict], held: list[OtherMover], hold
         row[at]["unparent"] = True
     if how == "drop-pick":
         later = draw(st.integers(at + 1, tl.n - 1))
-        tl.of(first.id)[later]["parent"] = ChildOf(old, first.parent.location, first.parent.placement)
+        tl.of(first.id)[later]["parent"] = first.parent  # held again as it was
     elif how in ("other-hand", "hand-over"):
         row[at]["parent"] = ChildOf(new, location, draw(PLACEMENTS))
     suffix = f":{how}@{at}"

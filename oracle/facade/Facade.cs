@@ -102,6 +102,8 @@ namespace Acconform.Oracle
             public Vector3 Velocity, LocalVelocity, Omega, Jump, SequenceVelocity, SequenceOmega;
             public uint ParentId;  // bit 512: held anew by the mover or another other (bit 256: unset_parent first)
             public int ParentLocation, Placement;
+            public byte ParentForm;
+            public AFrame ParentFrame;
         }
 
         // scene/8: another mover as the scene gives it (OtherMover), its PhysicsObj and WorldObject once made, and
@@ -126,6 +128,8 @@ namespace Acconform.Oracle
             public List<uint> PlacedShadowCells;
             // a child (scene/8 `parent`): held by the mover or an earlier other at a ParentLocation with a Placement
             public bool HasParent;
+            public byte ParentForm;  // 1: at a location (set_parent(parent, location)); 2: the frame form, at ParentLocation's part
+            public AFrame ParentFrame;
             public uint ParentId;
             public int ParentLocation, Placement;
             // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
@@ -463,7 +467,9 @@ namespace Acconform.Oracle
                         if ((o.Mask & 128) != 0) o.SequenceOmega = V3(r);
                         if ((o.Mask & 512) != 0)
                         {
-                            o.ParentId = r.ReadUInt32(); o.ParentLocation = r.ReadInt32(); o.Placement = r.ReadInt32();
+                            o.ParentForm = r.ReadByte(); o.ParentId = r.ReadUInt32(); o.ParentLocation = r.ReadInt32();
+                            o.Placement = r.ReadInt32();
+                            if (o.ParentForm == 2) o.ParentFrame = new AFrame(V3(r), Q(r));
                         }
                         s.Others.Add(o);
                     }
@@ -905,7 +911,7 @@ namespace Acconform.Oracle
             if ((s.Mask & 256) != 0) obj.unset_parent();
             if ((s.Mask & 512) != 0)
             {
-                SetParent(obj, FindObj(s.ParentId, mover), s.ParentLocation, s.Placement);
+                HoldChild(obj, FindObj(s.ParentId, mover), s.ParentForm, s.ParentLocation, s.Placement, s.ParentFrame);
             }
         }
 
@@ -2028,9 +2034,11 @@ namespace Acconform.Oracle
                     Did = r.ReadUInt32(), Id = r.ReadUInt32(), Weenie = r.ReadByte(), Pks = (PlayerKillerStatus)r.ReadUInt32(),
                     Scale = r.ReadSingle(), State = (PhysicsState)r.ReadUInt32(), Transient = (TransientStateFlags)r.ReadUInt32(),
                     Velocity = V3(r), Begin = Pos(r),
-                    HasParent = r.ReadByte() != 0, ParentId = r.ReadUInt32(), ParentLocation = r.ReadInt32(),
+                    ParentForm = r.ReadByte(), ParentId = r.ReadUInt32(), ParentLocation = r.ReadInt32(),
                     Placement = r.ReadInt32(),
                 };
+                o.HasParent = o.ParentForm != 0;
+                if (o.ParentForm == 2) o.ParentFrame = new AFrame(V3(r), Q(r));
                 o.HasLaunch = r.ReadByte() != 0;
                 if (o.HasLaunch)
                 {
@@ -2086,7 +2094,7 @@ namespace Acconform.Oracle
                 if (o.HasParent)
                 {
                     var parent = o.ParentId == mover.ID ? mover : sceneOthers.Find(x => x.Id == o.ParentId).Obj;
-                    var held = SetParent(obj, parent, o.ParentLocation, o.Placement);
+                    var held = HoldChild(obj, parent, o.ParentForm, o.ParentLocation, o.Placement, o.ParentFrame);
                     o.PlacedResult = (int)(held ? SetPositionError.OK : SetPositionError.GeneralFailure);
                     ReadPlaced(o, obj);
                     continue;
@@ -2121,6 +2129,16 @@ namespace Acconform.Oracle
         /// (PhysicsObj.set_parent(PhysicsObj, int): add_child at the Setup's HoldingLocation, unset_parent,
         /// leave_world, change_cell into the parent's cell, UpdateChild, recalc_cross_cells). The port's
         /// counterpart is port/parenting.py set_parent.</summary>
+        /// <summary>A child held as the scene says (`form`): at a location (SetParent), or by the frame form,
+        /// ACE's set_parent(parent, partIdx, frame) (the client's call for an object attached to a part:
+        /// ParticleEmitter.SetParenting), `part` given in ParentLocation's place. The port's counterpart is
+        /// port/parenting.py hold_child.</summary>
+        static bool HoldChild(PhysicsObj child, PhysicsObj parent, byte form, int location, int placement, AFrame frame)
+        {
+            if (form == 2) return child.set_parent(parent, location, new AFrame(frame));
+            return SetParent(child, parent, location, placement);
+        }
+
         static bool SetParent(PhysicsObj child, PhysicsObj parent, int parentLocation, int placement)
         {
             child.SetPlacementFrame(placement, false);

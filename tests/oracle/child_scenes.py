@@ -189,6 +189,43 @@ def arrow_carrying_a_child_is_launched():
                  _steps(30, (0.0, 0.0, 0.0)), others=(target, flight, child(0x80000020, parent=ARROW)))
 
 
+def _by_frame(part: int, frame=Frame((60.3, 60.2, 20.9), QUARTER_TURN), parent: int = MOVER_ID) -> ChildOf:
+    return ChildOf(parent, 0, 0, part, frame)
+
+
+def player_walks_with_a_child_attached_by_its_part_and_a_frame():
+    """The sword attached by the frame form, set_parent(player, part 0, frame) (the client's call for an object
+    attached to a part: ParticleEmitter.SetParenting): the part's frame combined with the given one, in landblock
+    coordinates as SHIELD_BY_PART's (a server never moves the part)."""
+    return scene("player_walks_with_a_child_attached_by_its_part_and_a_frame", [land()], _carrier((60.0, 60.0, GROUND)),
+                 _steps(10, (0.0, 3.0, 0.0)), others=(replace(child(), parent=_by_frame(0)),))
+
+
+def child_attached_past_its_parents_parts_by_a_frame():
+    """The frame form at part 1, past the player's one part: add_child(obj, partIdx, frame) refuses a part at or past
+    NumParts (only -1 means the Position there), so set_parent answers false: GeneralFailure."""
+    return scene("child_attached_past_its_parents_parts_by_a_frame", [land()], _carrier((60.0, 60.0, GROUND)),
+                 _steps(5, (0.0, 3.0, 0.0)), others=(replace(child(), parent=_by_frame(1)),))
+
+
+def child_attached_at_part_minus_one_by_a_frame():
+    """The frame form at part -1 (add_child's "the Position"): accepted, but UpdateChild, which reads -1 as a part
+    index below NumParts, indexes Parts[-1] and throws ArgumentOutOfRangeException: ACE's answer."""
+    return scene("child_attached_at_part_minus_one_by_a_frame", [land()], _carrier((60.0, 60.0, GROUND)),
+                 _steps(5, (0.0, 3.0, 0.0)), others=(replace(child(), parent=_by_frame(-1, Frame((0.0, 0.4, 1.0)))),))
+
+
+def player_moves_a_child_from_its_hand_to_its_part_by_a_frame():
+    """Held in the right hand, then at tick 6 attached by the frame form to the player's part (set_parent's frame
+    form: unset_parent, leave_world, change_cell, UpdateChild); the player stands from then on (it lost a child)."""
+    return scene("player_moves_a_child_from_its_hand_to_its_part_by_a_frame", [land()],
+                 _carrier((60.0, 60.0, GROUND), RIGHT_HAND),
+                 _handing(6, OtherInputs(SWORD, parent=_by_frame(0)), n=15, stop=True), others=(child(),))
+
+
+NAMED_FRAME = (player_walks_with_a_child_attached_by_its_part_and_a_frame, child_attached_past_its_parents_parts_by_a_frame,
+               child_attached_at_part_minus_one_by_a_frame, player_moves_a_child_from_its_hand_to_its_part_by_a_frame)
+
 NAMED_HANDING = (player_moves_a_child_to_its_other_hand, player_hands_a_child_to_a_monster,
                  player_drops_a_child_and_walks_into_it, player_drops_a_child_and_picks_it_up_again,
                  hidden_monster_takes_a_child, arrow_carrying_a_child_is_launched)
@@ -196,7 +233,7 @@ NAMED_HANDING = (player_moves_a_child_to_its_other_hand, player_hands_a_child_to
 NAMED = (player_walks_carrying_a_child, player_turns_carrying_a_child, player_carries_a_child_across_a_cell_border,
          monster_walks_carrying_a_child, player_walks_with_a_child_held_by_a_part,
          player_carrying_a_child_walks_into_a_wall, player_carrying_a_child_bumps_a_moving_object,
-         child_at_a_location_its_parent_lacks) + NAMED_HANDING
+         child_at_a_location_its_parent_lacks) + NAMED_HANDING + NAMED_FRAME
 
 
 def scenes() -> dict:

@@ -264,7 +264,30 @@ def test_a_childs_tick_inputs_pack_as_bits_8_and_9_after_the_setters():
 
     drop, pick = (b"".join(_other_inputs(scene.ticks.steps[k], {SWORD: 0})) for k in (4, 12))
     assert drop == struct.pack("<iiI", 1, 0, 1 << 8)
-    assert pick == struct.pack("<iiIIii", 1, 0, 1 << 9, MOVER_ID, int(ParentLocation.RightHand), 0)
+    assert pick == struct.pack("<iiIBIii", 1, 0, 1 << 9, 1, MOVER_ID, int(ParentLocation.RightHand), 0)
+
+
+def test_a_child_by_the_frame_form_packs_form_2_its_part_and_its_frame_and_reads_back():
+    scene = SCENES["player_walks_with_a_child_attached_by_its_part_and_a_frame"]
+    doc = json.loads(scene.dumps())
+    assert doc["others"][0]["parent"] == {"id": "0x50000001", "part": 0, "frame": {
+        "origin": [60.3, 60.2, 20.9], "orientation": [0.70710677, 0.0, 0.0, 0.70710677]}}
+    assert Scene.loads(scene.dumps()) == scene
+    packed = pack_scene(scene)
+    want = struct.pack("<BIii", 2, MOVER_ID, 0, 0) + struct.pack("<3f4f", 60.3, 60.2, 20.9, 0.70710677, 0.0, 0.0, 0.70710677)
+    assert want in packed
+    doc["others"][0]["parent"] = {"id": "0x50000001", "part": 0}
+    with pytest.raises(InvalidScene) as e:
+        Scene.loads(json.dumps(doc))
+    assert "both part and frame" in str(e.value)
+
+
+def test_ace_refuses_the_frame_form_past_the_parts_and_throws_at_part_minus_one():
+    for runtime in ("mono", "coreclr"):
+        ace = recorded_outcomes(DATA, runtime)
+        assert ace["child_attached_past_its_parents_parts_by_a_frame"].other_placements[0].result == (
+            SetPositionError.GeneralFailure)
+        assert ace["child_attached_at_part_minus_one_by_a_frame"].error.startswith("ArgumentOutOfRangeException")
 
 
 def test_ace_throws_at_the_next_move_of_a_holder_that_lost_a_child():
