@@ -33,8 +33,9 @@ What each shape becomes (`static_records(obj, index)`):
 - **setup** (scene/7, a Setup of several parts; `setup_records`): each part a physics GfxObj
   written as a BSP static's, id ``0x01F00000 + 16 index + k`` for part k (`PART_GFX_OBJ_BASE`; at
   most 16 parts, index below 0xF000, so these ids end below the buildings' shells), then a Setup,
-  id ``0x02000001 + index``, naming the parts in order: flags HasDefaultScale when the parts have
-  scales (then each part's scale, in order), one placement frame keyed 0 (Placement.Default, which
+  id ``0x02000001 + index``, naming the parts in order: flags HasParent with a `parent_index` (scene/8:
+  then one uint per part, the DAT's ParentIndex, which ACE's physics never reads) and HasDefaultScale when
+  the parts have scales (then each part's scale, in order), one placement frame keyed 0 (Placement.Default, which
   `PartArray.SetPlacementFrame` falls back to when 0x65 is absent) holding each part's frame and no
   hooks, the Setup's cylspheres and spheres, Height, Radius and step heights 0 as every static's.
 
@@ -126,6 +127,7 @@ MAX_OTHERS = 0xFFFF
 
 # ACE.Entity.Enum.GfxObjFlags, StipplingType, SetupFlags
 GFX_HAS_PHYSICS = 0x1
+SETUP_HAS_PARENT = 0x1
 SETUP_HAS_DEFAULT_SCALE = 0x2
 DEFAULT_PLACEMENT = 0  # ACE.Entity.Enum.Placement.Default: the key PartArray.SetPlacementFrame falls back to
 STIPPLING_NO_POS = 0x4
@@ -281,8 +283,9 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
 
 def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
           placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0,
-          holding_locations=(), sorting_sphere=((0.0, 0.0, 0.0), 0.0)) -> bytes:
-    """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, else 0), the parts,
+          holding_locations=(), sorting_sphere=((0.0, 0.0, 0.0), 0.0), parent_index=None) -> bytes:
+    """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, HasParent when
+    `parent_index` is, else 0), the parts, the ParentIndex (one uint per part, with HasParent),
     the DefaultScale (one vector per part), the HoldingLocations (`holding_locations`: (location id, part
     id, scene Frame) triples in the order given, which is the Dictionary's; none by default; a part id
     at or past the parts holds at the object's Position, and -1 throws in UpdateChild), no connection points, the placement
@@ -292,9 +295,13 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     default: what a child's calc_cross_cells finds its cells with) and a zero selection sphere, no
     lights, the DefaultAnimation and DefaultMotionTable given (0, none, by default), no default script,
     sound table or script table."""
-    flags = SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0
+    flags = (SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0) | (SETUP_HAS_PARENT if parent_index is not None else 0)
     out = [_u32.pack(setup_id), _u32.pack(flags), _u32.pack(len(parts))]
     out += [_u32.pack(p) for p in parts]
+    if parent_index is not None:  # HasParent: ParentIndex, one uint per part (ACE's physics never reads it)
+        if len(parent_index) != len(parts):
+            raise ValueError(f"a ParentIndex has one entry per part: {len(parent_index)} for {len(parts)} parts")
+        out += [_u32.pack(i) for i in parent_index]
     if default_scale is not None:
         if len(default_scale) != len(parts):
             raise ValueError(f"a DefaultScale has one vector per part: {len(default_scale)} for {len(parts)} parts")
@@ -361,7 +368,8 @@ def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
     scaled = rec.parts[0].scale is not None
     body = setup(setup_id, ids, spheres=[(s.center, s.radius) for s in rec.spheres],
                  cylspheres=[(c.low_point, c.radius, c.height) for c in rec.cylspheres],
-                 placement=[p.frame for p in rec.parts], default_scale=[p.scale for p in rec.parts] if scaled else None)
+                 placement=[p.frame for p in rec.parts], default_scale=[p.scale for p in rec.parts] if scaled else None,
+                 parent_index=rec.parent_index)
     return ObjectRecords(setup_id, parts + (DatRecord(setup_id, "SetupModel", body),))
 
 

@@ -125,12 +125,14 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                        "state and inputs, entered into the world after the mover (enter_world) and stepped by "
                        "update_object after it each tick, in the order they entered; answered with their placements "
                        "and, per tick, their states and every mover's CollisionTable (outcome/6)"),
-    "objects.children": (lambda s: any(o.parent is not None for o in s.others),
+    "objects.children": (lambda s: any(o.parent is not None for o in s.others) or s.ticks is not None and any(
+                             i.parent is not None or i.unparent for step in s.ticks.steps for i in step.others),
                          "children (scene/8: others[].parent, the holders' holding_locations, others[].sorting_sphere): "
                          "another mover held by the mover or an earlier other at a holding location of its Setup, "
                          "parented as the client parents a wielded item (SetPlacementFrame, then set_parent) instead "
                          "of entering the world, never stepped itself and carried by its parent's UpdateChild each "
-                         "tick; needs objects.moving too"),
+                         "tick; the tick inputs others[].unparent (unset_parent) and others[].parent "
+                         "(SetPlacementFrame, set_parent: held anew); needs objects.moving too"),
     "objects.targets": (lambda s: s.ticks is not None and any(
                             step.stick_to is not None or any(o.destroy for o in step.others) or any(t is not None and t.object in {o.id for o in s.others}
                                                              for t in (step.move_to_object, step.turn_to_object))

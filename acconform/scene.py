@@ -629,6 +629,9 @@ class SetupRec:
     parts: tuple[PartRec, ...]
     spheres: tuple[SphereRec, ...] = ()
     cylspheres: tuple[CylSphereShape, ...] = ()
+    # scene/8: the Setup's ParentIndex, one uint per part (SetupFlags.HasParent): the DAT reader's, which ACE's
+    # physics never reads (Physics/Setup.cs leaves it commented out); None: the flag clear, no array
+    parent_index: tuple[int, ...] | None = None
 
     def to_json(self):
         d = {"parts": [p.to_json() for p in self.parts]}
@@ -636,11 +639,13 @@ class SetupRec:
             d["spheres"] = [s.to_json() for s in self.spheres]
         if self.cylspheres:
             d["cylspheres"] = [{k: v for k, v in c.to_json().items() if k != "kind"} for c in self.cylspheres]
+        if self.parent_index is not None:
+            d["parent_index"] = list(self.parent_index)
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "SetupRec":
-        r.obj({"parts", "spheres", "cylspheres"})
+        r.obj({"parts", "spheres", "cylspheres", "parent_index"})
         parts = tuple(PartRec.from_json(p) for p in r["parts"].list(min_count=1, max_count=MAX_SETUP_PARTS))
         scaled = [p.scale is not None for p in parts]
         if any(scaled) and not all(scaled):
@@ -652,7 +657,11 @@ class SetupRec:
         if r.given("cylspheres"):
             cylspheres = tuple(_shape_from_json(Reader({"kind": "cylsphere", **c.obj({"low_point", "radius", "height"}).value},
                                                        c.path)) for c in r["cylspheres"].list())
-        return SetupRec(parts, spheres, cylspheres)
+        parent_index = None
+        if r.given("parent_index"):
+            parent_index = tuple(x.int_(0, 0xFFFFFFFF) for x in r["parent_index"].list(min_count=len(parts),
+                                                                                       max_count=len(parts)))
+        return SetupRec(parts, spheres, cylspheres, parent_index)
 
 
 @dataclass(frozen=True, slots=True)
@@ -847,19 +856,32 @@ class OtherInputs:
     # feature objects.targets: after the setters the server destroys it (WorldObject.Destroy: its landblock's
     # RemoveWorldObject, PhysicsObj.DestroyObject), and no tick steps it again
     destroy: bool = False
+    # scene/8 children (objects.children), after the setters: the client's calls on a held item when the server moves
+    # it (a ParentEvent: SetPlacementFrame, then set_parent at another holder's or location; a PickupEvent:
+    # unset_parent): `unparent` first, then `parent`
+    unparent: bool = False
+    parent: "ChildOf | None" = None
 
     def to_json(self):
         d = _setters_json(self, {"id": write_id(self.id)})
         if self.destroy:
             d["destroy"] = True
+        if self.unparent:
+            d["unparent"] = True
+        if self.parent is not None:
+            d["parent"] = self.parent.to_json()
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherInputs":
-        r.obj({"id", *OTHER_INPUTS, "destroy"})
+        r.obj({"id", *OTHER_INPUTS, "destroy", "unparent", "parent"})
         kw = _read_setters(r)
         if r.given("destroy"):
             kw["destroy"] = r["destroy"].bool_()
+        if r.given("unparent"):
+            kw["unparent"] = r["unparent"].bool_()
+        if r.given("parent"):
+            kw["parent"] = ChildOf.from_json(r["parent"])
         return OtherInputs(r["id"].id_(), **kw)
 
 
@@ -1130,12 +1152,24 @@ class ChildOf:
     id: int
     location: int
     placement: int = 0  # ACE.Entity.Enum.Placement.Default
+    # the frame form instead of a location (scene/8, `part` and `frame`): set_parent(parent, part, frame), the
+    # client's call for an object attached to a part (ParticleEmitter.SetParenting): add_child at that part (-1:
+    # the parent's Position) with that frame, location 0, and no SetPlacementFrame
+    part: int | None = None
+    frame: Frame | None = None
 
     def to_json(self):
+        if self.part is not None:
+            return {"id": write_id(self.id), "part": self.part, "frame": self.frame.to_json()}
         return {"id": write_id(self.id), "location": _location_json(self.location), "placement": self.placement}
 
     @staticmethod
     def from_json(r: Reader) -> "ChildOf":
+        if isinstance(r.value, dict) and ("part" in r.value or "frame" in r.value):
+            r.obj({"id", "part", "frame"})
+            if not (r.given("part") and r.given("frame")):
+                r.fail("the frame form gives both part and frame (set_parent(parent, part, frame)), and no location")
+            return ChildOf(r["id"].id_(), 0, 0, r["part"].int_(*INT32), Frame.from_json(r["frame"]))
         r.obj({"id", "location", "placement"})
         return ChildOf(r["id"].id_(), _read_location(r["location"]),
                        r["placement"].int_(*INT32) if r.given("placement") else 0)
@@ -1480,11 +1514,12 @@ class Scene:
     @property
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
-        motion table's hooks, animations without root motion or DefaultAnimation, /7
+        motion table's hooks, animations without root motion or DefaultAnimation, a setup's parent_index, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
-                self.mover.motion_table is not None and self.mover.motion_table.needs_v8):
+                self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or any(
+                o.setup is not None and o.setup.parent_index is not None for o in self.objects):
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7
@@ -1718,6 +1753,10 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
     if scene.ticks is None:
         return
     destroyed = {}  # id -> the step that destroyed it
+    # every object that holds or is held in the scene, at the start or by a tick's `parent` input
+    parenting = {o.id for o in scene.others if o.parent is not None} | {o.parent.id for o in scene.others if o.parent is not None}
+    parenting |= {x for step in scene.ticks.steps for inputs in step.others if inputs.parent is not None
+                  for x in (inputs.id, inputs.parent.id)}
     for i, step in enumerate(scene.ticks.steps):
         seen = set()
         for k, inputs in enumerate(step.others):
@@ -1739,10 +1778,33 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
                 raise InvalidScene(f"{where}.id", f"other mover 0x{inputs.id:08X} was destroyed at step "
                                                   f"{destroyed[inputs.id]}: it takes no input after")
             if inputs.destroy:
-                if other.begin is None or any(o.parent is not None and o.parent.id == inputs.id for o in scene.others):
+                if other.begin is None or inputs.id in parenting:
                     raise InvalidScene(f"{where}.destroy", f"other mover 0x{inputs.id:08X} is a child or holds one: "
                                                            "only a mover that entered the world alone is destroyed")
                 destroyed[inputs.id] = i
+            if inputs.parent is not None:
+                _check_reparent(scene, f"{where}.parent.id", inputs.id, inputs.parent.id, by_id)
+
+
+def _check_reparent(scene: Scene, where: str, child: int, parent: int, by_id: dict) -> None:
+    """A tick's `parent` input names the mover or another other, and no object both holds and is held in one scene
+    (a child held by its own child would carry itself: UpdateChild without end): the objects held (a child, or the
+    target of a `parent` input) and the holders (the parents named) are apart."""
+    from .staging import MOVER_ID
+
+    if parent != MOVER_ID and parent not in by_id or parent == child:
+        raise InvalidScene(where, f"no other mover but 0x{child:08X} has id 0x{parent:08X} (a holder is the mover "
+                                  f"0x{MOVER_ID:08X} or another other)")
+    held = {o.id for o in scene.others if o.parent is not None}
+    holders = {o.parent.id for o in scene.others if o.parent is not None}
+    for step in scene.ticks.steps:
+        for inputs in step.others:
+            if inputs.parent is not None:
+                held.add(inputs.id)
+                holders.add(inputs.parent.id)
+    if held & holders:
+        both = ", ".join(f"0x{x:08X}" for x in sorted(held & holders))
+        raise InvalidScene(where, f"{both} would both hold and be held (a holder is never held in a scene)")
 
 
 def _check_launches(scene: Scene, path: str, by_id: dict) -> None:

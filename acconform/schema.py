@@ -166,7 +166,8 @@ def _setup_scenes(scenes):
             if isinstance(o.shape, BSPShape):
                 plain = SetupRec((PartRec(o.shape), PartRec(o.shape, Frame((1.0, 0.0, 0.5), (0.0, 0.0, 0.0, 1.0)))))
                 full = SetupRec(tuple(replace(p, scale=(1.0, 1.0, 2.0)) for p in plain.parts),
-                                (SphereRec((0.0, 0.0, 0.5), 0.5),), (CylSphereShape((0.0, 0.0, 0.0), 0.5, 1.0),))
+                                (SphereRec((0.0, 0.0, 0.5), 0.5),), (CylSphereShape((0.0, 0.0, 0.0), 0.5, 1.0),),
+                                (0xFFFFFFFF, 0))
                 objects = list(scene.objects)
                 return [replace(scene, objects=tuple(objects[:i] + [replace(o, shape=None, setup=s)] + objects[i + 1:]))
                         for s in (plain, full)]
@@ -211,11 +212,14 @@ def _movers_scene(scene, m):
     every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
+    # the child dropped, then held again by the frame form (part 0 and a frame)
+    held = OtherInputs(0x80000004, unparent=True, parent=ChildOf(0x50000001, 0, 0, 0, Frame((0.4, 0.1, 1.0))))
     return replace(scene, mover=m, name="movers", others=others,
                    ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),
                                                           # objects.targets: a melee swing's stick_to, a destroyed NPC
                                                           TickStep(1 / 30, stick_to=0x80000001,
-                                                                   others=(OtherInputs(0x80000002, destroy=True),)))))
+                                                                   others=(OtherInputs(0x80000002, destroy=True),)),
+                                                          TickStep(1 / 30, others=(held,)))))
 
 
 def _missiles_scene(scene, m):

@@ -116,12 +116,17 @@ _other_mover_inputs = _inputs_packer(OTHER_INPUTS)
 
 def _other_inputs(step, index: dict) -> list[bytes]:
     """int n, then per other mover's inputs: its index in the scene's `others`, a mask of the inputs present (bit i:
-    OTHER_INPUTS[i]) and their values in that order."""
+    OTHER_INPUTS[i], then bit 8 destroy, bit 9 unparent and bit 10 parent) and their values in that order."""
     out = [_I32.pack(len(step.others))]
     for inputs in step.others:
         mask, values = _other_mover_inputs(inputs)
-        if inputs.destroy:  # bit 8, no value: destroyed after the setters
+        if inputs.destroy:  # bit 8, no value: destroyed after the setters and the parenting inputs
             mask |= 1 << len(OTHER_INPUTS)
+        if inputs.unparent:  # bit 9: unset_parent (no value)
+            mask |= 2 << len(OTHER_INPUTS)
+        if inputs.parent is not None:  # bit 10: held anew, as a child's record says it (_child_of)
+            mask |= 4 << len(OTHER_INPUTS)
+            values.append(_child_of(inputs.parent))
         out.append(_INDEX_MASK.pack(index[inputs.id], mask))
         out += values
     return out
@@ -152,6 +157,15 @@ _OTHER = struct.Struct("<IIBIfII3f" + _POS)
 # written as zeros: it enters the world with its parent)
 _CHILD = struct.Struct("<BIii")
 _NOT_A_CHILD = _CHILD.pack(0, 0, 0, 0)
+# the frame form (ChildOf.part and .frame): byte 2, the parent's id, the part, 0, then the frame's origin and
+# orientation (w x y z)
+_FRAME = struct.Struct("<3f4f")
+
+
+def _child_of(p) -> bytes:
+    if p.part is not None:
+        return _CHILD.pack(2, p.id, p.part, 0) + _FRAME.pack(*p.frame.origin, *p.frame.orientation)
+    return _CHILD.pack(1, p.id, p.location, p.placement)
 # ... then the Player's skills (acconform.scene.MoverSkills): Run, Jump, Stamina, Strength (u32), EncumbranceVal and
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
@@ -195,7 +209,7 @@ def pack_scene(scene: Scene) -> bytes:
         out.append(_OTHER.pack(recs.did, o.id, WEENIE_CLASSES.index(o.weenie), o.player_killer_status, o.scale, o.state,
                                o.transient_state, *o.velocity, *_pos(o.begin if o.begin is not None else _NO_END)))
         p = o.parent
-        out.append(_NOT_A_CHILD if p is None else _CHILD.pack(1, p.id, p.location, p.placement))
+        out.append(_NOT_A_CHILD if p is None else _child_of(p))
         la = o.launch
         out.append(_NO_LAUNCH if la is None else
                    _LAUNCH.pack(1, la.tick, la.launcher, la.target, la.speed, *la.origin, *la.orientation,

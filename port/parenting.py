@@ -19,6 +19,7 @@ LeftHand 2, Shield 3, ... ACE.Entity.Enum.ParentLocation) naming a part and a fr
 from __future__ import annotations
 
 from .anchors import harness
+from .frame import AFrame
 from .physics_obj import PhysicsObj
 
 
@@ -29,3 +30,25 @@ def set_parent(child: PhysicsObj, parent: PhysicsObj, parent_location: int, plac
     the child). `lscape` is the run's world (ACE's static LScape)."""
     child.set_placement_frame(placement, False)
     return child.set_parent(parent, parent_location, lscape)
+
+
+@harness("a child held as its scene says: at a location, or by the frame form (the oracle's facade HoldChild)")
+def hold_child(child: PhysicsObj, parent: PhysicsObj, of, lscape) -> bool:
+    """`of`: a scene ChildOf. At a location: `set_parent` above; with `part` and `frame`: ACE's
+    ``set_parent(parent, partIdx, frame)`` (the client's call for an object attached to a part,
+    ParticleEmitter.SetParenting) with a new AFrame of the scene's frame, no placement frame."""
+    if of.part is not None:
+        return child.set_parent_frame(parent, of.part, AFrame.from_record(of.frame, lscape.mode), lscape)
+    return set_parent(child, parent, of.location, of.placement, lscape)
+
+
+@harness("a held item moved by the server, as the client handles it (the oracle's facade ApplyOtherInputs' last inputs)")
+def apply_parenting_inputs(child: PhysicsObj, inputs, holders: dict, lscape) -> None:
+    """A tick's children inputs (scene/8 ticks.steps[].others[]): `unparent`, a PickupEvent's
+    ``child.unset_parent()``; then `parent`, a ParentEvent's SetPlacementFrame and set_parent at the
+    holder's location, or the frame form (`hold_child`; its answer is not kept: the child's state says it). `holders`:
+    id -> PhysicsObj (the mover and the others)."""
+    if inputs.unparent:
+        child.unset_parent()
+    if inputs.parent is not None:
+        hold_child(child, holders[inputs.parent.id], inputs.parent, lscape)

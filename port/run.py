@@ -127,7 +127,7 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     obj.transient_state = o.transient_state
     obj.velocity = mode.vec(*o.velocity)
     if o.parent is not None:
-        held = parenting.set_parent(obj, holders[o.parent.id], o.parent.location, o.parent.placement, lscape)
+        held = parenting.hold_child(obj, holders[o.parent.id], o.parent, lscape)
         return obj, _placement_state(obj, SetPositionError.OK if held else SetPositionError.GeneralFailure), False
     if getattr(o, "launch", None) is not None:
         # a projectile: made, not entered; its launch puts it in the world (run_ticks)
@@ -812,6 +812,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             apply_inputs(mover, step, mode, lscape)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
+                parenting.apply_parenting_inputs(by_id[inputs.id], inputs, by_id, lscape)
                 if inputs.destroy:
                     destroy_other(by_id[inputs.id], inputs.id, movers, stepped)
             for k, (obj, launch) in enumerate(launches):

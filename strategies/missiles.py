@@ -33,12 +33,13 @@ they entered), and launches at tick 0-5 of 20-60 ticks.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from hypothesis import strategies as st
 
-from acconform.flags import PhysicsState, PlayerKillerStatus, TransientState
+from acconform.flags import ParentLocation, PhysicsState, PlayerKillerStatus, TransientState
 from acconform.numerics import to_f32
-from acconform.scene import (CylSphereShape, ContactPlane, Frame, Landblock, Launch, Mover, OtherInputs, OtherMover,
+from acconform.scene import (ChildOf, CylSphereShape, ContactPlane, Frame, HoldingLocation, Landblock, Launch, Mover, OtherInputs, OtherMover,
                              Placement, PlaneRec, Position, Scene, SphereRec, StaticObject, Ticks, TickStep, validate_scene)
 from acconform.strategies.shapes import box
 
@@ -49,6 +50,12 @@ OTHER = 0x50000002  # another player (bystander)
 MONSTER = 0x80000001
 CASTER = 0x80000002
 PROJECTILE = 0x80000010
+CARRIED_ID = 0x80000020  # a child the projectile holds (CARRIED)
+# a child held by the projectile (a missile's attached object, as the client parents one): none mostly, held in the
+# projectile's Position (past its one part) or by its part
+CARRIED = st.sampled_from(("none", "none", "none", "none", "none", "position", "position", "by-part"))
+CARRY_OFFSETS = st.sampled_from((0.0, 0.0, -0.3, 0.2, -1.0))
+CARRIED_RADII = st.sampled_from((0.05, 0.1, 0.2))
 WALL = 0x70000001
 DOOR = 0x70000002
 POST = 0x70000003
@@ -88,6 +95,21 @@ PLAYER_PKS = st.sampled_from(tuple(int(s) for s in (PlayerKillerStatus.NPK, Play
                                                     PlayerKillerStatus.PKLite)))
 PK_NAMES = {int(s): s.name.lower() for s in PlayerKillerStatus}
 DTS = st.sampled_from((1 / 30, 1 / 30, 1 / 30, 1 / 60, 1 / 10))
+
+
+def _carrying(draw, others: tuple, projectile: OtherMover, carried: str) -> tuple:
+    """The projectile with a holding location (past its one part: in its Position, or by the part) and a small
+    GenericObject held there (scene/8 others[].parent), parented at the start, while the projectile is out of the
+    world (set_parent finds no cell to change to); it follows the projectile's entry (prepare_to_enter_world walks
+    the children) and flight (UpdateChild)."""
+    part = 0 if carried == "by-part" else 1
+    frame = Frame((0.0, float(dr.take(draw, CARRY_OFFSETS)), 0.0))
+    holder = replace(projectile, holding_locations=(HoldingLocation(int(ParentLocation.RightHand), part, frame),))
+    radius = to_f32(dr.take(draw, CARRIED_RADII))
+    child = OtherMover(CARRIED_ID, "object", (SphereRec((0.0, 0.0, 0.0), radius),), None, 0.0, 0.0,
+                       sorting_sphere=SphereRec((0.0, 0.0, 0.0), radius) if draw(dr.BOOLEANS) else None,
+                       parent=ChildOf(PROJECTILE, int(ParentLocation.RightHand)))
+    return tuple(holder if o is projectile else o for o in others) + (child,)
 
 
 def _cell(lb: int, x: float, y: float) -> int:
@@ -270,6 +292,9 @@ def draw_missile_scene(draw) -> Scene:
     others = tuple(monsters) + (projectile,)
     if monsters and draw(dr.BOOLEANS):  # the projectile entered first: stepped before the monsters
         others = (projectile,) + tuple(monsters)
+    carried = draw(CARRIED)
+    if carried != "none":  # a child held by the projectile before its launch: the launch's enter_world takes it along
+        others = _carrying(draw, others, projectile, carried)
 
     mx, my = mover_at
     cell = _cell(lb, mx, my)
@@ -288,5 +313,7 @@ def draw_missile_scene(draw) -> Scene:
     name = f"missiles:{policy}:{'arrow' if arrow else 'spell'}:{'player' if player_launches else 'monster'}"
     if crosser is not None:  # who crosses (or is the target), how, and the players' PlayerKillerStatus
         name += f":{role}:{way}:{PK_NAMES[mover_pks]}:{PK_NAMES[other_pks]}"
+    if carried != "none":
+        name += f":carries-{carried}"
     return validate_scene(Scene((land,), mover, tuple(objects), engine_mode="server", name=name,
                                 ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))

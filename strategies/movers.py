@@ -158,6 +158,18 @@ SORTING = st.sampled_from(((0.0, 0.5, 0.6), (0.0, 0.5, 0.6), (0.0, 0.0, 0.3), (0
 CARRY_OMEGAS = st.sampled_from((1.5, -1.0, 3.0, 0.5, -2.5))
 CARRY_SPEEDS = st.sampled_from((0.0, 0.5, 1.0))  # a turning holder's walk
 CARRY_WALL_ID = 0x7D000031
+# a held child moved at a tick, as the client does when the server moves a wielded item (scene/8 tick inputs
+# others[].unparent / .parent): none, dropped (unset_parent), dropped and picked up again, moved to another
+# location of its holder, handed to the other holder; the old holder stands from then on, or moves on (a holder that
+# lost a child throws at its next move within a cell: ChildList.RemoveChild leaves NumObjects one too high)
+# a child held by part 0 or at a missing location whose drawn Placement is one of these is attached by the frame
+# form instead, set_parent(holder, part, frame) (the client's call for an object attached to a part,
+# ParticleEmitter.SetParenting; no placement frame): part 0 with the holding frame drawn for it, or part 1, past
+# the Setup's one part, which add_child refuses. Picked from a draw made already: no draw of its own.
+FRAME_FORM_PLACEMENTS = (13, 101)
+HANDINGS = st.sampled_from(("none", "none", "drop", "drop-pick", "other-hand", "hand-over", "hand-over"))
+HANDING_STOPS = st.sampled_from((True, True, True, False))
+HIDDEN_TAKERS = st.sampled_from((False, False, False, True))  # the new holder is Hidden (set_parent: NoDraw)
 
 
 # ---------------------------------------------------------------- bodies, ids, the world
@@ -826,8 +838,13 @@ def _carry(draw, clock) -> Scene:
         if at_kind != "missing":
             part = 0 if at_kind == "part0" else draw(PAST_PARTS)
             taken.append(HoldingLocation(location, part, _holding_frame(draw, begins[who].frame.origin, part == 0)))
-        held.append(_child(draw, ids, who, location))
-        kinds.append(at_kind + ("-mover" if who != holder_id else ""))
+        ch = _child(draw, ids, who, location)
+        frame_form = ch.parent.placement in FRAME_FORM_PLACEMENTS and at_kind != "position"
+        if frame_form:  # attached by its part and a frame instead (part 0 the holding frame's, else part 1: refused)
+            part, f = (0, taken[-1].frame) if at_kind == "part0" else (1, Frame(_vec(0.0, 0.0, 1.0)))
+            ch = replace(ch, parent=ChildOf(who, 0, 0, part, f))
+        held.append(ch)
+        kinds.append(at_kind + ("-frame" if frame_form else "") + ("-mover" if who != holder_id else ""))
     for who, taken in locations.items():
         if draw(EXTRA_LOCATION):
             used = {h.location for h in taken} | {ch.parent.location for ch in held if ch.parent.id == who}
@@ -845,5 +862,49 @@ def _carry(draw, clock) -> Scene:
                                                                           facing(okind, -ux, -uy)), scale=draw(SCALES))
         tl.walk(draw, tl.of(bumper.id), -ux, -uy, float(dr.take(draw, SPEEDS)), okind)
         others.append(bumper)
+    label += _handing(draw, tl, rows, held, holder_id, mover, others)
     name = f"movers:carry:{carrier}:{label_move}:{where}:{len(held)}c:{'/'.join(kinds)}:{label}"
     return _finish(draw, start, dts, tl, world.landblocks, mover, others, objects, name)
+
+
+def _handing(draw, tl: _Timeline, rows: list[dict], held: list[OtherMover], holder_id: int, mover: Mover,
+             others: list[OtherMover]) -> str:
+    """The first child moved at a drawn tick (HANDINGS): its input row gets `unparent` and/or `parent`; the old
+    holder stands from that tick on (HANDING_STOPS), and a new holder may be made Hidden at tick 0 (HIDDEN_TAKERS).
+    Returns the name's suffix."""
+    from acconform.staging import MOVER_ID
+
+    how = draw(HANDINGS)
+    if how == "none" or tl.n < 3:
+        return ""
+    first = held[0]
+    at = draw(st.integers(1, tl.n - 2))
+    row = tl.of(first.id)
+    old = first.parent.id
+    new = old
+    if how == "hand-over":
+        new = MOVER_ID if old != MOVER_ID else (holder_id if holder_id != MOVER_ID else MOVER_ID)
+    holders = {MOVER_ID: mover, **{o.id: o for o in others}}
+    places = [h.location for h in holders[new].holding_locations] or [first.parent.location]
+    location = draw(st.sampled_from(places))
+    if how in ("drop", "drop-pick"):
+        row[at]["unparent"] = True
+    if how == "drop-pick":
+        later = draw(st.integers(at + 1, tl.n - 1))
+        tl.of(first.id)[later]["parent"] = first.parent  # held again as it was
+    elif how in ("other-hand", "hand-over"):
+        row[at]["parent"] = ChildOf(new, location, draw(PLACEMENTS))
+    suffix = f":{how}@{at}"
+    if draw(HANDING_STOPS):
+        old_rows = rows if old == holder_id else tl.mover
+        for i in range(at, tl.n):
+            for key in ("velocity", "local_velocity", "omega", "sequence_velocity", "jump"):
+                old_rows[i].pop(key, None)
+        old_rows[at].update(velocity=(0.0, 0.0, 0.0), omega=(0.0, 0.0, 0.0))
+        suffix += "-stop"
+    if new != old and draw(HIDDEN_TAKERS):
+        new_rows = tl.mover if new == MOVER_ID else tl.of(new)
+        state = (mover.state if new == MOVER_ID else holders[new].state) | int(PhysicsState.Hidden)
+        new_rows[0]["state"] = state
+        suffix += "-hidden"
+    return suffix

@@ -38,6 +38,7 @@ drop) is drawn with draws.one_of, its dependent branch built only when it is cho
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from hypothesis import strategies as st
 
@@ -549,6 +550,9 @@ TANGENT_SETUP_KINDS = st.sampled_from(("sphere", "sphere", "cylsphere"))
 TANGENT_SETUP_STARTS = dr.f32(70.0, 118.0)  # block-local, on GRID once floored
 MULTIPART_AXES = st.sampled_from(((1, 0, 0.0), (-1, 0, 180.0), (0, 1, 90.0), (0, -1, 270.0)))
 SETUP_TANGENT_STEPS = dr.f32(0.25, 1.0)  # of the mover's radius
+# the Setup's ParentIndex (scene/8 setup.parent_index: SetupFlags.HasParent), which ACE's physics never reads: none
+# mostly, each part the root's child (0xFFFFFFFF the root: retail's "no parent"), or a chain of parts
+PARENT_INDEX_WAYS = (None, None, None, "flat", "chain")
 
 
 def _yaw_quat(deg: float):
@@ -628,8 +632,23 @@ def multipart(draw, gx: float, gy: float, r: float) -> Plan:
     p.begin = (gx, gy)
     p.heading = heading + dr.take(draw, EDGE_ANGLES) / 8
     p.length = to_f32(d * draw(CORNER_THROUGH))
-    p.label = f"multipart-{variant}-{len(parts)}"
+    p.label = f"multipart-{variant}-{len(parts)}" + _parent_index(draw, p)
     return p
+
+
+def _parent_index(draw, p: Plan) -> str:
+    """The last static's Setup given a ParentIndex (PARENT_INDEX_WAYS); returns the label's suffix. Picked by the
+    static's drawn place, not drawn itself: a draw here would shift every later scene of a seeded sample (the
+    policies' tests pin some), and ACE's physics never reads the index."""
+    rec, ox, oy, *rest = p.objects[-1]
+    how = PARENT_INDEX_WAYS[(len(rec.parts) + int(abs(ox) * 1000) + int(abs(oy) * 1000)) % len(PARENT_INDEX_WAYS)]
+    if how is None:
+        return ""
+    rest = [ox, oy, *rest]
+    n = len(rec.parts)
+    index = tuple(0xFFFFFFFF if k == 0 else (0 if how == "flat" else k - 1) for k in range(n))
+    p.objects[-1] = (replace(rec, parent_index=index), *rest)
+    return f"-parent-{how}"
 
 
 def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan:
@@ -657,7 +676,7 @@ def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan
     p.objects.append((SetupRec(parts, spheres, cyls), bx + ex + radsum * ax, by + ey + radsum * ay, 0.0,
                       int(PhysicsState.Static)))
     p.heading, p.length, p.plane_dz, p.velocity = heading, step, 0.0, (0.0, 0.0, 0.0)
-    p.label = f"multipart-tangent-{kind}"
+    p.label = f"multipart-tangent-{kind}" + _parent_index(draw, p)
     return p
 
 

@@ -105,13 +105,13 @@ def test_a_setup_cylsphere_needs_a_positive_height_and_a_sphere_a_positive_radiu
 
 
 def read_setup_full(data: bytes) -> dict:
-    """SetupModel.Unpack step by step: flags, parts, DefaultScale (HasDefaultScale), holding locations,
+    """SetupModel.Unpack step by step: flags, parts, ParentIndex (HasParent), DefaultScale (HasDefaultScale), holding locations,
     connection points, placement frames (key, a frame per part, hooks), cylspheres, spheres, the rest."""
     r = DatReader(data)
     out = {"id": r.take("I"), "flags": r.take("I")}
     n = r.take("I")
     out["parts"] = [r.take("I") for _ in range(n)]
-    assert not out["flags"] & 1  # no ParentIndex
+    out["parent_index"] = [r.take("I") for _ in range(n)] if out["flags"] & 1 else []
     out["scale"] = [r.take("3f") for _ in range(n)] if out["flags"] & 2 else []
     assert r.take("ii") == (0, 0)  # HoldingLocations, ConnectionPoints
     out["placements"] = {}
@@ -149,16 +149,37 @@ def test_part_scales_are_the_setups_default_scale_under_its_flag():
     assert s["flags"] == dat.SETUP_HAS_DEFAULT_SCALE == 2 and s["scale"] == [(1.0, 2.0, 0.5)] * 2
 
 
+def test_a_parent_index_is_the_setups_parent_index_under_its_flag_before_the_scales_and_makes_scene_8():
+    parts = tuple(PartRec(p.shape, p.frame, (1.0, 2.0, 0.5)) for p in PARTS)
+    obj = multipart(parts)
+    obj = StaticObject(obj.id, obj.position, None, obj.state, 1.0, SetupRec(parts, SPHERES, CYLS, (0xFFFFFFFF, 0)))
+    s = read_setup_full(dat.static_records(obj, 0).records[-1].data)
+    assert s["flags"] == dat.SETUP_HAS_PARENT | dat.SETUP_HAS_DEFAULT_SCALE == 3
+    assert s["parent_index"] == [0xFFFFFFFF, 0] and s["scale"] == [(1.0, 2.0, 0.5)] * 2
+    sc = scene(obj)
+    assert sc.format == "acconform.scene/8" and Scene.loads(sc.dumps()) == sc
+    assert sc.to_json()["objects"][0]["setup"]["parent_index"] == [0xFFFFFFFF, 0]
+
+
+def test_a_parent_index_has_one_entry_per_part():
+    doc = scene().to_json()
+    doc["format"] = "acconform.scene/8"
+    doc["objects"][0]["setup"]["parent_index"] = [0]
+    assert "parent_index" in refused(doc)
+
+
 def test_the_ports_setup_reader_reads_every_field_written():
     from acconform.port.dat.binary_reader import BinaryReader
     from acconform.port.dat.setup_model import SetupModel
     from acconform.numerics import get_mode
 
     parts = tuple(PartRec(p.shape, p.frame, (1.0, 2.0, 0.5)) for p in PARTS)
-    data = dat.static_records(multipart(parts), 0).records[-1].data
+    obj = multipart(parts)
+    obj = StaticObject(obj.id, obj.position, None, obj.state, 1.0, SetupRec(parts, SPHERES, CYLS, (0xFFFFFFFF, 0)))
+    data = dat.static_records(obj, 0).records[-1].data
     reader = BinaryReader(data, get_mode("exact", "mono"))
     m = SetupModel.unpack(reader)
-    assert reader.position == len(data)
+    assert reader.position == len(data) and list(m.parent_index) == [0xFFFFFFFF, 0]
     assert len(m.parts) == 2 and len(m.default_scale) == 2 and list(m.placement_frames) == [0]
     assert len(m.placement_frames[0].anim_frame.frames) == 2 and len(m.spheres) == 2 and len(m.cyl_spheres) == 2
 

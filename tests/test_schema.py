@@ -109,7 +109,7 @@ def test_the_scene_schema_names_a_statics_setup_and_every_field_of_its_parts(gen
     obj = scene["properties"]["objects"]["items"]
     assert {"shape", "setup"} <= set(obj["properties"]) and not {"shape", "setup"} & set(obj["required"])
     setup = obj["properties"]["setup"]
-    assert set(setup["properties"]) == {"parts", "spheres", "cylspheres"} and setup["required"] == ["parts"]
+    assert set(setup["properties"]) == {"parts", "spheres", "cylspheres", "parent_index"} and setup["required"] == ["parts"]
     assert set(setup["properties"]["parts"]["items"]["properties"]) == {"shape", "origin", "orientation", "scale"}
 
 
@@ -119,6 +119,8 @@ def test_the_scene_schema_names_a_childs_parent_and_the_holding_locations_and_a_
     assert {"parent", "sorting_sphere", "begin"} <= set(other["properties"])
     assert not {"parent", "sorting_sphere", "begin"} & set(other["required"])
     assert set(other["properties"]["parent"]["properties"]) == {"id", "location", "placement"}
+    inputs = scene["properties"]["ticks"]["properties"]["steps"]["items"]["properties"]["others"]["items"]
+    assert {"unparent", "parent"} <= set(inputs["properties"]) and not {"unparent", "parent"} & set(inputs["required"])
     held = scene["properties"]["mover"]["properties"]["holding_locations"]["items"]
     assert set(held["properties"]) == {"location", "part", "frame"} == set(held["required"])
 

@@ -100,6 +100,10 @@ namespace Acconform.Oracle
             public uint Mask;
             public uint State, Transient;
             public Vector3 Velocity, LocalVelocity, Omega, Jump, SequenceVelocity, SequenceOmega;
+            public uint ParentId;  // bit 512: held anew by the mover or another other (bit 256: unset_parent first)
+            public int ParentLocation, Placement;
+            public byte ParentForm;
+            public AFrame ParentFrame;
         }
 
         // scene/8: another mover as the scene gives it (OtherMover), its PhysicsObj and WorldObject once made, and
@@ -124,6 +128,8 @@ namespace Acconform.Oracle
             public List<uint> PlacedShadowCells;
             // a child (scene/8 `parent`): held by the mover or an earlier other at a ParentLocation with a Placement
             public bool HasParent;
+            public byte ParentForm;  // 1: at a location (set_parent(parent, location)); 2: the frame form, at ParentLocation's part
+            public AFrame ParentFrame;
             public uint ParentId;
             public int ParentLocation, Placement;
             // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
@@ -460,6 +466,12 @@ namespace Acconform.Oracle
                         if ((o.Mask & 32) != 0) o.Jump = V3(r);
                         if ((o.Mask & 64) != 0) o.SequenceVelocity = V3(r);
                         if ((o.Mask & 128) != 0) o.SequenceOmega = V3(r);
+                        if ((o.Mask & 1024) != 0)
+                        {
+                            o.ParentForm = r.ReadByte(); o.ParentId = r.ReadUInt32(); o.ParentLocation = r.ReadInt32();
+                            o.Placement = r.ReadInt32();
+                            if (o.ParentForm == 2) o.ParentFrame = new AFrame(V3(r), Q(r));
+                        }
                         s.Others.Add(o);
                     }
                 }
@@ -484,7 +496,7 @@ namespace Acconform.Oracle
                 {
                     ApplyInputs(obj, step);
                     if (step.Others != null)
-                        foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o);
+                        foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o, obj);
                     foreach (var o in sceneOthers)
                         if (o.HasLaunch && o.LaunchTick == ticksRun) SceneLaunch(o, obj);
                     SetClock(step.Time);
@@ -884,7 +896,7 @@ namespace Acconform.Oracle
         }
 
 
-        static void ApplyOtherInputs(Other other, OtherStep s)
+        static void ApplyOtherInputs(Other other, OtherStep s, PhysicsObj mover)
         {
             var obj = other.Obj;
             if ((s.Mask & 1) != 0) obj.State = (PhysicsState)s.State;
@@ -895,6 +907,11 @@ namespace Acconform.Oracle
             if ((s.Mask & 32) != 0) Jump(obj, (ACE.Server.WorldObjects.Player)other.WorldObject, s.Jump);
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
+            // children (issue 41): the client's calls when the server moves a held item, on ACE's own PhysicsObj: a
+            // PickupEvent's unset_parent, a ParentEvent's SetPlacementFrame and set_parent (SetParent)
+            if ((s.Mask & 512) != 0) obj.unset_parent();
+            if ((s.Mask & 1024) != 0)
+                HoldChild(obj, FindObj(s.ParentId, mover), s.ParentForm, s.ParentLocation, s.Placement, s.ParentFrame);
             if ((s.Mask & 256) != 0 && other.Entered)
             {
                 // WorldObject.Destroy's physics: its landblock's RemoveWorldObject -> PhysicsObj.DestroyObject; the
@@ -1522,6 +1539,14 @@ namespace Acconform.Oracle
             return copy;
         }
 
+        /// <summary>The harness's own cleanup, after the scene's answer is written: ChildList.RemoveChild leaves
+        /// NumObjects one past its lists (a child held anew or unparented in a tick), and remove_shadows_from_cells,
+        /// which loops to NumObjects, would throw before leave_cell takes the object out of its cell.</summary>
+        static void CountChildren(PhysicsObj obj)
+        {
+            if (obj.Children != null) obj.Children.NumObjects = obj.Children.Objects.Count;
+        }
+
         static void RemoveStatics()
         {
             // leave cached landblocks as they were built: a placed mover and this scene's statics leave their cells
@@ -1532,12 +1557,14 @@ namespace Acconform.Oracle
             {
                 var mover = placedMover;
                 placedMover = null;
+                CountChildren(mover);
                 mover.remove_shadows_from_cells();
                 mover.leave_cell(false);
             }
             foreach (var o in sceneOthers)
             {
                 if (o.Obj == null) continue;
+                CountChildren(o.Obj);
                 o.Obj.remove_shadows_from_cells();
                 o.Obj.leave_cell(false);
                 o.Obj = null;
@@ -2015,9 +2042,11 @@ namespace Acconform.Oracle
                     Did = r.ReadUInt32(), Id = r.ReadUInt32(), Weenie = r.ReadByte(), Pks = (PlayerKillerStatus)r.ReadUInt32(),
                     Scale = r.ReadSingle(), State = (PhysicsState)r.ReadUInt32(), Transient = (TransientStateFlags)r.ReadUInt32(),
                     Velocity = V3(r), Begin = Pos(r),
-                    HasParent = r.ReadByte() != 0, ParentId = r.ReadUInt32(), ParentLocation = r.ReadInt32(),
+                    ParentForm = r.ReadByte(), ParentId = r.ReadUInt32(), ParentLocation = r.ReadInt32(),
                     Placement = r.ReadInt32(),
                 };
+                o.HasParent = o.ParentForm != 0;
+                if (o.ParentForm == 2) o.ParentFrame = new AFrame(V3(r), Q(r));
                 o.HasLaunch = r.ReadByte() != 0;
                 if (o.HasLaunch)
                 {
@@ -2073,7 +2102,7 @@ namespace Acconform.Oracle
                 if (o.HasParent)
                 {
                     var parent = o.ParentId == mover.ID ? mover : sceneOthers.Find(x => x.Id == o.ParentId).Obj;
-                    var held = SetParent(obj, parent, o.ParentLocation, o.Placement);
+                    var held = HoldChild(obj, parent, o.ParentForm, o.ParentLocation, o.Placement, o.ParentFrame);
                     o.PlacedResult = (int)(held ? SetPositionError.OK : SetPositionError.GeneralFailure);
                     ReadPlaced(o, obj);
                     continue;
@@ -2108,6 +2137,16 @@ namespace Acconform.Oracle
         /// (PhysicsObj.set_parent(PhysicsObj, int): add_child at the Setup's HoldingLocation, unset_parent,
         /// leave_world, change_cell into the parent's cell, UpdateChild, recalc_cross_cells). The port's
         /// counterpart is port/parenting.py set_parent.</summary>
+        /// <summary>A child held as the scene says (`form`): at a location (SetParent), or by the frame form,
+        /// ACE's set_parent(parent, partIdx, frame) (the client's call for an object attached to a part:
+        /// ParticleEmitter.SetParenting), `part` given in ParentLocation's place. The port's counterpart is
+        /// port/parenting.py hold_child.</summary>
+        static bool HoldChild(PhysicsObj child, PhysicsObj parent, byte form, int location, int placement, AFrame frame)
+        {
+            if (form == 2) return child.set_parent(parent, location, new AFrame(frame));
+            return SetParent(child, parent, location, placement);
+        }
+
         static bool SetParent(PhysicsObj child, PhysicsObj parent, int parentLocation, int placement)
         {
             child.SetPlacementFrame(placement, false);

@@ -226,3 +226,93 @@ def test_the_shrinker_takes_a_child_away_with_its_parent():
     for smaller in _fewer_others(scene):
         validate_scene(smaller)
     assert [o.id for o in list(_fewer_others(scene))[-1].others] == []  # the monster taken, its sword with it
+
+
+# ------------------------------------------------------------------ a child moved at a tick (unparent, parent)
+def test_a_childs_tick_inputs_read_back_and_need_objects_children():
+    doc = json.loads(SCENES["player_drops_a_child_and_picks_it_up_again"].dumps())
+    steps = doc["ticks"]["steps"]
+    assert steps[4]["others"] == [{"id": "0x80000010", "unparent": True}]
+    assert steps[12]["others"] == [{"id": "0x80000010", "parent": {"id": "0x50000001", "location": "RightHand",
+                                                                   "placement": 0}}]
+    scene = Scene.loads(json.dumps(doc))
+    assert scene.ticks.steps[4].others[0].unparent and "objects.children" in scene_features(scene)
+
+
+@pytest.mark.parametrize("holder, problem", [("0x80000010", "has id 0x80000010"), ("0x80000099", "has id 0x80000099")])
+def test_a_child_held_anew_by_itself_or_by_no_mover_is_refused(holder, problem):
+    doc = json.loads(SCENES["player_moves_a_child_to_its_other_hand"].dumps())
+    doc["ticks"]["steps"][10]["others"][0]["parent"]["id"] = holder
+    with pytest.raises(InvalidScene) as e:
+        Scene.loads(json.dumps(doc))
+    assert "ticks.steps[10].others[0].parent.id" in str(e.value) and problem in str(e.value)
+
+
+def test_a_holder_that_would_be_held_is_refused():
+    """The monster holding the sword may not be handed to the player: a holder is never held (UpdateChild would
+    carry a child's own holder)."""
+    doc = json.loads(SCENES["player_hands_a_child_to_a_monster"].dumps())
+    doc["ticks"]["steps"][3]["others"][0]["parent"] = {"id": "0x50000001", "location": 1}  # the monster's inputs
+    with pytest.raises(InvalidScene) as e:
+        Scene.loads(json.dumps(doc))
+    assert "would both hold and be held" in str(e.value)
+
+
+def test_a_childs_tick_inputs_pack_as_bits_8_and_9_after_the_setters():
+    scene = SCENES["player_drops_a_child_and_picks_it_up_again"]
+    from acconform.oracle.pack import _other_inputs
+
+    drop, pick = (b"".join(_other_inputs(scene.ticks.steps[k], {SWORD: 0})) for k in (4, 12))
+    assert drop == struct.pack("<iiI", 1, 0, 1 << 8)
+    assert pick == struct.pack("<iiIBIii", 1, 0, 1 << 9, 1, MOVER_ID, int(ParentLocation.RightHand), 0)
+
+
+def test_a_child_by_the_frame_form_packs_form_2_its_part_and_its_frame_and_reads_back():
+    scene = SCENES["player_walks_with_a_child_attached_by_its_part_and_a_frame"]
+    doc = json.loads(scene.dumps())
+    assert doc["others"][0]["parent"] == {"id": "0x50000001", "part": 0, "frame": {
+        "origin": [60.3, 60.2, 20.9], "orientation": [0.70710677, 0.0, 0.0, 0.70710677]}}
+    assert Scene.loads(scene.dumps()) == scene
+    packed = pack_scene(scene)
+    want = struct.pack("<BIii", 2, MOVER_ID, 0, 0) + struct.pack("<3f4f", 60.3, 60.2, 20.9, 0.70710677, 0.0, 0.0, 0.70710677)
+    assert want in packed
+    doc["others"][0]["parent"] = {"id": "0x50000001", "part": 0}
+    with pytest.raises(InvalidScene) as e:
+        Scene.loads(json.dumps(doc))
+    assert "both part and frame" in str(e.value)
+
+
+def test_ace_refuses_the_frame_form_past_the_parts_and_throws_at_part_minus_one():
+    for runtime in ("mono", "coreclr"):
+        ace = recorded_outcomes(DATA, runtime)
+        assert ace["child_attached_past_its_parents_parts_by_a_frame"].other_placements[0].result == (
+            SetPositionError.GeneralFailure)
+        assert ace["child_attached_at_part_minus_one_by_a_frame"].error.startswith("ArgumentOutOfRangeException")
+
+
+def test_ace_throws_at_the_next_move_of_a_holder_that_lost_a_child():
+    """ChildList.RemoveChild leaves NumObjects one past its lists: the player's next step within its cell walks its
+    children to NumObjects (SetPositionInternal) and indexes past the end, on both runtimes."""
+    for runtime in ("mono", "coreclr"):
+        outcome = recorded_outcomes(DATA, runtime)["player_drops_a_child_and_walks_into_it"]
+        assert len(outcome.ticks) == 6 and outcome.ticks[-1].error.startswith("ArgumentOutOfRangeException")
+        assert all(t.error is None for t in outcome.ticks[:-1])
+
+
+def test_ace_gives_a_child_taken_by_a_hidden_holder_no_draw_and_keeps_it_when_handed_back():
+    """set_parent to a Hidden parent sets the child's NoDraw; unset_parent from it clears Hidden (not NoDraw)."""
+    outcome = recorded_outcomes(DATA, "mono")["hidden_monster_takes_a_child"]
+    sword = [t.others[1] for t in outcome.ticks]
+    hand = tuple(float(F(a) + F(b)) for a, b in zip(outcome.ticks[6].others[0].origin, RIGHT_HAND.frame.origin))
+    assert not sword[5].state & 0x20 and sword[6].state & 0x20 and sword[6].origin == hand  # NoDraw 0x20
+    assert sword[14].state & 0x20 and sword[14].origin == tuple(float(F(a) + F(b)) for a, b in
+                                                                zip(outcome.ticks[14].origin, RIGHT_HAND.frame.origin))
+
+
+def test_ace_carries_a_child_an_arrow_held_before_its_launch():
+    outcome = recorded_outcomes(DATA, "coreclr")["arrow_carrying_a_child_is_launched"]
+    assert outcome.ticks[0].others[2].cur_cell == 0  # held by an arrow out of the world: no cell to change to
+    flying = [t.others for t in outcome.ticks if t.others[1].cur_cell != 0]  # launched at tick 2, until it hits
+    assert len(flying) > 3
+    assert all(o[2].cur_cell == o[1].cur_cell for o in flying)  # its cell is the arrow's (change_cell takes it along)
+    assert len({(o[1].origin, o[2].origin) for o in flying}) == len({o[1].origin for o in flying}) > 3  # moves with it

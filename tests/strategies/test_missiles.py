@@ -28,7 +28,18 @@ def test_every_missile_scene_validates_in_format_8_with_one_launch_inside_its_ti
         assert validate_scene(s) == s and s.format == FORMAT and s.engine_mode == "server"
         launched = [o for o in s.others if o.launch is not None]
         assert len(launched) == 1 and launched[0].launch.tick < len(s.ticks.steps)
-        assert len({o.begin.cell >> 16 for o in s.others} | {s.mover.begin.cell >> 16}) == 1  # one landblock
+        assert len({o.begin.cell >> 16 for o in s.others if o.parent is None} | {s.mover.begin.cell >> 16}) == 1
+
+
+def test_some_missile_scenes_carry_a_child_held_by_the_projectile_before_its_launch(missile_scenes):
+    """CARRIED: a child held by the projectile (past its part or by it), after it in `others`, named in the name."""
+    carried = [s for s in missile_scenes if ":carries-" in s.name]
+    assert carried and {s.name.rsplit("-", 1)[1] for s in carried} <= {"position", "part"}
+    for s in carried:
+        child = s.others[-1]
+        projectile = _projectile(s)
+        assert child.parent.id == projectile.id and child.begin is None and projectile.holding_locations
+        assert [h.location for h in projectile.holding_locations] == [child.parent.location]
 
 
 def test_missile_scenes_draw_every_policy_both_projectiles_both_launchers_and_both_orders(missile_scenes):

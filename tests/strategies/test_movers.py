@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -150,10 +151,32 @@ def test_carry_scenes_hold_children_at_their_holders_locations_and_stay_valid():
             assert ids.index(c.parent.id) < ids.index(c.id) and c.begin is None
             holder = s.mover if c.parent.id == MOVER_ID else next(o for o in s.others if o.id == c.parent.id)
             assert getattr(holder, "parent", None) is None
+            if "-frame" in kind:  # the frame form: part 0 (a part0 child) or part 1 (refused), no location
+                assert c.parent.part == (0 if kind.startswith("part0") else 1) and c.parent.frame is not None
+                continue
             hold = [h for h in holder.holding_locations if h.location == c.parent.location]
             assert (not hold) if kind.startswith("missing") else hold[0].part == 0 if kind.startswith("part0") else hold[0].part >= 1
-        assert not any(t.others and any(o.id in {c.id for c in children} for o in t.others) for t in s.ticks.steps)
+        # a child's only inputs are the handing arm's (unparent, parent: HANDINGS), and only with its name's suffix
+        moved = [o for t in s.ticks.steps for o in t.others if o.id in {c.id for c in children}]
+        assert all(o.unparent or o.parent is not None for o in moved) and bool(moved) == ("@" in s.name)
+        assert all(o.velocity is None and o.state is None for o in moved)
     assert carriers == {"mover", "monster", "player", "creature"} and kinds == {"position", "part0", "missing"}
+
+
+def test_carry_scenes_move_a_child_at_a_tick_in_every_handing_way_and_stay_valid():
+    """HANDINGS: a child dropped (unset_parent), dropped and picked up again, moved to another location of its
+    holder, handed to the other holder; the input at the tick its name says."""
+    hows = set()
+    for s in _draw(80, 17, "carry"):
+        if "@" not in s.name:
+            continue
+        how, at = re.search(r":(drop-pick|drop|other-hand|hand-over)@(\d+)", s.name).groups()
+        hows.add(how)
+        first = next(o for o in s.others if o.parent is not None)
+        row = {o.id: o for o in s.ticks.steps[int(at)].others}
+        assert first.id in row and (row[first.id].unparent == how.startswith("drop"))
+        assert (row[first.id].parent is not None) == (how in ("other-hand", "hand-over"))
+    assert hows == {"drop", "drop-pick", "other-hand", "hand-over"}
 
 
 def test_a_drawn_carry_scene_s_child_follows_its_walking_holder_in_the_port():
@@ -163,9 +186,9 @@ def test_a_drawn_carry_scene_s_child_follows_its_walking_holder_in_the_port():
 
     f = np.float32
     checked = 0
-    for s in _draw(80, 21, "carry"):
+    for s in _draw(160, 21, "carry"):
         p = s.name.split(":")
-        if p[2] != "mover" or not p[3].startswith("walk") or p[5] != "1c" or p[6] != "position":
+        if p[2] != "mover" or not p[3].startswith("walk") or p[5] != "1c" or p[6] != "position" or "@" in s.name:
             continue
         child = next(o for o in s.others if o.parent is not None)
         hold = next(h for h in s.mover.holding_locations if h.location == child.parent.location)
