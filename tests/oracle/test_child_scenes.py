@@ -258,13 +258,13 @@ def test_a_holder_that_would_be_held_is_refused():
     assert "would both hold and be held" in str(e.value)
 
 
-def test_a_childs_tick_inputs_pack_as_bits_8_and_9_after_the_setters():
+def test_a_childs_tick_inputs_pack_as_bits_9_and_10_after_the_setters_and_destroys_bit_8():
     scene = SCENES["player_drops_a_child_and_picks_it_up_again"]
     from acconform.oracle.pack import _other_inputs
 
     drop, pick = (b"".join(_other_inputs(scene.ticks.steps[k], {SWORD: 0})) for k in (4, 12))
-    assert drop == struct.pack("<iiI", 1, 0, 1 << 8)
-    assert pick == struct.pack("<iiIBIii", 1, 0, 1 << 9, 1, MOVER_ID, int(ParentLocation.RightHand), 0)
+    assert drop == struct.pack("<iiI", 1, 0, 1 << 9)
+    assert pick == struct.pack("<iiIBIii", 1, 0, 1 << 10, 1, MOVER_ID, int(ParentLocation.RightHand), 0)
 
 
 def test_a_child_by_the_frame_form_packs_form_2_its_part_and_its_frame_and_reads_back():
