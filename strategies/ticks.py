@@ -155,6 +155,9 @@ QUANTA: tuple[tuple[str, float], ...] = tuple(
 QUANTUM_PICK = dr.ints(0, len(QUANTA) - 1)
 QUANTUM_AT = st.sampled_from(("first", "first", "every", "some"))
 
+# the mover's Setup's DefaultScript (scene/8; 0 none), one scene in eight (strategies/objects.py DEFAULT_SCRIPTS)
+DEFAULT_SCRIPTS = st.sampled_from((False,) * 7 + (True,))
+SCRIPT_IDS = st.integers(0x33000001, 0x3300FFFF)  # PhysicsScript ids (portal DAT 0x33xxxxxx), which ACE never reads
 # the driver: the object path, now and then the legacy player path
 DRIVERS = st.sampled_from(("update_object", "update_object", "update_object", "request_pos"))
 
@@ -335,6 +338,9 @@ def draw_tick_scene(draw, world: str | None = None, policy: str | None = None) -
     `policy` when given (one drawing on that world); in ACE's server mode three times in four, else
     client mode (dr.ENGINE_MODES)."""
     scene = _draw_tick_scene(draw, world, policy)
+    script = draw(SCRIPT_IDS) if draw(DEFAULT_SCRIPTS) else 0
+    if script:  # the mover's Setup's DefaultScript: a ScriptManager each update steps (UpdateScripts)
+        scene = scene.replace(mover=replace(scene.mover, default_script=script))
     return scene.replace(engine_mode=draw(dr.ENGINE_MODES))
 
 
