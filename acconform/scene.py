@@ -1207,6 +1207,9 @@ class Mover:
     # scene/8: its Setup's DefaultScript (a PhysicsScript id, 0 none): InitDefaults plays it, which makes the
     # object's ScriptManager (ACE's server runs no script: AddScript refuses it, UpdateScripts is empty)
     default_script: int = 0
+    # scene/8: its Setup's placement frame Resting (0x65) for its one part (None: the Setup has no placement
+    # frames): PartArray.CreateSetup's SetPlacementFrame(0x65) (makeAnimObject) finds it, and the Sequence's placement frame places the part
+    resting_frame: Frame | None = None
 
     @property
     def motion_table_id(self) -> int:
@@ -1231,6 +1234,8 @@ class Mover:
             d["holding_locations"] = [h.to_json() for h in self.holding_locations]
         if self.default_script:
             d["default_script"] = write_id(self.default_script)
+        if self.resting_frame is not None:
+            d["resting_frame"] = self.resting_frame.to_json()
         return d
 
     @staticmethod
@@ -1241,7 +1246,7 @@ class Mover:
         format holds the mover's `skills` (scene/8). `children`: its Setup may have holding locations (scene/8)."""
         if not skills and isinstance(r.value, dict) and "skills" in r.value:
             r["skills"].fail(f"skills need format {FORMAT!r} (older formats have none)")
-        for field in ("holding_locations", "default_script"):
+        for field in ("holding_locations", "default_script", "resting_frame"):
             if not children and isinstance(r.value, dict) and field in r.value:
                 r[field].fail(f"{field} needs format {FORMAT!r} (older formats have none)")
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
@@ -1254,7 +1259,7 @@ class Mover:
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
                *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ()),
-               *(("holding_locations", "default_script") if children else ())})
+               *(("holding_locations", "default_script", "resting_frame") if children else ())})
         spheres, scale, up, down = _read_body(r)
         if vias and not skills and r.has("motion_table") and MotionTableSpec.from_json(r["motion_table"]).needs_v8:
             r["motion_table"].fail(f"hooks, root_motion and default_animation need format {FORMAT!r} (older formats have none)")
@@ -1278,6 +1283,7 @@ class Mover:
             holding_locations=_read_holding_locations(r["holding_locations"]) if children and r.given("holding_locations")
             else (),
             default_script=r["default_script"].id_() if children and r.given("default_script") else 0,
+            resting_frame=Frame.from_json(r["resting_frame"]) if children and r.given("resting_frame") else None,
         )
 
 
@@ -1477,11 +1483,11 @@ class Scene:
     @property
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
-        motion table's hooks, animations without root motion or DefaultAnimation, a Setup's DefaultScript, /7
+        motion table's hooks, animations without root motion or DefaultAnimation, a Setup's DefaultScript, the mover's resting frame, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
-                self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or any(
+                self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or self.mover.resting_frame is not None or any(
                 o.setup is not None and o.setup.default_script for o in self.objects):
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
