@@ -660,7 +660,8 @@ class SetupRec:
         if r.given("cylspheres"):
             cylspheres = tuple(_shape_from_json(Reader({"kind": "cylsphere", **c.obj({"low_point", "radius", "height"}).value},
                                                        c.path)) for c in r["cylspheres"].list())
-        return SetupRec(parts, spheres, cylspheres, r["default_script"].id_() if v8 and r.given("default_script") else 0)
+        return SetupRec(parts, spheres, cylspheres,
+                        default_script=r["default_script"].id_() if v8 and r.given("default_script") else 0)
 
 
 @dataclass(frozen=True, slots=True)

@@ -627,7 +627,7 @@ def multipart(draw, gx: float, gy: float, r: float) -> Plan:
     heading = dr.take(draw, YAWS)
     d = r * draw(CORNER_DISTANCES) + r
     ox, oy = gx - ax + d * math.cos(math.radians(heading)), gy - ay + d * math.sin(math.radians(heading))
-    p.objects.append((SetupRec(parts, spheres, cyls, draw(DEFAULT_SCRIPTS)), ox, oy, yaw, state))
+    p.objects.append((SetupRec(parts, spheres, cyls, default_script=draw(DEFAULT_SCRIPTS)), ox, oy, yaw, state))
     p.begin = (gx, gy)
     p.heading = heading + dr.take(draw, EDGE_ANGLES) / 8
     p.length = to_f32(d * draw(CORNER_THROUGH))
@@ -657,7 +657,7 @@ def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan
         spheres, cyls = (), (CylSphereShape((0.0, 0.0, 0.0), radius, dr.take(draw, PART_HEIGHTS)),)
     p.moved_begin = (bx + lx, by + ly)
     p.begin = p.moved_begin
-    p.objects.append((SetupRec(parts, spheres, cyls, draw(DEFAULT_SCRIPTS)), bx + ex + radsum * ax, by + ey + radsum * ay, 0.0,
+    p.objects.append((SetupRec(parts, spheres, cyls, default_script=draw(DEFAULT_SCRIPTS)), bx + ex + radsum * ax, by + ey + radsum * ay, 0.0,
                       int(PhysicsState.Static)))
     p.heading, p.length, p.plane_dz, p.velocity = heading, step, 0.0, (0.0, 0.0, 0.0)
     p.label = f"multipart-tangent-{kind}"
