@@ -130,6 +130,7 @@ GFX_HAS_PHYSICS = 0x1
 SETUP_HAS_PARENT = 0x1
 SETUP_HAS_DEFAULT_SCALE = 0x2
 DEFAULT_PLACEMENT = 0  # ACE.Entity.Enum.Placement.Default: the key PartArray.SetPlacementFrame falls back to
+RESTING_PLACEMENT = 0x65  # Placement.Resting: the key PartArray.CreateSetup's (and InitObjectEnd's) SetPlacementFrame(0x65) asks for first
 STIPPLING_NO_POS = 0x4
 STIPPLING_NO_NEG = 0x8
 VERTEX_TYPE = 1  # CVertexArray.Unpack reads only type 1
@@ -283,18 +284,19 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
 
 def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
           placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0,
-          holding_locations=(), sorting_sphere=((0.0, 0.0, 0.0), 0.0), parent_index=None) -> bytes:
+          default_script: int = 0, holding_locations=(), placement_key: int = DEFAULT_PLACEMENT,
+          sorting_sphere=((0.0, 0.0, 0.0), 0.0), parent_index=None) -> bytes:
     """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, HasParent when
     `parent_index` is, else 0), the parts, the ParentIndex (one uint per part, with HasParent),
     the DefaultScale (one vector per part), the HoldingLocations (`holding_locations`: (location id, part
     id, scene Frame) triples in the order given, which is the Dictionary's; none by default; a part id
     at or past the parts holds at the object's Position, and -1 throws in UpdateChild), no connection points, the placement
-    frames (none, or with `placement` (a scene Frame per part) one: key 0, Placement.Default, its
-    AnimationFrame's frames and no hooks), the cylspheres ((low point, radius, height)) and spheres
+    frames (none, or with `placement` (a scene Frame per part) one: key `placement_key`, Placement.Default
+    (0) unless given, its AnimationFrame's frames and no hooks), the cylspheres ((low point, radius, height)) and spheres
     ((centre, radius)), Height and Radius 0, the step heights, the sorting sphere ((centre, radius), zero by
     default: what a child's calc_cross_cells finds its cells with) and a zero selection sphere, no
-    lights, the DefaultAnimation and DefaultMotionTable given (0, none, by default), no default script,
-    sound table or script table."""
+    lights, the DefaultAnimation, DefaultScript and DefaultMotionTable given (0, none, by default), no sound
+    table or script table."""
     flags = (SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0) | (SETUP_HAS_PARENT if parent_index is not None else 0)
     out = [_u32.pack(setup_id), _u32.pack(flags), _u32.pack(len(parts))]
     out += [_u32.pack(p) for p in parts]
@@ -315,7 +317,7 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     else:
         if len(placement) != len(parts):
             raise ValueError(f"a placement frame has one frame per part: {len(placement)} for {len(parts)} parts")
-        out.append(_i32.pack(1) + _i32.pack(DEFAULT_PLACEMENT))
+        out.append(_i32.pack(1) + _i32.pack(placement_key))
         out += [frame(f) for f in placement]
         out.append(_u32.pack(0))  # the AnimationFrame's hooks
     out.append(_u32.pack(len(cylspheres)))
@@ -328,7 +330,7 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     out.append(sphere(*sorting_sphere) + sphere((0.0, 0.0, 0.0), 0.0))  # SortingSphere, SelectionSphere
     out.append(_i32.pack(0))  # Lights
     # DefaultAnimation, DefaultScript, DefaultMotionTable, DefaultSoundTable, DefaultScriptTable
-    out.append(_u32.pack(default_animation) + _u32.pack(0) + _u32.pack(default_motion_table) + _u32.pack(0) * 2)
+    out.append(_u32.pack(default_animation) + _u32.pack(default_script) + _u32.pack(default_motion_table) + _u32.pack(0) * 2)
     return b"".join(out)
 
 
@@ -357,7 +359,8 @@ def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
     """A static's Setup of several parts (scene/7 `setup`), static number `index`: each part's physics
     GfxObj (`gfx_obj_physics`), id ``PART_GFX_OBJ_BASE + 16 index + k`` for part k, then the Setup, id
     ``SETUP_BASE + index``, naming them in order, with their frames as its default placement, their
-    scales as its DefaultScale (when the parts have one) and the Setup's spheres and cylspheres."""
+    scales as its DefaultScale (when the parts have one), the Setup's spheres and cylspheres and its
+    DefaultScript (scene/8)."""
     if not 0 <= index < MAX_SETUP_OBJECTS:
         raise ValueError(f"a static with a setup has an index in 0..{MAX_SETUP_OBJECTS - 1}, got {index}")
     if not 1 <= len(rec.parts) <= MAX_PARTS:
@@ -369,14 +372,15 @@ def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
     body = setup(setup_id, ids, spheres=[(s.center, s.radius) for s in rec.spheres],
                  cylspheres=[(c.low_point, c.radius, c.height) for c in rec.cylspheres],
                  placement=[p.frame for p in rec.parts], default_scale=[p.scale for p in rec.parts] if scaled else None,
-                 parent_index=rec.parent_index)
+                 parent_index=rec.parent_index, default_script=rec.default_script)
     return ObjectRecords(setup_id, parts + (DatRecord(setup_id, "SetupModel", body),))
 
 
 def mover_records(mover: Mover) -> ObjectRecords:
     """The DAT records the mover is made from: its Setup (did) and the Setup's one part; with a motion
     table (scene/6), the Setup names it (DefaultMotionTable; and the table's default_animation, scene/8, as its
-    DefaultAnimation) and its MotionTable and Animations follow."""
+    DefaultAnimation) and its MotionTable and Animations follow; its DefaultScript is the mover's
+    default_script (scene/8), and its resting_frame (scene/8) its one placement frame, keyed Resting."""
     part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
     table = mover.motion_table
     body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
@@ -384,6 +388,8 @@ def mover_records(mover: Mover) -> ObjectRecords:
                  default_motion_table=MOTION_TABLE_ID if table is not None else 0,
                  default_animation=ANIMATION_BASE + table.default_animation
                  if table is not None and table.default_animation is not None else 0,
+                 default_script=mover.default_script,
+                 placement=None if mover.resting_frame is None else [mover.resting_frame], placement_key=RESTING_PLACEMENT,
                  holding_locations=holding_location_triples(mover.holding_locations))
     records = (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body))
     if table is not None:

@@ -632,9 +632,14 @@ class SetupRec:
     # scene/8: the Setup's ParentIndex, one uint per part (SetupFlags.HasParent): the DAT reader's, which ACE's
     # physics never reads (Physics/Setup.cs leaves it commented out); None: the flag clear, no array
     parent_index: tuple[int, ...] | None = None
+    # scene/8: the Setup's DefaultScript (0 none): InitDefaults plays it (a ScriptManager) and, the object
+    # being Static, sets HasDefaultScript
+    default_script: int = 0
 
     def to_json(self):
         d = {"parts": [p.to_json() for p in self.parts]}
+        if self.default_script:
+            d["default_script"] = write_id(self.default_script)
         if self.spheres:
             d["spheres"] = [s.to_json() for s in self.spheres]
         if self.cylspheres:
@@ -644,8 +649,12 @@ class SetupRec:
         return d
 
     @staticmethod
-    def from_json(r: Reader) -> "SetupRec":
-        r.obj({"parts", "spheres", "cylspheres", "parent_index"})
+    def from_json(r: Reader, v8: bool = True) -> "SetupRec":
+        """`v8`: the format holds `parent_index` and `default_script` (scene/8)."""
+        for name in ("parent_index", "default_script"):
+            if not v8 and isinstance(r.value, dict) and name in r.value:
+                r[name].fail(f"{name} needs format {FORMAT!r} (older formats have none)")
+        r.obj({"parts", "spheres", "cylspheres", *(("parent_index", "default_script") if v8 else ())})
         parts = tuple(PartRec.from_json(p) for p in r["parts"].list(min_count=1, max_count=MAX_SETUP_PARTS))
         scaled = [p.scale is not None for p in parts]
         if any(scaled) and not all(scaled):
@@ -658,10 +667,11 @@ class SetupRec:
             cylspheres = tuple(_shape_from_json(Reader({"kind": "cylsphere", **c.obj({"low_point", "radius", "height"}).value},
                                                        c.path)) for c in r["cylspheres"].list())
         parent_index = None
-        if r.given("parent_index"):
+        if v8 and r.given("parent_index"):
             parent_index = tuple(x.int_(0, 0xFFFFFFFF) for x in r["parent_index"].list(min_count=len(parts),
                                                                                        max_count=len(parts)))
-        return SetupRec(parts, spheres, cylspheres, parent_index)
+        return SetupRec(parts, spheres, cylspheres, parent_index,
+                        default_script=r["default_script"].id_() if v8 and r.given("default_script") else 0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -682,8 +692,8 @@ class StaticObject:
                 "state": flag_names(PhysicsState, self.state), "scale": write_f32(self.scale)}
 
     @staticmethod
-    def from_json(r: Reader, setups: bool = True) -> "StaticObject":
-        """`setups`: the format knows `setup` (scene/7)."""
+    def from_json(r: Reader, setups: bool = True, v8: bool = True) -> "StaticObject":
+        """`setups`: the format knows `setup` (scene/7); `v8`: a setup's `default_script` (scene/8)."""
         if not setups and isinstance(r.value, dict) and "setup" in r.value:
             r["setup"].fail(f"a static's setup needs format {FORMAT_V7!r} or later (older formats have one shape per static)")
         r.obj({"id", "position", "shape", "state", "scale", *(("setup",) if setups else ())})
@@ -697,7 +707,7 @@ class StaticObject:
             r["scale"].fail(f"scale must be positive, got {scale}")
         if setups and "setup" in r.value:
             return StaticObject(r["id"].id_(), Position.from_json(r["position"]), None, state, scale,
-                                SetupRec.from_json(r["setup"]))
+                                SetupRec.from_json(r["setup"], v8))
         return StaticObject(r["id"].id_(), Position.from_json(r["position"]), _shape_from_json(r["shape"]), state, scale)
 
 
@@ -1248,6 +1258,12 @@ class Mover:
     player_killer_status: int = PLAYER_KILLER_STATUS_NPK
     skills: MoverSkills = DEFAULT_SKILLS  # scene/8: its Player's skills, vitals, attributes and burden
     holding_locations: tuple[HoldingLocation, ...] = ()  # scene/8: its Setup's HoldingLocations (a child's parent)
+    # scene/8: its Setup's DefaultScript (a PhysicsScript id, 0 none): InitDefaults plays it, which makes the
+    # object's ScriptManager (ACE's server runs no script: AddScript refuses it, UpdateScripts is empty)
+    default_script: int = 0
+    # scene/8: its Setup's placement frame Resting (0x65) for its one part (None: the Setup has no placement
+    # frames): PartArray.CreateSetup's SetPlacementFrame(0x65) (makeAnimObject) finds it, and the Sequence's placement frame places the part
+    resting_frame: Frame | None = None
 
     @property
     def motion_table_id(self) -> int:
@@ -1270,6 +1286,10 @@ class Mover:
             d["skills"] = self.skills.to_json()
         if self.holding_locations:
             d["holding_locations"] = [h.to_json() for h in self.holding_locations]
+        if self.default_script:
+            d["default_script"] = write_id(self.default_script)
+        if self.resting_frame is not None:
+            d["resting_frame"] = self.resting_frame.to_json()
         return d
 
     @staticmethod
@@ -1280,8 +1300,9 @@ class Mover:
         format holds the mover's `skills` (scene/8). `children`: its Setup may have holding locations (scene/8)."""
         if not skills and isinstance(r.value, dict) and "skills" in r.value:
             r["skills"].fail(f"skills need format {FORMAT!r} (older formats have none)")
-        if not children and isinstance(r.value, dict) and "holding_locations" in r.value:
-            r["holding_locations"].fail(f"holding_locations need format {FORMAT!r} (older formats have none)")
+        for field in ("holding_locations", "default_script", "resting_frame"):
+            if not children and isinstance(r.value, dict) and field in r.value:
+                r[field].fail(f"{field} needs format {FORMAT!r} (older formats have none)")
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
             r["placement"].fail(f"a placement needs format {FORMAT_V3!r} or later (older formats have no placement)")
         if ticks and isinstance(r.value, dict) and "end" in r.value:
@@ -1292,7 +1313,7 @@ class Mover:
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
                *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ()),
-               *(("holding_locations",) if children else ())})
+               *(("holding_locations", "default_script", "resting_frame") if children else ())})
         spheres, scale, up, down = _read_body(r)
         if vias and not skills and r.has("motion_table") and MotionTableSpec.from_json(r["motion_table"]).needs_v8:
             r["motion_table"].fail(f"hooks, root_motion and default_animation need format {FORMAT!r} (older formats have none)")
@@ -1315,6 +1336,8 @@ class Mover:
             skills=MoverSkills.from_json(r["skills"]) if skills and r.given("skills") else DEFAULT_SKILLS,
             holding_locations=_read_holding_locations(r["holding_locations"]) if children and r.given("holding_locations")
             else (),
+            default_script=r["default_script"].id_() if children and r.given("default_script") else 0,
+            resting_frame=Frame.from_json(r["resting_frame"]) if children and r.given("resting_frame") else None,
         )
 
 
@@ -1514,12 +1537,14 @@ class Scene:
     @property
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
-        motion table's hooks, animations without root motion or DefaultAnimation, a setup's parent_index, /7
+        motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index or
+        DefaultScript, the mover's resting frame, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
-                self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or any(
-                o.setup is not None and o.setup.parent_index is not None for o in self.objects):
+                self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
+                self.mover.resting_frame is not None) or any(
+                o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None) for o in self.objects):
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7
@@ -1595,7 +1620,7 @@ class Scene:
             table = tuple(h.f32() for h in r["land_height_table"].list(count=256))
         landblocks = tuple(Landblock.from_json(lb, not v1) for lb in r["landblocks"].list(min_count=1))
         setups = fmt in (FORMAT_V7, FORMAT)
-        objects = tuple(StaticObject.from_json(o, setups) for o in r["objects"].list()) if r.given("objects") else ()
+        objects = tuple(StaticObject.from_json(o, setups, fmt == FORMAT) for o in r["objects"].list()) if r.given("objects") else ()
         environments = env_cells = ()
         if r.given("environments"):
             environments = tuple(Environment.from_json(e) for e in r["environments"].list())

@@ -154,9 +154,9 @@ def _sample():
 
 
 def _setup_scenes(scenes):
-    """A scene/7 variant of the first sampled scene with a BSP static: that static made a Setup of two
+    """Scene/7 variants of the first sampled scene with a BSP static: that static made a Setup of two
     parts (the second turned, lifted and given per-part scales in the other variant) with spheres and
-    cylspheres, so every field of a setup is written."""
+    cylspheres, and a scene/8 one of the latter with a DefaultScript), so every field of a setup is written."""
     from dataclasses import replace
 
     from .scene import BSPShape, CylSphereShape, Frame, PartRec, SetupRec, SphereRec
@@ -170,7 +170,7 @@ def _setup_scenes(scenes):
                                 (0xFFFFFFFF, 0))
                 objects = list(scene.objects)
                 return [replace(scene, objects=tuple(objects[:i] + [replace(o, shape=None, setup=s)] + objects[i + 1:]))
-                        for s in (plain, full)]
+                        for s in (plain, full, replace(full, default_script=0x33000001))]
     return []
 
 
@@ -208,7 +208,8 @@ def _movers_scene(scene, m):
               OtherMover(0x80000003, "object", body, m.begin, 0.0, 0.0),
               OtherMover(0x80000004, "object", body, None, 0.0, 0.0, sorting_sphere=SphereRec((0.0, 0.0, 0.5), 0.6),
                          parent=ChildOf(0x50000001, 1, 0)))
-    m = replace(m, holding_locations=(HoldingLocation(1, 1, Frame((0.4, 0.1, 1.0))),))
+    m = replace(m, holding_locations=(HoldingLocation(1, 1, Frame((0.4, 0.1, 1.0))),), default_script=0x33000001,
+                resting_frame=Frame((0.0, 0.0, 0.5)))
     every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))

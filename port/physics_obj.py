@@ -1,4 +1,4 @@
-"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChild, UpdateChildrenInternal, add_child (both), set_parent (both), unparent_children, unset_parent, leave_world, clear_transient_states, recalc_cross_cells, calc_cross_cells, set_cell_id_recursive, SetPlacementFrame, SetPlacementFrameInternal, handle_visible_cells_non_player, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_particle_shadow_to_cell, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, track_object_collision, report_collision_end, report_object_collision_end, report_environment_collision, report_object_collision, build_collision_profile (both), get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
+"""PhysicsObj: PhysicsObj(), makeObject, InitObjectBegin, InitPartArrayObject, makeAnimObject, SetTranslucencyInternal, InitObjectEnd, InitDefaults, play_script_internal, AdjustPosition, add_obj_to_cell, enter_cell, UpdateChild, UpdateChildrenInternal, add_child (both), set_parent (both), unparent_children, unset_parent, leave_world, clear_transient_states, recalc_cross_cells, calc_cross_cells, set_cell_id_recursive, SetPlacementFrame, SetPlacementFrameInternal, handle_visible_cells_non_player, calc_cross_cells_static, find_bbox_cell_list, remove_shadows_from_cells, add_particle_shadow_to_cell, add_shadows_to_cell(CellArray), is_completely_visible, transition, update_object, UpdateObjectInternal, UpdatePositionInternal, UpdatePhysicsInternal, calc_friction, set_local_velocity, set_omega, set_initial_frame, set_active, set_ethereal, ethereal_check_for_collisions, check_collision, IsMovingOrAnimating, RemoveLinkAnimations, GetBlockDist, process_hooks, UpdateObjectInternalServer, update_object_server, set_current_pos, change_cell, change_cell_server, leave_cell, track_object_collision, report_collision_end, report_object_collision_end, report_environment_collision, report_object_collision, build_collision_profile (both), get_object_info, check_contact, get_walkable_z, is_valid_walkable, set_velocity, GetStepUpHeight, GetStepDownHeight, FindObjCollisions, FindObjCollisions_Inner, CacheHasPhysicsBSP, SetScaleStatic, IsPlayer, Equals; MasterDBMap.DivineType.
 
 The part of ACE's PhysicsObj.cs a transition uses: how a static object is made from its DAT
 record (makeObject: a PartArray over a GfxObj mesh or a Setup) and placed (add_obj_to_cell ->
@@ -21,7 +21,8 @@ root motion from the PartArray's Sequence and the integration of UpdatePhysicsIn
 frame, a transition moves there, SetPositionInternal(Transition) takes the cell, contact plane and
 flags and handle_all_collisions bounces; UpdateObjectInternalServer is the legacy player path to
 RequestPos. The managers ACE makes for creatures and players (movement, position, detection,
-target, script, particle) are null for every object here; their null checks stay as ACE has them.
+target, particle) are null unless the scene's calls make them; a Setup's DefaultScript makes a
+ScriptManager (InitDefaults -> play_script_internal), whose UpdateScripts does nothing.
 """
 
 from __future__ import annotations
@@ -55,6 +56,7 @@ from .world_objects import Player
 from .env_collision_profile import EnvCollisionProfile
 from .obj_collision_profile import ObjCollisionProfile
 from .anim_hook import anim_hook_execute
+from .managers.script_manager import ScriptManager
 
 # PhysicsEngine.cs TransientStateFlags.StationaryComplete = StationaryStuck | StationaryStop | StationaryFall
 STATIONARY_COMPLETE = TransientState.StationaryStuck | TransientState.StationaryStop | TransientState.StationaryFall
@@ -299,9 +301,10 @@ class PhysicsObj:
 
     @anchor("CPhysicsObj::InitDefaults", "PhysicsObj.cs:InitDefaults")
     def init_defaults(self, setup) -> None:
-        """Scripts are not ported: a Setup naming one stops the port (dat.py writes none)."""
+        """The Setup's DefaultScript is played (a ScriptManager made, the script not run: ACE's server
+        runs none) and its DefaultMotionTable set; the sound and script tables ACE leaves commented out."""
         if setup.default_script != 0:
-            raise NotImplementedError("default scripts are not ported")
+            self.play_script_internal(setup.default_script)
 
         if setup.default_motion_table != 0:
             self.set_motion_table_id(setup.default_motion_table)
@@ -1583,7 +1586,7 @@ class PhysicsObj:
             raise NotImplementedError("ParticleManager.UpdateParticles is not ported")
 
         if self.script_manager is not None:
-            raise NotImplementedError("ScriptManager.UpdateScripts is not ported")
+            self.script_manager.update_scripts()
 
     @anchor("CPhysicsObj::update_object", "PhysicsObj.cs:update_object")
     def update_object(self, lscape, trace=None) -> bool:
@@ -1670,7 +1673,7 @@ class PhysicsObj:
             raise NotImplementedError("ParticleManager.UpdateParticles is not ported")
 
         if self.script_manager is not None:
-            raise NotImplementedError("ScriptManager.UpdateScripts is not ported")
+            self.script_manager.update_scripts()
 
         return request_cell >> 16 != 0x18A or (self.cur_cell is not None and self.cur_cell.id >> 16 == request_cell >> 16)
 
@@ -1750,6 +1753,17 @@ class PhysicsObj:
         self.weenie_obj = wobj
         if self.movement_manager is not None:
             self.movement_manager.set_weenie_object(wobj)
+
+    @anchor("CPhysicsObj::play_script_internal", "PhysicsObj.cs:play_script_internal")
+    def play_script_internal(self, script_id: int) -> bool:
+        """Makes the ScriptManager on the first script and hands it the script (which ACE's AddScript
+        refuses: the server runs no PhysicsScript)."""
+        if script_id == 0:
+            return False
+        if self.script_manager is None:
+            self.script_manager = ScriptManager.create(self)
+
+        return self.script_manager.add_script(script_id)
 
     @anchor("CPhysicsObj::SetMotionTableID", "PhysicsObj.cs:SetMotionTableID")
     def set_motion_table_id(self, mtable_id: int) -> bool:

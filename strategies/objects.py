@@ -140,6 +140,9 @@ PROBE_HEIGHTS = dr.f32(0.5, 3.0)
 DROP_FACTORS = dr.OneOf(st.sampled_from((1.25, 1.5, 2.0)), dr.f32(1.05, 3.0))
 TOP_SIDES = dr.f32(1.0, 10.0)
 ONE_IN_FOUR = st.sampled_from((False, False, False, True))
+# a Setup's DefaultScript (scene/8; 0 none) now and then: InitDefaults plays it, making the object's ScriptManager
+# (and, a static, setting HasDefaultScript), one Setup in two; PhysicsScript ids are portal DAT 0x33xxxxxx, which ACE never reads
+DEFAULT_SCRIPTS = st.sampled_from((0, 0, 0, 0x33000001, 0x33000002, 0x3300FFFF))
 EDGES = st.sampled_from(((1, 0), (-1, 0), (0, 1), (0, -1)))
 ALONG_EDGE = dr.OneOf(dr.floats(-0.9, 0.9), st.sampled_from((0.0, 1.0, -1.0, 0.99, -0.99)))
 PROBE_INSIDE = dr.OneOf(st.sampled_from((0.5, 0.9, 1.2)), dr.floats(0.4, 1.5))
@@ -628,7 +631,7 @@ def multipart(draw, gx: float, gy: float, r: float) -> Plan:
     heading = dr.take(draw, YAWS)
     d = r * draw(CORNER_DISTANCES) + r
     ox, oy = gx - ax + d * math.cos(math.radians(heading)), gy - ay + d * math.sin(math.radians(heading))
-    p.objects.append((SetupRec(parts, spheres, cyls), ox, oy, yaw, state))
+    p.objects.append((SetupRec(parts, spheres, cyls, default_script=draw(DEFAULT_SCRIPTS)), ox, oy, yaw, state))
     p.begin = (gx, gy)
     p.heading = heading + dr.take(draw, EDGE_ANGLES) / 8
     p.length = to_f32(d * draw(CORNER_THROUGH))
@@ -673,7 +676,7 @@ def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan
         spheres, cyls = (), (CylSphereShape((0.0, 0.0, 0.0), radius, dr.take(draw, PART_HEIGHTS)),)
     p.moved_begin = (bx + lx, by + ly)
     p.begin = p.moved_begin
-    p.objects.append((SetupRec(parts, spheres, cyls), bx + ex + radsum * ax, by + ey + radsum * ay, 0.0,
+    p.objects.append((SetupRec(parts, spheres, cyls, default_script=draw(DEFAULT_SCRIPTS)), bx + ex + radsum * ax, by + ey + radsum * ay, 0.0,
                       int(PhysicsState.Static)))
     p.heading, p.length, p.plane_dz, p.velocity = heading, step, 0.0, (0.0, 0.0, 0.0)
     p.label = f"multipart-tangent-{kind}" + _parent_index(draw, p)

@@ -155,6 +155,13 @@ QUANTA: tuple[tuple[str, float], ...] = tuple(
 QUANTUM_PICK = dr.ints(0, len(QUANTA) - 1)
 QUANTUM_AT = st.sampled_from(("first", "first", "every", "some"))
 
+# the mover's Setup's DefaultScript (scene/8; 0 none), one scene in eight (strategies/objects.py DEFAULT_SCRIPTS)
+DEFAULT_SCRIPTS = st.sampled_from((False,) * 7 + (True,))
+SCRIPT_IDS = st.integers(0x33000001, 0x3300FFFF)  # PhysicsScript ids (portal DAT 0x33xxxxxx), which ACE never reads
+# the mover's Setup's placement frame Resting (scene/8 `mover.resting_frame`; None: no placement frames), one
+# scene in eight: PartArray.CreateSetup's SetPlacementFrame(0x65) finds it; its part then sits at that frame from the object's
+_HALF_TURN_Z = (float(to_f32(0.70710677)), 0.0, 0.0, float(to_f32(0.70710677)))  # 90 degrees about z
+RESTING_FRAMES = st.sampled_from((None,) * 14 + (Frame((0.0, 0.0, 0.0)), Frame((0.25, -0.125, 0.5), _HALF_TURN_Z)))
 # the driver: the object path, now and then the legacy player path
 DRIVERS = st.sampled_from(("update_object", "update_object", "update_object", "request_pos"))
 
@@ -335,6 +342,12 @@ def draw_tick_scene(draw, world: str | None = None, policy: str | None = None) -
     `policy` when given (one drawing on that world); in ACE's server mode three times in four, else
     client mode (dr.ENGINE_MODES)."""
     scene = _draw_tick_scene(draw, world, policy)
+    script = draw(SCRIPT_IDS) if draw(DEFAULT_SCRIPTS) else 0
+    if script:  # the mover's Setup's DefaultScript: a ScriptManager each update steps (UpdateScripts)
+        scene = scene.replace(mover=replace(scene.mover, default_script=script))
+    resting = draw(RESTING_FRAMES)
+    if resting is not None:
+        scene = scene.replace(mover=replace(scene.mover, resting_frame=resting))
     return scene.replace(engine_mode=draw(dr.ENGINE_MODES))
 
 

@@ -109,7 +109,7 @@ def test_the_scene_schema_names_a_statics_setup_and_every_field_of_its_parts(gen
     obj = scene["properties"]["objects"]["items"]
     assert {"shape", "setup"} <= set(obj["properties"]) and not {"shape", "setup"} & set(obj["required"])
     setup = obj["properties"]["setup"]
-    assert set(setup["properties"]) == {"parts", "spheres", "cylspheres", "parent_index"} and setup["required"] == ["parts"]
+    assert set(setup["properties"]) == {"parts", "spheres", "cylspheres", "parent_index", "default_script"} and setup["required"] == ["parts"]
     assert set(setup["properties"]["parts"]["items"]["properties"]) == {"shape", "origin", "orientation", "scale"}
 
 

@@ -1,3 +1,3 @@
 """ACE's Physics/Managers as the motion layer reads them: MovementManager, MotionTableManager,
 MoveToManager, StickyManager, PositionManager, ConstraintManager, InterpolationManager,
-TargetManager, ServerObjectManager; one module per ACE file."""
+TargetManager, ServerObjectManager, and ScriptManager (Physics/Scripts); one module per ACE file."""

@@ -40,6 +40,14 @@ def test_every_tick_scene_validates_and_has_no_end_and_most_run_in_aces_server_m
     assert set(modes) == {"server", "client"} and modes["server"] > 2 * modes["client"], modes
 
 
+def test_some_tick_scenes_give_the_movers_setup_a_default_script_or_a_resting_frame_most_neither(tick_scenes):
+    scripts = [s.mover.default_script for s in tick_scenes if s.mover.default_script]
+    resting = [s.mover.resting_frame for s in tick_scenes if s.mover.resting_frame is not None]
+    assert 0 < len(scripts) < len(tick_scenes) // 3 and all(0x33000001 <= x <= 0x3300FFFF for x in scripts)
+    assert 0 < len(resting) < len(tick_scenes) // 3 and len({f.origin for f in resting}) == 2
+    assert all(s.format == "acconform.scene/8" for s in tick_scenes if s.mover.default_script or s.mover.resting_frame)
+
+
 def test_tick_scenes_average_twenty_ticks_or_more(tick_scenes):
     assert sum(len(s.ticks.steps) for s in tick_scenes) / len(tick_scenes) >= 20
 
