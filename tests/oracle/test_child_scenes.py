@@ -108,7 +108,7 @@ def test_holding_locations_need_format_8():
     doc.pop("others")
     for step in doc["ticks"]["steps"]:
         step.pop("others", None)
-    with pytest.raises(InvalidScene, match=r"mover\.holding_locations.*need format 'acconform.scene/8'"):
+    with pytest.raises(InvalidScene, match=r"mover\.holding_locations.*needs format 'acconform.scene/8'"):
         Scene.from_json(doc)
 
 
