@@ -1,0 +1,41 @@
+"""Missile scenes with a launch arm (strategies/missiles.py draw_launch_scene: the trajectory_alt_solver, a
+target out of range, straight above or below, outrunning or creeping, a spell that times out, movers that report
+collisions), for `acconform record` (issue 41's shard ticks-0051).
+
+    python tests/runner/launch_scenes.py OUT_DIR [-n 600] [--seed 51]
+
+Writes one scene file per drawn scene (strategies.fast_draw, as a campaign draws). The arms are no campaign
+kind: a draw added to the missiles kind would move every seeded sample the tests pin.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+
+def main(argv=None) -> int:
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.missiles import draw_launch_scene
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out", type=Path)
+    ap.add_argument("-n", type=int, default=600)
+    ap.add_argument("--seed", type=int, default=51)
+    a = ap.parse_args(argv)
+    a.out.mkdir(parents=True, exist_ok=True)
+    drawer = FastDrawer(st.composite(draw_launch_scene)(), a.seed * 1000003)
+    with pinned_constants():
+        for i in range(a.n):
+            scene = drawer.draw()[0]
+            (a.out / f"launch-{i:04d}.json").write_text(json.dumps(scene.to_json()))
+    print(f"{a.n} scenes in {a.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
