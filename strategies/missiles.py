@@ -98,6 +98,7 @@ ARMS = st.sampled_from(("alt_solver", "alt_solver", "out_of_range", "overhead", 
 ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target", "creature_at_wall", "wall", "bystander"),
                 "out_of_range": ("creature_at_wall", "moving_target", "wall"), "overhead": ("creature_at_wall", "moving_target"),
                 "fast_target": ("moving_target",), "tiny_target": ("moving_target",), "timeout": ("moving_target",),
+                "across": ("moving_target",),
                 "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
 FAR = dr.f32(10.0, 25.0)
@@ -179,7 +180,9 @@ def draw_launch_scene(draw) -> Scene:
     creeping at under 1 mm/s); `timeout` (a straight spell at 3-4.5 m/s that misses a target crossing and flies
     on over the landblock for 31 s at 10 ticks a second: the missile timeout); `report` (the mover and the
     monsters report collisions, PhysicsState.ReportCollisions as ACE's creatures do: the player's and a
-    creature's OnCollideObject). Any arm but timeout runs under trajectory_alt_solver one time in four."""
+    creature's OnCollideObject). Any arm but timeout runs under trajectory_alt_solver one time in four.
+    One more arm, `across` (the player at a monster just over the landblock's north border: a launch both sides
+    refuse, ACE.Entity.Position.ToGlobal not being modelled), is drawn only by name: draw_missile_scene(draw, "across")."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -190,6 +193,8 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
     ground = 2.0 * h
     x0, y0 = float(dr.take(draw, SPOTS)), float(dr.take(draw, SPOTS))
     phi = math.radians(float(dr.take(draw, HEADINGS)))
+    if arm == "across":  # north from near the landblock's north edge at a monster over the border (ToGlobal: refused)
+        phi, y0 = 0.0, 186.0
     if arm == "timeout":  # from near an edge, inward along an axis: 135 m of flight stays on the landblock
         phi = math.radians(draw(st.sampled_from((0.0, 90.0, 180.0, 270.0))))
         ux, uy = -math.sin(phi), math.cos(phi)
@@ -197,7 +202,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         y0 = 12.0 if uy > 0.5 else 180.0 if uy < -0.5 else y0
     ux, uy = -math.sin(phi), math.cos(phi)
     d = float(dr.take(draw, FAR if arm == "out_of_range" else DISTANCES))
-    d = min(d, max(3.0, min((x0 - 8.0) / -ux if ux < -1e-6 else 1e9, (184.0 - x0) / ux if ux > 1e-6 else 1e9,
+    d = 8.0 if arm == "across" else min(d, max(3.0, min((x0 - 8.0) / -ux if ux < -1e-6 else 1e9, (184.0 - x0) / ux if ux > 1e-6 else 1e9,
                             (y0 - 8.0) / -uy if uy < -1e-6 else 1e9, (184.0 - y0) / uy if uy > 1e-6 else 1e9) - 2.0))
     tx, ty = x0 + ux * d, y0 + uy * d
     policy = draw(POLICIES) if arm not in ARM_POLICIES else draw(st.sampled_from(ARM_POLICIES[arm]))
@@ -205,6 +210,8 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
     arrow = draw(st.sampled_from((True, True, False))) if arm not in ("out_of_range", "timeout") else arm == "out_of_range"
     n = dr.take(draw, TICK_COUNTS)
     dt = draw(DTS)
+    if arm == "across":
+        player_launches = True
     if arm == "timeout":  # the player launches at a monster hovering 2-5 m up (no Gravity), which moves out of the way
         n, dt = 310, 0.1
         player_launches = True
@@ -284,6 +291,8 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
             hover = to_f32(ground + float(dr.take(draw, dr.f32(2.0, 5.0))))
             monsters.append(replace(_monster(MONSTER, lb, *monster_at, hover, body), state=int(PhysicsState.EdgeSlide),
                                     transient_state=int(TransientState.Active)))
+        elif player_launches and arm == "across":
+            monsters.append(_monster(MONSTER, lb + 1, monster_at[0], monster_at[1] - 192.0, ground, body))
         elif player_launches:
             monsters.append(_monster(MONSTER, lb, *monster_at, ground, body))
         else:
@@ -360,11 +369,13 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
                   if monster_velocity is not None else ())
         theirs += tuple(OtherInputs(i, velocity=v[k]) for i, v in walkers.items())
         steps.append(TickStep(dt, others=theirs, **mover_inputs[k]))
-    land = Landblock(lb << 16 | 0xFFFF, (h,) * 81, (0,) * 81)
+    land = (Landblock(lb << 16 | 0xFFFF, (h,) * 81, (0,) * 81),)
+    if arm == "across":
+        land += (Landblock((lb + 1) << 16 | 0xFFFF, (h,) * 81, (0,) * 81),)
     name = f"missiles:{policy}:{'arrow' if arrow else 'spell'}:{'player' if player_launches else 'monster'}"
     if arm is not None:
         name = f"missiles:{arm}:{name[9:]}" + (":alt_solver" if launch.alt_solver and arm != "alt_solver" else "")
     if crosser is not None:  # who crosses (or is the target), how, and the players' PlayerKillerStatus
         name += f":{role}:{way}:{PK_NAMES[mover_pks]}:{PK_NAMES[other_pks]}"
-    return validate_scene(Scene((land,), mover, tuple(objects), engine_mode="server", name=name,
+    return validate_scene(Scene(land, mover, tuple(objects), engine_mode="server", name=name,
                                 ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))

@@ -2,10 +2,11 @@
 target out of range, straight above or below, outrunning or creeping, a spell that times out, movers that report
 collisions), for `acconform record` (issue 41's shard ticks-0051).
 
-    python tests/runner/launch_scenes.py OUT_DIR [-n 600] [--seed 51] [--arms A,B] [--timeouts K]
+    python tests/runner/launch_scenes.py OUT_DIR [-n 600] [--seed 51] [--arms A,B] [--timeouts K] [--only ARM]
 
 Writes one scene file per drawn scene (strategies.fast_draw, as a campaign draws), `s<seed>-<i>.json`, keeping
-only the scenes of `--arms` when given and the first K of arm `timeout` (310 ticks each: a shard's replay time).
+only the scenes of `--arms` when given and the first K of arm `timeout` (310 ticks each: a shard's replay time);
+`--only ARM` draws that arm alone (`across`, which draw_launch_scene never draws, is drawn so).
 The arms are no campaign kind: a draw added to the missiles kind would move every seeded sample the tests pin.
 """
 
@@ -21,7 +22,7 @@ def main(argv=None) -> int:
 
     from acconform.strategies.determinism import pinned_constants
     from acconform.strategies.fast_draw import FastDrawer
-    from acconform.strategies.missiles import draw_launch_scene
+    from acconform.strategies.missiles import draw_launch_scene, draw_missile_scene
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out", type=Path)
@@ -29,10 +30,12 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=51)
     ap.add_argument("--arms", default=None, help="comma-separated arms to keep (default: every arm)")
     ap.add_argument("--timeouts", type=int, default=None, help="keep at most this many timeout scenes")
+    ap.add_argument("--only", default=None, help="draw this arm alone (draw_missile_scene(draw, ARM))")
     a = ap.parse_args(argv)
     arms = None if a.arms is None else set(a.arms.split(","))
     a.out.mkdir(parents=True, exist_ok=True)
-    drawer = FastDrawer(st.composite(draw_launch_scene)(), a.seed * 1000003)
+    draw = draw_launch_scene if a.only is None else (lambda d: draw_missile_scene(d, a.only))
+    drawer = FastDrawer(st.composite(draw)(), a.seed * 1000003)
     kept = timeouts = 0
     with pinned_constants():
         for i in range(a.n):
