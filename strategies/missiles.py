@@ -98,7 +98,7 @@ ARMS = st.sampled_from(("alt_solver", "alt_solver", "out_of_range", "overhead", 
 ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target", "creature_at_wall", "wall", "bystander"),
                 "out_of_range": ("creature_at_wall", "moving_target", "wall"), "overhead": ("creature_at_wall", "moving_target"),
                 "fast_target": ("moving_target",), "tiny_target": ("moving_target",), "timeout": ("moving_target",),
-                "across": ("moving_target",),
+                "across": ("moving_target",), "run_into": ("moving_target",),
                 "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
 FAR = dr.f32(10.0, 25.0)
@@ -114,6 +114,8 @@ CRAWL_SPEEDS = dr.f32(0.2, 0.99)  # under 1 m/s: Trajectory2's quadratic (a unit
 TIMEOUT_SPEEDS = dr.f32(0.5, 4.0)  # 30 s carries it at most 120 m: it stays on the landblock
 REPORT_ROLES = st.sampled_from(("mover_is_target", "mover_is_target", "mover_crosses"))
 PUSHES = dr.f32(1.0, 4.0)  # report: a crate (weenie object) pushed into the target
+RUN_SPEEDS = dr.f32(6.0, 12.0)  # run_into: the player runs at the arrow about as fast as it flies, so his own
+RUN_ARROW_SPEEDS = dr.f32(6.0, 9.0)  # step meets it about one time in two
 
 
 def _cell(lb: int, x: float, y: float) -> int:
@@ -182,7 +184,9 @@ def draw_launch_scene(draw) -> Scene:
     monsters report collisions, PhysicsState.ReportCollisions as ACE's creatures do: the player's and a
     creature's OnCollideObject). Any arm but timeout runs under trajectory_alt_solver one time in four.
     One more arm, `across` (the player at a monster just over the landblock's north border: a launch both sides
-    refuse, ACE.Entity.Position.ToGlobal not being modelled), is drawn only by name: draw_missile_scene(draw, "across")."""
+    refuse, ACE.Entity.Position.ToGlobal not being modelled), and `run_into` (a monster 3-6 m off shoots a 6-9 m/s arrow
+    at the player, who reports collisions and runs at it at 6-12 m/s: his own step meets the arrow aimed at him, the
+    player's OnCollideObject and the helper's hit) are drawn only by name: draw_missile_scene(draw, ARM)."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -202,7 +206,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         y0 = 12.0 if uy > 0.5 else 180.0 if uy < -0.5 else y0
     ux, uy = -math.sin(phi), math.cos(phi)
     d = float(dr.take(draw, FAR if arm == "out_of_range" else DISTANCES))
-    d = 8.0 if arm == "across" else min(d, max(3.0, min((x0 - 8.0) / -ux if ux < -1e-6 else 1e9, (184.0 - x0) / ux if ux > 1e-6 else 1e9,
+    d = 8.0 if arm == "across" else min(6.0 if arm == "run_into" else d, max(3.0, min((x0 - 8.0) / -ux if ux < -1e-6 else 1e9, (184.0 - x0) / ux if ux > 1e-6 else 1e9,
                             (y0 - 8.0) / -uy if uy < -1e-6 else 1e9, (184.0 - y0) / uy if uy > 1e-6 else 1e9) - 2.0))
     tx, ty = x0 + ux * d, y0 + uy * d
     policy = draw(POLICIES) if arm not in ARM_POLICIES else draw(st.sampled_from(ARM_POLICIES[arm]))
@@ -212,12 +216,14 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
     dt = draw(DTS)
     if arm == "across":
         player_launches = True
+    if arm == "run_into":  # a monster shoots a slow arrow at the player, who runs at it
+        player_launches, arrow = False, True
     if arm == "timeout":  # the player launches at a monster hovering 2-5 m up (no Gravity), which moves out of the way
         n, dt = 310, 0.1
         player_launches = True
     launch_tick = min(dr.take(draw, LAUNCH_TICKS), n - 1)
 
-    body = EDGE_SLIDE | int(PhysicsState.ReportCollisions) if arm == "report" else EDGE_SLIDE
+    body = EDGE_SLIDE | int(PhysicsState.ReportCollisions) if arm in ("report", "run_into") else EDGE_SLIDE
     walk_for = 1.0 if arm in ("fast_target", "timeout") else math.inf  # seconds a fast target walks: 30 m at most
     objects, monsters = [], []
     mover_inputs = [{} for _ in range(n)]
@@ -281,8 +287,9 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         objects.append(StaticObject(POST, Position(_cell(lb, px, py), Frame((px, py, to_f32(ground)))),
                                     CylSphereShape((0.0, 0.0, 0.0), to_f32(r), 4.0), int(PhysicsState.Static)))
     elif policy == "moving_target":
-        way = draw(WAYS) if arm != "timeout" else "across"
-        speeds = {"fast_target": FAST_SPEEDS, "tiny_target": TINY_SPEEDS, "timeout": FAST_SPEEDS}.get(arm, WALK_SPEEDS)
+        way = draw(WAYS) if arm not in ("timeout", "run_into") else "across" if arm == "timeout" else "toward"
+        speeds = {"fast_target": FAST_SPEEDS, "tiny_target": TINY_SPEEDS, "timeout": FAST_SPEEDS,
+                  "run_into": RUN_SPEEDS}.get(arm, WALK_SPEEDS)
         speed = float(dr.take(draw, speeds))
         vx, vy = {"toward": (-ux, -uy), "away": (ux, uy), "across": (uy, -ux)}[way]
         monster_velocity = (to_f32(vx * speed), to_f32(vy * speed), 0.0)
@@ -314,7 +321,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
     alt_solver = arm not in (None, "timeout") and (arm == "alt_solver" or draw(st.sampled_from((False, False, False, True))))
     if arrow:
         radius = float(dr.take(draw, ARROW_RADII))
-        speeds = SLOW_ARROW_SPEEDS if arm == "out_of_range" else ARROW_SPEEDS
+        speeds = SLOW_ARROW_SPEEDS if arm == "out_of_range" else RUN_ARROW_SPEEDS if arm == "run_into" else ARROW_SPEEDS
         if arm == "alt_solver" and draw(st.sampled_from((False, False, True))):
             speeds = CRAWL_SPEEDS
         launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, speeds)), origin, _heading(ux, uy),
@@ -349,6 +356,10 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         cx, cy = tx + side * uy * 1.5, ty - side * ux * 1.5
         push = float(dr.take(draw, PUSHES))
         walkers[CRATE] = [(to_f32(-side * uy * push), to_f32(side * ux * push), 0.0)] * n
+        monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
+                                   0.4, 0.4, state=body, transient_state=WALKING))
+    elif arm == "run_into" and draw(dr.BOOLEANS):  # a crate standing half way: the arrow hits what it is not aimed at
+        cx, cy = (x0 + tx) / 2, (y0 + ty) / 2
         monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
                                    0.4, 0.4, state=body, transient_state=WALKING))
     others = tuple(monsters) + (projectile,)
