@@ -149,6 +149,10 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                  "WorldObject.CalculateProjectileVelocity, SetProjectilePhysicsState or SpellProjectile.Setup, "
                  "Landblock.AddWorldObject, IsProjectileVisible) and stepped by WorldObject.UpdateObjectPhysics; a hit "
                  "runs ProjectileCollisionHelper or SpellProjectile.ProjectileImpact (needs objects.moving)"),
+    "missiles.alt_solver": (lambda s: any(o.launch is not None and o.launch.alt_solver for o in s.others),
+                            "a launch under the server property trajectory_alt_solver (scene/8: launch.alt_solver): "
+                            "the velocity by Trajectory2.CalculateTrajectory instead of Trajectory's solvers (needs "
+                            "missiles)"),
 }
 
 

@@ -1362,7 +1362,8 @@ class Launch:
     Medium), leading a moving target (its CachedVelocity) unless the launcher is a player without
     LeadMissileTargets (`lead_target` false); a spell's by WorldObject.CalculateProjectileVelocity (the aim
     point raised by Height * 2/3, or 5/6 for an `arc`, which falls under gravity; a `tracking` spell leads
-    the target)."""
+    the target). `alt_solver` is the server's trajectory_alt_solver property (PropertyManager, false by default):
+    both compute the velocity by Trajectory2.CalculateTrajectory instead (feature missiles.alt_solver)."""
 
     tick: int
     launcher: int
@@ -1373,6 +1374,7 @@ class Launch:
     lead_target: bool = True
     arc: bool = False
     tracking: bool = False
+    alt_solver: bool = False
 
     def to_json(self, spell: bool) -> dict:
         d = {"tick": self.tick, "launcher": write_id(self.launcher), "target": write_id(self.target),
@@ -1383,11 +1385,14 @@ class Launch:
         else:
             d["orientation"] = write_vec(self.orientation)
             d["lead_target"] = self.lead_target
+        if self.alt_solver:  # written only when set: a scene without it means what it meant
+            d["alt_solver"] = True
         return d
 
     @staticmethod
     def from_json(r: Reader, spell: bool) -> "Launch":
-        r.obj({"tick", "launcher", "target", "speed", "origin", *(("arc", "tracking") if spell else ("orientation", "lead_target"))})
+        r.obj({"tick", "launcher", "target", "speed", "origin", "alt_solver",
+               *(("arc", "tracking") if spell else ("orientation", "lead_target"))})
         speed = r["speed"].f32()
         if not speed > 0:
             r["speed"].fail(f"a launch speed is positive, got {speed}")
@@ -1396,7 +1401,8 @@ class Launch:
                       origin=frame.origin, orientation=frame.orientation,
                       lead_target=r["lead_target"].bool_() if r.given("lead_target") else True,
                       arc=r["arc"].bool_() if r.given("arc") else False,
-                      tracking=r["tracking"].bool_() if r.given("tracking") else False)
+                      tracking=r["tracking"].bool_() if r.given("tracking") else False,
+                      alt_solver=r["alt_solver"].bool_() if r.given("alt_solver") else False)
 PLAYER_ID_RANGE = (0x50000001, 0x5FFFFFFF)  # ACE.Entity.ObjectGuid.PlayerMin / PlayerMax
 DYNAMIC_ID_RANGE = (0x80000000, 0xFFFFFFFE)  # ObjectGuid.DynamicMin / DynamicMax: a server's generated objects
 

@@ -225,7 +225,7 @@ def _movers_scene(scene, m):
 
 def _missiles_scene(scene, m):
     """A scene with projectiles (scene/8, missiles; a server engine): a monster at the mover's start, an arrow it
-    launches at the mover and a spell the mover casts at it (an arc, tracking), both at tick 0, every launch field
+    launches at the mover and a spell the mover casts at it (an arc, tracking, under trajectory_alt_solver), both at tick 0, every launch field
     written."""
     from dataclasses import replace
 
@@ -237,7 +237,7 @@ def _missiles_scene(scene, m):
               OtherMover(0x80000010, "ammunition", (SphereRec((0.0, 0.0, 0.0), 0.05),), m.begin, 0.0, 0.0,
                          launch=Launch(0, 0x80000001, 0x50000001, 20.0, (x, y, z + 1.2), (1.0, 0.0, 0.0, 0.0), False)),
               OtherMover(0x80000011, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), 0.15),), m.begin, 0.0, 0.0,
-                         launch=Launch(0, 0x50000001, 0x80000001, 15.0, (x, y, z + 1.2), arc=True, tracking=True)))
+                         launch=Launch(0, 0x50000001, 0x80000001, 15.0, (x, y, z + 1.2), arc=True, tracking=True, alt_solver=True)))
     return replace(scene, engine_mode="server", mover=m, name="missiles", others=others,
                    ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30),)))
 

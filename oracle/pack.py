@@ -170,9 +170,9 @@ def _child_of(p) -> bytes:
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
 # then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id, speed, origin, orientation
-# (w x y z), lead_target, arc, tracking
+# (w x y z), lead_target, arc, tracking, alt_solver
 _NO_LAUNCH = b"\0"
-_LAUNCH = struct.Struct("<BiIIf3f4fBBB")
+_LAUNCH = struct.Struct("<BiIIf3f4fBBBB")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -213,7 +213,8 @@ def pack_scene(scene: Scene) -> bytes:
         la = o.launch
         out.append(_NO_LAUNCH if la is None else
                    _LAUNCH.pack(1, la.tick, la.launcher, la.target, la.speed, *la.origin, *la.orientation,
-                                1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0))
+                                1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0,
+                                1 if la.alt_solver else 0))
     return b"".join(out)
 
 

@@ -444,7 +444,7 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
         end_pos = end_pos.with_z(end_pos.z + height * (s(PROJ_HEIGHT_ARC) if launch.arc else s(PROJ_HEIGHT)))
         target_velocity = target_obj.cached_velocity if launch.tracking else zero_like(speed)
         velocity = calculate_spell_projectile_velocity(origin, end_pos, speed, target_velocity, wo.spell_type,
-                                                       False, runtime)
+                                                       launch.alt_solver, runtime)
         spell_projectile_setup(wo)
         spell_projectile_set_physics_state(wo, target, target_obj, velocity, origin)
         location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
@@ -452,7 +452,8 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
 
     end_pos = end_pos.with_z(end_pos.z + height / s(AIM_HEIGHT))
     lead = launch.lead_target or not isinstance(launcher, Player)
-    velocity, _ = get_projectile_velocity(origin, end_pos, speed, target_obj.cached_velocity, True, lead, False, runtime)
+    velocity, _ = get_projectile_velocity(origin, end_pos, speed, target_obj.cached_velocity, True, lead, launch.alt_solver,
+                                          runtime)
     w, x, y, z = launch.orientation  # written (w, x, y, z), as a scene's frames are
     orientation = mode.quat(x, y, z, w)
     return launch_projectile(wo, launcher, launcher_obj, target, target_obj, origin, orientation, landblock,

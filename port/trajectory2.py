@@ -20,9 +20,15 @@ from .vec import normalize_check_small, zero_like
 FLOAT_MAX_VALUE = D(3.4028234663852886e38)  # float.MaxValue, widened to double where ACE stores it
 
 
+# Math.Sqrt of a negative number: x64's SQRTSD answers the default NaN (the "indefinite"), whose sign bit is set
+# (0xFFF8000000000000), on both runtimes; it carries through the roots into the velocity, whose NaN sign an outcome
+# reads (Python's math.nan has the sign bit clear)
+SQRT_NAN = D(-math.nan)
+
+
 def _sqrt(x):
     x = float(x)
-    return D(math.sqrt(x)) if x >= 0.0 else D(math.nan)
+    return D(math.sqrt(x)) if x >= 0.0 else SQRT_NAN
 
 
 def _min(a, b, runtime: Runtime):

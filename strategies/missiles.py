@@ -56,6 +56,7 @@ CARRIED_ID = 0x80000020  # a child the projectile holds (CARRIED)
 CARRIED = st.sampled_from(("none", "none", "none", "none", "none", "position", "position", "by-part"))
 CARRY_OFFSETS = st.sampled_from((0.0, 0.0, -0.3, 0.2, -1.0))
 CARRIED_RADII = st.sampled_from((0.05, 0.1, 0.2))
+CRATE = 0x80000021  # report / run_into: a GenericObject the projectile meets (not CARRIED_ID: both may be drawn)
 WALL = 0x70000001
 DOOR = 0x70000002
 POST = 0x70000003
@@ -96,6 +97,32 @@ PLAYER_PKS = st.sampled_from(tuple(int(s) for s in (PlayerKillerStatus.NPK, Play
 PK_NAMES = {int(s): s.name.lower() for s in PlayerKillerStatus}
 DTS = st.sampled_from((1 / 30, 1 / 30, 1 / 30, 1 / 60, 1 / 10))
 
+# The launch arms (draw_launch_scene): what no missile scene above says, each a change to one draw of
+# draw_missile_scene (which draws as before without an arm)
+ARMS = st.sampled_from(("alt_solver", "alt_solver", "out_of_range", "overhead", "overhead", "fast_target", "fast_target",
+                        "tiny_target", "report", "report", "report", "timeout"))
+ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target", "creature_at_wall", "wall", "bystander"),
+                "out_of_range": ("creature_at_wall", "moving_target", "wall"), "overhead": ("creature_at_wall", "moving_target"),
+                "fast_target": ("moving_target",), "tiny_target": ("moving_target",), "timeout": ("moving_target",),
+                "across": ("moving_target",), "run_into": ("moving_target",),
+                "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall")}
+SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
+FAR = dr.f32(10.0, 25.0)
+FAST_SPEEDS = dr.OneOf(st.sampled_from((12.0, 20.0)), dr.f32(8.0, 30.0))  # outrunning a spell of 3-10 m/s
+SLOW_SPELL_SPEEDS = dr.f32(3.0, 10.0)
+TINY_SPEEDS = dr.OneOf(st.sampled_from((0.0001,)), dr.f32(0.00001, 0.001))  # Trajectory2's normalize_check_small
+# overhead: the projectile straight above its target (a mover's Setup has Height 0: the aim point is its origin), at
+# that very point (no offset: the solvers' first test), or under the ground beneath it (straight up)
+OVERHEAD = st.sampled_from(("above", "above", "at", "below"))
+DROPS = dr.f32(0.05, 6.0)
+SINKS = dr.f32(0.1, 1.0)
+CRAWL_SPEEDS = dr.f32(0.2, 0.99)  # under 1 m/s: Trajectory2's quadratic (a unit target direction) turns positive
+TIMEOUT_SPEEDS = dr.f32(0.5, 4.0)  # 30 s carries it at most 120 m: it stays on the landblock
+REPORT_ROLES = st.sampled_from(("mover_is_target", "mover_is_target", "mover_crosses"))
+PUSHES = dr.f32(1.0, 4.0)  # report: a crate (weenie object) pushed into the target
+RUN_SPEEDS = dr.f32(6.0, 12.0)  # run_into: the player runs at the arrow about as fast as it flies, so his own
+RUN_ARROW_SPEEDS = dr.f32(6.0, 9.0)  # step meets it about one time in two
+
 
 def _carrying(draw, others: tuple, projectile: OtherMover, carried: str) -> tuple:
     """The projectile with a holding location (past its one part: in its Position, or by the part) and a small
@@ -130,27 +157,28 @@ def _slab(ident: int, lb: int, x: float, y: float, z: float, ux: float, uy: floa
                         box(width, thickness, height), state)
 
 
-def _monster(ident: int, lb: int, x: float, y: float, z: float) -> OtherMover:
+def _monster(ident: int, lb: int, x: float, y: float, z: float, state: int = EDGE_SLIDE) -> OtherMover:
     x, y = to_f32(x), to_f32(y)
     return OtherMover(ident, "monster", BODY, Position(_cell(lb, x, y), Frame((x, y, to_f32(z)))), 0.4, 0.4,
-                      state=EDGE_SLIDE, transient_state=WALKING)
+                      state=state, transient_state=WALKING)
 
 
-def _player(ident: int, body, lb: int, x: float, y: float, z: float, ux: float, uy: float, pks: int) -> OtherMover:
+def _player(ident: int, body, lb: int, x: float, y: float, z: float, ux: float, uy: float, pks: int,
+            state: int = EDGE_SLIDE) -> OtherMover:
     x, y = to_f32(x), to_f32(y)
     return OtherMover(ident, "player", body, Position(_cell(lb, x, y), Frame((x, y, to_f32(z)), _heading(ux, uy))), 0.4, 0.4,
-                      state=EDGE_SLIDE, transient_state=WALKING, player_killer_status=pks)
+                      state=state, transient_state=WALKING, player_killer_status=pks)
 
 
 def _crossing(draw, x0: float, y0: float, ux: float, uy: float, d: float, dt: float, n: int, launch_tick: int,
-              speed: float):
+              speed: float, arm: str | None = None):
     """A bystander's walk: it reaches the line of flight at a point 1.8 m or more from the launcher (at least 1.2 m
     short of the target) when the projectile passes it, give or take a lag (the projectile's first step is the tick
     after its launch; gravity and the target's lead ignored). Across the line it walks as far again, then stops;
     along it (toward the launcher, or away ahead of the projectile) it walks slowly from no nearer the target or the
     launcher than a body's width, and stops 0.3 s after. Returns its velocity per tick and (way, where it starts, its
     heading)."""
-    way = draw(CROSSINGS)
+    way = draw(CROSSINGS) if arm != "report" else draw(st.sampled_from(("toward", "toward", "across")))
     v = float(dr.take(draw, WALK_SPEEDS))
     dc = 1.8 + max(d - 3.6, 0.0) * float(dr.take(draw, CROSS_AT))
     t_meet = max(dt, (launch_tick + 1) * dt + max(dc - 0.8, 0.0) / speed + float(dr.take(draw, MEET_LAGS)))
@@ -166,30 +194,64 @@ def _crossing(draw, x0: float, y0: float, ux: float, uy: float, d: float, dt: fl
     return walk, (way, start, (wx, wy))
 
 
-def draw_missile_scene(draw) -> Scene:
+def draw_launch_scene(draw) -> Scene:
+    """A missile scene with one launch arm (ARMS): `alt_solver` (the server's trajectory_alt_solver: Trajectory2);
+    `out_of_range` (an arrow too slow to reach a target 10-25 m off: the solvers' no-solution arms); `overhead`
+    (the projectile spawned straight above its target, or at its feet: no ground distance, the solvers'
+    degenerate arms and a misfire's NaN velocity); `fast_target` (a target of 8-30 m/s a slow spell or arrow
+    cannot catch, or meets head on: the lead solvers' no-root and two-root arms); `tiny_target` (a target
+    creeping at under 1 mm/s); `timeout` (a straight spell at 3-4.5 m/s that misses a target crossing and flies
+    on over the landblock for 31 s at 10 ticks a second: the missile timeout); `report` (the mover and the
+    monsters report collisions, PhysicsState.ReportCollisions as ACE's creatures do: the player's and a
+    creature's OnCollideObject). Any arm but timeout runs under trajectory_alt_solver one time in four.
+    One more arm, `across` (the player at a monster just over the landblock's north border: a launch both sides
+    refuse, ACE.Entity.Position.ToGlobal not being modelled), and `run_into` (a monster 3-6 m off shoots a 6-9 m/s arrow
+    at the player, who reports collisions and runs at it at 6-12 m/s: his own step meets the arrow aimed at him, the
+    player's OnCollideObject and the helper's hit) are drawn only by name: draw_missile_scene(draw, ARM)."""
+    arm = draw(ARMS)
+    return draw_missile_scene(draw, arm)
+
+
+def draw_missile_scene(draw, arm: str | None = None) -> Scene:
     lb = draw(BLOCKS)
     h = dr.take(draw, HEIGHTS)
     ground = 2.0 * h
     x0, y0 = float(dr.take(draw, SPOTS)), float(dr.take(draw, SPOTS))
     phi = math.radians(float(dr.take(draw, HEADINGS)))
+    if arm == "across":  # north from near the landblock's north edge at a monster over the border (ToGlobal: refused)
+        phi, y0 = 0.0, 186.0
+    if arm == "timeout":  # from near an edge, inward along an axis: 135 m of flight stays on the landblock
+        phi = math.radians(draw(st.sampled_from((0.0, 90.0, 180.0, 270.0))))
+        ux, uy = -math.sin(phi), math.cos(phi)
+        x0 = 12.0 if ux > 0.5 else 180.0 if ux < -0.5 else x0
+        y0 = 12.0 if uy > 0.5 else 180.0 if uy < -0.5 else y0
     ux, uy = -math.sin(phi), math.cos(phi)
-    d = float(dr.take(draw, DISTANCES))
-    d = min(d, max(3.0, min((x0 - 8.0) / -ux if ux < -1e-6 else 1e9, (184.0 - x0) / ux if ux > 1e-6 else 1e9,
+    d = float(dr.take(draw, FAR if arm == "out_of_range" else DISTANCES))
+    d = 8.0 if arm == "across" else min(6.0 if arm == "run_into" else d, max(3.0, min((x0 - 8.0) / -ux if ux < -1e-6 else 1e9, (184.0 - x0) / ux if ux > 1e-6 else 1e9,
                             (y0 - 8.0) / -uy if uy < -1e-6 else 1e9, (184.0 - y0) / uy if uy > 1e-6 else 1e9) - 2.0))
     tx, ty = x0 + ux * d, y0 + uy * d
-    policy = draw(POLICIES)
+    policy = draw(POLICIES) if arm not in ARM_POLICIES else draw(st.sampled_from(ARM_POLICIES[arm]))
     player_launches = draw(st.sampled_from((True, True, True, False)))
-    arrow = draw(st.sampled_from((True, True, False)))
+    arrow = draw(st.sampled_from((True, True, False))) if arm not in ("out_of_range", "timeout") else arm == "out_of_range"
     n = dr.take(draw, TICK_COUNTS)
     dt = draw(DTS)
+    if arm == "across":
+        player_launches = True
+    if arm == "run_into":  # a monster shoots a slow arrow at the player, who runs at it
+        player_launches, arrow = False, True
+    if arm == "timeout":  # the player launches at a monster hovering 2-5 m up (no Gravity), which moves out of the way
+        n, dt = 310, 0.1
+        player_launches = True
     launch_tick = min(dr.take(draw, LAUNCH_TICKS), n - 1)
 
+    body = EDGE_SLIDE | int(PhysicsState.ReportCollisions) if arm in ("report", "run_into") else EDGE_SLIDE
+    walk_for = 1.0 if arm in ("fast_target", "timeout") else math.inf  # seconds a fast target walks: 30 m at most
     objects, monsters = [], []
     mover_inputs = [{} for _ in range(n)]
     monster_velocity = None
     crosser = None  # bystander: the player who crosses the line of flight
     if policy == "bystander":
-        role = draw(ROLES)
+        role = draw(ROLES) if arm != "report" else draw(REPORT_ROLES)
         crosser = PLAYER if role.startswith("mover") else OTHER
         if role == "mover_crosses":
             launcher = draw(BY_LAUNCHERS)
@@ -203,16 +265,16 @@ def draw_missile_scene(draw) -> Scene:
         mover_pks, other_pks = draw(PLAYER_PKS), draw(PLAYER_PKS)
         for who, (wx, wy) in ((launcher, (x0, y0)), (target, (tx, ty))):  # those who stand
             if who in (CASTER, MONSTER):
-                monsters.append(_monster(who, lb, wx, wy, ground))
+                monsters.append(_monster(who, lb, wx, wy, ground, body))
             elif who == OTHER and crosser != OTHER:
-                monsters.append(_player(OTHER, BODY, lb, wx, wy, ground, ux, uy, other_pks))
+                monsters.append(_player(OTHER, BODY, lb, wx, wy, ground, ux, uy, other_pks, body))
     elif player_launches:
         launcher_at, launcher = (x0, y0), PLAYER
         mover_at = (x0, y0)
     else:
         launcher_at, launcher = (x0, y0), CASTER
         mover_at = (tx, ty)
-        monsters.append(_monster(CASTER, lb, x0, y0, ground))
+        monsters.append(_monster(CASTER, lb, x0, y0, ground, body))
     if crosser is None:
         target = MONSTER
     if policy == "wall":
@@ -246,41 +308,62 @@ def draw_missile_scene(draw) -> Scene:
         objects.append(StaticObject(POST, Position(_cell(lb, px, py), Frame((px, py, to_f32(ground)))),
                                     CylSphereShape((0.0, 0.0, 0.0), to_f32(r), 4.0), int(PhysicsState.Static)))
     elif policy == "moving_target":
-        way = draw(WAYS)
-        speed = float(dr.take(draw, WALK_SPEEDS))
+        way = draw(WAYS) if arm not in ("timeout", "run_into") else "across" if arm == "timeout" else "toward"
+        speeds = {"fast_target": FAST_SPEEDS, "tiny_target": TINY_SPEEDS, "timeout": FAST_SPEEDS,
+                  "run_into": RUN_SPEEDS}.get(arm, WALK_SPEEDS)
+        speed = float(dr.take(draw, speeds))
         vx, vy = {"toward": (-ux, -uy), "away": (ux, uy), "across": (uy, -ux)}[way]
         monster_velocity = (to_f32(vx * speed), to_f32(vy * speed), 0.0)
     if target == MONSTER and policy != "bystander":
-        if player_launches:
-            monsters.append(_monster(MONSTER, lb, *monster_at, ground))
+        if player_launches and arm == "timeout":
+            hover = to_f32(ground + float(dr.take(draw, dr.f32(2.0, 5.0))))
+            monsters.append(replace(_monster(MONSTER, lb, *monster_at, hover, body), state=int(PhysicsState.EdgeSlide),
+                                    transient_state=int(TransientState.Active)))
+        elif player_launches and arm == "across":
+            monsters.append(_monster(MONSTER, lb + 1, monster_at[0], monster_at[1] - 192.0, ground, body))
+        elif player_launches:
+            monsters.append(_monster(MONSTER, lb, *monster_at, ground, body))
         else:
             target = PLAYER  # a monster launches at the player
             if monster_velocity is not None:
                 for k in range(n):
-                    mover_inputs[k]["velocity"] = monster_velocity
+                    mover_inputs[k]["velocity"] = monster_velocity if k * dt < walk_for else (0.0, 0.0, 0.0)
                 monster_velocity = None
 
     eye = float(dr.take(draw, EYES))
     lx, ly = launcher_at
     origin = (to_f32(lx + ux * 0.8), to_f32(ly + uy * 0.8), to_f32(ground + eye))
+    if arm == "overhead":
+        where = draw(OVERHEAD)
+        dz = {"above": lambda: float(dr.take(draw, DROPS)), "at": lambda: 0.0, "below": lambda: -float(dr.take(draw, SINKS))}[where]()
+        origin = (to_f32(tx), to_f32(ty), to_f32(ground + dz))
+    if arm == "timeout":
+        launch_tick = 0
+    alt_solver = arm not in (None, "timeout") and (arm == "alt_solver" or draw(st.sampled_from((False, False, False, True))))
     if arrow:
         radius = float(dr.take(draw, ARROW_RADII))
-        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, ARROW_SPEEDS)), origin, _heading(ux, uy),
-                        lead_target=draw(dr.BOOLEANS))
+        speeds = SLOW_ARROW_SPEEDS if arm == "out_of_range" else RUN_ARROW_SPEEDS if arm == "run_into" else ARROW_SPEEDS
+        if arm == "alt_solver" and draw(st.sampled_from((False, False, True))):
+            speeds = CRAWL_SPEEDS
+        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, speeds)), origin, _heading(ux, uy),
+                        lead_target=draw(dr.BOOLEANS), alt_solver=alt_solver)
         projectile = OtherMover(PROJECTILE, "ammunition", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
                                 state=int(PhysicsState.Gravity), transient_state=0, launch=launch)
     else:
         radius = float(dr.take(draw, SPELL_RADII))
-        arc = draw(st.sampled_from((False, False, True)))
-        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, SPELL_SPEEDS)), origin, arc=arc,
-                        tracking=draw(dr.BOOLEANS))
+        arc = draw(st.sampled_from((False, False, True))) if arm != "timeout" else False
+        speeds = {"fast_target": SLOW_SPELL_SPEEDS, "timeout": TIMEOUT_SPEEDS}.get(arm, SPELL_SPEEDS)
+        if arm == "alt_solver" and draw(st.sampled_from((False, False, True))):
+            speeds = CRAWL_SPEEDS
+        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, speeds)), origin, arc=arc,
+                        tracking=draw(dr.BOOLEANS) if arm != "timeout" else False, alt_solver=alt_solver)
         projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
                                 state=0, transient_state=0, launch=launch)
     walkers = {}  # id -> velocity, per tick
     if crosser is not None:
-        walk, walker = _crossing(draw, x0, y0, ux, uy, d, dt, n, launch_tick, float(launch.speed))
+        walk, walker = _crossing(draw, x0, y0, ux, uy, d, dt, n, launch_tick, float(launch.speed), arm)
         way = walker[0]
         if crosser == PLAYER:
             mover_at = walker[1]
@@ -288,7 +371,18 @@ def draw_missile_scene(draw) -> Scene:
                 mover_inputs[k]["velocity"] = walk[k]
         else:
             walkers[OTHER] = walk
-            monsters.append(_player(OTHER, TALL, lb, *walker[1], ground, *walker[2], other_pks))
+            monsters.append(_player(OTHER, TALL, lb, *walker[1], ground, *walker[2], other_pks, body))
+    if arm == "report" and draw(dr.BOOLEANS):  # a crate (a GenericObject) pushed into the target from beside it
+        side = 1.0 if draw(dr.BOOLEANS) else -1.0
+        cx, cy = tx + side * uy * 1.5, ty - side * ux * 1.5
+        push = float(dr.take(draw, PUSHES))
+        walkers[CRATE] = [(to_f32(-side * uy * push), to_f32(side * ux * push), 0.0)] * n
+        monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
+                                   0.4, 0.4, state=body, transient_state=WALKING))
+    elif arm == "run_into" and draw(dr.BOOLEANS):  # a crate standing half way: the arrow hits what it is not aimed at
+        cx, cy = (x0 + tx) / 2, (y0 + ty) / 2
+        monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
+                                   0.4, 0.4, state=body, transient_state=WALKING))
     others = tuple(monsters) + (projectile,)
     if monsters and draw(dr.BOOLEANS):  # the projectile entered first: stepped before the monsters
         others = (projectile,) + tuple(monsters)
@@ -301,19 +395,24 @@ def draw_missile_scene(draw) -> Scene:
     facing = walker[2] if crosser == PLAYER else (ux, uy)
     mover = Mover(spheres=TALL if crosser == PLAYER else BODY,
                   begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(*facing))),
-                  end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
+                  end=None, step_up_height=0.4, step_down_height=0.4, state=body, transient_state=WALKING,
                   contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"),
                   player_killer_status=mover_pks if crosser is not None else int(PlayerKillerStatus.NPK))
     steps = []
     for k in range(n):
-        theirs = (OtherInputs(MONSTER, velocity=monster_velocity),) if monster_velocity is not None else ()
+        theirs = ((OtherInputs(MONSTER, velocity=monster_velocity if k * dt < walk_for else (0.0, 0.0, 0.0)),)
+                  if monster_velocity is not None else ())
         theirs += tuple(OtherInputs(i, velocity=v[k]) for i, v in walkers.items())
         steps.append(TickStep(dt, others=theirs, **mover_inputs[k]))
-    land = Landblock(lb << 16 | 0xFFFF, (h,) * 81, (0,) * 81)
+    land = (Landblock(lb << 16 | 0xFFFF, (h,) * 81, (0,) * 81),)
+    if arm == "across":
+        land += (Landblock((lb + 1) << 16 | 0xFFFF, (h,) * 81, (0,) * 81),)
     name = f"missiles:{policy}:{'arrow' if arrow else 'spell'}:{'player' if player_launches else 'monster'}"
+    if arm is not None:
+        name = f"missiles:{arm}:{name[9:]}" + (":alt_solver" if launch.alt_solver and arm != "alt_solver" else "")
     if crosser is not None:  # who crosses (or is the target), how, and the players' PlayerKillerStatus
         name += f":{role}:{way}:{PK_NAMES[mover_pks]}:{PK_NAMES[other_pks]}"
     if carried != "none":
         name += f":carries-{carried}"
-    return validate_scene(Scene((land,), mover, tuple(objects), engine_mode="server", name=name,
+    return validate_scene(Scene(land, mover, tuple(objects), engine_mode="server", name=name,
                                 ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))

@@ -131,6 +131,6 @@ def test_the_scene_schema_names_every_field_of_a_projectiles_launch(generated):
     assert "launch" in other["properties"] and "launch" not in other.get("required", [])
     launch = other["properties"]["launch"]
     assert set(launch["properties"]) == {"tick", "launcher", "target", "speed", "origin", "orientation", "lead_target",
-                                         "arc", "tracking"}
+                                         "arc", "tracking", "alt_solver"}
     assert {"ammunition", "spell_projectile"} <= set(other["properties"]["weenie"].get("enum", ())) or \
         other["properties"]["weenie"].get("type") == "string"

@@ -133,7 +133,7 @@ namespace Acconform.Oracle
             public uint ParentId;
             public int ParentLocation, Placement;
             // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
-            public bool HasLaunch, LeadTarget, Arc, Tracking;
+            public bool HasLaunch, LeadTarget, Arc, Tracking, AltSolver;
             public int LaunchTick;
             public uint Launcher, Target;
             public float Speed;
@@ -569,7 +569,7 @@ namespace Acconform.Oracle
             {
                 endPos.Z += height * (o.Arc ? 5.0f / 6.0f : 2.0f / 3.0f);  // ProjHeightArc, ProjHeight
                 var targetVelocity = o.Tracking ? targetObj.CachedVelocity : Vector3.Zero;
-                var velocity = CalculateSpellProjectileVelocity(origin, endPos, o.Speed, targetVelocity, o.Arc, false);
+                var velocity = CalculateSpellProjectileVelocity(origin, endPos, o.Speed, targetVelocity, o.Arc, o.AltSolver);
                 SpellProjectileSetup(sp);
                 SpellProjectileSetPhysicsState(sp, target, targetObj, velocity, origin, o.Arc);
                 LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
@@ -578,7 +578,7 @@ namespace Acconform.Oracle
             }
             endPos.Z += height / 2.0f;  // target.Height / GetAimHeight(target)
             var lead = o.LeadTarget || !(launcher is ACE.Server.WorldObjects.Player);
-            var v = GetProjectileVelocity(origin, endPos, o.Speed, targetObj.CachedVelocity, true, lead, false, out _);
+            var v = GetProjectileVelocity(origin, endPos, o.Speed, targetObj.CachedVelocity, true, lead, o.AltSolver, out _);
             LaunchProjectile(wo, launcher, launcherObj, target, targetObj, origin, o.Orientation, landblock,
                              launcherObj.Position.ObjCellID, v);
         }
@@ -2026,7 +2026,7 @@ namespace Acconform.Oracle
 
         /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
         /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position, then byte 0 or a projectile's
-        /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking). They are
+        /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver). They are
         /// made and enter the world after the mover's placement (EnterOthers); a projectile enters at its launch.</summary>
         static void ReadOthers(BinaryReader r)
         {
@@ -2059,6 +2059,7 @@ namespace Acconform.Oracle
                     o.LeadTarget = r.ReadByte() != 0;
                     o.Arc = r.ReadByte() != 0;
                     o.Tracking = r.ReadByte() != 0;
+                    o.AltSolver = r.ReadByte() != 0;  // the server property trajectory_alt_solver
                 }
                 sceneOthers.Add(o);
             }

@@ -196,3 +196,38 @@ def test_live_ace_answers_each_missile_scene_as_recorded_and_as_the_port(live, n
     ace = live.run(SCENES[name])
     assert compare(ace, recorded_outcomes(DATA, live.location.runtime)[name], "exact") == [], name
     assert compare(run_scene(SCENES[name], runtime=live.location.runtime), ace, "exact") == [], name
+
+
+def _alt_solver(scene):
+    """The scene with its projectile's launch under the server's trajectory_alt_solver."""
+    from dataclasses import replace
+
+    return replace(scene, others=tuple(replace(o, launch=replace(o.launch, alt_solver=True)) if o.launch is not None else o
+                                       for o in scene.others))
+
+
+ALT_SOLVER_SCENES = ("monster_runs_into_an_arrow_at_it", "arrow_into_a_wall", "arc_spell_at_a_monster")
+
+
+@pytest.mark.parametrize("name", ALT_SOLVER_SCENES)
+def test_a_launch_under_trajectory_alt_solver_takes_trajectory2s_velocity_and_needs_its_feature(name):
+    from acconform.port.run import run_scene
+
+    def velocity(out, ident):
+        return next(o for o in out.ticks[LAUNCH_TICK].others if o.id == ident).velocity
+
+    plain = SCENES[name]
+    alt = _alt_solver(plain)
+    ident = next(o.id for o in plain.others if o.launch is not None)
+    assert "missiles.alt_solver" in scene_features(alt) and "missiles.alt_solver" not in scene_features(plain)
+    assert Scene.from_json(alt.to_json()) == alt and pack_scene(alt) != pack_scene(plain)
+    assert velocity(run_scene(alt, runtime="coreclr"), ident) != velocity(run_scene(plain, runtime="coreclr"), ident)
+
+
+@pytest.mark.live_oracle
+@pytest.mark.parametrize("name", ALT_SOLVER_SCENES)
+def test_live_ace_answers_a_launch_under_trajectory_alt_solver_as_the_port(live, name):
+    from acconform.port.run import run_scene
+
+    scene = _alt_solver(SCENES[name])
+    assert compare(run_scene(scene, runtime=live.location.runtime), live.run(scene), "exact") == [], name

@@ -144,6 +144,16 @@ def test_alternate_solver_min_of_a_signed_zero_tie_differs_by_runtime():
     assert mono.z == np.inf and net10.z == -np.inf
 
 
+@pytest.mark.anchor("Trajectory2.cs:CalculateTrajectory")
+def test_alternate_solver_answers_the_negative_nan_of_a_negative_square_root_when_the_target_cannot_be_caught():
+    # a 0.5 m/s spell at a target 10 m off crossing the line: a = 1 - 0.25 > 0, b = 0, c = 100, so
+    # Math.Sqrt(b*b - 4ac) is x64's default NaN (sign bit set, ACE on .NET 10 recorded 0xFFC00000 in the
+    # velocity), which both roots and the velocity carry
+    for runtime in (MONO, NET10):
+        r = trajectory2.calculate_trajectory(v(0, 0, 0), v(10, 0, 0), v(0, 1, 0), F(0.5), False, runtime)
+        assert all(int(np.float32(c).view(np.uint32)) == 0xFFC00000 for c in (r.x, r.y, r.z))
+
+
 @pytest.mark.anchor("Trajectory.cs:SolveCubic")
 def test_mono_cosine_is_the_x87s_and_differs_from_libm_near_its_zero():
     # the argument that SolveCubic's -t * Math.Cos(phi + pi/3) met in the differential: mono's answer

@@ -118,3 +118,47 @@ def test_the_missiles_kind_is_a_campaign_kind_the_port_runs_and_an_implementatio
     assert "missiles" not in impl.kinds
     impl.hello["features"].append("missiles")
     assert "missiles" in impl.kinds
+
+
+@pytest.fixture(scope="module")
+def launch_scenes():
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.missiles import draw_launch_scene
+
+    drawer = FastDrawer(st.composite(draw_launch_scene)(), 51 * 1000003)
+    with pinned_constants():
+        return [drawer.draw()[0] for _ in range(120)]
+
+
+def test_launch_arm_scenes_validate_and_draw_every_arm_and_the_alternate_solver(launch_scenes):
+    from acconform.scene import Scene
+
+    arms = collections.Counter(s.name.split(":")[1] for s in launch_scenes)
+    assert set(arms) == {"alt_solver", "out_of_range", "overhead", "fast_target", "tiny_target", "timeout", "report"}
+    for s in launch_scenes:
+        assert validate_scene(s) == s and Scene.from_json(s.to_json()) == s  # alt_solver survives the JSON form
+    alt = [_projectile(s).launch.alt_solver for s in launch_scenes]
+    assert any(alt) and not all(alt)
+    assert all(_projectile(s).launch.alt_solver for s in launch_scenes if s.name.split(":")[1] == "alt_solver")
+
+
+def test_a_timeout_scene_flies_a_spell_past_its_thirty_seconds_and_an_overhead_one_spawns_over_its_target(launch_scenes):
+    timeouts = [s for s in launch_scenes if s.name.split(":")[1] == "timeout"]
+    for s in timeouts:
+        la = _projectile(s).launch
+        assert sum(t.dt for t in s.ticks.steps) > 30.0 and not la.arc and not la.tracking and la.speed * 31 < 140
+    for s in (s for s in launch_scenes if s.name.split(":")[1] == "overhead"):
+        la = _projectile(s).launch
+        target = next(o for o in (s.mover, *s.others) if getattr(o, "id", 0x50000001) == la.target)
+        assert la.origin[:2] == target.begin.frame.origin[:2]
+
+
+def test_a_scene_without_alt_solver_writes_no_such_key_and_needs_no_new_feature(missile_scenes):
+    from acconform.protocol import scene_features
+
+    for s in missile_scenes[:20]:
+        la = _projectile(s).to_json()["launch"]
+        assert "alt_solver" not in la and "missiles.alt_solver" not in scene_features(s)

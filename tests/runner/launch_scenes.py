@@ -1,0 +1,57 @@
+"""Missile scenes with a launch arm (strategies/missiles.py draw_launch_scene: the trajectory_alt_solver, a
+target out of range, straight above or below, outrunning or creeping, a spell that times out, movers that report
+collisions), for `acconform record` (issue 41's shard ticks-0051).
+
+    python tests/runner/launch_scenes.py OUT_DIR [-n 600] [--seed 51] [--arms A,B] [--timeouts K] [--only ARM]
+
+Writes one scene file per drawn scene (strategies.fast_draw, as a campaign draws), `s<seed>-<i>.json`, keeping
+only the scenes of `--arms` when given and the first K of arm `timeout` (310 ticks each: a shard's replay time);
+`--only ARM` draws that arm alone (`across`, which draw_launch_scene never draws, is drawn so).
+The arms are no campaign kind: a draw added to the missiles kind would move every seeded sample the tests pin.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+
+def main(argv=None) -> int:
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.missiles import draw_launch_scene, draw_missile_scene
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out", type=Path)
+    ap.add_argument("-n", type=int, default=600)
+    ap.add_argument("--seed", type=int, default=51)
+    ap.add_argument("--arms", default=None, help="comma-separated arms to keep (default: every arm)")
+    ap.add_argument("--timeouts", type=int, default=None, help="keep at most this many timeout scenes")
+    ap.add_argument("--only", default=None, help="draw this arm alone (draw_missile_scene(draw, ARM))")
+    a = ap.parse_args(argv)
+    arms = None if a.arms is None else set(a.arms.split(","))
+    a.out.mkdir(parents=True, exist_ok=True)
+    draw = draw_launch_scene if a.only is None else (lambda d: draw_missile_scene(d, a.only))
+    drawer = FastDrawer(st.composite(draw)(), a.seed * 1000003)
+    kept = timeouts = 0
+    with pinned_constants():
+        for i in range(a.n):
+            scene = drawer.draw()[0]
+            arm = scene.name.split(":")[1]
+            if arms is not None and arm not in arms:
+                continue
+            if arm == "timeout":
+                if a.timeouts is not None and timeouts >= a.timeouts:
+                    continue
+                timeouts += 1
+            (a.out / f"s{a.seed}-{i:04d}.json").write_text(json.dumps(scene.to_json()))
+            kept += 1
+    print(f"{kept} of {a.n} scenes in {a.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
