@@ -626,7 +626,7 @@ def draw_managed_chase(draw, clock) -> Scene:
             row["turn_to_heading"] = MoveToInput(_params(draw))
         tags.append(f"{kind}@{at}")
     skills = draw_skills(draw)
-    name = f"movers:managed_chase:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
+    name = f"targets:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
     scene = _finish(draw, start, dts, tl, world.landblocks, mover, (target,), (), name, ethereal=False)
     m = scene.mover
     if no_table:

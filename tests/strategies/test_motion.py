@@ -112,16 +112,39 @@ def test_the_players_skills_are_drawn_default_or_at_the_values_where_aces_formul
 
 @pytest.fixture(scope="module")
 def chase_scenes():
-    """80 scenes of the movers policy managed_chase, drawn as tests/runner/managed_chase_scenes.py draws them."""
+    """80 scenes of the campaign kind targets (draw_managed_chase), as `acconform record --kinds targets` draws them."""
+    return list(sample_scenes(("targets",), 80, 49))
+
+
+def test_the_targets_kind_is_offered_only_to_an_implementation_with_motion_moving_others_and_targets():
+    from acconform.impl import BuiltinPort
+    from acconform.protocol import Implementation
+    from acconform.strategies import DEFAULT_KINDS, check_kinds
+
+    assert check_kinds("targets") == ("targets",) and "targets" in BuiltinPort.kinds
+    assert "targets" not in DEFAULT_KINDS  # drawn only when named, as missiles are
+    need = ["ticks", "mover.motion", "objects.moving", "objects.targets"]
+    for lacking in need:
+        impl = object.__new__(Implementation)
+        impl.hello = {"kinds": ["terrain"], "features": [f for f in need if f != lacking]}
+        assert "targets" not in impl.kinds, lacking
+    impl.hello = {"kinds": ["terrain"], "features": need}
+    assert "targets" in impl.kinds
+
+
+def test_a_targets_scene_needs_objects_targets_and_runs_in_either_engine_mode():
     from hypothesis import strategies as st
 
+    from acconform.protocol import scene_features
     from acconform.strategies.determinism import pinned_constants
     from acconform.strategies.fast_draw import FastDrawer
-    from acconform.strategies.movers import draw_movers_ticks
+    from acconform.strategies.scenes import scenes_of
 
     with pinned_constants():
-        drawer = FastDrawer(st.composite(lambda draw: draw_movers_ticks(draw, tk._clock, "managed_chase"))(), 49)
-        return [drawer.draw()[0] for _ in range(80)]
+        drawer = FastDrawer(scenes_of("targets"), 7)
+        drawn = [drawer.draw()[0] for _ in range(20)]
+    assert all("objects.targets" in scene_features(sc) for sc in drawn)
+    assert {sc.engine_mode for sc in drawn} == {"server", "client"}
 
 
 def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_other(chase_scenes):
