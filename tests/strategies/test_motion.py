@@ -154,6 +154,12 @@ def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_ot
         validate_scene(sc)
         assert len(sc.others) == 1 and "objects.targets" in scene_features(sc), sc.name
         first = sc.ticks.steps[0]
+        if first.turn_to_heading is not None:  # wrap_turn: a turn in place first, then the target from tick 1
+            assert ":wrap_turn" in sc.name and sc.mover.begin.frame.orientation == (1.0, 0.0, 0.0, 0.0), sc.name
+            first = sc.ticks.steps[1]
+            if first.move_to_object is None:
+                assert any(o.destroy for o in first.others), sc.name
+                continue
         target = first.stick_to if first.stick_to is not None else (first.move_to_object or first.turn_to_object).object
         assert target == sc.others[0].id, sc.name
 
@@ -161,7 +167,8 @@ def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_ot
 def test_chase_scenes_draw_every_goal_target_walk_and_a_destroyed_target(chase_scenes):
     names = " ".join(sc.name for sc in chase_scenes)
     for part in (":move_to_object:", ":sticky:", ":turn_to_object:", ":stick", ":no-table", "destroyed@", ":stand:",
-                 ":away", ":toward", ":across", ":stopgo", ":monster", ":charge", ":ranged", ":drawn"):
+                 ":away", ":toward", ":across", ":stopgo", ":monster", ":charge", ":ranged", ":drawn", ":backoff",
+                 ":wrap_turn"):
         assert part in names, part
     steps = [s for sc in chase_scenes for s in sc.ticks.steps]
     assert {s.stop for s in steps} >= {"stop_completely", "cancel_moveto", "move_to_manager_cancel"}
