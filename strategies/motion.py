@@ -483,6 +483,7 @@ CHASE_GOALS = st.sampled_from(("move_to_object", "move_to_object", "sticky", "st
 # wrap_turn: a TurnToHeading at tick 0 of a mover facing north (heading exactly 0) to a heading within EPSILON short
 # of 360, where BeginTurnToHeading's `heading_diff + EPSILON <= 360` fails by float32 rounding (359.9998 still
 # passes: 359.9998f + 0.0002f rounds to 360) and the turn ends at once; the target meanwhile has no voyeur
+STICK_AFTER_GONE = st.sampled_from((False, True))  # of a scene whose target is destroyed
 WRAP_HEADINGS = st.sampled_from((359.9999, 359.99985, 359.99982, 359.9998, 0.0001))
 TARGET_FATES = st.sampled_from(("stays", "stays", "stays", "destroyed"))  # the server destroys the target at a tick
 NO_TABLE = st.sampled_from((False, False, False, True))  # a stick_to scene's mover without a motion table (no MotionInterp)
@@ -517,9 +518,10 @@ def _chase_params(draw, goal: str, gap: float = 3.0) -> tuple[MovementParams, st
                            hold_key_to_apply=int(HoldKey.Run), fail_distance=15.0, speed=1.5)
     elif how == "ranged":
         p = MovementParams(flags=DEFAULT_MOVEMENT_FLAGS & ~int(MPF.CanWalk))
-    elif how == "backoff":
-        p = MovementParams(flags=DEFAULT_MOVEMENT_FLAGS | int(MPF.MoveAway), distance_to_object=0.6,
-                           min_distance=float(to_f32(gap + draw(BACKOFF_MARGINS))))
+    elif how == "backoff":  # MoveAway alone walks forward, away (heading 180); with MoveTowards it backs off
+        towards = int(MPF.MoveTowards) if draw(HALF) else 0
+        p = MovementParams(flags=(DEFAULT_MOVEMENT_FLAGS & ~int(MPF.MoveTowards)) | int(MPF.MoveAway) | towards,
+                           distance_to_object=0.6, min_distance=float(to_f32(gap + draw(BACKOFF_MARGINS))))
     else:
         flags = DEFAULT_MOVEMENT_FLAGS
         for _ in range(dr.take(draw, FLIP_COUNTS)):
@@ -647,6 +649,13 @@ def draw_managed_chase(draw, clock) -> Scene:
         else:
             row["turn_to_heading"] = MoveToInput(_params(draw))
         tags.append(f"{kind}@{at}")
+    if gone < n - 1 and draw(STICK_AFTER_GONE):
+        # a melee swing's stick_to at the target the server has destroyed (the swing's AttackTarget outlives it):
+        # stick_to_object makes the PositionManager, finds no object and returns, so the mover keeps a
+        # PositionManager without a StickyManager
+        at = draw(st.integers(gone + 1, n - 1))
+        tl.mover[at]["stick_to"] = target.id
+        tags.append(f"stick_gone@{at}")
     skills = draw_skills(draw)
     name = f"targets:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
     scene = _finish(draw, start, dts, tl, world.landblocks, mover, (target,), (), name, ethereal=False)

@@ -172,12 +172,14 @@ def test_chase_scenes_draw_every_goal_target_walk_and_a_destroyed_target(chase_s
         assert part in names, part
     steps = [s for sc in chase_scenes for s in sc.ticks.steps]
     assert {s.stop for s in steps} >= {"stop_completely", "cancel_moveto", "move_to_manager_cancel"}
-    # nothing is aimed at a target after the server destroyed it
+    # nothing is aimed at a target after the server destroyed it but a melee swing's stick_to (stick_gone)
+    assert "+stick_gone@" in names
     for sc in chase_scenes:
         gone = next((i for i, s in enumerate(sc.ticks.steps) if any(o.destroy for o in s.others)), None)
         if gone is not None:
-            assert all(s.stick_to is None and s.move_to_object is None and s.turn_to_object is None
-                       for s in sc.ticks.steps[gone:]), sc.name
+            assert all(s.move_to_object is None and s.turn_to_object is None for s in sc.ticks.steps[gone:]), sc.name
+            sticks = [i for i, s in enumerate(sc.ticks.steps) if i >= gone and s.stick_to is not None]
+            assert all(i > gone and f"+stick_gone@{i}:" in sc.name for i in sticks), sc.name
 
 
 def test_the_port_runs_chase_scenes_and_a_sticky_follower_moves(chase_scenes):
