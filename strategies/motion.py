@@ -521,7 +521,7 @@ def _chase_params(draw, goal: str, gap: float = 3.0) -> tuple[MovementParams, st
     elif how == "backoff":  # MoveAway alone walks forward, away (heading 180); with MoveTowards it backs off
         towards = int(MPF.MoveTowards) if draw(HALF) else 0
         p = MovementParams(flags=(DEFAULT_MOVEMENT_FLAGS & ~int(MPF.MoveTowards)) | int(MPF.MoveAway) | towards,
-                           distance_to_object=0.6, min_distance=float(to_f32(gap + draw(BACKOFF_MARGINS))))
+                           min_distance=float(to_f32(gap + draw(BACKOFF_MARGINS))))  # DistanceToObject 0.6f, the default
     else:
         flags = DEFAULT_MOVEMENT_FLAGS
         for _ in range(dr.take(draw, FLIP_COUNTS)):

@@ -132,6 +132,16 @@ def test_the_targets_kind_is_offered_only_to_an_implementation_with_motion_movin
     assert "targets" in impl.kinds
 
 
+def test_targets_scenes_hold_float32s_only_so_their_json_round_trip_is_exact(chase_scenes):
+    import json
+
+    from acconform.scene import Scene
+
+    for sc in chase_scenes:  # a double in a scene (0.6, not 0.6f) changes its text, and its key, on re-reading
+        text = json.dumps(sc.to_json())
+        assert json.dumps(Scene.from_json(json.loads(text)).to_json()) == text, sc.name
+
+
 def test_a_targets_scene_needs_objects_targets_and_runs_in_either_engine_mode():
     from hypothesis import strategies as st
 
