@@ -33,8 +33,8 @@ class BuiltinPort:
 
     name = "acconform port"
     hello = None
-    # every campaign kind, "motion" (motion tick scenes: the port has the motion layer), "doors", "movers" and "missiles"
-    kinds = ("terrain", "bsp", "obstacles", "indoor", "buildings", "ticks", "motion", "doors", "movers", "missiles")
+    # every campaign kind, "motion" (motion tick scenes: the port has the motion layer), "doors", "movers", "missiles" and "targets"
+    kinds = ("terrain", "bsp", "obstacles", "indoor", "buildings", "ticks", "motion", "doors", "movers", "missiles", "targets")
 
     def __init__(self, mode: str = "exact", runtime: str = "mono"):
         from .port.run import run_scene

@@ -57,7 +57,9 @@ from .scene import DEFAULT_SKILLS, PROJECTILE_WEENIES, WEENIE_CLASSES, ChildOf, 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
 # A campaign's kinds (`--kinds`, a corpus shard's): the worlds above, and "ticks", tick scenes over any
-# of those worlds, offered to an implementation that lists the world's kind and the feature `ticks`.
+# of those worlds, offered to an implementation that lists the world's kind and the feature `ticks`. The
+# campaign kinds of one tick policy (motion, doors, movers, missiles, targets: strategies.EXTRA_KINDS) are drawn
+# only when named; Implementation.kinds offers each by the features it needs.
 CAMPAIGN_KINDS: tuple[str, ...] = KINDS + ("ticks",)
 MODES: tuple[str, ...] = ("exact", "fast")
 
@@ -387,13 +389,14 @@ class Implementation:
     def kinds(self) -> tuple[str, ...]:
         """The campaign kinds it can run: its handshake's, "ticks" when it lists the feature, and "motion"
         (motion tick scenes) when it lists ticks and mover.motion, "missiles" when it lists ticks, objects.moving and
-        missiles."""
+        missiles, "targets" when it lists ticks, mover.motion, objects.moving and objects.targets."""
         features = self.hello["features"]
         return (tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in features else ())
                 + (("motion",) if "ticks" in features and "mover.motion" in features else ())
                 + (("doors",) if "ticks" in features and "doors" in features else ())
                 + (("movers",) if "ticks" in features and "objects.moving" in features else ())
-                + (("missiles",) if "ticks" in features and "objects.moving" in features and "missiles" in features else ()))
+                + (("missiles",) if "ticks" in features and "objects.moving" in features and "missiles" in features else ())
+                + (("targets",) if {"ticks", "mover.motion", "objects.moving", "objects.targets"} <= set(features) else ()))
 
     @property
     def runs_every_scene(self) -> bool:

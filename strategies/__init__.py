@@ -15,7 +15,9 @@ entered through the building's portal: doors barely wider than the mover, in and
 walls, porches, cellars, borders, a static in the doorway, placements inside -- strategies/buildings.py), "ticks"
 (any of those worlds with a timeline of ticks: falls, jumps, slides, sledding, presses, crossings,
 portals, quantum-exact clocks, threshold velocities, both drivers -- strategies/ticks.py), "motion",
-"doors" and "movers" (tick scenes of one ticks policy: strategies/motion.py, doors.py, movers.py), and
+"doors" and "movers" (tick scenes of one ticks policy: strategies/motion.py, doors.py, movers.py), "missiles"
+(a projectile launched at a tick: strategies/missiles.py), "targets" (a MoveTo, sticky follow, turn or stick_to
+at another mover: strategies/motion.py draw_managed_chase), and
 "ticks:<world>" (tick scenes over that world only, e.g. "ticks:buildings": through a house's door,
 off its porch, down its cellar, along its shell; recorded as "ticks"). DEFAULT_KINDS
 is what the port supports today; grow it as the port does. Every float in a drawn scene is an exact float32, so its JSON round trip is exact.
@@ -57,7 +59,12 @@ MISSILES_KIND = "missiles"
 # beside the mover -- head-on, side-on, at corners, chasing, exactly touching, jumping over); recorded as "ticks";
 # an implementation runs it when it lists "ticks" and the feature objects.moving
 MOVERS_KIND = "movers"
-EXTRA_KINDS: tuple[str, ...] = (MOTION_KIND, DOORS_KIND, MOVERS_KIND, MISSILES_KIND)  # tick scenes of one policy
+# "targets": tick scenes of the server's MoveToObject, sticky MoveToObject, TurnToObject or a melee swing's
+# stick_to at another mover that walks, stops or is destroyed (strategies/motion.py draw_managed_chase: the
+# managers, MoveToManager, StickyManager, TargetManager's voyeurs); recorded as "ticks"; an implementation runs
+# it when it lists "ticks" and the features mover.motion, objects.moving and objects.targets
+TARGETS_KIND = "targets"
+EXTRA_KINDS: tuple[str, ...] = (MOTION_KIND, DOORS_KIND, MOVERS_KIND, MISSILES_KIND, TARGETS_KIND)  # tick scenes of one policy
 
 
 def kind_supported(kind: str, supported) -> bool:

@@ -479,14 +479,23 @@ TARGET_WEENIES = st.sampled_from(("player", "player", "monster", "creature"))
 TARGET_GAPS = dr.OneOf(st.sampled_from((3.0, 1.0, 6.0, 0.5, 12.0, 20.0)), dr.f32(0.2, 16.0))
 TARGET_MOVE_SPEEDS = dr.OneOf(st.sampled_from((1.0, 2.5, 4.0, 0.5, 6.0)), dr.f32(0.2, 7.0))
 CHASE_GOALS = st.sampled_from(("move_to_object", "move_to_object", "sticky", "sticky", "sticky", "turn_to_object",
-                               "stick", "stick"))
+                               "stick", "stick", "wrap_turn"))
+# wrap_turn: a TurnToHeading at tick 0 of a mover facing north (heading exactly 0) to a heading within EPSILON short
+# of 360, where BeginTurnToHeading's `heading_diff + EPSILON <= 360` fails by float32 rounding (359.9998 still
+# passes: 359.9998f + 0.0002f rounds to 360) and the turn ends at once; the target meanwhile has no voyeur
+STICK_AFTER_GONE = st.sampled_from((False, True))  # of a scene whose target is destroyed
+WRAP_HEADINGS = st.sampled_from((359.9999, 359.99985, 359.99982, 359.9998, 0.0001))
 TARGET_FATES = st.sampled_from(("stays", "stays", "stays", "destroyed"))  # the server destroys the target at a tick
 NO_TABLE = st.sampled_from((False, False, False, True))  # a stick_to scene's mover without a motion table (no MotionInterp)
 # the MovementParameters the server's callers build (ACE 7b47913): Monster_Navigation.GetMovementParameters (CanWalk
 # off; a melee monster adds FailWalk, UseFinalHeading, Sticky and MoveAway; a ranged one turns with the rest),
 # Player_Move.GetChargeParameters (the melee charge: CanCharge too, HoldKey Run, FailDistance 15, Speed 1.5),
 # Monster_Navigation's MoveTo home (DistanceToObject 0.6, a DesiredHeading), or drawn flags (each flag flipped)
-CHASE_PARAMS = st.sampled_from(("monster", "monster", "charge", "charge", "ranged", "drawn", "drawn", "drawn"))
+# or backoff: MoveAway with a MinDistance past the target's gap, so BeginMoveForward walks away from it (the
+# desired heading 180 plus the heading to the target wraps past 360 in HandleMoveToPosition when that heading is
+# 180 or more)
+CHASE_PARAMS = st.sampled_from(("monster", "monster", "charge", "charge", "ranged", "drawn", "drawn", "drawn", "backoff"))
+BACKOFF_MARGINS = st.sampled_from((2.0, 5.0, 0.5))
 FLIP_COUNTS = dr.ints(0, 3)
 FLAG_FLIPS = (st.sampled_from((MPF.CanWalk, MPF.CanRun, MPF.CanSidestep, MPF.CanWalkBackwards, MPF.CanCharge,
                                        MPF.FailWalk, MPF.UseFinalHeading, MPF.MoveAway, MPF.MoveTowards, MPF.UseSpheres,
@@ -499,7 +508,7 @@ CHASE_LATER_KINDS = st.sampled_from(("stop", "stop", "again", "turn_to_object", 
                                      "turn_to_heading", "stick"))
 
 
-def _chase_params(draw, goal: str) -> tuple[MovementParams, str]:
+def _chase_params(draw, goal: str, gap: float = 3.0) -> tuple[MovementParams, str]:
     how = draw(CHASE_PARAMS)
     melee = int(MPF.FailWalk | MPF.UseFinalHeading | MPF.Sticky | MPF.MoveAway)
     if how == "monster":
@@ -509,6 +518,10 @@ def _chase_params(draw, goal: str) -> tuple[MovementParams, str]:
                            hold_key_to_apply=int(HoldKey.Run), fail_distance=15.0, speed=1.5)
     elif how == "ranged":
         p = MovementParams(flags=DEFAULT_MOVEMENT_FLAGS & ~int(MPF.CanWalk))
+    elif how == "backoff":  # MoveAway alone walks forward, away (heading 180); with MoveTowards it backs off
+        towards = int(MPF.MoveTowards) if draw(HALF) else 0
+        p = MovementParams(flags=(DEFAULT_MOVEMENT_FLAGS & ~int(MPF.MoveTowards)) | int(MPF.MoveAway) | towards,
+                           min_distance=float(to_f32(gap + draw(BACKOFF_MARGINS))))  # DistanceToObject 0.6f, the default
     else:
         flags = DEFAULT_MOVEMENT_FLAGS
         for _ in range(dr.take(draw, FLIP_COUNTS)):
@@ -579,7 +592,12 @@ def draw_managed_chase(draw, clock) -> Scene:
     start, dts, clabel = clock(draw, n)
     tl, ids = _Timeline(dts), _Ids()
     table, tlabel = draw_motion_table(draw)
+    goal = draw(CHASE_GOALS)
+    if goal == "wrap_turn" and n < 2:
+        goal = "move_to_object"  # the target is aimed at from tick 1
     facing = math.degrees(math.atan2(-ux, uy)) + float(draw(st.sampled_from((0.0, 0.0, 90.0, 180.0, -45.0))))
+    if goal == "wrap_turn":
+        facing = 0.0  # _yaw(0) is the identity: get_heading answers exactly 0
     mover = _mover(draw, _spheres(draw), world.position(mx, my, _yaw(facing)), world.z, _pks(draw, "player"))
     gap = float(dr.take(draw, TARGET_GAPS))
     weenie = draw(TARGET_WEENIES)
@@ -593,14 +611,20 @@ def draw_managed_chase(draw, clock) -> Scene:
         for i in range(gone + 1, n):
             rows[i].clear()
         moves += f":destroyed@{gone}"
-    goal = draw(CHASE_GOALS)
     first = tl.mover[0]
     no_table = goal == "stick" and draw(NO_TABLE)
     if goal == "stick":  # a melee swing's stick_to_object (Monster_Melee / Player_Melee), the mover beside the target
         first["stick_to"] = target.id
         tags = ["stick" + (":no-table" if no_table else "")]
+    elif goal == "wrap_turn":
+        heading = draw(WRAP_HEADINGS)
+        first["turn_to_heading"] = MoveToInput(_params(draw, heading=float(to_f32(heading))))
+        tags = [f"wrap_turn{heading:g}"]
+        if gone > 1:  # then a MoveToObject at the target (a target destroyed at tick 1 needs objects.targets already)
+            tl.mover[1]["move_to_object"] = ObjectMoveInput(target.id, _chase_params(draw, "move_to_object", gap)[0])
+            tags.append("again@1")
     else:
-        params, how = _chase_params(draw, goal)
+        params, how = _chase_params(draw, goal, gap)
         first["turn_to_object" if goal == "turn_to_object" else "move_to_object"] = ObjectMoveInput(target.id, params)
         tags = [f"{goal}:{how}"]
     for _ in range(min(dr.take(draw, CHASE_LATER), n - 1)):
@@ -615,7 +639,7 @@ def draw_managed_chase(draw, clock) -> Scene:
             kind = draw(st.sampled_from(STOPS))
             row["stop"] = kind
         elif kind in ("again", "sticky"):
-            row["move_to_object"] = ObjectMoveInput(target.id, _chase_params(draw, "sticky" if kind == "sticky" else "move_to_object")[0])
+            row["move_to_object"] = ObjectMoveInput(target.id, _chase_params(draw, "sticky" if kind == "sticky" else "move_to_object", gap)[0])
         elif kind == "turn_to_object":
             row["turn_to_object"] = ObjectMoveInput(target.id, _chase_params(draw, kind)[0])
         elif kind == "do_motion":
@@ -625,8 +649,15 @@ def draw_managed_chase(draw, clock) -> Scene:
         else:
             row["turn_to_heading"] = MoveToInput(_params(draw))
         tags.append(f"{kind}@{at}")
+    if gone < n - 1 and draw(STICK_AFTER_GONE):
+        # a melee swing's stick_to at the target the server has destroyed (the swing's AttackTarget outlives it):
+        # stick_to_object makes the PositionManager, finds no object and returns, so the mover keeps a
+        # PositionManager without a StickyManager
+        at = draw(st.integers(gone + 1, n - 1))
+        tl.mover[at]["stick_to"] = target.id
+        tags.append(f"stick_gone@{at}")
     skills = draw_skills(draw)
-    name = f"movers:managed_chase:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
+    name = f"targets:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
     scene = _finish(draw, start, dts, tl, world.landblocks, mover, (target,), (), name, ethereal=False)
     m = scene.mover
     if no_table:

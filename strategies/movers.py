@@ -399,10 +399,6 @@ def draw_movers_ticks(draw, clock, policy: str | None = None) -> Scene:
         return _approach(draw)
     if policy == "carry":
         return _carry(draw, clock)
-    if policy == "managed_chase":  # the server's MoveToObject / sticky / TurnToObject at a moving other (motion.py)
-        from .motion import draw_managed_chase
-
-        return draw_managed_chase(draw, clock)
     return _jump(draw, clock)
 
 

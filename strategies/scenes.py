@@ -172,6 +172,11 @@ def scenes_of(draw, kind: str):
         from .missiles import draw_missile_scene
 
         return draw_missile_scene(draw)
+    if kind == "targets":  # a MoveTo, sticky follow, turn or stick_to at another mover (strategies/motion.py)
+        from .motion import draw_managed_chase
+        from .ticks import _clock
+
+        return draw_managed_chase(draw, _clock).replace(engine_mode=draw(dr.ENGINE_MODES))
     if kind == "motion":  # the ticks policy motion only (strategies/motion.py)
         from .ticks import draw_tick_scene
 

@@ -29,7 +29,8 @@ def add_arguments(p) -> None:
     from ..protocol import CAMPAIGN_KINDS  # strategies.DEFAULT_KINDS, what check_kinds(None) runs
 
     p.add_argument("--kinds", default=None, help=f"comma-separated scene kinds (default: all, {','.join(CAMPAIGN_KINDS)}; "
-                   "ticks:<world> draws tick scenes over one world)")
+                   "ticks:<world> draws tick scenes over one world; motion, doors, movers, missiles, targets "
+                   "draw one policy's tick scenes, only when named)")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact", help="exact: float32 bit for bit; fast: port in doubles, ULP tolerance")
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")

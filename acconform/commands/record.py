@@ -42,7 +42,8 @@ def default_out(runtime: str):
 def add_arguments(p) -> None:
     p.add_argument("files", nargs="*", metavar="FILE", help="scene, case or record files, or corpus shards (.jsonl.gz), whose scenes to record")
     p.add_argument("-n", type=int, default=0, help="also record N scenes drawn from the strategies")
-    p.add_argument("--kinds", default=None, help="scene kinds to draw, comma-separated (default: the strategies' defaults)")
+    p.add_argument("--kinds", default=None, help="scene kinds to draw, comma-separated (default: the strategies' defaults; motion, doors, movers, "
+                   "missiles, targets: one policy's tick scenes, recorded as ticks)")
     p.add_argument("--seed", type=int, default=0, help="seed for drawn scenes (default 0)")
     p.add_argument("--out", default=None, metavar="DIR", help=f"corpus directory (default: ./{DEFAULT_OUT}/<runtime> "
                    "under the working directory, <runtime> the one ACE runs on; a checkout's committed corpus is "

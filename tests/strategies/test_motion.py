@@ -112,16 +112,49 @@ def test_the_players_skills_are_drawn_default_or_at_the_values_where_aces_formul
 
 @pytest.fixture(scope="module")
 def chase_scenes():
-    """80 scenes of the movers policy managed_chase, drawn as tests/runner/managed_chase_scenes.py draws them."""
+    """80 scenes of the campaign kind targets (draw_managed_chase), as `acconform record --kinds targets` draws them."""
+    return list(sample_scenes(("targets",), 80, 49))
+
+
+def test_the_targets_kind_is_offered_only_to_an_implementation_with_motion_moving_others_and_targets():
+    from acconform.impl import BuiltinPort
+    from acconform.protocol import Implementation
+    from acconform.strategies import DEFAULT_KINDS, check_kinds
+
+    assert check_kinds("targets") == ("targets",) and "targets" in BuiltinPort.kinds
+    assert "targets" not in DEFAULT_KINDS  # drawn only when named, as missiles are
+    need = ["ticks", "mover.motion", "objects.moving", "objects.targets"]
+    for lacking in need:
+        impl = object.__new__(Implementation)
+        impl.hello = {"kinds": ["terrain"], "features": [f for f in need if f != lacking]}
+        assert "targets" not in impl.kinds, lacking
+    impl.hello = {"kinds": ["terrain"], "features": need}
+    assert "targets" in impl.kinds
+
+
+def test_targets_scenes_hold_float32s_only_so_their_json_round_trip_is_exact(chase_scenes):
+    import json
+
+    from acconform.scene import Scene
+
+    for sc in chase_scenes:  # a double in a scene (0.6, not 0.6f) changes its text, and its key, on re-reading
+        text = json.dumps(sc.to_json())
+        assert json.dumps(Scene.from_json(json.loads(text)).to_json()) == text, sc.name
+
+
+def test_a_targets_scene_needs_objects_targets_and_runs_in_either_engine_mode():
     from hypothesis import strategies as st
 
+    from acconform.protocol import scene_features
     from acconform.strategies.determinism import pinned_constants
     from acconform.strategies.fast_draw import FastDrawer
-    from acconform.strategies.movers import draw_movers_ticks
+    from acconform.strategies.scenes import scenes_of
 
     with pinned_constants():
-        drawer = FastDrawer(st.composite(lambda draw: draw_movers_ticks(draw, tk._clock, "managed_chase"))(), 49)
-        return [drawer.draw()[0] for _ in range(80)]
+        drawer = FastDrawer(scenes_of("targets"), 7)
+        drawn = [drawer.draw()[0] for _ in range(20)]
+    assert all("objects.targets" in scene_features(sc) for sc in drawn)
+    assert {sc.engine_mode for sc in drawn} == {"server", "client"}
 
 
 def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_other(chase_scenes):
@@ -131,6 +164,12 @@ def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_ot
         validate_scene(sc)
         assert len(sc.others) == 1 and "objects.targets" in scene_features(sc), sc.name
         first = sc.ticks.steps[0]
+        if first.turn_to_heading is not None:  # wrap_turn: a turn in place first, then the target from tick 1
+            assert ":wrap_turn" in sc.name and sc.mover.begin.frame.orientation == (1.0, 0.0, 0.0, 0.0), sc.name
+            first = sc.ticks.steps[1]
+            if first.move_to_object is None:
+                assert any(o.destroy for o in first.others), sc.name
+                continue
         target = first.stick_to if first.stick_to is not None else (first.move_to_object or first.turn_to_object).object
         assert target == sc.others[0].id, sc.name
 
@@ -138,16 +177,19 @@ def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_ot
 def test_chase_scenes_draw_every_goal_target_walk_and_a_destroyed_target(chase_scenes):
     names = " ".join(sc.name for sc in chase_scenes)
     for part in (":move_to_object:", ":sticky:", ":turn_to_object:", ":stick", ":no-table", "destroyed@", ":stand:",
-                 ":away", ":toward", ":across", ":stopgo", ":monster", ":charge", ":ranged", ":drawn"):
+                 ":away", ":toward", ":across", ":stopgo", ":monster", ":charge", ":ranged", ":drawn", ":backoff",
+                 ":wrap_turn"):
         assert part in names, part
     steps = [s for sc in chase_scenes for s in sc.ticks.steps]
     assert {s.stop for s in steps} >= {"stop_completely", "cancel_moveto", "move_to_manager_cancel"}
-    # nothing is aimed at a target after the server destroyed it
+    # nothing is aimed at a target after the server destroyed it but a melee swing's stick_to (stick_gone)
+    assert "+stick_gone@" in names
     for sc in chase_scenes:
         gone = next((i for i, s in enumerate(sc.ticks.steps) if any(o.destroy for o in s.others)), None)
         if gone is not None:
-            assert all(s.stick_to is None and s.move_to_object is None and s.turn_to_object is None
-                       for s in sc.ticks.steps[gone:]), sc.name
+            assert all(s.move_to_object is None and s.turn_to_object is None for s in sc.ticks.steps[gone:]), sc.name
+            sticks = [i for i, s in enumerate(sc.ticks.steps) if i >= gone and s.stick_to is not None]
+            assert all(i > gone and f"+stick_gone@{i}:" in sc.name for i in sticks), sc.name
 
 
 def test_the_port_runs_chase_scenes_and_a_sticky_follower_moves(chase_scenes):
