@@ -63,6 +63,15 @@ SIDE_VELOCITIES = dr.OneOf(st.sampled_from((1.25, 2.0, -1.25)), dr.f32(-3.0, 3.0
 OMEGAS = dr.OneOf(st.sampled_from((-1.5, -0.5, 1.5, -3.0)), dr.f32(-4.0, 4.0))
 
 FORWARDS = st.sampled_from((WALK, WALK, 0, int(MC.WalkBackwards), RUN))
+# now and then a forward command that is no walk (one input in 8): the substates a client's RawMotionState
+# may carry (Crouch, Sitting, Sleeping: motion_allows_jump's and DoMotion's combat refusals; Dead and Falling:
+# contact_allows_move's first test; Reload: an action-like substate) and an action or emote (Cheer, Twitch1)
+ODD_FORWARDS = st.sampled_from((int(MC.Crouch), int(MC.Sitting), int(MC.Sleeping), int(MC.Dead), int(MC.Falling),
+                                int(MC.Reload), int(MC.Cheer), int(MC.Twitch1)))
+ODD = st.sampled_from((False,) * 7 + (True,))
+# the RawMotionState's style: unset mostly (SetState makes it NonCombat), else NonCombat or a combat style the
+# table lacks (MotionInterp.DoMotion's combat refusals, RawMotionState.ApplyMotion's and RemoveMotion's style arms)
+STYLES = st.sampled_from((0,) * 13 + (int(MC.NonCombat), int(MC.HandCombat), int(MC.Magic)))
 SIDESTEPS = st.sampled_from((0, 0, 0, SIDE, int(MC.SideStepLeft)))
 TURNS = st.sampled_from((0, 0, TURN, int(MC.TurnLeft)))
 HOLD_KEYS = st.sampled_from((int(HoldKey.None_), int(HoldKey.Run), 0))
@@ -90,7 +99,7 @@ TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
 # the server's calls into the managers (one scene in two): what drives the mover first
 MANAGED = st.sampled_from((False, True))
 GOALS = st.sampled_from(("move_to", "move_to", "move_to_exact", "move_to_object", "sticky", "sticky",
-                         "turn_to_heading", "turn_to_object", "turn_to_object", "keys"))
+                         "turn_to_heading", "turn_to_object", "turn_to_object", "keys", "actions", "actions"))
 HEADINGS = dr.OneOf(st.sampled_from((0.0, 90.0, 180.0, 270.0, 135.0, 359.0)), dr.f32(0.0, 360.0))
 DISTANCES = dr.OneOf(st.sampled_from((0.6, 0.0, 1.0, 0.5, 2.0)), dr.f32(0.0, 4.0))
 MIN_DISTANCES = dr.OneOf(st.sampled_from((0.0, 0.0, 0.0, 0.5)), dr.f32(0.0, 1.0))
@@ -103,7 +112,13 @@ HOLD_TO_APPLY = st.sampled_from((0, 0, int(HoldKey.Run), int(HoldKey.None_)))
 TARGET_TS = st.sampled_from((1.0, 1.0, 0.5, 1.5, 0.25))  # where along the path (1: its end, past its obstacles)
 LATER = dr.ints(0, 3)  # stops, turns and keys after the first
 LATER_KINDS = st.sampled_from(("stop", "stop", "turn_to_heading", "move_to", "do_motion", "stop_motion"))
-KEY_COMMANDS = st.sampled_from((WALK, RUN, TURN, SIDE, int(MC.TurnLeft), int(MC.WalkBackwards), READY))
+KEY_COMMANDS = dr.OneOf(st.sampled_from((WALK, RUN, TURN, SIDE, int(MC.TurnLeft), int(MC.WalkBackwards), READY)),
+                        st.sampled_from((int(MC.SideStepLeft), int(MC.Crouch), int(MC.Sitting), int(MC.Sleeping),
+                                         int(MC.Cheer), int(MC.Twitch1), int(MC.HandCombat), int(MC.NonCombat),
+                                         int(MC.Dead), int(MC.Falling))))
+ACTIONS = (int(MC.Twitch1), int(MC.Cheer))  # the table's actions (links from Ready), when it has them
+BURSTS = st.integers(1, 8)  # actions asked for on successive ticks: the 6 DoMotion allows pending, and more
+STYLE_FIRST = st.sampled_from((False, False, False, True))  # a managed scene's MoveToState with a style first
 TARGET_ID = 0x7F000001  # a sphere the scene gains to follow when its world has no outdoor static
 
 
@@ -181,6 +196,10 @@ def draw_motion_table(draw) -> tuple[MotionTableSpec, str]:
             vel = (v, 0.0, 0.0) if move == "side" else None
             om = (0.0, 0.0, v) if move == "turn" else None
             modifiers.append(MotionEntry(NC, motion, data(move, vel, om)))
+    if draw(HALF):  # actions (Twitch1, the emote Cheer) as retail's tables have them: links from Ready
+        for action in ACTIONS:
+            links.append(MotionEntry(NC, READY, data("still"), to=action))
+        label += "a"
     label += (f"l{len(links)}" if links else "") + (f"m{len(modifiers)}" if modifiers else "")
     table = MotionTableSpec(NC, ((NC, READY),), tuple(animations), tuple(cycles), tuple(links), tuple(modifiers))
     return table, label or "ready"
@@ -195,8 +214,15 @@ def draw_motion_input(draw) -> tuple[MotionInput, str]:
         return MotionInput(hold_key=int(HoldKey.None_)), "stop"
     kw = {"hold_key": draw(HOLD_KEYS)}
     tag = ""
+    style = draw(STYLES)
+    if style:
+        kw["style"] = style
+        tag += "y"
     for name, commands, short in (("forward", FORWARDS, "f"), ("sidestep", SIDESTEPS, "s"), ("turn", TURNS, "t")):
         c = draw(commands)
+        if name == "forward" and draw(ODD):
+            c = draw(ODD_FORWARDS)
+            short = "o"
         if c:
             kw[name], kw[f"{name}_hold_key"], kw[f"{name}_speed"] = c, draw(HOLD_KEYS), _speed(draw)
             tag += short
@@ -223,6 +249,10 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
     if draw(MANAGED):  # the server's calls into the managers instead of a player's keys
         first_inputs, later, base, mlabel = draw_managed_inputs(draw, base, n, g0, g1)
         inputs[0].update(first_inputs)
+        if draw(STYLE_FIRST):  # a MoveToState setting a style (and maybe a substate) before the server's calls
+            inputs[0]["motion"] = MotionInput(hold_key=draw(HOLD_KEYS), style=draw(STYLES) or int(MC.HandCombat),
+                                              forward=draw(ODD_FORWARDS) if draw(HALF) else 0)
+            mlabel = "style+" + mlabel
         for at, inp in later:
             inputs[at].update(inp)
         skills = draw_skills(draw)
@@ -348,10 +378,17 @@ def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, 
         first["turn_to_object" if goal == "turn_to_object" else "move_to_object"] = move
     elif goal == "turn_to_heading":
         first["turn_to_heading"] = MoveToInput(_params(draw))
+    elif goal == "actions":  # a client's emotes and actions, one DoMotion a tick (the table's, or none)
+        first["do_motion"] = CommandInput(draw(st.sampled_from(ACTIONS)), draw(HOLD_TO_APPLY))
     else:
-        first["do_motion"] = CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))
+        first["do_motion"] = CommandInput(dr.take(draw, KEY_COMMANDS), draw(HOLD_TO_APPLY))
     tags = [goal]
     later = []
+    if goal == "actions":
+        k = min(draw(BURSTS), n) - 1
+        later = [(at, {"do_motion": CommandInput(draw(st.sampled_from(ACTIONS)), draw(HOLD_TO_APPLY))})
+                 for at in range(1, k + 1)]
+        tags.append(f"x{k + 1}")
     for _ in range(min(dr.take(draw, LATER), n - 1)):
         at = draw(st.integers(1, n - 1))
         kind = draw(LATER_KINDS)
@@ -363,7 +400,7 @@ def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, 
         if kind == "move_to" and pos is not None:
             later.append((at, {"move_to": MoveToInput(_params(draw), pos)}))
         elif kind in ("do_motion", "stop_motion"):
-            later.append((at, {kind: CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))}))
+            later.append((at, {kind: CommandInput(dr.take(draw, KEY_COMMANDS), draw(HOLD_TO_APPLY))}))
         else:
             kind = "turn_to_heading"
             later.append((at, {kind: MoveToInput(_params(draw))}))
