@@ -467,7 +467,9 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
 # ---------------------------------------------------------------- tick scenes
 
 
-@harness("the physics calls of Player.HandleActionJump, both branches, as the oracle's facade makes them")
+@anchor(None, "ACE.Server/WorldObjects/Player.cs:HandleActionJump",
+        "its physics calls only, both branches, as the oracle's facade makes them (the stamina cost, LastJumpTime and "
+        "the broadcasts are no physics); traced with the mover's state at its entry and exit")
 def handle_action_jump(mover: PhysicsObj, velocity) -> None:
     """With a local jump velocity (the JumpPack's). The branch is the Player's FastTick (IsPKType: a
     PK or PKLite player's): it sets UpdateTime only when the mover is not moving or animating; the

@@ -11,7 +11,8 @@ originals back afterwards. What a wrapper writes depends on the routine's ACE fi
 
 - a transition routine (`PATH_FILES`): ``enter`` and ``exit`` records with a `PathState` of the
   run's current Transition (the last one a routine was handed) and, at the exit, the result;
-- a PhysicsObj routine on the mover: ``enter`` and ``exit`` with the mover as a TickState;
+- a PhysicsObj routine on the mover, or a server routine of `MOVER_ROUTINES` (Player.HandleActionJump): ``enter``
+  and ``exit`` with the mover as a TickState;
 - any other routine: one ``call`` record at its exit, with its result only.
 
 Records carry the tick (run_ticks' step index) and the FindTransitionalPosition step they ran in, and,
@@ -45,6 +46,9 @@ from .anchors import FUNCTIONS, REGISTRY, REMEMBERING, harness, load_all
 PATH_FILES = frozenset({"Transition.cs", "SpherePath.cs", "ObjectInfo.cs", "BSPTree.cs", "BSPNode.cs", "BSPLeaf.cs",
                         "Sphere.cs", "CylSphere.cs", "ObjCell.cs", "LandCell.cs", "EnvCell.cs", "SortCell.cs"})
 MOVER_FILE = "PhysicsObj.cs"
+# routines of the server's WorldObjects whose first argument is the mover, traced as PhysicsObj's are (the mover's
+# state at entry and exit): what they change of the mover (a jump's UpdateTime) is named there, not a tick later
+MOVER_ROUTINES = frozenset({"ACE.Server/WorldObjects/Player.cs:HandleActionJump"})
 FTP = "Transition.cs:FindTransitionalPosition"
 TI = "Transition.cs:TransitionalInsert"
 TICK = "PhysicsObj.cs:update_object"
@@ -219,10 +223,12 @@ def _wrap(fn, anchor, recorder: Recorder, transition_type):
             t = recorder.transition
             recorder._add(ace, "exit", None, plain(r), path=path_state(t) if t is not None else None)
             return r
-    elif file == MOVER_FILE:
+    elif file == MOVER_FILE or ace in MOVER_ROUTINES:
+        any_object = ace in MOVER_ROUTINES  # a server routine snapshots the object it acts on: another mover's jump too
+
         def traced(*args, **kw):
             obj = args[0] if args else None
-            if getattr(obj, "id", None) != MOVER_ID or getattr(obj, "position", None) is None:
+            if (getattr(obj, "id", None) != MOVER_ID and not any_object) or getattr(obj, "position", None) is None:
                 a = _args(args, kw)
                 r = _run(recorder, ace, fn, args, kw)
                 recorder._add(ace, "call", a, plain(r))
@@ -265,6 +271,7 @@ def record_kinds() -> frozenset:
     for a in load_all().values():
         file = a.ace.split(":", 1)[0]
         events = ("enter", "exit") if file in PATH_FILES else ("enter", "exit", "call") if file == MOVER_FILE \
+            or a.ace in MOVER_ROUTINES \
             else ("call",)
         kinds.update((a.ace, e) for e in events)
     return frozenset(kinds)

@@ -48,7 +48,7 @@ NC = int(MC.NonCombat)
 READY, WALK, RUN = int(MC.Ready), int(MC.WalkForward), int(MC.RunForward)
 SIDE, TURN = int(MC.SideStepRight), int(MC.TurnRight)
 HC, SC = int(MC.HandCombat), int(MC.SwordCombat)
-ACTIONS = (int(MC.Twitch1), int(MC.Twitch2))
+RICH_ACTIONS = (int(MC.Twitch1), int(MC.Twitch2))
 
 _RATES = (30.0, 30.0, 15.0, 60.0, 10.0, 24.0, 7.5, -30.0, -15.0, -30.0)  # negative: played backward
 # one animation in 41 is still (0, +-0.0001: under AnimSequenceNode's EPSILON, a frame that never ends and
@@ -70,7 +70,7 @@ STATELESS = st.sampled_from((None,) * 10 + ("no_default", "no_cycle"))
 DEFAULT_ANIMATIONS = st.sampled_from((False, False, False, True))  # the Setup's DefaultAnimation (a table animation)
 EMPTY_LINKS = st.sampled_from((False, False, False, True))
 ACTION_LINKS = st.sampled_from(("ready", "ready", "walk", "any", "none"))
-STYLES = st.sampled_from((0, 0, 0, HC, NC, SC))  # a MoveToState's style (0: unflagged, NonCombat)
+STYLES = st.sampled_from((0,) * 8 + (HC, NC, SC, int(MC.Magic)))  # a MoveToState's style (0: unflagged, NonCombat)
 ACTION_INPUTS = st.sampled_from((False, False, True))  # a key scene's DoMotion of an action at a drawn tick
 HALF = st.sampled_from((True, False))
 # root motion per frame (metres or degrees)
@@ -82,6 +82,14 @@ SIDE_VELOCITIES = dr.OneOf(st.sampled_from((1.25, 2.0, -1.25)), dr.f32(-3.0, 3.0
 OMEGAS = dr.OneOf(st.sampled_from((-1.5, -0.5, 1.5, -3.0)), dr.f32(-4.0, 4.0))
 
 FORWARDS = st.sampled_from((WALK, WALK, 0, int(MC.WalkBackwards), RUN))
+# now and then a forward command that is no walk (one input in 8): the substates a client's RawMotionState
+# may carry (Crouch, Sitting, Sleeping: motion_allows_jump's and DoMotion's combat refusals; Dead and Falling:
+# contact_allows_move's first test; Reload: an action-like substate) and an action or emote (Cheer, Twitch1)
+ODD_FORWARDS = st.sampled_from((int(MC.Crouch), int(MC.Sitting), int(MC.Sleeping), int(MC.Dead), int(MC.Falling),
+                                int(MC.Reload), int(MC.Cheer), int(MC.Twitch1)))
+ODD = st.sampled_from((False,) * 7 + (True,))
+# the RawMotionState's style: unset mostly (SetState makes it NonCombat), else NonCombat or a combat style the
+# table lacks (MotionInterp.DoMotion's combat refusals, RawMotionState.ApplyMotion's and RemoveMotion's style arms)
 SIDESTEPS = st.sampled_from((0, 0, 0, SIDE, int(MC.SideStepLeft)))
 TURNS = st.sampled_from((0, 0, TURN, int(MC.TurnLeft)))
 HOLD_KEYS = st.sampled_from((int(HoldKey.None_), int(HoldKey.Run), 0))
@@ -111,7 +119,7 @@ TICK_COUNTS = dr.OneOf(dr.ints(10, 40), dr.ints(20, 60), dr.ints(1, 10))
 # the server's calls into the managers (one scene in two): what drives the mover first
 MANAGED = st.sampled_from((False, True))
 GOALS = st.sampled_from(("move_to", "move_to", "move_to_exact", "move_to_object", "sticky", "sticky",
-                         "turn_to_heading", "turn_to_object", "turn_to_object", "keys"))
+                         "turn_to_heading", "turn_to_object", "turn_to_object", "keys", "actions", "actions"))
 HEADINGS = dr.OneOf(st.sampled_from((0.0, 90.0, 180.0, 270.0, 135.0, 359.0)), dr.f32(0.0, 360.0))
 DISTANCES = dr.OneOf(st.sampled_from((0.6, 0.0, 1.0, 0.5, 2.0)), dr.f32(0.0, 4.0))
 MIN_DISTANCES = dr.OneOf(st.sampled_from((0.0, 0.0, 0.0, 0.5)), dr.f32(0.0, 1.0))
@@ -124,8 +132,13 @@ HOLD_TO_APPLY = st.sampled_from((0, 0, int(HoldKey.Run), int(HoldKey.None_)))
 TARGET_TS = st.sampled_from((1.0, 1.0, 0.5, 1.5, 0.25))  # where along the path (1: its end, past its obstacles)
 LATER = dr.ints(0, 3)  # stops, turns and keys after the first
 LATER_KINDS = st.sampled_from(("stop", "stop", "turn_to_heading", "move_to", "do_motion", "stop_motion"))
-KEY_COMMANDS = st.sampled_from((WALK, RUN, TURN, SIDE, int(MC.TurnLeft), int(MC.WalkBackwards), READY,
-                                 int(MC.Twitch1), int(MC.Twitch2), HC, NC, SC))
+KEY_COMMANDS = dr.OneOf(st.sampled_from((WALK, RUN, TURN, SIDE, int(MC.TurnLeft), int(MC.WalkBackwards), READY)),
+                        st.sampled_from((int(MC.SideStepLeft), int(MC.Crouch), int(MC.Sitting), int(MC.Sleeping),
+                                         int(MC.Cheer), int(MC.Twitch1), int(MC.Twitch2), HC, NC, SC,
+                                         int(MC.Dead), int(MC.Falling))))
+READY_ACTIONS = (int(MC.Twitch1), int(MC.Cheer))  # the table's actions (links from Ready), when it has them
+BURSTS = st.integers(1, 8)  # actions asked for on successive ticks: the 6 DoMotion allows pending, and more
+STYLE_FIRST = st.sampled_from((False, False, False, True))  # a managed scene's MoveToState with a style first
 TARGET_ID = 0x7F000001  # a sphere the scene gains to follow when its world has no outdoor static
 
 
@@ -212,12 +225,21 @@ def draw_motion_table(draw) -> tuple[MotionTableSpec, str]:
             vel = (v, 0.0, 0.0) if move == "side" else None
             om = (0.0, 0.0, v) if move == "turn" else None
             modifiers.append(MotionEntry(NC, motion, data(move, vel, om)))
+    if draw(HALF):  # actions (Twitch1, the emote Cheer) as retail's tables have them: links from Ready
+        for action in READY_ACTIONS:
+            links.append(MotionEntry(NC, READY, data("still"), to=action))
+        label += "a"
     label += (f"l{len(links)}" if links else "") + (f"m{len(modifiers)}" if modifiers else "")
     style_defaults = ((NC, READY),)
     if draw(RICH):
         style_defaults, more = _rich_entries(draw, cycles, links, modifiers, data)
         label += ":" + more
     default_animation = draw(st.integers(0, len(animations) - 1)) if draw(DEFAULT_ANIMATIONS) else None
+    # the Ready actions and a richer table's may both link Ready to Twitch1: one MotionData per link key, the first
+    firsts: dict = {}
+    for e in links:
+        firsts.setdefault((e.style, e.motion, e.to), e)
+    links = list(firsts.values())
     table = MotionTableSpec(NC, style_defaults, tuple(animations), tuple(cycles), tuple(links), tuple(modifiers),
                             default_animation)
     return table, label or "ready"
@@ -248,7 +270,7 @@ def _rich_entries(draw, cycles: list, links: list, modifiers: list, data) -> tup
         extra = tuple(data("still").anims[0] for _ in range(draw(st.integers(1, 2))))
         cycles[0] = replace(ready, data=replace(ready.data, anims=ready.data.anims + extra))
         tags.append(f"a{1 + len(extra)}")
-    for action in ACTIONS:
+    for action in RICH_ACTIONS:
         where = draw(ACTION_LINKS)
         if where == "none":
             continue
@@ -289,9 +311,12 @@ def draw_motion_input(draw) -> tuple[MotionInput, str]:
     if draw(INPUT_KINDS) == "stop":
         return MotionInput(hold_key=int(HoldKey.None_)), "stop"
     kw = {"hold_key": draw(HOLD_KEYS), "style": draw(STYLES)}
-    tag = {0: "", HC: "hc", NC: "nc", SC: "sc"}[kw["style"]]
+    tag = {0: "", HC: "hc", NC: "nc", SC: "sc", int(MC.Magic): "mg"}[kw["style"]]
     for name, commands, short in (("forward", FORWARDS, "f"), ("sidestep", SIDESTEPS, "s"), ("turn", TURNS, "t")):
         c = draw(commands)
+        if name == "forward" and draw(ODD):
+            c = draw(ODD_FORWARDS)
+            short = "o"
         if c:
             kw[name], kw[f"{name}_hold_key"], kw[f"{name}_speed"] = c, draw(HOLD_KEYS), _speed(draw)
             tag += short
@@ -318,6 +343,10 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
     if draw(MANAGED):  # the server's calls into the managers instead of a player's keys
         first_inputs, later, base, mlabel = draw_managed_inputs(draw, base, n, g0, g1)
         inputs[0].update(first_inputs)
+        if draw(STYLE_FIRST):  # a MoveToState setting a style (and maybe a substate) before the server's calls
+            inputs[0]["motion"] = MotionInput(hold_key=draw(HOLD_KEYS), style=draw(STYLES) or int(MC.HandCombat),
+                                              forward=draw(ODD_FORWARDS) if draw(HALF) else 0)
+            mlabel = "style+" + mlabel
         for at, inp in later:
             inputs[at].update(inp)
         skills = draw_skills(draw)
@@ -338,7 +367,7 @@ def draw_motion_ticks(draw, base: Scene, clock) -> Scene:
         tags.append("stop-last")
     if n > 1 and draw(ACTION_INPUTS):  # an action's DoMotion (Player.OnMoveToState's path for one key)
         at = draw(st.integers(0, n - 1))
-        inputs[at]["do_motion"] = CommandInput(draw(st.sampled_from(ACTIONS + ACTIONS + (HC, SC))), draw(HOLD_TO_APPLY))
+        inputs[at]["do_motion"] = CommandInput(draw(st.sampled_from(RICH_ACTIONS + RICH_ACTIONS + (HC, SC))), draw(HOLD_TO_APPLY))
         tags.append(f"do{inputs[at]['do_motion'].motion & 0xFF:x}@{at}")
     if n > 1 and draw(JUMPS):  # HandleActionJump's physics with the motion layer: LeaveGround, then HitGround
         from .ticks import JUMP_FORWARD, JUMP_UPS
@@ -447,10 +476,17 @@ def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, 
         first["turn_to_object" if goal == "turn_to_object" else "move_to_object"] = move
     elif goal == "turn_to_heading":
         first["turn_to_heading"] = MoveToInput(_params(draw))
+    elif goal == "actions":  # a client's emotes and actions, one DoMotion a tick (the table's, or none)
+        first["do_motion"] = CommandInput(draw(st.sampled_from(READY_ACTIONS)), draw(HOLD_TO_APPLY))
     else:
-        first["do_motion"] = CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))
+        first["do_motion"] = CommandInput(dr.take(draw, KEY_COMMANDS), draw(HOLD_TO_APPLY))
     tags = [goal]
     later = []
+    if goal == "actions":
+        k = min(draw(BURSTS), n) - 1
+        later = [(at, {"do_motion": CommandInput(draw(st.sampled_from(READY_ACTIONS)), draw(HOLD_TO_APPLY))})
+                 for at in range(1, k + 1)]
+        tags.append(f"x{k + 1}")
     for _ in range(min(dr.take(draw, LATER), n - 1)):
         at = draw(st.integers(1, n - 1))
         kind = draw(LATER_KINDS)
@@ -462,7 +498,7 @@ def draw_managed_inputs(draw, base: Scene, n: int, g0, g1) -> tuple[dict, list, 
         if kind == "move_to" and pos is not None:
             later.append((at, {"move_to": MoveToInput(_params(draw), pos)}))
         elif kind in ("do_motion", "stop_motion"):
-            later.append((at, {kind: CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))}))
+            later.append((at, {kind: CommandInput(dr.take(draw, KEY_COMMANDS), draw(HOLD_TO_APPLY))}))
         else:
             kind = "turn_to_heading"
             later.append((at, {kind: MoveToInput(_params(draw))}))
@@ -643,7 +679,7 @@ def draw_managed_chase(draw, clock) -> Scene:
         elif kind == "turn_to_object":
             row["turn_to_object"] = ObjectMoveInput(target.id, _chase_params(draw, kind)[0])
         elif kind == "do_motion":
-            row["do_motion"] = CommandInput(draw(KEY_COMMANDS), draw(HOLD_TO_APPLY))
+            row["do_motion"] = CommandInput(dr.take(draw, KEY_COMMANDS), draw(HOLD_TO_APPLY))
         elif kind == "move_to":
             row["move_to"] = MoveToInput(_params(draw), world.position(mx - ux * 3.0, my - uy * 3.0))
         else:

@@ -91,6 +91,37 @@ def test_a_tick_scene_writes_one_tick_record_per_tick_with_the_mover_after_it():
     assert all(r.mover is not None for r in inside)
 
 
+def test_a_jump_is_traced_with_the_jumpers_state_at_handle_action_jumps_entry_and_exit():
+    """Player.HandleActionJump (harness glue, anchored to ACE's method) writes enter and exit records with the
+    jumper as a TickState: a PK player's jump while running keeps UpdateTime, so a planted jump bug that sets it
+    is named there (tests/runner/explain_mutants.py's motion_jump_update_time_as_ordinary), not a tick later."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "oracle"))
+    import motion_scenes
+
+    _, records = traced_run(motion_scenes.pk_player_jumps_while_running())
+    jump = [r for r in records if r.anchor == "ACE.Server/WorldObjects/Player.cs:HandleActionJump"]
+    assert [r.event for r in jump] == ["enter", "exit"]
+    enter, exit_ = jump
+    assert enter.mover.update_time == exit_.mover.update_time  # FastTick: the mover moves, UpdateTime kept
+    assert not exit_.mover.transient_state & 1  # Contact cleared
+    assert exit_.mover.velocity != enter.mover.velocity
+
+
+def test_update_time_is_compared_as_the_double_it_is_even_below_float32s_resolution():
+    """ACE's clock is a double: at 123,456,789 s (a float32 ulp of 8 s) a 1/30 s difference in UpdateTime is a
+    divergence of the trace, as it is of the outcome (acconform/compare.py), not a tick later in the control flow."""
+    import math
+
+    scene = scene_of("tick_walk")
+    _, records = traced_run(scene)
+    i = next(k for k, r in enumerate(records) if r.mover is not None)
+    later = replace(records[i], mover=replace(records[i].mover, update_time=math.nextafter(records[i].mover.update_time, math.inf)))
+    d = first_divergence(records, records[:i] + (later,) + tuple(records[i + 1:]))
+    assert d is not None and d.field == "mover.update_time" and d.a_position == i
+
+
 @pytest.mark.anchor("CPhysicsObj::add_obj_to_cell")
 @pytest.mark.parametrize("kind, placed", [("obstacles", 0x70000000), ("indoor", 0)])
 def test_a_statics_placement_is_traced_each_record_labelled_with_the_static_it_places(kind, placed):

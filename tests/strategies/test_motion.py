@@ -199,3 +199,29 @@ def test_the_port_runs_chase_scenes_and_a_sticky_follower_moves(chase_scenes):
         assert len(ticks) == len(sc.ticks.steps) and not any(t.error for t in ticks), sc.name
         moved += ticks[-1].origin != ticks[0].origin
     assert moved
+
+
+def test_the_keys_carry_styles_and_the_substates_actions_and_emotes_a_client_may_send(motion_scenes):
+    """RawMotionState.SetState's and MotionInterp.DoMotion's arms for a style (a combat style the table lacks:
+    DoMotion's combat refusals) and a forward command that is no walk (Crouch, Sitting, Sleeping: the
+    refusals and motion_allows_jump; Dead, Falling; an action or emote)."""
+    ins = _inputs(motion_scenes)
+    assert {int(MC.HandCombat), int(MC.Magic)} & {m.style for m in ins}
+    odd = {int(MC.Crouch), int(MC.Sitting), int(MC.Sleeping), int(MC.Dead), int(MC.Falling), int(MC.Reload),
+           int(MC.Cheer), int(MC.Twitch1)}
+    assert len(odd & {m.forward for m in ins}) >= 2
+    keys = {st.do_motion.motion for s in motion_scenes for st in s.ticks.steps if st.do_motion is not None}
+    assert keys & {int(MC.Crouch), int(MC.Sitting), int(MC.Sleeping), int(MC.HandCombat), int(MC.Dead)}
+
+
+def test_some_tables_have_actions_and_some_managed_scenes_ask_for_them_on_successive_ticks(motion_scenes):
+    """Links from Ready to Twitch1 and Cheer (retail's tables keep actions as links): the actions' arms of
+    Raw- and InterpretedMotionState (AddAction, RemoveAction as MotionDone ends one) and DoMotion's
+    TooManyActions once six are pending."""
+    actions = {int(MC.Twitch1), int(MC.Cheer)}
+    with_actions = [s for s in motion_scenes if actions <= {e.to for e in s.mover.motion_table.links}]
+    assert 0.2 * N < len(with_actions) < 0.8 * N
+    bursts = [s for s in motion_scenes if ":actions+x" in s.name]
+    assert bursts
+    assert all(s.ticks.steps[0].do_motion.motion in actions for s in bursts)
+    assert max(sum(st.do_motion is not None for st in s.ticks.steps) for s in bursts) >= 2
