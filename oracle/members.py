@@ -94,7 +94,7 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("ACE.Server.Physics.Collision.CollisionRecord", ("TouchedTime", "Ethereal")),
     ("ACE.Server.Physics.PartArray", ("Sequence",)),
     # children (scene/8 `parent`): the client's calls that parent a wielded item (Facade.SetParent)
-    ("ACE.Server.Physics.PhysicsObj", ("ID", "SetPlacementFrame", "set_parent")),
+    ("ACE.Server.Physics.PhysicsObj", ("ID", "SetPlacementFrame", "set_parent", "unset_parent")),
     ("ACE.Server.Physics.Animation.Sequence", ("SetVelocity", "SetOmega")),
     # the motion layer (scene/6, mover.motion): the mover's MotionTable and Animation records, and a MoveToState
     ("ACE.DatLoader.FileTypes.MotionTable", (".ctor", "Unpack")),
