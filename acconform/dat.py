@@ -38,6 +38,9 @@ What each shape becomes (`static_records(obj, index)`):
   the parts have scales (then each part's scale, in order), one placement frame keyed 0 (Placement.Default, which
   `PartArray.SetPlacementFrame` falls back to when 0x65 is absent) holding each part's frame and no
   hooks, the Setup's cylspheres and spheres, Height, Radius and step heights 0 as every static's.
+  With a `default_animation` (scene/8) the Setup's DefaultAnimation is an Animation, id
+  ``0x03F00000 + index`` (`STATIC_ANIMATION_BASE`, above the mover's table's), of one frame holding those
+  part frames (one per part) and no PosFrames or hooks.
 
 The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
 the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
@@ -115,6 +118,7 @@ from .motion_scene import ANIMATION_BASE, HOOKS, MOTION_TABLE_ID, cycle_key
 GFX_OBJ_BASE = 0x01000001  # GfxObj id of static object 0 (portal DAT type 0x01: MasterDBMap.DivineType 6)
 SETUP_BASE = 0x02000001  # Setup id of static object 0 (portal DAT type 0x02: DivineType 7)
 MAX_OBJECTS = 0xEFFFFF  # ids stay inside their DAT type's range, below the parts' and the buildings'
+STATIC_ANIMATION_BASE = 0x03F00000  # the DefaultAnimation of static i's Setup of several parts (scene/8)
 PART_GFX_OBJ_BASE = 0x01F00000  # GfxObj id of part 0 of static 0's Setup of several parts (scene/7 `setup`)
 MAX_PARTS = 16  # each static has 16 part ids: part k of static i is PART_GFX_OBJ_BASE + 16 i + k (scene.MAX_SETUP_PARTS)
 MAX_SETUP_OBJECTS = 0xF000  # a static with a setup has an index below this (its parts' ids end below the buildings')
@@ -360,7 +364,8 @@ def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
     GfxObj (`gfx_obj_physics`), id ``PART_GFX_OBJ_BASE + 16 index + k`` for part k, then the Setup, id
     ``SETUP_BASE + index``, naming them in order, with their frames as its default placement, their
     scales as its DefaultScale (when the parts have one), the Setup's spheres and cylspheres and its
-    DefaultScript (scene/8)."""
+    DefaultScript (scene/8); with a `default_animation` (scene/8) the Setup's DefaultAnimation, Animation
+    ``STATIC_ANIMATION_BASE + index``, follows: one frame holding those part frames."""
     if not 0 <= index < MAX_SETUP_OBJECTS:
         raise ValueError(f"a static with a setup has an index in 0..{MAX_SETUP_OBJECTS - 1}, got {index}")
     if not 1 <= len(rec.parts) <= MAX_PARTS:
@@ -372,8 +377,13 @@ def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
     body = setup(setup_id, ids, spheres=[(s.center, s.radius) for s in rec.spheres],
                  cylspheres=[(c.low_point, c.radius, c.height) for c in rec.cylspheres],
                  placement=[p.frame for p in rec.parts], default_scale=[p.scale for p in rec.parts] if scaled else None,
-                 parent_index=rec.parent_index, default_script=rec.default_script)
-    return ObjectRecords(setup_id, parts + (DatRecord(setup_id, "SetupModel", body),))
+                 parent_index=rec.parent_index, default_script=rec.default_script,
+                 default_animation=0 if rec.default_animation is None else STATIC_ANIMATION_BASE + index)
+    records = parts + (DatRecord(setup_id, "SetupModel", body),)
+    if rec.default_animation is not None:
+        frames = tuple((f.origin, f.orientation) for f in rec.default_animation)
+        records += (animation_record(STATIC_ANIMATION_BASE + index, len(frames), [AnimationFrameRec(frames)]),)
+    return ObjectRecords(setup_id, records)
 
 
 def mover_records(mover: Mover) -> ObjectRecords:
@@ -813,7 +823,7 @@ __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMove
            "other_records", "OTHER_SETUP_BASE",
            "dat_world", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
            "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
-           "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "setup_records", "GFX_OBJ_BASE", "PART_GFX_OBJ_BASE", "SETUP_BASE", "compressed_u32",
+           "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "setup_records", "GFX_OBJ_BASE", "PART_GFX_OBJ_BASE", "SETUP_BASE", "STATIC_ANIMATION_BASE", "compressed_u32",
            "TAG_BPIN", "TAG_LEAF", "TAG_PORT"]
 
 

@@ -635,11 +635,18 @@ class SetupRec:
     # scene/8: the Setup's DefaultScript (0 none): InitDefaults plays it (a ScriptManager) and, the object
     # being Static, sets HasDefaultScript
     default_script: int = 0
+    # scene/8: the Setup's DefaultAnimation, an Animation of one frame given here as one frame per part
+    # (acconform/dat.py writes it); None: DefaultAnimation 0. PartArray.InitDefaults appends it to the Sequence,
+    # whose current frame then places the parts (in place of the placement frames), and InitDefaults sets
+    # HasDefaultAnim on a Static object
+    default_animation: tuple[Frame, ...] | None = None
 
     def to_json(self):
         d = {"parts": [p.to_json() for p in self.parts]}
         if self.default_script:
             d["default_script"] = write_id(self.default_script)
+        if self.default_animation is not None:
+            d["default_animation"] = [f.to_json() for f in self.default_animation]
         if self.spheres:
             d["spheres"] = [s.to_json() for s in self.spheres]
         if self.cylspheres:
@@ -650,11 +657,11 @@ class SetupRec:
 
     @staticmethod
     def from_json(r: Reader, v8: bool = True) -> "SetupRec":
-        """`v8`: the format holds `parent_index` and `default_script` (scene/8)."""
-        for name in ("parent_index", "default_script"):
+        """`v8`: the format holds `parent_index`, `default_script` and `default_animation` (scene/8)."""
+        for name in ("parent_index", "default_script", "default_animation"):
             if not v8 and isinstance(r.value, dict) and name in r.value:
                 r[name].fail(f"{name} needs format {FORMAT!r} (older formats have none)")
-        r.obj({"parts", "spheres", "cylspheres", *(("parent_index", "default_script") if v8 else ())})
+        r.obj({"parts", "spheres", "cylspheres", *(("parent_index", "default_script", "default_animation") if v8 else ())})
         parts = tuple(PartRec.from_json(p) for p in r["parts"].list(min_count=1, max_count=MAX_SETUP_PARTS))
         scaled = [p.scale is not None for p in parts]
         if any(scaled) and not all(scaled):
@@ -670,8 +677,13 @@ class SetupRec:
         if v8 and r.given("parent_index"):
             parent_index = tuple(x.int_(0, 0xFFFFFFFF) for x in r["parent_index"].list(min_count=len(parts),
                                                                                        max_count=len(parts)))
+        default_animation = None
+        if v8 and r.given("default_animation"):
+            default_animation = tuple(Frame.from_json(f) for f in r["default_animation"].list(min_count=len(parts),
+                                                                                              max_count=len(parts)))
         return SetupRec(parts, spheres, cylspheres, parent_index,
-                        default_script=r["default_script"].id_() if v8 and r.given("default_script") else 0)
+                        default_script=r["default_script"].id_() if v8 and r.given("default_script") else 0,
+                        default_animation=default_animation)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1543,14 +1555,15 @@ class Scene:
     @property
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
-        motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index or
-        DefaultScript, the mover's resting frame, /7
+        motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
+        DefaultScript or DefaultAnimation, the mover's resting frame, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
                 self.mover.resting_frame is not None) or any(
-                o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None) for o in self.objects):
+                o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
+                                         or o.setup.default_animation is not None) for o in self.objects):
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7

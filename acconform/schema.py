@@ -170,7 +170,9 @@ def _setup_scenes(scenes):
                                 (0xFFFFFFFF, 0))
                 objects = list(scene.objects)
                 return [replace(scene, objects=tuple(objects[:i] + [replace(o, shape=None, setup=s)] + objects[i + 1:]))
-                        for s in (plain, full, replace(full, default_script=0x33000001))]
+                        for s in (plain, full, replace(full, default_script=0x33000001),
+                                  replace(plain, default_animation=(Frame((0.0, 0.0, 0.5)),
+                                                                    Frame((1.0, 0.0, 1.0), (0.0, 0.0, 0.0, 1.0)))))]
     return []
 
 

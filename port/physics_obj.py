@@ -1658,7 +1658,7 @@ class PhysicsObj:
             raise NotImplementedError("DetectionManager.CheckDetection is not ported")
 
         if self.target_manager is not None:
-            raise NotImplementedError("TargetManager.HandleTargetting is not ported")
+            self.target_manager.handle_targetting()
 
         if self.movement_manager is not None:
             self.movement_manager.use_time()
@@ -1667,7 +1667,7 @@ class PhysicsObj:
             self.part_array.handle_movement()
 
         if self.position_manager is not None:
-            raise NotImplementedError("PositionManager.UseTime is not ported")
+            self.position_manager.use_time()
 
         if self.particle_manager is not None:
             raise NotImplementedError("ParticleManager.UpdateParticles is not ported")

@@ -29,6 +29,7 @@ its first entries and plainest values.
 from __future__ import annotations
 
 import math
+import zlib
 from dataclasses import replace
 
 from hypothesis import strategies as st
@@ -520,6 +521,12 @@ CHASE_GOALS = st.sampled_from(("move_to_object", "move_to_object", "sticky", "st
 # of 360, where BeginTurnToHeading's `heading_diff + EPSILON <= 360` fails by float32 rounding (359.9998 still
 # passes: 359.9998f + 0.0002f rounds to 360) and the turn ends at once; the target meanwhile has no voyeur
 STICK_AFTER_GONE = st.sampled_from((False, True))  # of a scene whose target is destroyed
+# the driver: update_object (a creature's or a FastTick player's physics), or request_pos, the legacy player path
+# (Player.UpdatePlayerPosition -> update_object_server -> UpdateObjectInternalServer, which runs the mover's
+# TargetManager and PositionManager too), the client reporting the mover walking toward the target at a speed;
+# picked by the scene's drawn name, not drawn (a draw would shift every later scene of a seeded sample)
+CHASE_DRIVERS = ("update_object", "update_object", "update_object", "request_pos")
+REPORTED_SPEEDS = (0.0, 1.0, 2.5, 4.0, 4.0)
 WRAP_HEADINGS = st.sampled_from((359.9999, 359.99985, 359.99982, 359.9998, 0.0001))
 TARGET_FATES = st.sampled_from(("stays", "stays", "stays", "destroyed"))  # the server destroys the target at a tick
 NO_TABLE = st.sampled_from((False, False, False, True))  # a stick_to scene's mover without a motion table (no MotionInterp)
@@ -695,6 +702,18 @@ def draw_managed_chase(draw, clock) -> Scene:
     skills = draw_skills(draw)
     name = f"targets:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
     scene = _finish(draw, start, dts, tl, world.landblocks, mover, (target,), (), name, ethereal=False)
+    pick = zlib.crc32(scene.name.encode())
+    if CHASE_DRIVERS[pick % len(CHASE_DRIVERS)] == "request_pos":
+        speed = REPORTED_SPEEDS[(pick // len(CHASE_DRIVERS)) % len(REPORTED_SPEEDS)]
+        reach = max(gap - 1.0, 0.0)  # the client stops a metre short of the target's starting point
+        requests, t = [], 0.0
+        for dt in dts:
+            t += dt
+            d = min(speed * t, reach)
+            requests.append(world.position(mx + ux * d, my + uy * d, _yaw(facing)))
+        steps = tuple(replace(step, request_pos=r) for step, r in zip(scene.ticks.steps, requests))
+        scene = scene.replace(ticks=replace(scene.ticks, driver="request_pos", steps=steps),
+                              name=scene.name + f":request_pos{speed:g}")
     m = scene.mover
     if no_table:
         return scene.replace(mover=replace(m, transient_state=m.transient_state | int(TransientState.Active)))

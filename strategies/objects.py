@@ -556,6 +556,10 @@ SETUP_TANGENT_STEPS = dr.f32(0.25, 1.0)  # of the mover's radius
 # the Setup's ParentIndex (scene/8 setup.parent_index: SetupFlags.HasParent), which ACE's physics never reads: none
 # mostly, each part the root's child (0xFFFFFFFF the root: retail's "no parent"), or a chain of parts
 PARENT_INDEX_WAYS = (None, None, None, "flat", "chain")
+# the Setup's DefaultAnimation (scene/8 setup.default_animation: one frame, a frame per part), whose frame places the
+# parts in place of the placement frames (PartArray.InitDefaults -> Sequence.append_animation; UpdateParts): none
+# mostly, the parts' own frames, each turned a quarter about the Setup's z axis, or each raised half a metre
+DEFAULT_ANIMATION_WAYS = (None, None, None, None, "same", "turned", "raised")
 
 
 def _yaw_quat(deg: float):
@@ -635,7 +639,7 @@ def multipart(draw, gx: float, gy: float, r: float) -> Plan:
     p.begin = (gx, gy)
     p.heading = heading + dr.take(draw, EDGE_ANGLES) / 8
     p.length = to_f32(d * draw(CORNER_THROUGH))
-    p.label = f"multipart-{variant}-{len(parts)}" + _parent_index(draw, p)
+    p.label = f"multipart-{variant}-{len(parts)}" + _parent_index(draw, p) + _default_animation(p)
     return p
 
 
@@ -652,6 +656,32 @@ def _parent_index(draw, p: Plan) -> str:
     index = tuple(0xFFFFFFFF if k == 0 else (0 if how == "flat" else k - 1) for k in range(n))
     p.objects[-1] = (replace(rec, parent_index=index), *rest)
     return f"-parent-{how}"
+
+
+def _default_animation(p: Plan) -> str:
+    """The last static's Setup given a DefaultAnimation (DEFAULT_ANIMATION_WAYS); returns the label's suffix. Picked,
+    as _parent_index picks, by the static's drawn place, not drawn (a draw would shift later scenes of a seed)."""
+    from acconform.scene import Frame
+
+    rec, ox, oy, *rest = p.objects[-1]
+    k = len(rec.parts) * 7 + int(abs(ox) * 997) + int(abs(oy) * 991)
+    how = DEFAULT_ANIMATION_WAYS[k % len(DEFAULT_ANIMATION_WAYS)]
+    if how is None:
+        return ""
+    frames = []
+    for part in rec.parts:
+        (x, y, z), q = part.frame.origin, part.frame.orientation
+        if how == "turned":  # a quarter turn about z: (x, y) -> (-y, x), the orientation premultiplied by it
+            h = math.sqrt(0.5)
+            w, qx, qy, qz = q
+            q = (h * (w - qz), h * (qx - qy), h * (qy + qx), h * (qz + w))
+            x, y = -y, x
+        elif how == "raised":
+            z = z + 0.5
+        frames.append(Frame((float(to_f32(x)), float(to_f32(y)), float(to_f32(z))),
+                            tuple(float(to_f32(c)) for c in q)))
+    p.objects[-1] = (replace(rec, default_animation=tuple(frames)), ox, oy, *rest)
+    return f"-anim-{how}"
 
 
 def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan:
@@ -679,7 +709,7 @@ def _setup_tangent(draw, p: Plan, parts, gx: float, gy: float, r: float) -> Plan
     p.objects.append((SetupRec(parts, spheres, cyls, default_script=draw(DEFAULT_SCRIPTS)), bx + ex + radsum * ax, by + ey + radsum * ay, 0.0,
                       int(PhysicsState.Static)))
     p.heading, p.length, p.plane_dz, p.velocity = heading, step, 0.0, (0.0, 0.0, 0.0)
-    p.label = f"multipart-tangent-{kind}" + _parent_index(draw, p)
+    p.label = f"multipart-tangent-{kind}" + _parent_index(draw, p) + _default_animation(p)
     return p
 
 

@@ -176,7 +176,10 @@ def scenes_of(draw, kind: str):
         from .motion import draw_managed_chase
         from .ticks import _clock
 
-        return draw_managed_chase(draw, _clock).replace(engine_mode=draw(dr.ENGINE_MODES))
+        scene = draw_managed_chase(draw, _clock)
+        mode = draw(dr.ENGINE_MODES)
+        # the legacy player path is the server's (a client-mode PhysicsObj has no RequestPos to set)
+        return scene.replace(engine_mode="server" if scene.ticks.driver == "request_pos" else mode)
     if kind == "motion":  # the ticks policy motion only (strategies/motion.py)
         from .ticks import draw_tick_scene
 

@@ -204,3 +204,54 @@ def test_a_scene_7_placement_through_set_position_says_its_via_and_reads_back():
     doc = placed.to_json()
     assert doc["format"] == FORMAT and doc["mover"]["placement"]["via"] == "set_position"
     assert Scene.from_json(doc) == placed
+
+
+RAISED = (Frame((0.0, -1.25, 0.5)), Frame((0.5, 1.0, 0.75), TURN))  # each part half a metre up
+
+
+def animated(frames=RAISED, index=0):
+    obj = multipart()
+    return StaticObject(obj.id, obj.position, None, obj.state, 1.0, SetupRec(PARTS, SPHERES, CYLS, default_animation=frames))
+
+
+def test_a_default_animation_is_the_setups_default_animation_an_animation_of_one_frame_of_the_part_frames():
+    from acconform.numerics import get_mode
+    from acconform.port.dat.animation import Animation
+    from acconform.port.dat.binary_reader import BinaryReader
+    from acconform.port.dat.setup_model import SetupModel
+
+    recs = dat.static_records(animated(), 5)
+    assert [r.kind for r in recs.records] == ["GfxObj", "GfxObj", "SetupModel", "Animation"]
+    anim_id = dat.STATIC_ANIMATION_BASE + 5 == recs.records[-1].id
+    setup = SetupModel.unpack(BinaryReader(recs.records[2].data, get_mode("exact", "mono")))
+    assert anim_id and setup.default_animation == recs.records[-1].id
+    reader = BinaryReader(recs.records[-1].data, get_mode("exact", "mono"))
+    a = Animation.unpack(reader)
+    assert reader.position == len(recs.records[-1].data) and a.num_parts == 2 and a.num_frames == 1 and not a.pos_frames
+    assert [(tuple(map(float, f.origin)), tuple(map(float, (f.orientation.w, f.orientation.x, f.orientation.y, f.orientation.z))))
+            for f in a.part_frames[0].frames] == [(f.origin, f.orientation) for f in RAISED]
+    assert SetupModel.unpack(BinaryReader(dat.static_records(multipart(), 5).records[-1].data,
+                                          get_mode("exact", "mono"))).default_animation == 0
+
+
+def test_a_default_animation_makes_scene_8_reads_back_and_has_one_frame_per_part():
+    sc = scene(animated())
+    assert sc.format == "acconform.scene/8" and Scene.loads(sc.dumps()) == sc
+    assert sc.to_json()["objects"][0]["setup"]["default_animation"][1]["origin"] == [0.5, 1.0, 0.75]
+    doc = sc.to_json()
+    doc["objects"][0]["setup"]["default_animation"] = doc["objects"][0]["setup"]["default_animation"][:1]
+    assert "default_animation" in refused(doc)
+    doc = scene().to_json()
+    doc["objects"][0]["setup"]["default_animation"] = [{"origin": [0, 0, 0]}] * 2
+    assert "default_animation needs format 'acconform.scene/8'" in refused(doc)
+
+
+def test_a_static_whose_setup_names_a_default_animation_has_its_parts_at_the_animations_frame():
+    """PartArray.InitDefaults appends the DefaultAnimation; UpdateParts then places the parts at its frame, not the
+    placement frames: with both parts moved 20 m aside the mover walks on where the placed parts stop it."""
+    from acconform.port.run import run_scene
+
+    aside = (Frame((0.0, -21.25, 0.0)), Frame((0.5, -19.0, 0.25), TURN))
+    placed, moved = run_scene(scene(multipart())), run_scene(scene(animated(aside)))
+    assert placed.collision_normal.valid and placed.origin[0] < 14.0
+    assert not moved.collision_normal.valid and moved.origin[0] > 16.9

@@ -109,8 +109,10 @@ def test_the_scene_schema_names_a_statics_setup_and_every_field_of_its_parts(gen
     obj = scene["properties"]["objects"]["items"]
     assert {"shape", "setup"} <= set(obj["properties"]) and not {"shape", "setup"} & set(obj["required"])
     setup = obj["properties"]["setup"]
-    assert set(setup["properties"]) == {"parts", "spheres", "cylspheres", "parent_index", "default_script"} and setup["required"] == ["parts"]
+    assert set(setup["properties"]) == {"parts", "spheres", "cylspheres", "parent_index", "default_script",
+                                        "default_animation"} and setup["required"] == ["parts"]
     assert set(setup["properties"]["parts"]["items"]["properties"]) == {"shape", "origin", "orientation", "scale"}
+    assert set(setup["properties"]["default_animation"]["items"]["properties"]) == {"origin", "orientation"}
 
 
 def test_the_scene_schema_names_a_childs_parent_and_the_holding_locations_and_a_child_has_no_begin(generated):

@@ -91,10 +91,11 @@ def _turn(deg):
 
 
 def three_part_setup(x=15.0, state=int(PhysicsState.Static | PhysicsState.HasPhysicsBSP), scales=None, spheres=(),
-                     cylspheres=()):
+                     cylspheres=(), default_animation=None):
     """A static made from a Setup of three box parts (scene/7): a 1 x 2 x 1.5 m block 1.25 m to the
     right, a 1 x 1 x 0.8 m block turned 30 degrees 1 m to the left, a 0.5 m post turned 45 degrees
-    lifted 0.5 m; `scales` the parts' DefaultScale, and the Setup's spheres and cylspheres."""
+    lifted 0.5 m; `scales` the parts' DefaultScale, and the Setup's spheres and cylspheres (and, scene/8, its
+    DefaultAnimation's one frame per part)."""
     from acconform.scene import PartRec, SetupRec
     from acconform.strategies.shapes import box
 
@@ -103,7 +104,7 @@ def three_part_setup(x=15.0, state=int(PhysicsState.Static | PhysicsState.HasPhy
              PartRec(box(1.0, 1.0, 0.8), Frame((0.5, 1.0, 0.0), _turn(30)), scales[1]),
              PartRec(box(0.5, 0.5, 2.0), Frame((0.0, 0.0, 0.5), _turn(45)), scales[2]))
     return StaticObject(0x70000020, Position(cell_at(x, 12.0), Frame((x, 12.0, 20.0))), None, state, 1.0,
-                        SetupRec(parts, spheres, cylspheres))
+                        SetupRec(parts, spheres, cylspheres, default_animation=default_animation))
 
 
 # named multi-part scenes (issue 41): the mover walking 5 m along +x into a three-part Setup, at `dy` off its axis
@@ -118,4 +119,8 @@ MULTIPART = {
     "multipart: cylspheres hide the sphere": walk(flat, (12.0, 12.0, 20.0), (17.0, 12.0, 20.0), 20.0, objects=(
         three_part_setup(state=int(PhysicsState.Static), spheres=(SphereRec((0.0, 0.0, 0.5), 0.6),),
                          cylspheres=(CylSphereShape((0.0, -1.0, 0.0), 0.5, 1.0), CylSphereShape((0.0, 1.0, 0.0), 0.3, 2.0))),)),
+    # scene/8: the Setup's DefaultAnimation holds every part 20 m aside, so its frame, not the placement, places them
+    "multipart: a DefaultAnimation holds the parts aside": walk(flat, (12.0, 13.0, 20.0), (17.0, 13.0, 20.0), 20.0, objects=(
+        three_part_setup(default_animation=(Frame((0.0, -21.25, 0.0)), Frame((0.5, -19.0, 0.0), _turn(30)),
+                                            Frame((0.0, -20.0, 0.5), _turn(45)))),)),
 }

@@ -34,3 +34,9 @@ def test_ace_collides_with_the_setups_spheres_only_when_it_has_no_cylspheres(ans
     spheres, cyls = answers["multipart: two spheres, no BSP flag"], answers["multipart: cylspheres hide the sphere"]
     assert spheres.origin[:2] != cyls.origin[:2]
     assert cyls.origin[0] == pytest.approx(17.0, abs=1e-5)  # between the cylspheres, through the ignored sphere
+
+
+def test_ace_places_the_parts_at_the_setups_default_animation_not_its_placement(answers):
+    corner, aside = answers["multipart: into the turned part's corner"], answers["multipart: a DefaultAnimation holds the parts aside"]
+    assert corner.origin[0] < 15.0  # the same walk, the parts at their placement frames: stopped
+    assert aside.origin[0] == pytest.approx(17.0, abs=1e-5) and not aside.collision_normal.valid  # walked past

@@ -35,3 +35,33 @@ def test_a_request_pos_into_another_land_cell_takes_the_terrains_contact_plane_w
 
 def test_a_landblock_info_id_read_as_an_env_cell_is_an_invalid_cast():
     assert run_scene(landblock_info_as_env_cell_scene()).error.startswith("InvalidCastException")
+
+
+def _shard_scene(runtime: str, wanted):
+    """The first scene of shard ticks-0063 (`runtime`'s) that `wanted` accepts, with ACE's recorded outcome."""
+    import gzip
+    import json
+
+    from acconform.case import parse_document
+
+    path = Path(__file__).resolve().parents[1] / "data" / "corpus" / runtime / "ticks-0063.jsonl.gz"
+    with gzip.open(path, "rt", encoding="utf-8") as f:
+        for line in f:
+            rec = parse_document(json.loads(line))
+            if wanted(rec.scene):
+                return rec.scene, rec.outcome
+    raise AssertionError("no such scene in ticks-0063")
+
+
+@pytest.mark.anchor("PhysicsObj.cs:UpdateObjectInternalServer")
+@pytest.mark.parametrize("goal", ["move_to_object", "stick_to"])
+def test_the_legacy_player_path_runs_the_movers_target_and_position_managers_as_ace_does(goal):
+    """UpdateObjectInternalServer calls the mover's TargetManager.HandleTargetting (made by a MoveToObject's
+    set_target) and PositionManager.UseTime (made by stick_to_object) after the transition to RequestPos."""
+    from acconform.compare import compare
+
+    scene, ace = _shard_scene("coreclr", lambda s: s.ticks.driver == "request_pos"
+                              and getattr(s.ticks.steps[0], goal) is not None)
+    out = run_scene(scene, runtime="coreclr")
+    assert not any(t.error for t in out.ticks)
+    assert compare(ace, out) == []

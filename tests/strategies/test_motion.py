@@ -174,6 +174,15 @@ def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_ot
         assert target == sc.others[0].id, sc.name
 
 
+def test_some_chase_scenes_take_the_legacy_player_path_always_in_server_mode(chase_scenes):
+    """The driver request_pos (update_object_server: UpdateObjectInternalServer runs the mover's managers), the
+    client's reports walking toward the target; a client-mode PhysicsObj has no RequestPos, so never client mode."""
+    legacy = [sc for sc in chase_scenes if sc.ticks.driver == "request_pos"]
+    assert 5 <= len(legacy) < len(chase_scenes) / 2
+    assert all(sc.engine_mode == "server" and ":request_pos" in sc.name for sc in legacy)
+    assert all(s.request_pos is not None for sc in legacy for s in sc.ticks.steps)
+
+
 def test_chase_scenes_draw_every_goal_target_walk_and_a_destroyed_target(chase_scenes):
     names = " ".join(sc.name for sc in chase_scenes)
     for part in (":move_to_object:", ":sticky:", ":turn_to_object:", ":stick", ":no-table", "destroyed@", ":stand:",
