@@ -155,6 +155,15 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                             "a launch under the server property trajectory_alt_solver (scene/8: launch.alt_solver): "
                             "the velocity by Trajectory2.CalculateTrajectory instead of Trajectory's solvers (needs "
                             "missiles)"),
+    "missiles.thrown": (lambda s: any(o.weenie == "missile" for o in s.others),
+                        "a thrown weapon (scene/8: others[] of weenie missile, ACE's Missile): launched as an arrow "
+                        "(Creature.LaunchProjectile), it keeps WorldObject's OnCollideObject and OnCollideEnvironment, "
+                        "ProjectileCollisionHelper's only with a ProjectileTarget (needs missiles)"),
+    "missiles.rotation_speed": (lambda s: any(o.launch is not None and o.launch.rotation_speed != 0 for o in s.others),
+                                "a projectile with a RotationSpeed (scene/8: launch.rotation_speed, a weenie property of "
+                                "some arrows, bolts, thrown weapons and spells): SetProjectilePhysicsState or "
+                                "SpellProjectile.Setup clears AlignPath and sets Omega = (2 pi RotationSpeed, 0, 0) "
+                                "(needs missiles)"),
 }
 
 

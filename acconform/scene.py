@@ -1343,8 +1343,10 @@ class Mover:
 
 # the WorldObject a server makes for another mover (scene/8 `others[].weenie`): WeenieObject(WorldObject) reads its class;
 # the last two are projectiles (an Ammunition: an arrow, bolt or dart; a SpellProjectile), which a `launch` puts in the world
-WEENIE_CLASSES = ("player", "creature", "monster", "object", "ammunition", "spell_projectile")
-PROJECTILE_WEENIES = ("ammunition", "spell_projectile")
+WEENIE_CLASSES = ("player", "creature", "monster", "object", "ammunition", "spell_projectile", "missile")
+# a `missile` is a thrown weapon (ACE's Missile: a Stackable that keeps WorldObject's OnCollideObject and
+# OnCollideEnvironment, the helper run only with a ProjectileTarget), launched as an arrow is (Creature.LaunchProjectile)
+PROJECTILE_WEENIES = ("ammunition", "spell_projectile", "missile")
 
 
 @dataclass(frozen=True, slots=True)
@@ -1363,7 +1365,11 @@ class Launch:
     LeadMissileTargets (`lead_target` false); a spell's by WorldObject.CalculateProjectileVelocity (the aim
     point raised by Height * 2/3, or 5/6 for an `arc`, which falls under gravity; a `tracking` spell leads
     the target). `alt_solver` is the server's trajectory_alt_solver property (PropertyManager, false by default):
-    both compute the velocity by Trajectory2.CalculateTrajectory instead (feature missiles.alt_solver)."""
+    both compute the velocity by Trajectory2.CalculateTrajectory instead (feature missiles.alt_solver).
+    `rotation_speed` is the projectile's RotationSpeed (PropertyFloat, revolutions a second; 0: none, ACE's null),
+    a weenie property of some arrows, bolts, thrown weapons and spells: SetProjectilePhysicsState (an arrow) and
+    SpellProjectile.Setup (a spell) then clear AlignPath and set Omega = (2 pi RotationSpeed, 0, 0), so it
+    tumbles as it flies (feature missiles.rotation_speed)."""
 
     tick: int
     launcher: int
@@ -1375,6 +1381,7 @@ class Launch:
     arc: bool = False
     tracking: bool = False
     alt_solver: bool = False
+    rotation_speed: float = 0.0
 
     def to_json(self, spell: bool) -> dict:
         d = {"tick": self.tick, "launcher": write_id(self.launcher), "target": write_id(self.target),
@@ -1387,11 +1394,13 @@ class Launch:
             d["lead_target"] = self.lead_target
         if self.alt_solver:  # written only when set: a scene without it means what it meant
             d["alt_solver"] = True
+        if self.rotation_speed != 0:  # written only when set, as alt_solver
+            d["rotation_speed"] = write_f32(self.rotation_speed)
         return d
 
     @staticmethod
     def from_json(r: Reader, spell: bool) -> "Launch":
-        r.obj({"tick", "launcher", "target", "speed", "origin", "alt_solver",
+        r.obj({"tick", "launcher", "target", "speed", "origin", "alt_solver", "rotation_speed",
                *(("arc", "tracking") if spell else ("orientation", "lead_target"))})
         speed = r["speed"].f32()
         if not speed > 0:
@@ -1402,7 +1411,8 @@ class Launch:
                       lead_target=r["lead_target"].bool_() if r.given("lead_target") else True,
                       arc=r["arc"].bool_() if r.given("arc") else False,
                       tracking=r["tracking"].bool_() if r.given("tracking") else False,
-                      alt_solver=r["alt_solver"].bool_() if r.given("alt_solver") else False)
+                      alt_solver=r["alt_solver"].bool_() if r.given("alt_solver") else False,
+                      rotation_speed=r["rotation_speed"].f32() if r.given("rotation_speed") else 0.0)
 PLAYER_ID_RANGE = (0x50000001, 0x5FFFFFFF)  # ACE.Entity.ObjectGuid.PlayerMin / PlayerMax
 DYNAMIC_ID_RANGE = (0x80000000, 0xFFFFFFFE)  # ObjectGuid.DynamicMin / DynamicMax: a server's generated objects
 

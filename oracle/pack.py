@@ -17,7 +17,7 @@ from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 15
+PACK_VERSION = 16
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -170,9 +170,9 @@ def _child_of(p) -> bytes:
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
 # then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id, speed, origin, orientation
-# (w x y z), lead_target, arc, tracking, alt_solver
+# (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none)
 _NO_LAUNCH = b"\0"
-_LAUNCH = struct.Struct("<BiIIf3f4fBBBB")
+_LAUNCH = struct.Struct("<BiIIf3f4fBBBBf")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -214,7 +214,7 @@ def pack_scene(scene: Scene) -> bytes:
         out.append(_NO_LAUNCH if la is None else
                    _LAUNCH.pack(1, la.tick, la.launcher, la.target, la.speed, *la.origin, *la.orientation,
                                 1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0,
-                                1 if la.alt_solver else 0))
+                                1 if la.alt_solver else 0, la.rotation_speed))
     return b"".join(out)
 
 

@@ -46,7 +46,7 @@ from .land.lscape import LScape
 from .physics_obj import PhysicsObj
 from .physics_timer import PhysicsTimer
 from .weenie_object import WeenieObject
-from .world_objects import Ammunition, Creature, GenericObject, Player, SpellProjectile
+from .world_objects import Ammunition, Creature, GenericObject, Missile, Player, SpellProjectile
 from .world_objects.spell_projectile import ARC, BOLT
 from . import missile_launch
 from .server_landblock import Landblock as ServerLandblock
@@ -113,7 +113,7 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     (parenting.set_parent: SetPlacementFrame, set_parent); its placement's result is set_parent's answer and it is
     never in the world itself (no tick steps it: its parent's UpdateChild carries it)."""
     mode = lscape.mode
-    if o.weenie in ("object", "ammunition", "spell_projectile"):
+    if o.weenie in ("object", "ammunition", "spell_projectile", "missile"):
         obj = PhysicsObj.make_object(did, o.id, True, portal_dat)
     else:
         obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
@@ -148,15 +148,17 @@ def world_object_of(o: OtherMover):
     """The server's WorldObject for another mover: a Player, a Creature, a GenericObject, or a projectile's Ammunition
     or SpellProjectile (a Bolt, or an Arc: the two ProjectileSpellTypes a scene's spell flies as). A monster is a Creature
     with IsMonster (Creature.SetMonsterState: Attackable, ACE's default for an object without the property); an NPC
-    one that is not Attackable, so not a monster."""
+    one that is not Attackable, so not a monster. A projectile's RotationSpeed is its launch's (0: none, ACE's null)."""
     if o.weenie == "player":
         return Player(guid=o.id, player_killer_status=o.player_killer_status)
     if o.weenie == "object":
         return GenericObject(guid=o.id)
     if o.weenie == "ammunition":
-        return Ammunition(guid=o.id)
+        return Ammunition(guid=o.id, rotation_speed=o.launch.rotation_speed or None)
+    if o.weenie == "missile":  # a thrown weapon
+        return Missile(guid=o.id, rotation_speed=o.launch.rotation_speed or None)
     if o.weenie == "spell_projectile":
-        return SpellProjectile(guid=o.id, spell_type=ARC if o.launch.arc else BOLT)
+        return SpellProjectile(guid=o.id, spell_type=ARC if o.launch.arc else BOLT, rotation_speed=o.launch.rotation_speed or None)
     monster = o.weenie == "monster"
     return Creature(guid=o.id, is_monster=monster, attackable=monster, player_killer_status=o.player_killer_status)
 

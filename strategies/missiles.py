@@ -105,7 +105,8 @@ ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target"
                 "out_of_range": ("creature_at_wall", "moving_target", "wall"), "overhead": ("creature_at_wall", "moving_target"),
                 "fast_target": ("moving_target",), "tiny_target": ("moving_target",), "timeout": ("moving_target",),
                 "across": ("moving_target",), "run_into": ("moving_target",),
-                "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall")}
+                "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall"),
+                "trap": ("moving_target", "moving_target", "creature_at_wall", "wall")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
 FAR = dr.f32(10.0, 25.0)
 FAST_SPEEDS = dr.OneOf(st.sampled_from((12.0, 20.0)), dr.f32(8.0, 30.0))  # outrunning a spell of 3-10 m/s
@@ -122,6 +123,9 @@ REPORT_ROLES = st.sampled_from(("mover_is_target", "mover_is_target", "mover_cro
 PUSHES = dr.f32(1.0, 4.0)  # report: a crate (weenie object) pushed into the target
 RUN_SPEEDS = dr.f32(6.0, 12.0)  # run_into: the player runs at the arrow about as fast as it flies, so his own
 RUN_ARROW_SPEEDS = dr.f32(6.0, 9.0)  # step meets it about one time in two
+# spin: a projectile's RotationSpeed (revolutions a second; ACE's weenies give some arrows, bolts, thrown weapons and
+# spells one, of either sign): Omega about its x axis, AlignPath cleared
+ROTATION_SPEEDS = dr.OneOf(st.sampled_from((1.0, 0.5, 2.0, -1.0)), dr.f32(-4.0, 4.0))
 
 
 def _carrying(draw, others: tuple, projectile: OtherMover, carried: str) -> tuple:
@@ -207,7 +211,13 @@ def draw_launch_scene(draw) -> Scene:
     One more arm, `across` (the player at a monster just over the landblock's north border: a launch both sides
     refuse, ACE.Entity.Position.ToGlobal not being modelled), and `run_into` (a monster 3-6 m off shoots a 6-9 m/s arrow
     at the player, who reports collisions and runs at it at 6-12 m/s: his own step meets the arrow aimed at him, the
-    player's OnCollideObject and the helper's hit) are drawn only by name: draw_missile_scene(draw, ARM)."""
+    player's OnCollideObject and the helper's hit) are drawn only by name: draw_missile_scene(draw, ARM). So are
+    `spin` (the projectile has a RotationSpeed, scene/8 launch.rotation_speed: SetProjectilePhysicsState or
+    SpellProjectile.Setup clears AlignPath and sets Omega, and it tumbles as it flies) and `trap` (a GenericObject
+    casts the spell at the player, as ACE's EmoteManager casts a trap's or any non-creature emoter's spell,
+    WorldObject.TryCastSpell_WithRedirects: IsProjectileVisible's launcher that is no Creature) and `thrown` (a
+    thrown weapon, weenie missile, ACE's Missile: launched as an arrow, it runs WorldObject's OnCollideObject and
+    OnCollideEnvironment, the helper's with its ProjectileTarget; half the time spinning, as thrown weapons do)."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -239,6 +249,10 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         player_launches = True
     if arm == "run_into":  # a monster shoots a slow arrow at the player, who runs at it
         player_launches, arrow = False, True
+    if arm == "thrown":
+        arrow = True
+    if arm == "trap":  # an object casts a spell at the player (only a Creature launches an arrow: LaunchProjectile)
+        player_launches, arrow = False, False
     if arm == "timeout":  # the player launches at a monster hovering 2-5 m up (no Gravity), which moves out of the way
         n, dt = 310, 0.1
         player_launches = True
@@ -274,7 +288,8 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
     else:
         launcher_at, launcher = (x0, y0), CASTER
         mover_at = (tx, ty)
-        monsters.append(_monster(CASTER, lb, x0, y0, ground, body))
+        caster = _monster(CASTER, lb, x0, y0, ground, body)
+        monsters.append(replace(caster, weenie="object") if arm == "trap" else caster)
     if crosser is None:
         target = MONSTER
     if policy == "wall":
@@ -347,7 +362,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
             speeds = CRAWL_SPEEDS
         launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, speeds)), origin, _heading(ux, uy),
                         lead_target=draw(dr.BOOLEANS), alt_solver=alt_solver)
-        projectile = OtherMover(PROJECTILE, "ammunition", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
+        projectile = OtherMover(PROJECTILE, "missile" if arm == "thrown" else "ammunition", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
                                 state=int(PhysicsState.Gravity), transient_state=0, launch=launch)
     else:
@@ -361,6 +376,9 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
                                 state=0, transient_state=0, launch=launch)
+    if arm == "spin" or (arm == "thrown" and draw(dr.BOOLEANS)):
+        launch = replace(launch, rotation_speed=to_f32(dr.take(draw, ROTATION_SPEEDS)))
+        projectile = replace(projectile, launch=launch)
     walkers = {}  # id -> velocity, per tick
     if crosser is not None:
         walk, walker = _crossing(draw, x0, y0, ux, uy, d, dt, n, launch_tick, float(launch.speed), arm)

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 15;
+        public const int PackVersion = 16;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -134,6 +134,7 @@ namespace Acconform.Oracle
             public int ParentLocation, Placement;
             // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
             public bool HasLaunch, LeadTarget, Arc, Tracking, AltSolver;
+            public float RotationSpeed;  // the projectile's RotationSpeed (a weenie property; 0: none, left null)
             public int LaunchTick;
             public uint Launcher, Target;
             public float Speed;
@@ -1144,6 +1145,9 @@ namespace Acconform.Oracle
             if (o.Weenie == 4)
                 return MakeWorldObject(typeof(ACE.Server.WorldObjects.Ammunition), typeof(ACE.Server.WorldObjects.Ammunition),
                                        "Ammunition", o.Id, out fromBiota);
+            if (o.Weenie == 6)  // a thrown weapon (WeenieType Missile)
+                return MakeWorldObject(typeof(ACE.Server.WorldObjects.Missile), typeof(ACE.Server.WorldObjects.Missile),
+                                       "Missile", o.Id, out fromBiota);
             if (o.Weenie == 5)
             {
                 var sp = (ACE.Server.WorldObjects.SpellProjectile)MakeWorldObject(typeof(ACE.Server.WorldObjects.SpellProjectile),
@@ -2026,7 +2030,8 @@ namespace Acconform.Oracle
 
         /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
         /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position, then byte 0 or a projectile's
-        /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver). They are
+        /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver,
+        /// rotation_speed). They are
         /// made and enter the world after the mover's placement (EnterOthers); a projectile enters at its launch.</summary>
         static void ReadOthers(BinaryReader r)
         {
@@ -2060,6 +2065,7 @@ namespace Acconform.Oracle
                     o.Arc = r.ReadByte() != 0;
                     o.Tracking = r.ReadByte() != 0;
                     o.AltSolver = r.ReadByte() != 0;  // the server property trajectory_alt_solver
+                    o.RotationSpeed = r.ReadSingle();  // the projectile's PropertyFloat.RotationSpeed (0: none)
                 }
                 sceneOthers.Add(o);
             }
@@ -2080,7 +2086,7 @@ namespace Acconform.Oracle
             foreach (var o in sceneOthers)
             {
                 PhysicsObj obj;
-                if (o.Weenie >= 3)  // a GenericObject, an Ammunition or a SpellProjectile: no creature
+                if (o.Weenie >= 3)  // a GenericObject, an Ammunition, a SpellProjectile or a Missile: no creature
                     obj = PhysicsObj.makeObject(o.Did, o.Id, true);
                 else
                 {
@@ -2090,6 +2096,8 @@ namespace Acconform.Oracle
                 o.Obj = obj;
                 obj.set_object_guid(new ObjectGuid(o.Id));
                 o.WorldObject = MakeWorldObject(o);
+                if (o.HasLaunch && o.RotationSpeed != 0)
+                    o.WorldObject.RotationSpeed = o.RotationSpeed;  // the weenie's PropertyFloat, read by the launch
                 obj.set_weenie_obj(new WeenieObject(o.WorldObject));
                 obj.SetMotionTableID(0);
                 obj.SetScaleStatic(o.Scale);
