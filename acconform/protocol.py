@@ -159,6 +159,9 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                         "a thrown weapon (scene/8: others[] of weenie missile, ACE's Missile): launched as an arrow "
                         "(Creature.LaunchProjectile), it keeps WorldObject's OnCollideObject and OnCollideEnvironment, "
                         "ProjectileCollisionHelper's only with a ProjectileTarget (needs missiles)"),
+    "missiles.untargeted": (lambda s: any(o.launch is not None and o.launch.target is None for o in s.others),
+                            "a spell launched at no target (scene/8: a launch without target): "
+                            "WorldObject.CalculateProjectileVelocity's forward vector, no ProjectileTarget (needs missiles)"),
     "missiles.rotation_speed": (lambda s: any(o.launch is not None and o.launch.rotation_speed != 0 for o in s.others),
                                 "a projectile with a RotationSpeed (scene/8: launch.rotation_speed, a weenie property of "
                                 "some arrows, bolts, thrown weapons and spells): SetProjectilePhysicsState or "

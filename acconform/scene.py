@@ -1369,11 +1369,15 @@ class Launch:
     `rotation_speed` is the projectile's RotationSpeed (PropertyFloat, revolutions a second; 0: none, ACE's null),
     a weenie property of some arrows, bolts, thrown weapons and spells: SetProjectilePhysicsState (an arrow) and
     SpellProjectile.Setup (a spell) then clear AlignPath and set Omega = (2 pi RotationSpeed, 0, 0), so it
-    tumbles as it flies (feature missiles.rotation_speed)."""
+    tumbles as it flies (feature missiles.rotation_speed). A spell may have no `target` (None; feature
+    missiles.untargeted): as ACE launches an untargeted cast, a side projectile of a multi-projectile spell or a
+    trap's emote cast at no one, WorldObject.CalculateProjectileVelocity sends it along the caster's forward vector
+    (Vector3.Transform(UnitY, the launcher's orientation) * speed: the launcher has no AttackTarget) and it flies
+    with no ProjectileTarget."""
 
     tick: int
     launcher: int
-    target: int
+    target: int | None
     speed: float
     origin: Vec3
     orientation: Quat = IDENTITY
@@ -1384,8 +1388,10 @@ class Launch:
     rotation_speed: float = 0.0
 
     def to_json(self, spell: bool) -> dict:
-        d = {"tick": self.tick, "launcher": write_id(self.launcher), "target": write_id(self.target),
-             "speed": write_f32(self.speed), "origin": write_vec(self.origin)}
+        d = {"tick": self.tick, "launcher": write_id(self.launcher)}
+        if self.target is not None:  # a spell may have none
+            d["target"] = write_id(self.target)
+        d |= {"speed": write_f32(self.speed), "origin": write_vec(self.origin)}
         if spell:
             d["arc"] = self.arc
             d["tracking"] = self.tracking
@@ -1402,11 +1408,15 @@ class Launch:
     def from_json(r: Reader, spell: bool) -> "Launch":
         r.obj({"tick", "launcher", "target", "speed", "origin", "alt_solver", "rotation_speed",
                *(("arc", "tracking") if spell else ("orientation", "lead_target"))})
+        if not spell and not r.given("target"):
+            r.fail("an arrow's or a thrown weapon's launch names its target (Creature.LaunchProjectile aims at one); "
+                   "only a spell may have none")
         speed = r["speed"].f32()
         if not speed > 0:
             r["speed"].fail(f"a launch speed is positive, got {speed}")
         frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
-        return Launch(tick=r["tick"].int_(0, 2 ** 31 - 1), launcher=r["launcher"].id_(), target=r["target"].id_(), speed=speed,
+        return Launch(tick=r["tick"].int_(0, 2 ** 31 - 1), launcher=r["launcher"].id_(),
+                      target=r["target"].id_() if r.given("target") else None, speed=speed,
                       origin=frame.origin, orientation=frame.orientation,
                       lead_target=r["lead_target"].bool_() if r.given("lead_target") else True,
                       arc=r["arc"].bool_() if r.given("arc") else False,
@@ -1886,6 +1896,8 @@ def _check_launches(scene: Scene, path: str, by_id: dict) -> None:
             raise InvalidScene(f"{where}.{key}", f"no mover{' or static' if key == 'target' else ''} has id 0x{value:08X}; {what}")
 
         mover("launcher", launch.launcher, "the launcher is the mover (0x50000001) or another mover that is no projectile")
+        if launch.target is None:  # an untargeted spell (Launch.from_json refuses an arrow without one)
+            continue
         mover("target", launch.target, "the target is the mover, another mover that is no projectile, or an outdoor static")
         if launch.launcher == launch.target:
             raise InvalidScene(f"{where}.target", f"the launcher 0x{launch.launcher:08X} cannot be its own target")

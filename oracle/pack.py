@@ -169,7 +169,7 @@ def _child_of(p) -> bytes:
 # ... then the Player's skills (acconform.scene.MoverSkills): Run, Jump, Stamina, Strength (u32), EncumbranceVal and
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
-# then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id, speed, origin, orientation
+# then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id (0: none, an untargeted spell), speed, origin, orientation
 # (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none)
 _NO_LAUNCH = b"\0"
 _LAUNCH = struct.Struct("<BiIIf3f4fBBBBf")
@@ -212,7 +212,7 @@ def pack_scene(scene: Scene) -> bytes:
         out.append(_NOT_A_CHILD if p is None else _child_of(p))
         la = o.launch
         out.append(_NO_LAUNCH if la is None else
-                   _LAUNCH.pack(1, la.tick, la.launcher, la.target, la.speed, *la.origin, *la.orientation,
+                   _LAUNCH.pack(1, la.tick, la.launcher, la.target or 0, la.speed, *la.origin, *la.orientation,
                                 1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0,
                                 1 if la.alt_solver else 0, la.rotation_speed))
     return b"".join(out)

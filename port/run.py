@@ -823,7 +823,8 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
                 if launch is not None and launch.tick == index:
                     launcher = by_id[launch.launcher]
                     landblock = landblocks.setdefault(launcher.position.landblock, ServerLandblock(launcher.position.landblock))
-                    missile_launch.scene_launch(obj.weenie_obj.world_object, launch, launcher, by_id[launch.target],
+                    missile_launch.scene_launch(obj.weenie_obj.world_object, launch, launcher,
+                                                by_id[launch.target] if launch.target is not None else None,
                                                 landblock, lscape, trace)
                     stepped[k] = True
             timer.set(time)

@@ -106,7 +106,8 @@ ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target"
                 "fast_target": ("moving_target",), "tiny_target": ("moving_target",), "timeout": ("moving_target",),
                 "across": ("moving_target",), "run_into": ("moving_target",),
                 "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall"),
-                "trap": ("moving_target", "moving_target", "creature_at_wall", "wall")}
+                "trap": ("moving_target", "moving_target", "creature_at_wall", "wall"),
+                "untargeted": ("moving_target", "creature_at_wall", "wall", "graze_cylsphere", "through_door")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
 FAR = dr.f32(10.0, 25.0)
 FAST_SPEEDS = dr.OneOf(st.sampled_from((12.0, 20.0)), dr.f32(8.0, 30.0))  # outrunning a spell of 3-10 m/s
@@ -217,7 +218,9 @@ def draw_launch_scene(draw) -> Scene:
     casts the spell at the player, as ACE's EmoteManager casts a trap's or any non-creature emoter's spell,
     WorldObject.TryCastSpell_WithRedirects: IsProjectileVisible's launcher that is no Creature) and `thrown` (a
     thrown weapon, weenie missile, ACE's Missile: launched as an arrow, it runs WorldObject's OnCollideObject and
-    OnCollideEnvironment, the helper's with its ProjectileTarget; half the time spinning, as thrown weapons do)."""
+    OnCollideEnvironment, the helper's with its ProjectileTarget; half the time spinning, as thrown weapons do), and
+    `untargeted` (a spell cast at no one, scene/8 a launch without target: along its caster's forward vector, with
+    no ProjectileTarget; the caster the player, a monster or, half the time a monster would, an object)."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -251,6 +254,8 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         player_launches, arrow = False, True
     if arm == "thrown":
         arrow = True
+    if arm == "untargeted":
+        arrow = False
     if arm == "trap":  # an object casts a spell at the player (only a Creature launches an arrow: LaunchProjectile)
         player_launches, arrow = False, False
     if arm == "timeout":  # the player launches at a monster hovering 2-5 m up (no Gravity), which moves out of the way
@@ -289,7 +294,8 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         launcher_at, launcher = (x0, y0), CASTER
         mover_at = (tx, ty)
         caster = _monster(CASTER, lb, x0, y0, ground, body)
-        monsters.append(replace(caster, weenie="object") if arm == "trap" else caster)
+        trap = arm == "trap" or (arm == "untargeted" and draw(dr.BOOLEANS))
+        monsters.append(replace(caster, weenie="object") if trap else caster)
     if crosser is None:
         target = MONSTER
     if policy == "wall":
@@ -376,6 +382,9 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
                                 state=0, transient_state=0, launch=launch)
+    if arm == "untargeted":
+        launch = replace(launch, target=None)
+        projectile = replace(projectile, launch=launch)
     if arm == "spin" or (arm == "thrown" and draw(dr.BOOLEANS)):
         launch = replace(launch, rotation_speed=to_f32(dr.take(draw, ROTATION_SPEEDS)))
         projectile = replace(projectile, launch=launch)

@@ -553,19 +553,30 @@ namespace Acconform.Oracle
         static void SceneLaunch(Other o, PhysicsObj mover)
         {
             var launcherObj = FindObj(o.Launcher, mover);
-            var targetObj = FindObj(o.Target, mover);
-            if (launcherObj.Position.Landblock != targetObj.Position.Landblock)
+            var targetObj = o.Target != 0 ? FindObj(o.Target, mover) : null;  // 0: an untargeted spell
+            if (targetObj != null && launcherObj.Position.Landblock != targetObj.Position.Landblock)
                 throw new NotSupportedException("acconform: a launch across landblocks (ACE.Entity.Position.ToGlobal) is not modelled");
             o.Launched = true;
             o.CreationTime = PhysicsTimer.CurrentTime;
             var wo = o.WorldObject;
             var launcher = launcherObj.WeenieObj.WorldObject;
-            var target = targetObj.WeenieObj.WorldObject;
+            var target = targetObj?.WeenieObj.WorldObject;
             var origin = o.Origin;
-            var endPos = targetObj.Position.Frame.Origin;
-            var height = targetObj.GetHeight();
             var landblock = ServerLandblockOf(launcherObj.Position.ObjCellID);
             var sp = wo as ACE.Server.WorldObjects.SpellProjectile;
+            if (sp != null && targetObj == null)
+            {
+                // WorldObject.CalculateProjectileVelocity with no target (the launcher has no AttackTarget): launch along
+                // forward vector, casterLoc.Rotation being the launcher's PhysicsObj's orientation
+                var forward = Vector3.Transform(Vector3.UnitY, launcherObj.Position.Frame.Orientation) * o.Speed;
+                SpellProjectileSetup(sp);
+                SpellProjectileSetPhysicsState(sp, null, null, forward, origin, o.Arc);
+                LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
+                                      sp.PhysicsObj.Position.Frame.Orientation);
+                return;
+            }
+            var endPos = targetObj.Position.Frame.Origin;
+            var height = targetObj.GetHeight();
             if (sp != null)
             {
                 endPos.Z += height * (o.Arc ? 5.0f / 6.0f : 2.0f / 3.0f);  // ProjHeightArc, ProjHeight
