@@ -162,6 +162,10 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "missiles.untargeted": (lambda s: any(o.launch is not None and o.launch.target is None for o in s.others),
                             "a spell launched at no target (scene/8: a launch without target): "
                             "WorldObject.CalculateProjectileVelocity's forward vector, no ProjectileTarget (needs missiles)"),
+    "missiles.spells": (lambda s: any(o.launch is not None and o.launch.spell != "plain" for o in s.others),
+                        "a spell of a kind SpellProjectile.Setup tells apart (scene/8: launch.spell rolling_death, wall, "
+                        "ring or ring_3818): Ethereal left for Rolling Death, ScriptedCollision cleared for some wall "
+                        "spells and Ring spells, set for Ring spell 3818 (needs missiles)"),
     "missiles.rotation_speed": (lambda s: any(o.launch is not None and o.launch.rotation_speed != 0 for o in s.others),
                                 "a projectile with a RotationSpeed (scene/8: launch.rotation_speed, a weenie property of "
                                 "some arrows, bolts, thrown weapons and spells): SetProjectilePhysicsState or "

@@ -1373,7 +1373,8 @@ class Launch:
     missiles.untargeted): as ACE launches an untargeted cast, a side projectile of a multi-projectile spell or a
     trap's emote cast at no one, WorldObject.CalculateProjectileVelocity sends it along the caster's forward vector
     (Vector3.Transform(UnitY, the launcher's orientation) * speed: the launcher has no AttackTarget) and it flies
-    with no ProjectileTarget."""
+    with no ProjectileTarget. `spell` is the spell's kind as SpellProjectile.Setup reads it (SPELL_KINDS; feature
+    missiles.spells): its name (Rolling Death), its projectile's weenie (a wall's) or its SpellType (Ring)."""
 
     tick: int
     launcher: int
@@ -1386,6 +1387,7 @@ class Launch:
     tracking: bool = False
     alt_solver: bool = False
     rotation_speed: float = 0.0
+    spell: str = "plain"
 
     def to_json(self, spell: bool) -> dict:
         d = {"tick": self.tick, "launcher": write_id(self.launcher)}
@@ -1402,15 +1404,22 @@ class Launch:
             d["alt_solver"] = True
         if self.rotation_speed != 0:  # written only when set, as alt_solver
             d["rotation_speed"] = write_f32(self.rotation_speed)
+        if self.spell != "plain":  # a spell's, written only when not plain
+            d["spell"] = self.spell
         return d
 
     @staticmethod
     def from_json(r: Reader, spell: bool) -> "Launch":
         r.obj({"tick", "launcher", "target", "speed", "origin", "alt_solver", "rotation_speed",
-               *(("arc", "tracking") if spell else ("orientation", "lead_target"))})
+               *(("arc", "tracking", "spell") if spell else ("orientation", "lead_target"))})
         if not spell and not r.given("target"):
             r.fail("an arrow's or a thrown weapon's launch names its target (Creature.LaunchProjectile aims at one); "
                    "only a spell may have none")
+        kind = r["spell"].str_() if r.given("spell") else "plain"
+        if kind not in SPELL_KINDS:
+            r["spell"].fail(f"unknown spell kind {kind!r} (known: {', '.join(SPELL_KINDS)})")
+        if kind in ("wall", "ring", "ring_3818") and r.given("arc") and r["arc"].bool_():
+            r["arc"].fail(f"a {kind} spell is no Arc (its SpellType is {'Wall' if kind == 'wall' else 'Ring'}): arc is false")
         speed = r["speed"].f32()
         if not speed > 0:
             r["speed"].fail(f"a launch speed is positive, got {speed}")
@@ -1422,7 +1431,12 @@ class Launch:
                       arc=r["arc"].bool_() if r.given("arc") else False,
                       tracking=r["tracking"].bool_() if r.given("tracking") else False,
                       alt_solver=r["alt_solver"].bool_() if r.given("alt_solver") else False,
-                      rotation_speed=r["rotation_speed"].f32() if r.given("rotation_speed") else 0.0)
+                      rotation_speed=r["rotation_speed"].f32() if r.given("rotation_speed") else 0.0, spell=kind)
+# A spell's kind as SpellProjectile.Setup reads it (scene/8 launch.spell, feature missiles.spells): `plain` a Bolt or,
+# with `arc`, an Arc; `rolling_death` the spell named "Rolling Death", whose Setup leaves Ethereal as the projectile was
+# made; `wall` a wall spell of a weenie (7278, 7281, 7282, 23144) whose Setup clears ScriptedCollision (SpellType Wall);
+# `ring` a Ring spell other than 3818 (ScriptedCollision cleared) and `ring_3818` Ring spell 3818 (ScriptedCollision set)
+SPELL_KINDS = ("plain", "rolling_death", "wall", "ring", "ring_3818")
 PLAYER_ID_RANGE = (0x50000001, 0x5FFFFFFF)  # ACE.Entity.ObjectGuid.PlayerMin / PlayerMax
 DYNAMIC_ID_RANGE = (0x80000000, 0xFFFFFFFE)  # ObjectGuid.DynamicMin / DynamicMax: a server's generated objects
 

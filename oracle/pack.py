@@ -14,7 +14,7 @@ from ..outcome import (CollisionState, CommandState, ContactPlaneState, MotionTi
                        PlacementState, PlaneState, TickState)
 from ..dat import cell_landblock, has_objects, scene_records
 from ..motion_scene import MOTION_TABLE_ID, STOPS
-from ..scene import DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
+from ..scene import SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
 PACK_VERSION = 16
@@ -170,9 +170,10 @@ def _child_of(p) -> bytes:
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
 # then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id (0: none, an untargeted spell), speed, origin, orientation
-# (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none)
+# (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none), the spell's kind
+# (byte: its index in acconform.scene.SPELL_KINDS)
 _NO_LAUNCH = b"\0"
-_LAUNCH = struct.Struct("<BiIIf3f4fBBBBf")
+_LAUNCH = struct.Struct("<BiIIf3f4fBBBBfB")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -214,7 +215,8 @@ def pack_scene(scene: Scene) -> bytes:
         out.append(_NO_LAUNCH if la is None else
                    _LAUNCH.pack(1, la.tick, la.launcher, la.target or 0, la.speed, *la.origin, *la.orientation,
                                 1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0,
-                                1 if la.alt_solver else 0, la.rotation_speed))
+                                1 if la.alt_solver else 0, la.rotation_speed,
+                                SPELL_KINDS.index(la.spell)))
     return b"".join(out)
 
 

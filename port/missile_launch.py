@@ -440,11 +440,20 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
     speed = s(launch.speed)
     origin = mode.vec(*launch.origin)
 
+    # what SpellProjectile.Setup does to ScriptedCollision for the scene's spell kind: a wall spell's weenie (7278,
+    # 7281, 7282, 23144) clears it; SpellType Ring sets it for spell 3818, else clears it; otherwise left (None)
+    scripted_collision = None
+    if isinstance(wo, SpellProjectile):
+        if wo.spell_type == RING:
+            scripted_collision = launch.spell == "ring_3818"
+        elif launch.spell == "wall":
+            scripted_collision = False
+
     if isinstance(wo, SpellProjectile) and target_obj is None:
         # launch along forward vector (casterLoc.Rotation: the launcher's Location, its PhysicsObj's Position)
         unit_y = mode.vec(0.0, 1.0, 0.0)
         velocity = runtime.transform_by_quaternion(unit_y, launcher_obj.position.frame.orientation) * speed
-        spell_projectile_setup(wo)
+        spell_projectile_setup(wo, launch.spell == "rolling_death", scripted_collision)
         spell_projectile_set_physics_state(wo, None, None, velocity, origin)
         location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
         return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)
@@ -456,7 +465,7 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
         target_velocity = target_obj.cached_velocity if launch.tracking else zero_like(speed)
         velocity = calculate_spell_projectile_velocity(origin, end_pos, speed, target_velocity, wo.spell_type,
                                                        launch.alt_solver, runtime)
-        spell_projectile_setup(wo)
+        spell_projectile_setup(wo, launch.spell == "rolling_death", scripted_collision)
         spell_projectile_set_physics_state(wo, target, target_obj, velocity, origin)
         location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
         return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)

@@ -47,7 +47,7 @@ from .physics_obj import PhysicsObj
 from .physics_timer import PhysicsTimer
 from .weenie_object import WeenieObject
 from .world_objects import Ammunition, Creature, GenericObject, Missile, Player, SpellProjectile
-from .world_objects.spell_projectile import ARC, BOLT
+from .world_objects.spell_projectile import ARC, BOLT, RING, WALL
 from . import missile_launch
 from .server_landblock import Landblock as ServerLandblock
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
@@ -158,7 +158,9 @@ def world_object_of(o: OtherMover):
     if o.weenie == "missile":  # a thrown weapon
         return Missile(guid=o.id, rotation_speed=o.launch.rotation_speed or None)
     if o.weenie == "spell_projectile":
-        return SpellProjectile(guid=o.id, spell_type=ARC if o.launch.arc else BOLT, rotation_speed=o.launch.rotation_speed or None)
+        kind = o.launch.spell
+        spell_type = WALL if kind == "wall" else RING if kind in ("ring", "ring_3818") else ARC if o.launch.arc else BOLT
+        return SpellProjectile(guid=o.id, spell_type=spell_type, rotation_speed=o.launch.rotation_speed or None)
     monster = o.weenie == "monster"
     return Creature(guid=o.id, is_monster=monster, attackable=monster, player_killer_status=o.player_killer_status)
 

@@ -39,6 +39,7 @@ from hypothesis import strategies as st
 
 from acconform.flags import ParentLocation, PhysicsState, PlayerKillerStatus, TransientState
 from acconform.numerics import to_f32
+from acconform.scene import SPELL_KINDS
 from acconform.scene import (ChildOf, CylSphereShape, ContactPlane, Frame, HoldingLocation, Landblock, Launch, Mover, OtherInputs, OtherMover,
                              Placement, PlaneRec, Position, Scene, SphereRec, StaticObject, Ticks, TickStep, validate_scene)
 from acconform.strategies.shapes import box
@@ -107,6 +108,7 @@ ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target"
                 "across": ("moving_target",), "run_into": ("moving_target",),
                 "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall"),
                 "trap": ("moving_target", "moving_target", "creature_at_wall", "wall"),
+                "spells": ("moving_target", "creature_at_wall", "wall", "through_door"),
                 "untargeted": ("moving_target", "creature_at_wall", "wall", "graze_cylsphere", "through_door")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
 FAR = dr.f32(10.0, 25.0)
@@ -220,7 +222,9 @@ def draw_launch_scene(draw) -> Scene:
     thrown weapon, weenie missile, ACE's Missile: launched as an arrow, it runs WorldObject's OnCollideObject and
     OnCollideEnvironment, the helper's with its ProjectileTarget; half the time spinning, as thrown weapons do), and
     `untargeted` (a spell cast at no one, scene/8 a launch without target: along its caster's forward vector, with
-    no ProjectileTarget; the caster the player, a monster or, half the time a monster would, an object)."""
+    no ProjectileTarget; the caster the player, a monster or, half the time a monster would, an object), and `spells`
+    (scene/8 launch.spell: Rolling Death, made Ethereal half the time, which its Setup leaves; a wall spell, a Ring
+    spell or Ring spell 3818, whose Setup clears or sets ScriptedCollision; a Ring spell at no target half the time)."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -254,7 +258,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         player_launches, arrow = False, True
     if arm == "thrown":
         arrow = True
-    if arm == "untargeted":
+    if arm in ("untargeted", "spells"):
         arrow = False
     if arm == "trap":  # an object casts a spell at the player (only a Creature launches an arrow: LaunchProjectile)
         player_launches, arrow = False, False
@@ -373,16 +377,18 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
                                 state=int(PhysicsState.Gravity), transient_state=0, launch=launch)
     else:
         radius = float(dr.take(draw, SPELL_RADII))
-        arc = draw(st.sampled_from((False, False, True))) if arm != "timeout" else False
+        kind = draw(st.sampled_from(SPELL_KINDS[1:])) if arm == "spells" else "plain"
+        arc = draw(st.sampled_from((False, False, True))) if arm != "timeout" and kind in ("plain", "rolling_death") else False
         speeds = {"fast_target": SLOW_SPELL_SPEEDS, "timeout": TIMEOUT_SPEEDS}.get(arm, SPELL_SPEEDS)
         if arm == "alt_solver" and draw(st.sampled_from((False, False, True))):
             speeds = CRAWL_SPEEDS
         launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, speeds)), origin, arc=arc,
-                        tracking=draw(dr.BOOLEANS) if arm != "timeout" else False, alt_solver=alt_solver)
+                        tracking=draw(dr.BOOLEANS) if arm != "timeout" else False, alt_solver=alt_solver, spell=kind)
         projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
-                                state=0, transient_state=0, launch=launch)
-    if arm == "untargeted":
+                                state=int(PhysicsState.Ethereal) if kind == "rolling_death" and draw(dr.BOOLEANS) else 0,
+                                transient_state=0, launch=launch)
+    if arm == "untargeted" or (not arrow and launch.spell.startswith("ring") and draw(dr.BOOLEANS)):
         launch = replace(launch, target=None)
         projectile = replace(projectile, launch=launch)
     if arm == "spin" or (arm == "thrown" and draw(dr.BOOLEANS)):

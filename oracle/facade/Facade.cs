@@ -135,6 +135,7 @@ namespace Acconform.Oracle
             // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
             public bool HasLaunch, LeadTarget, Arc, Tracking, AltSolver;
             public float RotationSpeed;  // the projectile's RotationSpeed (a weenie property; 0: none, left null)
+            public byte SpellKind;  // acconform.scene.SPELL_KINDS: 0 plain, 1 Rolling Death, 2 a wall, 3 a Ring, 4 Ring spell 3818
             public int LaunchTick;
             public uint Launcher, Target;
             public float Speed;
@@ -569,7 +570,7 @@ namespace Acconform.Oracle
                 // WorldObject.CalculateProjectileVelocity with no target (the launcher has no AttackTarget): launch along
                 // forward vector, casterLoc.Rotation being the launcher's PhysicsObj's orientation
                 var forward = Vector3.Transform(Vector3.UnitY, launcherObj.Position.Frame.Orientation) * o.Speed;
-                SpellProjectileSetup(sp);
+                SpellProjectileSetup(sp, o.SpellKind);
                 SpellProjectileSetPhysicsState(sp, null, null, forward, origin, o.Arc);
                 LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
                                       sp.PhysicsObj.Position.Frame.Orientation);
@@ -582,7 +583,7 @@ namespace Acconform.Oracle
                 endPos.Z += height * (o.Arc ? 5.0f / 6.0f : 2.0f / 3.0f);  // ProjHeightArc, ProjHeight
                 var targetVelocity = o.Tracking ? targetObj.CachedVelocity : Vector3.Zero;
                 var velocity = CalculateSpellProjectileVelocity(origin, endPos, o.Speed, targetVelocity, o.Arc, o.AltSolver);
-                SpellProjectileSetup(sp);
+                SpellProjectileSetup(sp, o.SpellKind);
                 SpellProjectileSetPhysicsState(sp, target, targetObj, velocity, origin, o.Arc);
                 LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
                                       sp.PhysicsObj.Position.Frame.Orientation);
@@ -717,17 +718,29 @@ namespace Acconform.Oracle
             proj.PhysicsObj.set_active(true);
         }
 
-        /// <summary>port: spell_projectile_setup. SpellProjectile.Setup after InitPhysicsObj (not Rolling Death, no wall or
-        /// Ring spell: ScriptedCollision left).</summary>
-        static void SpellProjectileSetup(ACE.Server.WorldObjects.SpellProjectile sp)
+        /// <summary>port: spell_projectile_setup. SpellProjectile.Setup after InitPhysicsObj, the spell as the scene's kind
+        /// says (`kind`, acconform.scene.SPELL_KINDS): Spell.Name "Rolling Death" (1) leaves Ethereal; a wall spell's
+        /// weenie (7278, 7281, 7282, 23144: 2) clears ScriptedCollision; SpellType Ring clears it (3) or, spell 3818 (4),
+        /// sets it.</summary>
+        static void SpellProjectileSetup(ACE.Server.WorldObjects.SpellProjectile sp, byte kind)
         {
             sp.ReportCollisions = true;
             sp.Missile = true;
             sp.AlignPath = true;
             sp.PathClipped = true;
             sp.IgnoreCollisions = false;
-            sp.Ethereal = false;
+            if (kind != 1)  // !Spell.Name.Equals("Rolling Death")
+                sp.Ethereal = false;
+            if (kind == 2)  // WeenieClassId 7278, 7281, 7282 or 23144: some wall spells have no scripted collisions
+                sp.ScriptedCollision = false;
             sp.AllowEdgeSlide = false;
+            if (sp.SpellType == ACE.Server.Entity.ProjectileSpellType.Ring)
+            {
+                if (kind == 4)  // spell.Id == 3818
+                    sp.ScriptedCollision = true;
+                else
+                    sp.ScriptedCollision = false;
+            }
             if ((sp.RotationSpeed ?? 0) != 0)
             {
                 sp.AlignPath = false;
@@ -1163,7 +1176,9 @@ namespace Acconform.Oracle
             {
                 var sp = (ACE.Server.WorldObjects.SpellProjectile)MakeWorldObject(typeof(ACE.Server.WorldObjects.SpellProjectile),
                     typeof(ACE.Server.WorldObjects.SpellProjectile), "ProjectileSpell", o.Id, out fromBiota);
-                sp.SpellType = o.Arc ? ACE.Server.Entity.ProjectileSpellType.Arc : ACE.Server.Entity.ProjectileSpellType.Bolt;
+                sp.SpellType = o.SpellKind == 2 ? ACE.Server.Entity.ProjectileSpellType.Wall
+                             : o.SpellKind >= 3 ? ACE.Server.Entity.ProjectileSpellType.Ring
+                             : o.Arc ? ACE.Server.Entity.ProjectileSpellType.Arc : ACE.Server.Entity.ProjectileSpellType.Bolt;
                 return sp;
             }
             var creature = (ACE.Server.WorldObjects.Creature)MakeWorldObject(typeof(ACE.Server.WorldObjects.Creature),
@@ -2042,7 +2057,7 @@ namespace Acconform.Oracle
         /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
         /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position, then byte 0 or a projectile's
         /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver,
-        /// rotation_speed). They are
+        /// rotation_speed, the spell's kind). They are
         /// made and enter the world after the mover's placement (EnterOthers); a projectile enters at its launch.</summary>
         static void ReadOthers(BinaryReader r)
         {
@@ -2077,6 +2092,7 @@ namespace Acconform.Oracle
                     o.Tracking = r.ReadByte() != 0;
                     o.AltSolver = r.ReadByte() != 0;  // the server property trajectory_alt_solver
                     o.RotationSpeed = r.ReadSingle();  // the projectile's PropertyFloat.RotationSpeed (0: none)
+                    o.SpellKind = r.ReadByte();  // what SpellProjectile.Setup reads of the spell: its name, weenie, SpellType
                 }
                 sceneOthers.Add(o);
             }
