@@ -162,6 +162,10 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "missiles.untargeted": (lambda s: any(o.launch is not None and o.launch.target is None for o in s.others),
                             "a spell launched at no target (scene/8: a launch without target): "
                             "WorldObject.CalculateProjectileVelocity's forward vector, no ProjectileTarget (needs missiles)"),
+    "objects.report_collisions": (lambda s: any(o.report_collisions is not None for o in s.others),
+                                  "another mover whose WorldObject carries the property ReportCollisions (scene/8: "
+                                  "others[].report_collisions): a Player's or a Creature's OnCollideObject with one whose "
+                                  "property is false returns at once"),
     "missiles.spells": (lambda s: any(o.launch is not None and o.launch.spell != "plain" for o in s.others),
                         "a spell of a kind SpellProjectile.Setup tells apart (scene/8: launch.spell rolling_death, wall, "
                         "ring or ring_3818): Ethereal left for Rolling Death, ScriptedCollision cleared for some wall "
@@ -228,6 +232,8 @@ def _other_json(o: DatOther) -> dict:
         d["parent"] = o.parent.to_json()
     if o.launch is not None:
         d["launch"] = o.launch.to_json(o.weenie == "spell_projectile")
+    if o.report_collisions is not None:
+        d["report_collisions"] = o.report_collisions
     return d
 
 
@@ -276,7 +282,7 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
     others = []
     for o in (r["others"].list() if r.given("others") else ()):
         o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status",
-               "parent", "launch"})
+               "parent", "launch", "report_collisions"})
         weenie = o["weenie"].str_()
         if weenie not in WEENIE_CLASSES:
             o["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
@@ -294,7 +300,8 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                                o["transient_state"].flags(TransientState), o["velocity"].vec3(),
                                None if parent is not None else Position.from_json(o["begin"]),
                                o["player_killer_status"].enum_(PlayerKillerStatus) if o.given("player_killer_status")
-                               else PLAYER_KILLER_STATUS_NPK, parent, launch))
+                               else PLAYER_KILLER_STATUS_NPK, parent, launch,
+                               o["report_collisions"].bool_() if o.given("report_collisions") else None))
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
                     tuple(statics), mover, tuple(others))

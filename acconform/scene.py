@@ -1460,7 +1460,11 @@ class OtherMover:
     cylspheres). With `parent` (and no `begin`) it is a child: made as the others are, then held by its parent
     (SetPlacementFrame, set_parent: port/parenting.py) in `others` order instead of entering the world, and never
     stepped itself (its parent's UpdateChild carries it: a server's landblock never ticks a wielded item, which is
-    no landblock object, and update_object of an object with a Parent only clears its Active flag)."""
+    no landblock object, and update_object of an object with a Parent only clears its Active flag).
+
+    `report_collisions` is its WorldObject's PropertyBool.ReportCollisions (None: unset, as made; feature
+    objects.report_collisions), which a weenie may carry: false, a Player's or a Creature's OnCollideObject with it
+    returns at once. InitPhysicsObj makes the PhysicsState bit the property's, so `state` agrees with it."""
 
     id: int
     weenie: str
@@ -1477,6 +1481,7 @@ class OtherMover:
     sorting_sphere: SphereRec | None = None
     parent: ChildOf | None = None
     launch: Launch | None = None  # a projectile's (weenie ammunition or spell_projectile): made at the start, in the world from its launch
+    report_collisions: bool | None = None  # the WorldObject's PropertyBool.ReportCollisions (None: unset)
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
@@ -1495,12 +1500,15 @@ class OtherMover:
             d["parent"] = self.parent.to_json()
         if self.launch is not None:
             d["launch"] = self.launch.to_json(self.weenie == "spell_projectile")
+        if self.report_collisions is not None:
+            d["report_collisions"] = self.report_collisions
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
-               "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch"})
+               "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch",
+               "report_collisions"})
         parent = ChildOf.from_json(r["parent"]) if r.given("parent") else None
         if parent is not None and r.given("begin"):
             r["begin"].fail("a child enters the world with its parent (set_parent, not enter_world): omit begin")
@@ -1528,16 +1536,25 @@ class OtherMover:
                 r["player_killer_status"].fail("a PlayerKillerStatus is a creature's: WeenieObject(WorldObject) copies "
                                                "it only from a Creature (weenie player, creature or monster)")
             pks = r["player_killer_status"].enum_(PlayerKillerStatus)
+        state = r["state"].flags(PhysicsState) if r.given("state") else DEFAULT_MOVER_STATE
+        report = None
+        if r.given("report_collisions"):
+            if weenie in PROJECTILE_WEENIES:
+                r["report_collisions"].fail("a projectile's launch sets its ReportCollisions (true): omit it")
+            report = r["report_collisions"].bool_()
+            if report != bool(state & PhysicsState.ReportCollisions):
+                r["report_collisions"].fail(f"InitPhysicsObj makes the PhysicsState bit ReportCollisions the property's: "
+                                            f"state {'needs' if report else 'has'} ReportCollisions")
         return OtherMover(
             id=oid, weenie=weenie, spheres=spheres, begin=None if parent is not None else Position.from_json(r["begin"]),
             step_up_height=up, step_down_height=down, scale=scale,
-            state=r["state"].flags(PhysicsState) if r.given("state") else DEFAULT_MOVER_STATE,
+            state=state,
             transient_state=r["transient_state"].flags(TransientState) if r.given("transient_state") else DEFAULT_MOVER_TRANSIENT,
             velocity=r["velocity"].vec3() if r.given("velocity") else (0.0, 0.0, 0.0),
             player_killer_status=pks,
             holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
             sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
-            parent=parent, launch=launch)
+            parent=parent, launch=launch, report_collisions=report)
 
 
 ENGINE_MODES = ("server", "client")

@@ -171,7 +171,8 @@ def _child_of(p) -> bytes:
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
 # then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id (0: none, an untargeted spell), speed, origin, orientation
 # (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none), the spell's kind
-# (byte: its index in acconform.scene.SPELL_KINDS)
+# (byte: its index in acconform.scene.SPELL_KINDS); then the WorldObject's ReportCollisions property (byte: 0 unset,
+# 1 false, 2 true)
 _NO_LAUNCH = b"\0"
 _LAUNCH = struct.Struct("<BiIIf3f4fBBBBfB")
 
@@ -217,6 +218,7 @@ def pack_scene(scene: Scene) -> bytes:
                                 1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0,
                                 1 if la.alt_solver else 0, la.rotation_speed,
                                 SPELL_KINDS.index(la.spell)))
+        out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
     return b"".join(out)
 
 

@@ -108,6 +108,7 @@ ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target"
                 "across": ("moving_target",), "run_into": ("moving_target",),
                 "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall"),
                 "trap": ("moving_target", "moving_target", "creature_at_wall", "wall"),
+                "quiet": ("moving_target", "creature_at_wall", "moving_target"),
                 "spells": ("moving_target", "creature_at_wall", "wall", "through_door"),
                 "untargeted": ("moving_target", "creature_at_wall", "wall", "graze_cylsphere", "through_door")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
@@ -224,7 +225,9 @@ def draw_launch_scene(draw) -> Scene:
     `untargeted` (a spell cast at no one, scene/8 a launch without target: along its caster's forward vector, with
     no ProjectileTarget; the caster the player, a monster or, half the time a monster would, an object), and `spells`
     (scene/8 launch.spell: Rolling Death, made Ethereal half the time, which its Setup leaves; a wall spell, a Ring
-    spell or Ring spell 3818, whose Setup clears or sets ScriptedCollision; a Ring spell at no target half the time)."""
+    spell or Ring spell 3818, whose Setup clears or sets ScriptedCollision; a Ring spell at no target half the time),
+    and `quiet` (as `report`, with the crate always pushed into the target, its WorldObject carrying ReportCollisions
+    false, scene/8 others[].report_collisions: the target's OnCollideObject returns at once)."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -267,7 +270,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         player_launches = True
     launch_tick = min(dr.take(draw, LAUNCH_TICKS), n - 1)
 
-    body = EDGE_SLIDE | int(PhysicsState.ReportCollisions) if arm in ("report", "run_into") else EDGE_SLIDE
+    body = EDGE_SLIDE | int(PhysicsState.ReportCollisions) if arm in ("report", "run_into", "quiet") else EDGE_SLIDE
     walk_for = 1.0 if arm in ("fast_target", "timeout") else math.inf  # seconds a fast target walks: 30 m at most
     objects, monsters = [], []
     mover_inputs = [{} for _ in range(n)]
@@ -405,13 +408,16 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         else:
             walkers[OTHER] = walk
             monsters.append(_player(OTHER, TALL, lb, *walker[1], ground, *walker[2], other_pks, body))
-    if arm == "report" and draw(dr.BOOLEANS):  # a crate (a GenericObject) pushed into the target from beside it
+    if arm == "quiet" or (arm == "report" and draw(dr.BOOLEANS)):  # a crate (a GenericObject) pushed into the target from beside it
         side = 1.0 if draw(dr.BOOLEANS) else -1.0
         cx, cy = tx + side * uy * 1.5, ty - side * ux * 1.5
         push = float(dr.take(draw, PUSHES))
         walkers[CRATE] = [(to_f32(-side * uy * push), to_f32(side * ux * push), 0.0)] * n
-        monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
-                                   0.4, 0.4, state=body, transient_state=WALKING))
+        crate = OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
+                           0.4, 0.4, state=body, transient_state=WALKING)
+        if arm == "quiet":  # a weenie with ReportCollisions false (InitPhysicsObj clears the bit with it)
+            crate = replace(crate, state=body & ~int(PhysicsState.ReportCollisions), report_collisions=False)
+        monsters.append(crate)
     elif arm == "run_into" and draw(dr.BOOLEANS):  # a crate standing half way: the arrow hits what it is not aimed at
         cx, cy = (x0 + tx) / 2, (y0 + ty) / 2
         monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),

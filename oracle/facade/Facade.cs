@@ -135,6 +135,7 @@ namespace Acconform.Oracle
             // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
             public bool HasLaunch, LeadTarget, Arc, Tracking, AltSolver;
             public float RotationSpeed;  // the projectile's RotationSpeed (a weenie property; 0: none, left null)
+            public byte ReportCollisions;  // the WorldObject's PropertyBool.ReportCollisions: 0 unset, 1 false, 2 true
             public byte SpellKind;  // acconform.scene.SPELL_KINDS: 0 plain, 1 Rolling Death, 2 a wall, 3 a Ring, 4 Ring spell 3818
             public int LaunchTick;
             public uint Launcher, Target;
@@ -2057,7 +2058,7 @@ namespace Acconform.Oracle
         /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
         /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position, then byte 0 or a projectile's
         /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver,
-        /// rotation_speed, the spell's kind). They are
+        /// rotation_speed, the spell's kind), then the ReportCollisions property (0 unset, 1 false, 2 true). They are
         /// made and enter the world after the mover's placement (EnterOthers); a projectile enters at its launch.</summary>
         static void ReadOthers(BinaryReader r)
         {
@@ -2094,6 +2095,7 @@ namespace Acconform.Oracle
                     o.RotationSpeed = r.ReadSingle();  // the projectile's PropertyFloat.RotationSpeed (0: none)
                     o.SpellKind = r.ReadByte();  // what SpellProjectile.Setup reads of the spell: its name, weenie, SpellType
                 }
+                o.ReportCollisions = r.ReadByte();
                 sceneOthers.Add(o);
             }
         }
@@ -2125,6 +2127,8 @@ namespace Acconform.Oracle
                 o.WorldObject = MakeWorldObject(o);
                 if (o.HasLaunch && o.RotationSpeed != 0)
                     o.WorldObject.RotationSpeed = o.RotationSpeed;  // the weenie's PropertyFloat, read by the launch
+                if (o.ReportCollisions != 0)  // the weenie's PropertyBool (no PhysicsObj yet: the property alone; State is the scene's)
+                    o.WorldObject.ReportCollisions = o.ReportCollisions == 2;
                 obj.set_weenie_obj(new WeenieObject(o.WorldObject));
                 obj.SetMotionTableID(0);
                 obj.SetScaleStatic(o.Scale);
