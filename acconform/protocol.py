@@ -162,6 +162,10 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "missiles.untargeted": (lambda s: any(o.launch is not None and o.launch.target is None for o in s.others),
                             "a spell launched at no target (scene/8: a launch without target): "
                             "WorldObject.CalculateProjectileVelocity's forward vector, no ProjectileTarget (needs missiles)"),
+    "objects.sphereless": (lambda s: any(not o.spheres for o in s.others),
+                           "another mover of weenie object whose Setup has no spheres (scene/8: others[].spheres []): "
+                           "enter_world's SetPosition on PhysicsObj.SetPosition's dummy sphere, UpdateObjectInternal's arm "
+                           "for an object with none"),
     "objects.report_collisions": (lambda s: any(o.report_collisions is not None for o in s.others),
                                   "another mover whose WorldObject carries the property ReportCollisions (scene/8: "
                                   "others[].report_collisions): a Player's or a Creature's OnCollideObject with one whose "

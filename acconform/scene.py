@@ -1220,10 +1220,10 @@ class MoverSkills:
 DEFAULT_SKILLS = MoverSkills()
 
 
-def _read_body(r: Reader) -> tuple:
-    """A mover's Setup as the scene gives it (the mover's and another mover's): its spheres (1 or 2), scale and step
-    heights, each checked."""
-    spheres = tuple(SphereRec.from_json(x) for x in r["spheres"].list(min_count=1, max_count=2))
+def _read_body(r: Reader, min_spheres: int = 1) -> tuple:
+    """A mover's Setup as the scene gives it (the mover's and another mover's): its spheres (1 or 2; 0 for another
+    mover's of weenie object, `min_spheres`), scale and step heights, each checked."""
+    spheres = tuple(SphereRec.from_json(x) for x in r["spheres"].list(min_count=min_spheres, max_count=2))
     scale = r["scale"].f32() if r.given("scale") else 1.0
     if not scale > 0:
         r["scale"].fail(f"scale must be positive, got {scale}")
@@ -1521,7 +1521,10 @@ class OtherMover:
             what = "a player's id is in ACE's player range" if weenie == "player" else \
                 "a server's generated object has an id in ACE's dynamic range"
             r["id"].fail(f"{what} (0x{low:08X}..0x{high:08X}), got 0x{oid:08X}")
-        spheres, scale, up, down = _read_body(r)
+        # a GenericObject's Setup may have no spheres (feature objects.sphereless): ACE's items, chests and doors made
+        # of BSP parts; enter_world's SetPosition then runs its transition on a dummy sphere, and UpdateObjectInternal
+        # takes its arm for an object with none (the position kept, Active cleared on walkable ground)
+        spheres, scale, up, down = _read_body(r, 0 if weenie == "object" else 1)
         launch = None
         if weenie in PROJECTILE_WEENIES:
             if not r.given("launch"):

@@ -109,6 +109,7 @@ ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target"
                 "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall"),
                 "trap": ("moving_target", "moving_target", "creature_at_wall", "wall"),
                 "quiet": ("moving_target", "creature_at_wall", "moving_target"),
+                "sphereless": ("moving_target", "creature_at_wall", "moving_target"),
                 "spells": ("moving_target", "creature_at_wall", "wall", "through_door"),
                 "untargeted": ("moving_target", "creature_at_wall", "wall", "graze_cylsphere", "through_door")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
@@ -227,7 +228,10 @@ def draw_launch_scene(draw) -> Scene:
     (scene/8 launch.spell: Rolling Death, made Ethereal half the time, which its Setup leaves; a wall spell, a Ring
     spell or Ring spell 3818, whose Setup clears or sets ScriptedCollision; a Ring spell at no target half the time),
     and `quiet` (as `report`, with the crate always pushed into the target, its WorldObject carrying ReportCollisions
-    false, scene/8 others[].report_collisions: the target's OnCollideObject returns at once)."""
+    false, scene/8 others[].report_collisions: the target's OnCollideObject returns at once), and `sphereless` (as
+    `quiet`, the crate's Setup with no spheres, scene/8 others[].spheres []: ACE's items, chests and doors of BSP parts;
+    enter_world's SetPosition runs on a dummy sphere and UpdateObjectInternal keeps it where it is, clearing Active on
+    walkable ground, or, half the time, in the air, Active and never on walkable ground)."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -408,7 +412,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         else:
             walkers[OTHER] = walk
             monsters.append(_player(OTHER, TALL, lb, *walker[1], ground, *walker[2], other_pks, body))
-    if arm == "quiet" or (arm == "report" and draw(dr.BOOLEANS)):  # a crate (a GenericObject) pushed into the target from beside it
+    if arm in ("quiet", "sphereless") or (arm == "report" and draw(dr.BOOLEANS)):  # a crate (a GenericObject) pushed into the target from beside it
         side = 1.0 if draw(dr.BOOLEANS) else -1.0
         cx, cy = tx + side * uy * 1.5, ty - side * ux * 1.5
         push = float(dr.take(draw, PUSHES))
@@ -417,6 +421,12 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
                            0.4, 0.4, state=body, transient_state=WALKING)
         if arm == "quiet":  # a weenie with ReportCollisions false (InitPhysicsObj clears the bit with it)
             crate = replace(crate, state=body & ~int(PhysicsState.ReportCollisions), report_collisions=False)
+        if arm == "sphereless":  # a GenericObject of BSP parts: no spheres
+            crate = replace(crate, spheres=())
+            if draw(dr.BOOLEANS):  # in the air: Active, never on walkable ground
+                crate = replace(crate, transient_state=int(TransientState.Active),
+                                begin=replace(crate.begin, frame=Frame((crate.begin.frame.origin[0], crate.begin.frame.origin[1],
+                                                                        to_f32(ground + 1.5)))))
         monsters.append(crate)
     elif arm == "run_into" and draw(dr.BOOLEANS):  # a crate standing half way: the arrow hits what it is not aimed at
         cx, cy = (x0 + tx) / 2, (y0 + ty) / 2
