@@ -783,6 +783,7 @@ class DatOther:
     player_killer_status: int = 2  # NPK
     parent: ChildOf | None = None  # a child: its parent's id, location and placement
     launch: object = None  # a projectile's acconform.scene.Launch (weenie ammunition or spell_projectile)
+    report_collisions: bool | None = None  # the WorldObject's PropertyBool.ReportCollisions (None: unset)
 
 
 @dataclass(frozen=True, slots=True)
@@ -816,7 +817,7 @@ def dat_world(scene: Scene) -> DatWorld:
         DatMover(MOVER_ID, written.mover.did, m.scale, m.state, m.transient_state, m.velocity, m.begin, m.end,
                  m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status, m.skills),
         tuple(DatOther(o.id, recs.did, o.weenie, o.scale, o.state, o.transient_state, o.velocity, o.begin,
-                       o.player_killer_status, o.parent, o.launch) for o, recs in zip(scene.others, written.others)))
+                       o.player_killer_status, o.parent, o.launch, o.report_collisions) for o, recs in zip(scene.others, written.others)))
 
 
 __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatOther", "DatStatic", "DatWorld",

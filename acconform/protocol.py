@@ -155,6 +155,30 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                             "a launch under the server property trajectory_alt_solver (scene/8: launch.alt_solver): "
                             "the velocity by Trajectory2.CalculateTrajectory instead of Trajectory's solvers (needs "
                             "missiles)"),
+    "missiles.thrown": (lambda s: any(o.weenie == "missile" for o in s.others),
+                        "a thrown weapon (scene/8: others[] of weenie missile, ACE's Missile): launched as an arrow "
+                        "(Creature.LaunchProjectile), it keeps WorldObject's OnCollideObject and OnCollideEnvironment, "
+                        "ProjectileCollisionHelper's only with a ProjectileTarget (needs missiles)"),
+    "missiles.untargeted": (lambda s: any(o.launch is not None and o.launch.target is None for o in s.others),
+                            "a spell launched at no target (scene/8: a launch without target): "
+                            "WorldObject.CalculateProjectileVelocity's forward vector, no ProjectileTarget (needs missiles)"),
+    "objects.sphereless": (lambda s: any(not o.spheres for o in s.others),
+                           "another mover of weenie object whose Setup has no spheres (scene/8: others[].spheres []): "
+                           "enter_world's SetPosition on PhysicsObj.SetPosition's dummy sphere, UpdateObjectInternal's arm "
+                           "for an object with none"),
+    "objects.report_collisions": (lambda s: any(o.report_collisions is not None for o in s.others),
+                                  "another mover whose WorldObject carries the property ReportCollisions (scene/8: "
+                                  "others[].report_collisions): a Player's or a Creature's OnCollideObject with one whose "
+                                  "property is false returns at once"),
+    "missiles.spells": (lambda s: any(o.launch is not None and o.launch.spell != "plain" for o in s.others),
+                        "a spell of a kind SpellProjectile.Setup tells apart (scene/8: launch.spell rolling_death, wall, "
+                        "ring or ring_3818): Ethereal left for Rolling Death, ScriptedCollision cleared for some wall "
+                        "spells and Ring spells, set for Ring spell 3818 (needs missiles)"),
+    "missiles.rotation_speed": (lambda s: any(o.launch is not None and o.launch.rotation_speed != 0 for o in s.others),
+                                "a projectile with a RotationSpeed (scene/8: launch.rotation_speed, a weenie property of "
+                                "some arrows, bolts, thrown weapons and spells): SetProjectilePhysicsState or "
+                                "SpellProjectile.Setup clears AlignPath and sets Omega = (2 pi RotationSpeed, 0, 0) "
+                                "(needs missiles)"),
 }
 
 
@@ -212,6 +236,8 @@ def _other_json(o: DatOther) -> dict:
         d["parent"] = o.parent.to_json()
     if o.launch is not None:
         d["launch"] = o.launch.to_json(o.weenie == "spell_projectile")
+    if o.report_collisions is not None:
+        d["report_collisions"] = o.report_collisions
     return d
 
 
@@ -260,7 +286,7 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
     others = []
     for o in (r["others"].list() if r.given("others") else ()):
         o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status",
-               "parent", "launch"})
+               "parent", "launch", "report_collisions"})
         weenie = o["weenie"].str_()
         if weenie not in WEENIE_CLASSES:
             o["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
@@ -278,7 +304,8 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                                o["transient_state"].flags(TransientState), o["velocity"].vec3(),
                                None if parent is not None else Position.from_json(o["begin"]),
                                o["player_killer_status"].enum_(PlayerKillerStatus) if o.given("player_killer_status")
-                               else PLAYER_KILLER_STATUS_NPK, parent, launch))
+                               else PLAYER_KILLER_STATUS_NPK, parent, launch,
+                               o["report_collisions"].bool_() if o.given("report_collisions") else None))
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
                     tuple(statics), mover, tuple(others))

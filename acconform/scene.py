@@ -1232,10 +1232,10 @@ class MoverSkills:
 DEFAULT_SKILLS = MoverSkills()
 
 
-def _read_body(r: Reader) -> tuple:
-    """A mover's Setup as the scene gives it (the mover's and another mover's): its spheres (1 or 2), scale and step
-    heights, each checked."""
-    spheres = tuple(SphereRec.from_json(x) for x in r["spheres"].list(min_count=1, max_count=2))
+def _read_body(r: Reader, min_spheres: int = 1) -> tuple:
+    """A mover's Setup as the scene gives it (the mover's and another mover's): its spheres (1 or 2; 0 for another
+    mover's of weenie object, `min_spheres`), scale and step heights, each checked."""
+    spheres = tuple(SphereRec.from_json(x) for x in r["spheres"].list(min_count=min_spheres, max_count=2))
     scale = r["scale"].f32() if r.given("scale") else 1.0
     if not scale > 0:
         r["scale"].fail(f"scale must be positive, got {scale}")
@@ -1355,8 +1355,10 @@ class Mover:
 
 # the WorldObject a server makes for another mover (scene/8 `others[].weenie`): WeenieObject(WorldObject) reads its class;
 # the last two are projectiles (an Ammunition: an arrow, bolt or dart; a SpellProjectile), which a `launch` puts in the world
-WEENIE_CLASSES = ("player", "creature", "monster", "object", "ammunition", "spell_projectile")
-PROJECTILE_WEENIES = ("ammunition", "spell_projectile")
+WEENIE_CLASSES = ("player", "creature", "monster", "object", "ammunition", "spell_projectile", "missile")
+# a `missile` is a thrown weapon (ACE's Missile: a Stackable that keeps WorldObject's OnCollideObject and
+# OnCollideEnvironment, the helper run only with a ProjectileTarget), launched as an arrow is (Creature.LaunchProjectile)
+PROJECTILE_WEENIES = ("ammunition", "spell_projectile", "missile")
 
 
 @dataclass(frozen=True, slots=True)
@@ -1375,11 +1377,20 @@ class Launch:
     LeadMissileTargets (`lead_target` false); a spell's by WorldObject.CalculateProjectileVelocity (the aim
     point raised by Height * 2/3, or 5/6 for an `arc`, which falls under gravity; a `tracking` spell leads
     the target). `alt_solver` is the server's trajectory_alt_solver property (PropertyManager, false by default):
-    both compute the velocity by Trajectory2.CalculateTrajectory instead (feature missiles.alt_solver)."""
+    both compute the velocity by Trajectory2.CalculateTrajectory instead (feature missiles.alt_solver).
+    `rotation_speed` is the projectile's RotationSpeed (PropertyFloat, revolutions a second; 0: none, ACE's null),
+    a weenie property of some arrows, bolts, thrown weapons and spells: SetProjectilePhysicsState (an arrow) and
+    SpellProjectile.Setup (a spell) then clear AlignPath and set Omega = (2 pi RotationSpeed, 0, 0), so it
+    tumbles as it flies (feature missiles.rotation_speed). A spell may have no `target` (None; feature
+    missiles.untargeted): as ACE launches an untargeted cast, a side projectile of a multi-projectile spell or a
+    trap's emote cast at no one, WorldObject.CalculateProjectileVelocity sends it along the caster's forward vector
+    (Vector3.Transform(UnitY, the launcher's orientation) * speed: the launcher has no AttackTarget) and it flies
+    with no ProjectileTarget. `spell` is the spell's kind as SpellProjectile.Setup reads it (SPELL_KINDS; feature
+    missiles.spells): its name (Rolling Death), its projectile's weenie (a wall's) or its SpellType (Ring)."""
 
     tick: int
     launcher: int
-    target: int
+    target: int | None
     speed: float
     origin: Vec3
     orientation: Quat = IDENTITY
@@ -1387,10 +1398,14 @@ class Launch:
     arc: bool = False
     tracking: bool = False
     alt_solver: bool = False
+    rotation_speed: float = 0.0
+    spell: str = "plain"
 
     def to_json(self, spell: bool) -> dict:
-        d = {"tick": self.tick, "launcher": write_id(self.launcher), "target": write_id(self.target),
-             "speed": write_f32(self.speed), "origin": write_vec(self.origin)}
+        d = {"tick": self.tick, "launcher": write_id(self.launcher)}
+        if self.target is not None:  # a spell may have none
+            d["target"] = write_id(self.target)
+        d |= {"speed": write_f32(self.speed), "origin": write_vec(self.origin)}
         if spell:
             d["arc"] = self.arc
             d["tracking"] = self.tracking
@@ -1399,22 +1414,41 @@ class Launch:
             d["lead_target"] = self.lead_target
         if self.alt_solver:  # written only when set: a scene without it means what it meant
             d["alt_solver"] = True
+        if self.rotation_speed != 0:  # written only when set, as alt_solver
+            d["rotation_speed"] = write_f32(self.rotation_speed)
+        if self.spell != "plain":  # a spell's, written only when not plain
+            d["spell"] = self.spell
         return d
 
     @staticmethod
     def from_json(r: Reader, spell: bool) -> "Launch":
-        r.obj({"tick", "launcher", "target", "speed", "origin", "alt_solver",
-               *(("arc", "tracking") if spell else ("orientation", "lead_target"))})
+        r.obj({"tick", "launcher", "target", "speed", "origin", "alt_solver", "rotation_speed",
+               *(("arc", "tracking", "spell") if spell else ("orientation", "lead_target"))})
+        if not spell and not r.given("target"):
+            r.fail("an arrow's or a thrown weapon's launch names its target (Creature.LaunchProjectile aims at one); "
+                   "only a spell may have none")
+        kind = r["spell"].str_() if r.given("spell") else "plain"
+        if kind not in SPELL_KINDS:
+            r["spell"].fail(f"unknown spell kind {kind!r} (known: {', '.join(SPELL_KINDS)})")
+        if kind in ("wall", "ring", "ring_3818") and r.given("arc") and r["arc"].bool_():
+            r["arc"].fail(f"a {kind} spell is no Arc (its SpellType is {'Wall' if kind == 'wall' else 'Ring'}): arc is false")
         speed = r["speed"].f32()
         if not speed > 0:
             r["speed"].fail(f"a launch speed is positive, got {speed}")
         frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
-        return Launch(tick=r["tick"].int_(0, 2 ** 31 - 1), launcher=r["launcher"].id_(), target=r["target"].id_(), speed=speed,
+        return Launch(tick=r["tick"].int_(0, 2 ** 31 - 1), launcher=r["launcher"].id_(),
+                      target=r["target"].id_() if r.given("target") else None, speed=speed,
                       origin=frame.origin, orientation=frame.orientation,
                       lead_target=r["lead_target"].bool_() if r.given("lead_target") else True,
                       arc=r["arc"].bool_() if r.given("arc") else False,
                       tracking=r["tracking"].bool_() if r.given("tracking") else False,
-                      alt_solver=r["alt_solver"].bool_() if r.given("alt_solver") else False)
+                      alt_solver=r["alt_solver"].bool_() if r.given("alt_solver") else False,
+                      rotation_speed=r["rotation_speed"].f32() if r.given("rotation_speed") else 0.0, spell=kind)
+# A spell's kind as SpellProjectile.Setup reads it (scene/8 launch.spell, feature missiles.spells): `plain` a Bolt or,
+# with `arc`, an Arc; `rolling_death` the spell named "Rolling Death", whose Setup leaves Ethereal as the projectile was
+# made; `wall` a wall spell of a weenie (7278, 7281, 7282, 23144) whose Setup clears ScriptedCollision (SpellType Wall);
+# `ring` a Ring spell other than 3818 (ScriptedCollision cleared) and `ring_3818` Ring spell 3818 (ScriptedCollision set)
+SPELL_KINDS = ("plain", "rolling_death", "wall", "ring", "ring_3818")
 PLAYER_ID_RANGE = (0x50000001, 0x5FFFFFFF)  # ACE.Entity.ObjectGuid.PlayerMin / PlayerMax
 DYNAMIC_ID_RANGE = (0x80000000, 0xFFFFFFFE)  # ObjectGuid.DynamicMin / DynamicMax: a server's generated objects
 
@@ -1438,7 +1472,11 @@ class OtherMover:
     cylspheres). With `parent` (and no `begin`) it is a child: made as the others are, then held by its parent
     (SetPlacementFrame, set_parent: port/parenting.py) in `others` order instead of entering the world, and never
     stepped itself (its parent's UpdateChild carries it: a server's landblock never ticks a wielded item, which is
-    no landblock object, and update_object of an object with a Parent only clears its Active flag)."""
+    no landblock object, and update_object of an object with a Parent only clears its Active flag).
+
+    `report_collisions` is its WorldObject's PropertyBool.ReportCollisions (None: unset, as made; feature
+    objects.report_collisions), which a weenie may carry: false, a Player's or a Creature's OnCollideObject with it
+    returns at once. InitPhysicsObj makes the PhysicsState bit the property's, so `state` agrees with it."""
 
     id: int
     weenie: str
@@ -1455,6 +1493,7 @@ class OtherMover:
     sorting_sphere: SphereRec | None = None
     parent: ChildOf | None = None
     launch: Launch | None = None  # a projectile's (weenie ammunition or spell_projectile): made at the start, in the world from its launch
+    report_collisions: bool | None = None  # the WorldObject's PropertyBool.ReportCollisions (None: unset)
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
@@ -1473,12 +1512,15 @@ class OtherMover:
             d["parent"] = self.parent.to_json()
         if self.launch is not None:
             d["launch"] = self.launch.to_json(self.weenie == "spell_projectile")
+        if self.report_collisions is not None:
+            d["report_collisions"] = self.report_collisions
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
-               "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch"})
+               "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch",
+               "report_collisions"})
         parent = ChildOf.from_json(r["parent"]) if r.given("parent") else None
         if parent is not None and r.given("begin"):
             r["begin"].fail("a child enters the world with its parent (set_parent, not enter_world): omit begin")
@@ -1491,7 +1533,10 @@ class OtherMover:
             what = "a player's id is in ACE's player range" if weenie == "player" else \
                 "a server's generated object has an id in ACE's dynamic range"
             r["id"].fail(f"{what} (0x{low:08X}..0x{high:08X}), got 0x{oid:08X}")
-        spheres, scale, up, down = _read_body(r)
+        # a GenericObject's Setup may have no spheres (feature objects.sphereless): ACE's items, chests and doors made
+        # of BSP parts; enter_world's SetPosition then runs its transition on a dummy sphere, and UpdateObjectInternal
+        # takes its arm for an object with none (the position kept, Active cleared on walkable ground)
+        spheres, scale, up, down = _read_body(r, 0 if weenie == "object" else 1)
         launch = None
         if weenie in PROJECTILE_WEENIES:
             if not r.given("launch"):
@@ -1506,16 +1551,25 @@ class OtherMover:
                 r["player_killer_status"].fail("a PlayerKillerStatus is a creature's: WeenieObject(WorldObject) copies "
                                                "it only from a Creature (weenie player, creature or monster)")
             pks = r["player_killer_status"].enum_(PlayerKillerStatus)
+        state = r["state"].flags(PhysicsState) if r.given("state") else DEFAULT_MOVER_STATE
+        report = None
+        if r.given("report_collisions"):
+            if weenie in PROJECTILE_WEENIES:
+                r["report_collisions"].fail("a projectile's launch sets its ReportCollisions (true): omit it")
+            report = r["report_collisions"].bool_()
+            if report != bool(state & PhysicsState.ReportCollisions):
+                r["report_collisions"].fail(f"InitPhysicsObj makes the PhysicsState bit ReportCollisions the property's: "
+                                            f"state {'needs' if report else 'has'} ReportCollisions")
         return OtherMover(
             id=oid, weenie=weenie, spheres=spheres, begin=None if parent is not None else Position.from_json(r["begin"]),
             step_up_height=up, step_down_height=down, scale=scale,
-            state=r["state"].flags(PhysicsState) if r.given("state") else DEFAULT_MOVER_STATE,
+            state=state,
             transient_state=r["transient_state"].flags(TransientState) if r.given("transient_state") else DEFAULT_MOVER_TRANSIENT,
             velocity=r["velocity"].vec3() if r.given("velocity") else (0.0, 0.0, 0.0),
             player_killer_status=pks,
             holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
             sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
-            parent=parent, launch=launch)
+            parent=parent, launch=launch, report_collisions=report)
 
 
 ENGINE_MODES = ("server", "client")
@@ -1889,6 +1943,8 @@ def _check_launches(scene: Scene, path: str, by_id: dict) -> None:
             raise InvalidScene(f"{where}.{key}", f"no mover{' or static' if key == 'target' else ''} has id 0x{value:08X}; {what}")
 
         mover("launcher", launch.launcher, "the launcher is the mover (0x50000001) or another mover that is no projectile")
+        if launch.target is None:  # an untargeted spell (Launch.from_json refuses an arrow without one)
+            continue
         mover("target", launch.target, "the target is the mover, another mover that is no projectile, or an outdoor static")
         if launch.launcher == launch.target:
             raise InvalidScene(f"{where}.target", f"the launcher 0x{launch.launcher:08X} cannot be its own target")

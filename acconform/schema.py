@@ -228,7 +228,7 @@ def _movers_scene(scene, m):
 def _missiles_scene(scene, m):
     """A scene with projectiles (scene/8, missiles; a server engine): a monster at the mover's start, an arrow it
     launches at the mover and a spell the mover casts at it (an arc, tracking, under trajectory_alt_solver), both at tick 0, every launch field
-    written."""
+    written; a tumbling thrown weapon, a Ring spell cast at no one and a sphereless crate that reports no collisions."""
     from dataclasses import replace
 
     from .scene import Launch, OtherMover, SphereRec, Ticks, TickStep
@@ -239,7 +239,15 @@ def _missiles_scene(scene, m):
               OtherMover(0x80000010, "ammunition", (SphereRec((0.0, 0.0, 0.0), 0.05),), m.begin, 0.0, 0.0,
                          launch=Launch(0, 0x80000001, 0x50000001, 20.0, (x, y, z + 1.2), (1.0, 0.0, 0.0, 0.0), False)),
               OtherMover(0x80000011, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), 0.15),), m.begin, 0.0, 0.0,
-                         launch=Launch(0, 0x50000001, 0x80000001, 15.0, (x, y, z + 1.2), arc=True, tracking=True, alt_solver=True)))
+                         launch=Launch(0, 0x50000001, 0x80000001, 15.0, (x, y, z + 1.2), arc=True, tracking=True, alt_solver=True)),
+              # a thrown weapon that tumbles, a Ring spell 3818 cast at no one, a crate of BSP parts (no spheres) whose
+              # weenie carries ReportCollisions false
+              OtherMover(0x80000012, "missile", (SphereRec((0.0, 0.0, 0.0), 0.1),), m.begin, 0.0, 0.0,
+                         launch=Launch(0, 0x80000001, 0x50000001, 12.0, (x, y, z + 1.2), (1.0, 0.0, 0.0, 0.0),
+                                       rotation_speed=1.0)),
+              OtherMover(0x80000013, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), 0.15),), m.begin, 0.0, 0.0,
+                         launch=Launch(0, 0x50000001, None, 10.0, (x, y, z + 1.2), spell="ring_3818")),
+              OtherMover(0x80000014, "object", (), m.begin, 0.0, 0.0, report_collisions=False))
     return replace(scene, engine_mode="server", mover=m, name="missiles", others=others,
                    ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30),)))
 

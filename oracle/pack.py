@@ -14,10 +14,10 @@ from ..outcome import (CollisionState, CommandState, ContactPlaneState, MotionTi
                        PlacementState, PlaneState, TickState)
 from ..dat import cell_landblock, has_objects, scene_records
 from ..motion_scene import MOTION_TABLE_ID, STOPS
-from ..scene import DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
+from ..scene import SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 15
+PACK_VERSION = 16
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -169,10 +169,12 @@ def _child_of(p) -> bytes:
 # ... then the Player's skills (acconform.scene.MoverSkills): Run, Jump, Stamina, Strength (u32), EncumbranceVal and
 # AugmentationIncreasedCarryingCapacity (i32)
 _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
-# then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id, speed, origin, orientation
-# (w x y z), lead_target, arc, tracking, alt_solver
+# then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id (0: none, an untargeted spell), speed, origin, orientation
+# (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none), the spell's kind
+# (byte: its index in acconform.scene.SPELL_KINDS); then the WorldObject's ReportCollisions property (byte: 0 unset,
+# 1 false, 2 true)
 _NO_LAUNCH = b"\0"
-_LAUNCH = struct.Struct("<BiIIf3f4fBBBB")
+_LAUNCH = struct.Struct("<BiIIf3f4fBBBBfB")
 
 
 def pack_scene(scene: Scene) -> bytes:
@@ -212,9 +214,11 @@ def pack_scene(scene: Scene) -> bytes:
         out.append(_NOT_A_CHILD if p is None else _child_of(p))
         la = o.launch
         out.append(_NO_LAUNCH if la is None else
-                   _LAUNCH.pack(1, la.tick, la.launcher, la.target, la.speed, *la.origin, *la.orientation,
+                   _LAUNCH.pack(1, la.tick, la.launcher, la.target or 0, la.speed, *la.origin, *la.orientation,
                                 1 if la.lead_target else 0, 1 if la.arc else 0, 1 if la.tracking else 0,
-                                1 if la.alt_solver else 0))
+                                1 if la.alt_solver else 0, la.rotation_speed,
+                                SPELL_KINDS.index(la.spell)))
+        out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
     return b"".join(out)
 
 

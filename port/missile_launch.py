@@ -419,7 +419,9 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
     spell: CalculateProjectileVelocity's aim (raised by Height * ProjHeight or ProjHeightArc) and solver, then
     Setup, the physics state and LaunchSpellProjectiles' AddObject. A launcher and target in different
     landblocks would need ACE.Entity.Position.ToGlobal: refused (NotSupportedException), as the facade
-    refuses it."""
+    refuses it. A spell with no target (`target_obj` None): CalculateProjectileVelocity's arm for none (the
+    launcher has no AttackTarget), along the launcher's forward vector, Vector3.Transform(UnitY, its orientation)
+    * speed; no ProjectileTarget."""
     from .errors import NotSupportedException
     from .world_objects import Player
 
@@ -428,24 +430,42 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
     obj = wo.physics_obj
     s = type(obj.scale)
 
-    if launcher_obj.position.landblock != target_obj.position.landblock:
+    if target_obj is not None and launcher_obj.position.landblock != target_obj.position.landblock:
         raise NotSupportedException("acconform: a launch across landblocks (ACE.Entity.Position.ToGlobal) is not modelled")
 
     wo.physics_creation_time = obj.timer.current_time
 
     launcher = launcher_obj.weenie_obj.world_object
-    target = target_obj.weenie_obj.world_object
+    target = target_obj.weenie_obj.world_object if target_obj is not None else None
     speed = s(launch.speed)
     origin = mode.vec(*launch.origin)
+
+    # what SpellProjectile.Setup does to ScriptedCollision for the scene's spell kind: a wall spell's weenie (7278,
+    # 7281, 7282, 23144) clears it; SpellType Ring sets it for spell 3818, else clears it; otherwise left (None)
+    scripted_collision = None
+    if isinstance(wo, SpellProjectile):
+        if wo.spell_type == RING:
+            scripted_collision = launch.spell == "ring_3818"
+        elif launch.spell == "wall":
+            scripted_collision = False
+
+    if isinstance(wo, SpellProjectile) and target_obj is None:
+        # launch along forward vector (casterLoc.Rotation: the launcher's Location, its PhysicsObj's Position)
+        unit_y = mode.vec(0.0, 1.0, 0.0)
+        velocity = runtime.transform_by_quaternion(unit_y, launcher_obj.position.frame.orientation) * speed
+        spell_projectile_setup(wo, launch.spell == "rolling_death", scripted_collision)
+        spell_projectile_set_physics_state(wo, None, None, velocity, origin)
+        location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
+        return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)
+
     end_pos = target_obj.position.frame.origin
     height = target_obj.get_height()
-
     if isinstance(wo, SpellProjectile):
         end_pos = end_pos.with_z(end_pos.z + height * (s(PROJ_HEIGHT_ARC) if launch.arc else s(PROJ_HEIGHT)))
         target_velocity = target_obj.cached_velocity if launch.tracking else zero_like(speed)
         velocity = calculate_spell_projectile_velocity(origin, end_pos, speed, target_velocity, wo.spell_type,
                                                        launch.alt_solver, runtime)
-        spell_projectile_setup(wo)
+        spell_projectile_setup(wo, launch.spell == "rolling_death", scripted_collision)
         spell_projectile_set_physics_state(wo, target, target_obj, velocity, origin)
         location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
         return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)

@@ -46,8 +46,8 @@ from .land.lscape import LScape
 from .physics_obj import PhysicsObj
 from .physics_timer import PhysicsTimer
 from .weenie_object import WeenieObject
-from .world_objects import Ammunition, Creature, GenericObject, Player, SpellProjectile
-from .world_objects.spell_projectile import ARC, BOLT
+from .world_objects import Ammunition, Creature, GenericObject, Missile, Player, SpellProjectile
+from .world_objects.spell_projectile import ARC, BOLT, RING, WALL
 from . import missile_launch
 from .server_landblock import Landblock as ServerLandblock
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
@@ -113,7 +113,7 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     (parenting.set_parent: SetPlacementFrame, set_parent); its placement's result is set_parent's answer and it is
     never in the world itself (no tick steps it: its parent's UpdateChild carries it)."""
     mode = lscape.mode
-    if o.weenie in ("object", "ammunition", "spell_projectile"):
+    if o.weenie in ("object", "ammunition", "spell_projectile", "missile"):
         obj = PhysicsObj.make_object(did, o.id, True, portal_dat)
     else:
         obj = PhysicsObj.create(mode, portal_dat.timer, portal_dat.server, portal_dat.server_objects)
@@ -143,22 +143,31 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     return obj, _placement_state(obj, SetPositionError.OK if entered else SetPositionError.GeneralFailure), entered
 
 
-@harness("the server WorldObject another mover's PhysicsObj is made for (a Player, a Creature, a GenericObject, an Ammunition or a SpellProjectile)")
+@harness("the server WorldObject another mover's PhysicsObj is made for (a Player, a Creature, a GenericObject, an Ammunition, a SpellProjectile or a Missile)")
 def world_object_of(o: OtherMover):
-    """The server's WorldObject for another mover: a Player, a Creature, a GenericObject, or a projectile's Ammunition
-    or SpellProjectile (a Bolt, or an Arc: the two ProjectileSpellTypes a scene's spell flies as). A monster is a Creature
+    """The server's WorldObject for another mover: a Player, a Creature, a GenericObject, or a projectile's Ammunition,
+    SpellProjectile (a Bolt, an Arc, or a Wall or Ring spell's) or Missile (a thrown weapon). A monster is a Creature
     with IsMonster (Creature.SetMonsterState: Attackable, ACE's default for an object without the property); an NPC
-    one that is not Attackable, so not a monster."""
+    one that is not Attackable, so not a monster. A projectile's RotationSpeed is its launch's (0: none, ACE's null);
+    the ReportCollisions property the scene's (None: unset), which a weenie may carry."""
     if o.weenie == "player":
-        return Player(guid=o.id, player_killer_status=o.player_killer_status)
-    if o.weenie == "object":
-        return GenericObject(guid=o.id)
-    if o.weenie == "ammunition":
-        return Ammunition(guid=o.id)
-    if o.weenie == "spell_projectile":
-        return SpellProjectile(guid=o.id, spell_type=ARC if o.launch.arc else BOLT)
-    monster = o.weenie == "monster"
-    return Creature(guid=o.id, is_monster=monster, attackable=monster, player_killer_status=o.player_killer_status)
+        wo = Player(guid=o.id, player_killer_status=o.player_killer_status)
+    elif o.weenie == "object":
+        wo = GenericObject(guid=o.id)
+    elif o.weenie == "ammunition":
+        wo = Ammunition(guid=o.id, rotation_speed=o.launch.rotation_speed or None)
+    elif o.weenie == "missile":  # a thrown weapon
+        wo = Missile(guid=o.id, rotation_speed=o.launch.rotation_speed or None)
+    elif o.weenie == "spell_projectile":
+        kind = o.launch.spell
+        spell_type = WALL if kind == "wall" else RING if kind in ("ring", "ring_3818") else ARC if o.launch.arc else BOLT
+        wo = SpellProjectile(guid=o.id, spell_type=spell_type, rotation_speed=o.launch.rotation_speed or None)
+    else:
+        monster = o.weenie == "monster"
+        wo = Creature(guid=o.id, is_monster=monster, attackable=monster, player_killer_status=o.player_killer_status)
+    if o.report_collisions is not None:
+        wo.report_collisions = o.report_collisions
+    return wo
 
 
 def _placement_state(mover: PhysicsObj, result) -> PlacementState:
@@ -821,7 +830,8 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
                 if launch is not None and launch.tick == index:
                     launcher = by_id[launch.launcher]
                     landblock = landblocks.setdefault(launcher.position.landblock, ServerLandblock(launcher.position.landblock))
-                    missile_launch.scene_launch(obj.weenie_obj.world_object, launch, launcher, by_id[launch.target],
+                    missile_launch.scene_launch(obj.weenie_obj.world_object, launch, launcher,
+                                                by_id[launch.target] if launch.target is not None else None,
                                                 landblock, lscape, trace)
                     stepped[k] = True
             timer.set(time)

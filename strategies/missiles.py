@@ -39,6 +39,7 @@ from hypothesis import strategies as st
 
 from acconform.flags import ParentLocation, PhysicsState, PlayerKillerStatus, TransientState
 from acconform.numerics import to_f32
+from acconform.scene import SPELL_KINDS
 from acconform.scene import (ChildOf, CylSphereShape, ContactPlane, Frame, HoldingLocation, Landblock, Launch, Mover, OtherInputs, OtherMover,
                              Placement, PlaneRec, Position, Scene, SphereRec, StaticObject, Ticks, TickStep, validate_scene)
 from acconform.strategies.shapes import box
@@ -105,7 +106,12 @@ ARM_POLICIES = {"alt_solver": ("moving_target", "moving_target", "moving_target"
                 "out_of_range": ("creature_at_wall", "moving_target", "wall"), "overhead": ("creature_at_wall", "moving_target"),
                 "fast_target": ("moving_target",), "tiny_target": ("moving_target",), "timeout": ("moving_target",),
                 "across": ("moving_target",), "run_into": ("moving_target",),
-                "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall")}
+                "report": ("bystander", "bystander", "bystander", "moving_target", "creature_at_wall"),
+                "trap": ("moving_target", "moving_target", "creature_at_wall", "wall"),
+                "quiet": ("moving_target", "creature_at_wall", "moving_target"),
+                "sphereless": ("moving_target", "creature_at_wall", "moving_target"),
+                "spells": ("moving_target", "creature_at_wall", "wall", "through_door"),
+                "untargeted": ("moving_target", "creature_at_wall", "wall", "graze_cylsphere", "through_door")}
 SLOW_ARROW_SPEEDS = dr.f32(2.0, 7.0)  # 45 degrees carries 7 m/s 5 m: a target 10-25 m off is out of range
 FAR = dr.f32(10.0, 25.0)
 FAST_SPEEDS = dr.OneOf(st.sampled_from((12.0, 20.0)), dr.f32(8.0, 30.0))  # outrunning a spell of 3-10 m/s
@@ -122,6 +128,9 @@ REPORT_ROLES = st.sampled_from(("mover_is_target", "mover_is_target", "mover_cro
 PUSHES = dr.f32(1.0, 4.0)  # report: a crate (weenie object) pushed into the target
 RUN_SPEEDS = dr.f32(6.0, 12.0)  # run_into: the player runs at the arrow about as fast as it flies, so his own
 RUN_ARROW_SPEEDS = dr.f32(6.0, 9.0)  # step meets it about one time in two
+# spin: a projectile's RotationSpeed (revolutions a second; ACE's weenies give some arrows, bolts, thrown weapons and
+# spells one, of either sign): Omega about its x axis, AlignPath cleared
+ROTATION_SPEEDS = dr.OneOf(st.sampled_from((1.0, 0.5, 2.0, -1.0)), dr.f32(-4.0, 4.0))
 
 
 def _carrying(draw, others: tuple, projectile: OtherMover, carried: str) -> tuple:
@@ -207,7 +216,22 @@ def draw_launch_scene(draw) -> Scene:
     One more arm, `across` (the player at a monster just over the landblock's north border: a launch both sides
     refuse, ACE.Entity.Position.ToGlobal not being modelled), and `run_into` (a monster 3-6 m off shoots a 6-9 m/s arrow
     at the player, who reports collisions and runs at it at 6-12 m/s: his own step meets the arrow aimed at him, the
-    player's OnCollideObject and the helper's hit) are drawn only by name: draw_missile_scene(draw, ARM)."""
+    player's OnCollideObject and the helper's hit) are drawn only by name: draw_missile_scene(draw, ARM). So are
+    `spin` (the projectile has a RotationSpeed, scene/8 launch.rotation_speed: SetProjectilePhysicsState or
+    SpellProjectile.Setup clears AlignPath and sets Omega, and it tumbles as it flies) and `trap` (a GenericObject
+    casts the spell at the player, as ACE's EmoteManager casts a trap's or any non-creature emoter's spell,
+    WorldObject.TryCastSpell_WithRedirects: IsProjectileVisible's launcher that is no Creature) and `thrown` (a
+    thrown weapon, weenie missile, ACE's Missile: launched as an arrow, it runs WorldObject's OnCollideObject and
+    OnCollideEnvironment, the helper's with its ProjectileTarget; half the time spinning, as thrown weapons do), and
+    `untargeted` (a spell cast at no one, scene/8 a launch without target: along its caster's forward vector, with
+    no ProjectileTarget; the caster the player, a monster or, half the time a monster would, an object), and `spells`
+    (scene/8 launch.spell: Rolling Death, made Ethereal half the time, which its Setup leaves; a wall spell, a Ring
+    spell or Ring spell 3818, whose Setup clears or sets ScriptedCollision; a Ring spell at no target half the time),
+    and `quiet` (as `report`, with the crate always pushed into the target, its WorldObject carrying ReportCollisions
+    false, scene/8 others[].report_collisions: the target's OnCollideObject returns at once), and `sphereless` (as
+    `quiet`, the crate's Setup with no spheres, scene/8 others[].spheres []: ACE's items, chests and doors of BSP parts;
+    enter_world's SetPosition runs on a dummy sphere and UpdateObjectInternal keeps it where it is, clearing Active on
+    walkable ground, or, half the time, in the air, Active and never on walkable ground)."""
     arm = draw(ARMS)
     return draw_missile_scene(draw, arm)
 
@@ -239,12 +263,18 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         player_launches = True
     if arm == "run_into":  # a monster shoots a slow arrow at the player, who runs at it
         player_launches, arrow = False, True
+    if arm == "thrown":
+        arrow = True
+    if arm in ("untargeted", "spells"):
+        arrow = False
+    if arm == "trap":  # an object casts a spell at the player (only a Creature launches an arrow: LaunchProjectile)
+        player_launches, arrow = False, False
     if arm == "timeout":  # the player launches at a monster hovering 2-5 m up (no Gravity), which moves out of the way
         n, dt = 310, 0.1
         player_launches = True
     launch_tick = min(dr.take(draw, LAUNCH_TICKS), n - 1)
 
-    body = EDGE_SLIDE | int(PhysicsState.ReportCollisions) if arm in ("report", "run_into") else EDGE_SLIDE
+    body = EDGE_SLIDE | int(PhysicsState.ReportCollisions) if arm in ("report", "run_into", "quiet") else EDGE_SLIDE
     walk_for = 1.0 if arm in ("fast_target", "timeout") else math.inf  # seconds a fast target walks: 30 m at most
     objects, monsters = [], []
     mover_inputs = [{} for _ in range(n)]
@@ -274,7 +304,9 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
     else:
         launcher_at, launcher = (x0, y0), CASTER
         mover_at = (tx, ty)
-        monsters.append(_monster(CASTER, lb, x0, y0, ground, body))
+        caster = _monster(CASTER, lb, x0, y0, ground, body)
+        trap = arm == "trap" or (arm == "untargeted" and draw(dr.BOOLEANS))
+        monsters.append(replace(caster, weenie="object") if trap else caster)
     if crosser is None:
         target = MONSTER
     if policy == "wall":
@@ -347,20 +379,28 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
             speeds = CRAWL_SPEEDS
         launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, speeds)), origin, _heading(ux, uy),
                         lead_target=draw(dr.BOOLEANS), alt_solver=alt_solver)
-        projectile = OtherMover(PROJECTILE, "ammunition", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
+        projectile = OtherMover(PROJECTILE, "missile" if arm == "thrown" else "ammunition", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
                                 state=int(PhysicsState.Gravity), transient_state=0, launch=launch)
     else:
         radius = float(dr.take(draw, SPELL_RADII))
-        arc = draw(st.sampled_from((False, False, True))) if arm != "timeout" else False
+        kind = draw(st.sampled_from(SPELL_KINDS[1:])) if arm == "spells" else "plain"
+        arc = draw(st.sampled_from((False, False, True))) if arm != "timeout" and kind in ("plain", "rolling_death") else False
         speeds = {"fast_target": SLOW_SPELL_SPEEDS, "timeout": TIMEOUT_SPEEDS}.get(arm, SPELL_SPEEDS)
         if arm == "alt_solver" and draw(st.sampled_from((False, False, True))):
             speeds = CRAWL_SPEEDS
         launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, speeds)), origin, arc=arc,
-                        tracking=draw(dr.BOOLEANS) if arm != "timeout" else False, alt_solver=alt_solver)
+                        tracking=draw(dr.BOOLEANS) if arm != "timeout" else False, alt_solver=alt_solver, spell=kind)
         projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(radius)),),
                                 Position(_cell(lb, lx, ly), Frame((to_f32(lx), to_f32(ly), to_f32(ground)))), 0.0, 0.0,
-                                state=0, transient_state=0, launch=launch)
+                                state=int(PhysicsState.Ethereal) if kind == "rolling_death" and draw(dr.BOOLEANS) else 0,
+                                transient_state=0, launch=launch)
+    if arm == "untargeted" or (not arrow and launch.spell.startswith("ring") and draw(dr.BOOLEANS)):
+        launch = replace(launch, target=None)
+        projectile = replace(projectile, launch=launch)
+    if arm == "spin" or (arm == "thrown" and draw(dr.BOOLEANS)):
+        launch = replace(launch, rotation_speed=to_f32(dr.take(draw, ROTATION_SPEEDS)))
+        projectile = replace(projectile, launch=launch)
     walkers = {}  # id -> velocity, per tick
     if crosser is not None:
         walk, walker = _crossing(draw, x0, y0, ux, uy, d, dt, n, launch_tick, float(launch.speed), arm)
@@ -372,13 +412,22 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         else:
             walkers[OTHER] = walk
             monsters.append(_player(OTHER, TALL, lb, *walker[1], ground, *walker[2], other_pks, body))
-    if arm == "report" and draw(dr.BOOLEANS):  # a crate (a GenericObject) pushed into the target from beside it
+    if arm in ("quiet", "sphereless") or (arm == "report" and draw(dr.BOOLEANS)):  # a crate (a GenericObject) pushed into the target from beside it
         side = 1.0 if draw(dr.BOOLEANS) else -1.0
         cx, cy = tx + side * uy * 1.5, ty - side * ux * 1.5
         push = float(dr.take(draw, PUSHES))
         walkers[CRATE] = [(to_f32(-side * uy * push), to_f32(side * ux * push), 0.0)] * n
-        monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
-                                   0.4, 0.4, state=body, transient_state=WALKING))
+        crate = OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),
+                           0.4, 0.4, state=body, transient_state=WALKING)
+        if arm == "quiet":  # a weenie with ReportCollisions false (InitPhysicsObj clears the bit with it)
+            crate = replace(crate, state=body & ~int(PhysicsState.ReportCollisions), report_collisions=False)
+        if arm == "sphereless":  # a GenericObject of BSP parts: no spheres
+            crate = replace(crate, spheres=())
+            if draw(dr.BOOLEANS):  # in the air: Active, never on walkable ground
+                crate = replace(crate, transient_state=int(TransientState.Active),
+                                begin=replace(crate.begin, frame=Frame((crate.begin.frame.origin[0], crate.begin.frame.origin[1],
+                                                                        to_f32(ground + 1.5)))))
+        monsters.append(crate)
     elif arm == "run_into" and draw(dr.BOOLEANS):  # a crate standing half way: the arrow hits what it is not aimed at
         cx, cy = (x0 + tx) / 2, (y0 + ty) / 2
         monsters.append(OtherMover(CRATE, "object", BODY, Position(_cell(lb, cx, cy), Frame((to_f32(cx), to_f32(cy), to_f32(ground)))),

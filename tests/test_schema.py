@@ -133,6 +133,9 @@ def test_the_scene_schema_names_every_field_of_a_projectiles_launch(generated):
     assert "launch" in other["properties"] and "launch" not in other.get("required", [])
     launch = other["properties"]["launch"]
     assert set(launch["properties"]) == {"tick", "launcher", "target", "speed", "origin", "orientation", "lead_target",
-                                         "arc", "tracking", "alt_solver"}
+                                         "arc", "tracking", "alt_solver", "rotation_speed", "spell"}
+    # a spell may have no target; a weenie may carry ReportCollisions
+    assert not {"target", "rotation_speed", "spell"} & set(launch.get("required", []))
+    assert "report_collisions" in other["properties"] and "report_collisions" not in other.get("required", [])
     assert {"ammunition", "spell_projectile"} <= set(other["properties"]["weenie"].get("enum", ())) or \
         other["properties"]["weenie"].get("type") == "string"

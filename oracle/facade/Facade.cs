@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 15;
+        public const int PackVersion = 16;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -134,6 +134,9 @@ namespace Acconform.Oracle
             public int ParentLocation, Placement;
             // a projectile (weenie 4 ammunition, 5 spell_projectile; pack 14): its launch, and once launched
             public bool HasLaunch, LeadTarget, Arc, Tracking, AltSolver;
+            public float RotationSpeed;  // the projectile's RotationSpeed (a weenie property; 0: none, left null)
+            public byte ReportCollisions;  // the WorldObject's PropertyBool.ReportCollisions: 0 unset, 1 false, 2 true
+            public byte SpellKind;  // acconform.scene.SPELL_KINDS: 0 plain, 1 Rolling Death, 2 a wall, 3 a Ring, 4 Ring spell 3818
             public int LaunchTick;
             public uint Launcher, Target;
             public float Speed;
@@ -552,25 +555,36 @@ namespace Acconform.Oracle
         static void SceneLaunch(Other o, PhysicsObj mover)
         {
             var launcherObj = FindObj(o.Launcher, mover);
-            var targetObj = FindObj(o.Target, mover);
-            if (launcherObj.Position.Landblock != targetObj.Position.Landblock)
+            var targetObj = o.Target != 0 ? FindObj(o.Target, mover) : null;  // 0: an untargeted spell
+            if (targetObj != null && launcherObj.Position.Landblock != targetObj.Position.Landblock)
                 throw new NotSupportedException("acconform: a launch across landblocks (ACE.Entity.Position.ToGlobal) is not modelled");
             o.Launched = true;
             o.CreationTime = PhysicsTimer.CurrentTime;
             var wo = o.WorldObject;
             var launcher = launcherObj.WeenieObj.WorldObject;
-            var target = targetObj.WeenieObj.WorldObject;
+            var target = targetObj?.WeenieObj.WorldObject;
             var origin = o.Origin;
-            var endPos = targetObj.Position.Frame.Origin;
-            var height = targetObj.GetHeight();
             var landblock = ServerLandblockOf(launcherObj.Position.ObjCellID);
             var sp = wo as ACE.Server.WorldObjects.SpellProjectile;
+            if (sp != null && targetObj == null)
+            {
+                // WorldObject.CalculateProjectileVelocity with no target (the launcher has no AttackTarget): launch along
+                // forward vector, casterLoc.Rotation being the launcher's PhysicsObj's orientation
+                var forward = Vector3.Transform(Vector3.UnitY, launcherObj.Position.Frame.Orientation) * o.Speed;
+                SpellProjectileSetup(sp, o.SpellKind);
+                SpellProjectileSetPhysicsState(sp, null, null, forward, origin, o.Arc);
+                LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
+                                      sp.PhysicsObj.Position.Frame.Orientation);
+                return;
+            }
+            var endPos = targetObj.Position.Frame.Origin;
+            var height = targetObj.GetHeight();
             if (sp != null)
             {
                 endPos.Z += height * (o.Arc ? 5.0f / 6.0f : 2.0f / 3.0f);  // ProjHeightArc, ProjHeight
                 var targetVelocity = o.Tracking ? targetObj.CachedVelocity : Vector3.Zero;
                 var velocity = CalculateSpellProjectileVelocity(origin, endPos, o.Speed, targetVelocity, o.Arc, o.AltSolver);
-                SpellProjectileSetup(sp);
+                SpellProjectileSetup(sp, o.SpellKind);
                 SpellProjectileSetPhysicsState(sp, target, targetObj, velocity, origin, o.Arc);
                 LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
                                       sp.PhysicsObj.Position.Frame.Orientation);
@@ -705,17 +719,29 @@ namespace Acconform.Oracle
             proj.PhysicsObj.set_active(true);
         }
 
-        /// <summary>port: spell_projectile_setup. SpellProjectile.Setup after InitPhysicsObj (not Rolling Death, no wall or
-        /// Ring spell: ScriptedCollision left).</summary>
-        static void SpellProjectileSetup(ACE.Server.WorldObjects.SpellProjectile sp)
+        /// <summary>port: spell_projectile_setup. SpellProjectile.Setup after InitPhysicsObj, the spell as the scene's kind
+        /// says (`kind`, acconform.scene.SPELL_KINDS): Spell.Name "Rolling Death" (1) leaves Ethereal; a wall spell's
+        /// weenie (7278, 7281, 7282, 23144: 2) clears ScriptedCollision; SpellType Ring clears it (3) or, spell 3818 (4),
+        /// sets it.</summary>
+        static void SpellProjectileSetup(ACE.Server.WorldObjects.SpellProjectile sp, byte kind)
         {
             sp.ReportCollisions = true;
             sp.Missile = true;
             sp.AlignPath = true;
             sp.PathClipped = true;
             sp.IgnoreCollisions = false;
-            sp.Ethereal = false;
+            if (kind != 1)  // !Spell.Name.Equals("Rolling Death")
+                sp.Ethereal = false;
+            if (kind == 2)  // WeenieClassId 7278, 7281, 7282 or 23144: some wall spells have no scripted collisions
+                sp.ScriptedCollision = false;
             sp.AllowEdgeSlide = false;
+            if (sp.SpellType == ACE.Server.Entity.ProjectileSpellType.Ring)
+            {
+                if (kind == 4)  // spell.Id == 3818
+                    sp.ScriptedCollision = true;
+                else
+                    sp.ScriptedCollision = false;
+            }
             if ((sp.RotationSpeed ?? 0) != 0)
             {
                 sp.AlignPath = false;
@@ -1144,11 +1170,16 @@ namespace Acconform.Oracle
             if (o.Weenie == 4)
                 return MakeWorldObject(typeof(ACE.Server.WorldObjects.Ammunition), typeof(ACE.Server.WorldObjects.Ammunition),
                                        "Ammunition", o.Id, out fromBiota);
+            if (o.Weenie == 6)  // a thrown weapon (WeenieType Missile)
+                return MakeWorldObject(typeof(ACE.Server.WorldObjects.Missile), typeof(ACE.Server.WorldObjects.Missile),
+                                       "Missile", o.Id, out fromBiota);
             if (o.Weenie == 5)
             {
                 var sp = (ACE.Server.WorldObjects.SpellProjectile)MakeWorldObject(typeof(ACE.Server.WorldObjects.SpellProjectile),
                     typeof(ACE.Server.WorldObjects.SpellProjectile), "ProjectileSpell", o.Id, out fromBiota);
-                sp.SpellType = o.Arc ? ACE.Server.Entity.ProjectileSpellType.Arc : ACE.Server.Entity.ProjectileSpellType.Bolt;
+                sp.SpellType = o.SpellKind == 2 ? ACE.Server.Entity.ProjectileSpellType.Wall
+                             : o.SpellKind >= 3 ? ACE.Server.Entity.ProjectileSpellType.Ring
+                             : o.Arc ? ACE.Server.Entity.ProjectileSpellType.Arc : ACE.Server.Entity.ProjectileSpellType.Bolt;
                 return sp;
             }
             var creature = (ACE.Server.WorldObjects.Creature)MakeWorldObject(typeof(ACE.Server.WorldObjects.Creature),
@@ -2026,7 +2057,8 @@ namespace Acconform.Oracle
 
         /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
         /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position, then byte 0 or a projectile's
-        /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver). They are
+        /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver,
+        /// rotation_speed, the spell's kind), then the ReportCollisions property (0 unset, 1 false, 2 true). They are
         /// made and enter the world after the mover's placement (EnterOthers); a projectile enters at its launch.</summary>
         static void ReadOthers(BinaryReader r)
         {
@@ -2060,7 +2092,10 @@ namespace Acconform.Oracle
                     o.Arc = r.ReadByte() != 0;
                     o.Tracking = r.ReadByte() != 0;
                     o.AltSolver = r.ReadByte() != 0;  // the server property trajectory_alt_solver
+                    o.RotationSpeed = r.ReadSingle();  // the projectile's PropertyFloat.RotationSpeed (0: none)
+                    o.SpellKind = r.ReadByte();  // what SpellProjectile.Setup reads of the spell: its name, weenie, SpellType
                 }
+                o.ReportCollisions = r.ReadByte();
                 sceneOthers.Add(o);
             }
         }
@@ -2080,7 +2115,7 @@ namespace Acconform.Oracle
             foreach (var o in sceneOthers)
             {
                 PhysicsObj obj;
-                if (o.Weenie >= 3)  // a GenericObject, an Ammunition or a SpellProjectile: no creature
+                if (o.Weenie >= 3)  // a GenericObject, an Ammunition, a SpellProjectile or a Missile: no creature
                     obj = PhysicsObj.makeObject(o.Did, o.Id, true);
                 else
                 {
@@ -2090,6 +2125,10 @@ namespace Acconform.Oracle
                 o.Obj = obj;
                 obj.set_object_guid(new ObjectGuid(o.Id));
                 o.WorldObject = MakeWorldObject(o);
+                if (o.HasLaunch && o.RotationSpeed != 0)
+                    o.WorldObject.RotationSpeed = o.RotationSpeed;  // the weenie's PropertyFloat, read by the launch
+                if (o.ReportCollisions != 0)  // the weenie's PropertyBool (no PhysicsObj yet: the property alone; State is the scene's)
+                    o.WorldObject.ReportCollisions = o.ReportCollisions == 2;
                 obj.set_weenie_obj(new WeenieObject(o.WorldObject));
                 obj.SetMotionTableID(0);
                 obj.SetScaleStatic(o.Scale);

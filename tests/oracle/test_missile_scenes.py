@@ -72,6 +72,51 @@ def test_a_bad_launch_is_refused_naming_the_field(edit, where, problem):
         Scene.from_json(doc)
 
 
+@pytest.mark.parametrize("edit, where, problem", [
+    (lambda d: _launch(d, 0).pop("target"), r"others\[0\]\.launch", "names its target"),
+    (lambda d: _launch(d, 0).__setitem__("spell", "wall"), r"others\[0\]\.launch", "unknown field .spell."),
+    (lambda d: d["others"][0].__setitem__("report_collisions", False), r"others\[0\]\.report_collisions",
+     "launch sets its ReportCollisions"),
+    (lambda d: _launch(d, 0).__setitem__("rotation_speed", "fast"), r"others\[0\]\.launch\.rotation_speed", ""),
+])
+def test_an_arrows_launch_names_its_target_and_its_projectile_takes_no_spell_kind_nor_report_property(edit, where, problem):
+    doc = _doc()
+    edit(doc)
+    with pytest.raises(InvalidScene, match=where + ".*" + problem):
+        Scene.from_json(doc)
+
+
+@pytest.mark.parametrize("edit, where, problem", [
+    (lambda d: _launch(d, 1).__setitem__("spell", "fireball"), r"others\[1\]\.launch\.spell", "unknown spell kind"),
+    (lambda d: _launch(d, 1).__setitem__("spell", "ring"), r"others\[1\]\.launch\.arc", "is no Arc"),
+    (lambda d: d["others"][0].__setitem__("spheres", []), r"others\[0\]\.spheres", ""),
+    (lambda d: d["others"][0].__setitem__("report_collisions", True), r"others\[0\]\.report_collisions",
+     "state needs ReportCollisions"),
+])
+def test_a_spells_kind_a_monsters_spheres_and_a_report_property_against_its_state_are_checked(edit, where, problem):
+    doc = _doc("arc_spell_at_a_monster")
+    edit(doc)
+    with pytest.raises(InvalidScene, match=where + ".*" + problem):
+        Scene.from_json(doc)
+
+
+def test_an_untargeted_spell_a_spell_kind_a_thrown_weapon_and_a_quiet_sphereless_crate_read_back_and_need_their_features():
+    doc = _doc("arc_spell_at_a_monster")
+    _launch(doc, 1).pop("target")
+    _launch(doc, 1).update(arc=False, spell="ring_3818", rotation_speed=1.5)
+    scene = Scene.from_json(doc)
+    la = scene.others[1].launch
+    assert la.target is None and la.spell == "ring_3818" and la.rotation_speed == 1.5
+    assert Scene.loads(scene.dumps()) == scene
+    assert {"missiles.untargeted", "missiles.spells", "missiles.rotation_speed"} <= set(scene_features(scene))
+    doc = _doc()
+    doc["others"][0]["weenie"] = "missile"
+    assert "missiles.thrown" in scene_features(Scene.from_json(doc))
+    plain = Scene.from_json(_doc())
+    assert not {"missiles.untargeted", "missiles.spells", "missiles.rotation_speed", "missiles.thrown",
+                "objects.report_collisions", "objects.sphereless"} & set(scene_features(plain))
+
+
 def test_a_static_in_an_env_cell_is_no_target():
     from dataclasses import replace
 
@@ -85,10 +130,13 @@ def test_a_static_in_an_env_cell_is_no_target():
 
 
 def test_a_projectiles_launch_packs_after_its_record():
-    assert PACK_VERSION == 15
+    assert PACK_VERSION == 16
     scene = SCENES["arc_spell_at_a_monster"]
     la = scene.others[1].launch
-    record = struct.pack("<BiIIf3f4fBBB", 1, LAUNCH_TICK, 0x50000001, MONSTER, 15.0, *la.origin, 1.0, 0.0, 0.0, 0.0, 1, 1, 0)
+    # ... lead_target, arc, tracking, alt_solver, rotation_speed (none), the spell's kind (plain), then the
+    # ReportCollisions property byte (unset)
+    record = struct.pack("<BiIIf3f4fBBBBfBB", 1, LAUNCH_TICK, 0x50000001, MONSTER, 15.0, *la.origin, 1.0, 0.0, 0.0, 0.0,
+                         1, 1, 0, 0, 0.0, 0, 0)
     data = pack_scene(scene)
     assert record in data
     # the monster has no launch: its record ends in byte 0, right before the arc spell's DAT records

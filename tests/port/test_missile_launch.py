@@ -234,3 +234,50 @@ def test_an_arrow_striking_a_wall_loses_only_its_missile_bit_and_the_environment
         assert arrow.cur_cell is None and not arrow.is_active() and wo.hit_msg
     finally:
         lscape.release()
+
+
+def test_a_projectile_with_a_rotation_speed_tumbles_about_its_x_axis_and_does_not_align_with_its_path(world):
+    # Creature.SetProjectilePhysicsState / SpellProjectile.Setup: RotationSpeed clears AlignPath, Omega = (2 pi r, 0, 0)
+    lscape, timer, target, arrow = world
+    wo = Ammunition(guid=ARROW_ID, physics_obj=arrow, rotation_speed=F(1.5))
+    ml.set_projectile_physics_state(wo, target, v(1, 0, 0), v(90, 97, GROUND + 0.5), EXACT.quat(0, 0, 0, 1))
+    assert not arrow.state & PhysicsState.AlignPath and arrow.state & PhysicsState.Missile
+    assert arrow.omega == v(F(np.pi * 2 * 1.5), 0, 0)
+    spell = SpellProjectile(guid=ARROW_ID, physics_obj=arrow, spell_type=ml.BOLT, rotation_speed=F(-0.5))
+    ml.spell_projectile_setup(spell)
+    assert not arrow.state & PhysicsState.AlignPath and arrow.omega == v(F(-np.pi), 0, 0)
+
+
+@pytest.mark.parametrize("kind, ethereal, scripted", [("plain", False, None), ("rolling_death", True, None),
+                                                       ("wall", False, False), ("ring", False, False),
+                                                       ("ring_3818", False, True)])
+def test_a_spells_setup_leaves_rolling_death_ethereal_and_sets_scripted_collision_by_wall_and_ring(world, kind, ethereal,
+                                                                                                   scripted):
+    from acconform.port.run import world_object_of
+    from acconform.scene import Launch, OtherMover
+
+    lscape, timer, target, arrow = world
+    arrow.state = int(PhysicsState.Ethereal | PhysicsState.ScriptedCollision) if scripted is False else int(PhysicsState.Ethereal)
+    launch = Launch(0, 0x50000001, None, 10.0, (90.0, 97.0, 21.0), spell=kind)
+    other = OtherMover(ARROW_ID, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), 0.1),), None, 0.0, 0.0, launch=launch)
+    wo = world_object_of(other)
+    wo.physics_obj = arrow
+    assert wo.spell_type == (ml.WALL if kind == "wall" else ml.RING if kind.startswith("ring") else ml.BOLT)
+    ml.spell_projectile_setup(wo, kind == "rolling_death",
+                              None if scripted is None else scripted)
+    assert bool(arrow.state & PhysicsState.Ethereal) == ethereal
+    if scripted is not None:
+        assert bool(arrow.state & PhysicsState.ScriptedCollision) == scripted
+
+
+def test_a_weenies_report_collisions_property_and_a_thrown_weapon_are_made_as_the_scene_says():
+    from acconform.port.run import world_object_of
+    from acconform.scene import Launch, OtherMover
+
+    body = (SphereRec((0.0, 0.0, 0.5), 0.5),)
+    crate = world_object_of(OtherMover(0x80000002, "object", (), None, 0.0, 0.0, report_collisions=False))
+    assert crate.report_collisions is False
+    assert world_object_of(OtherMover(0x80000003, "monster", body, None, 0.0, 0.0)).report_collisions is None
+    launch = Launch(0, 0x50000001, 0x80000003, 10.0, (90.0, 97.0, 21.0), rotation_speed=2.0)
+    thrown = world_object_of(OtherMover(ARROW_ID, "missile", body, None, 0.0, 0.0, launch=launch))
+    assert type(thrown) is Missile and thrown.rotation_speed == 2.0

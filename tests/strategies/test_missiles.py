@@ -162,3 +162,72 @@ def test_a_scene_without_alt_solver_writes_no_such_key_and_needs_no_new_feature(
     for s in missile_scenes[:20]:
         la = _projectile(s).to_json()["launch"]
         assert "alt_solver" not in la and "missiles.alt_solver" not in scene_features(s)
+
+
+def _arm_scenes(arm: str, n: int = 16, seed: int = 62):
+    """`n` scenes of a launch arm drawn only by name (draw_missile_scene(draw, arm)), as tests/runner/launch_scenes.py
+    --only draws them."""
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.missiles import draw_missile_scene
+
+    drawer = FastDrawer(st.composite(lambda draw: draw_missile_scene(draw, arm))(), seed * 1000003)
+    with pinned_constants():
+        return [drawer.draw()[0] for _ in range(n)]
+
+
+def test_the_spin_and_thrown_arms_give_projectiles_a_rotation_speed_and_thrown_ones_weenie_missile():
+    from acconform.protocol import scene_features
+    from acconform.scene import Scene
+
+    spin = _arm_scenes("spin")
+    assert any(_projectile(s).launch.rotation_speed != 0 for s in spin)
+    for s in spin:
+        la = _projectile(s).launch
+        assert ("missiles.rotation_speed" in scene_features(s)) == (la.rotation_speed != 0)
+        assert Scene.from_json(s.to_json()) == s
+    thrown = _arm_scenes("thrown")
+    assert all(_projectile(s).weenie == "missile" and "missiles.thrown" in scene_features(s) for s in thrown)
+    assert {_projectile(s).launch.rotation_speed != 0 for s in thrown} == {True, False}
+
+
+def test_the_trap_and_untargeted_arms_cast_from_an_object_and_at_no_one():
+    from acconform.protocol import scene_features
+    from acconform.scene import Scene
+
+    for s in _arm_scenes("trap"):
+        la = _projectile(s).launch
+        launcher = next(o for o in s.others if o.id == la.launcher)
+        assert launcher.weenie == "object" and _projectile(s).weenie == "spell_projectile"
+    untargeted = _arm_scenes("untargeted")
+    for s in untargeted:
+        assert _projectile(s).launch.target is None and "missiles.untargeted" in scene_features(s)
+        assert "target" not in _projectile(s).to_json()["launch"] and Scene.from_json(s.to_json()) == s
+
+
+def test_the_spells_arm_draws_every_spell_kind_and_never_an_arcing_wall_or_ring():
+    from acconform.protocol import scene_features
+    from acconform.scene import SPELL_KINDS
+
+    scenes = _arm_scenes("spells", 40)
+    kinds = collections.Counter(_projectile(s).launch.spell for s in scenes)
+    assert set(kinds) == set(SPELL_KINDS[1:])
+    for s in scenes:
+        la = _projectile(s).launch
+        assert "missiles.spells" in scene_features(s) and not (la.arc and la.spell in ("wall", "ring", "ring_3818"))
+
+
+def test_the_quiet_and_sphereless_arms_push_a_crate_that_reports_nothing_or_has_no_spheres():
+    from acconform.flags import PhysicsState
+    from acconform.protocol import scene_features
+    from acconform.scene import Scene
+
+    for s in _arm_scenes("quiet"):
+        crate = next(o for o in s.others if o.weenie == "object")
+        assert crate.report_collisions is False and not crate.state & PhysicsState.ReportCollisions
+        assert "objects.report_collisions" in scene_features(s) and Scene.from_json(s.to_json()) == s
+    for s in _arm_scenes("sphereless"):
+        crate = next(o for o in s.others if o.weenie == "object")
+        assert crate.spheres == () and "objects.sphereless" in scene_features(s) and Scene.from_json(s.to_json()) == s
