@@ -58,6 +58,11 @@ FRAMERATES = st.sampled_from(tuple(float(to_f32(r)) for r in _RATES * 12 + (0.0,
 FRAME_COUNTS = st.integers(1, 8)
 FRAME_RANGES = st.sampled_from(("all", "all", "all", "low1", "first3", "high_past_end", "one", "low_past_high",
                                 "low_past_end"))
+# one animation in 40 played from a low frame below 0 (an AnimData's LowFrame is an int the DAT may give negative:
+# set_animation_id clamps only a low frame past the end): the frames before 0 have no PartFrame (get_part_frame's
+# range test, execute_hooks' null) and no PosFrame (get_pos_frame's identity)
+NEGATIVE_LOW = st.sampled_from((False,) * 39 + (True,))
+NEGATIVE_LOWS = st.sampled_from((-1, -2, -5))
 ROOT_MOTION = st.sampled_from((True,) * 59 + (False,))  # False: an Animation without PosFrames (one in 60)
 HOOKED = st.sampled_from((False,) * 29 + (True,))  # an animation with hooks (one in 30)
 HOOK_NAMES = st.sampled_from(("AnimationDone", "AnimationDone", "DefaultScript", "Ethereal", "Sound"))
@@ -166,6 +171,8 @@ def _animation(draw, move: str) -> AnimationSpec:
 
 def _anim_ref(draw, index: int, frames: int) -> AnimRef:
     fr = draw(FRAMERATES)
+    if draw(NEGATIVE_LOW):  # kept as it is: played from a frame before the first
+        return AnimRef(index, fr, draw(NEGATIVE_LOWS), -1)
     how = draw(FRAME_RANGES)
     if how == "low1" and frames > 1:
         return AnimRef(index, fr, 1, -1)

@@ -80,6 +80,16 @@ def test_tables_vary_links_modifiers_and_framerates(motion_scenes):
     assert len(rates) >= 5
 
 
+def test_some_tables_play_an_animation_from_a_frame_before_the_first(motion_scenes):
+    """One AnimData in 40 has a negative LowFrame (set_animation_id keeps it): its frames before 0 have no
+    PartFrame, what get_part_frame's range test and execute_hooks' null arm need (shard ticks-0064)."""
+    refs = [a for s in motion_scenes for t in (s.mover.motion_table,)
+            for e in (*t.cycles, *t.links, *t.modifiers) for a in e.data.anims]
+    negative = [a for a in refs if a.low_frame < 0]
+    assert negative and {a.low_frame for a in negative} <= {-1, -2, -5}
+    assert len(negative) < len(refs) / 10
+
+
 def test_a_ticks_campaign_draws_motion_scenes():
     names = [s.name for s in sample_scenes(("ticks",), 200, 40)]
     assert any(n.startswith("ticks:motion:") for n in names)
