@@ -4,7 +4,7 @@
 
 Draws a motion policy world (strategies/ticks.py's SITES["motion"]) and `draw_motion_layer_ticks` on it (a mover
 whose Gravity is cleared among MoveToState keys, combat refusals of DoMotion, keys pressed and released by
-DoMotion / StopMotion), in either engine mode, from seed 65 (strategies.fast_draw); writes N scenes as JSON lines
+DoMotion / StopMotion, a mover without a motion table, a table's modifier that is no substate), in either engine mode, from seed 65 (strategies.fast_draw); writes N scenes as JSON lines
 for `acconform record` (docs/corpus-coverage.md, stop 51).
 """
 

@@ -731,7 +731,11 @@ def draw_managed_chase(draw, clock) -> Scene:
 # DoMotion / StopMotion with a StopCompletely among them; "tableless" gives a mover without a motion table the calls a
 # server makes of any WorldObject (get_minterp's MovementManager, made Static or not; DoMotion, StopMotion and
 # StopCompletely before it: NoAnimationTable)
-LAYER_ARMS = st.sampled_from(("float", "float", "float", "refusal", "keys", "keys", "tableless", "tableless"))
+# "modifier" gives the table a modifier that is no substate (Jump, StopTurning: MotionTable's modifier arm), then
+# presses and releases it by DoMotion / StopMotion (InterpretedMotionState's and RawMotionState's ApplyMotion of a
+# command neither substate, style nor action)
+LAYER_ARMS = st.sampled_from(("float", "float", "float", "refusal", "keys", "keys", "tableless", "tableless", "modifier"))
+PURE_MODIFIERS = st.sampled_from((int(MC.Jump), int(MC.StopTurning)))
 TABLELESS_STOPS = st.sampled_from(("stop_completely", "cancel_moveto"))
 STATIC = 0x00000001  # PhysicsState.Static
 REFUSED = st.sampled_from((int(MC.Sleeping), int(MC.Sleeping), int(MC.Crouch), int(MC.Sitting), int(MC.Cheer)))
@@ -780,6 +784,18 @@ def draw_motion_layer_ticks(draw, base: Scene, clock) -> Scene:
             k = draw(st.integers(1, n - 1))
             inputs[k]["do_motion"] = CommandInput(draw(REFUSED), draw(HOLD_TO_APPLY))
             tags.append(f"do{inputs[k]['do_motion'].motion & 0xFF:x}@{k}")
+    elif arm == "modifier":
+        modifier = draw(PURE_MODIFIERS)
+        still = table.cycles[0].data.anims  # the Ready cycle's animation
+        table = replace(table, modifiers=table.modifiers + (MotionEntry(NC, modifier, MotionDataSpec(still)),))
+        first, tag = draw_motion_input(draw)
+        inputs[0]["motion"] = first
+        tags.append(f"{modifier & 0xFF:x}+{tag}")
+        for _ in range(draw(st.integers(1, 3))):
+            k = draw(st.integers(0, n - 1))
+            key = "do_motion" if draw(MOSTLY) else "stop_motion"
+            inputs[k][key] = CommandInput(modifier, draw(HOLD_TO_APPLY))
+            tags.append(f"{key[:2]}@{k}")
     elif arm == "tableless":
         table = None
         k = draw(st.integers(0, n - 1))  # the first MoveToState (get_minterp); before it, keys and stops find no manager

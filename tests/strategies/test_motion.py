@@ -261,7 +261,7 @@ def test_layer_scenes_clear_gravity_refuse_in_combat_press_keys_and_leave_some_m
     from acconform.scene import TABLELESS_INPUTS
 
     arms = Counter(s.name.split(":layer:")[1].split(":")[0].split("+")[0] for s in layer_scenes)
-    assert set(arms) == {"float", "refusal", "keys", "tableless"}
+    assert set(arms) == {"float", "refusal", "keys", "tableless", "modifier"}
     for s in layer_scenes:
         assert validate_scene(s) == s
         steps = s.ticks.steps
@@ -271,6 +271,11 @@ def test_layer_scenes_clear_gravity_refuse_in_combat_press_keys_and_leave_some_m
             assert steps[0].motion.style in (int(MC.HandCombat), int(MC.SwordCombat), int(MC.Magic))
             assert any(st.do_motion is not None and st.do_motion.motion in (int(MC.Sleeping), int(MC.Crouch), int(MC.Sitting),
                                                                              int(MC.Cheer)) for st in steps)
+        if ":layer:modifier" in s.name:  # a modifier that is no substate, in the table and pressed
+            pure = {int(MC.Jump), int(MC.StopTurning)}
+            assert any(e.motion in pure for e in s.mover.motion_table.modifiers)
+            assert any(st.do_motion is not None and st.do_motion.motion in pure or st.stop_motion is not None
+                       and st.stop_motion.motion in pure for st in steps)
         if ":layer:tableless" in s.name:
             assert s.mover.motion_table is None
             assert all(name in TABLELESS_INPUTS for st in steps for name in ("motion", "stop", "do_motion", "stop_motion",
