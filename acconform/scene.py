@@ -801,6 +801,9 @@ TICK_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega"
 MOTION_INPUTS = ("motion", "stop", "do_motion", "stop_motion", "move_to", "move_to_object", "turn_to_heading",
                  "turn_to_object")
 _MANAGER_INPUTS = MOTION_INPUTS[1:]
+# the motion inputs a mover without a motion table may be given (scene/8, stop 51): the calls a server makes of any
+# WorldObject (get_minterp makes its MovementManager; DoMotion, StopMotion and StopCompletely answer without one)
+TABLELESS_INPUTS = ("motion", "stop", "do_motion", "stop_motion")
 _TICK_VECTORS = ("velocity", "local_velocity", "omega", "jump", "sequence_velocity", "sequence_omega")
 
 
@@ -1751,10 +1754,12 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         movers = {o.id for o in scene.others if o.begin is not None and o.parent is None and o.launch is None}
         for i, step in enumerate(scene.ticks.steps):
             for name in MOTION_INPUTS:
-                if getattr(step, name) is not None and scene.mover.motion_table is None:
-                    raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}"), "a motion input needs the mover's "
-                                       "motion_table (the player's MotionTableId: without one ACE has no animation "
-                                       "table to play and no MovementManager)")
+                if getattr(step, name) is not None and scene.mover.motion_table is None and (
+                        name not in TABLELESS_INPUTS or name == "stop" and step.stop == "move_to_manager_cancel"):
+                    raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}"), "this motion input needs the mover's "
+                                       "motion_table (the player's MotionTableId: without one it has no "
+                                       "MovementManager; only motion, do_motion, stop_motion and the stops "
+                                       "stop_completely and cancel_moveto are asked of a mover without one)")
             for name in ("move_to_object", "turn_to_object"):
                 target = getattr(step, name)
                 if target is not None and target.object not in statics and target.object not in movers:

@@ -726,3 +726,120 @@ def draw_managed_chase(draw, clock) -> Scene:
         return scene.replace(mover=replace(m, transient_state=m.transient_state | int(TransientState.Active)))
     return scene.replace(mover=replace(m, motion_table=table, skills=skills,
                                        transient_state=m.transient_state | int(TransientState.Active)))
+
+
+# ---------------------------------------------------------------- the motion layer's rarer arms (issue 40, stop 51)
+
+# which of MotionInterp's rarer arms a layer scene aims at: "float" clears the mover's Gravity at a drawn tick (a
+# creature whose GravityStatus is off: contact_allows_move's, LeaveGround's and HitGround's Gravity tests), now and
+# then giving it back later; "refusal" sets a combat style by a MoveToState, then asks DoMotion for Crouch,
+# Sitting, Sleeping or an emote (DoMotion's combat refusals); "keys" presses and releases turns and sidesteps by
+# DoMotion / StopMotion with a StopCompletely among them
+# DoMotion / StopMotion with a StopCompletely among them; "tableless" gives a mover without a motion table the calls a
+# server makes of any WorldObject (get_minterp's MovementManager, made Static or not; DoMotion, StopMotion and
+# StopCompletely before it: NoAnimationTable)
+# "modifier" gives the table a modifier that is no substate (Jump, StopTurning: MotionTable's modifier arm), then
+# presses and releases it by DoMotion / StopMotion (InterpretedMotionState's and RawMotionState's ApplyMotion of a
+# command neither substate, style nor action)
+LAYER_ARMS = st.sampled_from(("float", "float", "float", "refusal", "keys", "keys", "tableless", "tableless", "modifier"))
+PURE_MODIFIERS = st.sampled_from((int(MC.Jump), int(MC.StopTurning)))
+TABLELESS_STOPS = st.sampled_from(("stop_completely", "cancel_moveto"))
+STATIC = 0x00000001  # PhysicsState.Static
+REFUSED = st.sampled_from((int(MC.Sleeping), int(MC.Sleeping), int(MC.Crouch), int(MC.Sitting), int(MC.Cheer)))
+COMBAT_STYLES = st.sampled_from((HC, SC, int(MC.Magic)))
+LAYER_KEYS = st.sampled_from((TURN, int(MC.TurnLeft), SIDE, int(MC.SideStepLeft), WALK, int(MC.WalkBackwards), RUN))
+GRAVITY = 0x00000400  # PhysicsState.Gravity
+
+
+def draw_motion_layer_ticks(draw, base: Scene, clock) -> Scene:
+    """A motion tick scene (draw_motion_ticks's table, world and clock) aimed at one of MotionInterp's rarer arms
+    (LAYER_ARMS): the mover's Gravity cleared at a drawn tick among MoveToState keys (and a jump now and then),
+    a combat style then DoMotion of what combat refuses, or keys pressed and released by DoMotion / StopMotion."""
+    from .ticks import _path, _unit
+
+    table, tlabel = draw_motion_table(draw)
+    n = max(3, dr.take(draw, TICK_COUNTS))
+    start, dts, clabel = clock(draw, n)
+    inputs = [{} for _ in range(n)]
+    g0, g1 = _path(base)
+    arm = draw(LAYER_ARMS)
+    tags = [arm]
+    if arm == "float":
+        first, tag = draw_motion_input(draw)
+        inputs[0]["motion"] = first
+        at = draw(st.integers(0, n - 1))
+        inputs[at]["state"] = base.mover.state & ~GRAVITY
+        tags.append(f"{tag}-grav@{at}")
+        for _ in range(min(dr.take(draw, SEGMENTS), n - 1)):
+            k = draw(st.integers(1, n - 1))
+            inputs[k]["motion"], t = draw_motion_input(draw)
+            tags.append(f"{t}@{k}")
+        if draw(HALF):
+            from .ticks import JUMP_FORWARD, JUMP_UPS
+
+            k = draw(st.integers(0, n - 1))
+            inputs[k]["jump"] = (0.0, to_f32(dr.take(draw, JUMP_FORWARD)), to_f32(dr.take(draw, JUMP_UPS)))
+            tags.append(f"jump@{k}")
+        if at < n - 1 and draw(HALF):  # Gravity given back: the mover falls again and lands
+            k = draw(st.integers(at + 1, n - 1))
+            inputs[k]["state"] = base.mover.state | GRAVITY
+            tags.append(f"grav@{k}")
+    elif arm == "refusal":
+        inputs[0]["motion"] = MotionInput(hold_key=draw(HOLD_KEYS), style=draw(COMBAT_STYLES),
+                                          forward=draw(st.sampled_from((0, WALK, READY))))
+        for _ in range(draw(st.integers(1, 3))):
+            k = draw(st.integers(1, n - 1))
+            inputs[k]["do_motion"] = CommandInput(draw(REFUSED), draw(HOLD_TO_APPLY))
+            tags.append(f"do{inputs[k]['do_motion'].motion & 0xFF:x}@{k}")
+    elif arm == "modifier":
+        modifier = draw(PURE_MODIFIERS)
+        still = table.cycles[0].data.anims  # the Ready cycle's animation
+        table = replace(table, modifiers=table.modifiers + (MotionEntry(NC, modifier, MotionDataSpec(still)),))
+        first, tag = draw_motion_input(draw)
+        inputs[0]["motion"] = first
+        tags.append(f"{modifier & 0xFF:x}+{tag}")
+        for _ in range(draw(st.integers(1, 3))):
+            k = draw(st.integers(0, n - 1))
+            key = "do_motion" if draw(MOSTLY) else "stop_motion"
+            inputs[k][key] = CommandInput(modifier, draw(HOLD_TO_APPLY))
+            tags.append(f"{key[:2]}@{k}")
+    elif arm == "tableless":
+        table = None
+        k = draw(st.integers(0, n - 1))  # the first MoveToState (get_minterp); before it, keys and stops find no manager
+        inputs[k]["motion"], tag = draw_motion_input(draw)
+        tags.append(f"{tag}@{k}")
+        if draw(HALF):  # Static (get_minterp's arm for it), Active kept or cleared
+            inputs[k]["state"] = base.mover.state | STATIC
+            tags.append("static")
+        if draw(HALF):
+            inputs[k]["transient_state"] = base.mover.transient_state & ~int(TransientState.Active)
+            tags.append("inactive")
+        for _ in range(draw(st.integers(1, 4))):
+            j = draw(st.integers(0, n - 1))
+            key = draw(st.sampled_from(("do_motion", "stop_motion", "stop")))
+            inputs[j][key] = draw(TABLELESS_STOPS) if key == "stop" else CommandInput(draw(LAYER_KEYS), draw(HOLD_TO_APPLY))
+            tags.append(f"{key[:6]}@{j}")
+        # moving (a velocity given at the tick, mostly): IsMovingOrAnimating, which Player.OnMoveToState and its keys
+        # ask before their calls, is true before it reaches the absent MovementManager (which throws)
+        ux, uy = _unit(g1[0] - g0[0], g1[1] - g0[1])
+        for j, inp in enumerate(inputs):
+            if any(key in inp for key in ("motion", "do_motion", "stop_motion")) and draw(MOSTLY):
+                v = draw(st.sampled_from((0.5, 1.0, 2.0)))
+                inp["velocity"] = (to_f32(ux * v), to_f32(uy * v), 0.0)
+    else:
+        first, tag = draw_motion_input(draw)
+        inputs[0]["motion"] = first
+        tags.append(tag)
+        for _ in range(draw(st.integers(1, 4))):
+            k = draw(st.integers(0, n - 1))
+            key = "do_motion" if draw(HALF) else "stop_motion"
+            inputs[k][key] = CommandInput(draw(LAYER_KEYS), draw(HOLD_TO_APPLY))
+            tags.append(f"{key[:2]}{inputs[k][key].motion & 0xFF:x}@{k}")
+        if draw(HALF):
+            k = draw(st.integers(0, n - 1))
+            inputs[k]["stop"] = "stop_completely"
+            tags.append(f"stop@{k}")
+    status = draw(PLAYER_KILLER_STATUSES)
+    skills = draw_skills(draw)
+    return _motion_scene(base, table, start, dts, inputs, g0, g1,
+                         f"{tlabel}:layer:{'+'.join(tags)}:{status.name}:run{skills.run}:{clabel}", status, skills)

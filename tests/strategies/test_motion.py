@@ -244,3 +244,52 @@ def test_some_tables_have_actions_and_some_managed_scenes_ask_for_them_on_succes
     assert bursts
     assert all(s.ticks.steps[0].do_motion.motion in actions for s in bursts)
     assert max(sum(st.do_motion is not None for st in s.ticks.steps) for s in bursts) >= 2
+
+
+@pytest.fixture(scope="module")
+def layer_scenes():
+    """60 scenes of draw_motion_layer_ticks (MotionInterp's rarer arms, ticks-0065), drawn as its benchmark does."""
+    from hypothesis import strategies as st
+
+    from acconform.strategies import draws as dr
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.motion import draw_motion_layer_ticks
+    from acconform.strategies.scenes import draw_scene
+
+    @st.composite
+    def layer(draw):
+        kind, sub = draw(st.sampled_from(tk.SITES["motion"]))
+        return draw_motion_layer_ticks(draw, draw_scene(draw, kind, sub), tk._clock).replace(engine_mode=draw(dr.ENGINE_MODES))
+
+    with pinned_constants():
+        drawer = FastDrawer(layer(), 65)
+        return [drawer.draw()[0] for _ in range(60)]
+
+
+def test_layer_scenes_clear_gravity_refuse_in_combat_press_keys_and_leave_some_movers_without_a_table(layer_scenes):
+    from acconform.scene import TABLELESS_INPUTS
+
+    arms = Counter(s.name.split(":layer:")[1].split(":")[0].split("+")[0] for s in layer_scenes)
+    assert set(arms) == {"float", "refusal", "keys", "tableless", "modifier"}
+    for s in layer_scenes:
+        assert validate_scene(s) == s
+        steps = s.ticks.steps
+        if ":layer:float" in s.name:
+            assert any(st.state is not None and not st.state & 0x400 for st in steps)  # Gravity cleared at a tick
+        if ":layer:refusal" in s.name:
+            assert steps[0].motion.style in (int(MC.HandCombat), int(MC.SwordCombat), int(MC.Magic))
+            assert any(st.do_motion is not None and st.do_motion.motion in (int(MC.Sleeping), int(MC.Crouch), int(MC.Sitting),
+                                                                             int(MC.Cheer)) for st in steps)
+        if ":layer:modifier" in s.name:  # a modifier that is no substate, in the table and pressed
+            pure = {int(MC.Jump), int(MC.StopTurning)}
+            assert any(e.motion in pure for e in s.mover.motion_table.modifiers)
+            assert any(st.do_motion is not None and st.do_motion.motion in pure or st.stop_motion is not None
+                       and st.stop_motion.motion in pure for st in steps)
+        if ":layer:tableless" in s.name:
+            assert s.mover.motion_table is None
+            assert all(name in TABLELESS_INPUTS for st in steps for name in ("motion", "stop", "do_motion", "stop_motion",
+                                                                              "move_to", "turn_to_heading")
+                       if getattr(st, name) is not None)
+        else:
+            assert s.mover.motion_table is not None
