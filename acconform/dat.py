@@ -44,7 +44,8 @@ What each shape becomes (`static_records(obj, index)`):
 
 The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
 the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
-Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxObj mesh, id
+Height or Radius: only MoveToManager and StickyManager do), flags AllowFreeHeading (0x4) when the mover has
+`free_heading` (scene/8) and 0 otherwise, and one part, a GfxObj mesh, id
 ``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition). Its
 HoldingLocations (scene/8 `holding_locations`) are written in the order given; another mover's Setup
 (`other_records`) likewise, with its sorting sphere (`sorting_sphere`, zero when none: a child's cells).
@@ -133,6 +134,7 @@ MAX_OTHERS = 0xFFFF
 GFX_HAS_PHYSICS = 0x1
 SETUP_HAS_PARENT = 0x1
 SETUP_HAS_DEFAULT_SCALE = 0x2
+SETUP_ALLOW_FREE_HEADING = 0x4
 DEFAULT_PLACEMENT = 0  # ACE.Entity.Enum.Placement.Default: the key PartArray.SetPlacementFrame falls back to
 RESTING_PLACEMENT = 0x65  # Placement.Resting: the key PartArray.CreateSetup's (and InitObjectEnd's) SetPlacementFrame(0x65) asks for first
 STIPPLING_NO_POS = 0x4
@@ -289,9 +291,9 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
 def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
           placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0,
           default_script: int = 0, holding_locations=(), placement_key: int = DEFAULT_PLACEMENT,
-          sorting_sphere=((0.0, 0.0, 0.0), 0.0), parent_index=None) -> bytes:
+          sorting_sphere=((0.0, 0.0, 0.0), 0.0), parent_index=None, free_heading: bool = False) -> bytes:
     """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, HasParent when
-    `parent_index` is, else 0), the parts, the ParentIndex (one uint per part, with HasParent),
+    `parent_index` is, AllowFreeHeading when `free_heading`, else 0), the parts, the ParentIndex (one uint per part, with HasParent),
     the DefaultScale (one vector per part), the HoldingLocations (`holding_locations`: (location id, part
     id, scene Frame) triples in the order given, which is the Dictionary's; none by default; a part id
     at or past the parts holds at the object's Position, and -1 throws in UpdateChild), no connection points, the placement
@@ -301,7 +303,8 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     default: what a child's calc_cross_cells finds its cells with) and a zero selection sphere, no
     lights, the DefaultAnimation, DefaultScript and DefaultMotionTable given (0, none, by default), no sound
     table or script table."""
-    flags = (SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0) | (SETUP_HAS_PARENT if parent_index is not None else 0)
+    flags = ((SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0) | (SETUP_HAS_PARENT if parent_index is not None else 0)
+             | (SETUP_ALLOW_FREE_HEADING if free_heading else 0))
     out = [_u32.pack(setup_id), _u32.pack(flags), _u32.pack(len(parts))]
     out += [_u32.pack(p) for p in parts]
     if parent_index is not None:  # HasParent: ParentIndex, one uint per part (ACE's physics never reads it)
@@ -390,7 +393,8 @@ def mover_records(mover: Mover) -> ObjectRecords:
     """The DAT records the mover is made from: its Setup (did) and the Setup's one part; with a motion
     table (scene/6), the Setup names it (DefaultMotionTable; and the table's default_animation, scene/8, as its
     DefaultAnimation) and its MotionTable and Animations follow; its DefaultScript is the mover's
-    default_script (scene/8), and its resting_frame (scene/8) its one placement frame, keyed Resting."""
+    default_script (scene/8), and its resting_frame (scene/8) its one placement frame, keyed Resting; its flags
+    say AllowFreeHeading when the mover has free_heading (scene/8)."""
     part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
     table = mover.motion_table
     body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
@@ -400,7 +404,7 @@ def mover_records(mover: Mover) -> ObjectRecords:
                  if table is not None and table.default_animation is not None else 0,
                  default_script=mover.default_script,
                  placement=None if mover.resting_frame is None else [mover.resting_frame], placement_key=RESTING_PLACEMENT,
-                 holding_locations=holding_location_triples(mover.holding_locations))
+                 holding_locations=holding_location_triples(mover.holding_locations), free_heading=mover.free_heading)
     records = (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body))
     if table is not None:
         records += motion_records(table)

@@ -1276,6 +1276,9 @@ class Mover:
     # scene/8: its Setup's placement frame Resting (0x65) for its one part (None: the Setup has no placement
     # frames): PartArray.CreateSetup's SetPlacementFrame(0x65) (makeAnimObject) finds it, and the Sequence's placement frame places the part
     resting_frame: Frame | None = None
+    # scene/8: its Setup's flag AllowFreeHeading (SetupFlags 0x4): PhysicsObj.get_object_info then sets
+    # ObjectInfoState.FreeRotate, so a transition takes the end's orientation at once instead of turning by steps
+    free_heading: bool = False
 
     @property
     def motion_table_id(self) -> int:
@@ -1302,6 +1305,8 @@ class Mover:
             d["default_script"] = write_id(self.default_script)
         if self.resting_frame is not None:
             d["resting_frame"] = self.resting_frame.to_json()
+        if self.free_heading:
+            d["free_heading"] = True
         return d
 
     @staticmethod
@@ -1312,7 +1317,7 @@ class Mover:
         format holds the mover's `skills` (scene/8). `children`: its Setup may have holding locations (scene/8)."""
         if not skills and isinstance(r.value, dict) and "skills" in r.value:
             r["skills"].fail(f"skills need format {FORMAT!r} (older formats have none)")
-        for field in ("holding_locations", "default_script", "resting_frame"):
+        for field in ("holding_locations", "default_script", "resting_frame", "free_heading"):
             if not children and isinstance(r.value, dict) and field in r.value:
                 r[field].fail(f"{field} needs format {FORMAT!r} (older formats have none)")
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
@@ -1325,7 +1330,7 @@ class Mover:
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
                *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ()),
-               *(("holding_locations", "default_script", "resting_frame") if children else ())})
+               *(("holding_locations", "default_script", "resting_frame", "free_heading") if children else ())})
         spheres, scale, up, down = _read_body(r)
         if vias and not skills and r.has("motion_table") and MotionTableSpec.from_json(r["motion_table"]).needs_v8:
             r["motion_table"].fail(f"hooks, root_motion and default_animation need format {FORMAT!r} (older formats have none)")
@@ -1350,6 +1355,7 @@ class Mover:
             else (),
             default_script=r["default_script"].id_() if children and r.given("default_script") else 0,
             resting_frame=Frame.from_json(r["resting_frame"]) if children and r.given("resting_frame") else None,
+            free_heading=r["free_heading"].bool_() if children and r.given("free_heading") else False,
         )
 
 
@@ -1610,12 +1616,12 @@ class Scene:
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
         motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
-        DefaultScript or DefaultAnimation, the mover's resting frame, /7
+        DefaultScript or DefaultAnimation, the mover's resting frame or free heading, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
-                self.mover.resting_frame is not None) or any(
+                self.mover.resting_frame is not None) or self.mover.free_heading or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None) for o in self.objects):
             return FORMAT

@@ -211,7 +211,7 @@ def _movers_scene(scene, m):
               OtherMover(0x80000004, "object", body, None, 0.0, 0.0, sorting_sphere=SphereRec((0.0, 0.0, 0.5), 0.6),
                          parent=ChildOf(0x50000001, 1, 0)))
     m = replace(m, holding_locations=(HoldingLocation(1, 1, Frame((0.4, 0.1, 1.0))),), default_script=0x33000001,
-                resting_frame=Frame((0.0, 0.0, 0.5)))
+                resting_frame=Frame((0.0, 0.0, 0.5)), free_heading=True)
     every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))

@@ -9,6 +9,7 @@ spheres' reach) can touch, sliced from one height field so shared edges agree.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from hypothesis import strategies as st
 
@@ -661,3 +662,36 @@ def _feature_target(f: tr.Feature, vx: int, vy: int, top: bool) -> tuple[float, 
         d = {(f.x0, vy): vx - f.x0, (f.x1, vy): f.x1 - vx, (vx, f.y0): vy - f.y0, (vx, f.y1): f.y1 - vy}
         return min(d, key=d.get)
     return cx, cy
+
+
+# scene/8 mover.free_heading: the transition kinds a free-heading mover may be drawn over (a shard holds one kind:
+# bsp-0017's scenes are bsp), and its end's heading
+FREE_HEADING_KINDS = ("terrain", "bsp", "obstacles", "indoor")
+FREE_HEADING_TURNS = st.sampled_from((0.0, 30.0, 90.0, 180.0, -135.0))
+FREE_HEADING_IN_PLACE = st.sampled_from((False, False, False, True))
+
+
+def draw_free_heading_scene(draw, kinds=FREE_HEADING_KINDS) -> Scene:
+    """A transition scene (one of `kinds`, placed or not, as `scenes_of` draws it) whose mover's Setup has
+    the flag AllowFreeHeading (scene/8 mover.free_heading): PhysicsObj.get_object_info sets ObjectInfoState.FreeRotate,
+    so Transition.FindTransitionalPosition gives the current position the end's orientation before the first step (a
+    placement's transition has no step: its other FreeRotate arm) and never turns the check position by steps. The end
+    is turned by a drawn yaw (0 keeps its heading) so the orientation the transition carries differs; a quarter of the
+    scenes turn in place (the end at the begin).
+    No campaign kind draws it: a draw added to a kind would move every seeded sample the tests pin."""
+    kind = draw(st.sampled_from(kinds))
+    scene = with_placement(draw, draw_scene(draw, kind))
+    m = scene.mover
+    turn = draw(FREE_HEADING_TURNS)
+    # a quarter turn in place (the end at the begin's origin): CalcNumSteps gives no step, so the transition takes
+    # FindTransitionalPosition's numSteps <= 0 arm with FreeRotate set
+    # (a begin no cell holds, a placement's, keeps its end)
+    low = m.begin.cell & 0xFFFF
+    in_place = draw(FREE_HEADING_IN_PLACE) and (1 <= low <= 0x40 or 0x100 <= low <= 0xFFFD)
+    end = Position(m.begin.cell, Frame(m.begin.frame.origin, m.begin.frame.orientation)) if in_place else m.end
+    if turn:
+        w, x, y, z = end.frame.orientation
+        tw, _, _, tz = yaw(turn)  # the turn about +z, composed on the left: q' = t * q
+        q = tuple(to_f32(v) for v in (tw * w - tz * z, tw * x - tz * y, tw * y + tz * x, tw * z + tz * w))
+        end = Position(end.cell, Frame(end.frame.origin, q))
+    return scene.replace(mover=replace(m, end=end, free_heading=True), name=f"{scene.name}:free-heading")
