@@ -1594,6 +1594,11 @@ class Scene:
     ticks: Ticks | None = None  # a tick scene: ACE's per-tick update moves the mover (scene/4)
     buildings: tuple[Building, ...] = ()  # scene/5
     others: tuple[OtherMover, ...] = ()  # scene/8: the other moving objects, in the order they enter the world
+    # scene/8: the DAT records carry what a client draws, as retail's do (acconform/dat.py: polygons' UV indices, a
+    # BSP GfxObj's drawing polygons, drawing BSP, surface and degrade table, an EnvCell's surface): DatLoader reads
+    # them, ACE's physics reads only the drawing BSP's root sphere (GfxObj.DrawingSphere) and, in the client engine
+    # mode, makes the drawing polygons
+    drawing: bool = False
 
     @property
     def indoor(self) -> bool:
@@ -1616,12 +1621,12 @@ class Scene:
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
         motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
-        DefaultScript or DefaultAnimation, the mover's resting frame or free heading, /7
+        DefaultScript or DefaultAnimation, the mover's resting frame or free heading, drawn DAT records, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
-                self.mover.resting_frame is not None) or self.mover.free_heading or any(
+                self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None) for o in self.objects):
             return FORMAT
@@ -1660,6 +1665,8 @@ class Scene:
             d["others"] = [o.to_json() for o in self.others]
         if self.ticks is not None:
             d["ticks"] = self.ticks.to_json()
+        if self.drawing:
+            d["drawing"] = True
         return d
 
     def dumps(self) -> str:
@@ -1678,12 +1685,14 @@ class Scene:
         buildings_field = ("buildings",) if fmt in (FORMAT_V5, FORMAT_V6, FORMAT_V7, FORMAT) else ()
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7) and "others" in doc:
             r["others"].fail(f"other movers need format {FORMAT!r} (older formats have one mover)")
+        if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7) and "drawing" in doc:
+            r["drawing"].fail(f"drawing needs format {FORMAT!r} (older formats have none)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3) and "ticks" in doc:
             r["ticks"].fail(f"ticks need format {FORMAT_V4!r} or later (older formats have no ticks)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4) and "buildings" in doc:
             r["buildings"].fail(f"buildings need format {FORMAT_V5!r} or later (older formats have no buildings)")
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field,
-               *buildings_field, *(("others",) if fmt == FORMAT else ())})
+               *buildings_field, *(("others", "drawing") if fmt == FORMAT else ())})
         if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.given("name") else ""
@@ -1712,7 +1721,9 @@ class Scene:
                                 ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), skills=fmt == FORMAT,
                                 children=fmt == FORMAT)
         others = tuple(OtherMover.from_json(o) for o in r["others"].list()) if fmt == FORMAT and r.given("others") else ()
-        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others)
+        drawing = r["drawing"].bool_() if fmt == FORMAT and r.given("drawing") else False
+        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others,
+                      drawing)
         check_consistency(scene, path)
         return scene
 

@@ -695,3 +695,20 @@ def draw_free_heading_scene(draw, kinds=FREE_HEADING_KINDS) -> Scene:
         q = tuple(to_f32(v) for v in (tw * w - tz * z, tw * x - tz * y, tw * y + tz * x, tw * z + tz * w))
         end = Position(end.cell, Frame(end.frame.origin, q))
     return scene.replace(mover=replace(m, end=end, free_heading=True), name=f"{scene.name}:free-heading")
+
+
+# scene/8 `drawing`: the kinds whose DAT records have something drawn (BSP statics' GfxObjs, Environments and EnvCells,
+# buildings' shells)
+DRAWING_KINDS = ("bsp", "indoor", "buildings")
+
+
+def draw_drawing_scene(draw, kinds=DRAWING_KINDS) -> Scene:
+    """A transition scene (one of `kinds`, placed or not, as `scenes_of` draws it) whose DAT records carry what a
+    client draws (scene/8 `drawing`; acconform/dat.py): every polygon its UV indices (a Clockwise one its negative
+    ones too), a BSP GfxObj its drawing polygons, a drawing BSP (whose root sphere ACE's GfxObj makes its
+    DrawingSphere), a surface and a degrade table, an EnvCell a surface; in the engine mode drawn as a placement's
+    (a client-mode GfxObj makes its drawing polygons). No campaign kind draws it: a draw added to a kind would move
+    every seeded sample the tests pin."""
+    kind = draw(st.sampled_from(kinds))
+    scene = with_placement(draw, draw_scene(draw, kind))
+    return scene.replace(drawing=True, engine_mode=draw(dr.ENGINE_MODES), name=f"{scene.name}:drawing")
