@@ -712,3 +712,28 @@ def draw_drawing_scene(draw, kinds=DRAWING_KINDS) -> Scene:
     kind = draw(st.sampled_from(kinds))
     scene = with_placement(draw, draw_scene(draw, kind))
     return scene.replace(drawing=True, engine_mode=draw(dr.ENGINE_MODES), name=f"{scene.name}:drawing")
+
+
+# a multipart static with more cylspheres than ObjCell.find_cell_list takes (it clamps numCylSphere to 10)
+MANY_CYLSPHERE_COUNTS = st.sampled_from((11, 11, 12, 16))
+MANY_CYLSPHERE_RADII = st.sampled_from((0.25, 0.5, 0.75, 1.0))
+MANY_CYLSPHERE_OFFSETS = st.sampled_from((-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0))
+
+
+def draw_many_cylspheres_scene(draw) -> Scene:
+    """A bsp scene of the multipart policy (a static made from a Setup of BSP parts, scene/7 `setup`) whose Setup has
+    11 or more cylspheres, its state Static alone (no HasPhysicsBSP: the scene's state overwrites it, as WorldObject's
+    does), so PhysicsObj.calc_cross_cells_static finds its cells by ObjCell.find_cell_list's cylsphere overload, which
+    takes only the first 10 (numCylSphere > 10), and FindObjCollisions meets its cylspheres. No campaign kind draws it:
+    a draw added to a kind would move every seeded sample the tests pin."""
+    scene = with_placement(draw, draw_scene(draw, "bsp", "multipart"))
+    objects = list(scene.objects)
+    for i, o in enumerate(objects):
+        if o.setup is None:
+            continue
+        n = draw(MANY_CYLSPHERE_COUNTS)
+        cyls = tuple(CylSphereShape((draw(MANY_CYLSPHERE_OFFSETS), draw(MANY_CYLSPHERE_OFFSETS), 0.0),
+                                    draw(MANY_CYLSPHERE_RADII), draw(MANY_CYLSPHERE_RADII) * 2) for _ in range(n))
+        objects[i] = replace(o, setup=replace(o.setup, cylspheres=cyls), state=int(PhysicsState.Static))
+        break
+    return scene.replace(objects=tuple(objects), name=f"{scene.name}:many-cylspheres")
