@@ -44,10 +44,17 @@ What each shape becomes (`static_records(obj, index)`):
 
 The mover (`mover_records(mover)`) is made the same way, from a Setup, id ``0x02000000``, with
 the mover's spheres and step heights, Height and Radius 0 (ACE's transition never reads a Setup's
-Height or Radius: only MoveToManager and StickyManager do) and one part, a GfxObj mesh, id
+Height or Radius: only MoveToManager and StickyManager do), flags AllowFreeHeading (0x4) when the mover has
+`free_heading` (scene/8) and 0 otherwise, and one part, a GfxObj mesh, id
 ``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition). Its
 HoldingLocations (scene/8 `holding_locations`) are written in the order given; another mover's Setup
 (`other_records`) likewise, with its sorting sphere (`sorting_sphere`, zero when none: a child's cells).
+
+**Drawn** (scene/8 `drawing`): every polygon is written with Stippling 0 and its UV indices (vertex i's index
+i; a Clockwise polygon's negative ones too), a BSP GfxObj (`gfx_obj_physics`) with flags HasPhysics|HasDrawing|
+HasDIDDegrade, one surface (DRAWING_SURFACE), its physics polygons again as its drawing polygons, a drawing BSP over
+them (`drawing_bsp_node`, no portals) and DRAWING_DID_DEGRADE, and an EnvCell with one surface. A mesh part (no
+polygons) stays as it is.
 
 Records are listed parts first; every record of a scene has a distinct id (the index is the
 object's place in the scene's list).
@@ -112,6 +119,7 @@ from .scene import (DEFAULT_SKILLS, MoverSkills, BSPLeaf, ChildOf, BSPShape, Bui
                     Environment, Landblock, Mover, OtherMover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
                     StaticObject,
                     ENV_CELL_FIRST, newell_normal)
+from .flags import CullMode
 from .staging import MOVER_ID
 from .motion_scene import ANIMATION_BASE, HOOKS, MOTION_TABLE_ID, cycle_key
 
@@ -131,8 +139,15 @@ MAX_OTHERS = 0xFFFF
 
 # ACE.Entity.Enum.GfxObjFlags, StipplingType, SetupFlags
 GFX_HAS_PHYSICS = 0x1
+GFX_HAS_DRAWING = 0x2
+GFX_HAS_DID_DEGRADE = 0x8
+# scene/8 `drawing`: what the records carry for drawing (nothing of ACE's physics reads it): a GfxObj's one surface
+# and its degrade table, an EnvCell's one surface (its low word; DatLoader ORs 0x08000000 in)
+DRAWING_SURFACE = 0x08000001
+DRAWING_DID_DEGRADE = 0x11000001
 SETUP_HAS_PARENT = 0x1
 SETUP_HAS_DEFAULT_SCALE = 0x2
+SETUP_ALLOW_FREE_HEADING = 0x4
 DEFAULT_PLACEMENT = 0  # ACE.Entity.Enum.Placement.Default: the key PartArray.SetPlacementFrame falls back to
 RESTING_PLACEMENT = 0x65  # Placement.Resting: the key PartArray.CreateSetup's (and InitObjectEnd's) SetPlacementFrame(0x65) asks for first
 STIPPLING_NO_POS = 0x4
@@ -207,11 +222,16 @@ def _vertex_array_packed(origins: list[bytes]) -> bytes:
                     + [_u16.pack(i) + tail + o + zero for i, o in enumerate(origins)])
 
 
-def polygon(poly: PolygonRec, ids: list[int]) -> bytes:
+def polygon(poly: PolygonRec, ids: list[int], drawing: bool = False) -> bytes:
     """DatLoader Polygon: NumPts, Stippling (NoPos|NoNeg: no UV indices), SidesType, PosSurface,
-    NegSurface, vertex ids."""
+    NegSurface, vertex ids. With `drawing` (scene/8) Stippling 0 (none), so the positive UV indices follow
+    (the i-th vertex's UV index i, one byte each) and, for a Clockwise polygon, the negative ones likewise."""
     n = len(ids)
-    return struct.pack(f"<BBihh{n}h", n, STIPPLING_NO_POS | STIPPLING_NO_NEG, int(poly.sides_type), 0, 0, *ids)
+    if not drawing:
+        return struct.pack(f"<BBihh{n}h", n, STIPPLING_NO_POS | STIPPLING_NO_NEG, int(poly.sides_type), 0, 0, *ids)
+    uv = bytes(i & 0xFF for i in range(n))
+    return (struct.pack(f"<BBihh{n}h", n, 0, int(poly.sides_type), 0, 0, *ids) + uv
+            + (uv if poly.sides_type == CullMode.Clockwise else b""))
 
 
 def sphere(center, radius) -> bytes:
@@ -253,15 +273,26 @@ def _shared_vertices(polygons) -> tuple[list[bytes], list[list[int]]]:
     return vertices, poly_ids
 
 
-def gfx_obj_physics(gfx_id: int, shape: BSPShape) -> bytes:
-    """FileTypes/GfxObj: a physics-only GfxObj from a scene BSP shape."""
+def gfx_obj_physics(gfx_id: int, shape: BSPShape, drawing: bool = False) -> bytes:
+    """FileTypes/GfxObj: a physics-only GfxObj from a scene BSP shape. With `drawing` (scene/8; a shape with
+    polygons) it is drawn too: flags HasPhysics|HasDrawing|HasDIDDegrade, one surface (DRAWING_SURFACE), the
+    polygons with UV indices (`polygon`), and after the SortCenter the same polygons as its drawing polygons, keyed
+    alike, a drawing BSP over them (`drawing_bsp_node`, no portals: ACE's GfxObj takes its DrawingSphere from the
+    root's sphere, and Setup.MakeSimpleSetup a BSP static's SortingSphere from that), and DRAWING_DID_DEGRADE."""
+    drawing = drawing and bool(shape.polygons)
     vertices, poly_ids = _shared_vertices(shape.polygons)
-    out = [_u32.pack(gfx_id), _u32.pack(GFX_HAS_PHYSICS), compressed_u32(0), _vertex_array_packed(vertices),
-           compressed_u32(len(shape.polygons))]
-    for k, (p, ids) in enumerate(zip(shape.polygons, poly_ids)):
-        out.append(_u16.pack(k) + polygon(p, ids))
+    flags = GFX_HAS_PHYSICS | (GFX_HAS_DRAWING | GFX_HAS_DID_DEGRADE if drawing else 0)
+    polys = [_u16.pack(k) + polygon(p, ids, drawing) for k, (p, ids) in enumerate(zip(shape.polygons, poly_ids))]
+    out = [_u32.pack(gfx_id), _u32.pack(flags),
+           compressed_u32(1) + _u32.pack(DRAWING_SURFACE) if drawing else compressed_u32(0),
+           _vertex_array_packed(vertices), compressed_u32(len(shape.polygons))] + polys
     bsp_node(shape.root, out, [])
     out.append(_3f.pack(0.0, 0.0, 0.0))  # SortCenter
+    if drawing:
+        out.append(compressed_u32(len(shape.polygons)))
+        out += polys
+        drawing_bsp_node(shape, 0, len(shape.polygons), {}, out, [], [_box(p) for p in shape.polygons])
+        out.append(_u32.pack(DRAWING_DID_DEGRADE))
     return b"".join(out)
 
 
@@ -289,9 +320,9 @@ def gfx_obj_mesh(gfx_id: int, vertices) -> bytes:
 def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: float = 0.0, step_down: float = 0.0,
           placement=None, default_scale=None, default_animation: int = 0, default_motion_table: int = 0,
           default_script: int = 0, holding_locations=(), placement_key: int = DEFAULT_PLACEMENT,
-          sorting_sphere=((0.0, 0.0, 0.0), 0.0), parent_index=None) -> bytes:
+          sorting_sphere=((0.0, 0.0, 0.0), 0.0), parent_index=None, free_heading: bool = False) -> bytes:
     """FileTypes/SetupModel: flags (HasDefaultScale when `default_scale` is given, HasParent when
-    `parent_index` is, else 0), the parts, the ParentIndex (one uint per part, with HasParent),
+    `parent_index` is, AllowFreeHeading when `free_heading`, else 0), the parts, the ParentIndex (one uint per part, with HasParent),
     the DefaultScale (one vector per part), the HoldingLocations (`holding_locations`: (location id, part
     id, scene Frame) triples in the order given, which is the Dictionary's; none by default; a part id
     at or past the parts holds at the object's Position, and -1 throws in UpdateChild), no connection points, the placement
@@ -301,7 +332,8 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     default: what a child's calc_cross_cells finds its cells with) and a zero selection sphere, no
     lights, the DefaultAnimation, DefaultScript and DefaultMotionTable given (0, none, by default), no sound
     table or script table."""
-    flags = (SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0) | (SETUP_HAS_PARENT if parent_index is not None else 0)
+    flags = ((SETUP_HAS_DEFAULT_SCALE if default_scale is not None else 0) | (SETUP_HAS_PARENT if parent_index is not None else 0)
+             | (SETUP_ALLOW_FREE_HEADING if free_heading else 0))
     out = [_u32.pack(setup_id), _u32.pack(flags), _u32.pack(len(parts))]
     out += [_u32.pack(p) for p in parts]
     if parent_index is not None:  # HasParent: ParentIndex, one uint per part (ACE's physics never reads it)
@@ -338,16 +370,17 @@ def setup(setup_id: int, parts: list[int], spheres=(), cylspheres=(), step_up: f
     return b"".join(out)
 
 
-def static_records(obj: StaticObject, index: int) -> ObjectRecords:
-    """The DAT records static object number `index` (0-based, scene order) is made from."""
+def static_records(obj: StaticObject, index: int, drawing: bool = False) -> ObjectRecords:
+    """The DAT records static object number `index` (0-based, scene order) is made from (`drawing`: the scene's,
+    scene/8: a BSP GfxObj drawn too, `gfx_obj_physics`)."""
     if not 0 <= index < MAX_OBJECTS:
         raise ValueError(f"static object index {index} outside 0..{MAX_OBJECTS - 1}")
     if obj.setup is not None:
-        return setup_records(obj.setup, index)
+        return setup_records(obj.setup, index, drawing)
     shape = obj.shape
     gfx_id = GFX_OBJ_BASE + index
     if isinstance(shape, BSPShape):
-        return ObjectRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, shape)),))
+        return ObjectRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, shape, drawing)),))
     setup_id = SETUP_BASE + index
     part = DatRecord(gfx_id, "GfxObj", gfx_obj_mesh(gfx_id, box_corners(*shape_box(shape))))
     if isinstance(shape, SphereShape):
@@ -359,19 +392,20 @@ def static_records(obj: StaticObject, index: int) -> ObjectRecords:
     return ObjectRecords(setup_id, (part, DatRecord(setup_id, "SetupModel", body)))
 
 
-def setup_records(rec: SetupRec, index: int) -> ObjectRecords:
+def setup_records(rec: SetupRec, index: int, drawing: bool = False) -> ObjectRecords:
     """A static's Setup of several parts (scene/7 `setup`), static number `index`: each part's physics
     GfxObj (`gfx_obj_physics`), id ``PART_GFX_OBJ_BASE + 16 index + k`` for part k, then the Setup, id
     ``SETUP_BASE + index``, naming them in order, with their frames as its default placement, their
     scales as its DefaultScale (when the parts have one), the Setup's spheres and cylspheres and its
     DefaultScript (scene/8); with a `default_animation` (scene/8) the Setup's DefaultAnimation, Animation
-    ``STATIC_ANIMATION_BASE + index``, follows: one frame holding those part frames."""
+    ``STATIC_ANIMATION_BASE + index``, follows: one frame holding those part frames. `drawing` (scene/8): the parts'
+    GfxObjs are drawn too (`gfx_obj_physics`)."""
     if not 0 <= index < MAX_SETUP_OBJECTS:
         raise ValueError(f"a static with a setup has an index in 0..{MAX_SETUP_OBJECTS - 1}, got {index}")
     if not 1 <= len(rec.parts) <= MAX_PARTS:
         raise ValueError(f"a static's setup has 1..{MAX_PARTS} parts, got {len(rec.parts)}")
     ids = [PART_GFX_OBJ_BASE + MAX_PARTS * index + k for k in range(len(rec.parts))]
-    parts = tuple(DatRecord(i, "GfxObj", gfx_obj_physics(i, p.shape)) for i, p in zip(ids, rec.parts))
+    parts = tuple(DatRecord(i, "GfxObj", gfx_obj_physics(i, p.shape, drawing)) for i, p in zip(ids, rec.parts))
     setup_id = SETUP_BASE + index
     scaled = rec.parts[0].scale is not None
     body = setup(setup_id, ids, spheres=[(s.center, s.radius) for s in rec.spheres],
@@ -390,7 +424,8 @@ def mover_records(mover: Mover) -> ObjectRecords:
     """The DAT records the mover is made from: its Setup (did) and the Setup's one part; with a motion
     table (scene/6), the Setup names it (DefaultMotionTable; and the table's default_animation, scene/8, as its
     DefaultAnimation) and its MotionTable and Animations follow; its DefaultScript is the mover's
-    default_script (scene/8), and its resting_frame (scene/8) its one placement frame, keyed Resting."""
+    default_script (scene/8), and its resting_frame (scene/8) its one placement frame, keyed Resting; its flags
+    say AllowFreeHeading when the mover has free_heading (scene/8)."""
     part = DatRecord(MOVER_GFX_OBJ_ID, "GfxObj", gfx_obj_mesh(MOVER_GFX_OBJ_ID, []))
     table = mover.motion_table
     body = setup(MOVER_SETUP_ID, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in mover.spheres],
@@ -400,7 +435,7 @@ def mover_records(mover: Mover) -> ObjectRecords:
                  if table is not None and table.default_animation is not None else 0,
                  default_script=mover.default_script,
                  placement=None if mover.resting_frame is None else [mover.resting_frame], placement_key=RESTING_PLACEMENT,
-                 holding_locations=holding_location_triples(mover.holding_locations))
+                 holding_locations=holding_location_triples(mover.holding_locations), free_heading=mover.free_heading)
     records = (part, DatRecord(MOVER_SETUP_ID, "SetupModel", body))
     if table is not None:
         records += motion_records(table)
@@ -557,13 +592,14 @@ def _align(out: list, length: int) -> int:
     return length + pad
 
 
-def cell_struct(rec: CellStructRec, out: list, length: int) -> int:
+def cell_struct(rec: CellStructRec, out: list, length: int, drawing: bool = False) -> int:
     """Entity/CellStruct: appends the structure to `out` (the record so far is `length` bytes, for
-    AlignBoundary) and returns the record's new length."""
+    AlignBoundary) and returns the record's new length. `drawing` (scene/8): its polygons and physics polygons carry
+    UV indices (`polygon`)."""
     vertices, poly_ids = _shared_vertices(rec.polygons + rec.physics_polygons)
     parts = [_u32.pack(len(rec.polygons)) + _u32.pack(len(rec.physics_polygons)) + _u32.pack(len(rec.portals)),
              _vertex_array_packed(vertices)]
-    parts += [_u16.pack(k) + polygon(p, ids) for k, (p, ids) in enumerate(zip(rec.polygons, poly_ids))]
+    parts += [_u16.pack(k) + polygon(p, ids, drawing) for k, (p, ids) in enumerate(zip(rec.polygons, poly_ids))]
     parts += [_u16.pack(p) for p in rec.portals]
     length += sum(map(len, parts))
     out += parts
@@ -571,7 +607,7 @@ def cell_struct(rec: CellStructRec, out: list, length: int) -> int:
     tail = []
     cell_bsp_node(rec.cell_bsp, tail, [])
     n = len(rec.polygons)
-    tail += [_u16.pack(k) + polygon(p, ids) for k, (p, ids) in enumerate(zip(rec.physics_polygons, poly_ids[n:]))]
+    tail += [_u16.pack(k) + polygon(p, ids, drawing) for k, (p, ids) in enumerate(zip(rec.physics_polygons, poly_ids[n:]))]
     bsp_node(rec.physics_bsp, tail, [])
     tail.append(_u32.pack(1))  # hasDrawingBSP
     drawing_bsp(rec, tail)
@@ -580,13 +616,13 @@ def cell_struct(rec: CellStructRec, out: list, length: int) -> int:
     return _align(out, length)
 
 
-def environment_record(env: Environment) -> DatRecord:
-    """FileTypes/Environment: its id, then its cell structures keyed by index."""
+def environment_record(env: Environment, drawing: bool = False) -> DatRecord:
+    """FileTypes/Environment: its id, then its cell structures keyed by index (`drawing`: `cell_struct`'s)."""
     out = [_u32.pack(env.id), _u32.pack(len(env.cell_structs))]
     length = 8
     for k, rec in enumerate(env.cell_structs):
         out.append(_u32.pack(k))
-        length = cell_struct(rec, out, length + 4)
+        length = cell_struct(rec, out, length + 4, drawing)
     return DatRecord(env.id, "Environment", b"".join(out))
 
 
@@ -595,11 +631,13 @@ def frame(f) -> bytes:
     return _3f.pack(*f.origin) + _4f.pack(*f.orientation)
 
 
-def env_cell_record(cell: EnvCell, stabs) -> DatRecord:
-    """FileTypes/EnvCell; `stabs` are (id, scene Frame) pairs, the cell's static objects."""
+def env_cell_record(cell: EnvCell, stabs, drawing: bool = False) -> DatRecord:
+    """FileTypes/EnvCell; `stabs` are (id, scene Frame) pairs, the cell's static objects. `drawing` (scene/8): one
+    surface, DRAWING_SURFACE's low word (none otherwise)."""
     flags = (ENV_CELL_SEEN_OUTSIDE if cell.seen_outside else 0) | (ENV_CELL_HAS_STATIC_OBJS if stabs else 0)
-    out = [struct.pack("<IIIBBHHH", cell.id, flags, cell.id, 0, len(cell.portals), len(cell.visible_cells),
-                       cell.environment & 0xFFFF, cell.cell_structure), frame(cell.frame)]
+    surfaces = (DRAWING_SURFACE & 0xFFFF,) if drawing else ()
+    out = [struct.pack(f"<IIIBBH{len(surfaces)}HHH", cell.id, flags, cell.id, len(surfaces), len(cell.portals),
+                       len(cell.visible_cells), *surfaces, cell.environment & 0xFFFF, cell.cell_structure), frame(cell.frame)]
     out += [struct.pack("<4H", p.flags, p.polygon, p.other_cell, p.other_portal) for p in cell.portals]
     out += [_u16.pack(v) for v in cell.visible_cells]
     if stabs:
@@ -608,12 +646,13 @@ def env_cell_record(cell: EnvCell, stabs) -> DatRecord:
     return DatRecord(cell.id, "EnvCell", b"".join(out))
 
 
-def building_records(building: Building, index: int) -> ObjectRecords:
-    """The DAT record building number `index` (0-based, scene order) is made from: its shell's GfxObj."""
+def building_records(building: Building, index: int, drawing: bool = False) -> ObjectRecords:
+    """The DAT record building number `index` (0-based, scene order) is made from: its shell's GfxObj (`drawing`:
+    drawn too, scene/8)."""
     if not 0 <= index < MAX_BUILDINGS:
         raise ValueError(f"building index {index} outside 0..{MAX_BUILDINGS - 1}")
     gfx_id = BUILDING_GFX_OBJ_BASE + index
-    return ObjectRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, building.shape)),))
+    return ObjectRecords(gfx_id, (DatRecord(gfx_id, "GfxObj", gfx_obj_physics(gfx_id, building.shape, drawing)),))
 
 
 def building_info(building: Building, index: int, out: list, length: int) -> int:
@@ -676,7 +715,7 @@ def cell_dat_records(scene: Scene) -> tuple[DatRecord, ...]:
     each landblock with EnvCells (in the order of their first cell), then of each other landblock
     with buildings (in the order of their first building)."""
     stabs = env_cell_stabs(scene)
-    records = [env_cell_record(c, stabs.get(c.id, ())) for c in scene.env_cells]
+    records = [env_cell_record(c, stabs.get(c.id, ()), scene.drawing) for c in scene.env_cells]
     counts: dict[int, int] = {}
     for c in scene.env_cells:
         counts[c.id >> 16] = counts.get(c.id >> 16, 0) + 1
@@ -691,12 +730,12 @@ def cell_dat_records(scene: Scene) -> tuple[DatRecord, ...]:
 
 def environment_records(scene: Scene) -> tuple[DatRecord, ...]:
     """The scene's Environment records (portal DAT)."""
-    return tuple(environment_record(e) for e in scene.environments)
+    return tuple(environment_record(e, scene.drawing) for e in scene.environments)
 
 
 def building_model_records(scene: Scene) -> tuple[DatRecord, ...]:
     """The scene's buildings' shells (portal DAT), in scene order."""
-    return tuple(r for index, b in enumerate(scene.buildings) for r in building_records(b, index).records)
+    return tuple(r for index, b in enumerate(scene.buildings) for r in building_records(b, index, scene.drawing).records)
 
 
 @dataclass(frozen=True, slots=True)
@@ -725,7 +764,7 @@ def scene_records(scene: Scene) -> SceneRecords:
         if written is scene:
             return records
     records = SceneRecords(mover_records(scene.mover),
-                           tuple(static_records(o, index) for index, o in enumerate(scene.objects)),
+                           tuple(static_records(o, index, scene.drawing) for index, o in enumerate(scene.objects)),
                            environment_records(scene) + building_model_records(scene),
                            cell_dat_records(scene),
                            tuple(other_records(o, index) for index, o in enumerate(scene.others)))

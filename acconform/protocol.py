@@ -113,6 +113,14 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                      "Player's (scene/8: mover.skills): GetCreatureSkill(Skill.Run/Jump).Current, Stamina.Current, "
                      "Strength.Current, EncumbranceVal and AugmentationIncreasedCarryingCapacity, what "
                      "WeenieObject.InqRunRate, InqJumpVelocity and InqBurden read"),
+    "dat.drawing": (lambda s: s.drawing,
+                    "the DAT records carry what a client draws (scene/8: drawing): polygons' UV indices, a BSP GfxObj's "
+                    "drawing polygons, drawing BSP (its root sphere is GfxObj.DrawingSphere, a BSP static's "
+                    "SortingSphere), surface and degrade table, an EnvCell's surface"),
+    "mover.free_heading": (lambda s: s.mover.free_heading,
+                           "the mover's Setup has the flag AllowFreeHeading (scene/8: mover.free_heading): "
+                           "PhysicsObj.get_object_info sets ObjectInfoState.FreeRotate, so a transition takes the end's "
+                           "orientation at once (Transition.FindTransitionalPosition)"),
     "setup.multipart": (lambda s: any(o.setup is not None for o in s.objects),
                         "a static object made from a Setup of several parts (each a BSP GfxObj at its placement frame, "
                         "with or without a per-part DefaultScale) and the Setup's spheres and cylspheres (scene/7)"),

@@ -1279,6 +1279,9 @@ class Mover:
     # scene/8: its Setup's placement frame Resting (0x65) for its one part (None: the Setup has no placement
     # frames): PartArray.CreateSetup's SetPlacementFrame(0x65) (makeAnimObject) finds it, and the Sequence's placement frame places the part
     resting_frame: Frame | None = None
+    # scene/8: its Setup's flag AllowFreeHeading (SetupFlags 0x4): PhysicsObj.get_object_info then sets
+    # ObjectInfoState.FreeRotate, so a transition takes the end's orientation at once instead of turning by steps
+    free_heading: bool = False
 
     @property
     def motion_table_id(self) -> int:
@@ -1305,6 +1308,8 @@ class Mover:
             d["default_script"] = write_id(self.default_script)
         if self.resting_frame is not None:
             d["resting_frame"] = self.resting_frame.to_json()
+        if self.free_heading:
+            d["free_heading"] = True
         return d
 
     @staticmethod
@@ -1315,7 +1320,7 @@ class Mover:
         format holds the mover's `skills` (scene/8). `children`: its Setup may have holding locations (scene/8)."""
         if not skills and isinstance(r.value, dict) and "skills" in r.value:
             r["skills"].fail(f"skills need format {FORMAT!r} (older formats have none)")
-        for field in ("holding_locations", "default_script", "resting_frame"):
+        for field in ("holding_locations", "default_script", "resting_frame", "free_heading"):
             if not children and isinstance(r.value, dict) and field in r.value:
                 r[field].fail(f"{field} needs format {FORMAT!r} (older formats have none)")
         if not placement and isinstance(r.value, dict) and "placement" in r.value:
@@ -1328,7 +1333,7 @@ class Mover:
         r.obj({"spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "contact_plane", "sliding_normal", "begin", "end", *(("placement",) if placement else ()),
                *(("motion_table", "player_killer_status") if vias else ()), *(("skills",) if skills else ()),
-               *(("holding_locations", "default_script", "resting_frame") if children else ())})
+               *(("holding_locations", "default_script", "resting_frame", "free_heading") if children else ())})
         spheres, scale, up, down = _read_body(r)
         if vias and not skills and r.has("motion_table") and MotionTableSpec.from_json(r["motion_table"]).needs_v8:
             r["motion_table"].fail(f"hooks, root_motion and default_animation need format {FORMAT!r} (older formats have none)")
@@ -1353,6 +1358,7 @@ class Mover:
             else (),
             default_script=r["default_script"].id_() if children and r.given("default_script") else 0,
             resting_frame=Frame.from_json(r["resting_frame"]) if children and r.given("resting_frame") else None,
+            free_heading=r["free_heading"].bool_() if children and r.given("free_heading") else False,
         )
 
 
@@ -1591,6 +1597,11 @@ class Scene:
     ticks: Ticks | None = None  # a tick scene: ACE's per-tick update moves the mover (scene/4)
     buildings: tuple[Building, ...] = ()  # scene/5
     others: tuple[OtherMover, ...] = ()  # scene/8: the other moving objects, in the order they enter the world
+    # scene/8: the DAT records carry what a client draws, as retail's do (acconform/dat.py: polygons' UV indices, a
+    # BSP GfxObj's drawing polygons, drawing BSP, surface and degrade table, an EnvCell's surface): DatLoader reads
+    # them, ACE's physics reads only the drawing BSP's root sphere (GfxObj.DrawingSphere) and, in the client engine
+    # mode, makes the drawing polygons
+    drawing: bool = False
 
     @property
     def indoor(self) -> bool:
@@ -1613,12 +1624,12 @@ class Scene:
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
         motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
-        DefaultScript or DefaultAnimation, the mover's resting frame, /7
+        DefaultScript or DefaultAnimation, the mover's resting frame or free heading, drawn DAT records, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
-                self.mover.resting_frame is not None) or any(
+                self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None) for o in self.objects):
             return FORMAT
@@ -1657,6 +1668,8 @@ class Scene:
             d["others"] = [o.to_json() for o in self.others]
         if self.ticks is not None:
             d["ticks"] = self.ticks.to_json()
+        if self.drawing:
+            d["drawing"] = True
         return d
 
     def dumps(self) -> str:
@@ -1675,12 +1688,14 @@ class Scene:
         buildings_field = ("buildings",) if fmt in (FORMAT_V5, FORMAT_V6, FORMAT_V7, FORMAT) else ()
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7) and "others" in doc:
             r["others"].fail(f"other movers need format {FORMAT!r} (older formats have one mover)")
+        if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7) and "drawing" in doc:
+            r["drawing"].fail(f"drawing needs format {FORMAT!r} (older formats have none)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3) and "ticks" in doc:
             r["ticks"].fail(f"ticks need format {FORMAT_V4!r} or later (older formats have no ticks)")
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4) and "buildings" in doc:
             r["buildings"].fail(f"buildings need format {FORMAT_V5!r} or later (older formats have no buildings)")
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field,
-               *buildings_field, *(("others",) if fmt == FORMAT else ())})
+               *buildings_field, *(("others", "drawing") if fmt == FORMAT else ())})
         if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.given("name") else ""
@@ -1709,7 +1724,9 @@ class Scene:
                                 ticks=ticks is not None, vias=fmt in (FORMAT_V6, FORMAT_V7, FORMAT), skills=fmt == FORMAT,
                                 children=fmt == FORMAT)
         others = tuple(OtherMover.from_json(o) for o in r["others"].list()) if fmt == FORMAT and r.given("others") else ()
-        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others)
+        drawing = r["drawing"].bool_() if fmt == FORMAT and r.given("drawing") else False
+        scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others,
+                      drawing)
         check_consistency(scene, path)
         return scene
 

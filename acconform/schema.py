@@ -197,7 +197,7 @@ def _movers_scene(scene, m):
     """A scene with other movers (scene/8, objects.moving): one of each weenie class at the mover's start (a
     PK player with every optional field), each given every input of a step once, and a child held by the mover
     (objects.children: its parent, the mover's holding location, its sorting sphere); then (objects.targets) the
-    mover's stick_to at the monster and the NPC destroyed."""
+    mover's stick_to at the monster and the NPC destroyed; its DAT records drawn (scene/8 drawing)."""
     from dataclasses import replace
 
     from .flags import PhysicsState, PlayerKillerStatus, TransientState
@@ -211,13 +211,13 @@ def _movers_scene(scene, m):
               OtherMover(0x80000004, "object", body, None, 0.0, 0.0, sorting_sphere=SphereRec((0.0, 0.0, 0.5), 0.6),
                          parent=ChildOf(0x50000001, 1, 0)))
     m = replace(m, holding_locations=(HoldingLocation(1, 1, Frame((0.4, 0.1, 1.0))),), default_script=0x33000001,
-                resting_frame=Frame((0.0, 0.0, 0.5)))
+                resting_frame=Frame((0.0, 0.0, 0.5)), free_heading=True)
     every = OtherInputs(0x50000002, state=int(PhysicsState.Gravity), transient_state=int(TransientState.Active),
                         velocity=(0.0, 1.0, 0.0), local_velocity=(0.0, 1.0, 0.0), omega=(0.0, 0.0, 1.0), jump=(0.0, 0.0, 4.0),
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
     # the child dropped, then held again by the frame form (part 0 and a frame)
     held = OtherInputs(0x80000004, unparent=True, parent=ChildOf(0x50000001, 0, 0, 0, Frame((0.4, 0.1, 1.0))))
-    return replace(scene, mover=m, name="movers", others=others,
+    return replace(scene, mover=m, name="movers", others=others, drawing=True,
                    ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),
                                                           # objects.targets: a melee swing's stick_to, a destroyed NPC
                                                           TickStep(1 / 30, stick_to=0x80000001,

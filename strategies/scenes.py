@@ -9,6 +9,7 @@ spheres' reach) can touch, sliced from one height field so shared edges agree.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from hypothesis import strategies as st
 
@@ -661,3 +662,78 @@ def _feature_target(f: tr.Feature, vx: int, vy: int, top: bool) -> tuple[float, 
         d = {(f.x0, vy): vx - f.x0, (f.x1, vy): f.x1 - vx, (vx, f.y0): vy - f.y0, (vx, f.y1): f.y1 - vy}
         return min(d, key=d.get)
     return cx, cy
+
+
+# scene/8 mover.free_heading: the transition kinds a free-heading mover may be drawn over (a shard holds one kind:
+# bsp-0017's scenes are bsp), and its end's heading
+FREE_HEADING_KINDS = ("terrain", "bsp", "obstacles", "indoor")
+FREE_HEADING_TURNS = st.sampled_from((0.0, 30.0, 90.0, 180.0, -135.0))
+FREE_HEADING_IN_PLACE = st.sampled_from((False, False, False, True))
+
+
+def draw_free_heading_scene(draw, kinds=FREE_HEADING_KINDS) -> Scene:
+    """A transition scene (one of `kinds`, placed or not, as `scenes_of` draws it) whose mover's Setup has
+    the flag AllowFreeHeading (scene/8 mover.free_heading): PhysicsObj.get_object_info sets ObjectInfoState.FreeRotate,
+    so Transition.FindTransitionalPosition gives the current position the end's orientation before the first step (a
+    placement's transition has no step: its other FreeRotate arm) and never turns the check position by steps. The end
+    is turned by a drawn yaw (0 keeps its heading) so the orientation the transition carries differs; a quarter of the
+    scenes turn in place (the end at the begin).
+    No campaign kind draws it: a draw added to a kind would move every seeded sample the tests pin."""
+    kind = draw(st.sampled_from(kinds))
+    scene = with_placement(draw, draw_scene(draw, kind))
+    m = scene.mover
+    turn = draw(FREE_HEADING_TURNS)
+    # a quarter turn in place (the end at the begin's origin): CalcNumSteps gives no step, so the transition takes
+    # FindTransitionalPosition's numSteps <= 0 arm with FreeRotate set
+    # (a begin no cell holds, a placement's, keeps its end)
+    low = m.begin.cell & 0xFFFF
+    in_place = draw(FREE_HEADING_IN_PLACE) and (1 <= low <= 0x40 or 0x100 <= low <= 0xFFFD)
+    end = Position(m.begin.cell, Frame(m.begin.frame.origin, m.begin.frame.orientation)) if in_place else m.end
+    if turn:
+        w, x, y, z = end.frame.orientation
+        tw, _, _, tz = yaw(turn)  # the turn about +z, composed on the left: q' = t * q
+        q = tuple(to_f32(v) for v in (tw * w - tz * z, tw * x - tz * y, tw * y + tz * x, tw * z + tz * w))
+        end = Position(end.cell, Frame(end.frame.origin, q))
+    return scene.replace(mover=replace(m, end=end, free_heading=True), name=f"{scene.name}:free-heading")
+
+
+# scene/8 `drawing`: the kinds whose DAT records have something drawn (BSP statics' GfxObjs, Environments and EnvCells,
+# buildings' shells)
+DRAWING_KINDS = ("bsp", "indoor", "buildings")
+
+
+def draw_drawing_scene(draw, kinds=DRAWING_KINDS) -> Scene:
+    """A transition scene (one of `kinds`, placed or not, as `scenes_of` draws it) whose DAT records carry what a
+    client draws (scene/8 `drawing`; acconform/dat.py): every polygon its UV indices (a Clockwise one its negative
+    ones too), a BSP GfxObj its drawing polygons, a drawing BSP (whose root sphere ACE's GfxObj makes its
+    DrawingSphere), a surface and a degrade table, an EnvCell a surface; in the engine mode drawn as a placement's
+    (a client-mode GfxObj makes its drawing polygons). No campaign kind draws it: a draw added to a kind would move
+    every seeded sample the tests pin."""
+    kind = draw(st.sampled_from(kinds))
+    scene = with_placement(draw, draw_scene(draw, kind))
+    return scene.replace(drawing=True, engine_mode=draw(dr.ENGINE_MODES), name=f"{scene.name}:drawing")
+
+
+# a multipart static with more cylspheres than ObjCell.find_cell_list takes (it clamps numCylSphere to 10)
+MANY_CYLSPHERE_COUNTS = st.sampled_from((11, 11, 12, 16))
+MANY_CYLSPHERE_RADII = st.sampled_from((0.25, 0.5, 0.75, 1.0))
+MANY_CYLSPHERE_OFFSETS = st.sampled_from((-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0))
+
+
+def draw_many_cylspheres_scene(draw) -> Scene:
+    """A bsp scene of the multipart policy (a static made from a Setup of BSP parts, scene/7 `setup`) whose Setup has
+    11 or more cylspheres, its state Static alone (no HasPhysicsBSP: the scene's state overwrites it, as WorldObject's
+    does), so PhysicsObj.calc_cross_cells_static finds its cells by ObjCell.find_cell_list's cylsphere overload, which
+    takes only the first 10 (numCylSphere > 10), and FindObjCollisions meets its cylspheres. No campaign kind draws it:
+    a draw added to a kind would move every seeded sample the tests pin."""
+    scene = with_placement(draw, draw_scene(draw, "bsp", "multipart"))
+    objects = list(scene.objects)
+    for i, o in enumerate(objects):
+        if o.setup is None:
+            continue
+        n = draw(MANY_CYLSPHERE_COUNTS)
+        cyls = tuple(CylSphereShape((draw(MANY_CYLSPHERE_OFFSETS), draw(MANY_CYLSPHERE_OFFSETS), 0.0),
+                                    draw(MANY_CYLSPHERE_RADII), draw(MANY_CYLSPHERE_RADII) * 2) for _ in range(n))
+        objects[i] = replace(o, setup=replace(o.setup, cylspheres=cyls), state=int(PhysicsState.Static))
+        break
+    return scene.replace(objects=tuple(objects), name=f"{scene.name}:many-cylspheres")
