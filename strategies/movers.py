@@ -920,7 +920,13 @@ def _handing(draw, tl: _Timeline, rows: list[dict], held: list[OtherMover], hold
 # - ``emitter-child``: a carry whose first child is a ParticleEmitter (a weenie's PhysicsState may carry it:
 #   WorldObject_Networking.cs CalculatedPhysicsState): SetPlacementFrame, leave_world and SetPositionInternal leave
 #   its parts alone
-WORLD_ARMS = ("hidden-holder", "hidden-holder", "static-other", "frame-minus-one", "frame-unlaunched", "emitter-child")
+# - ``off-cell``: a player's RequestPos (driver request_pos) that from a drawn tick names the land cell beside the one
+#   its origin is in (a client's position is the client's word): set_current_pos's find_terrain_poly finds no
+#   triangle of the named cell under it and keeps the contact plane
+# - ``static-mover``: a motion scene (a motion table, keys) whose mover is Static from the start: MovementManager's
+#   PerformMovement calls set_active(true), which a Static object refuses
+WORLD_ARMS = ("hidden-holder", "hidden-holder", "static-other", "frame-minus-one", "frame-unlaunched", "emitter-child",
+              "off-cell", "static-mover")
 
 
 def _other_input(scene: Scene, k: int, oid: int, **kw) -> Scene:
@@ -971,6 +977,14 @@ def draw_world_arm(draw, clock, arm: str | None = None) -> Scene:
         o = draw(st.sampled_from(free))
         scene = _replace_other(scene, replace(o, state=o.state | int(PhysicsState.Static)))
         return validate_world(scene.replace(name=f"world:{arm}:{o.weenie}:" + scene.name))
+    if arm == "off-cell":
+        return _off_cell(draw, clock)
+    if arm == "static-mover":
+        from .ticks import draw_tick_scene
+
+        scene = draw_tick_scene(draw, None, "motion")
+        scene = scene.replace(mover=replace(scene.mover, state=scene.mover.state | int(PhysicsState.Static)))
+        return validate_world(scene.replace(name=f"world:{arm}:" + scene.name))
     scene = _carry(draw, clock)
     child = _untouched_child(scene)
     n = len(scene.ticks.steps)
@@ -999,6 +1013,28 @@ def draw_world_arm(draw, clock, arm: str | None = None) -> Scene:
     f = Frame(_vec(float(dr.take(draw, HOLD_XY)), 0.0, float(dr.take(draw, HOLD_Z))))
     scene = _replace_other(scene, replace(child, parent=ChildOf(child.parent.id, 0, 0, -1, f)))
     return validate_world(scene.replace(name=f"world:{arm}:" + scene.name))
+
+
+def _off_cell(draw, clock) -> Scene:
+    scene = draw_movers_ticks(draw, clock, draw(st.sampled_from(("head_on", "side_on", "chase"))))
+    begin = scene.mover.begin
+    low = begin.cell & 0xFFFF
+    n = len(scene.ticks.steps)
+    if not 1 <= low <= 64 or n < 2:
+        return scene.replace(name="world:off-cell:none:" + scene.name)
+    col, row = divmod(low - 1, 8)
+    row += 1 if row < 7 else -1
+    wrong = (begin.cell & 0xFFFF0000) | (col * 8 + row + 1)
+    at = draw(st.integers(0, n - 1))
+    x, y, z = begin.frame.origin
+    drift = float(draw(st.sampled_from((0.0, 0.05, 0.2))))
+    steps = []
+    for i, step in enumerate(scene.ticks.steps):
+        origin = (float(to_f32(x + drift * i)), y, z)
+        pos = replace(begin, cell=wrong if i >= at else begin.cell, frame=replace(begin.frame, origin=origin))
+        steps.append(replace(step, request_pos=pos, velocity=None, local_velocity=None, sequence_velocity=None))
+    scene = scene.replace(ticks=replace(scene.ticks, driver="request_pos", steps=tuple(steps)))
+    return validate_world(scene.replace(name=f"world:off-cell:{wrong & 0xFFFF:#x}@{at}:" + scene.name))
 
 
 def validate_world(scene: Scene) -> Scene:

@@ -239,7 +239,8 @@ def _world(n: int, seed: int, arm: str):
 def test_world_arms_change_what_their_names_say_and_stay_valid():
     from acconform.flags import PhysicsState
 
-    for arm in ("hidden-holder", "static-other", "frame-minus-one", "frame-unlaunched", "emitter-child"):
+    for arm in ("hidden-holder", "static-other", "frame-minus-one", "frame-unlaunched", "emitter-child", "off-cell",
+                "static-mover"):
         scenes = _world(12, 67, arm)
         assert scenes, arm
         for s in scenes:
@@ -256,5 +257,10 @@ def test_world_arms_change_what_their_names_say_and_stay_valid():
                 assert any(c.parent.part == -1 for c in children)
             elif arm == "frame-unlaunched":  # held by a projectile by the frame form
                 assert any(c.parent.frame is not None and holders[c.parent.id].launch is not None for c in children)
-            else:
+            elif arm == "emitter-child":
                 assert any(c.state & PhysicsState.ParticleEmitter for c in children)
+            elif arm == "off-cell":  # a RequestPos naming the next cell along y, its origin still in the mover's
+                assert s.ticks.driver == "request_pos" and s.ticks.steps[-1].request_pos.cell == s.mover.begin.cell + (
+                    1 if (s.mover.begin.cell & 0xFFFF) % 8 else -1)
+            else:
+                assert s.mover.state & PhysicsState.Static and s.mover.motion_table is not None
