@@ -39,12 +39,10 @@ class LinkedListNode:
 class LinkedList:
     __slots__ = ("first", "last", "count")
 
-    def __init__(self, values=()):
+    def __init__(self):
         self.first: LinkedListNode | None = None
         self.last: LinkedListNode | None = None
         self.count = 0
-        for value in values:
-            self.add_last(value)
 
     def __len__(self) -> int:
         return self.count

@@ -904,3 +904,140 @@ def _handing(draw, tl: _Timeline, rows: list[dict], held: list[OtherMover], hold
         new_rows[0]["state"] = state
         suffix += "-hidden"
     return suffix
+
+
+# ---------------------------------------------------------------- issue 41: the world side of PhysicsObj (stop 50)
+# Arms drawn by name (tests/runner/world_scenes.py, shard ticks-0067), each a scene of the policies above changed
+# after the draw, so that no seeded sample of the movers kind moves:
+# - ``hidden-holder``: a carry whose first child's holder is Hidden from the start (set_parent: NoDraw), and the
+#   child dropped (unset_parent: a hidden parent clears the child's Hidden, PartArray.SetNoDrawInternal(false))
+# - ``static-other``: a movers scene with another mover Static from its entry (prepare_to_enter_world and
+#   enter_world(bool) leave it inactive)
+# - ``frame-minus-one``: a carry whose first child is attached by the frame form at part -1 (add_child takes it:
+#   the holder's Position; UpdateChild indexes Parts[-1] and throws)
+# - ``frame-unlaunched``: a missile carrying a child attached by the frame form before its launch (set_parent's
+#   frame form with a holder out of the world: no cell to change to)
+# - ``emitter-child``: a carry whose first child is a ParticleEmitter (a weenie's PhysicsState may carry it:
+#   WorldObject_Networking.cs CalculatedPhysicsState): SetPlacementFrame, leave_world and SetPositionInternal leave
+#   its parts alone
+# - ``off-cell``: a player's RequestPos (driver request_pos) that from a drawn tick names the land cell beside the one
+#   its origin is in (a client's position is the client's word): set_current_pos's find_terrain_poly finds no
+#   triangle of the named cell under it and keeps the contact plane
+# - ``static-mover``: a motion scene (a motion table, keys) whose mover is Static from the start: MovementManager's
+#   PerformMovement calls set_active(true), which a Static object refuses
+WORLD_ARMS = ("hidden-holder", "hidden-holder", "static-other", "frame-minus-one", "frame-unlaunched", "emitter-child",
+              "off-cell", "static-mover")
+
+
+def _other_input(scene: Scene, k: int, oid: int, **kw) -> Scene:
+    """`scene` with tick k's inputs to other `oid` given `kw` (made when it has none), in `others` order."""
+    steps = list(scene.ticks.steps)
+    theirs = {o.id: o for o in steps[k].others}
+    theirs[oid] = replace(theirs[oid], **kw) if oid in theirs else OtherInputs(oid, **kw)
+    order = [o.id for o in scene.others]
+    steps[k] = replace(steps[k], others=tuple(sorted(theirs.values(), key=lambda o: order.index(o.id))))
+    return scene.replace(ticks=replace(scene.ticks, steps=tuple(steps)))
+
+
+def _untouched_child(scene: Scene):
+    """The first child no tick unparents or parents anew (None: none)."""
+    moved = {o.id for s in scene.ticks.steps for o in s.others if o.unparent or o.parent is not None}
+    return next((o for o in scene.others if o.parent is not None and o.id not in moved), None)
+
+
+def _replace_other(scene: Scene, new: OtherMover) -> Scene:
+    return scene.replace(others=tuple(new if o.id == new.id else o for o in scene.others))
+
+
+def draw_world_arm(draw, clock, arm: str | None = None) -> Scene:
+    """A scene of one WORLD_ARMS arm (drawn when `arm` is None); its name begins ``world:<arm>:``."""
+    from acconform.staging import MOVER_ID
+
+    from .missiles import draw_missile_scene
+
+    arm = arm or draw(st.sampled_from(WORLD_ARMS))
+    if arm == "frame-unlaunched":
+        for _ in range(12):
+            scene = draw_missile_scene(draw)
+            child = next((o for o in scene.others if o.parent is not None), None)
+            if child is not None:
+                break
+        else:
+            return scene.replace(name="world:frame-unlaunched:none:" + scene.name)
+        holder = next(o for o in scene.others if o.id == child.parent.id)
+        loc = holder.holding_locations[0]
+        part = draw(st.sampled_from((0, -1, loc.part)))
+        scene = _replace_other(scene, replace(child, parent=ChildOf(holder.id, 0, 0, part, loc.frame)))
+        return validate_world(scene.replace(name=f"world:{arm}:part{part}:" + scene.name))
+    if arm == "static-other":
+        scene = draw_movers_ticks(draw, clock, draw(st.sampled_from(("head_on", "side_on", "chase", "touch", "jump"))))
+        free = [o for o in scene.others if o.parent is None and o.launch is None]
+        if not free:
+            return scene.replace(name="world:static-other:none:" + scene.name)
+        o = draw(st.sampled_from(free))
+        scene = _replace_other(scene, replace(o, state=o.state | int(PhysicsState.Static)))
+        return validate_world(scene.replace(name=f"world:{arm}:{o.weenie}:" + scene.name))
+    if arm == "off-cell":
+        return _off_cell(draw, clock)
+    if arm == "static-mover":
+        from .ticks import draw_tick_scene
+
+        scene = draw_tick_scene(draw, None, "motion")
+        scene = scene.replace(mover=replace(scene.mover, state=scene.mover.state | int(PhysicsState.Static)))
+        return validate_world(scene.replace(name=f"world:{arm}:" + scene.name))
+    scene = _carry(draw, clock)
+    child = _untouched_child(scene)
+    n = len(scene.ticks.steps)
+    if child is None or n < 3:
+        return scene.replace(name=f"world:{arm}:none:" + scene.name)
+    if arm == "hidden-holder":
+        hid = child.parent.id
+        if hid == MOVER_ID:
+            scene = scene.replace(mover=replace(scene.mover, state=scene.mover.state | int(PhysicsState.Hidden)))
+        else:
+            h = next(o for o in scene.others if o.id == hid)
+            scene = _replace_other(scene, replace(h, state=h.state | int(PhysicsState.Hidden)))
+        at = draw(st.integers(1, n - 2))
+        how = draw(st.sampled_from(("drop", "drop", "again", "drop-pick")))
+        if how == "again":  # held anew where it is: set_parent's unset_parent from the hidden holder
+            scene = _other_input(scene, at, child.id, parent=child.parent)
+        else:
+            scene = _other_input(scene, at, child.id, unparent=True)
+            if how == "drop-pick":
+                scene = _other_input(scene, draw(st.integers(at + 1, n - 1)), child.id, parent=child.parent)
+        return validate_world(scene.replace(name=f"world:{arm}:{how}@{at}:" + scene.name))
+    if arm == "emitter-child":
+        scene = _replace_other(scene, replace(child, state=child.state | int(PhysicsState.ParticleEmitter)))
+        return validate_world(scene.replace(name=f"world:{arm}:" + scene.name))
+    # frame-minus-one
+    f = Frame(_vec(float(dr.take(draw, HOLD_XY)), 0.0, float(dr.take(draw, HOLD_Z))))
+    scene = _replace_other(scene, replace(child, parent=ChildOf(child.parent.id, 0, 0, -1, f)))
+    return validate_world(scene.replace(name=f"world:{arm}:" + scene.name))
+
+
+def _off_cell(draw, clock) -> Scene:
+    scene = draw_movers_ticks(draw, clock, draw(st.sampled_from(("head_on", "side_on", "chase"))))
+    begin = scene.mover.begin
+    low = begin.cell & 0xFFFF
+    n = len(scene.ticks.steps)
+    if not 1 <= low <= 64 or n < 2:
+        return scene.replace(name="world:off-cell:none:" + scene.name)
+    col, row = divmod(low - 1, 8)
+    row += 1 if row < 7 else -1
+    wrong = (begin.cell & 0xFFFF0000) | (col * 8 + row + 1)
+    at = draw(st.integers(0, n - 1))
+    x, y, z = begin.frame.origin
+    drift = float(draw(st.sampled_from((0.0, 0.05, 0.2))))
+    steps = []
+    for i, step in enumerate(scene.ticks.steps):
+        origin = (float(to_f32(x + drift * i)), y, z)
+        pos = replace(begin, cell=wrong if i >= at else begin.cell, frame=replace(begin.frame, origin=origin))
+        steps.append(replace(step, request_pos=pos, velocity=None, local_velocity=None, sequence_velocity=None))
+    scene = scene.replace(ticks=replace(scene.ticks, driver="request_pos", steps=tuple(steps)))
+    return validate_world(scene.replace(name=f"world:off-cell:{wrong & 0xFFFF:#x}@{at}:" + scene.name))
+
+
+def validate_world(scene: Scene) -> Scene:
+    from acconform.scene import validate_scene
+
+    return validate_scene(scene)

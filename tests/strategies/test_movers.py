@@ -221,3 +221,46 @@ def test_the_movers_kind_is_a_campaign_kind_the_port_runs():
     assert all(s.others for s in sample_scenes(("movers",), 5, 1))
     with pytest.raises(AcconformError, match="unknown scene kind 'mover' .*movers"):
         check_kinds("mover")
+
+
+def _world(n: int, seed: int, arm: str):
+    from hypothesis import strategies as st
+
+    from acconform.strategies import ticks as tk
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.movers import draw_world_arm
+
+    with pinned_constants():
+        drawer = FastDrawer(st.composite(lambda draw: draw_world_arm(draw, tk._clock, arm))(), seed)
+        return [s for s in (drawer.draw()[0] for _ in range(n)) if s.name.split(":")[2] != "none"]
+
+
+def test_world_arms_change_what_their_names_say_and_stay_valid():
+    from acconform.flags import PhysicsState
+
+    for arm in ("hidden-holder", "static-other", "frame-minus-one", "frame-unlaunched", "emitter-child", "off-cell",
+                "static-mover"):
+        scenes = _world(12, 67, arm)
+        assert scenes, arm
+        for s in scenes:
+            assert s.name.startswith(f"world:{arm}:") and validate_scene(s) == s
+            assert Scene.from_json(json.loads(s.dumps())) == s
+            holders = {MOVER_ID: s.mover, **{o.id: o for o in s.others}}
+            children = [o for o in s.others if o.parent is not None]
+            if arm == "hidden-holder":  # a Hidden holder whose child a tick moves
+                moved = {o.id for st_ in s.ticks.steps for o in st_.others if o.unparent or o.parent is not None}
+                assert any(c.id in moved and holders[c.parent.id].state & PhysicsState.Hidden for c in children)
+            elif arm == "static-other":
+                assert any(o.state & PhysicsState.Static for o in s.others if o.parent is None)
+            elif arm == "frame-minus-one":
+                assert any(c.parent.part == -1 for c in children)
+            elif arm == "frame-unlaunched":  # held by a projectile by the frame form
+                assert any(c.parent.frame is not None and holders[c.parent.id].launch is not None for c in children)
+            elif arm == "emitter-child":
+                assert any(c.state & PhysicsState.ParticleEmitter for c in children)
+            elif arm == "off-cell":  # a RequestPos naming the next cell along y, its origin still in the mover's
+                assert s.ticks.driver == "request_pos" and s.ticks.steps[-1].request_pos.cell == s.mover.begin.cell + (
+                    1 if (s.mover.begin.cell & 0xFFFF) % 8 else -1)
+            else:
+                assert s.mover.state & PhysicsState.Static and s.mover.motion_table is not None
