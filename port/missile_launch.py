@@ -317,7 +317,7 @@ def launch_projectile(wo: WorldObject, launcher: WorldObject, launcher_obj, targ
                       origin: Vector3, orientation, landblock, cell_id: int, velocity: Vector3, lscape, trace=None) -> bool:
     """Whether the projectile is in flight after LaunchProjectile. An invalid velocity (a NaN
     component: the moving-target solver's NaN answers) misfires before anything is made. The
-    projectile's Location is the launcher's cell with Pos = origin and Rotation = orientation.
+    projectile's Location is `cell_id` (projectile_location's) with Pos = `origin` and Rotation = orientation.
     ProjectileSource is the launcher, ProjectileTarget the target (None for a static)."""
     if math.isnan(velocity.x) or math.isnan(velocity.y) or math.isnan(velocity.z):
         return False  # YourAttackMisfired (ACE)
