@@ -64,3 +64,24 @@ def test_an_indoor_location_keeps_its_cell_and_its_pos():
     p = EntityPosition(0xA9B40105, _v(10.0, 10.0), None)
     p.set_position(_v(300.0, -5.0))
     assert p.landblock_id == 0xA9B40105 and p.pos == _v(300.0, -5.0)
+
+
+@pytest.mark.anchor("ACE.Entity/Position.cs:SetLandblock")
+def test_a_spell_cast_out_over_the_worlds_east_edge_never_enters_the_world():
+    """AddPhysicsObj: get_landcell refuses the clamped Location's cell (0xFE40004x), so the spell is destroyed at its
+    launch (shard ticks-0068 holds ACE's answers for such scenes)."""
+    from hypothesis import strategies as st
+
+    from acconform.port.run import run_scene
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.missiles import draw_border_scene
+
+    drawer = FastDrawer(st.composite(lambda d: draw_border_scene(d, "world_edge"))(), 7 * 1000003)
+    with pinned_constants():
+        scene = next(s for s in (drawer.draw()[0] for _ in range(40)) if s.landblocks[0].id >> 16 == 0xFE40)
+    spell = next(o for o in scene.others if o.launch is not None)
+    out = run_scene(scene, runtime="coreclr")
+    assert all(t.error is None for t in out.ticks)
+    states = [next(o for o in t.others if o.id == spell.id) for t in out.ticks]
+    assert all(s.cur_cell == 0 for s in states)
