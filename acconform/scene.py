@@ -1377,7 +1377,8 @@ class Launch:
     landblock's physics with that tick's clock: the next physics step is the projectile's first), `launcher`
     (the mover's id or another mover's, not a projectile) launches it at `target` (the mover, another mover
     that is no projectile, or an outdoor static) at `speed` m/s. `origin` and `orientation` are where it
-    appears: its Location (the launcher's cell, Pos = origin, Rotation = orientation), what ACE's
+    appears: its Location (the launcher's, Pos = origin, whose setter finds the outdoor landblock and cell of `origin`
+    anew: ACE.Entity.Position.SetPosition; Rotation = orientation), what ACE's
     CalculateProjectileVelocity (an arrow) or LaunchSpellProjectiles (a spell) computes from the launcher's
     spawn offset; a spell projectile's orientation is its velocity's heading (set_vector_heading), so it gives
     none. ACE computes the velocity: an arrow's by Creature.GetProjectileVelocity from `origin` to the target's

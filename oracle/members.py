@@ -38,6 +38,8 @@ REQUIRED: tuple[tuple[str, tuple[str, ...]], ...] = (
                                      "<LandblockInfo>k__BackingField", "Adjacents", "IsDungeon")),
     ("ACE.Server.Physics.Common.Landblock", ("adjacents", "SetAdjacents", "GetServerObjects")),
     ("ACE.Entity.LandblockId", (".ctor", "LandblockX", "LandblockY")),
+    # a projectile's Location (Facade.ProjectileLocation): ACE.Entity's Position, whose Pos setter finds its cell
+    ("ACE.Entity.Position", (".ctor", "Pos", "Cell", "LandblockId")),
     ("ACE.Entity.Enum.PhysicsState", ("Static", "HasPhysicsBSP")),
     ("ACE.Entity.Enum.CullMode", ("Landblock", "Clockwise", "CounterClockwise")),
     ("ACE.DatLoader.FileTypes.CellLandblock", (".ctor", "Unpack", "Id")),

@@ -23,7 +23,9 @@ from acconform.numerics import MONO, Runtime, Vector3, f32_from_bits, normalize
 
 from .anchors import harness
 from .constants import GRAVITY
+from .entity_position import EntityPosition
 from .frame import AFrame, Position
+from .server_landblock import Landblock as ServerLandblock
 from .world_objects import Creature, SpellProjectile, WorldObject
 from .world_objects.spell_projectile import ARC, BLAST, BOLT, RING, STREAK, STRIKE, UNDEF, VOLLEY, WALL  # noqa: F401
 from .trajectory import solve_ballistic_arc, solve_ballistic_arc_lateral, solve_ballistic_arc_moving
@@ -315,7 +317,7 @@ def launch_projectile(wo: WorldObject, launcher: WorldObject, launcher_obj, targ
                       origin: Vector3, orientation, landblock, cell_id: int, velocity: Vector3, lscape, trace=None) -> bool:
     """Whether the projectile is in flight after LaunchProjectile. An invalid velocity (a NaN
     component: the moving-target solver's NaN answers) misfires before anything is made. The
-    projectile's Location is the launcher's cell with Pos = origin and Rotation = orientation.
+    projectile's Location is `cell_id` (projectile_location's) with Pos = `origin` and Rotation = orientation.
     ProjectileSource is the launcher, ProjectileTarget the target (None for a static)."""
     if math.isnan(velocity.x) or math.isnan(velocity.y) or math.isnan(velocity.z):
         return False  # YourAttackMisfired (ACE)
@@ -408,12 +410,43 @@ def update_object_physics(wo: WorldObject, lscape, trace=None) -> bool:
 # ---------------------------------------------------------------- a scene's launch
 
 
+@harness("the projectile's Location: a copy of its launcher's (PhysicsObj.Position.ACEPosition()) with Pos moved to the spawn point")
+def projectile_location(launcher_obj, origin: Vector3) -> EntityPosition:
+    """Creature.LaunchProjectile's ``proj.Location = new Position(Location); proj.Location.Pos = origin`` and
+    LaunchSpellProjectiles' ``sp.Location = new Position(casterLoc); sp.Location.Pos += offset`` (`origin` the
+    sum): an ACE.Entity.Position of the launcher's cell and frame (its Location: SyncLocation keeps it its
+    PhysicsObj's Position), whose Pos setter then finds the outdoor landblock and cell of the spawn point anew
+    (port/entity_position.py). The projectile enters the world from that cell, at that Pos (moved onto another
+    landblock, or clamped at the world's edge, when the spawn point lies past its launcher's landblock)."""
+    frame = launcher_obj.position.frame
+    location = EntityPosition(launcher_obj.position.obj_cell_id, frame.origin, frame.orientation)
+    location.set_position(origin)
+    return location
+
+
+@harness("the server Landblock of the projectile's Location (LandblockManager.AddObject's GetLandblock): the scene's, or refused")
+def location_landblock(location: EntityPosition, landblocks: dict, lscape):
+    """LandblockManager.GetLandblock(Location.LandblockId) finds the scene's landblock in its table; one the scene
+    lacks it would load from a cell DAT that has no such landblock: refused (NotSupportedException), as the facade
+    refuses it. `landblocks`: the run's server Landblocks by landblock id, one made when first joined."""
+    from .errors import NotSupportedException
+
+    landblock_id = location.landblock_id >> 16
+    if (location.landblock_id | 0xFFFF) not in lscape.records:
+        raise NotSupportedException("acconform: a projectile's Location in a landblock the scene lacks "
+                                    "(LandblockManager.GetLandblock would load it) is not modelled")
+    # LandblockManager.AddObject: GetLandblock(Location.LandblockId, loadAdjacents: false) finds it loaded
+    lscape.landblock_manager.get_landblock(location.landblock_id | 0xFFFF, None)  # loaded: no new Landblock
+    return landblocks.setdefault(landblock_id, ServerLandblock(landblock_id))
+
+
 @harness("a scene's projectile launch (scene/8 others[].launch), as the oracle's facade makes it: ACE's launch calls for an arrow or a spell")
-def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, lscape, trace=None) -> bool:
+def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblocks: dict, lscape, trace=None) -> bool:
     """`wo` is the projectile's WorldObject (Ammunition or SpellProjectile) holding its PhysicsObj as made;
     `launch` the scene's Launch; `launcher_obj` / `target_obj` the PhysicsObjs (their WorldObjects are their
-    WeenieObjects'; a static's is none); `landblock` the server Landblock of the launcher's cell. The
-    launcher's Location is its PhysicsObj's Position (SyncLocation keeps them one). The WorldObject is made
+    WeenieObjects'; a static's is none); `landblocks` the run's server Landblocks by id, which the projectile's
+    Location's landblock joins (projectile_location: the launcher's Location, its PhysicsObj's Position, with Pos
+    moved to the spawn point, which finds its own outdoor landblock and cell). The WorldObject is made
     now (physicsCreationTime: the clock now). An arrow: CalculateProjectileVelocity's aim (the target's
     origin raised by Height / GetAimHeight) and GetProjectileVelocity from `origin`, then LaunchProjectile. A
     spell: CalculateProjectileVelocity's aim (raised by Height * ProjHeight or ProjHeightArc) and solver, then
@@ -439,6 +472,8 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
     target = target_obj.weenie_obj.world_object if target_obj is not None else None
     speed = s(launch.speed)
     origin = mode.vec(*launch.origin)
+    location = projectile_location(launcher_obj, origin)
+    landblock = location_landblock(location, landblocks, lscape)
 
     # what SpellProjectile.Setup does to ScriptedCollision for the scene's spell kind: a wall spell's weenie (7278,
     # 7281, 7282, 23144) clears it; SpellType Ring sets it for spell 3818, else clears it; otherwise left (None)
@@ -454,9 +489,9 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
         unit_y = mode.vec(0.0, 1.0, 0.0)
         velocity = runtime.transform_by_quaternion(unit_y, launcher_obj.position.frame.orientation) * speed
         spell_projectile_setup(wo, launch.spell == "rolling_death", scripted_collision)
-        spell_projectile_set_physics_state(wo, None, None, velocity, origin)
-        location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
-        return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)
+        spell_projectile_set_physics_state(wo, None, None, velocity, location.pos)
+        entry = Position(location.landblock_id, AFrame(location.pos, obj.position.frame.orientation))
+        return launch_spell_projectile(wo, launcher, launcher_obj, landblock, entry, lscape, trace)
 
     end_pos = target_obj.position.frame.origin
     height = target_obj.get_height()
@@ -466,9 +501,9 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
         velocity = calculate_spell_projectile_velocity(origin, end_pos, speed, target_velocity, wo.spell_type,
                                                        launch.alt_solver, runtime)
         spell_projectile_setup(wo, launch.spell == "rolling_death", scripted_collision)
-        spell_projectile_set_physics_state(wo, target, target_obj, velocity, origin)
-        location = Position(launcher_obj.position.obj_cell_id, AFrame(origin, obj.position.frame.orientation))
-        return launch_spell_projectile(wo, launcher, launcher_obj, landblock, location, lscape, trace)
+        spell_projectile_set_physics_state(wo, target, target_obj, velocity, location.pos)
+        entry = Position(location.landblock_id, AFrame(location.pos, obj.position.frame.orientation))
+        return launch_spell_projectile(wo, launcher, launcher_obj, landblock, entry, lscape, trace)
 
     end_pos = end_pos.with_z(end_pos.z + height / s(AIM_HEIGHT))
     lead = launch.lead_target or not isinstance(launcher, Player)
@@ -476,5 +511,5 @@ def scene_launch(wo: WorldObject, launch, launcher_obj, target_obj, landblock, l
                                           runtime)
     w, x, y, z = launch.orientation  # written (w, x, y, z), as a scene's frames are
     orientation = mode.quat(x, y, z, w)
-    return launch_projectile(wo, launcher, launcher_obj, target, target_obj, origin, orientation, landblock,
-                             launcher_obj.position.obj_cell_id, velocity, lscape, trace)
+    return launch_projectile(wo, launcher, launcher_obj, target, target_obj, location.pos, orientation, landblock,
+                             location.landblock_id, velocity, lscape, trace)

@@ -49,7 +49,6 @@ from .weenie_object import WeenieObject
 from .world_objects import Ammunition, Creature, GenericObject, Missile, Player, SpellProjectile
 from .world_objects.spell_projectile import ARC, BOLT, RING, WALL
 from . import missile_launch
-from .server_landblock import Landblock as ServerLandblock
 from . import transition as _transition  # noqa: F401  (gives LandCell its collision methods)
 from .transition.branches import Trace
 
@@ -828,11 +827,9 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
                     destroy_other(by_id[inputs.id], inputs.id, movers, stepped)
             for k, (obj, launch) in enumerate(launches):
                 if launch is not None and launch.tick == index:
-                    launcher = by_id[launch.launcher]
-                    landblock = landblocks.setdefault(launcher.position.landblock, ServerLandblock(launcher.position.landblock))
-                    missile_launch.scene_launch(obj.weenie_obj.world_object, launch, launcher,
+                    missile_launch.scene_launch(obj.weenie_obj.world_object, launch, by_id[launch.launcher],
                                                 by_id[launch.target] if launch.target is not None else None,
-                                                landblock, lscape, trace)
+                                                landblocks, lscape, trace)
                     stepped[k] = True
             timer.set(time)
             if ticks.driver == "update_object":

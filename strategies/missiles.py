@@ -465,3 +465,114 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
         name += f":carries-{carried}"
     return validate_scene(Scene(land, mover, tuple(objects), engine_mode="server", name=name,
                                 ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))
+
+
+# ------------------------------------------------------------------ a launch at a border (issue 41, stop 51)
+# The projectile's Location is its launcher's with Pos moved to the spawn point, whose setter (ACE.Entity.Position
+# .SetPosition) finds the outdoor landblock and cell of the spawn point anew: these arms spawn it across a line.
+BORDER_ARMS = st.sampled_from(("cell_border", "cell_border", "cell_border", "block_border", "block_border", "world_edge",
+                               "world_edge"))
+BORDER_GAPS = dr.OneOf(st.sampled_from((0.8, 0.4, 0.05)), dr.f32(0.01, 0.79))  # how far short of the line the launcher stands
+CELL_LINES = dr.ints(2, 6)  # the cell line crossed: x or y = 24 k
+AXES = st.sampled_from(((0.0, 1.0), (1.0, 0.0), (0.0, -1.0), (-1.0, 0.0)))  # north, east, south, west
+EDGE_BLOCKS = {(1.0, 0.0): 0xFE40, (0.0, 1.0): 0x40FE, (-1.0, 0.0): 0x0040, (0.0, -1.0): 0x4000}  # the world's edges
+INNER_BLOCKS = {(1.0, 0.0): 0xA9B4, (0.0, 1.0): 0x7F7F, (-1.0, 0.0): 0x2B10, (0.0, -1.0): 0xC6A0}
+
+
+def _step_block(lb: int, ux: float, uy: float) -> int:
+    """The landblock next to `lb` along an axis (x the high byte, y the low)."""
+    return lb + (int(ux) << 8) + int(uy)
+
+
+def draw_border_scene(draw, arm: str | None = None) -> Scene:
+    """A launch whose spawn point lies across a line from its launcher (BORDER_ARMS, or `arm`), on flat land:
+
+    - ``cell_border``: the launcher stands 0.01-0.8 m short of a cell line (x or y = 24 k), facing across it along an
+      axis or at a slant; an arrow or a spell at a monster 3-12 m on (or from a monster at the player): the Location's
+      cell is the next one, where enter_world starts;
+    - ``block_border``: an untargeted spell (along the caster's forward vector) from the landblock's edge, out over
+      it: the Location moves onto the next landblock (its Pos 192 m back), which the scene holds, or, one time in
+      five, lacks (refused by both: NotSupportedException);
+    - ``world_edge``: the same at the edge of the world (landblock x or y 0xFE, east or north: X or Y clamped to 192,
+      the cell id past the landblock's 64, which get_landcell refuses: AddPhysicsObj fails and the spell is
+      destroyed; 0x00, west or south: clamped to 0, a cell of the landblock)."""
+    arm = arm or draw(BORDER_ARMS)
+    h = dr.take(draw, HEIGHTS)
+    ground = 2.0 * h
+    n = dr.take(draw, dr.ints(20, 40))
+    dt = draw(DTS)
+    launch_tick = min(dr.take(draw, LAUNCH_TICKS), n - 1)
+    eye = float(dr.take(draw, EYES))
+    gap = float(dr.take(draw, BORDER_GAPS))
+    ux, uy = draw(AXES)
+    lb = draw(BLOCKS)
+    land_ids = [lb]
+    player_launches = draw(st.sampled_from((True, True, False)))
+    arrow = arm == "cell_border" and draw(st.sampled_from((True, True, False)))
+    target: int | None = MONSTER
+    monsters = []
+    if arm == "cell_border":
+        k = dr.take(draw, CELL_LINES)
+        along = 24.0 * k - gap if (ux + uy) > 0 else 24.0 * k + gap  # the coordinate along the axis, short of the line
+        across = float(dr.take(draw, SPOTS))
+        x0, y0 = (along, across) if ux != 0.0 else (across, along)
+        if draw(st.sampled_from((False, False, True))):  # at a slant: 10-80 degrees off the axis
+            t = math.radians(float(dr.take(draw, dr.f32(10.0, 80.0))) * (1.0 if draw(dr.BOOLEANS) else -1.0))
+            ux, uy = ux * math.cos(t) - uy * math.sin(t), ux * math.sin(t) + uy * math.cos(t)
+        d = float(dr.take(draw, dr.f32(3.0, 12.0)))
+        tx, ty = x0 + ux * d, y0 + uy * d
+    else:
+        if arm == "world_edge":
+            lb = EDGE_BLOCKS[(ux, uy)]
+            land_ids = [lb]
+        elif draw(st.sampled_from((True, True, True, True, False))):  # the next landblock is the scene's
+            lb = INNER_BLOCKS[(ux, uy)]
+            land_ids = [lb, _step_block(lb, ux, uy)]
+        else:
+            lb = INNER_BLOCKS[(ux, uy)]
+            land_ids = [lb]
+        edge = 192.0 - gap if (ux + uy) > 0 else gap
+        across = float(dr.take(draw, SPOTS))
+        x0, y0 = (edge, across) if ux != 0.0 else (across, edge)
+        tx, ty = x0 - ux * 4.0 + uy * 3.0, y0 - uy * 4.0 - ux * 3.0  # a monster standing by, inside
+    if arm == "cell_border" and not player_launches:  # a monster launches at the player
+        launcher, target = CASTER, PLAYER
+        mover_at = (tx, ty)
+        monsters.append(_monster(CASTER, lb, x0, y0, ground))
+    elif player_launches:
+        launcher, mover_at = PLAYER, (x0, y0)
+        monsters.append(_monster(MONSTER, lb, tx, ty, ground))
+    else:
+        launcher, mover_at = CASTER, (tx, ty)
+        monsters.append(_monster(CASTER, lb, x0, y0, ground))
+        target = PLAYER
+    if arm in ("block_border", "world_edge"):
+        target = None
+    origin = (to_f32(x0 + ux * 0.8), to_f32(y0 + uy * 0.8), to_f32(ground + eye))
+    if arrow:
+        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, ARROW_SPEEDS)), origin, _heading(ux, uy),
+                        lead_target=draw(dr.BOOLEANS))
+        projectile = OtherMover(PROJECTILE, "ammunition", (SphereRec((0.0, 0.0, 0.0), to_f32(dr.take(draw, ARROW_RADII))),),
+                                Position(_cell(lb, x0, y0), Frame((to_f32(x0), to_f32(y0), to_f32(ground)))), 0.0, 0.0,
+                                state=int(PhysicsState.Gravity), transient_state=0, launch=launch)
+    else:
+        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, SPELL_SPEEDS)), origin,
+                        arc=target is not None and draw(st.sampled_from((False, False, True))),
+                        tracking=draw(dr.BOOLEANS))
+        projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(dr.take(draw, SPELL_RADII))),),
+                                Position(_cell(lb, x0, y0), Frame((to_f32(x0), to_f32(y0), to_f32(ground)))), 0.0, 0.0,
+                                state=0, transient_state=0, launch=launch)
+    others = tuple(monsters) + (projectile,)
+    mx, my = mover_at
+    cell = _cell(lb, mx, my)
+    mover = Mover(spheres=BODY, begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(ux, uy))),
+                  end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
+                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"))
+    steps = [TickStep(dt) for _ in range(n)]
+    land = tuple(Landblock(b << 16 | 0xFFFF, (h,) * 81, (0,) * 81) for b in land_ids)
+    name = (f"missiles:{arm}:{'arrow' if arrow else 'spell'}:{'player' if launcher == PLAYER else 'monster'}"
+            f":{'north' if uy > 0.5 else 'south' if uy < -0.5 else 'east' if ux > 0.5 else 'west' if ux < -0.5 else 'slant'}")
+    if arm == "block_border" and len(land_ids) == 1:
+        name += ":unloaded"
+    return validate_scene(Scene(land, mover, (), engine_mode="server", name=name,
+                                ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))

@@ -17,7 +17,7 @@ FACADE = (ROOT / "oracle" / "facade" / "Facade.cs").read_text()
 SERVER_SEQUENCES = ("LoadServerLandblock", "MakeServerLandblock", "ClearAdjacents", "InstallDat", "SetClock",
                     "Place", "UpdatePlayerPosition", "MakePlayer", "PrepareServerPlayer", "SetServerPlayerPhysics", "Jump", "MoveToState", "BuildStatic", "BuildMover", "RemoveStatics",
                     "QuietLog4netStartup", "EnterOthers", "MakeWorldObject", "ApplyOtherInputs", "WriteCollisions",
-                    "SceneLaunch", "FindObj", "ServerLandblockOf", "GetProjectileVelocity", "CalculateSpellProjectileVelocity",
+                    "SceneLaunch", "FindObj", "ProjectileLocation", "LocationLandblock", "GetProjectileVelocity", "CalculateSpellProjectileVelocity",
                     "SetPhysicsObj", "SetCurrentLandblock", "SetProjectilePhysicsState", "SpellProjectileSetup",
                     "SpellProjectileSetPhysicsState", "AddPhysicsObj", "AddWorldObject", "IsProjectileVisible",
                     "LaunchProjectile", "LaunchSpellProjectile", "UpdateObjectPhysics")

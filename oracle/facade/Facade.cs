@@ -551,7 +551,8 @@ namespace Acconform.Oracle
         /// target's origin raised by Height / GetAimHeight, 2: a creature's, a player's at Medium) and
         /// GetProjectileVelocity from the scene's origin, then LaunchProjectile. A spell: WorldObject.CalculateProjectileVelocity
         /// (raised by Height * ProjHeight or ProjHeightArc), SpellProjectile.Setup, LaunchSpellProjectiles' physics state
-        /// and AddObject. The Location's cell is the launcher's (its Location: SyncLocation keeps it its PhysicsObj's).</summary>
+        /// and AddObject. The Location is the launcher's (its Location: SyncLocation keeps it its PhysicsObj's) with Pos moved
+        /// to the spawn point, which finds its own outdoor landblock and cell (ProjectileLocation).</summary>
         static void SceneLaunch(Other o, PhysicsObj mover)
         {
             var launcherObj = FindObj(o.Launcher, mover);
@@ -564,7 +565,8 @@ namespace Acconform.Oracle
             var launcher = launcherObj.WeenieObj.WorldObject;
             var target = targetObj?.WeenieObj.WorldObject;
             var origin = o.Origin;
-            var landblock = ServerLandblockOf(launcherObj.Position.ObjCellID);
+            var location = ProjectileLocation(launcherObj, origin);
+            var landblock = LocationLandblock(location);
             var sp = wo as ACE.Server.WorldObjects.SpellProjectile;
             if (sp != null && targetObj == null)
             {
@@ -572,8 +574,8 @@ namespace Acconform.Oracle
                 // forward vector, casterLoc.Rotation being the launcher's PhysicsObj's orientation
                 var forward = Vector3.Transform(Vector3.UnitY, launcherObj.Position.Frame.Orientation) * o.Speed;
                 SpellProjectileSetup(sp, o.SpellKind);
-                SpellProjectileSetPhysicsState(sp, null, null, forward, origin, o.Arc);
-                LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
+                SpellProjectileSetPhysicsState(sp, null, null, forward, location.Pos, o.Arc);
+                LaunchSpellProjectile(sp, launcher, launcherObj, landblock, location.Cell, location.Pos,
                                       sp.PhysicsObj.Position.Frame.Orientation);
                 return;
             }
@@ -585,16 +587,41 @@ namespace Acconform.Oracle
                 var targetVelocity = o.Tracking ? targetObj.CachedVelocity : Vector3.Zero;
                 var velocity = CalculateSpellProjectileVelocity(origin, endPos, o.Speed, targetVelocity, o.Arc, o.AltSolver);
                 SpellProjectileSetup(sp, o.SpellKind);
-                SpellProjectileSetPhysicsState(sp, target, targetObj, velocity, origin, o.Arc);
-                LaunchSpellProjectile(sp, launcher, launcherObj, landblock, launcherObj.Position.ObjCellID, origin,
+                SpellProjectileSetPhysicsState(sp, target, targetObj, velocity, location.Pos, o.Arc);
+                LaunchSpellProjectile(sp, launcher, launcherObj, landblock, location.Cell, location.Pos,
                                       sp.PhysicsObj.Position.Frame.Orientation);
                 return;
             }
             endPos.Z += height / 2.0f;  // target.Height / GetAimHeight(target)
             var lead = o.LeadTarget || !(launcher is ACE.Server.WorldObjects.Player);
             var v = GetProjectileVelocity(origin, endPos, o.Speed, targetObj.CachedVelocity, true, lead, o.AltSolver, out _);
-            LaunchProjectile(wo, launcher, launcherObj, target, targetObj, origin, o.Orientation, landblock,
-                             launcherObj.Position.ObjCellID, v);
+            LaunchProjectile(wo, launcher, launcherObj, target, targetObj, location.Pos, o.Orientation, landblock,
+                             location.Cell, v);
+        }
+
+        /// <summary>port: projectile_location. The projectile's Location as ACE makes it: a copy of the launcher's
+        /// (PositionExtensions.ACEPosition's `new Position(ObjCellID, Origin, Orientation)` of its PhysicsObj's Position,
+        /// which its Location is: SyncLocation), then `Location.Pos = origin` (Creature.LaunchProjectile; `Pos +=` in
+        /// LaunchSpellProjectiles), whose setter, ACE.Entity.Position.SetPosition, finds the outdoor landblock and
+        /// cell of the spawn point anew (SetLandblock: moved onto the next landblock, or clamped at the world's
+        /// edge; SetLandCell).</summary>
+        static ACE.Entity.Position ProjectileLocation(PhysicsObj launcherObj, Vector3 origin)
+        {
+            var location = new ACE.Entity.Position(launcherObj.Position.ObjCellID, launcherObj.Position.Frame.Origin,
+                                                   launcherObj.Position.Frame.Orientation);
+            location.Pos = origin;
+            return location;
+        }
+
+        /// <summary>port: location_landblock. LandblockManager.AddObject's GetLandblock(Location.LandblockId, false):
+        /// ACE's own, which finds the scene's server landblock loaded (BuildScene loaded it); one the scene lacks ACE
+        /// would load from a cell DAT without it: refused first.</summary>
+        static ACE.Server.Entity.Landblock LocationLandblock(ACE.Entity.Position location)
+        {
+            var id = new LandblockId(location.Cell | 0xFFFF);
+            if (LandblockTable()[id.LandblockX, id.LandblockY] == null)
+                throw new NotSupportedException("acconform: a projectile's Location in a landblock the scene lacks (LandblockManager.GetLandblock would load it) is not modelled");
+            return ACE.Server.Managers.LandblockManager.GetLandblock(location.LandblockId, false);
         }
 
         /// <summary>The PhysicsObj of the mover, another mover or a static by id.</summary>
@@ -604,17 +631,6 @@ namespace Acconform.Oracle
             foreach (var o in sceneOthers) if (o.Id == id) return o.Obj;
             foreach (var s in staticObjs) if (s != null && s.ID == id) return s;
             throw new InvalidOperationException("acconform: no object has id " + id.ToString("X8"));
-        }
-
-        /// <summary>The scene's server Landblock of a cell (LandblockManager.GetLandblock finds it in its table: BuildScene
-        /// loaded it).</summary>
-        static ACE.Server.Entity.Landblock ServerLandblockOf(uint cellId)
-        {
-            var id = new LandblockId(cellId | 0xFFFF);
-            var lb = LandblockTable()[id.LandblockX, id.LandblockY];
-            if (lb == null)
-                throw new InvalidOperationException("acconform: no server landblock " + (cellId >> 16).ToString("X4"));
-            return lb;
         }
 
         /// <summary>port: get_projectile_velocity. Creature.GetProjectileVelocity with a default server's properties

@@ -99,19 +99,20 @@ class LandblockManager:
         self.landblocks: dict[tuple[int, int], ServerLandblock] = {}
 
     @anchor(None, "ACE.Server/Managers/LandblockManager.cs:GetLandblock", "a landblock not loaded: table, Init, SetAdjacents")
-    def get_landblock(self, landblock: ServerLandblock) -> ServerLandblock:
-        """GetLandblock(id, loadAdjacents: false) for a landblock not loaded yet, with the server
-        Landblock made by the caller (its constructor reads the DAT: here, the scene's record) and
-        Init (the physics landblock's PostInit) left to the LScape, which builds it on first use."""
+    def get_landblock(self, landblock_id: int, new_landblock) -> ServerLandblock:
+        """GetLandblock(id, loadAdjacents: false): the loaded landblock of `landblock_id`, or, for one not
+        loaded yet, `new_landblock()` (``new Landblock(landblockId)``, whose constructor reads the DAT: here,
+        the scene's record) in the table, then SetAdjacents; Init (the physics landblock's PostInit) is left
+        to the LScape, which builds it on first use."""
         set_adjacents = False
 
-        existing = self.landblocks.get((landblock.landblock_x, landblock.landblock_y))
-        if existing is None:
+        key = ((landblock_id >> 24) & 0xFF, (landblock_id >> 16) & 0xFF)
+        landblock = self.landblocks.get(key)
+
+        if landblock is None:
             # load up this landblock
-            self.landblocks[(landblock.landblock_x, landblock.landblock_y)] = landblock
+            landblock = self.landblocks[key] = new_landblock()
             set_adjacents = True
-        else:
-            landblock = existing
 
         # cache adjacencies
         if set_adjacents:
@@ -177,7 +178,7 @@ class LandblockManager:
         elif adjacency == Adjacency.SouthWest:
             lby -= 1
             lbx -= 1
-        elif adjacency == Adjacency.SouthEast:
+        else:  # Adjacency.SouthEast (the last of the enum's eight: ACE's switch has no default)
             lby -= 1
             lbx += 1
 

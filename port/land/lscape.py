@@ -137,7 +137,7 @@ class LScape:
                 if cell_dat is not None:  # (a test's world without DATs reads none)
                     db_obj.get_cell_landblock(cell_dat, landblock_id)
                     info = db_obj.get_landblock_info(cell_dat, (record.id & 0xFFFF0000) | 0xFFFE)
-                self.landblock_manager.get_landblock(ServerLandblock(record, info, self))
+                self.landblock_manager.get_landblock(record.id, lambda: ServerLandblock(record, info, self))
         # a landblock with buildings is built now, before anything is placed, as the oracle's facade builds the scene's
         # landblocks (BuildScene: each constructed in the scene's order, then each PostInit'd): its PostInit places
         # its buildings (init_buildings: BuildingObj.add_to_cell, SortCell.add_building), which is the world's

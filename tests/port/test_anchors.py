@@ -16,7 +16,8 @@ from acconform.port.anchors import HARNESS, REGISTRY, load_all
 ACE_SOURCE = Path(os.environ.get("ACE_SOURCE", "/work/ace")) / "Source"
 ACE_PHYSICS = ACE_SOURCE / "ACE.Server/Physics"
 DATLOADER = "ACE.DatLoader/"  # DatLoader anchors name their file by its path under Source/
-SERVER = ("ACE.Server/Managers/", "ACE.Server/Entity/", "ACE.Server/WorldObjects/")  # so do the server's (LandblockManager, the server Landblock, the WorldObjects)
+SERVER = ("ACE.Server/Managers/", "ACE.Server/Entity/", "ACE.Server/WorldObjects/",  # so do the server's (LandblockManager,
+          "ACE.Entity/")  # the server Landblock, the WorldObjects) and ACE.Entity's (Position, LandblockId)
 # the registry itself is not port code
 NOT_PORT = {"acconform.port.anchors"}
 

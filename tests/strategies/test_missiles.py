@@ -231,3 +231,27 @@ def test_the_quiet_and_sphereless_arms_push_a_crate_that_reports_nothing_or_has_
     for s in _arm_scenes("sphereless"):
         crate = next(o for o in s.others if o.weenie == "object")
         assert crate.spheres == () and "objects.sphereless" in scene_features(s) and Scene.from_json(s.to_json()) == s
+
+
+def test_the_border_arms_spawn_across_a_cell_line_a_landblocks_edge_and_the_worlds():
+    """draw_border_scene: the spawn point's outdoor cell (ACE.Entity.Position.SetLandCell) is never the launcher's, and
+    the world-edge launches leave the world's landblocks (the Location is clamped); a spawn point 0.8 m back, on the line
+    itself, is the launcher's cell when it faces west or south."""
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.missiles import draw_border_scene
+
+    drawer = FastDrawer(st.composite(draw_border_scene)(), 68 * 1000003)
+    with pinned_constants():
+        scenes = [drawer.draw()[0] for _ in range(40)]
+    arms = {s.name.split(":")[1] for s in scenes}
+    assert arms == {"cell_border", "block_border", "world_edge"}
+    for s in scenes:
+        p = _projectile(s)
+        x, y, _ = p.launch.origin
+        spawn = int(x // 24) * 8 + int(y // 24) + 1 if 0 <= x < 192 and 0 <= y < 192 else None
+        assert spawn != p.begin.cell & 0xFFFF or x % 24 == 0 or y % 24 == 0
+        if s.name.split(":")[1] == "world_edge":
+            assert any(b.id >> 24 in (0x00, 0xFE) or (b.id >> 16) & 0xFF in (0x00, 0xFE) for b in s.landblocks)

@@ -61,12 +61,12 @@ def test_a_landblock_gets_the_neighbours_loaded_before_it_and_they_get_it_on_the
     manager = LandblockManager()
     a, b, c = _server(0x10, 0x20), _server(0x11, 0x20), _server(0x10, 0x21)
     for lb in (a, b, c):
-        manager.get_landblock(lb)
+        manager.get_landblock(lb.raw, lambda: lb)
     assert _xy(a.physics_adjacents) == []
     assert _xy(b.physics_adjacents) == [(0x10, 0x20)]
     assert _xy(c.physics_adjacents) == [(0x10, 0x20), (0x11, 0x20)]  # south, then south-east
     assert _xy(a.adjacents) == [(0x10, 0x21), (0x11, 0x20)]  # north, east: the server side knows both
-    assert manager.get_landblock(_server(0x10, 0x20)) is a  # loaded once
+    assert manager.get_landblock(0x1020FFFF, lambda: _server(0x10, 0x20)) is a  # loaded once
 
 
 @pytest.mark.anchor("ACE.Server/Entity/Landblock.cs:IsDungeon")
@@ -78,8 +78,8 @@ def test_a_dungeon_has_no_adjacents_and_the_nw_island_is_never_a_dungeon():
     assert not _server(0x10, 0x20, (1,) + flat[1:], _Info(3)).is_dungeon()
     assert not _server(0x07, 0xF9, flat, _Info(3)).is_dungeon()  # the NW island hack
     manager = LandblockManager()
-    manager.get_landblock(_server(0x11, 0x20))
-    dungeon = manager.get_landblock(_server(0x10, 0x20, flat, _Info(3)))
+    manager.get_landblock(0x1120FFFF, lambda: _server(0x11, 0x20))
+    dungeon = manager.get_landblock(0x1020FFFF, lambda: _server(0x10, 0x20, flat, _Info(3)))
     assert dungeon.physics_adjacents == [] and manager.landblocks[(0x11, 0x20)].adjacents == []
 
 
