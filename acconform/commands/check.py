@@ -364,8 +364,8 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
     entries = oracle.select(n=args.cases, seed=args.seed or 0, kinds=set(run_kinds), runtime=args.runtime,
                             unsupported=unsupported if args.cases is not None else None, skipped=presampled)
     if args.cases is None:
-        for e in oracle.select(kinds=set(kinds) - set(run_kinds), runtime=args.runtime):
-            presampled[f"kind {e.kind}"] += 1
+        for kind in set(kinds) - set(run_kinds):  # a tick-policy kind's records are filed as "ticks": named by its kind
+            presampled[f"kind {kind}"] += len(oracle.select(kinds={kind}, runtime=args.runtime))
     if not entries:
         raise OracleUnavailable(f"nothing to check against: no ACE assembly is configured and the recorded corpus "
                                 f"{corpus} holds no scenes of kinds {','.join(run_kinds)} (record some with `acconform "
