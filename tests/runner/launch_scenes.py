@@ -7,7 +7,8 @@ collisions), for `acconform record` (issue 41's shard ticks-0051).
 Writes one scene file per drawn scene (strategies.fast_draw, as a campaign draws), `s<seed>-<i>.json`, keeping
 only the scenes of `--arms` when given and the first K of arm `timeout` (310 ticks each: a shard's replay time);
 `--only ARM` draws that arm alone (`across`, which draw_launch_scene never draws, is drawn so).
-The arms are no campaign kind: a draw added to the missiles kind would move every seeded sample the tests pin.
+The missiles kind draws these arms too, as a share of its scenes (strategies/scenes.py MISSILE_WAYS); this draws them
+alone, or one arm alone.
 """
 
 from __future__ import annotations
