@@ -138,16 +138,17 @@ class RecordedText:
 _OUTCOME = ',"outcome":'
 
 # A tick record of a tick-policy kind (protocol.KIND_FEATURES: motion, doors, movers, missiles, targets; filed
-# under "ticks") holds one of its kind's keys in its text, the fields the kind's feature reads (written only when
-# set): looked for before the scene is parsed and asked `protocol.of_kind`, which decides. The kinds that need
-# more features first: a scene of targets or missiles is one of movers too, and goes to the narrower kind.
-_KIND_KEYS: dict[str, tuple[str, ...]] = {
-    "targets": ('"stick_to":', '"destroy":', '"move_to_object":', '"turn_to_object":'),
-    "missiles": ('"launch":',),
-    "doors": ('"door":',),
-    "movers": ('"others":',),
-    "motion": ('"motion_table":', '"motion":', '"stop":', '"do_motion":', '"stop_motion":', '"move_to":',
-               '"move_to_object":', '"turn_to_heading":', '"turn_to_object":'),
+# under "ticks") holds one of its kind's keys in its scene's text: the fields the kind's feature reads, written only
+# when set. The first keys say so alone; the second (a MoveToObject or TurnToObject, whose object may be a static)
+# only that its scene is to be parsed and asked `protocol.of_kind`. The kinds that need more features first: a scene
+# of targets or missiles is one of movers too, and goes to the narrower kind.
+_KIND_KEYS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "targets": (('"stick_to":', '"destroy":'), ('"move_to_object":', '"turn_to_object":')),
+    "missiles": (('"launch":',), ()),
+    "doors": (('"door":',), ()),
+    "movers": (('"others":',), ()),
+    "motion": (('"motion_table":', '"motion":', '"stop":', '"do_motion":', '"stop_motion":', '"move_to":',
+                '"move_to_object":', '"turn_to_heading":', '"turn_to_object":'), ()),
 }
 
 
@@ -442,9 +443,9 @@ class RecordedOracle:
         entries = [e for e in self.entries
                    if (kinds is None or e.kind in kinds or tick_kinds and e.kind == "ticks")
                    and (runtime is None or e.runtime == runtime or e.runtime.split(" ", 1)[0] == runtime)]
-        group = {i: e.kind for i, e in enumerate(entries)}
+        group, unsure = {i: e.kind for i, e in enumerate(entries)}, set()
         if tick_kinds:
-            entries, group = self._tick_kinds(entries, tick_kinds, "ticks" in kinds, check=n is None)
+            entries, group, unsure = self._tick_kinds(entries, tick_kinds, "ticks" in kinds, check=n is None)
         if n is None:
             return entries
         by_kind: dict[str, list[int]] = {}
@@ -472,11 +473,11 @@ class RecordedOracle:
                 batch = order[at:at + take[kind] - got]
                 at += len(batch)
                 verdicts = {}
-                if unsupported is not None or kind in tick_kinds:
-                    for i in sorted(batch):
+                if unsupported is not None or unsure.intersection(batch):
+                    for i in sorted(batch if unsupported is not None else unsure.intersection(batch)):
                         try:
                             scene = self._hand_out(entries[i], keep=False)
-                            if kind in tick_kinds and not of_kind(scene, kind):
+                            if i in unsure and not of_kind(scene, kind):
                                 verdicts[i] = False  # its text named the kind's fields, its scene does not need them
                             elif unsupported is not None:
                                 verdicts[i] = unsupported(scene)
@@ -498,38 +499,52 @@ class RecordedOracle:
         return [e for i, e in enumerate(entries) if i in chosen]
 
     def _tick_kinds(self, entries: list[Entry], tick_kinds: list[str], ticks: bool, check: bool):
-        """(entries, their kinds by index) with the tick records sorted into the tick-policy kinds asked for:
-        each goes to the first whose keys its text holds (or to "ticks" when `ticks` is asked for too, else it
-        is left out). With `check` each is parsed here and kept only if it is of its kind (`of_kind`); else
-        the sample's loop asks that of the ones it takes."""
+        """(entries, their kinds by index, the indices whose kind is still to be asked) with the tick records sorted
+        into the tick-policy kinds asked for by their text's keys (`_KIND_KEYS`): each goes to the first kind it
+        surely is, else to the first it may be (or to "ticks" when `ticks` is asked for too, else it is left out).
+        With `check` a record that may be of its kind is parsed here and kept only if it is (`of_kind`); else
+        it is left to the sample's loop to ask, of the ones it takes."""
         from ..protocol import of_kind
 
         kept: list[Entry] = []
         group: dict[int, str] = {}
+        unsure: set[int] = set()
+        shard, lines = None, iter(())
         for e in entries:
-            kind = e.kind
+            kind, sure = e.kind, True
             if kind == "ticks":
+                # each shard read through once, beside its ShardLines (whose passes the replay's reading counts)
+                if e.shard is not shard:
+                    shard, lines = e.shard, shard_lines(e.shard.path)
                 try:
-                    line = e.line
+                    line = next((text for n, text in lines if n == e.lineno), None)
                 except CorpusCorrupt as err:
+                    shard, lines = e.shard, iter(())
                     self._bad(err)
                     continue
+                if line is None:
+                    self._bad(e.shard._gone(e.lineno))
+                    continue
                 cut = line.rfind(_OUTCOME)  # the scene's text: an outcome has keys of its own
-                kind = next((k for k in tick_kinds if any(line.find(key, 0, cut) >= 0 for key in _KIND_KEYS[k])),
-                            None)
-                if kind is not None and check:
+                kind = next((k for k in tick_kinds if any(line.find(key, 0, cut) >= 0 for key in _KIND_KEYS[k][0])), None)
+                if kind is None:
+                    kind = next((k for k in tick_kinds if any(line.find(key, 0, cut) >= 0 for key in _KIND_KEYS[k][1])),
+                                None)
+                    sure = kind is None
+                if not sure and check:
                     try:
-                        if not of_kind(self._hand_out(e, keep=False), kind):
-                            kind = None
+                        sure, kind = True, kind if of_kind(self._hand_out(e, keep=False), kind) else None
                     except CorpusCorrupt as err:
                         self._bad(err)
                         continue
                 kind = kind or ("ticks" if ticks else None)
                 if kind is None:
                     continue
+            if not sure:
+                unsure.add(len(kept))
             group[len(kept)] = kind
             kept.append(e)
-        return kept, group
+        return kept, group, unsure
 
     def scenes(self, entries=None) -> Scenes:
         """The scenes of `entries` (default: every record), in their order, parsed when asked for."""

@@ -316,7 +316,8 @@ def _tick_policy_corpus(corpus):
     (filed as "ticks", as `record` files them), and two terrain scenes."""
     from strategies import sample_scenes
 
-    drawn = {kind: list(sample_scenes((kind,), 3, 11)) for kind in ("motion", "movers", "missiles", "targets")}
+    drawn = {kind: list(sample_scenes((kind,), 11 if kind == "motion" else 3, 11))
+             for kind in ("motion", "movers", "missiles", "targets")}
     _written(corpus, [s for ss in drawn.values() for s in ss] + list(PROBE.values())[:2])
     return drawn
 
@@ -335,6 +336,10 @@ def test_a_tick_policy_kind_replays_the_tick_records_whose_scene_needs_its_featu
         assert {s.name for s in scenes} <= want  # what a live campaign of the kind draws is of the kind
         assert {s.name for s in oracle.scenes(oracle.select(kinds={kind}))} == want
         assert {s.name for s in oracle.scenes(oracle.select(n=2, seed=1, kinds={kind}))} < want
+        assert {s.name for s in oracle.scenes(oracle.select(n=100, seed=1, kinds={kind}))} == want
+    # a MoveToObject or TurnToObject at a static is no target: its text names the input, its scene is parsed to tell
+    aimed = [s for s in drawn["motion"] if any(t.move_to_object or t.turn_to_object for t in s.ticks.steps)]
+    assert aimed and not any(of_kind(s, "targets") for s in aimed)
     assert not oracle.select(kinds={"doors"})
     # named together, each record is counted once; the kinds that need more features take theirs first
     both = oracle.select(kinds={"motion", "targets"})
