@@ -6,7 +6,8 @@ no corpus), 130 when interrupted (after printing what the campaign found so far)
 
 Replaying the corpus: ``--runtime`` picks the committed corpus of that runtime (default coreclr,
 .NET 10, what users run; ``--runtime mono`` replays mono's), or with ``--corpus DIR`` only the
-records of that runtime; ``-n`` replays a sample stratified by kind, drawn with ``--seed``;
+records of that runtime; ``-n`` replays a sample stratified by kind, drawn with ``--seed``; a tick-policy kind (motion, doors,
+movers, missiles, targets) replays the ``ticks`` records whose scene needs its feature;
 ``--database`` (the campaign's saved failing scenes) has no use there and is refused.
 """
 
@@ -30,7 +31,7 @@ def add_arguments(p) -> None:
 
     p.add_argument("--kinds", default=None, help=f"comma-separated scene kinds (default: all, {','.join(CAMPAIGN_KINDS)}; "
                    "ticks:<world> draws tick scenes over one world; motion, doors, movers, missiles, targets "
-                   "draw one policy's tick scenes, only when named)")
+                   "draw one policy's tick scenes, only when named; replayed, the tick records that need its feature)")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact", help="exact: float32 bit for bit; fast: port in doubles, ULP tolerance")
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")
