@@ -190,6 +190,24 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
 }
 
 
+# The campaign kinds of one tick policy (strategies.EXTRA_KINDS): the features an implementation lists to run
+# each (Implementation.kinds); the last is the kind's own, the one a scene of the kind needs (`of_kind`).
+KIND_FEATURES: dict[str, tuple[str, ...]] = {
+    "motion": ("ticks", "mover.motion"),
+    "doors": ("ticks", "doors"),
+    "movers": ("ticks", "objects.moving"),
+    "missiles": ("ticks", "objects.moving", "missiles"),
+    "targets": ("ticks", "mover.motion", "objects.moving", "objects.targets"),
+}
+
+
+def of_kind(scene: Scene, kind: str) -> bool:
+    """Whether a tick scene is of the tick-policy kind: it needs the kind's own feature. A recorded corpus
+    files these scenes as "ticks"; a replay of --kinds motion (doors, movers, missiles, targets) runs the
+    tick records this holds for, as a live campaign of that kind draws only such scenes."""
+    return scene.ticks is not None and FEATURES[KIND_FEATURES[kind][-1]][0](scene)
+
+
 # Features an implementation may offer that no scene needs: it lists them in its handshake too.
 CAPABILITIES: dict[str, str] = {
     "trace": "answers a request carrying \"trace\": true with its outcome and a \"trace\" of records "
@@ -427,11 +445,7 @@ class Implementation:
         missiles, "targets" when it lists ticks, mover.motion, objects.moving and objects.targets."""
         features = self.hello["features"]
         return (tuple(self.hello["kinds"]) + (("ticks",) if "ticks" in features else ())
-                + (("motion",) if "ticks" in features and "mover.motion" in features else ())
-                + (("doors",) if "ticks" in features and "doors" in features else ())
-                + (("movers",) if "ticks" in features and "objects.moving" in features else ())
-                + (("missiles",) if "ticks" in features and "objects.moving" in features and "missiles" in features else ())
-                + (("targets",) if {"ticks", "mover.motion", "objects.moving", "objects.targets"} <= set(features) else ()))
+                + tuple(kind for kind, needs in KIND_FEATURES.items() if set(needs) <= set(features)))
 
     @property
     def runs_every_scene(self) -> bool:

@@ -137,6 +137,20 @@ class RecordedText:
 
 _OUTCOME = ',"outcome":'
 
+# A tick record of a tick-policy kind (protocol.KIND_FEATURES: motion, doors, movers, missiles, targets; filed
+# under "ticks") holds one of its kind's keys in its scene's text: the fields the kind's feature reads, written only
+# when set. The first keys say so alone; the second (a MoveToObject or TurnToObject, whose object may be a static)
+# only that its scene is to be parsed and asked `protocol.of_kind`. The kinds that need more features first: a scene
+# of targets or missiles is one of movers too, and goes to the narrower kind.
+_KIND_KEYS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "targets": (('"stick_to":', '"destroy":'), ('"move_to_object":', '"turn_to_object":')),
+    "missiles": (('"launch":',), ()),
+    "doors": (('"door":',), ()),
+    "movers": (('"others":',), ()),
+    "motion": (('"motion_table":', '"motion":', '"stop":', '"do_motion":', '"stop_motion":', '"move_to":',
+                '"move_to_object":', '"turn_to_heading":', '"turn_to_object":'), ()),
+}
+
 
 class ShardLines:
     """A shard's lines, read again from the shard when a record is asked for: a loaded corpus
@@ -416,19 +430,27 @@ class RecordedOracle:
         """Entries in corpus order: of `kinds`, recorded on `runtime` (its name, e.g. "mono", or a
         full runtime string), and when `n` is given a sample of n stratified by kind (each kind
         gets its share of n, at least one when n allows), drawn with `seed`: each kind's records
-        in a seeded order, the first ones taken.
+        in a seeded order, the first ones taken. A tick-policy kind among `kinds` (motion, doors, movers,
+        missiles, targets: filed as "ticks") selects the tick records of that kind (`_tick_kinds`).
 
         `unsupported(scene) -> reason or None` (an implementation's handshake): with `n`, a record
         whose scene it names is passed over for the next one of its kind, so n are still taken,
-        and its reason is counted in `skipped` (a Counter); without `n` nothing is parsed here."""
+        and its reason is counted in `skipped` (a Counter); without `n` nothing is parsed here (but the
+        records of a tick-policy kind, to tell whether they are of it)."""
+        from ..protocol import of_kind
+
+        tick_kinds = [k for k in _KIND_KEYS if kinds is not None and k in kinds]
         entries = [e for e in self.entries
-                   if (kinds is None or e.kind in kinds)
+                   if (kinds is None or e.kind in kinds or tick_kinds and e.kind == "ticks")
                    and (runtime is None or e.runtime == runtime or e.runtime.split(" ", 1)[0] == runtime)]
+        group, unsure = {i: e.kind for i, e in enumerate(entries)}, set()
+        if tick_kinds:
+            entries, group, unsure = self._tick_kinds(entries, tick_kinds, "ticks" in kinds, check=n is None)
         if n is None:
             return entries
         by_kind: dict[str, list[int]] = {}
-        for i, e in enumerate(entries):
-            by_kind.setdefault(e.kind, []).append(i)
+        for i in range(len(entries)):
+            by_kind.setdefault(group[i], []).append(i)
         n = min(n, len(entries))
         shares = {kind: n * len(ix) / len(entries) for kind, ix in by_kind.items()}
         take = {kind: int(x) for kind, x in shares.items()}
@@ -451,16 +473,22 @@ class RecordedOracle:
                 batch = order[at:at + take[kind] - got]
                 at += len(batch)
                 verdicts = {}
-                if unsupported is not None:
-                    for i in sorted(batch):
+                if unsupported is not None or unsure.intersection(batch):
+                    for i in sorted(batch if unsupported is not None else unsure.intersection(batch)):
                         try:
-                            verdicts[i] = unsupported(self._hand_out(entries[i], keep=False))
+                            scene = self._hand_out(entries[i], keep=False)
+                            if i in unsure and not of_kind(scene, kind):
+                                verdicts[i] = False  # its text named the kind's fields, its scene does not need them
+                            elif unsupported is not None:
+                                verdicts[i] = unsupported(scene)
                         except CorpusCorrupt as err:
                             verdicts[i] = err
                 for i in batch:
                     why = verdicts.get(i)
                     if isinstance(why, CorpusCorrupt):
                         self._bad(why)
+                        continue
+                    if why is False:
                         continue
                     if why:
                         if skipped is not None:
@@ -469,6 +497,54 @@ class RecordedOracle:
                     chosen.add(i)
                     got += 1
         return [e for i, e in enumerate(entries) if i in chosen]
+
+    def _tick_kinds(self, entries: list[Entry], tick_kinds: list[str], ticks: bool, check: bool):
+        """(entries, their kinds by index, the indices whose kind is still to be asked) with the tick records sorted
+        into the tick-policy kinds asked for by their text's keys (`_KIND_KEYS`): each goes to the first kind it
+        surely is, else to the first it may be (or to "ticks" when `ticks` is asked for too, else it is left out).
+        With `check` a record that may be of its kind is parsed here and kept only if it is (`of_kind`); else
+        it is left to the sample's loop to ask, of the ones it takes."""
+        from ..protocol import of_kind
+
+        kept: list[Entry] = []
+        group: dict[int, str] = {}
+        unsure: set[int] = set()
+        shard, lines = None, iter(())
+        for e in entries:
+            kind, sure = e.kind, True
+            if kind == "ticks":
+                # each shard read through once, beside its ShardLines (whose passes the replay's reading counts)
+                if e.shard is not shard:
+                    shard, lines = e.shard, shard_lines(e.shard.path)
+                try:
+                    line = next((text for n, text in lines if n == e.lineno), None)
+                except CorpusCorrupt as err:
+                    shard, lines = e.shard, iter(())
+                    self._bad(err)
+                    continue
+                if line is None:
+                    self._bad(e.shard._gone(e.lineno))
+                    continue
+                cut = line.rfind(_OUTCOME)  # the scene's text: an outcome has keys of its own
+                kind = next((k for k in tick_kinds if any(line.find(key, 0, cut) >= 0 for key in _KIND_KEYS[k][0])), None)
+                if kind is None:
+                    kind = next((k for k in tick_kinds if any(line.find(key, 0, cut) >= 0 for key in _KIND_KEYS[k][1])),
+                                None)
+                    sure = kind is None
+                if not sure and check:
+                    try:
+                        sure, kind = True, kind if of_kind(self._hand_out(e, keep=False), kind) else None
+                    except CorpusCorrupt as err:
+                        self._bad(err)
+                        continue
+                kind = kind or ("ticks" if ticks else None)
+                if kind is None:
+                    continue
+            if not sure:
+                unsure.add(len(kept))
+            group[len(kept)] = kind
+            kept.append(e)
+        return kept, group, unsure
 
     def scenes(self, entries=None) -> Scenes:
         """The scenes of `entries` (default: every record), in their order, parsed when asked for."""

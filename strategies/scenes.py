@@ -31,6 +31,10 @@ from .set_position import with_placement
 
 
 # Typical Setup spheres: humans 0.35-0.5 m; the 2-sphere form stacks a head sphere above.
+# the missiles kind's draws (scenes_of): the policies alone, a launch arm, or one of the arms draw_launch_scene leaves
+# to be named (all but `across`, a launch both sides refuse over a landblock border)
+MISSILE_WAYS = st.sampled_from(("policy", "policy", "policy", "policy", "launch", "named"))
+NAMED_LAUNCH_ARMS = st.sampled_from(("run_into", "spin", "trap", "thrown", "untargeted", "spells", "quiet", "sphereless"))
 RADII = tuple(to_f32(r) for r in (0.3, 0.35, 0.4, 0.48, 0.5, 1.0))
 STEP_HEIGHTS = tuple(to_f32(h) for h in (0.0, 0.01, 0.04, 0.1, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0, 1.5, 2.0))
 
@@ -170,9 +174,14 @@ def scenes_of(draw, kind: str):
 
         return draw_tick_scene(draw, None, "movers")
     if kind == "missiles":  # a projectile launched at a tick (strategies/missiles.py)
-        from .missiles import draw_missile_scene
+        from .missiles import draw_launch_scene, draw_missile_scene
 
-        return draw_missile_scene(draw)
+        # one scene in six a launch arm (draw_launch_scene: the alternate solver, misfires, out of range, ...), one in
+        # six an arm drawn by name (a spin, a trap, a thrown weapon, ...): else the policies alone
+        way = draw(MISSILE_WAYS)
+        if way == "launch":
+            return draw_launch_scene(draw)
+        return draw_missile_scene(draw, draw(NAMED_LAUNCH_ARMS) if way == "named" else None)
     if kind == "targets":  # a MoveTo, sticky follow, turn or stick_to at another mover (strategies/motion.py)
         from .motion import draw_managed_chase
         from .ticks import _clock

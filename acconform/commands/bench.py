@@ -148,10 +148,8 @@ def _scenes(args, kinds):
     from ..oracle.recorded import RecordedOracle
 
     oracle = RecordedOracle(args.corpus or default_corpus(args.runtime))
-    entries: dict[str, list] = {k: [] for k in kinds}
-    for e in oracle.select(kinds=set(kinds)):  # the first records of each kind, parsed only once taken
-        if len(entries[e.kind]) < args.cases:
-            entries[e.kind].append(e)
+    # the first records of each kind, parsed only once taken (a tick-policy kind's, filed as "ticks", by its own select)
+    entries: dict[str, list] = {k: oracle.select(kinds={k})[:args.cases] for k in kinds}
     out = {}
     for i, k in enumerate(kinds):
         out[k] = list(oracle.scenes(entries[k]))

@@ -6,7 +6,8 @@ no corpus), 130 when interrupted (after printing what the campaign found so far)
 
 Replaying the corpus: ``--runtime`` picks the committed corpus of that runtime (default coreclr,
 .NET 10, what users run; ``--runtime mono`` replays mono's), or with ``--corpus DIR`` only the
-records of that runtime; ``-n`` replays a sample stratified by kind, drawn with ``--seed``;
+records of that runtime; ``-n`` replays a sample stratified by kind, drawn with ``--seed``; a tick-policy kind (motion, doors,
+movers, missiles, targets) replays the ``ticks`` records whose scene needs its feature;
 ``--database`` (the campaign's saved failing scenes) has no use there and is refused.
 """
 
@@ -30,7 +31,7 @@ def add_arguments(p) -> None:
 
     p.add_argument("--kinds", default=None, help=f"comma-separated scene kinds (default: all, {','.join(CAMPAIGN_KINDS)}; "
                    "ticks:<world> draws tick scenes over one world; motion, doors, movers, missiles, targets "
-                   "draw one policy's tick scenes, only when named)")
+                   "draw one policy's tick scenes, only when named; replayed, the tick records that need its feature)")
     p.add_argument("--mode", choices=("exact", "fast"), default="exact", help="exact: float32 bit for bit; fast: port in doubles, ULP tolerance")
     p.add_argument("--keep-going", action="store_true", help="go on after a difference (each new kind of difference is "
                    "shrunk and saved); skip and count unreadable corpus records")
@@ -364,8 +365,8 @@ def _oracle(args, workers: int, kinds, run_kinds, port, presampled):
     entries = oracle.select(n=args.cases, seed=args.seed or 0, kinds=set(run_kinds), runtime=args.runtime,
                             unsupported=unsupported if args.cases is not None else None, skipped=presampled)
     if args.cases is None:
-        for e in oracle.select(kinds=set(kinds) - set(run_kinds), runtime=args.runtime):
-            presampled[f"kind {e.kind}"] += 1
+        for kind in set(kinds) - set(run_kinds):  # a tick-policy kind's records are filed as "ticks": named by its kind
+            presampled[f"kind {kind}"] += len(oracle.select(kinds={kind}, runtime=args.runtime))
     if not entries:
         raise OracleUnavailable(f"nothing to check against: no ACE assembly is configured and the recorded corpus "
                                 f"{corpus} holds no scenes of kinds {','.join(run_kinds)} (record some with `acconform "

@@ -309,3 +309,47 @@ def test_a_selection_passing_over_unsupported_scenes_takes_what_the_seeded_order
                 taken += 1
         assert [e.where for e in got] == [entries[i].where for i in sorted(want)]
         assert skipped == passed and sum(take.values()) == n and skipped["odd"] > 0
+
+
+def _tick_policy_corpus(corpus):
+    """A corpus of tick scenes drawn as live campaigns of motion, movers, missiles and targets draw them
+    (filed as "ticks", as `record` files them), and two terrain scenes."""
+    from strategies import sample_scenes
+
+    drawn = {kind: list(sample_scenes((kind,), 11 if kind == "motion" else 3, 11))
+             for kind in ("motion", "movers", "missiles", "targets")}
+    _written(corpus, [s for ss in drawn.values() for s in ss] + list(PROBE.values())[:2])
+    return drawn
+
+
+def test_a_tick_policy_kind_replays_the_tick_records_whose_scene_needs_its_feature(tmp_path):
+    """`check --kinds motion` without ACE: the corpus files motion scenes as "ticks"; the kind selects the
+    tick records whose scene needs mover.motion (missiles: a projectile, targets: objects.targets, ...),
+    those a live campaign of the kind draws among them, sampled or whole."""
+    from acconform.protocol import of_kind
+
+    drawn = _tick_policy_corpus(tmp_path / "c")
+    oracle = RecordedOracle(tmp_path / "c")
+    assert {e.kind for e in oracle.entries} == {"ticks", "terrain"}
+    for kind, scenes in drawn.items():
+        want = {s.name for s in oracle.scenes(oracle.select(kinds={"ticks"})) if of_kind(s, kind)}
+        assert {s.name for s in scenes} <= want  # what a live campaign of the kind draws is of the kind
+        assert {s.name for s in oracle.scenes(oracle.select(kinds={kind}))} == want
+        assert {s.name for s in oracle.scenes(oracle.select(n=2, seed=1, kinds={kind}))} < want
+        assert {s.name for s in oracle.scenes(oracle.select(n=100, seed=1, kinds={kind}))} == want
+    # a MoveToObject or TurnToObject at a static is no target: its text names the input, its scene is parsed to tell
+    aimed = [s for s in drawn["motion"] if any(t.move_to_object or t.turn_to_object for t in s.ticks.steps)]
+    assert aimed and not any(of_kind(s, "targets") for s in aimed)
+    assert not oracle.select(kinds={"doors"})
+    # named together, each record is counted once; the kinds that need more features take theirs first
+    both = oracle.select(kinds={"motion", "targets"})
+    assert len(both) == len(set(both)) and len(oracle.select(n=4, seed=0, kinds={"motion", "targets"})) == 4
+
+
+def test_check_of_a_tick_policy_kind_the_corpus_lacks_says_so_in_one_line(tmp_path, capsys, no_ace):
+    from acconform.cli import main
+
+    _tick_policy_corpus(tmp_path / "c")
+    assert main(["check", "--corpus", str(tmp_path / "c"), "--kinds", "doors", "-n", "5", "--no-progress"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "holds no scenes of kinds doors" in err[0], err

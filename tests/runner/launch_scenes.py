@@ -9,7 +9,8 @@ only the scenes of `--arms` when given and the first K of arm `timeout` (310 tic
 `--only ARM` draws that arm alone (`across`, which draw_launch_scene never draws, is drawn so); `--border` draws
 draw_border_scene's launches across a cell line, a landblock's edge or the world's (issue 41's
 shard ticks-0068).
-The arms are no campaign kind: a draw added to the missiles kind would move every seeded sample the tests pin.
+The missiles kind draws these arms too, as a share of its scenes (strategies/scenes.py MISSILE_WAYS); this draws them
+alone, or one arm alone.
 """
 
 from __future__ import annotations
