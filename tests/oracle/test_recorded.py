@@ -316,8 +316,11 @@ def _tick_policy_corpus(corpus):
     (filed as "ticks", as `record` files them), and two terrain scenes."""
     from strategies import sample_scenes
 
+    from .manager_scenes import scenes as manager_scenes
+
     drawn = {kind: list(sample_scenes((kind,), 11 if kind == "motion" else 3, 11))
              for kind in ("motion", "movers", "missiles", "targets")}
+    drawn["motion"] += [manager_scenes()[name] for name in ("sticky_move_to_a_static", "turn_to_a_static")]  # aimed at a static
     _written(corpus, [s for ss in drawn.values() for s in ss] + list(PROBE.values())[:2])
     return drawn
 
