@@ -5,7 +5,7 @@
 Draws N scenes of the campaign kind targets (`scenes_of("targets")`, strategies.fast_draw from SEED, as
 `acconform record --kinds targets` draws them) and keeps those whose name says they aim at the mover itself
 (`self_move_to_object`, `self_turn_to_object`, `self_stick`, `self_first`), turn at a destroyed target
-(`turn_at_gone`) or chase without a motion table (`tableless_*`) (strategies/motion.py LATER_AIMS,
+(`turn_at_gone`), chase without a motion table (`tableless_*`) or switch to a second target (`switch`) (strategies/motion.py LATER_AIMS,
 TABLELESS_CHASES); writes them as JSON lines for `acconform record` (docs/corpus-coverage.md, stop 51).
 """
 
@@ -16,7 +16,7 @@ import json
 import re
 import sys
 
-AIMS = re.compile(r":(self_move_to_object|self_turn_to_object|self_stick|self_first|turn_at_gone|tableless_\w+)")
+AIMS = re.compile(r":(self_move_to_object|self_turn_to_object|self_stick|self_first|turn_at_gone|tableless_\w+|switch)@?")
 
 
 def main(argv) -> int:

@@ -692,6 +692,7 @@ def draw_managed_chase(draw, clock) -> Scene:
         else:
             row["turn_to_heading"] = MoveToInput(_params(draw))
         tags.append(f"{kind}@{at}")
+    stuck_gone = None  # the tick of the stick_to at the gone target
     if gone < n - 1 and draw(STICK_AFTER_GONE):
         # a melee swing's stick_to at the target the server has destroyed (the swing's AttackTarget outlives it):
         # stick_to_object makes the PositionManager, finds no object and returns, so the mover keeps a
@@ -699,6 +700,7 @@ def draw_managed_chase(draw, clock) -> Scene:
         at = draw(st.integers(gone + 1, n - 1))
         tl.mover[at]["stick_to"] = target.id
         tags.append(f"stick_gone@{at}")
+        stuck_gone = at
     skills = draw_skills(draw)
     name = f"targets:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
     scene = _finish(draw, start, dts, tl, world.landblocks, mover, (target,), (), name, ethereal=False)
@@ -721,7 +723,20 @@ def draw_managed_chase(draw, clock) -> Scene:
     else:
         scene = scene.replace(mover=replace(m, motion_table=table, skills=skills,
                                             transient_state=m.transient_state | int(TransientState.Active)))
-    return _aim_at_self_or_gone(scene, target.id, gone, no_table, pick)
+    scene = _aim_at_self_or_gone(scene, target.id, gone, no_table, pick)
+    if stuck_gone is not None and stuck_gone < n - 1 and (pick >> 28) % 2 == 0:
+        # the next target (a monster's new AttackTarget after the first died): a second mover standing opposite
+        # the first, and a MoveToObject at it after the stick at the gone one, whose voyeur update reaches a
+        # PositionManager without a StickyManager (picked by the name, not drawn)
+        (bx, by, _), (tx, ty, _) = scene.mover.begin.frame.origin, target.begin.frame.origin
+        second = replace(target, id=ids.take(weenie), begin=world.position(2 * bx - tx, 2 * by - ty))
+        steps = list(scene.ticks.steps)
+        at = stuck_gone + 1 + (pick >> 29) % (n - 1 - stuck_gone)
+        if steps[at].move_to_object is None:
+            steps[at] = replace(steps[at], move_to_object=ObjectMoveInput(second.id, _params_of_first(steps)))
+            scene = scene.replace(others=scene.others + (second,), ticks=replace(scene.ticks, steps=tuple(steps)),
+                                  name=scene.name + f":switch@{at}")
+    return scene
 
 
 # a mover without a motion table (a creature whose weenie has no MotionTableId) that the server sends after its target

@@ -165,7 +165,7 @@ def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_ot
 
     for sc in chase_scenes:
         validate_scene(sc)
-        assert len(sc.others) == 1 and "objects.targets" in scene_features(sc), sc.name
+        assert len(sc.others) == 1 + (":switch@" in sc.name) and "objects.targets" in scene_features(sc), sc.name
         first = sc.ticks.steps[0]
         if first.turn_to_heading is not None:  # wrap_turn: a turn in place first, then the target from tick 1
             assert ":wrap_turn" in sc.name and sc.mover.begin.frame.orientation == (1.0, 0.0, 0.0, 0.0), sc.name
@@ -201,7 +201,8 @@ def test_chase_scenes_draw_every_goal_target_walk_and_a_destroyed_target(chase_s
         gone = next((i for i, s in enumerate(sc.ticks.steps) if any(o.destroy for o in s.others)), None)
         if gone is not None:  # but the mover's own aims, and a TurnToObject at the gone target (turn_at_gone)
             after = [m for s in sc.ticks.steps[gone:] for m in (s.move_to_object, s.turn_to_object) if m is not None]
-            assert all(m.object == MOVER_ID for m in after) or ":turn_at_gone@" in sc.name, sc.name
+            others = {MOVER_ID} | {o.id for o in sc.others[1:]}  # itself, or the next target (switch)
+            assert all(m.object in others for m in after) or ":turn_at_gone@" in sc.name, sc.name
             sticks = [i for i, s in enumerate(sc.ticks.steps) if i >= gone and s.stick_to not in (None, MOVER_ID)]
             assert all(i > gone and f"+stick_gone@{i}:" in sc.name for i in sticks), sc.name
 
