@@ -52,8 +52,8 @@ from .numerics import RUNTIMES
 from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
-from .staging import MOVER_ID
 from .scene import DEFAULT_SKILLS, PROJECTILE_WEENIES, WEENIE_CLASSES, ChildOf, ContactPlane, Launch, MoverSkills, Placement, Position, Scene, mover_start_json
+from .staging import MOVER_ID
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
