@@ -53,6 +53,7 @@ from .oracle import DEFAULT_RUNTIME
 from .oracle.recorded import RecordedText, geometry_kind
 from .outcome import Outcome
 from .scene import DEFAULT_SKILLS, PROJECTILE_WEENIES, WEENIE_CLASSES, ChildOf, ContactPlane, Launch, MoverSkills, Placement, Position, Scene, mover_start_json
+from .staging import MOVER_ID
 
 PROTOCOL = "acconform.protocol/1"
 KINDS: tuple[str, ...] = ("terrain", "bsp", "obstacles", "indoor", "buildings")
@@ -144,12 +145,12 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                          "tick; the tick inputs others[].unparent (unset_parent) and others[].parent "
                          "(SetPlacementFrame, set_parent: held anew); needs objects.moving too"),
     "objects.targets": (lambda s: s.ticks is not None and any(
-                            step.stick_to is not None or any(o.destroy for o in step.others) or any(t is not None and t.object in {o.id for o in s.others}
+                            step.stick_to is not None or any(o.destroy for o in step.others) or any(t is not None and t.object in {o.id for o in s.others} | {MOVER_ID}
                                                              for t in (step.move_to_object, step.turn_to_object))
                             for step in s.ticks.steps),
                         "the tick input stick_to (scene/8: a melee swing's PhysicsObj.stick_to_object(the target's id), "
                         "Monster_Melee / Player_Melee) or a move_to_object or turn_to_object whose target is another "
-                        "mover (its id among others'), found as the server finds a creature or player "
+                        "mover (its id among others') or the mover itself, found as the server finds a creature or player "
                         "(ServerObjectManager, set_object_guid): a MoveTo, a sticky follow or a turn at a moving target, "
                         "TargetManager's voyeur updates between the two PhysicsObjs; and another mover destroyed at a tick "
                         "(scene/8 ticks.steps[].others[].destroy: WorldObject.Destroy's PhysicsObj.DestroyObject)"),

@@ -1770,25 +1770,37 @@ def check_consistency(scene: Scene, path: str = "") -> None:
         # or another mover that enters the world (feature objects.targets): its WorldObject's PhysicsObj is filed
         # under its id too (set_object_guid), and it moves, as the creature or player a server's MoveToObject chases
         movers = {o.id for o in scene.others if o.begin is not None and o.parent is None and o.launch is None}
+        if movers:
+            # or the mover itself (feature objects.targets): set_object_guid filed it too, and ACE's server aims at it
+            # when a client names its own guid (Player_Melee's targeted attack: a swing's stick_to_object at itself; a
+            # spell at its own wielded item: CreateTurnToChain2's TurnToObject at target.Wielder)
+            from .staging import MOVER_ID
+
+            movers.add(MOVER_ID)
         for i, step in enumerate(scene.ticks.steps):
             for name in MOTION_INPUTS:
+                # but MoveToObject and TurnToObject, which make the MovementManager themselves when there is none
+                # (a creature whose weenie has no MotionTableId), at another mover (feature objects.targets)
+                if name in ("move_to_object", "turn_to_object") and movers:
+                    continue
                 if getattr(step, name) is not None and scene.mover.motion_table is None and (
                         name not in TABLELESS_INPUTS or name == "stop" and step.stop == "move_to_manager_cancel"):
                     raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}"), "this motion input needs the mover's "
                                        "motion_table (the player's MotionTableId: without one it has no "
                                        "MovementManager; only motion, do_motion, stop_motion and the stops "
-                                       "stop_completely and cancel_moveto are asked of a mover without one)")
+                                       "stop_completely and cancel_moveto are asked of a mover without one, and "
+                                       "move_to_object and turn_to_object in a scene with other movers)")
             for name in ("move_to_object", "turn_to_object"):
                 target = getattr(step, name)
                 if target is not None and target.object not in statics and target.object not in movers:
                     raise InvalidScene(_p(path, f"ticks.steps[{i}].{name}.object"),
                                        f"no outdoor static object or other mover in the world has id "
                                        f"{write_id(target.object)} (the target is one of the scene's objects outside "
-                                       "EnvCells, or one of its others with a begin, named by its id)")
+                                       "EnvCells, or one of its others with a begin, or the mover, named by its id)")
             if step.stick_to is not None and step.stick_to not in statics and step.stick_to not in movers:
                 raise InvalidScene(_p(path, f"ticks.steps[{i}].stick_to"),
                                    f"no outdoor static object or other mover in the world has id {write_id(step.stick_to)} "
-                                   "(the melee swing's target, named by its id)")
+                                   "(the melee swing's target, or the mover, named by its id)")
             if step.door is not None and step.door.object not in statics:
                 raise InvalidScene(_p(path, f"ticks.steps[{i}].door.object"),
                                    f"no outdoor static object has id {write_id(step.door.object)} (the door is one of "

@@ -715,11 +715,9 @@ def motion_tick_state(mover: PhysicsObj) -> MotionTickState:
 
 @harness("reads a PhysicsObj's CollisionTable after a tick, as the oracle's facade does")
 def collision_states(obj: PhysicsObj) -> tuple[CollisionState, ...]:
-    """Its records in the table's order (none: no table yet, as ACE's CollisionTable starts null)."""
-    table = obj.collision_table
-    if table is None:
-        return ()
-    return tuple(CollisionState(int(key), float(record.touched_time), bool(record.ethereal)) for key, record in table.items())
+    """Its records in the table's order (ACE's PhysicsObj constructor makes the table and nothing sets it to null)."""
+    return tuple(CollisionState(int(key), float(record.touched_time), bool(record.ethereal))
+                 for key, record in obj.collision_table.items())
 
 
 @harness("reads the mover's PhysicsObj after a tick, as the oracle's facade does")

@@ -699,6 +699,7 @@ def draw_managed_chase(draw, clock) -> Scene:
         else:
             row["turn_to_heading"] = MoveToInput(_params(draw))
         tags.append(f"{kind}@{at}")
+    stuck_gone = None  # the tick of the stick_to at the gone target
     if gone < n - 1 and draw(STICK_AFTER_GONE):
         # a melee swing's stick_to at the target the server has destroyed (the swing's AttackTarget outlives it):
         # stick_to_object makes the PositionManager, finds no object and returns, so the mover keeps a
@@ -706,6 +707,7 @@ def draw_managed_chase(draw, clock) -> Scene:
         at = draw(st.integers(gone + 1, n - 1))
         tl.mover[at]["stick_to"] = target.id
         tags.append(f"stick_gone@{at}")
+        stuck_gone = at
     skills = draw_skills(draw)
     name = f"targets:{weenie}:{moves}:gap{gap:g}:{'+'.join(tags)}:{tlabel}:{clabel}"
     scene = _finish(draw, start, dts, tl, world.landblocks, mover, (target,), (), name, ethereal=False)
@@ -723,9 +725,92 @@ def draw_managed_chase(draw, clock) -> Scene:
                               name=scene.name + f":request_pos{speed:g}")
     m = scene.mover
     if no_table:
-        return scene.replace(mover=replace(m, transient_state=m.transient_state | int(TransientState.Active)))
-    return scene.replace(mover=replace(m, motion_table=table, skills=skills,
-                                       transient_state=m.transient_state | int(TransientState.Active)))
+        scene = scene.replace(mover=replace(m, transient_state=m.transient_state | int(TransientState.Active)))
+        scene = _chase_without_table(scene, target.id, pick)
+    else:
+        scene = scene.replace(mover=replace(m, motion_table=table, skills=skills,
+                                            transient_state=m.transient_state | int(TransientState.Active)))
+    scene = _aim_at_self_or_gone(scene, target.id, gone, no_table, pick)
+    if stuck_gone is not None and stuck_gone < n - 1 and (pick >> 28) % 2 == 0:
+        # the next target (a monster's new AttackTarget after the first died): a second mover standing opposite
+        # the first, and a MoveToObject at it after the stick at the gone one, whose voyeur update reaches a
+        # PositionManager without a StickyManager (picked by the name, not drawn)
+        (bx, by, _), (tx, ty, _) = scene.mover.begin.frame.origin, target.begin.frame.origin
+        second = replace(target, id=ids.take(weenie), begin=world.position(2 * bx - tx, 2 * by - ty))
+        steps = list(scene.ticks.steps)
+        at = stuck_gone + 1 + (pick >> 29) % (n - 1 - stuck_gone)
+        if steps[at].move_to_object is None:
+            steps[at] = replace(steps[at], move_to_object=ObjectMoveInput(second.id, _params_of_first(steps)))
+            scene = scene.replace(others=scene.others + (second,), ticks=replace(scene.ticks, steps=tuple(steps)),
+                                  name=scene.name + f":switch@{at}")
+    return scene
+
+
+# a mover without a motion table (a creature whose weenie has no MotionTableId) that the server sends after its target
+# first: MoveToObject / TurnToObject make the MovementManager themselves (ACE's "refactor into common method" block)
+# and clear Active, so the swing's stick_to after makes a PositionManager that sets Active and UpdateTime again
+TABLELESS_CHASES = (None, "move_to_object", "turn_to_object")
+
+
+def _chase_without_table(scene: Scene, target_id: int, pick: int) -> Scene:
+    how = TABLELESS_CHASES[(pick >> 24) % len(TABLELESS_CHASES)]
+    steps = list(scene.ticks.steps)
+    if how is None or getattr(steps[0], how) is not None:
+        return scene
+    steps[0] = replace(steps[0], **{how: ObjectMoveInput(target_id, MovementParams())})
+    return scene.replace(ticks=replace(scene.ticks, steps=tuple(steps)), name=scene.name + f":tableless_{how}")
+
+
+# a later aim of the chase, picked by the scene's drawn name (not drawn: a draw would shift every later scene of a
+# seeded sample): at the mover itself -- a MoveToObject, a TurnToObject (ACE's CreateTurnToChain2 at a spell's
+# target.Wielder, the caster's own wielded item) or a melee swing's stick_to (a client's targeted attack at its own
+# guid: Player_Melee finds the player, a Creature it can damage, and DoSwingMotion sticks to it) -- which
+# MoveToObject/TurnToObject end at once (PhysicsObj.ID == topLevelID: CleanUp, StopCompletely) and StickTo makes
+# the mover its own voyeur; or, of a scene whose target the server destroyed, a TurnToObject at it after (the
+# facade's GetObjectA finds none: TurnToObject(null) answers false)
+# (self_first: a MoveToObject at itself in the first tick, before the chase's turn or stick_to there, so the mover has
+# no TargetManager yet when the MoveTo's CleanUp calls clear_target)
+LATER_AIMS = (None, None, None, "self_move_to_object", "self_turn_to_object", "self_stick", "turn_at_gone", "self_first")
+
+
+def _aim_at_self_or_gone(scene: Scene, target_id: int, gone: int, no_table: bool, pick: int) -> Scene:
+    from acconform.staging import MOVER_ID
+
+    steps = list(scene.ticks.steps)
+    n = len(steps)
+    aim = LATER_AIMS[(pick >> 16) % len(LATER_AIMS)]
+    if aim is None or n < 2:
+        return scene
+    if aim == "self_first":
+        if no_table:
+            return scene
+        at, field, value = 0, "move_to_object", ObjectMoveInput(MOVER_ID, _params_of_first(steps))
+    elif aim == "turn_at_gone":
+        if gone >= n - 1 or no_table:
+            return scene
+        at = gone + 1 + (pick >> 20) % (n - 1 - gone)
+        field, value = "turn_to_object", ObjectMoveInput(target_id, _params_of_first(steps))
+    else:
+        at = 1 + (pick >> 20) % (n - 1)
+        if no_table and aim != "self_stick":
+            aim = "self_stick"  # a motion input needs the motion table
+        field = aim[len("self_"):]
+        field = "stick_to" if field == "stick" else field
+        value = MOVER_ID if field == "stick_to" else ObjectMoveInput(MOVER_ID, _params_of_first(steps))
+    if getattr(steps[at], field) is not None:
+        return scene
+    steps[at] = replace(steps[at], **{field: value})
+    return scene.replace(ticks=replace(scene.ticks, steps=tuple(steps)), name=scene.name + f":{aim}@{at}")
+
+
+def _params_of_first(steps) -> MovementParams:
+    """The parameters of the chase's first MoveToObject or TurnToObject (the server's caller builds the same), else
+    the defaults."""
+    for s in steps:
+        for move in (s.move_to_object, s.turn_to_object):
+            if move is not None:
+                return move.params
+    return MovementParams()
 
 
 # ---------------------------------------------------------------- the motion layer's rarer arms (issue 40, stop 51)

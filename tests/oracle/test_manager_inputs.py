@@ -196,6 +196,32 @@ def test_a_stick_to_at_no_object_and_an_input_to_a_destroyed_mover_are_refused(e
         Scene.from_json(doc)
 
 
+def test_the_mover_itself_is_a_target_and_a_tableless_mover_may_be_sent_after_another_mover():
+    """A client's attack at its own guid (stick_to) or the server's MoveTo/turn at the mover's id: set_object_guid
+    filed the mover too. MoveToObject and TurnToObject at another mover make their own MovementManager, so they
+    need no motion table; a MoveTo to a point still does, and a static scene's mover id is still no target."""
+    from dataclasses import replace
+
+    from acconform.motion_scene import MovementParams, ObjectMoveInput
+    from acconform.staging import MOVER_ID
+
+    scene = _follow_with(stick_at=3)
+    steps = list(scene.ticks.steps)
+    steps[5] = replace(steps[5], stick_to=MOVER_ID, turn_to_object=ObjectMoveInput(MOVER_ID, MovementParams()))
+    own = scene.replace(ticks=replace(scene.ticks, steps=tuple(steps)))
+    assert Scene.loads(own.dumps()) == own and "objects.targets" in scene_features(own)
+    tableless = own.replace(mover=replace(own.mover, motion_table=None))
+    assert Scene.loads(tableless.dumps()) == tableless
+    doc = json.loads(tableless.dumps())
+    doc["ticks"]["steps"][6]["move_to"] = {"position": doc["mover"]["begin"]}
+    with pytest.raises(InvalidScene, match=r"steps\[6\]\.move_to.*needs the mover's motion_table"):
+        Scene.from_json(doc)
+    doc = _doc("sticky_move_to_a_static")
+    doc["ticks"]["steps"][0]["move_to_object"]["object"] = f"0x{MOVER_ID:08X}"
+    with pytest.raises(InvalidScene, match=r"steps\[0\]\.move_to_object\.object"):
+        Scene.from_json(doc)
+
+
 def test_the_port_stops_stepping_a_destroyed_target_and_the_follower_lets_go_of_it():
     from acconform.port.run import run_scene
 

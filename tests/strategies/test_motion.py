@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import re
 from collections import Counter
 
 import pytest
 
 from acconform.motion_enums import HoldKey, MotionCommand as MC
 from acconform.port.run import run_scene
+from acconform.protocol import scene_features
 from acconform.scene import validate_scene
+from acconform.staging import MOVER_ID
 from acconform.strategies import sample_scenes
 from acconform.strategies import ticks as tk
 
@@ -162,7 +165,9 @@ def test_a_targets_scene_needs_objects_targets_and_runs_in_either_engine_mode():
 
     with pinned_constants():
         drawer = FastDrawer(scenes_of("targets"), 7)
-        drawn = [drawer.draw()[0] for _ in range(20)]
+        drawn = []
+        while len(drawn) < 200 and (len(drawn) < 20 or len({sc.engine_mode for sc in drawn}) < 2):
+            drawn.append(drawer.draw()[0])  # a few in ten are in client mode: draw until both modes are seen
     assert all("objects.targets" in scene_features(sc) for sc in drawn)
     assert {sc.engine_mode for sc in drawn} == {"server", "client"}
 
@@ -172,16 +177,17 @@ def test_every_chase_scene_validates_and_aims_the_servers_calls_at_its_moving_ot
 
     for sc in chase_scenes:
         validate_scene(sc)
-        assert len(sc.others) == 1 and "objects.targets" in scene_features(sc), sc.name
+        assert len(sc.others) == 1 + (":switch@" in sc.name) and "objects.targets" in scene_features(sc), sc.name
         first = sc.ticks.steps[0]
         if first.turn_to_heading is not None:  # wrap_turn: a turn in place first, then the target from tick 1
             assert ":wrap_turn" in sc.name and sc.mover.begin.frame.orientation == (1.0, 0.0, 0.0, 0.0), sc.name
             first = sc.ticks.steps[1]
-            if first.move_to_object is None:
+            if first.move_to_object is None or first.move_to_object.object == MOVER_ID:
                 assert any(o.destroy for o in first.others), sc.name
                 continue
-        target = first.stick_to if first.stick_to is not None else (first.move_to_object or first.turn_to_object).object
-        assert target == sc.others[0].id, sc.name
+        aims = [first.stick_to] + [m.object for m in (first.move_to_object, first.turn_to_object) if m is not None]
+        assert sc.others[0].id in aims, sc.name
+        assert set(aims) - {None, sc.others[0].id} <= {MOVER_ID}, sc.name  # self_first: a MoveTo at itself before
 
 
 def test_some_chase_scenes_take_the_legacy_player_path_always_in_server_mode(chase_scenes):
@@ -205,10 +211,45 @@ def test_chase_scenes_draw_every_goal_target_walk_and_a_destroyed_target(chase_s
     assert "+stick_gone@" in names
     for sc in chase_scenes:
         gone = next((i for i, s in enumerate(sc.ticks.steps) if any(o.destroy for o in s.others)), None)
-        if gone is not None:
-            assert all(s.move_to_object is None and s.turn_to_object is None for s in sc.ticks.steps[gone:]), sc.name
-            sticks = [i for i, s in enumerate(sc.ticks.steps) if i >= gone and s.stick_to is not None]
+        if gone is not None:  # but the mover's own aims, and a TurnToObject at the gone target (turn_at_gone)
+            after = [m for s in sc.ticks.steps[gone:] for m in (s.move_to_object, s.turn_to_object) if m is not None]
+            others = {MOVER_ID} | {o.id for o in sc.others[1:]}  # itself, or the next target (switch)
+            assert all(m.object in others for m in after) or ":turn_at_gone@" in sc.name, sc.name
+            sticks = [i for i, s in enumerate(sc.ticks.steps) if i >= gone and s.stick_to not in (None, MOVER_ID)]
             assert all(i > gone and f"+stick_gone@{i}:" in sc.name for i in sticks), sc.name
+
+
+def test_some_chase_scenes_aim_at_the_mover_itself_at_their_gone_target_or_chase_without_a_motion_table(chase_scenes):
+    """The later aims picked by the scene's name (LATER_AIMS): a MoveToObject, a TurnToObject or a stick_to at the
+    mover's own id, a TurnToObject at a target the server destroyed; and a tableless mover's MoveTo or turn first."""
+    names = " ".join(sc.name for sc in chase_scenes)
+    for part in (":self_move_to_object@", ":self_turn_to_object@", ":self_stick@", ":tableless_"):
+        assert part in names, part
+    for sc in chase_scenes:
+        own = [s for s in sc.ticks.steps if MOVER_ID in (s.stick_to, *(m.object for m in (s.move_to_object, s.turn_to_object) if m))]
+        assert bool(own) == bool(re.search(r":self_(move_to_object|turn_to_object|stick|first)@", sc.name)), sc.name
+        if ":tableless_" in sc.name:
+            assert sc.mover.motion_table is None and "objects.targets" in scene_features(sc), sc.name
+
+
+def test_the_port_takes_the_managers_arms_of_an_aim_at_itself_and_of_a_tableless_chase(chase_scenes):
+    """A MoveTo or turn at the mover itself ends at once (MoveToObject's CleanUp, no set_target); a tableless mover's
+    MoveToObject makes its MovementManager (ACE's common block), which clears Active."""
+    import dataclasses
+
+    from acconform.motion_scene import MovementParams, ObjectMoveInput
+
+    sc = next(sc for sc in chase_scenes if sc.mover.motion_table is not None and sc.ticks.driver == "update_object"
+              and len(sc.ticks.steps) >= 3)
+    steps = list(sc.ticks.steps)
+    steps[1] = dataclasses.replace(steps[1], move_to_object=ObjectMoveInput(MOVER_ID, MovementParams()),
+                                   turn_to_object=None, stop=None)
+    ticks = run_scene(sc.replace(ticks=dataclasses.replace(sc.ticks, steps=tuple(steps)))).ticks
+    assert not any(t.error for t in ticks) and not ticks[1].motion.is_moving_to
+    tableless = next(sc for sc in chase_scenes if ":tableless_" in sc.name)
+    validate_scene(tableless)
+    out = run_scene(tableless)
+    assert out.error is None and len(out.ticks) == len(tableless.ticks.steps)
 
 
 def test_the_port_runs_chase_scenes_and_a_sticky_follower_moves(chase_scenes):
