@@ -10,14 +10,14 @@ from __future__ import annotations
 import struct
 from dataclasses import fields, replace
 
-from ..outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome,
-                       PlacementState, PlaneState, TickState)
+from ..outcome import (AttackFrameState, CollisionState, CommandState, ContactPlaneState, MotionAnswerState,
+                       MotionTickState, NormalState, Outcome, PlacementState, PlaneState, TickState)
 from ..dat import cell_landblock, has_objects, scene_records
 from ..motion_scene import MOTION_TABLE_ID, STOPS
-from ..scene import SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
+from ..scene import MOTION_QUERY_FUNCTIONS, SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 16
+PACK_VERSION = 17
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -219,7 +219,17 @@ def pack_scene(scene: Scene) -> bytes:
                                 1 if la.alt_solver else 0, la.rotation_speed,
                                 SPELL_KINDS.index(la.spell)))
         out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
+    out.append(_I32.pack(len(scene.motion_queries)))
+    for q in scene.motion_queries:
+        out.append(_QUERY.pack(MOTION_QUERY_FUNCTIONS.index(q.function), q.stance, q.motion, q.current_motion or 0,
+                               0 if q.current_motion is None else 1, 1.0 if q.speed is None else q.speed))
     return b"".join(out)
+
+
+# pack 17, after the others: int n, then per motion query (scene/8 motion_queries) its function (byte: its index in
+# acconform.scene.MOTION_QUERY_FUNCTIONS), stance, motion, current motion (uint; 0 when none), whether the current
+# motion is given (byte), the speed (float; 1.0f, C#'s default, when the scene gives none)
+_QUERY = struct.Struct("<BIIIBf")
 
 
 def _frozen_maker(cls, params: str | None = None, values: dict | None = None, names: dict | None = None):
@@ -390,6 +400,10 @@ _other_tick = _tick_maker(_OTHER_AT)
 
 
 def _ticks_at(data, pos: int):
+    return _ticks_and_end(data, pos)[0]
+
+
+def _ticks_and_end(data, pos: int):
     """int n (-1: not a tick scene), then per tick byte 0 and its state, or byte 1, int length and the error
     message (the last tick: an error ends the scene). A state is its fields (`_STATE`), then byte 0, or byte 1
     (a scene with other movers), its CollisionTable, int n and per other mover its id, state and CollisionTable.
@@ -397,7 +411,7 @@ def _ticks_at(data, pos: int):
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
     if n < 0:
-        return None
+        return None, pos
     out = []
     for _ in range(n):
         if data[pos] not in (0, b"\0"):
@@ -432,6 +446,42 @@ def _ticks_at(data, pos: int):
                 table, pos = _collisions_at(data, pos - 4)
             others.append(_other_tick(w, j, _parts.get(w[16]) or _plane(w[16]), None, table, None, w[0]))
         out.append(_mover_tick(v, m, plane, motion, collisions, tuple(others), None))
+    return tuple(out), pos
+
+
+_ATTACK = struct.Struct("<fiI6f")
+
+
+def _answers_at(data, pos: int):
+    """int n (-1: no queries asked), then per motion query its answer (Facade.AskMotionQueries): byte 0 and a float,
+    byte 1, int n and n attack frames (time, Direction, PartIndex, LeftX, LeftY, RightX, RightY, Radius, Height), or
+    byte 0xEE, int length and the error message."""
+    (n,) = _I32.unpack_from(data, pos)
+    pos += 4
+    if n < 0:
+        return None
+    out = []
+    for _ in range(n):
+        tag = data[pos]
+        if type(tag) is bytes:  # a ctypes char array's item (the live oracle's output array)
+            tag = tag[0]
+        pos += 1
+        if tag == 0:
+            (v,) = _f.unpack_from(data, pos)
+            pos += 4
+            out.append(MotionAnswerState(value=v))
+        elif tag == 1:
+            (k,) = _I32.unpack_from(data, pos)
+            pos += 4
+            frames = []
+            for _ in range(k):
+                frames.append(AttackFrameState(*_ATTACK.unpack_from(data, pos)))
+                pos += _ATTACK.size
+            out.append(MotionAnswerState(attack_frames=tuple(frames)))
+        else:
+            (k,) = _I32.unpack_from(data, pos)
+            out.append(MotionAnswerState(error=bytes(data[pos + 4:pos + 4 + k]).decode("utf-8", "replace")))
+            pos += 4 + k
     return tuple(out)
 
 
@@ -495,7 +545,9 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         cells, at = _static_cells(data, at + _AFTER.size)
         placement, at = _placement_at(data, at)
         others, at = _other_placements_at(data, at)
-        return (Outcome(static_cells=cells, placement=placement, ticks=_ticks_at(data, at), other_placements=others),
+        ticks, at = _ticks_and_end(data, at)
+        return (Outcome(static_cells=cells, placement=placement, ticks=ticks, other_placements=others,
+                        motion_answers=_answers_at(data, at)),
                 us, case_us, (built, reused, build_us, trans_us))
     if tag == 2 or tag == b"\x02":
         _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)
@@ -517,5 +569,5 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
     others, _ = _other_placements_at(data, at)
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
                           bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None,
-                          cells, placement, None, others),
+                          cells, placement, None, others, None),
             v[42], v[43], (v[44], v[45], v[46], v[47]))
