@@ -132,20 +132,22 @@ def _other_inputs(step, index: dict) -> list[bytes]:
     return out
 
 
-def _ticks(ticks: Ticks | None, others=()) -> bytes:
-    """byte 0 (not a tick scene), or 1, the driver (its index in scene.DRIVERS), the start clock (double), the
+def _ticks(ticks: Ticks | None, others=(), queries=()) -> bytes:
+    """byte 0 (not a tick scene), or 1 (2: with motion queries, `_queries` after the steps), the driver (its index in scene.DRIVERS), the start clock (double), the
     number of steps, and per step: its absolute clock value from `Ticks.times()` (double, computed once by the
     record), a mask of the inputs present (bit i: TICK_INPUTS[i]) and their values in that order, then the other
     movers' inputs (`_other_inputs`; `others`: the scene's)."""
     if ticks is None:
         return b"\0"
     index = {o.id: k for k, o in enumerate(others)}
-    out = [_TICKS_HEAD.pack(1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
+    out = [_TICKS_HEAD.pack(2 if queries else 1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
     for step, time in zip(ticks.steps, ticks.times()):
         mask, values = _tick_inputs(step)
         out.append(_STEP_HEAD.pack(time, mask))
         out += values
         out += _other_inputs(step, index) if step.others else (_NO_OTHERS,)
+    if queries:  # byte 2 above: the scene's motion_queries (scene/8) after the steps
+        out += _queries(queries)
     return b"".join(out)
 
 
@@ -179,7 +181,7 @@ _LAUNCH = struct.Struct("<BiIIf3f4fBBBBfB")
 
 def pack_scene(scene: Scene) -> bytes:
     out = [_HEAD.pack(PACK_VERSION, 1 if scene.engine_mode == "server" else 0),
-           _ticks(scene.ticks, scene.others),
+           _ticks(scene.ticks, scene.others, scene.motion_queries),
            _table_bytes(scene.land_height_table),
            struct.pack("<i", len(scene.landblocks))]
     for lb in scene.landblocks:
@@ -219,14 +221,19 @@ def pack_scene(scene: Scene) -> bytes:
                                 1 if la.alt_solver else 0, la.rotation_speed,
                                 SPELL_KINDS.index(la.spell)))
         out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
-    out.append(_I32.pack(len(scene.motion_queries)))
-    for q in scene.motion_queries:
-        out.append(_QUERY.pack(MOTION_QUERY_FUNCTIONS.index(q.function), q.stance, q.motion, q.current_motion or 0,
-                               0 if q.current_motion is None else 1, 1.0 if q.speed is None else q.speed))
     return b"".join(out)
 
 
-# pack 17, after the others: int n, then per motion query (scene/8 motion_queries) its function (byte: its index in
+def _queries(queries) -> list[bytes]:
+    """int n, then per motion query its function, stance, motion, current motion, whether that is given, speed."""
+    out = [_I32.pack(len(queries))]
+    for q in queries:
+        out.append(_QUERY.pack(MOTION_QUERY_FUNCTIONS.index(q.function), q.stance, q.motion, q.current_motion or 0,
+                               0 if q.current_motion is None else 1, 1.0 if q.speed is None else q.speed))
+    return out
+
+
+# pack 17, a tick scene's first byte 2 instead of 1, and after its steps: int n, then per motion query (scene/8 motion_queries) its function (byte: its index in
 # acconform.scene.MOTION_QUERY_FUNCTIONS), stance, motion, current motion (uint; 0 when none), whether the current
 # motion is given (byte), the speed (float; 1.0f, C#'s default, when the scene gives none)
 _QUERY = struct.Struct("<BIIIBf")
@@ -503,7 +510,7 @@ def _other_placements_at(data, pos: int):
 
 _NO_TRANSITION = struct.Struct("<B3fd")  # tag 2 (placed in no cell): the mover's velocity, FVP time 0
 _AFTER = struct.Struct("<diidd")  # the whole case, then the counters
-_TICK_SCENE = struct.Struct("<Bd")  # tag 3 (a tick scene: no single transition): FVP time 0
+_TICK_SCENE = struct.Struct("<Bd")  # tag 3 (a tick scene: no single transition; 4: with motion answers): FVP time 0
 
 
 _RAW = struct.Struct("<38x22s22s13s13s")  # the same four records' bytes: exact (bitwise) cache keys
@@ -538,7 +545,7 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         msg = bytes(data[offset + 5:offset + 5 + n]).decode("utf-8", "replace")
         us, case_us, built, reused, build_us, trans_us = _TAIL.unpack_from(data, offset + 5 + n)
         return Outcome(error=msg), us, case_us, (built, reused, build_us, trans_us)
-    if tag == 3 or tag == b"\x03":
+    if tag in (3, 4, b"\x03", b"\x04"):  # 4: the motion queries' answers after the ticks
         _tag, us = _TICK_SCENE.unpack_from(data, offset)
         at = offset + _TICK_SCENE.size
         case_us, built, reused, build_us, trans_us = _AFTER.unpack_from(data, at)
@@ -546,8 +553,9 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         placement, at = _placement_at(data, at)
         others, at = _other_placements_at(data, at)
         ticks, at = _ticks_and_end(data, at)
+        answers = _answers_at(data, at) if tag in (4, b"\x04") else None
         return (Outcome(static_cells=cells, placement=placement, ticks=ticks, other_placements=others,
-                        motion_answers=_answers_at(data, at)),
+                        motion_answers=answers),
                 us, case_us, (built, reused, build_us, trans_us))
     if tag == 2 or tag == b"\x02":
         _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)

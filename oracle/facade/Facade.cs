@@ -338,7 +338,6 @@ namespace Acconform.Oracle
             try
             {
                 var mover = BuildScene(r);
-                ReadMotionQueries(r);
                 var obj = mover.Item1;
                 var oldPos = mover.Item2;
                 if (hasPlacement)
@@ -354,7 +353,7 @@ namespace Acconform.Oracle
                     locationCell = obj.Position.ObjCellID;  // where it entered: its Location (SyncLocation)
                     RunTicks(obj);
                     AskMotionQueries();
-                    w.Write((byte)3);
+                    w.Write((byte)(answersRun >= 0 ? 4 : 3));  // 4: the motion queries' answers after the ticks
                     w.Write(0.0);
                 }
                 else if (!hasPlacement || obj.CurCell != null)
@@ -395,9 +394,11 @@ namespace Acconform.Oracle
             WriteOtherPlacements(w, errored);
             w.Write(ticksRun);
             if (ticksRun > 0) w.Write(tickStream.GetBuffer(), 0, (int)tickStream.Length);
-            if (errored) answersRun = -1;
-            w.Write(answersRun);
-            if (answersRun > 0) w.Write(answerStream.GetBuffer(), 0, (int)answerStream.Length);
+            if (!errored && answersRun >= 0)
+            {
+                w.Write(answersRun);
+                w.Write(answerStream.GetBuffer(), 0, (int)answerStream.Length);
+            }
         }
 
         // ------------------------------------------------------------------ motion queries (scene/8 motion_queries)
@@ -407,9 +408,6 @@ namespace Acconform.Oracle
         /// the current motion is given (byte), the speed (float).</summary>
         static void ReadMotionQueries(BinaryReader r)
         {
-            motionQueries.Clear();
-            answersRun = -1;
-            answerStream.SetLength(0);
             var n = r.ReadInt32();
             for (var i = 0; i < n; i++)
             {
@@ -520,13 +518,17 @@ namespace Acconform.Oracle
             setPortalYearTicks(t);
         }
 
-        /// <summary>byte 0: not a tick scene; or 1, the driver byte, the start (double), int n and per step: its
+        /// <summary>byte 0: not a tick scene; or 1 (2: then the motion queries after the steps, ReadMotionQueries), the driver byte, the start (double), int n and per step: its
         /// absolute clock (double), the input mask, then the present inputs in TICK_INPUTS order.</summary>
         static void ReadTicks(BinaryReader r)
         {
             tickSteps.Clear();
             moverMotion = false;  // until the mover is made with a motion table
-            hasTicks = r.ReadByte() != 0;
+            motionQueries.Clear();
+            answersRun = -1;
+            answerStream.SetLength(0);
+            var ticksTag = r.ReadByte();  // 0 no ticks, 1 ticks, 2 ticks and then the motion queries (pack 17)
+            hasTicks = ticksTag != 0;
             if (!hasTicks) return;
             tickDriver = r.ReadByte();
             tickStart = r.ReadDouble();
@@ -594,6 +596,7 @@ namespace Acconform.Oracle
                 }
                 tickSteps.Add(s);
             }
+            if (ticksTag == 2) ReadMotionQueries(r);
         }
 
         /// <summary>Per step: the inputs (the mover's, then each other mover's in the step's order; the clock still at
