@@ -39,6 +39,9 @@ mover's fields, its `collisions` (the mover's CollisionTable: the objects it tou
 .NET Dictionary order, with each record's TouchedTime and Ethereal) and `others` (each other mover's
 `TickState`, with its own `collisions`, named by its id, in `others` order). Scenes without other
 movers are written as before.
+
+A scene with ``motion_queries`` (scene/8) is answered as ``/6`` too: `motion_answers` holds each query's answer, in
+order (a `MotionAnswerState`: a float32 `value`, GetAttackFrames' `attack_frames` or an `error`).
 """
 
 from __future__ import annotations

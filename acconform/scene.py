@@ -1670,7 +1670,7 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
+        """The oldest format that holds the scene (/8 for other movers, motion queries, the mover's skills or holding locations, a
         motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
         DefaultScript or DefaultAnimation, the mover's resting frame, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
