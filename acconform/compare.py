@@ -50,6 +50,11 @@ then each other mover's state, named by its id: ``ticks[4].others[0x80000002].or
 ``ticks[4].others[0x80000002].collisions[0].id``. So the first difference names the tick, the mover
 and the field.
 
+Motion queries (scene/8 motion_queries, outcome/6 motion_answers): after the ticks, each answer by the
+query's index and field: ``motion_answers[2].value`` (a float), ``motion_answers[0].attack_frames[1].time``,
+``.part_index``; an answer list or an attack-frame list of another length is one difference naming it; an
+answer's `error` follows the rule for errors.
+
 A Difference names the field by path (``contact_plane.normal[2]``) and carries both values.
 """
 
@@ -63,8 +68,8 @@ from typing import Any
 import numpy as np
 
 from .flags import ObjectInfoState, PhysicsState, TransientState, flag_names
-from .outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome,
-                      PlacementState, PlaneState, TickState)
+from .outcome import (CollisionState, CommandState, ContactPlaneState,
+                      MotionTickState, NormalState, Outcome, PlacementState, PlaneState, TickState)
 from .numerics import f32_bits
 
 MODES = ("exact", "fast")
@@ -77,7 +82,8 @@ _FLAG_FIELDS = {"object_info_state": ObjectInfoState, "state": PhysicsState, "tr
 _VEC_FIELDS = frozenset({"origin", "orientation", "velocity", "normal", "vector", "acceleration", "omega",
                          "cached_velocity", "sliding_normal", "sequence_velocity", "sequence_omega"})
 _DOUBLE_FIELDS = frozenset({"update_time", "touched_time"})
-_FLOAT_FIELDS = frozenset({"d", "forward_speed", "side_step_speed", "turn_speed", "frame_number"})
+_FLOAT_FIELDS = frozenset({"d", "forward_speed", "side_step_speed", "turn_speed", "frame_number", "value", "time",
+                           "left_x", "left_y", "right_x", "right_y", "radius", "height"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -117,6 +123,8 @@ def _show(path: str, v) -> str:
         return f"{len(v)} ticks"
     if isinstance(v, tuple) and leaf == "collisions":
         return "[" + ", ".join(f"0x{c.id:08X}" for c in v) + "]"
+    if isinstance(v, tuple) and leaf in ("motion_answers", "attack_frames"):
+        return f"{len(v)} {'answers' if leaf == 'motion_answers' else 'attack frames'}"
     if isinstance(v, tuple) and leaf in ("others", "other_placements"):
         return f"{len(v)} other movers"
     if isinstance(v, TickState):
@@ -223,6 +231,27 @@ def _compare_others(va, vb, path: str, mode: str, out: list) -> None:
         _compare_record(oa, ob, f"{path}[0x{oa.id:08X}].", mode, out)
 
 
+def _compare_answers(va, vb, path: str, mode: str, out: list) -> None:
+    """The motion queries' answers, by index and field; an answer's value or attack frames on one side only (or an
+    attack-frame list of another length) is a difference naming it."""
+    if (va is None) != (vb is None) or (va is not None and len(va) != len(vb)):
+        out.append(Difference(path, va, vb))
+        return
+    for k, (a, b) in enumerate(zip(va or (), vb or ())):
+        at = f"{path}[{k}]"
+        if (a.error is None) != (b.error is None) or (mode == "exact" and a.error is not None and _etype(a.error) != _etype(b.error)):
+            out.append(Difference(f"{at}.error", a.error, b.error))
+            continue
+        if (a.value is None) != (b.value is None) or (a.value is not None and not float_equal(a.value, b.value, mode)):
+            out.append(Difference(f"{at}.value", a.value, b.value))
+        fa, fb = a.attack_frames, b.attack_frames
+        if (fa is None) != (fb is None) or (fa is not None and len(fa) != len(fb)):
+            out.append(Difference(f"{at}.attack_frames", fa, fb))
+            continue
+        for j, (x, y) in enumerate(zip(fa or (), fb or ())):
+            _compare_record(x, y, f"{at}.attack_frames[{j}].", mode, out)
+
+
 def _compare_placements(va, vb, path: str, mode: str, out: list) -> None:
     if (va is None) != (vb is None) or (va is not None and len(va) != len(vb)):
         out.append(Difference(path, va, vb))
@@ -231,7 +260,7 @@ def _compare_placements(va, vb, path: str, mode: str, out: list) -> None:
         _compare_record(pa, pb, f"{path}[{k}].", mode, out)
 
 
-_TICKS, _DOUBLE, _SHADOW, _PLACEMENT, _STATIC, _ERROR, _VEC, _FLOAT, _OTHER, _COLLISIONS, _OTHERS, _PLACEMENTS = range(12)
+_TICKS, _DOUBLE, _SHADOW, _PLACEMENT, _STATIC, _ERROR, _VEC, _FLOAT, _OTHER, _COLLISIONS, _OTHERS, _PLACEMENTS, _ANSWERS = range(13)
 _RECORDS = (ContactPlaneState, NormalState, PlaneState)
 _OPTIONAL_RECORDS = (MotionTickState, CommandState)  # None on a side that has none: compared when both have one
 _PLANS: dict[type, tuple] = {}  # a record type -> its fields in `_order`, each with how it is compared
@@ -251,6 +280,8 @@ def _plan(record) -> tuple:
                 return _COLLISIONS if name == "collisions" else _OTHERS
             if name == "other_placements":
                 return _PLACEMENTS
+            if name == "motion_answers":
+                return _ANSWERS
             return {"placement": _PLACEMENT, "static_cells": _STATIC, "error": _ERROR}.get(
                 name, _VEC if name in _VEC_FIELDS else _FLOAT if name in _FLOAT_FIELDS else _OTHER)
         plan = _PLANS[type(record)] = tuple((name, how(name)) for name in _order(record))
@@ -271,6 +302,8 @@ def _compare_record(a, b, prefix: str, mode: str, out: list) -> None:
             _compare_others(va, vb, path, mode, out)
         elif how == _PLACEMENTS:
             _compare_placements(va, vb, path, mode, out)
+        elif how == _ANSWERS:
+            _compare_answers(va, vb, path, mode, out)
         elif how == _DOUBLE:
             if _double_bits(va) != _double_bits(vb):
                 out.append(Difference(path, va, vb))

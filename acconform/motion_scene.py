@@ -135,7 +135,11 @@ class MotionEntry:
 # (PhysicsObj.Hook_AnimDone); ACE's server physics ignores the others (their Execute arms are the client's,
 # Ethereal's is commented out)
 HOOKS = {"AnimationDone": (4, b""), "DefaultScript": (17, b""), "Ethereal": (6, b"\x01\x00\x00\x00"),
-         "Sound": (1, b"\x00\x00\x00\x00")}  # name: (AnimationHookType, the fields' bytes)
+         "Sound": (1, b"\x00\x00\x00\x00"),
+         # scene/8 motion_queries: an AttackHook (ignored by the server's physics) for GetAttackFrames to find, with one
+         # AttackCone: PartIndex 0, Left (-0.5, 1), Right (0.5, 1), Radius 2, Height 1.5
+         "Attack": (3, bytes.fromhex("00000000" "000000bf" "0000803f" "0000003f" "0000803f" "00000040" "0000c03f"))}
+# name: (AnimationHookType, the fields' bytes)
 HOOK_DIRECTIONS = {"Backward": -1, "Both": 0, "Forward": 1}
 
 

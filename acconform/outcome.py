@@ -39,6 +39,9 @@ mover's fields, its `collisions` (the mover's CollisionTable: the objects it tou
 .NET Dictionary order, with each record's TouchedTime and Ethereal) and `others` (each other mover's
 `TickState`, with its own `collisions`, named by its id, in `others` order). Scenes without other
 movers are written as before.
+
+A scene with ``motion_queries`` (scene/8) is answered as ``/6`` too: `motion_answers` holds each query's answer, in
+order (a `MotionAnswerState`: a float32 `value`, GetAttackFrames' `attack_frames` or an `error`).
 """
 
 from __future__ import annotations
@@ -395,6 +398,66 @@ _TICK_CODECS = tuple((name, *_tick_field_codec(name)) for name in _TICK_FIELDS
 
 
 @dataclass(frozen=True, slots=True)
+class AttackFrameState:
+    """One entry of GetAttackFrames' list: the frame's time and its AttackHook."""
+
+    time: float = _field(0.0, "fraction of the animation", "the attack frame's number over the animation's frame count")
+    direction: int = _field(0, "", "the AttackHook's Direction (AnimationHookDir: -1 Backward, 0 Both, 1 Forward)")
+    part_index: int = _field(0, "", "its AttackCone.PartIndex")
+    left_x: float = _field(0.0, "m", "AttackCone.Left.X")
+    left_y: float = _field(0.0, "m", "AttackCone.Left.Y")
+    right_x: float = _field(0.0, "m", "AttackCone.Right.X")
+    right_y: float = _field(0.0, "m", "AttackCone.Right.Y")
+    radius: float = _field(0.0, "m", "AttackCone.Radius")
+    height: float = _field(0.0, "m", "AttackCone.Height")
+
+    def to_json(self):
+        return {name: (write_f32(v) if name in _ATTACK_FLOATS else v)
+                for name in _ATTACK_FIELDS for v in (getattr(self, name),)}
+
+    @staticmethod
+    def from_json(r: Reader) -> "AttackFrameState":
+        r.obj(set(_ATTACK_FIELDS))
+        return AttackFrameState(**{name: (r[name].f32(allow_nonfinite=True) if name in _ATTACK_FLOATS
+                                          else r[name].int_(-1, 1) if name == "direction" else r[name].int_(0, 0xFFFFFFFF))
+                                   for name in _ATTACK_FIELDS})
+
+
+_ATTACK_FIELDS = tuple(f.name for f in fields(AttackFrameState))
+_ATTACK_FLOATS = frozenset(_ATTACK_FIELDS) - {"direction", "part_index"}
+
+
+@dataclass(frozen=True, slots=True)
+class MotionAnswerState:
+    """The answer to one of the scene's motion_queries: a float (`value`: a length in seconds, a run speed, a turn
+    speed) or GetAttackFrames' list (`attack_frames`), or what the query threw (`error`)."""
+
+    value: float | None = _field(None, "s, m/s or rad/s", "GetAnimationLength's seconds, GetRunSpeed's metres per "
+                                 "second or GetTurnSpeed's radians per second; absent for GetAttackFrames")
+    attack_frames: tuple[AttackFrameState, ...] | None = _field(
+        None, "", "GetAttackFrames' list, in its order: each attack hook's time and fields; absent for the others")
+    error: str | None = _field(None, "", "what the query threw; absent when nothing was raised")
+
+    def to_json(self):
+        d = {}
+        if self.value is not None:
+            d["value"] = write_f32(self.value)
+        if self.attack_frames is not None:
+            d["attack_frames"] = [a.to_json() for a in self.attack_frames]
+        if self.error is not None:
+            d["error"] = self.error
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "MotionAnswerState":
+        r.obj({"value", "attack_frames", "error"})
+        return MotionAnswerState(
+            r["value"].f32(allow_nonfinite=True) if r.has("value") else None,
+            tuple(AttackFrameState.from_json(a) for a in r["attack_frames"].list()) if r.has("attack_frames") else None,
+            r["error"].str_() if r.has("error") else None)
+
+
+@dataclass(frozen=True, slots=True)
 class Outcome:
     ok: bool = _field(False, "", "FindValidPosition's answer (PhysicsObj.transition returns null when false)")
     cell: int = _field(0, "", "SpherePath.CurCell's id")
@@ -425,18 +488,24 @@ class Outcome:
     other_placements: tuple[PlacementState, ...] | None = _field(
         None, "", "for a scene with other movers (then the format is acconform.outcome/6), each other mover after it "
         "entered the world (enter_world's answer OK or GeneralFailure, and where it is), in the scene's `others` order")
+    motion_answers: tuple[MotionAnswerState, ...] | None = _field(
+        None, "", "for a scene with motion_queries (then the format is acconform.outcome/6), each query's answer, in "
+        "the scene's order, asked after the last tick")
 
     @property
     def frame(self) -> Frame:
         return Frame(self.origin, self.orientation)
 
     def to_json(self):
-        d = {"format": FORMAT if self.other_placements is not None
+        d = {"format": FORMAT if self.other_placements is not None or self.motion_answers is not None
              else (FORMAT_V5 if any(t.motion is not None for t in self.ticks) else FORMAT_V4) if self.ticks is not None
              else FORMAT_V3 if self.placement is not None else FORMAT_V2}
         for f in fields(self):
             v = getattr(self, f.name)
-            if f.name in ("placement", "ticks", "other_placements") and v is None:
+            if f.name in ("placement", "ticks", "other_placements", "motion_answers") and v is None:
+                continue
+            if f.name == "motion_answers":
+                d["motion_answers"] = [a.to_json() for a in v]
                 continue
             if f.name == "ticks":
                 d["ticks"] = [t.to_json() for t in v]
@@ -472,14 +541,14 @@ class Outcome:
         if fmt not in (FORMAT, FORMAT_V5, FORMAT_V4):
             allowed = allowed - {"ticks"}
         if fmt != FORMAT:
-            allowed = allowed - {"other_placements"}
+            allowed = allowed - {"other_placements", "motion_answers"}
         r.obj(allowed | {"format"})
         if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5):
             check_format(r, FORMAT)
         kw = {}
         for name in names:
             if not r.has(name):
-                if name in ("error", "placement", "ticks", "other_placements") or (name == "static_cells" and (v1 or name in r.value)):
+                if name in ("error", "placement", "ticks", "other_placements", "motion_answers") or (name == "static_cells" and (v1 or name in r.value)):
                     continue  # absent error/placement/ticks: none; static_cells: /1 never has it, /2 may write null
                 r[name]  # raises InvalidScene: missing required field
             x = r[name]
@@ -507,6 +576,8 @@ class Outcome:
                 kw[name] = tuple(TickState.from_json(t, fmt in (FORMAT_V5, FORMAT), fmt == FORMAT) for t in x.list())
             elif name == "other_placements":
                 kw[name] = tuple(PlacementState.from_json(p) for p in x.list())
+            elif name == "motion_answers":
+                kw[name] = tuple(MotionAnswerState.from_json(a) for a in x.list())
             else:
                 kw[name] = x.bool_()
         return Outcome(**kw)

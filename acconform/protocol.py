@@ -188,6 +188,13 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                                 "some arrows, bolts, thrown weapons and spells): SetProjectilePhysicsState or "
                                 "SpellProjectile.Setup clears AlignPath and sets Omega = (2 pi RotationSpeed, 0, 0) "
                                 "(needs missiles)"),
+    "motion.queries": (lambda s: bool(s.motion_queries),
+                       "the server's queries on the mover's motion table (scene/8: motion_queries), asked in order after "
+                       "the last tick as ACE's WorldObjects ask them to time attacks, casts, emotes, pickups and deaths: "
+                       "the physics MotionTable's static GetAttackFrames, GetAnimationLength (both overloads), "
+                       "GetRunSpeed and GetTurnSpeed (with ACE's static RunSpeed and TurnSpeed caches, a fresh server's "
+                       "at the scene's start) and the DatLoader MotionTable's GetAnimationLength; answered in "
+                       "outcome/6's motion_answers"),
 }
 
 

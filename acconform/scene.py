@@ -1585,6 +1585,66 @@ class OtherMover:
 ENGINE_MODES = ("server", "client")
 
 
+# scene/8 motion_queries (feature motion.queries): the server's questions to the mover's motion table, as ACE's
+# WorldObjects ask them to time an attack, a cast, an emote, a pickup or a death. Each name is a call as the server
+# makes it: the physics MotionTable's statics (GetAttackFrames; GetAnimationLength, its five-argument overload when
+# current_motion is given; GetRunSpeed; GetTurnSpeed) and the DatLoader MotionTable's GetAnimationLength (with stance
+# and current_motion: the three-argument overload of Player_Inventory and EmoteManager; without: the one of a
+# MotionCommand, of Player_Death and Player_Location). ACE's server calls no other of them (GetCycleLength's one
+# call is commented out, GetLinkData and HasDefaultScript have none; GetMotionData and GetAnimDist run inside
+# GetRunSpeed and GetTurnSpeed).
+MOTION_QUERY_FUNCTIONS = ("GetAttackFrames", "GetAnimationLength", "GetRunSpeed", "GetTurnSpeed", "Dat.GetAnimationLength")
+_QUERY_FIELDS = {"GetAttackFrames": ({"stance", "motion"}, set()),
+                 "GetAnimationLength": ({"stance", "motion"}, {"current_motion", "speed"}),
+                 "GetRunSpeed": (set(), set()), "GetTurnSpeed": (set(), set()),
+                 "Dat.GetAnimationLength": ({"motion"}, {"stance", "current_motion"})}  # name: (required, optional)
+MAX_MOTION_QUERIES = 64
+
+
+@dataclass(frozen=True, slots=True)
+class MotionQuery:
+    """One server query on the mover's motion table (its MotionTableId: the scene's table, or 0 for a mover without
+    one): `function` a MOTION_QUERY_FUNCTIONS name; stance (MotionStance), motion and current_motion (MotionCommand)
+    as uint32; speed the float argument (None: C#'s default, 1.0f)."""
+
+    function: str
+    stance: int = 0
+    motion: int = 0
+    current_motion: int | None = None
+    speed: float | None = None
+
+    def to_json(self):
+        d = {"function": self.function}
+        required, optional = _QUERY_FIELDS[self.function]
+        for name in ("stance", "motion", "current_motion"):
+            v = getattr(self, name)
+            if name in required or (name in optional and v is not None and (name != "stance" or self.current_motion is not None)):
+                d[name] = v
+        if self.speed is not None:
+            d["speed"] = write_f32(self.speed)
+        return d
+
+    @staticmethod
+    def from_json(r: Reader) -> "MotionQuery":
+        r.obj({"function", "stance", "motion", "current_motion", "speed"})
+        function = r["function"].str_()
+        if function not in _QUERY_FIELDS:
+            r["function"].fail(f"unknown motion query {function!r} (known: {', '.join(MOTION_QUERY_FUNCTIONS)})")
+        required, optional = _QUERY_FIELDS[function]
+        for name in ("stance", "motion", "current_motion", "speed"):
+            if r.given(name) and name not in required | optional:
+                r[name].fail(f"{function} takes no {name}")
+            if name in required and not r.given(name):
+                r[name]  # raises: missing
+        if function == "Dat.GetAnimationLength" and r.given("stance") != r.given("current_motion"):
+            r["stance" if not r.given("stance") else "current_motion"].fail(
+                "Dat.GetAnimationLength takes stance and current_motion together (its three-argument overload) or "
+                "neither (the one of a MotionCommand)")
+        u32 = (lambda name: r[name].int_(0, 0xFFFFFFFF) if r.given(name) else None)
+        return MotionQuery(function, u32("stance") or 0, u32("motion") or 0, u32("current_motion"),
+                           r["speed"].f32(allow_nonfinite=True) if r.given("speed") else None)
+
+
 @dataclass(frozen=True, slots=True)
 class Scene:
     landblocks: tuple[Landblock, ...]
@@ -1603,6 +1663,8 @@ class Scene:
     # them, ACE's physics reads only the drawing BSP's root sphere (GfxObj.DrawingSphere) and, in the client engine
     # mode, makes the drawing polygons
     drawing: bool = False
+    # scene/8: the server's queries on the mover's motion table, asked in order after the last tick (a tick scene's)
+    motion_queries: tuple[MotionQuery, ...] = ()
 
     @property
     def indoor(self) -> bool:
@@ -1623,12 +1685,12 @@ class Scene:
 
     @property
     def format(self) -> str:
-        """The oldest format that holds the scene (/8 for other movers, the mover's skills or holding locations, a
+        """The oldest format that holds the scene (/8 for other movers, motion queries, the mover's skills or holding locations, a
         motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
         DefaultScript or DefaultAnimation, the mover's resting frame or free heading, drawn DAT records, /7
         for a static with a setup or a door input, /6 for a placement through enter_world, /5 for buildings, /4 for
         ticks, /3 for a placement, /2 indoors, else /1)."""
-        if self.others or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
+        if self.others or self.motion_queries or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
                 self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
@@ -1671,6 +1733,8 @@ class Scene:
             d["ticks"] = self.ticks.to_json()
         if self.drawing:
             d["drawing"] = True
+        if self.motion_queries:
+            d["motion_queries"] = [q.to_json() for q in self.motion_queries]
         return d
 
     def dumps(self) -> str:
@@ -1696,7 +1760,7 @@ class Scene:
         if fmt in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4) and "buildings" in doc:
             r["buildings"].fail(f"buildings need format {FORMAT_V5!r} or later (older formats have no buildings)")
         r.obj({"format", "name", "engine", "land_height_table", "landblocks", "objects", "mover", *indoor, *ticks_field,
-               *buildings_field, *(("others", "drawing") if fmt == FORMAT else ())})
+               *buildings_field, *(("others", "drawing", "motion_queries") if fmt == FORMAT else ())})
         if fmt not in (FORMAT_V1, FORMAT_V2, FORMAT_V3, FORMAT_V4, FORMAT_V5, FORMAT_V6, FORMAT_V7):
             check_format(r, FORMAT)
         name = r["name"].str_() if r.given("name") else ""
@@ -1726,8 +1790,17 @@ class Scene:
                                 children=fmt == FORMAT)
         others = tuple(OtherMover.from_json(o) for o in r["others"].list()) if fmt == FORMAT and r.given("others") else ()
         drawing = r["drawing"].bool_() if fmt == FORMAT and r.given("drawing") else False
+        queries = tuple(MotionQuery.from_json(q) for q in r["motion_queries"].list(max_count=MAX_MOTION_QUERIES)) \
+            if fmt == FORMAT and r.given("motion_queries") else ()
+        if queries and ticks is None:
+            r["motion_queries"].fail("motion queries need ticks (they are asked after the last tick)")
+        for i, q in enumerate(queries):
+            if q.function.startswith("Dat.") and mover.motion_table is None:
+                r["motion_queries"][i]["function"].fail(
+                    f"{q.function} reads the mover's MotionTable record: it needs the mover's motion_table (the "
+                    "physics statics answer a MotionTableId of 0 themselves)")
         scene = Scene(landblocks, mover, objects, table, mode, name, environments, env_cells, ticks, buildings, others,
-                      drawing)
+                      drawing, queries)
         check_consistency(scene, path)
         return scene
 

@@ -299,8 +299,16 @@ def _motion_scene(scene, m):
     # the Player's skills (scene/8), every field other than the database-free Player's so each is written
     skills = MoverSkills(run=300, jump=250, stamina=0, strength=100, encumbrance_val=20000,
                          augmentation_increased_carrying_capacity=1)
+    # the server's motion-table queries (scene/8 motion_queries): every function, with and without its optional fields
+    from .scene import MotionQuery
+
+    walk, ready = int(MC.WalkForward), int(MC.Ready)
+    queries = (MotionQuery("GetAttackFrames", nc, walk), MotionQuery("GetAnimationLength", nc, walk),
+               MotionQuery("GetAnimationLength", nc, walk, ready, 1.5), MotionQuery("GetRunSpeed"),
+               MotionQuery("GetTurnSpeed"), MotionQuery("Dat.GetAnimationLength", 0, walk),
+               MotionQuery("Dat.GetAnimationLength", nc, walk, ready))
     return replace(scene, mover=replace(m, motion_table=table, skills=skills), name="motion", objects=objects,
-                   ticks=Ticks("update_object", 1000.0, steps))
+                   ticks=Ticks("update_object", 1000.0, steps), motion_queries=queries)
 
 
 def _tick_outcomes() -> list:
@@ -317,14 +325,18 @@ def _tick_outcomes() -> list:
     walk = CommandState(0x8000003D, 0x45000005, 1.0, 0x6500000F, 1.0, 0x6500000D, 1.0)
     motion = MotionTickState(walk, walk, 0x03000001, 1.5, (0.0, 3.0, 0.0), (0.0, 0.0, 1.0), 0, False)
     bare = MotionTickState(None, None, None, 0.0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), None, False)
-    from .outcome import CollisionState, PlacementState
+    from .outcome import AttackFrameState, CollisionState, MotionAnswerState, PlacementState
 
     placed = PlacementState(0, 0xA9B40001, (12.0, 12.5, 20.0), (1.0, 0.0, 0.0, 0.0), 0xA9B40001, 0x83, (0xA9B40001,))
     touched = (CollisionState(0x80000001, 1000.1, False),)
     movers = replace(state, collisions=touched, others=(replace(state, id=0x80000001, collisions=touched),))
     return [Outcome(static_cells=(), ticks=(state, TickState(error="NullReferenceException: an example"))),
             Outcome(static_cells=(), ticks=(replace(state, motion=motion), replace(state, motion=bare))),
-            Outcome(static_cells=(), ticks=(movers,), other_placements=(placed,))]
+            Outcome(static_cells=(), ticks=(movers,), other_placements=(placed,)),
+            Outcome(static_cells=(), ticks=(state,), motion_answers=(
+                MotionAnswerState(value=0.5), MotionAnswerState(attack_frames=()),
+                MotionAnswerState(attack_frames=(AttackFrameState(0.25, 1, 0, -0.5, 1.0, 0.5, 1.0, 2.0, 1.5),)),
+                MotionAnswerState(error="NullReferenceException: an example")))]
 
 
 def _every_optional_field(scene):

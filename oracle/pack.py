@@ -10,14 +10,14 @@ from __future__ import annotations
 import struct
 from dataclasses import fields, replace
 
-from ..outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState, Outcome,
-                       PlacementState, PlaneState, TickState)
+from ..outcome import (AttackFrameState, CollisionState, CommandState, ContactPlaneState, MotionAnswerState,
+                       MotionTickState, NormalState, Outcome, PlacementState, PlaneState, TickState)
 from ..dat import cell_landblock, has_objects, scene_records
 from ..motion_scene import MOTION_TABLE_ID, STOPS
-from ..scene import SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
+from ..scene import MOTION_QUERY_FUNCTIONS, SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 16
+PACK_VERSION = 17
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -135,20 +135,22 @@ def _other_inputs(step, index: dict) -> list[bytes]:
     return out
 
 
-def _ticks(ticks: Ticks | None, others=()) -> bytes:
-    """byte 0 (not a tick scene), or 1, the driver (its index in scene.DRIVERS), the start clock (double), the
+def _ticks(ticks: Ticks | None, others=(), queries=()) -> bytes:
+    """byte 0 (not a tick scene), or 1 (2: with motion queries, `_queries` after the steps), the driver (its index in scene.DRIVERS), the start clock (double), the
     number of steps, and per step: its absolute clock value from `Ticks.times()` (double, computed once by the
     record), a mask of the inputs present (bit i: TICK_INPUTS[i]) and their values in that order, then the other
     movers' inputs (`_other_inputs`; `others`: the scene's)."""
     if ticks is None:
         return b"\0"
     index = {o.id: k for k, o in enumerate(others)}
-    out = [_TICKS_HEAD.pack(1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
+    out = [_TICKS_HEAD.pack(2 if queries else 1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
     for step, time in zip(ticks.steps, ticks.times()):
         mask, values = _tick_inputs(step)
         out.append(_STEP_HEAD.pack(time, mask))
         out += values
         out += _other_inputs(step, index) if step.others else (_NO_OTHERS,)
+    if queries:  # byte 2 above: the scene's motion_queries (scene/8) after the steps
+        out += _queries(queries)
     return b"".join(out)
 
 
@@ -182,7 +184,7 @@ _LAUNCH = struct.Struct("<BiIIf3f4fBBBBfB")
 
 def pack_scene(scene: Scene) -> bytes:
     out = [_HEAD.pack(PACK_VERSION, 1 if scene.engine_mode == "server" else 0),
-           _ticks(scene.ticks, scene.others),
+           _ticks(scene.ticks, scene.others, scene.motion_queries),
            _table_bytes(scene.land_height_table),
            struct.pack("<i", len(scene.landblocks))]
     for lb in scene.landblocks:
@@ -223,6 +225,21 @@ def pack_scene(scene: Scene) -> bytes:
                                 SPELL_KINDS.index(la.spell)))
         out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
     return b"".join(out)
+
+
+def _queries(queries) -> list[bytes]:
+    """int n, then per motion query its function, stance, motion, current motion, whether that is given, speed."""
+    out = [_I32.pack(len(queries))]
+    for q in queries:
+        out.append(_QUERY.pack(MOTION_QUERY_FUNCTIONS.index(q.function), q.stance, q.motion, q.current_motion or 0,
+                               0 if q.current_motion is None else 1, 1.0 if q.speed is None else q.speed))
+    return out
+
+
+# pack 17, a tick scene's first byte 2 instead of 1, and after its steps: int n, then per motion query (scene/8 motion_queries) its function (byte: its index in
+# acconform.scene.MOTION_QUERY_FUNCTIONS), stance, motion, current motion (uint; 0 when none), whether the current
+# motion is given (byte), the speed (float; 1.0f, C#'s default, when the scene gives none)
+_QUERY = struct.Struct("<BIIIBf")
 
 
 def _frozen_maker(cls, params: str | None = None, values: dict | None = None, names: dict | None = None):
@@ -393,6 +410,10 @@ _other_tick = _tick_maker(_OTHER_AT)
 
 
 def _ticks_at(data, pos: int):
+    return _ticks_and_end(data, pos)[0]
+
+
+def _ticks_and_end(data, pos: int):
     """int n (-1: not a tick scene), then per tick byte 0 and its state, or byte 1, int length and the error
     message (the last tick: an error ends the scene). A state is its fields (`_STATE`), then byte 0, or byte 1
     (a scene with other movers), its CollisionTable, int n and per other mover its id, state and CollisionTable.
@@ -400,7 +421,7 @@ def _ticks_at(data, pos: int):
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
     if n < 0:
-        return None
+        return None, pos
     out = []
     for _ in range(n):
         if data[pos] not in (0, b"\0"):
@@ -435,6 +456,42 @@ def _ticks_at(data, pos: int):
                 table, pos = _collisions_at(data, pos - 4)
             others.append(_other_tick(w, j, _parts.get(w[16]) or _plane(w[16]), None, table, None, w[0]))
         out.append(_mover_tick(v, m, plane, motion, collisions, tuple(others), None))
+    return tuple(out), pos
+
+
+_ATTACK = struct.Struct("<fiI6f")
+
+
+def _answers_at(data, pos: int):
+    """int n (-1: no queries asked), then per motion query its answer (Facade.AskMotionQueries): byte 0 and a float,
+    byte 1, int n and n attack frames (time, Direction, PartIndex, LeftX, LeftY, RightX, RightY, Radius, Height), or
+    byte 0xEE, int length and the error message."""
+    (n,) = _I32.unpack_from(data, pos)
+    pos += 4
+    if n < 0:
+        return None
+    out = []
+    for _ in range(n):
+        tag = data[pos]
+        if type(tag) is bytes:  # a ctypes char array's item (the live oracle's output array)
+            tag = tag[0]
+        pos += 1
+        if tag == 0:
+            (v,) = _f.unpack_from(data, pos)
+            pos += 4
+            out.append(MotionAnswerState(value=v))
+        elif tag == 1:
+            (k,) = _I32.unpack_from(data, pos)
+            pos += 4
+            frames = []
+            for _ in range(k):
+                frames.append(AttackFrameState(*_ATTACK.unpack_from(data, pos)))
+                pos += _ATTACK.size
+            out.append(MotionAnswerState(attack_frames=tuple(frames)))
+        else:
+            (k,) = _I32.unpack_from(data, pos)
+            out.append(MotionAnswerState(error=bytes(data[pos + 4:pos + 4 + k]).decode("utf-8", "replace")))
+            pos += 4 + k
     return tuple(out)
 
 
@@ -456,7 +513,7 @@ def _other_placements_at(data, pos: int):
 
 _NO_TRANSITION = struct.Struct("<B3fd")  # tag 2 (placed in no cell): the mover's velocity, FVP time 0
 _AFTER = struct.Struct("<diidd")  # the whole case, then the counters
-_TICK_SCENE = struct.Struct("<Bd")  # tag 3 (a tick scene: no single transition): FVP time 0
+_TICK_SCENE = struct.Struct("<Bd")  # tag 3 (a tick scene: no single transition; 4: with motion answers): FVP time 0
 
 
 _RAW = struct.Struct("<38x22s22s13s13s")  # the same four records' bytes: exact (bitwise) cache keys
@@ -491,14 +548,17 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         msg = bytes(data[offset + 5:offset + 5 + n]).decode("utf-8", "replace")
         us, case_us, built, reused, build_us, trans_us = _TAIL.unpack_from(data, offset + 5 + n)
         return Outcome(error=msg), us, case_us, (built, reused, build_us, trans_us)
-    if tag == 3 or tag == b"\x03":
+    if tag in (3, 4, b"\x03", b"\x04"):  # 4: the motion queries' answers after the ticks
         _tag, us = _TICK_SCENE.unpack_from(data, offset)
         at = offset + _TICK_SCENE.size
         case_us, built, reused, build_us, trans_us = _AFTER.unpack_from(data, at)
         cells, at = _static_cells(data, at + _AFTER.size)
         placement, at = _placement_at(data, at)
         others, at = _other_placements_at(data, at)
-        return (Outcome(static_cells=cells, placement=placement, ticks=_ticks_at(data, at), other_placements=others),
+        ticks, at = _ticks_and_end(data, at)
+        answers = _answers_at(data, at) if tag in (4, b"\x04") else None
+        return (Outcome(static_cells=cells, placement=placement, ticks=ticks, other_placements=others,
+                        motion_answers=answers),
                 us, case_us, (built, reused, build_us, trans_us))
     if tag == 2 or tag == b"\x02":
         _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)
@@ -520,5 +580,5 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
     others, _ = _other_placements_at(data, at)
     return (_make_outcome(bool(v[1]), v[2], v[3:6], v[6:10], v[10], cp, lk, _ns(kn, *v[25:29]), _ns(ks, *v[29:33]),
                           bool(v[33]), v[34], v[35:38], v[38], bool(v[39]), bool(v[40]), bool(v[41]), None,
-                          cells, placement, None, others),
+                          cells, placement, None, others, None),
             v[42], v[43], (v[44], v[45], v[46], v[47]))

@@ -29,8 +29,8 @@ import numpy as np
 
 from acconform.flags import PhysicsState, SetPositionError, TransientState
 from acconform.numerics import Plane, get_mode
-from acconform.outcome import (CollisionState, CommandState, ContactPlaneState, MotionTickState, NormalState,
-                               Outcome, PlacementState, PlaneState, TickState)
+from acconform.outcome import (AttackFrameState, CollisionState, CommandState, ContactPlaneState, MotionAnswerState,
+                               MotionTickState, NormalState, Outcome, PlacementState, PlaneState, TickState)
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
 from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, OtherMover, Scene, StaticObject
@@ -429,7 +429,8 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
     other_placements = tuple(p for _, p, _ in movers) if others else None
     if scene.ticks is not None:
         ticks = run_ticks(scene, mover, timer, lscape, trace, movers, tuple(o for o, _ in others), statics)
-        return Outcome(placement=placement, ticks=ticks, other_placements=other_placements,
+        answers = motion_answers(scene, portal_dat) if scene.motion_queries else None
+        return Outcome(placement=placement, ticks=ticks, other_placements=other_placements, motion_answers=answers,
                        static_cells=tuple(static_cells(record, did, obj, lscape)
                                           for record, did, obj in zip(objects, dids, statics)))
     if placement is not None:
@@ -470,6 +471,52 @@ def _run_in(scene: Scene, mode, trace, lscape: LScape, timer: PhysicsTimer, port
         placement=placement,
         other_placements=other_placements,
     )
+
+
+# ---------------------------------------------------------------- motion queries
+
+
+@harness("asks the scene's motion_queries of the mover's motion table after the last tick, as a server's WorldObjects "
+         "ask them (the ported statics and DatLoader methods), each answer or what it threw")
+def motion_answers(scene: Scene, portal_dat: PortalDat) -> tuple:
+    """The scene's MotionTableId (the mover's table, or 0) and the run's PortalDat, whose RunSpeed, TurnSpeed and
+    attack-frame caches ACE keeps for the process: a scene is a fresh server's, so they start empty and are shared by
+    the scene's queries in order."""
+    from .animation.motion_table import MotionTable
+    from .dat.motion_table import MotionTable as DatMotionTable
+
+    table_id = scene.mover.motion_table_id
+    scalar = portal_dat.mode.scalar
+    out = []
+    for q in scene.motion_queries:
+        speed = None if q.speed is None else scalar(q.speed)
+        try:
+            if q.function == "GetAttackFrames":
+                frames = MotionTable.get_attack_frames(table_id, q.stance, q.motion, portal_dat)
+                out.append(MotionAnswerState(attack_frames=tuple(_attack_frame(t, h) for t, h in frames)))
+                continue
+            if q.function == "GetAnimationLength":
+                v = (MotionTable.get_animation_length(table_id, q.stance, q.motion, portal_dat, speed)
+                     if q.current_motion is None else
+                     MotionTable.get_animation_length_from(table_id, q.stance, q.current_motion, q.motion, portal_dat, speed))
+            elif q.function == "GetRunSpeed":
+                v = MotionTable.get_run_speed(table_id, portal_dat)
+            elif q.function == "GetTurnSpeed":
+                v = MotionTable.get_turn_speed(table_id, portal_dat)
+            else:  # Dat.GetAnimationLength: DatManager.PortalDat.ReadFromDat<MotionTable>(MotionTableId), then its overload
+                table = portal_dat.read_from_dat(table_id, DatMotionTable)
+                v = (table.get_animation_length_of_motion(q.motion, portal_dat) if q.current_motion is None else
+                     table.get_animation_length(q.stance, q.motion, q.current_motion, portal_dat))
+            out.append(MotionAnswerState(value=float(v)))
+        except Exception as e:
+            out.append(MotionAnswerState(error=verdict(e)))
+    return tuple(out)
+
+
+def _attack_frame(time, hook) -> AttackFrameState:
+    c = hook.attack_cone
+    return AttackFrameState(float(time), int(hook.direction), int(c.part_index), float(c.left_x), float(c.left_y),
+                            float(c.right_x), float(c.right_y), float(c.radius), float(c.height))
 
 
 # ---------------------------------------------------------------- tick scenes

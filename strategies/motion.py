@@ -928,3 +928,87 @@ def draw_motion_layer_ticks(draw, base: Scene, clock) -> Scene:
     skills = draw_skills(draw)
     return _motion_scene(base, table, start, dts, inputs, g0, g1,
                          f"{tlabel}:layer:{'+'.join(tags)}:{status.name}:run{skills.run}:{clabel}", status, skills)
+
+
+# ---------------------------------------------------------------- the server's motion-table queries (scene/8)
+
+# one motion scene in three asks the server's questions of its motion table after the ticks (motion_queries)
+QUERIED = st.sampled_from((True, False, False))
+QUERY_COUNTS = dr.ints(1, 12)
+QUERY_FUNCTIONS = st.sampled_from(("GetAttackFrames", "GetAttackFrames", "GetAnimationLength", "GetAnimationLength",
+                                   "GetAnimationLength", "GetRunSpeed", "GetTurnSpeed", "Dat.GetAnimationLength",
+                                   "Dat.GetAnimationLength"))
+# stances the table has (NonCombat, HandCombat; SwordCombat now and then, with a cycle and no default) and lacks
+QUERY_STANCES = st.sampled_from((NC, NC, NC, HC, HC, SC, int(MC.Magic), 0))
+# motions the table links from Ready (its cycles, its actions), a style (the five-argument overload's Ready arm),
+# Ready itself and ones it lacks (Dead, an unlisted command)
+QUERY_MOTIONS = st.sampled_from((WALK, RUN, SIDE, TURN, READY, int(MC.Twitch1), int(MC.Twitch2), int(MC.Cheer),
+                                 int(MC.Twitch1), int(MC.Cheer), HC, NC, SC, int(MC.Dead), 0x10000123))
+QUERY_CURRENTS = st.sampled_from((None, None, READY, READY, WALK, RUN, int(MC.Dead), 0))
+# speeds as the server passes them (a swing's animSpeed, a cast's, an emote's): 1, 0, negative, one ulp from 1
+QUERY_SPEEDS = dr.OneOf(st.sampled_from((None, None, 1.0, 0.0, -0.0, -1.0, -1.5, 2.5, 0.5, 0.99999994, 1.0000001)),
+                        dr.f32(0.1, 4.0))
+# a queried scene's mover without a motion table now and then (its MotionTableId 0: the statics' early answers)
+TABLELESS = st.sampled_from((False,) * 9 + (True,))
+# the queried table's animations with AttackHooks (one in two), among its other hooks: GetAttackFrames finds them
+ATTACKS = st.sampled_from((True, False))
+
+
+def draw_motion_queries(draw, scene: Scene) -> Scene:
+    """A share of motion scenes (QUERIED) with the server's queries on the mover's motion table after the ticks
+    (scene/8 motion_queries): GetAttackFrames, GetAnimationLength (both overloads), GetRunSpeed, GetTurnSpeed and the
+    DatLoader's GetAnimationLength, with stances and motions the table has and lacks and the speeds the server passes;
+    a query may repeat an earlier one (ACE's static RunSpeed, TurnSpeed and attack-frame caches answer it). Now and
+    then the table gains AttackHooks, or the mover loses its table and its motion inputs (a MotionTableId of 0)."""
+    from acconform.scene import MOTION_INPUTS, MotionQuery
+
+    if not draw(QUERIED):
+        return scene
+    m = scene.mover
+    tags = []
+    if draw(TABLELESS):
+        steps = tuple(replace(s, **{n: None for n in MOTION_INPUTS}) for s in scene.ticks.steps)
+        scene = scene.replace(mover=replace(m, motion_table=None), ticks=replace(scene.ticks, steps=steps))
+        tags.append("tableless")
+    elif draw(ATTACKS):
+        table = m.motion_table
+        animations = list(table.animations)
+        # mostly the animations links play (what GetAttackFrames' GetAnimData finds), else any of the table's
+        linked = sorted({r.animation for e in table.links for r in e.data.anims})
+        for _ in range(draw(st.integers(1, 4))):
+            i = draw(st.sampled_from(linked)) if linked and draw(MOSTLY) else draw(st.integers(0, len(animations) - 1))
+            a = animations[i]
+            hook = HookSpec(draw(st.integers(0, len(a.pos_frames) - 1)), "Attack", draw(HOOK_DIRS))
+            animations[i] = replace(a, hooks=a.hooks + (hook,))
+        scene = scene.replace(mover=replace(m, motion_table=replace(table, animations=tuple(animations))))
+        tags.append("attacks")
+    table = scene.mover.motion_table
+    # a link's style and target (the link GetAnimData looks up, when it starts from the style's default or from any
+    # substate), asked one query in two: the others mostly find no link
+    links = [(e.style, e.to) for e in table.links] if table is not None else []
+
+    def stance_motion():
+        if links and draw(HALF):
+            return draw(st.sampled_from(links))
+        return draw(QUERY_STANCES), draw(QUERY_MOTIONS)
+
+    queries: list = []
+    for _ in range(dr.take(draw, QUERY_COUNTS)):
+        if queries and draw(st.sampled_from((False,) * 4 + (True,))):  # asked again: the caches' second answer
+            queries.append(queries[draw(st.integers(0, len(queries) - 1))])
+            continue
+        f = draw(QUERY_FUNCTIONS)
+        if f in ("GetRunSpeed", "GetTurnSpeed"):
+            queries.append(MotionQuery(f))
+        elif f == "GetAttackFrames":
+            queries.append(MotionQuery(f, *stance_motion()))
+        elif f == "GetAnimationLength":
+            speed = dr.take(draw, QUERY_SPEEDS)
+            stance, motion = stance_motion()
+            queries.append(MotionQuery(f, stance, motion, draw(QUERY_CURRENTS), None if speed is None else float(to_f32(speed))))
+        elif table is not None:  # Dat.GetAnimationLength reads the table's record
+            current = draw(QUERY_CURRENTS)
+            stance, motion = stance_motion()
+            queries.append(MotionQuery(f, stance if current is not None else 0, motion, current))
+    tags.append(f"q{len(queries)}")
+    return scene.replace(motion_queries=tuple(queries), name=scene.name + ":" + ".".join(tags))

@@ -381,9 +381,9 @@ def _draw_tick_scene(draw, world: str | None, policy: str | None) -> Scene:
 
         return draw_door_ticks(draw, base, _clock)
     if policy == "motion":  # a motion table and MoveToState keys (strategies/motion.py)
-        from .motion import draw_motion_ticks
+        from .motion import draw_motion_queries, draw_motion_ticks
 
-        return draw_motion_ticks(draw, base, _clock)
+        return draw_motion_queries(draw, draw_motion_ticks(draw, base, _clock))
     if policy in ("porch", "cellar"):  # off the edge (EdgeSlide mostly off), long enough to fall and land
         m = base.mover
         if m.state & int(PhysicsState.EdgeSlide) and draw(EDGE_SLIDE_KEPT) == "off":

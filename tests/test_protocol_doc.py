@@ -73,7 +73,7 @@ def test_the_protocol_doc_gives_a_complete_answer_with_every_outcome_field_as_th
 
     answer = json.loads(_block_after("<!-- complete outcome:"))
     outcome = Outcome.from_json(answer["outcome"], "outcome")  # every field, each a float32
-    assert set(answer["outcome"]) == {"format"} | {f.name for f in fields(Outcome)} - {"placement", "ticks", "other_placements"}
+    assert set(answer["outcome"]) == {"format"} | {f.name for f in fields(Outcome)} - {"placement", "ticks", "other_placements", "motion_answers"}
     assert outcome == run_scene(_flat_walk(), runtime="coreclr") == run_scene(_flat_walk(), runtime="mono")
 
 
@@ -82,7 +82,7 @@ def test_the_protocol_doc_gives_an_error_answer_carrying_every_field_as_aces_err
 
     answer = json.loads(_block_after("<!-- error outcome:"))
     outcome = Outcome.from_json(answer["outcome"], "outcome")
-    assert set(answer["outcome"]) == {"format"} | {f.name for f in fields(Outcome)} - {"placement", "ticks", "other_placements"}
+    assert set(answer["outcome"]) == {"format"} | {f.name for f in fields(Outcome)} - {"placement", "ticks", "other_placements", "motion_answers"}
     assert outcome == Outcome(error=outcome.error) and outcome.error.startswith("NullReferenceException: ")
 
 

@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 16;
+        public const int PackVersion = 17;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -153,6 +153,13 @@ namespace Acconform.Oracle
         static double tickStart;
         static readonly List<TickStep> tickSteps = new List<TickStep>();
         static int ticksRun;  // -1: not a tick scene (or an error before the first tick)
+        static uint moverMotionTableId;  // the mover's MotionTableId (0: none)
+        // the scene's motion_queries (pack 17): function (byte), stance, motion, current motion (uint), whether it is
+        // given (byte), speed (float: 1.0f when the scene gives none, C#'s default)
+        static readonly List<Tuple<byte, uint, uint, uint, bool, float>> motionQueries = new List<Tuple<byte, uint, uint, uint, bool, float>>();
+        static readonly MemoryStream answerStream = new MemoryStream(1024);
+        static int answersRun;  // -1: no queries asked (none in the scene, or an error before they were asked)
+        static FieldInfo attackFrameCacheField;  // the DatLoader MotionTable's private static attackFrameCache
         static ACE.Server.WorldObjects.Player moverPlayer;  // the mover's WorldObject (the last scene's until the next)
         static uint locationCell;  // the cell of the mover's WorldObject.Location (Player.UpdatePlayerPosition)
         static bool moverMotion;  // the mover has a motion table: each tick also carries its motion layer (WriteMotion)
@@ -345,7 +352,8 @@ namespace Acconform.Oracle
                     placedMover = obj;
                     locationCell = obj.Position.ObjCellID;  // where it entered: its Location (SyncLocation)
                     RunTicks(obj);
-                    w.Write((byte)3);
+                    AskMotionQueries();
+                    w.Write((byte)(answersRun >= 0 ? 4 : 3));  // 4: the motion queries' answers after the ticks
                     w.Write(0.0);
                 }
                 else if (!hasPlacement || obj.CurCell != null)
@@ -386,6 +394,110 @@ namespace Acconform.Oracle
             WriteOtherPlacements(w, errored);
             w.Write(ticksRun);
             if (ticksRun > 0) w.Write(tickStream.GetBuffer(), 0, (int)tickStream.Length);
+            if (!errored && answersRun >= 0)
+            {
+                w.Write(answersRun);
+                w.Write(answerStream.GetBuffer(), 0, (int)answerStream.Length);
+            }
+        }
+
+        // ------------------------------------------------------------------ motion queries (scene/8 motion_queries)
+
+        /// <summary>int n, then per query: the function (byte: 0 GetAttackFrames, 1 GetAnimationLength, 2 GetRunSpeed,
+        /// 3 GetTurnSpeed, 4 the DatLoader MotionTable's GetAnimationLength), stance, motion and current motion (uint), whether
+        /// the current motion is given (byte), the speed (float).</summary>
+        static void ReadMotionQueries(BinaryReader r)
+        {
+            var n = r.ReadInt32();
+            for (var i = 0; i < n; i++)
+            {
+                var f = r.ReadByte();
+                var stance = r.ReadUInt32();
+                var motion = r.ReadUInt32();
+                var current = r.ReadUInt32();
+                var hasCurrent = r.ReadByte() != 0;
+                motionQueries.Add(Tuple.Create(f, stance, motion, current, hasCurrent, r.ReadSingle()));
+            }
+        }
+
+        /// <summary>Asks the scene's queries in order, after the last tick, as ACE's WorldObjects ask them (ACE's own static
+        /// methods; DatManager.PortalDat.ReadFromDat for the DatLoader's), each answer into answerStream: byte 0 and a float,
+        /// byte 1 and GetAttackFrames' list (int n, per entry its time, the AttackHook's Direction (int) and AttackCone:
+        /// PartIndex (uint), LeftX, LeftY, RightX, RightY, Radius, Height), or byte 0xEE and what it threw (int length,
+        /// UTF-8).</summary>
+        static void AskMotionQueries()
+        {
+            if (motionQueries.Count == 0) return;
+            var w = new BinaryWriter(answerStream);
+            var id = moverMotionTableId;
+            foreach (var q in motionQueries)
+            {
+                try
+                {
+                    var stance = (MotionStance)q.Item2;
+                    var motion = (MotionCommand)q.Item3;
+                    var current = (MotionCommand)q.Item4;
+                    float v;
+                    switch (q.Item1)
+                    {
+                        case 0:
+                            var frames = ACE.Server.Physics.Animation.MotionTable.GetAttackFrames(id, stance, motion);
+                            w.Write((byte)1);
+                            w.Write(frames.Count);
+                            foreach (var f in frames)
+                            {
+                                w.Write(f.Item1);
+                                w.Write((int)f.Item2.Direction);
+                                var c = f.Item2.AttackCone;
+                                w.Write(c.PartIndex);
+                                w.Write(c.LeftX); w.Write(c.LeftY); w.Write(c.RightX); w.Write(c.RightY);
+                                w.Write(c.Radius); w.Write(c.Height);
+                            }
+                            continue;
+                        case 1:
+                            v = q.Item5 ? ACE.Server.Physics.Animation.MotionTable.GetAnimationLength(id, stance, current, motion, q.Item6)
+                                        : ACE.Server.Physics.Animation.MotionTable.GetAnimationLength(id, stance, motion, q.Item6);
+                            break;
+                        case 2:
+                            v = ACE.Server.Physics.Animation.MotionTable.GetRunSpeed(id);
+                            break;
+                        case 3:
+                            v = ACE.Server.Physics.Animation.MotionTable.GetTurnSpeed(id);
+                            break;
+                        default:
+                            var table = DatManager.PortalDat.ReadFromDat<ACE.DatLoader.FileTypes.MotionTable>(id);
+                            v = q.Item5 ? table.GetAnimationLength(stance, motion, current) : table.GetAnimationLength(motion);
+                            break;
+                    }
+                    w.Write((byte)0);
+                    w.Write(v);
+                }
+                catch (Exception e)
+                {
+                    while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
+                    var msg = Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
+                    w.Write((byte)0xEE);
+                    w.Write(msg.Length);
+                    w.Write(msg);
+                }
+            }
+            w.Flush();
+            answersRun = motionQueries.Count;
+        }
+
+        /// <summary>ACE's static motion-table caches, which outlive a scene in ACE (a server keeps them for the process):
+        /// the physics MotionTable's WalkSpeed, RunSpeed and TurnSpeed and the DatLoader MotionTable's attackFrameCache
+        /// (private: by reflection), all keyed by the motion table id that every scene's mover shares. Cleared before
+        /// each scene, so each scene asks as a fresh server does.</summary>
+        static void ClearMotionTableCaches()
+        {
+            if (!ACE.Server.Physics.Animation.MotionTable.WalkSpeed.IsEmpty) ACE.Server.Physics.Animation.MotionTable.WalkSpeed.Clear();
+            if (!ACE.Server.Physics.Animation.MotionTable.RunSpeed.IsEmpty) ACE.Server.Physics.Animation.MotionTable.RunSpeed.Clear();
+            if (!ACE.Server.Physics.Animation.MotionTable.TurnSpeed.IsEmpty) ACE.Server.Physics.Animation.MotionTable.TurnSpeed.Clear();
+            if (attackFrameCacheField == null)
+                attackFrameCacheField = typeof(ACE.DatLoader.FileTypes.MotionTable).GetField("attackFrameCache", BindingFlags.NonPublic | BindingFlags.Static);
+            var cache = attackFrameCacheField.GetValue(null) as System.Collections.IDictionary;
+            if (cache != null && cache.Count > 0) cache.Clear();
         }
 
         // ------------------------------------------------------------------ ticks
@@ -406,13 +518,17 @@ namespace Acconform.Oracle
             setPortalYearTicks(t);
         }
 
-        /// <summary>byte 0: not a tick scene; or 1, the driver byte, the start (double), int n and per step: its
+        /// <summary>byte 0: not a tick scene; or 1 (2: then the motion queries after the steps, ReadMotionQueries), the driver byte, the start (double), int n and per step: its
         /// absolute clock (double), the input mask, then the present inputs in TICK_INPUTS order.</summary>
         static void ReadTicks(BinaryReader r)
         {
             tickSteps.Clear();
             moverMotion = false;  // until the mover is made with a motion table
-            hasTicks = r.ReadByte() != 0;
+            motionQueries.Clear();
+            answersRun = -1;
+            answerStream.SetLength(0);
+            var ticksTag = r.ReadByte();  // 0 no ticks, 1 ticks, 2 ticks and then the motion queries (pack 17)
+            hasTicks = ticksTag != 0;
             if (!hasTicks) return;
             tickDriver = r.ReadByte();
             tickStart = r.ReadDouble();
@@ -480,6 +596,7 @@ namespace Acconform.Oracle
                 }
                 tickSteps.Add(s);
             }
+            if (ticksTag == 2) ReadMotionQueries(r);
         }
 
         /// <summary>Per step: the inputs (the mover's, then each other mover's in the step's order; the clock still at
@@ -1734,6 +1851,7 @@ namespace Acconform.Oracle
             foreach (var xy in tableUsed) t[xy.Item1, xy.Item2] = null;
             tableUsed.Clear();
             ACE.Server.Physics.Common.Landblock.UseSceneFiles = false;
+            ClearMotionTableCaches();
         }
 
         static ACE.Server.Entity.Landblock[,] table2d;
@@ -2031,6 +2149,7 @@ namespace Acconform.Oracle
             placementFlags = r.ReadInt32();
             placementGetCell = r.ReadByte() != 0;
             var motionTableId = r.ReadUInt32();  // the player's MotionTableId (0: none); its Setup names the same table
+            moverMotionTableId = motionTableId;  // what the scene's motion_queries ask about
             var playerKillerStatus = (PlayerKillerStatus)r.ReadUInt32();  // the Player's, set before its WeenieObject copies it
             var runSkill = r.ReadUInt32();  // the Player's skills, vitals, attributes and burden (SetPlayerSkills)
             var jumpSkill = r.ReadUInt32();

@@ -40,8 +40,10 @@ def test_every_motion_scene_validates_has_a_table_and_starts_with_a_motion_or_ma
     first_inputs = ("motion", "do_motion", "move_to", "move_to_object", "turn_to_heading", "turn_to_object")
     for s in motion_scenes:
         assert validate_scene(s) == s
-        assert s.mover.motion_table is not None
-        assert any(getattr(s.ticks.steps[0], name) is not None for name in first_inputs)
+        if s.mover.motion_table is None:  # a queried scene's mover without a table (draw_motion_queries' TABLELESS)
+            assert ":tableless" in s.name and s.motion_queries
+        else:
+            assert any(getattr(s.ticks.steps[0], name) is not None for name in first_inputs)
         assert s.ticks.driver == "update_object" and s.name.startswith("ticks:motion:")
 
 
@@ -60,7 +62,7 @@ def test_about_half_the_motion_scenes_drive_the_managers_with_every_input_and_st
 
 def test_turn_and_sidestep_cycles_are_allowed_only_from_the_default_substate(motion_scenes):
     """Bitfield bit 2 on them: else ACE's GetObjectSequence and re_modify recurse until its stack overflows."""
-    cycles = [c for s in motion_scenes for c in s.mover.motion_table.cycles
+    cycles = [c for s in motion_scenes if s.mover.motion_table is not None for c in s.mover.motion_table.cycles
               if c.motion in (int(MC.TurnRight), int(MC.SideStepRight))]
     assert cycles and all(c.data.bitfield & 2 for c in cycles)
 
@@ -77,7 +79,7 @@ def test_the_keys_cover_forward_backward_run_sidestep_turn_hold_keys_and_stops(m
 
 
 def test_tables_vary_links_modifiers_and_framerates(motion_scenes):
-    tables = [s.mover.motion_table for s in motion_scenes]
+    tables = [s.mover.motion_table for s in motion_scenes if s.mover.motion_table is not None]
     assert any(t.links for t in tables) and any(t.modifiers for t in tables) and any(not t.modifiers for t in tables)
     rates = {a.framerate for t in tables for e in t.cycles for a in e.data.anims}
     assert len(rates) >= 5
@@ -86,7 +88,7 @@ def test_tables_vary_links_modifiers_and_framerates(motion_scenes):
 def test_some_tables_play_an_animation_from_a_frame_before_the_first(motion_scenes):
     """One AnimData in 40 has a negative LowFrame (set_animation_id keeps it): its frames before 0 have no
     PartFrame, what get_part_frame's range test and execute_hooks' null arm need (shard ticks-0064)."""
-    refs = [a for s in motion_scenes for t in (s.mover.motion_table,)
+    refs = [a for s in motion_scenes for t in (s.mover.motion_table,) if t is not None  # a queried scene may have none
             for e in (*t.cycles, *t.links, *t.modifiers) for a in e.data.anims]
     negative = [a for a in refs if a.low_frame < 0]
     assert negative and {a.low_frame for a in negative} <= {-1, -2, -5}
@@ -279,7 +281,8 @@ def test_some_tables_have_actions_and_some_managed_scenes_ask_for_them_on_succes
     Raw- and InterpretedMotionState (AddAction, RemoveAction as MotionDone ends one) and DoMotion's
     TooManyActions once six are pending."""
     actions = {int(MC.Twitch1), int(MC.Cheer)}
-    with_actions = [s for s in motion_scenes if actions <= {e.to for e in s.mover.motion_table.links}]
+    with_actions = [s for s in motion_scenes if s.mover.motion_table is not None
+                    and actions <= {e.to for e in s.mover.motion_table.links}]
     assert 0.2 * N < len(with_actions) < 0.8 * N
     bursts = [s for s in motion_scenes if ":actions+x" in s.name]
     assert bursts
@@ -334,3 +337,27 @@ def test_layer_scenes_clear_gravity_refuse_in_combat_press_keys_and_leave_some_m
                        if getattr(st, name) is not None)
         else:
             assert s.mover.motion_table is not None
+
+
+def test_a_share_of_motion_scenes_asks_the_servers_motion_table_queries_of_every_kind(motion_scenes):
+    """scene/8 motion_queries (draw_motion_queries): about one motion scene in three, every function, the five-argument
+    GetAnimationLength and both DatLoader overloads, speeds of 0, negative and one ulp from 1, a query asked again (the
+    static caches' answer), tables with AttackHooks, and now and then a mover without a table (MotionTableId 0)."""
+    queried = [s for s in motion_scenes if s.motion_queries]
+    assert 0.15 * N < len(queried) < 0.5 * N
+    qs = [q for s in queried for q in s.motion_queries]
+    from acconform.scene import MOTION_QUERY_FUNCTIONS
+
+    assert {q.function for q in qs} == set(MOTION_QUERY_FUNCTIONS)
+    assert any(q.function == "GetAnimationLength" and q.current_motion is not None for q in qs)
+    assert {q.current_motion is None for q in qs if q.function == "Dat.GetAnimationLength"} == {True, False}
+    speeds = {q.speed for q in qs}
+    import numpy as np
+
+    one = np.float32(1.0)
+    below, above = (float(np.nextafter(one, np.float32(x))) for x in (0.0, 2.0))
+    assert {0.0, -1.5, below, above, None} <= speeds
+    assert any(len(set(s.motion_queries)) < len(s.motion_queries) for s in queried)
+    assert any(":attacks" in s.name for s in queried)
+    assert any(h.hook == "Attack" for s in queried if s.mover.motion_table is not None
+               for a in s.mover.motion_table.animations for h in a.hooks)
