@@ -1119,3 +1119,19 @@ def draw_multipart_movers(draw, clock) -> Scene:
         scene = scene.replace(objects=scene.objects + (static,))
         name += "empty-stab:" if indoor else "empty-static:"
     return validate_world(scene.replace(name=name + scene.name))
+
+
+def draw_no_part_child(draw, clock) -> Scene:
+    """A carry (`_carry`) whose first child is made from a Setup of no parts (scene/8 setup.parts [], feature
+    setup.no_parts): makeObject gives it no PartArray, and set_parent, UpdateChild and unset_parent meet a child
+    without one."""
+    from acconform.scene import SetupRec
+
+    scene = _carry(draw, clock)
+    for child in scene.others:
+        if child.parent is not None:
+            break
+    else:
+        return scene.replace(name="multipart:none:" + scene.name)
+    scene = _replace_other(scene, replace(child, setup=SetupRec(())))
+    return validate_world(scene.replace(name="multipart:child:empty-0:" + scene.name))
