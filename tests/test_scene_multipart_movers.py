@@ -107,3 +107,17 @@ def test_an_other_of_no_parts_has_no_part_array_and_never_enters_the_world():
     out = run_scene(walk_at(SetupRec(())))
     assert SetPositionError(out.other_placements[0].result).name == "GeneralFailure"
     assert out.other_placements[0].cur_cell == 0
+
+
+def test_a_child_of_no_parts_is_held_and_carried_though_it_has_no_part_array():
+    """A sword whose Setup has no parts is made with no PartArray; set_parent still holds it (SetPlacementFrame
+    answers without a PartArray) and UpdateChild carries it with the walking player (ACE answers so in ticks-0070)."""
+    from acconform.port.run import run_scene
+    from oracle.child_scenes import player_walks_carrying_a_child
+
+    s = player_walks_carrying_a_child()
+    (sword,) = s.others
+    out = run_scene(s.replace(others=(replace(sword, setup=SetupRec(())),)))
+    assert SetPositionError(out.other_placements[0].result).name == "OK"
+    first, last = (t.others[0] for t in (out.ticks[0], out.ticks[-1]))
+    assert last.origin[1] - first.origin[1] > 2.4  # 30 ticks at 3 m/s, the first tick's move before it
