@@ -32,7 +32,7 @@ What each shape becomes (`static_records(obj, index)`):
 
 - **setup** (scene/7, a Setup of several parts; `setup_records`): each part a physics GfxObj
   written as a BSP static's, id ``0x01F00000 + 16 index + k`` for part k (`PART_GFX_OBJ_BASE`; at
-  most 16 parts, index below 0xF000, so these ids end below the buildings' shells), then a Setup,
+  most 16 parts, index below 0xE000, so these ids end below the others' parts), then a Setup,
   id ``0x02000001 + index``, naming the parts in order: flags HasParent with a `parent_index` (scene/8:
   then one uint per part, the DAT's ParentIndex, which ACE's physics never reads) and HasDefaultScale when
   the parts have scales (then each part's scale, in order), one placement frame keyed 0 (Placement.Default, which
@@ -49,6 +49,9 @@ Height or Radius: only MoveToManager and StickyManager do), flags AllowFreeHeadi
 ``0x01000000``, with no vertices (nothing reads the mover's own bounding box in a transition). Its
 HoldingLocations (scene/8 `holding_locations`) are written in the order given; another mover's Setup
 (`other_records`) likewise, with its sorting sphere (`sorting_sphere`, zero when none: a child's cells).
+With a `setup` (scene/8 `others[].setup`) its parts are written as a static's Setup's, GfxObj ids
+``0x01FE0000 + 16 index + k`` (`OTHER_PART_GFX_OBJ_BASE`; index below 0x1000, so they end below the buildings'
+shells) before its Setup, with their placement frame (keyed 0), DefaultScale and the setup's cylspheres.
 
 **Drawn** (scene/8 `drawing`): every polygon is written with Stippling 0 and its UV indices (vertex i's index
 i; a Clockwise polygon's negative ones too), a BSP GfxObj (`gfx_obj_physics`) with flags HasPhysics|HasDrawing|
@@ -129,7 +132,9 @@ MAX_OBJECTS = 0xEFFFFF  # ids stay inside their DAT type's range, below the part
 STATIC_ANIMATION_BASE = 0x03F00000  # the DefaultAnimation of static i's Setup of several parts (scene/8)
 PART_GFX_OBJ_BASE = 0x01F00000  # GfxObj id of part 0 of static 0's Setup of several parts (scene/7 `setup`)
 MAX_PARTS = 16  # each static has 16 part ids: part k of static i is PART_GFX_OBJ_BASE + 16 i + k (scene.MAX_SETUP_PARTS)
-MAX_SETUP_OBJECTS = 0xF000  # a static with a setup has an index below this (its parts' ids end below the buildings')
+MAX_SETUP_OBJECTS = 0xE000  # a static with a setup has an index below this (its parts' ids end below the others')
+OTHER_PART_GFX_OBJ_BASE = 0x01FE0000  # GfxObj id of part 0 of other mover 0's Setup of several parts (scene/8 others[].setup)
+MAX_SETUP_OTHERS = 0x1000  # an other with a setup has an index below this (its parts' ids end below the buildings')
 BUILDING_GFX_OBJ_BASE = 0x01FF0000  # GfxObj id of building 0's shell
 MAX_BUILDINGS = 0xFFFF
 MOVER_GFX_OBJ_ID = 0x01000000  # the mover's part
@@ -402,15 +407,16 @@ def setup_records(rec: SetupRec, index: int, drawing: bool = False) -> ObjectRec
     GfxObjs are drawn too (`gfx_obj_physics`)."""
     if not 0 <= index < MAX_SETUP_OBJECTS:
         raise ValueError(f"a static with a setup has an index in 0..{MAX_SETUP_OBJECTS - 1}, got {index}")
-    if not 1 <= len(rec.parts) <= MAX_PARTS:
-        raise ValueError(f"a static's setup has 1..{MAX_PARTS} parts, got {len(rec.parts)}")
+    if not 0 <= len(rec.parts) <= MAX_PARTS:
+        raise ValueError(f"a static's setup has 0..{MAX_PARTS} parts, got {len(rec.parts)}")
     ids = [PART_GFX_OBJ_BASE + MAX_PARTS * index + k for k in range(len(rec.parts))]
     parts = tuple(DatRecord(i, "GfxObj", gfx_obj_physics(i, p.shape, drawing)) for i, p in zip(ids, rec.parts))
     setup_id = SETUP_BASE + index
-    scaled = rec.parts[0].scale is not None
+    scaled = bool(rec.parts) and rec.parts[0].scale is not None
     body = setup(setup_id, ids, spheres=[(s.center, s.radius) for s in rec.spheres],
                  cylspheres=[(c.low_point, c.radius, c.height) for c in rec.cylspheres],
-                 placement=[p.frame for p in rec.parts], default_scale=[p.scale for p in rec.parts] if scaled else None,
+                 placement=[p.frame for p in rec.parts] if rec.parts else None,
+                 default_scale=[p.scale for p in rec.parts] if scaled else None,
                  parent_index=rec.parent_index, default_script=rec.default_script,
                  default_animation=0 if rec.default_animation is None else STATIC_ANIMATION_BASE + index)
     records = parts + (DatRecord(setup_id, "SetupModel", body),)
@@ -450,11 +456,25 @@ def other_records(other: OtherMover, index: int) -> ObjectRecords:
         raise ValueError(f"at most {MAX_OTHERS + 1} other movers have a Setup id")
     did = OTHER_SETUP_BASE + index
     sorting = other.sorting_sphere
-    body = setup(did, [MOVER_GFX_OBJ_ID], spheres=[(s.center, s.radius) for s in other.spheres],
+    rec = other.setup
+    parts, placement, scale, cylspheres = (), None, None, ()
+    if rec is not None:  # scene/8 others[].setup: its parts as a static's Setup writes them (`setup_records`)
+        if not 0 <= index < MAX_SETUP_OTHERS:
+            raise ValueError(f"another mover with a setup has an index in 0..{MAX_SETUP_OTHERS - 1}, got {index}")
+        if len(rec.parts) > MAX_PARTS:
+            raise ValueError(f"a setup has at most {MAX_PARTS} parts, got {len(rec.parts)}")
+        ids = [OTHER_PART_GFX_OBJ_BASE + MAX_PARTS * index + k for k in range(len(rec.parts))]
+        parts = tuple(DatRecord(i, "GfxObj", gfx_obj_physics(i, p.shape)) for i, p in zip(ids, rec.parts))
+        placement = [p.frame for p in rec.parts] if rec.parts and rec.placement else None
+        scale = [p.scale for p in rec.parts] if rec.parts and rec.parts[0].scale is not None else None
+        cylspheres = [(c.low_point, c.radius, c.height) for c in rec.cylspheres]
+    body = setup(did, [MOVER_GFX_OBJ_ID] if rec is None else [p.id for p in parts],
+                 spheres=[(s.center, s.radius) for s in other.spheres], cylspheres=cylspheres,
                  step_up=other.step_up_height, step_down=other.step_down_height,
+                 placement=placement, default_scale=scale,
                  holding_locations=holding_location_triples(other.holding_locations),
                  sorting_sphere=((0.0, 0.0, 0.0), 0.0) if sorting is None else (sorting.center, sorting.radius))
-    return ObjectRecords(did, (DatRecord(did, "SetupModel", body),))
+    return ObjectRecords(did, parts + (DatRecord(did, "SetupModel", body),))
 
 
 def holding_location_triples(locations) -> list:
@@ -860,7 +880,7 @@ def dat_world(scene: Scene) -> DatWorld:
 
 
 __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatOther", "DatStatic", "DatWorld",
-           "other_records", "OTHER_SETUP_BASE",
+           "other_records", "OTHER_SETUP_BASE", "OTHER_PART_GFX_OBJ_BASE",
            "dat_world", "building_model_records", "building_records", "has_objects", "BUILDING_GFX_OBJ_BASE",
            "cell_dat_records", "environment_records", "env_cell_record", "environment_record", "landblock_info_record",
            "env_cell_stabs", "mover_records", "scene_records", "SceneRecords", "MOVER_GFX_OBJ_ID", "MOVER_SETUP_ID", "DatRecord", "ObjectRecords", "static_records", "setup_records", "GFX_OBJ_BASE", "PART_GFX_OBJ_BASE", "SETUP_BASE", "STATIC_ANIMATION_BASE", "compressed_u32",

@@ -125,6 +125,15 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "setup.multipart": (lambda s: any(o.setup is not None for o in s.objects),
                         "a static object made from a Setup of several parts (each a BSP GfxObj at its placement frame, "
                         "with or without a per-part DefaultScale) and the Setup's spheres and cylspheres (scene/7)"),
+    "setup.multipart_movers": (lambda s: any(o.setup is not None for o in s.others),
+                               "another mover made from a Setup of several parts (scene/8: others[].setup, the parts and "
+                               "cylspheres of a static's setup, with the other's own spheres): ACE's PartArray over several "
+                               "PhysicsParts, each moved to its placement frame by UpdateParts every tick (needs "
+                               "objects.moving)"),
+    "setup.no_parts": (lambda s: any(o.setup is not None and not o.setup.parts for o in s.objects + s.others),
+                       "a static's or another mover's Setup with no parts (scene/8: setup.parts []): ACE's "
+                       "PartArray.InitParts fails, so makeObject's PhysicsObj has no PartArray (a static is then in no "
+                       "cell, an other's enter_world fails)"),
     "doors": (lambda s: s.has_doors,
               "the tick input door: an outdoor static, named by id, opens or closes at a tick with the physics of ACE's "
               "server Door (Open: PhysicsState.Ethereal set on its State; FinalizeClose: cleared, then "

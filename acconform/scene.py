@@ -622,7 +622,8 @@ class PartRec:
 
 @dataclass(frozen=True, slots=True)
 class SetupRec:
-    """A static's Setup of several parts (scene/7): the parts (1..16, each a BSP GfxObj at its
+    """A static's Setup of several parts (scene/7): the parts (1..16, in scene/8 0..16: with none, feature
+    setup.no_parts, ACE's InitParts fails and makeObject's PhysicsObj has no PartArray; each a BSP GfxObj at its
     placement frame, with or without a DefaultScale entry) and the Setup's own spheres and cylspheres
     (any number each). Its Height, Radius and step heights are 0, as every static's Setup's are."""
 
@@ -640,9 +641,15 @@ class SetupRec:
     # whose current frame then places the parts (in place of the placement frames), and InitDefaults sets
     # HasDefaultAnim on a Static object
     default_animation: tuple[Frame, ...] | None = None
+    # scene/8, another mover's setup only (feature setup.multipart_movers): False, the Setup has no placement frames
+    # (JSON "placement": false), so the parts' frames are not written: Sequence.GetCurrAnimFrame is null and
+    # PartArray.UpdateParts moves a part only when there is one (its Pos the owner's Position)
+    placement: bool = True
 
     def to_json(self):
         d = {"parts": [p.to_json() for p in self.parts]}
+        if not self.placement:
+            d["placement"] = False
         if self.default_script:
             d["default_script"] = write_id(self.default_script)
         if self.default_animation is not None:
@@ -656,13 +663,17 @@ class SetupRec:
         return d
 
     @staticmethod
-    def from_json(r: Reader, v8: bool = True) -> "SetupRec":
-        """`v8`: the format holds `parent_index`, `default_script` and `default_animation` (scene/8)."""
+    def from_json(r: Reader, v8: bool = True, mover: bool = False) -> "SetupRec":
+        """`v8`: the format holds `parent_index`, `default_script` and `default_animation` (scene/8), and a Setup with
+        no parts (feature setup.no_parts); `mover`: another mover's setup (scene/8), which may have `placement` false."""
         for name in ("parent_index", "default_script", "default_animation"):
             if not v8 and isinstance(r.value, dict) and name in r.value:
                 r[name].fail(f"{name} needs format {FORMAT!r} (older formats have none)")
-        r.obj({"parts", "spheres", "cylspheres", *(("parent_index", "default_script", "default_animation") if v8 else ())})
-        parts = tuple(PartRec.from_json(p) for p in r["parts"].list(min_count=1, max_count=MAX_SETUP_PARTS))
+        if not mover and isinstance(r.value, dict) and "placement" in r.value:
+            r["placement"].fail("a static's Setup has its placement frame (placement false is another mover's only)")
+        r.obj({"parts", "spheres", "cylspheres", *(("parent_index", "default_script", "default_animation") if v8 else ()),
+               *(("placement",) if mover else ())})
+        parts = tuple(PartRec.from_json(p) for p in r["parts"].list(min_count=0 if v8 else 1, max_count=MAX_SETUP_PARTS))
         scaled = [p.scale is not None for p in parts]
         if any(scaled) and not all(scaled):
             r["parts"][scaled.index(False)].fail(
@@ -681,9 +692,14 @@ class SetupRec:
         if v8 and r.given("default_animation"):
             default_animation = tuple(Frame.from_json(f) for f in r["default_animation"].list(min_count=len(parts),
                                                                                               max_count=len(parts)))
+        placement = r["placement"].bool_() if mover and r.given("placement") else True
+        if not placement:
+            for k, p in enumerate(parts):
+                if p.frame != Frame((0.0, 0.0, 0.0)):
+                    r["parts"][k].fail("a Setup with placement false has no frames for its parts: omit origin and orientation")
         return SetupRec(parts, spheres, cylspheres, parent_index,
                         default_script=r["default_script"].id_() if v8 and r.given("default_script") else 0,
-                        default_animation=default_animation)
+                        default_animation=default_animation, placement=placement)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1486,7 +1502,11 @@ class OtherMover:
 
     `report_collisions` is its WorldObject's PropertyBool.ReportCollisions (None: unset, as made; feature
     objects.report_collisions), which a weenie may carry: false, a Player's or a Creature's OnCollideObject with it
-    returns at once. InitPhysicsObj makes the PhysicsState bit the property's, so `state` agrees with it."""
+    returns at once. InitPhysicsObj makes the PhysicsState bit the property's, so `state` agrees with it.
+
+    `setup` (feature setup.multipart_movers) makes its Setup one of several BSP parts, as a static's (`SetupRec`: the
+    parts at their placement frames, or none with `placement` false, their DefaultScale and the Setup's cylspheres;
+    its spheres stay `spheres`); with no parts (feature setup.no_parts) ACE's makeObject gives it no PartArray."""
 
     id: int
     weenie: str
@@ -1504,6 +1524,10 @@ class OtherMover:
     parent: ChildOf | None = None
     launch: Launch | None = None  # a projectile's (weenie ammunition or spell_projectile): made at the start, in the world from its launch
     report_collisions: bool | None = None  # the WorldObject's PropertyBool.ReportCollisions (None: unset)
+    # scene/8 (feature setup.multipart_movers): its Setup's parts (each a BSP GfxObj at its placement frame, with or
+    # without a DefaultScale entry) and cylspheres, as a static's `setup` gives them; its spheres stay `spheres`.
+    # None: one empty part, as before
+    setup: SetupRec | None = None
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
@@ -1524,13 +1548,23 @@ class OtherMover:
             d["launch"] = self.launch.to_json(self.weenie == "spell_projectile")
         if self.report_collisions is not None:
             d["report_collisions"] = self.report_collisions
+        if self.setup is not None:
+            d["setup"] = self.setup.to_json()
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch",
-               "report_collisions"})
+               "report_collisions", "setup"})
+        setup = None
+        if r.given("setup"):
+            setup = SetupRec.from_json(r["setup"], mover=True)
+            for name, given in (("spheres", setup.spheres), ("parent_index", setup.parent_index is not None),
+                                ("default_script", setup.default_script), ("default_animation", setup.default_animation is not None)):
+                if given:
+                    r["setup"][name].fail(f"another mover's setup gives parts and cylspheres only ({name}: "
+                                          + ("its spheres are the other's own `spheres`)" if name == "spheres" else "none)"))
         parent = ChildOf.from_json(r["parent"]) if r.given("parent") else None
         if parent is not None and r.given("begin"):
             r["begin"].fail("a child enters the world with its parent (set_parent, not enter_world): omit begin")
@@ -1579,7 +1613,7 @@ class OtherMover:
             player_killer_status=pks,
             holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
             sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
-            parent=parent, launch=launch, report_collisions=report)
+            parent=parent, launch=launch, report_collisions=report, setup=setup)
 
 
 ENGINE_MODES = ("server", "client")
@@ -1694,7 +1728,7 @@ class Scene:
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
                 self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
-                                         or o.setup.default_animation is not None) for o in self.objects):
+                                         or o.setup.default_animation is not None or not o.setup.parts) for o in self.objects):
             return FORMAT
         if any(o.setup is not None for o in self.objects) or self.has_doors:
             return FORMAT_V7

@@ -1041,3 +1041,97 @@ def validate_world(scene: Scene) -> Scene:
     from acconform.scene import validate_scene
 
     return validate_scene(scene)
+
+
+# ---------------------------------------------------------------- multi-part movers (issue 41)
+
+# another mover made from a Setup of several parts (scene/8 others[].setup, feature setup.multipart_movers)
+MULTIPART_PART_COUNTS = st.sampled_from((2, 2, 3, 4, 5, 8, 12, 16))
+# how the other collides: its spheres (as before), its Setup's cylspheres, or its parts' BSPs (HasPhysicsBSP set and,
+# for a GenericObject, no spheres: FindObjCollisions tries the parts only when the State has HasPhysicsBSP)
+MULTIPART_BODIES = st.sampled_from(("spheres", "cylspheres", "bsp", "bsp", "bsp-sphereless"))
+MULTIPART_POLICIES = st.sampled_from(("head_on", "side_on", "chase", "doorway", "touch", "approach", "house"))
+# the Setup's layout: its parts at their placement frames; "bare", no placement frames (UpdateParts then leaves the
+# parts where PhysicsPart made them); "empty", no parts at all (InitParts fails: makeObject's PhysicsObj has no PartArray)
+MULTIPART_LAYOUTS = st.sampled_from(("placed",) * 6 + ("bare", "bare", "empty", "empty"))
+# a static of a Setup with no parts beside them, at the other's start, Static (with HasPhysicsBSP or not)
+EMPTY_STATICS = st.sampled_from((False, False, False, True))
+EMPTY_STATIC_STATES = st.sampled_from((STATIC_BSP, int(PhysicsState.Static)))
+
+
+def _multipart_setup(draw, cylspheres: bool):
+    """A Setup of 2-16 BSP box parts, each at its own frame (an offset, a lift and a yaw), with or without a
+    DefaultScale entry per part, and 0-2 cylspheres."""
+    from acconform.scene import CylSphereShape, PartRec, SetupRec
+
+    from . import objects as ob
+
+    scaled = draw(ob.SCALED_PARTS)
+    parts = []
+    for _ in range(draw(MULTIPART_PART_COUNTS)):
+        shape = sh.box(draw(ob.PART_SIDES), draw(ob.PART_SIDES), dr.take(draw, ob.PART_HEIGHTS))
+        frame = Frame((dr.take(draw, ob.PART_OFFSETS), dr.take(draw, ob.PART_OFFSETS), dr.take(draw, ob.PART_LIFTS)),
+                      ob._yaw_quat(dr.take(draw, ob.PART_YAWS)))
+        parts.append(PartRec(shape, frame, tuple(map(to_f32, dr.take(draw, ob.PART_SCALES))) if scaled else None))
+    cyls = ()
+    if cylspheres:
+        cyls = tuple(CylSphereShape((dr.take(draw, ob.PART_OFFSETS), dr.take(draw, ob.PART_OFFSETS), 0.0),
+                                       draw(ob.SETUP_RADII), dr.take(draw, ob.PART_HEIGHTS))
+                     for _ in range(draw(st.integers(1, 2))))
+    return SetupRec(tuple(parts), (), cyls)
+
+
+def draw_multipart_movers(draw, clock) -> Scene:
+    """A movers scene (head-on, side-on, a chase, through a doorway, a touch, an approach or at a house's corner, whose
+    EnvCells may hold the static of no parts) whose first other mover in the world is made
+    from a Setup of several parts (`_multipart_setup`): the mover meets its spheres, its cylspheres or its parts' BSPs
+    (`MULTIPART_BODIES`), each part placed at its frame by UpdateParts every tick."""
+    policy = draw(MULTIPART_POLICIES)
+    scene = _house_corner(draw, clock) if policy == "house" else draw_movers_ticks(draw, clock, policy)
+    body = draw(MULTIPART_BODIES)
+    for k, o in enumerate(scene.others):
+        if o.begin is not None and o.launch is None and o.parent is None:
+            break
+    else:
+        return scene.replace(name="multipart:none:" + scene.name)
+    setup = _multipart_setup(draw, body == "cylspheres")
+    layout = draw(MULTIPART_LAYOUTS)
+    if layout == "bare":
+        setup = replace(setup, parts=tuple(replace(p, frame=Frame((0.0, 0.0, 0.0))) for p in setup.parts), placement=False)
+    elif layout == "empty":
+        setup = replace(setup, parts=())
+    state, spheres = o.state, o.spheres
+    if body.startswith("bsp"):
+        state |= int(PhysicsState.HasPhysicsBSP)
+    if body == "bsp-sphereless" and o.weenie == "object":  # a GenericObject's Setup may have none (objects.sphereless)
+        spheres = ()
+    other = replace(o, setup=setup, state=state, spheres=spheres)
+    scene = _replace_other(scene, other)
+    name = f"multipart:{body}:{layout}-{len(setup.parts)}:"
+    if draw(EMPTY_STATICS):  # a static of no parts: no PartArray, so add_obj_to_cell's enter_cell puts it in no cell
+        at = replace(o.begin, frame=Frame(o.begin.frame.origin))
+        if scene.env_cells and draw(dr.BOOLEANS):  # a stab of an EnvCell: init_static_objects destroys it
+            cell = scene.env_cells[0]
+            at = Position(cell.id, Frame(cell.frame.origin))
+        indoor = at.cell & 0xFFFF >= 0x100  # a stab: init_static_objects sets no state
+        static = StaticObject(0x7D0000F0, at, None, int(PhysicsState.Static) if indoor else draw(EMPTY_STATIC_STATES),
+                              setup=replace(setup, parts=(), cylspheres=(), placement=True))
+        scene = scene.replace(objects=scene.objects + (static,))
+        name += "empty-stab:" if indoor else "empty-static:"
+    return validate_world(scene.replace(name=name + scene.name))
+
+
+def draw_no_part_child(draw, clock) -> Scene:
+    """A carry (`_carry`) whose first child is made from a Setup of no parts (scene/8 setup.parts [], feature
+    setup.no_parts): makeObject gives it no PartArray, and set_parent, UpdateChild and unset_parent meet a child
+    without one."""
+    from acconform.scene import SetupRec
+
+    scene = _carry(draw, clock)
+    for child in scene.others:
+        if child.parent is not None:
+            break
+    else:
+        return scene.replace(name="multipart:none:" + scene.name)
+    scene = _replace_other(scene, replace(child, setup=SetupRec(())))
+    return validate_world(scene.replace(name="multipart:child:empty-0:" + scene.name))

@@ -385,8 +385,9 @@ class EnvCell(ObjCell):
                 static_obj = PhysicsObj.make_object(self.static_object_ids[i], 0, False, lscape.portal_dat)
                 static_obj.dat_object = True
                 static_obj.add_obj_to_cell(self, self.static_object_frames[i], lscape)
-                if static_obj.cur_cell is None:
-                    raise NotImplementedError("a static with no cell (PhysicsObj.DestroyObject) is not ported")
+                if static_obj.cur_cell is None:  # a stab of a Setup with no parts: no PartArray, so enter_cell left it out
+                    static_obj.destroy_object()
+                    continue
 
                 self.static_objects.append(static_obj)
 

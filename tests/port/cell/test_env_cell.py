@@ -355,3 +355,22 @@ def test_an_env_cells_stabs_become_statics_registered_in_the_cell_and_the_neighb
     assert list(static.shadow_objects) == [A, B]
     assert a.shadow_object_list[0].physics_obj is static
     assert run_scene(scene).static_cells == ((A, B),)
+
+
+@pytest.mark.anchor("CEnvCell::init_static_objects")
+def test_a_stab_of_a_setup_with_no_parts_is_destroyed_and_left_out_of_the_cell():
+    """A Setup with no parts makes no PartArray (InitParts fails), so add_obj_to_cell's enter_cell leaves CurCell
+    null: ACE's init_static_objects destroys that stab and goes on (EnvCell.cs init_static_objects)."""
+    from acconform.scene import Position as PosRec, SetupRec, StaticObject
+    from object_scenes import box
+
+    env, cells = two_rooms()
+    empty = StaticObject(0x70000000, PosRec(A, FrameRec((62.0, 60.0, 20.0))), None, setup=SetupRec(()))
+    boulder = StaticObject(0x70000001, PosRec(A, FrameRec((64.5, 60.0, 20.0))), box(2.0, 2.0, 2.0))
+    scene = indoor_scene(env, cells, (61, 60, 20), (61, 60, 20), state=WALK, transient=GROUNDED, begin_cell=A,
+                         end_cell=A, objects=(empty, boulder))
+    lscape, _ = world(scene, EXACT)
+    a = lscape.get_landcell(A)
+    (static,) = a.static_objects
+    assert static.part_array is not None and static.cur_cell is a
+    assert run_scene(scene).static_cells == ((), (A, B))
