@@ -497,6 +497,7 @@ namespace Acconform.Oracle
                 bool updated;
                 try
                 {
+                    movedObjects.Clear();
                     ApplyInputs(obj, step);
                     if (step.Others != null)
                         foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o, obj);
@@ -515,8 +516,15 @@ namespace Acconform.Oracle
                             othersUpdated.Add(false);
                         }
                         else
-                            othersUpdated.Add(o.Launched && UpdateObjectPhysics(o.WorldObject, o.CreationTime));
+                        {
+                            var landblockUpdate = o.Launched && UpdateObjectPhysics(o.WorldObject, o.CreationTime);
+                            othersUpdated.Add(landblockUpdate);
+                            if (landblockUpdate) movedObjects.Add(o.WorldObject);  // Landblock.TickPhysics' movedObjects
+                        }
                     }
+                    // LandblockManager.TickPhysics: after every landblock's physics, each object that changed landblocks
+                    foreach (var moved in movedObjects)
+                        RelocateObjectForPhysics(moved);
                 }
                 catch (Exception e)
                 {
@@ -535,6 +543,33 @@ namespace Acconform.Oracle
         }
 
         static readonly List<bool> othersUpdated = new List<bool>();
+        static readonly List<ACE.Server.WorldObjects.WorldObject> movedObjects = new List<ACE.Server.WorldObjects.WorldObject>();
+
+        /// <summary>port: relocate_object_for_physics. LandblockManager.RelocateObjectForPhysics(wo, adjacencyMove: true) for
+        /// a projectile whose UpdateObjectPhysics answered landblockUpdate (its Location's LandblockId is its CurCell's, as
+        /// UpdateObjectPhysics sets it): the new block by GetLandblock(id, loadAdjacents: true), the old block's
+        /// RemoveWorldObjectForPhysics(Guid, true) (the stand-in's RemoveWorldObject: RemoveWorldObjectInternal, ACE's own),
+        /// then the new block's AddWorldObjectForPhysics (AddWorldObjectInternal's physics, which finds its CurCell set).
+        /// GetLandblock(id, true) is ACE's own steps on the scene's landblocks: the new block found loaded, then
+        /// SetAdjacents(landblock, true, true) (ACE's own), which gives its physics landblock its loaded neighbours anew;
+        /// its loads of neighbours the scene lacks are left out (a real DAT's landblock with no server objects: what
+        /// SetAdjacents would add is read only by ObjectMaint's visibility lists). IsDormant is never set in a scene (a
+        /// server sets it after minutes without players), so a SpellProjectile is never destroyed here.</summary>
+        static void RelocateObjectForPhysics(ACE.Server.WorldObjects.WorldObject wo)
+        {
+            var oldBlock = wo.CurrentLandblock;
+            var cellId = wo.PhysicsObj.CurCell.ID;
+            var newBlock = ACE.Server.Managers.LandblockManager.GetLandblock(new LandblockId(cellId | 0xFFFF), false);
+            if (setAdjacents == null)
+                setAdjacents = typeof(ACE.Server.Managers.LandblockManager).GetMethod("SetAdjacents", BindingFlags.NonPublic | BindingFlags.Static);
+            setAdjacents.Invoke(null, new object[] { newBlock, true, true });
+
+            // Remove from the old landblock -- force (ACE)
+            if (oldBlock != null)
+                oldBlock.RemoveWorldObject(wo.Guid, true);
+            // Add to the new landblock (ACE)
+            AddWorldObject(wo, newBlock, cellId, wo.PhysicsObj.Position.Frame.Origin, wo.PhysicsObj.Position.Frame.Orientation);
+        }
 
         // ------------------------------------------------------------------ projectiles (issue 41)
         // The physics calls ACE's server code makes on a projectile, as port/missile_launch.py makes them: ACE's own
