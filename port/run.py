@@ -839,6 +839,10 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
                                                 by_id[launch.target] if launch.target is not None else None,
                                                 landblocks, lscape, trace)
                     stepped[k] = True
+            # Landblock.TickPhysics' first step, on each server landblock (the launches above are a server's actions,
+            # run after the previous tick's physics; it reads no clock)
+            for landblock in landblocks.values():
+                landblock.process_pending_world_object_additions_and_removals()
             timer.set(time)
             if ticks.driver == "update_object":
                 updated = mover.update_object(lscape, trace)

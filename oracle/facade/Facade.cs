@@ -503,6 +503,10 @@ namespace Acconform.Oracle
                         foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o, obj);
                     foreach (var o in sceneOthers)
                         if (o.HasLaunch && o.LaunchTick == ticksRun) SceneLaunch(o, obj);
+                    // Landblock.TickPhysics' first step, on each loaded landblock (the launches above are a server's actions,
+                    // run after the previous tick's physics; it reads no clock)
+                    foreach (var xy in tableUsed)
+                        ProcessPendingWorldObjectAdditionsAndRemovals(LandblockTable()[xy.Item1, xy.Item2]);
                     SetClock(step.Time);
                     updated = tickDriver == 0 ? obj.update_object() : UpdatePlayerPosition(obj, step.RequestPos);
                     othersUpdated.Clear();
@@ -544,6 +548,30 @@ namespace Acconform.Oracle
 
         static readonly List<bool> othersUpdated = new List<bool>();
         static readonly List<ACE.Server.WorldObjects.WorldObject> movedObjects = new List<ACE.Server.WorldObjects.WorldObject>();
+
+        /// <summary>port: Landblock.process_pending_world_object_additions_and_removals. Landblock's private
+        /// ProcessPendingWorldObjectAdditionsAndRemovals (the stand-in lacks it), as far as its tables reach: each pending
+        /// addition into worldObjects (worldObjects[key] = value), then each pending removal out of it, both lists emptied.
+        /// Its players, creature, heartbeat and generator lists and the KeepAlive weenie are no physics.</summary>
+        static void ProcessPendingWorldObjectAdditionsAndRemovals(ACE.Server.Entity.Landblock landblock)
+        {
+            var t = typeof(ACE.Server.Entity.Landblock);
+            var worldObjects = (System.Collections.IDictionary)Need(t.GetField("worldObjects", AnyInstance), "worldObjects").GetValue(landblock);
+            var pendingAdditions = (System.Collections.IDictionary)Need(t.GetField("pendingAdditions", AnyInstance), "pendingAdditions").GetValue(landblock);
+            var pendingRemovals = (System.Collections.IList)Need(t.GetField("pendingRemovals", AnyInstance), "pendingRemovals").GetValue(landblock);
+            if (pendingAdditions.Count > 0)
+            {
+                foreach (System.Collections.DictionaryEntry kvp in pendingAdditions)
+                    worldObjects[kvp.Key] = kvp.Value;
+                pendingAdditions.Clear();
+            }
+            if (pendingRemovals.Count > 0)
+            {
+                foreach (var objectGuid in pendingRemovals)
+                    worldObjects.Remove(objectGuid);
+                pendingRemovals.Clear();
+            }
+        }
 
         /// <summary>port: relocate_object_for_physics. LandblockManager.RelocateObjectForPhysics(wo, adjacencyMove: true) for
         /// a projectile whose UpdateObjectPhysics answered landblockUpdate (its Location's LandblockId is its CurCell's, as

@@ -298,7 +298,8 @@ def _relocation_scene(blocked: bool):
 
 @pytest.mark.anchor("ACE.Server/Managers/LandblockManager.cs:GetLandblock")
 def test_a_spell_flying_into_the_next_landblock_is_moved_there_and_left_in_the_world(monkeypatch):
-    """LandblockManager.RelocateObjectForPhysics after the tick it crosses in: the old landblock lets it go without
+    """LandblockManager.RelocateObjectForPhysics after the tick it crosses in: the old landblock, whose worldObjects
+    took it at a tick's start (ProcessPendingWorldObjectAdditionsAndRemovals), lets it go (pendingRemovals) without
     destroying it (adjacencyMove), the new one files it (AddWorldObjectInternal finds its CurCell set: no second
     enter_world), and GetLandblock(id, true)'s SetAdjacents gives the new physics landblock its neighbour anew."""
     from acconform.port import missile_launch
@@ -313,7 +314,7 @@ def test_a_spell_flying_into_the_next_landblock_is_moved_there_and_left_in_the_w
         cell_before = wo.physics_obj.cur_cell.id
         relocate(wo, landblocks, lscape, trace)
         new = wo.current_landblock
-        seen.append((old.id, new.id, wo.guid in old.pending_additions, new.pending_additions.get(wo.guid) is wo,
+        seen.append((old.id, new.id, wo.guid in old.pending_removals, new.pending_additions.get(wo.guid) is wo,
                      wo.physics_obj.cur_cell.id == cell_before,
                      [a.raw for a in lscape.landblocks[new.id << 16 | 0xFFFF].adjacents]))
 
@@ -321,5 +322,18 @@ def test_a_spell_flying_into_the_next_landblock_is_moved_there_and_left_in_the_w
     out = run_scene(scene, runtime="coreclr")
     assert all(t.error is None for t in out.ticks)
     first, second = (b.id >> 16 for b in scene.landblocks)
-    assert seen == [(first, second, False, True, True, [first << 16 | 0xFFFF])]
+    assert seen == [(first, second, True, True, True, [first << 16 | 0xFFFF])]
 
+
+
+def test_a_landblocks_tick_files_its_pending_additions_and_drops_its_pending_removals():
+    """ProcessPendingWorldObjectAdditionsAndRemovals: additions into worldObjects, then removals out of it."""
+    from acconform.port.server_landblock import Landblock as ServerLandblock
+
+    lb = ServerLandblock(0xA9B4)
+    a, b = object(), object()
+    lb.world_objects[1] = a
+    lb.pending_additions[2] = b
+    lb.pending_removals.append(1)
+    lb.process_pending_world_object_additions_and_removals()
+    assert lb.world_objects == {2: b} and not lb.pending_additions and not lb.pending_removals
