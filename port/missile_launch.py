@@ -407,6 +407,33 @@ def update_object_physics(wo: WorldObject, lscape, trace=None) -> bool:
     return landblock_update
 
 
+@harness("LandblockManager.RelocateObjectForPhysics(wo, adjacencyMove: true) for a projectile that changed landblocks: "
+         "GetLandblock(id, true) on the scene's landblocks, the old block's RemoveWorldObjectForPhysics, the new block's AddWorldObjectForPhysics")
+def relocate_object_for_physics(wo: WorldObject, landblocks: dict, lscape, trace=None) -> None:
+    """After a tick's physics (LandblockManager.TickPhysics' movedObjects), for a projectile whose
+    update_object_physics answered landblockUpdate; its Location's LandblockId is its CurCell's (UpdateObjectPhysics
+    sets it). GetLandblock(Location.LandblockId, loadAdjacents: true) finds the new block loaded (the physics could
+    reach its cell) and runs SetAdjacents(landblock, true, true), which gives its physics landblock its loaded
+    neighbours anew; its loads of neighbours the scene lacks are left out, as the facade leaves them (a real DAT's
+    landblock, with no server objects: what SetAdjacents would add is read only by ObjectMaint's visibility lists).
+    IsDormant is never set in a scene, so a SpellProjectile is never destroyed here. Then the old block's
+    RemoveWorldObjectForPhysics(Guid, adjacencyMove: true) (left in the world: no DestroyObject) and the new block's
+    AddWorldObjectForPhysics: AddWorldObjectInternal, which finds its CurCell set (no AddPhysicsObj)."""
+    old_block = wo.current_landblock
+    cell_id = wo.physics_obj.cur_cell.id
+    manager = lscape.landblock_manager
+    server_block = manager.get_landblock(cell_id | 0xFFFF, None)  # loaded: no new Landblock
+    manager.set_adjacents(server_block, True, True)
+    new_block = landblocks.setdefault(cell_id >> 16, ServerLandblock(cell_id >> 16))
+
+    # Remove from the old landblock -- force (ACE)
+    if old_block is not None:
+        old_block.remove_world_object(wo.guid, adjacency_move=True)
+    # Add to the new landblock (ACE)
+    frame = wo.physics_obj.position.frame
+    add_world_object(wo, new_block, Position(cell_id, AFrame(frame.origin, frame.orientation)), lscape, trace)
+
+
 # ---------------------------------------------------------------- a scene's launch
 
 

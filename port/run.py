@@ -815,11 +815,14 @@ def update_player_position(mover: PhysicsObj, request_pos: Position, location_ce
 
 
 @harness("steps the other movers after the mover, in `others` order, as the oracle's facade does: update_object, or a projectile's UpdateObjectPhysics")
-def step_others(launches, stepped: list, lscape: LScape, trace) -> dict:
+def step_others(launches, stepped: list, lscape: LScape, trace, landblocks: dict) -> dict:
     """`launches`: (PhysicsObj, its Launch or None) per other mover; `stepped`: whether each is in the world (a
     projectile: launched), updated here when a projectile's landblock no longer holds it (destroyed, or never
-    entered: the landblock ticks it no more). Returns {id: updated} for those stepped."""
+    entered: the landblock ticks it no more). A projectile that changed landblocks is then relocated
+    (missile_launch.relocate_object_for_physics) into `landblocks` (the run's server Landblocks by id), as
+    LandblockManager.TickPhysics relocates its movedObjects. Returns {id: updated} for those stepped."""
     others_updated = {}
+    moved = []
     for k, (obj, launch) in enumerate(launches):
         if not stepped[k]:
             continue
@@ -830,7 +833,12 @@ def step_others(launches, stepped: list, lscape: LScape, trace) -> dict:
             if wo.current_landblock is None:
                 stepped[k] = False
                 continue
-            others_updated[obj.id] = missile_launch.update_object_physics(wo, lscape, trace)
+            others_updated[obj.id] = landblock_update = missile_launch.update_object_physics(wo, lscape, trace)
+            if landblock_update:
+                moved.append(wo)  # Landblock.TickPhysics' movedObjects
+    # LandblockManager.TickPhysics: after every landblock's physics, each object that changed landblocks
+    for wo in moved:
+        missile_launch.relocate_object_for_physics(wo, landblocks, lscape, trace)
     return others_updated
 
 
@@ -876,13 +884,17 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
                                                 by_id[launch.target] if launch.target is not None else None,
                                                 landblocks, lscape, trace)
                     stepped[k] = True
+            # Landblock.TickPhysics' first step, on each server landblock (the launches above are a server's actions,
+            # run after the previous tick's physics; it reads no clock)
+            for landblock in landblocks.values():
+                landblock.process_pending_world_object_additions_and_removals()
             timer.set(time)
             if ticks.driver == "update_object":
                 updated = mover.update_object(lscape, trace)
             else:
                 updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),
                                                                 location_cell, lscape, trace)
-            others_updated = step_others(launches, stepped, lscape, trace)
+            others_updated = step_others(launches, stepped, lscape, trace, landblocks)
         except Exception as e:
             states.append(TickState(error=verdict(e)))
             break

@@ -1,9 +1,9 @@
 """Landblock (ACE.Server.Entity.Landblock): the server landblock a launched projectile joins -- AddWorldObjectInternal's bookkeeping, RemoveWorldObject, GetObject.
 
 Harness glue around ACE's physics, as the oracle's stand-in Landblock has it: a landblock holds its
-WorldObjects in worldObjects (after its next tick's ProcessPendingWorldObjectAdditionsAndRemovals) or
-pendingAdditions (added since); a scene's ticks run no landblock tick, so a projectile stays in
-pendingAdditions. RemoveWorldObject(Internal) is ACE's as far as the physics reaches: the object found
+WorldObjects in worldObjects (after its next tick's ProcessPendingWorldObjectAdditionsAndRemovals, which each
+scene tick runs before its physics, as Landblock.TickPhysics does) or pendingAdditions (added since: a launch, or
+a relocation after the tick's physics). RemoveWorldObject(Internal) is ACE's as far as the physics reaches: the object found
 in neither table is left alone (a warning); found, it leaves the table, its CurrentLandblock is
 cleared and its PhysicsObj destroyed (DestroyObject). GetObject answers null, as the stand-in's does
 (no scene's WeenieObject.DoCollisionEnd finds its target).
@@ -25,6 +25,20 @@ class Landblock:
         self.world_objects: dict = {}
         self.pending_additions: dict = {}
         self.pending_removals: list = []
+
+    @harness("Landblock.ProcessPendingWorldObjectAdditionsAndRemovals' tables: pending additions into worldObjects, pending removals out")
+    def process_pending_world_object_additions_and_removals(self) -> None:
+        """TickPhysics' first step (ACE's private method, which the stand-in lacks: the facade writes it so too). Its
+        players, creature, heartbeat and generator lists and the KeepAlive weenie are no physics."""
+        if self.pending_additions:
+            for key, value in self.pending_additions.items():
+                self.world_objects[key] = value
+            self.pending_additions.clear()
+
+        if self.pending_removals:
+            for object_guid in self.pending_removals:
+                self.world_objects.pop(object_guid, None)
+            self.pending_removals.clear()
 
     @harness("Landblock.AddWorldObjectInternal's last step for an object that entered: pendingAdditions[wo.Guid] = wo")
     def add_pending(self, wo) -> None:

@@ -576,3 +576,66 @@ def draw_border_scene(draw, arm: str | None = None) -> Scene:
         name += ":unloaded"
     return validate_scene(Scene(land, mover, (), engine_mode="server", name=name,
                                 ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))
+
+
+# ------------------------------------------------------------------ a projectile flying into the next landblock (issue 41)
+# After a tick's physics, LandblockManager.RelocateObjectForPhysics moves each object whose landblock changed to its
+# new landblock (the old one's RemoveWorldObjectForPhysics with adjacencyMove, the new one's AddWorldObjectForPhysics,
+# GetLandblock(id, true)'s SetAdjacents): these spells are launched inside their launcher's landblock and fly across
+# its edge into the next one, which the scene holds.
+RELOCATION_GAPS = dr.OneOf(st.sampled_from((1.0, 2.0, 4.0)), dr.f32(0.9, 8.0))  # how far short of the edge the caster stands
+
+
+def draw_relocation_scene(draw) -> Scene:
+    """An untargeted spell (along its caster's forward vector: the player's, or a monster's) cast 0.9-8 m short of a
+    landblock's edge, out across it, on flat land of two landblocks side by side (north, east, south or west): it
+    flies into the next landblock, where, one time in two, a monster stands in its path 2-8 m past the edge (some
+    spells strike it there: ProjectileImpact leaves them inert in the landblock they were moved to). Both sides relocate it
+    after the tick it crosses in (port: missile_launch.relocate_object_for_physics; Facade.RelocateObjectForPhysics)."""
+    h = dr.take(draw, HEIGHTS)
+    ground = 2.0 * h
+    n = dr.take(draw, dr.ints(20, 40))
+    dt = draw(DTS)
+    launch_tick = min(dr.take(draw, LAUNCH_TICKS), n - 1)
+    eye = float(dr.take(draw, EYES))
+    gap = float(dr.take(draw, RELOCATION_GAPS))
+    ux, uy = draw(AXES)
+    lb = INNER_BLOCKS[(ux, uy)]
+    nb = _step_block(lb, ux, uy)
+    edge = 192.0 - gap if (ux + uy) > 0 else gap
+    across = float(dr.take(draw, SPOTS))
+    x0, y0 = (edge, across) if ux != 0.0 else (across, edge)
+    tx, ty = x0 - ux * 4.0 + uy * 3.0, y0 - uy * 4.0 - ux * 3.0  # a monster standing by, inside
+    player_launches = draw(st.sampled_from((True, True, False)))
+    monsters = []
+    if player_launches:
+        launcher, mover_at = PLAYER, (x0, y0)
+        monsters.append(_monster(MONSTER, lb, tx, ty, ground))
+    else:
+        launcher, mover_at = CASTER, (tx, ty)
+        monsters.append(_monster(CASTER, lb, x0, y0, ground))
+    blocked = draw(dr.BOOLEANS)
+    if blocked:  # a monster in the spell's path, past the edge (in the next landblock's frame)
+        past = float(dr.take(draw, dr.f32(2.0, 8.0)))
+        bx, by = x0 + ux * (gap + past), y0 + uy * (gap + past)
+        bx, by = bx - 192.0 * ux if abs(ux) > 0.5 else bx, by - 192.0 * uy if abs(uy) > 0.5 else by
+        monsters.append(_monster(MONSTER + 2, nb, bx, by, ground))
+    origin = (to_f32(x0 + ux * 0.8), to_f32(y0 + uy * 0.8), to_f32(ground + eye))
+    launch = Launch(launch_tick, launcher, None, to_f32(dr.take(draw, SPELL_SPEEDS)), origin,
+                    tracking=draw(dr.BOOLEANS))
+    projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(dr.take(draw, SPELL_RADII))),),
+                            Position(_cell(lb, x0, y0), Frame((to_f32(x0), to_f32(y0), to_f32(ground)))), 0.0, 0.0,
+                            state=0, transient_state=0, launch=launch)
+    others = tuple(monsters) + (projectile,)
+    mx, my = mover_at
+    cell = _cell(lb, mx, my)
+    mover = Mover(spheres=BODY, begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(ux, uy))),
+                  end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
+                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"))
+    steps = [TickStep(dt) for _ in range(n)]
+    land = tuple(Landblock(b << 16 | 0xFFFF, (h,) * 81, (0,) * 81) for b in (lb, nb))
+    name = (f"missiles:relocate:spell:{'player' if launcher == PLAYER else 'monster'}"
+            f":{'north' if uy > 0.5 else 'south' if uy < -0.5 else 'east' if ux > 0.5 else 'west'}"
+            + (":blocked" if blocked else ""))
+    return validate_scene(Scene(land, mover, (), engine_mode="server", name=name,
+                                ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))

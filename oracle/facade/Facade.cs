@@ -614,11 +614,16 @@ namespace Acconform.Oracle
                 bool updated;
                 try
                 {
+                    movedObjects.Clear();
                     ApplyInputs(obj, step);
                     if (step.Others != null)
                         foreach (var o in step.Others) ApplyOtherInputs(sceneOthers[o.Index], o, obj);
                     foreach (var o in sceneOthers)
                         if (o.HasLaunch && o.LaunchTick == ticksRun) SceneLaunch(o, obj);
+                    // Landblock.TickPhysics' first step, on each loaded landblock (the launches above are a server's actions,
+                    // run after the previous tick's physics; it reads no clock)
+                    foreach (var xy in tableUsed)
+                        ProcessPendingWorldObjectAdditionsAndRemovals(LandblockTable()[xy.Item1, xy.Item2]);
                     SetClock(step.Time);
                     updated = tickDriver == 0 ? obj.update_object() : UpdatePlayerPosition(obj, step.RequestPos);
                     othersUpdated.Clear();
@@ -632,8 +637,15 @@ namespace Acconform.Oracle
                             othersUpdated.Add(false);
                         }
                         else
-                            othersUpdated.Add(o.Launched && UpdateObjectPhysics(o.WorldObject, o.CreationTime));
+                        {
+                            var landblockUpdate = o.Launched && UpdateObjectPhysics(o.WorldObject, o.CreationTime);
+                            othersUpdated.Add(landblockUpdate);
+                            if (landblockUpdate) movedObjects.Add(o.WorldObject);  // Landblock.TickPhysics' movedObjects
+                        }
                     }
+                    // LandblockManager.TickPhysics: after every landblock's physics, each object that changed landblocks
+                    foreach (var moved in movedObjects)
+                        RelocateObjectForPhysics(moved);
                 }
                 catch (Exception e)
                 {
@@ -652,6 +664,57 @@ namespace Acconform.Oracle
         }
 
         static readonly List<bool> othersUpdated = new List<bool>();
+        static readonly List<ACE.Server.WorldObjects.WorldObject> movedObjects = new List<ACE.Server.WorldObjects.WorldObject>();
+
+        /// <summary>port: Landblock.process_pending_world_object_additions_and_removals. Landblock's private
+        /// ProcessPendingWorldObjectAdditionsAndRemovals (the stand-in lacks it), as far as its tables reach: each pending
+        /// addition into worldObjects (worldObjects[key] = value), then each pending removal out of it, both lists emptied.
+        /// Its players, creature, heartbeat and generator lists and the KeepAlive weenie are no physics.</summary>
+        static void ProcessPendingWorldObjectAdditionsAndRemovals(ACE.Server.Entity.Landblock landblock)
+        {
+            var t = typeof(ACE.Server.Entity.Landblock);
+            var worldObjects = (System.Collections.IDictionary)Need(t.GetField("worldObjects", AnyInstance), "worldObjects").GetValue(landblock);
+            var pendingAdditions = (System.Collections.IDictionary)Need(t.GetField("pendingAdditions", AnyInstance), "pendingAdditions").GetValue(landblock);
+            var pendingRemovals = (System.Collections.IList)Need(t.GetField("pendingRemovals", AnyInstance), "pendingRemovals").GetValue(landblock);
+            if (pendingAdditions.Count > 0)
+            {
+                foreach (System.Collections.DictionaryEntry kvp in pendingAdditions)
+                    worldObjects[kvp.Key] = kvp.Value;
+                pendingAdditions.Clear();
+            }
+            if (pendingRemovals.Count > 0)
+            {
+                foreach (var objectGuid in pendingRemovals)
+                    worldObjects.Remove(objectGuid);
+                pendingRemovals.Clear();
+            }
+        }
+
+        /// <summary>port: relocate_object_for_physics. LandblockManager.RelocateObjectForPhysics(wo, adjacencyMove: true) for
+        /// a projectile whose UpdateObjectPhysics answered landblockUpdate (its Location's LandblockId is its CurCell's, as
+        /// UpdateObjectPhysics sets it): the new block by GetLandblock(id, loadAdjacents: true), the old block's
+        /// RemoveWorldObjectForPhysics(Guid, true) (the stand-in's RemoveWorldObject: RemoveWorldObjectInternal, ACE's own),
+        /// then the new block's AddWorldObjectForPhysics (AddWorldObjectInternal's physics, which finds its CurCell set).
+        /// GetLandblock(id, true) is ACE's own steps on the scene's landblocks: the new block found loaded, then
+        /// SetAdjacents(landblock, true, true) (ACE's own), which gives its physics landblock its loaded neighbours anew;
+        /// its loads of neighbours the scene lacks are left out (a real DAT's landblock with no server objects: what
+        /// SetAdjacents would add is read only by ObjectMaint's visibility lists). IsDormant is never set in a scene (a
+        /// server sets it after minutes without players), so a SpellProjectile is never destroyed here.</summary>
+        static void RelocateObjectForPhysics(ACE.Server.WorldObjects.WorldObject wo)
+        {
+            var oldBlock = wo.CurrentLandblock;
+            var cellId = wo.PhysicsObj.CurCell.ID;
+            var newBlock = ACE.Server.Managers.LandblockManager.GetLandblock(new LandblockId(cellId | 0xFFFF), false);
+            if (setAdjacents == null)
+                setAdjacents = typeof(ACE.Server.Managers.LandblockManager).GetMethod("SetAdjacents", BindingFlags.NonPublic | BindingFlags.Static);
+            setAdjacents.Invoke(null, new object[] { newBlock, true, true });
+
+            // Remove from the old landblock -- force (ACE)
+            if (oldBlock != null)
+                oldBlock.RemoveWorldObject(wo.Guid, true);
+            // Add to the new landblock (ACE)
+            AddWorldObject(wo, newBlock, cellId, wo.PhysicsObj.Position.Frame.Origin, wo.PhysicsObj.Position.Frame.Orientation);
+        }
 
         // ------------------------------------------------------------------ projectiles (issue 41)
         // The physics calls ACE's server code makes on a projectile, as port/missile_launch.py makes them: ACE's own

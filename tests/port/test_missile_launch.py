@@ -281,3 +281,59 @@ def test_a_weenies_report_collisions_property_and_a_thrown_weapon_are_made_as_th
     launch = Launch(0, 0x50000001, 0x80000003, 10.0, (90.0, 97.0, 21.0), rotation_speed=2.0)
     thrown = world_object_of(OtherMover(ARROW_ID, "missile", body, None, 0.0, 0.0, launch=launch))
     assert type(thrown) is Missile and thrown.rotation_speed == 2.0
+
+
+def _relocation_scene(blocked: bool):
+    from hypothesis import strategies as st
+
+    from acconform.strategies.determinism import pinned_constants
+    from acconform.strategies.fast_draw import FastDrawer
+    from acconform.strategies.missiles import draw_relocation_scene
+
+    drawer = FastDrawer(st.composite(draw_relocation_scene)(), 71 * 1000003)
+    with pinned_constants():
+        return next(s for s in (drawer.draw()[0] for _ in range(60)) if s.name.endswith(":blocked") == blocked
+                    and s.ticks.steps[0].dt < 0.05)
+
+
+@pytest.mark.anchor("ACE.Server/Managers/LandblockManager.cs:GetLandblock")
+def test_a_spell_flying_into_the_next_landblock_is_moved_there_and_left_in_the_world(monkeypatch):
+    """LandblockManager.RelocateObjectForPhysics after the tick it crosses in: the old landblock, whose worldObjects
+    took it at a tick's start (ProcessPendingWorldObjectAdditionsAndRemovals), lets it go (pendingRemovals) without
+    destroying it (adjacencyMove), the new one files it (AddWorldObjectInternal finds its CurCell set: no second
+    enter_world), and GetLandblock(id, true)'s SetAdjacents gives the new physics landblock its neighbour anew."""
+    from acconform.port import missile_launch
+    from acconform.port.run import run_scene
+
+    scene = _relocation_scene(blocked=False)
+    seen = []
+    relocate = missile_launch.relocate_object_for_physics
+
+    def watched(wo, landblocks, lscape, trace=None):
+        old = wo.current_landblock
+        cell_before = wo.physics_obj.cur_cell.id
+        relocate(wo, landblocks, lscape, trace)
+        new = wo.current_landblock
+        seen.append((old.id, new.id, wo.guid in old.pending_removals, new.pending_additions.get(wo.guid) is wo,
+                     wo.physics_obj.cur_cell.id == cell_before,
+                     [a.raw for a in lscape.landblocks[new.id << 16 | 0xFFFF].adjacents]))
+
+    monkeypatch.setattr(missile_launch, "relocate_object_for_physics", watched)
+    out = run_scene(scene, runtime="coreclr")
+    assert all(t.error is None for t in out.ticks)
+    first, second = (b.id >> 16 for b in scene.landblocks)
+    assert seen == [(first, second, True, True, True, [first << 16 | 0xFFFF])]
+
+
+
+def test_a_landblocks_tick_files_its_pending_additions_and_drops_its_pending_removals():
+    """ProcessPendingWorldObjectAdditionsAndRemovals: additions into worldObjects, then removals out of it."""
+    from acconform.port.server_landblock import Landblock as ServerLandblock
+
+    lb = ServerLandblock(0xA9B4)
+    a, b = object(), object()
+    lb.world_objects[1] = a
+    lb.pending_additions[2] = b
+    lb.pending_removals.append(1)
+    lb.process_pending_world_object_additions_and_removals()
+    assert lb.world_objects == {2: b} and not lb.pending_additions and not lb.pending_removals

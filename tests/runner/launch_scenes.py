@@ -8,9 +8,9 @@ Writes one scene file per drawn scene (strategies.fast_draw, as a campaign draws
 only the scenes of `--arms` when given and the first K of arm `timeout` (310 ticks each: a shard's replay time);
 `--only ARM` draws that arm alone (`across`, which draw_launch_scene never draws, is drawn so); `--border` draws
 draw_border_scene's launches across a cell line, a landblock's edge or the world's (issue 41's
-shard ticks-0068).
-The missiles kind draws these arms too, as a share of its scenes (strategies/scenes.py MISSILE_WAYS); this draws them
-alone, or one arm alone.
+shard ticks-0068); `--relocate` draws draw_relocation_scene's spells flying into the next landblock (shard ticks-0071).
+The missiles kind draws the launch arms too, as a share of its scenes (strategies/scenes.py MISSILE_WAYS); this draws
+them alone, or one arm alone.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ def main(argv=None) -> int:
 
     from acconform.strategies.determinism import pinned_constants
     from acconform.strategies.fast_draw import FastDrawer
-    from acconform.strategies.missiles import draw_border_scene, draw_launch_scene, draw_missile_scene
+    from acconform.strategies.missiles import draw_border_scene, draw_launch_scene, draw_missile_scene, draw_relocation_scene
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out", type=Path)
@@ -35,12 +35,15 @@ def main(argv=None) -> int:
     ap.add_argument("--timeouts", type=int, default=None, help="keep at most this many timeout scenes")
     ap.add_argument("--only", default=None, help="draw this arm alone (draw_missile_scene(draw, ARM))")
     ap.add_argument("--border", action="store_true", help="draw draw_border_scene's arms (with --only: that one)")
+    ap.add_argument("--relocate", action="store_true", help="draw draw_relocation_scene's spells flying into the next landblock")
     a = ap.parse_args(argv)
     arms = None if a.arms is None else set(a.arms.split(","))
     a.out.mkdir(parents=True, exist_ok=True)
     draw = draw_launch_scene if a.only is None else (lambda d: draw_missile_scene(d, a.only))
     if a.border:
         draw = lambda d: draw_border_scene(d, a.only)  # noqa: E731
+    if a.relocate:
+        draw = draw_relocation_scene
     drawer = FastDrawer(st.composite(draw)(), a.seed * 1000003)
     kept = timeouts = 0
     with pinned_constants():

@@ -383,9 +383,9 @@ MUTATIONS: tuple[Mutation, ...] = (
              "            else:\n"
              "                updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),\n"
              "                                                                location_cell, lscape, trace)\n"
-             "            others_updated = step_others(launches, stepped, lscape, trace)\n",
+             "            others_updated = step_others(launches, stepped, lscape, trace, landblocks)\n",
              "            timer.set(time)\n"
-             "            others_updated = step_others(launches, stepped, lscape, trace)\n"
+             "            others_updated = step_others(launches, stepped, lscape, trace, landblocks)\n"
              "            if ticks.driver == \"update_object\":\n                updated = mover.update_object(lscape, trace)\n"
              "            else:\n"
              "                updated, location_cell = update_player_position(mover, Position.from_record(step.request_pos, mode),\n"
