@@ -135,6 +135,13 @@ def plain(v, depth: int = 0):
             return int(getattr(v, name))
     if getattr(v, "splitting_plane", None) is not None:  # a BSP node: by its plane
         return plain(v.splitting_plane, depth + 1)
+    # a DAT motion table's MotionData and AnimData, by what they hold: by their type only, a link looked up
+    # from the wrong state (MotionTable.get_link) showed first where the animation it named was unpacked
+    if hasattr(v, "anims") and hasattr(v, "bitfield"):  # a MotionData: bitfield, flags, its anims, velocity, omega
+        return [int(v.bitfield), int(v.flags), [plain(a, depth + 2) for a in v.anims[:16]],
+                plain(v.velocity, depth + 1), plain(v.omega, depth + 1)]
+    if hasattr(v, "anim_id") and hasattr(v, "framerate") and hasattr(v, "low_frame"):  # an AnimData
+        return [int(v.anim_id), int(v.low_frame), int(v.high_frame), _num(v.framerate)]
     return type(v).__name__
 
 

@@ -233,6 +233,26 @@ def test_a_bounding_box_is_traced_by_its_corners():
     assert plain(BBox(Vector3(1.0, 2.0, 3.0), Vector3(4.0, 5.0, 6.5))) == [1.0, 2.0, 3.0, 4.0, 5.0, 6.5]
 
 
+@pytest.mark.anchor("CMotionTable::get_link")
+def test_a_motion_link_is_traced_by_its_animations_so_a_link_of_the_wrong_state_parts_where_it_is_looked_up():
+    import numpy as np
+
+    from acconform.numerics import Vector3
+    from acconform.port.dat.anim_data import AnimData
+    from acconform.port.dat.motion_data import MotionData
+    from acconform.port.tracing import plain
+
+    def link(anim_id):
+        return MotionData(bitfield=1, flags=2, anims=[AnimData(anim_id, 0, -1, np.float32(30.0))],
+                          velocity=Vector3(0.0, 0.5, 0.0), omega=Vector3(0.0, 0.0, 0.0))
+
+    assert plain(link(0x03000001)) == [1, 2, [[0x03000001, 0, -1, 30.0]], [0.0, 0.5, 0.0], [0.0, 0.0, 0.0]]
+    look_up = TraceRecord("MotionTable.cs:get_link", "call", within="MotionTable.cs:GetObjectSequence",
+                          args=[0x3D, 0x41000003, 1.0, 0x45000005, 1.0], result=plain(link(0x03000001)))
+    d = first_divergence((look_up,), (replace(look_up, result=plain(link(0x03000002))),))
+    assert (d.routine, d.field) == ("MotionTable.cs:get_link", "result[2][0][0]")
+
+
 def test_a_missing_record_is_a_divergence_of_the_anchor_and_a_short_trace_ends_in_one():
     _, records = traced_run(scene_of("cliff_edge_slide"))
     i = next(i for i, r in enumerate(records) if r.event == "enter" and r.anchor == "Transition.cs:StepDown")

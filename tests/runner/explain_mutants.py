@@ -86,7 +86,8 @@ def main() -> int:
     everything = oracle.select(runtime=args.runtime)
     random.Random(0).shuffle(everything)
     everything.sort(key=lambda e: e.kind == "ticks")  # single transitions first: a tick scene's trace is tens of them
-    entries = [e for e in everything if e.key in keys]
+    in_sample = {id(e) for e in everything if e.key in keys}  # (an entry's key parses its record: once, not per mutant)
+    entries = [e for e in everything if id(e) in in_sample]
     only = set(args.only.split(",")) if args.only else None
     rows = []
     previous = []  # the killing records so far: the scenes check's implementation would have run before
@@ -95,18 +96,19 @@ def main() -> int:
             continue
         t0 = time.monotonic()
         mutant = load_mutant(i)
-        rest = [] if args.sample_only else [e for e in everything if e.key not in keys and e.kind in m.kinds]
-        rec, where = None, None
+        rest = [] if args.sample_only else [e for e in everything if id(e) not in in_sample and e.kind in m.kinds]
+        rec, where, rec_where = None, None, None
         for source, candidates in (("fast sample", entries), ("corpus", rest)):
             for e in candidates:
                 r = oracle._record(e)
                 if compare(guarded(lambda s: mutant(s, runtime=args.runtime), r.scene), r.outcome, "exact") and \
                         not compare(run_scene(r.scene, runtime=args.runtime), r.outcome, "exact"):
-                    rec, where = r, source
+                    rec, where, rec_where = r, source, e.where
                     break
             if rec is not None:
                 break
-        row = {"name": m.name, "expected": mutated_routine(m), "killed": rec is not None, "killed_in": where}
+        row = {"name": m.name, "expected": mutated_routine(m), "killed": rec is not None, "killed_in": where,
+               "record": rec_where}
         if rec is not None:
             impl = Implementation(f"{sys.executable} {HERE.parent / 'impl' / 'planted_impl.py'} {m.name} "
                                   f"--kinds {','.join(KINDS)}", timeout=600)
