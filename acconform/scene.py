@@ -817,7 +817,7 @@ TICK_INPUTS = ("state", "transient_state", "velocity", "local_velocity", "omega"
 MOTION_INPUTS = ("motion", "stop", "do_motion", "stop_motion", "move_to", "move_to_object", "turn_to_heading",
                  "turn_to_object")
 _MANAGER_INPUTS = MOTION_INPUTS[1:]
-# the motion inputs a mover without a motion table may be given (scene/8, stop 51): the calls a server makes of any
+# the motion inputs a mover without a motion table may be given (scene/8, stop 50): the calls a server makes of any
 # WorldObject (get_minterp makes its MovementManager; DoMotion, StopMotion and StopCompletely answer without one)
 TABLELESS_INPUTS = ("motion", "stop", "do_motion", "stop_motion")
 _TICK_VECTORS = ("velocity", "local_velocity", "omega", "jump", "sequence_velocity", "sequence_omega")

@@ -1,11 +1,11 @@
-"""The tick scenes of shard ticks-0065: MotionInterp's rarer arms (issue 40, stop 51).
+"""The tick scenes of shard ticks-0065: MotionInterp's rarer arms (issue 40, stop 50).
 
     python benchmarks/motion_layer_scenes.py N OUT.jsonl.gz
 
 Draws a motion policy world (strategies/ticks.py's SITES["motion"]) and `draw_motion_layer_ticks` on it (a mover
 whose Gravity is cleared among MoveToState keys, combat refusals of DoMotion, keys pressed and released by
 DoMotion / StopMotion, a mover without a motion table, a table's modifier that is no substate), in either engine mode, from seed 65 (strategies.fast_draw); writes N scenes as JSON lines
-for `acconform record` (docs/corpus-coverage.md, stop 51).
+for `acconform record` (docs/corpus-coverage.md, stop 50).
 """
 
 from __future__ import annotations

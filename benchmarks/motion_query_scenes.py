@@ -4,7 +4,7 @@
 
 Keeps the scenes with `motion_queries` among `sample_scenes(("motion",), N, SEED)` (strategies/motion.py
 `draw_motion_queries` gives one motion scene in three its queries) and writes them as JSON lines for `acconform record`
-(docs/corpus-coverage.md, stop 51: N 1500, SEED 69, 479 scenes).
+(docs/corpus-coverage.md, stop 50: N 1500, SEED 69, 479 scenes).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The scenes of shard ticks-0066: targets scenes that take one of stop 51's later aims.
+"""The scenes of shard ticks-0066: targets scenes that take one of stop 50's later aims.
 
     python benchmarks/target_aim_scenes.py N SEED OUT.jsonl.gz
 
@@ -6,7 +6,7 @@ Draws N scenes of the campaign kind targets (`scenes_of("targets")`, strategies.
 `acconform record --kinds targets` draws them) and keeps those whose name says they aim at the mover itself
 (`self_move_to_object`, `self_turn_to_object`, `self_stick`, `self_first`), turn at a destroyed target
 (`turn_at_gone`), chase without a motion table (`tableless_*`) or switch to a second target (`switch`) (strategies/motion.py LATER_AIMS,
-TABLELESS_CHASES); writes them as JSON lines for `acconform record` (docs/corpus-coverage.md, stop 51).
+TABLELESS_CHASES); writes them as JSON lines for `acconform record` (docs/corpus-coverage.md, stop 50).
 """
 
 from __future__ import annotations

@@ -103,7 +103,7 @@ def _inputs_packer(names: tuple):
     """A function of a TickStep or an OtherInputs: (a mask of its inputs present, bit i: names[i]; their values' bytes
     in that order). Written out per input (a tick scene packs a TickStep, and an OtherInputs per other mover, per
     tick, and most of their inputs are None). A plain loop over (bit, packer) pairs measured about 3x slower on
-    the inputs (stop 51, side by side in one process: attrgetter and zip, or compress over the present ones), and
+    the inputs (stop 50, side by side in one process: attrgetter and zip, or compress over the present ones), and
     pack_scene 2.1-2.2x slower on benchmarks/bench_movers.py's scenes (1.0-1.4x on drawn motion, targets and
     missile scenes, whose DAT records weigh more): the straight-line code stays."""
     body = "".join(f"    v = r.{name}\n    if v is not None:\n        mask |= {1 << bit}\n"

@@ -467,7 +467,7 @@ def draw_missile_scene(draw, arm: str | None = None) -> Scene:
                                 ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))
 
 
-# ------------------------------------------------------------------ a launch at a border (issue 41, stop 51)
+# ------------------------------------------------------------------ a launch at a border (issue 41, stop 50)
 # The projectile's Location is its launcher's with Pos moved to the spawn point, whose setter (ACE.Entity.Position
 # .SetPosition) finds the outdoor landblock and cell of the spawn point anew: these arms spawn it across a line.
 BORDER_ARMS = st.sampled_from(("cell_border", "cell_border", "cell_border", "block_border", "block_border", "world_edge",

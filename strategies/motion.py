@@ -813,7 +813,7 @@ def _params_of_first(steps) -> MovementParams:
     return MovementParams()
 
 
-# ---------------------------------------------------------------- the motion layer's rarer arms (issue 40, stop 51)
+# ---------------------------------------------------------------- the motion layer's rarer arms (issue 40, stop 50)
 
 # which of MotionInterp's rarer arms a layer scene aims at: "float" clears the mover's Gravity at a drawn tick (a
 # creature whose GravityStatus is off: contact_allows_move's, LeaveGround's and HitGround's Gravity tests), now and

@@ -1,4 +1,4 @@
-"""The transition scenes drawn for stop 51's shards (strategies/scenes.py): a free-heading mover (scene/8
+"""The transition scenes drawn for stop 50's shards (strategies/scenes.py): a free-heading mover (scene/8
 mover.free_heading), drawn DAT records (scene/8 drawing) and a multipart static of more than 10 cylspheres."""
 
 from __future__ import annotations
