@@ -241,6 +241,6 @@ def test_a_table_with_hooks_no_root_motion_or_a_default_animation_is_format_8_an
 def test_an_unknown_hook_is_refused_naming_it():
     doc = json.loads(SCENES[WALK].dumps())
     doc["format"] = "acconform.scene/8"
-    doc["mover"]["motion_table"]["animations"][0]["hooks"] = [{"frame": 0, "hook": "Attack"}]
-    with pytest.raises(InvalidScene, match=r"animations\[0\]\.hooks\[0\]\.hook.*unknown hook 'Attack'"):
+    doc["mover"]["motion_table"]["animations"][0]["hooks"] = [{"frame": 0, "hook": "Sound3D"}]
+    with pytest.raises(InvalidScene, match=r"animations\[0\]\.hooks\[0\]\.hook.*unknown hook 'Sound3D'"):
         Scene.from_json(doc)
