@@ -184,6 +184,11 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                            "another mover of weenie object whose Setup has no spheres (scene/8: others[].spheres []): "
                            "enter_world's SetPosition on PhysicsObj.SetPosition's dummy sphere, UpdateObjectInternal's arm "
                            "for an object with none"),
+    "objects.motion_tables": (lambda s: any(o.motion_table for o in s.others) or s.ticks is not None and any(
+        i.execute_motion is not None for step in s.ticks.steps for i in step.others),
+                              "another mover with the scene's motion table (scene/8: others[].motion_table, a Chest's or "
+                              "an NPC's MotionTableId) or given WorldObject.ExecuteMotion's physics at a tick "
+                              "(ticks.steps[].others[].execute_motion; needs objects.moving)"),
     "objects.report_collisions": (lambda s: any(o.report_collisions is not None for o in s.others),
                                   "another mover whose WorldObject carries the property ReportCollisions (scene/8: "
                                   "others[].report_collisions): a Player's or a Creature's OnCollideObject with one whose "
@@ -281,6 +286,8 @@ def _other_json(o: DatOther) -> dict:
         d["launch"] = o.launch.to_json(o.weenie == "spell_projectile")
     if o.report_collisions is not None:
         d["report_collisions"] = o.report_collisions
+    if o.motion_table_id:
+        d["motion_table_id"] = write_id(o.motion_table_id)
     return d
 
 
@@ -329,7 +336,7 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
     others = []
     for o in (r["others"].list() if r.given("others") else ()):
         o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status",
-               "parent", "launch", "report_collisions"})
+               "parent", "launch", "report_collisions", "motion_table_id"})
         weenie = o["weenie"].str_()
         if weenie not in WEENIE_CLASSES:
             o["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
@@ -348,7 +355,8 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                                None if parent is not None else Position.from_json(o["begin"]),
                                o["player_killer_status"].enum_(PlayerKillerStatus) if o.given("player_killer_status")
                                else PLAYER_KILLER_STATUS_NPK, parent, launch,
-                               o["report_collisions"].bool_() if o.given("report_collisions") else None))
+                               o["report_collisions"].bool_() if o.given("report_collisions") else None,
+                               o["motion_table_id"].id_() if o.given("motion_table_id") else 0))
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
                     tuple(statics), mover, tuple(others))

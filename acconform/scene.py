@@ -22,6 +22,7 @@ from .codec import (Reader, as_text, dumps, dumps_compact, f32_text, ints_text, 
                     write_f64, write_id, write_vec)
 from .errors import InvalidScene
 from .motion_scene import CommandInput, MotionInput, MotionTableSpec, MoveToInput, ObjectMoveInput, read_stop
+from .motion_enums import MotionCommand as _MotionCommand
 from .flags import (PLAYER_KILLER_STATUS_NPK, CullMode, ParentLocation, PhysicsState, PlayerKillerStatus, SetPositionFlags,
                     TransientState, flag_names)
 
@@ -902,9 +903,17 @@ class OtherInputs:
     # unset_parent): `unparent` first, then `parent`
     unparent: bool = False
     parent: "ChildOf | None" = None
+    # feature objects.motion_tables, after the setters and before `destroy`: the physics of WorldObject.ExecuteMotion
+    # (a Chest's open or close, an emote's motion, a creature's death) with this motion command -- the Motion's
+    # ForwardCommand, or its Stance when that is Ready (ExecuteMotion runs no physics for Ready): get_minterp, a new
+    # RawMotionState (ForwardCommand 0, CurrentHoldKey Run, CurrentStyle the command), UpdateTime when not moving or
+    # animating, apply_raw_movement(true, true)
+    execute_motion: int | None = None
 
     def to_json(self):
         d = _setters_json(self, {"id": write_id(self.id)})
+        if self.execute_motion is not None:
+            d["execute_motion"] = write_id(self.execute_motion)
         if self.destroy:
             d["destroy"] = True
         if self.unparent:
@@ -915,8 +924,14 @@ class OtherInputs:
 
     @staticmethod
     def from_json(r: Reader) -> "OtherInputs":
-        r.obj({"id", *OTHER_INPUTS, "destroy", "unparent", "parent"})
+        r.obj({"id", *OTHER_INPUTS, "execute_motion", "destroy", "unparent", "parent"})
         kw = _read_setters(r)
+        if r.given("execute_motion"):
+            command = r["execute_motion"].id_()
+            if command in (0, int(_MotionCommand.Ready)):
+                r["execute_motion"].fail("WorldObject.ExecuteMotion runs no physics for Ready (its Motion's stance is "
+                                         "the command then): give the command it runs")
+            kw["execute_motion"] = command
         if r.given("destroy"):
             kw["destroy"] = r["destroy"].bool_()
         if r.given("unparent"):
@@ -1528,6 +1543,15 @@ class OtherMover:
     # without a DefaultScale entry) and cylspheres, as a static's `setup` gives them; its spheres stay `spheres`.
     # None: one empty part, as before
     setup: SetupRec | None = None
+    # scene/8 (feature objects.motion_tables): its WorldObject's MotionTableId is the scene's motion table (the mover's,
+    # MOTION_TABLE_ID), which InitPhysicsObj's SetMotionTableID sets (a Chest's, a door's or an NPC's table); False: 0
+    motion_table: bool = False
+
+    @property
+    def motion_table_id(self) -> int:
+        from .motion_scene import MOTION_TABLE_ID
+
+        return MOTION_TABLE_ID if self.motion_table else 0
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
@@ -1550,13 +1574,15 @@ class OtherMover:
             d["report_collisions"] = self.report_collisions
         if self.setup is not None:
             d["setup"] = self.setup.to_json()
+        if self.motion_table:  # written only when set: a scene without it means what it meant
+            d["motion_table"] = True
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch",
-               "report_collisions", "setup"})
+               "report_collisions", "setup", "motion_table"})
         setup = None
         if r.given("setup"):
             setup = SetupRec.from_json(r["setup"], mover=True)
@@ -1613,7 +1639,18 @@ class OtherMover:
             player_killer_status=pks,
             holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
             sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
-            parent=parent, launch=launch, report_collisions=report, setup=setup)
+            parent=parent, launch=launch, report_collisions=report, setup=setup,
+            motion_table=_read_other_motion_table(r, weenie))
+
+
+def _read_other_motion_table(r: Reader, weenie: str) -> bool:
+    """`others[].motion_table` (feature objects.motion_tables): a projectile's WorldObject has none."""
+    if not r.given("motion_table"):
+        return False
+    table = r["motion_table"].bool_()
+    if table and weenie in PROJECTILE_WEENIES:
+        r["motion_table"].fail(f"a projectile (weenie {weenie}) has no motion table: omit it")
+    return table
 
 
 ENGINE_MODES = ("server", "client")
@@ -1976,6 +2013,9 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
                                               "object by its id)")
         taken[o.id] = f"others[{i}]'s"
         by_id[o.id] = o
+        if o.motion_table and scene.mover.motion_table is None:
+            raise InvalidScene(f"{where}.motion_table", "its motion table is the scene's (the mover's motion_table), "
+                                                        "and the mover has none")
         if o.parent is not None:
             # the parent is in the world (or held) when the child is parented: the mover, or an other made before it;
             # a location its Setup lacks is ACE's answer (set_parent refuses it), not the scene's error
@@ -2014,6 +2054,13 @@ def _check_others(scene: Scene, path: str, check_landblock, env_cells: dict) -> 
             if inputs.jump is not None and other.weenie != "player":
                 raise InvalidScene(f"{where}.jump", f"a jump is a player's (Player.HandleActionJump); other mover "
                                                     f"0x{inputs.id:08X} is a {other.weenie}")
+            if inputs.execute_motion is not None and other.begin is None:
+                raise InvalidScene(f"{where}.execute_motion", f"other mover 0x{inputs.id:08X} is a child: a wielded item "
+                                                              "is in no landblock, and no server code moves it")
+            if inputs.execute_motion is not None and other.setup is not None and not other.setup.parts:
+                raise InvalidScene(f"{where}.execute_motion", f"other mover 0x{inputs.id:08X} has a Setup of no parts: "
+                                                              "its enter_world fails, and WorldObject.AddPhysicsObj then "
+                                                              "destroys its PhysicsObj (null), which ExecuteMotion skips")
             if inputs.id in destroyed:
                 raise InvalidScene(f"{where}.id", f"other mover 0x{inputs.id:08X} was destroyed at step "
                                                   f"{destroyed[inputs.id]}: it takes no input after")

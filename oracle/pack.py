@@ -17,7 +17,7 @@ from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import MOTION_QUERY_FUNCTIONS, SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 17
+PACK_VERSION = 18
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -119,7 +119,8 @@ _other_mover_inputs = _inputs_packer(OTHER_INPUTS)
 
 def _other_inputs(step, index: dict) -> list[bytes]:
     """int n, then per other mover's inputs: its index in the scene's `others`, a mask of the inputs present (bit i:
-    OTHER_INPUTS[i], then bit 8 destroy, bit 9 unparent and bit 10 parent) and their values in that order."""
+    OTHER_INPUTS[i], then bit 8 destroy, bit 9 unparent, bit 10 parent and bit 11 execute_motion) and their values in
+    that order."""
     out = [_I32.pack(len(step.others))]
     for inputs in step.others:
         mask, values = _other_mover_inputs(inputs)
@@ -130,6 +131,9 @@ def _other_inputs(step, index: dict) -> list[bytes]:
         if inputs.parent is not None:  # bit 10: held anew, as a child's record says it (_child_of)
             mask |= 4 << len(OTHER_INPUTS)
             values.append(_child_of(inputs.parent))
+        if inputs.execute_motion is not None:  # bit 11 (pack 18): WorldObject.ExecuteMotion's physics, its command (uint)
+            mask |= 8 << len(OTHER_INPUTS)
+            values.append(_U32.pack(inputs.execute_motion))
         out.append(_INDEX_MASK.pack(index[inputs.id], mask))
         out += values
     return out
@@ -177,7 +181,7 @@ _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
 # then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id (0: none, an untargeted spell), speed, origin, orientation
 # (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none), the spell's kind
 # (byte: its index in acconform.scene.SPELL_KINDS); then the WorldObject's ReportCollisions property (byte: 0 unset,
-# 1 false, 2 true)
+# 1 false, 2 true); then (pack 18) its WorldObject's MotionTableId (uint: MOTION_TABLE_ID, or 0)
 _NO_LAUNCH = b"\0"
 _LAUNCH = struct.Struct("<BiIIf3f4fBBBBfB")
 
@@ -224,6 +228,7 @@ def pack_scene(scene: Scene) -> bytes:
                                 1 if la.alt_solver else 0, la.rotation_speed,
                                 SPELL_KINDS.index(la.spell)))
         out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
+        out.append(_U32.pack(o.motion_table_id))  # pack 18: its WorldObject's MotionTableId
     return b"".join(out)
 
 

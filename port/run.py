@@ -102,7 +102,7 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     """WorldObject.InitPhysicsObj for the other mover's WorldObject (acconform.scene.OtherMover): a
     creature's PhysicsObj by ``new PhysicsObj()`` and makeAnimObject(did, true), a GenericObject's by
     makeObject(did, id, true) (dynamic); set_object_guid(id), set_weenie_obj(new WeenieObject(the
-    WorldObject)), SetMotionTableID(0), SetScaleStatic(scale), State; then TransientState and Velocity as
+    WorldObject)), SetMotionTableID(its MotionTableId: 0, or scene/8's others[].motion_table), SetScaleStatic(scale), State; then TransientState and Velocity as
     the scene gives them, and AddPhysicsObj's physics calls: LScape.get_landcell of the begin cell,
     Position.ObjCellID = its id, enter_world(Position(cell, frame)). Returns the object, its placement
     and whether it is in the world (AddPhysicsObj's success: entered and in a cell); one that is not
@@ -120,7 +120,7 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     obj.set_object_guid(o.id)
     wo = world_object_of(o)
     obj.set_weenie_obj(WeenieObject.of(wo))
-    obj.set_motion_table_id(0)
+    obj.set_motion_table_id(o.motion_table_id)  # its WorldObject's MotionTableId (scene/8 others[].motion_table), else 0
     obj.set_scale_static(mode.scalar(o.scale))
     obj.state = o.state
     obj.transient_state = o.transient_state
@@ -616,6 +616,29 @@ def apply_other_inputs(obj: PhysicsObj, inputs, mode) -> None:
         obj.part_array.sequence.set_omega(mode.vec(*inputs.sequence_omega))
 
 
+@anchor(None, "ACE.Server/WorldObjects/WorldObject.cs:ExecuteMotion",
+        "its physics (scene/8 others[].execute_motion), as the oracle's facade makes them")
+def execute_motion(obj: PhysicsObj, command: int, mode) -> None:
+    """WorldObject.ExecuteMotion's physics for a motion command that is not Ready (`command`: the Motion's
+    ForwardCommand, or its Stance when that is Ready): get_minterp, a new RawMotionState whose ForwardCommand is 0
+    ("must be this for monster sleep animations"), CurrentHoldKey Run and CurrentStyle the command; UpdateTime when
+    the object is not moving or animating; RawState = it, apply_raw_movement(true, true). A Chest's open and close
+    (Chest.DoOnOpenMotionChanges), an emote's motion (EmoteManager), a creature's death (Creature_Death)."""
+    from acconform.motion_enums import HoldKey
+
+    from .animation.raw_motion_state import RawMotionState
+
+    minterp = obj.get_minterp()
+    raw = RawMotionState.create(mode)
+    raw.forward_command = 0
+    raw.current_hold_key = HoldKey.Run
+    raw.current_style = command
+    if not obj.is_moving_or_animating():
+        obj.update_time = obj.timer.current_time
+    minterp.raw_state = raw
+    minterp.apply_raw_movement(True, True)
+
+
 @harness("the physics of ACE's server Door (Door.Open, Door.FinalizeClose), as the oracle's facade makes them")
 def door(obj: PhysicsObj, ethereal: bool, lscape: LScape) -> None:
     """Open: the WorldObject's Ethereal setter (SetPhysicsPropertyState -> SetPhysicsState) sets
@@ -875,6 +898,8 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             apply_inputs(mover, step, mode, lscape)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
+                if inputs.execute_motion is not None:
+                    execute_motion(by_id[inputs.id], inputs.execute_motion, mode)
                 parenting.apply_parenting_inputs(by_id[inputs.id], inputs, by_id, lscape)
                 if inputs.destroy:
                     destroy_other(by_id[inputs.id], inputs.id, movers, stepped)

@@ -1012,3 +1012,75 @@ def draw_motion_queries(draw, scene: Scene) -> Scene:
             queries.append(MotionQuery(f, stance if current is not None else 0, motion, current))
     tags.append(f"q{len(queries)}")
     return scene.replace(motion_queries=tuple(queries), name=scene.name + ":" + ".".join(tags))
+
+
+# ---------------------------------------------------------------- objects with a motion table (issue 40, stop 52)
+
+# the other movers of a motion-objects scene: mostly GenericObjects (a Chest: no creature, so MotionInterp's
+# non-creature arms), else a creature; each with the scene's motion table mostly (its WorldObject's MotionTableId). None
+# is of no parts: its enter_world fails, and WorldObject.AddPhysicsObj then destroys its PhysicsObj and sets it null,
+# so no ExecuteMotion or melee swing reaches it
+OBJECT_WEENIES = st.sampled_from(("object", "object", "object", "creature", "monster"))
+OBJECT_COUNTS = st.integers(1, 3)
+OBJECT_TABLES = st.sampled_from((True, True, True, False))
+# how high above the ground it begins (0: on it; else it falls and lands: HitGround), and its state
+OBJECT_DROPS = st.sampled_from((0.0, 0.0, 0.5, 2.0))
+# the commands the server executes on it: a Chest's On and Off (Chest.motionOpen / motionClosed), an emote's motion
+# (an action the table links from Ready, one it lacks, a style), a creature's death (Dead), a sleep (Sleeping), and
+# moves a Motion may carry (WalkForward, TurnRight, Falling)
+EXECUTED = st.sampled_from((int(MC.On), int(MC.Off), int(MC.On), int(MC.Twitch1), int(MC.Cheer), HC, NC,
+                            int(MC.Dead), int(MC.Sleeping), WALK, TURN, int(MC.Falling), READY_ACTIONS[0]))
+EXECUTE_COUNTS = st.integers(1, 4)
+OBJECT_LATER = st.sampled_from(("none", "none", "gravity", "velocity", "drop", "stick"))
+
+
+def draw_motion_objects(draw, clock) -> Scene:
+    """The server's ExecuteMotion on objects that are not the player (scene/8 others[].motion_table and
+    execute_motion, feature objects.motion_tables): the mover (a player with a drawn motion table) on flat ground, and
+    one to three others beside it -- GenericObjects mostly (a Chest opening and closing: no creature), a creature now
+    and then -- each with the scene's motion table mostly (a Setup of no parts now and then), standing or falling
+    onto the ground; at drawn ticks the server executes motions on them (WorldObject.ExecuteMotion's physics), and
+    now and then one loses its Gravity, is given a velocity (it slides and stops), is lifted and falls again, or the
+    player's melee swing sticks to it (stick_to_object)."""
+    from .movers import _Flat, _Ids, _Timeline, _finish, _mover, _other, _pks, _spheres
+
+    world = _Flat(draw, False)
+    mx, my = 96.0, 96.0
+    n = max(3, dr.take(draw, TICK_COUNTS))
+    start, dts, clabel = clock(draw, n)
+    tl, ids = _Timeline(dts), _Ids()
+    table, tlabel = draw_motion_table(draw)
+    mover = _mover(draw, _spheres(draw), world.position(mx, my), world.z, _pks(draw, "player"))
+    mover = replace(mover, motion_table=table, transient_state=mover.transient_state | int(TransientState.Active))
+    others, tags = [], []
+    for k in range(draw(OBJECT_COUNTS)):
+        weenie = draw(OBJECT_WEENIES)
+        drop = draw(OBJECT_DROPS)
+        at = world.position(mx + 2.0 + 2.5 * k, my + float(draw(st.sampled_from((0.0, 1.0, -1.5)))))
+        at = replace(at, frame=Frame((at.frame.origin[0], at.frame.origin[1], to_f32(at.frame.origin[2] + drop))))
+        o = _other(draw, ids, weenie, _spheres(draw), at)
+        o = replace(o, state=o.state | GRAVITY, motion_table=draw(OBJECT_TABLES),
+                    transient_state=o.transient_state if drop == 0.0 else int(TransientState.Active))
+        tag = f"{weenie[0]}{'t' if o.motion_table else ''}{f'^{drop:g}' if drop else ''}"
+        rows = tl.of(o.id)
+        for _ in range(draw(EXECUTE_COUNTS)):
+            i = draw(st.integers(0, n - 1))
+            rows[i]["execute_motion"] = draw(EXECUTED)
+            tag += f".x{rows[i]['execute_motion'] & 0xFFFF:x}@{i}"
+        later = draw(OBJECT_LATER)
+        i = draw(st.integers(0, n - 1))
+        if later == "gravity":
+            rows[i]["state"] = o.state & ~GRAVITY
+        elif later == "velocity":
+            rows[i]["velocity"] = (to_f32(draw(st.sampled_from((0.5, -1.0, 2.0)))), 0.0, 0.0)
+        elif later == "drop":  # lifted off the ground (its contact flags cleared): it falls and lands
+            rows[i]["transient_state"] = int(TransientState.Active)
+            rows[i]["velocity"] = (0.0, 0.0, to_f32(draw(st.sampled_from((1.0, 3.0)))))
+        elif later == "stick":
+            tl.mover[i]["stick_to"] = o.id
+        if later != "none":
+            tag += f".{later}@{i}"
+        others.append(o)
+        tags.append(tag)
+    name = f"motion_objects:{'+'.join(tags)}:{tlabel}:{clabel}"
+    return _finish(draw, start, dts, tl, world.landblocks, mover, tuple(others), (), name, ethereal=False)

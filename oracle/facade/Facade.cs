@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 17;
+        public const int PackVersion = 18;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -104,6 +104,7 @@ namespace Acconform.Oracle
             public int ParentLocation, Placement;
             public byte ParentForm;
             public AFrame ParentFrame;
+            public uint ExecuteMotion;  // bit 2048 (pack 18): WorldObject.ExecuteMotion's physics with this motion command
         }
 
         // scene/8: another mover as the scene gives it (OtherMover), its PhysicsObj and WorldObject once made, and
@@ -136,6 +137,7 @@ namespace Acconform.Oracle
             public bool HasLaunch, LeadTarget, Arc, Tracking, AltSolver;
             public float RotationSpeed;  // the projectile's RotationSpeed (a weenie property; 0: none, left null)
             public byte ReportCollisions;  // the WorldObject's PropertyBool.ReportCollisions: 0 unset, 1 false, 2 true
+            public uint MotionTableId;  // the WorldObject's MotionTableId (pack 18, scene/8 others[].motion_table; 0: none)
             public byte SpellKind;  // acconform.scene.SPELL_KINDS: 0 plain, 1 Rolling Death, 2 a wall, 3 a Ring, 4 Ring spell 3818
             public int LaunchTick;
             public uint Launcher, Target;
@@ -591,6 +593,7 @@ namespace Acconform.Oracle
                             o.Placement = r.ReadInt32();
                             if (o.ParentForm == 2) o.ParentFrame = new AFrame(V3(r), Q(r));
                         }
+                        if ((o.Mask & 2048) != 0) o.ExecuteMotion = r.ReadUInt32();
                         s.Others.Add(o);
                     }
                 }
@@ -1129,6 +1132,7 @@ namespace Acconform.Oracle
             if ((s.Mask & 32) != 0) Jump(obj, (ACE.Server.WorldObjects.Player)other.WorldObject, s.Jump);
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
+            if ((s.Mask & 2048) != 0) ExecuteMotion(obj, s.ExecuteMotion);
             // children (issue 41): the client's calls when the server moves a held item, on ACE's own PhysicsObj: a
             // PickupEvent's unset_parent, a ParentEvent's SetPlacementFrame and set_parent (SetParent)
             if ((s.Mask & 512) != 0) obj.unset_parent();
@@ -1141,6 +1145,24 @@ namespace Acconform.Oracle
                 obj.DestroyObject();
                 other.Entered = false;
             }
+        }
+
+        /// <summary>WorldObject.ExecuteMotion's physics (scene/8 others[].execute_motion, pack 18) for a motion command that
+        /// is not Ready (the Motion's ForwardCommand, or its Stance when that is Ready): get_minterp, a new RawMotionState
+        /// with ForwardCommand 0, CurrentHoldKey Run and CurrentStyle the command, UpdateTime when the object is not moving
+        /// or animating, RawState = it, apply_raw_movement(true, true). The rest of ExecuteMotion (the animation length,
+        /// CurrentMotionState, the broadcast) is no physics.</summary>
+        static void ExecuteMotion(PhysicsObj obj, uint motionCommand)
+        {
+            var motionInterp = obj.get_minterp();
+            var rawState = new ACE.Server.Physics.Animation.RawMotionState();
+            rawState.ForwardCommand = 0;
+            rawState.CurrentHoldKey = HoldKey.Run;
+            rawState.CurrentStyle = motionCommand;
+            if (!obj.IsMovingOrAnimating)
+                obj.UpdateTime = PhysicsTimer.CurrentTime;
+            motionInterp.RawState = rawState;
+            motionInterp.apply_raw_movement(true, true);
         }
 
         static void ApplyInputs(PhysicsObj obj, TickStep s)
@@ -2256,7 +2278,8 @@ namespace Acconform.Oracle
         /// <summary>int n, then per other mover its DAT records (its Setup), then its Setup id, id, weenie class (byte),
         /// PlayerKillerStatus, scale, State, TransientState, Velocity and begin position, then byte 0 or a projectile's
         /// launch (byte 1, tick, launcher, target, speed, origin, orientation w x y z, lead_target, arc, tracking, alt_solver,
-        /// rotation_speed, the spell's kind), then the ReportCollisions property (0 unset, 1 false, 2 true). They are
+        /// rotation_speed, the spell's kind), then the ReportCollisions property (0 unset, 1 false, 2 true), then its
+        /// WorldObject's MotionTableId (uint, pack 18). They are
         /// made and enter the world after the mover's placement (EnterOthers); a projectile enters at its launch.</summary>
         static void ReadOthers(BinaryReader r)
         {
@@ -2294,6 +2317,7 @@ namespace Acconform.Oracle
                     o.SpellKind = r.ReadByte();  // what SpellProjectile.Setup reads of the spell: its name, weenie, SpellType
                 }
                 o.ReportCollisions = r.ReadByte();
+                o.MotionTableId = r.ReadUInt32();  // pack 18
                 sceneOthers.Add(o);
             }
         }
@@ -2301,7 +2325,7 @@ namespace Acconform.Oracle
         /// <summary>Each other mover, in scene order, made as WorldObject.InitPhysicsObj makes its WorldObject's
         /// PhysicsObj (a creature's by new PhysicsObj() and makeAnimObject(setup, true), a GenericObject's by
         /// makeObject(setup, id, true); set_object_guid, set_weenie_obj(new WeenieObject(the WorldObject)),
-        /// SetMotionTableID(0), SetScaleStatic, State), with the scene's TransientState and Velocity, then entered as
+        /// SetMotionTableID(its MotionTableId: 0, or the scene's table), SetScaleStatic, State), with the scene's TransientState and Velocity, then entered as
         /// WorldObject.AddPhysicsObj enters it: LScape.get_landcell of its begin cell, Position.ObjCellID = that cell's
         /// id, enter_world(Position(cell, frame)); it is in the world when that succeeded and left it in a cell. A child
         /// (scene/8 `parent`) is held by its parent instead (SetParent: the mover `mover`, or an earlier other): its
@@ -2328,7 +2352,7 @@ namespace Acconform.Oracle
                 if (o.ReportCollisions != 0)  // the weenie's PropertyBool (no PhysicsObj yet: the property alone; State is the scene's)
                     o.WorldObject.ReportCollisions = o.ReportCollisions == 2;
                 obj.set_weenie_obj(new WeenieObject(o.WorldObject));
-                obj.SetMotionTableID(0);
+                obj.SetMotionTableID(o.MotionTableId);  // the WorldObject's MotionTableId (0: none)
                 obj.SetScaleStatic(o.Scale);
                 obj.State = o.State;
                 obj.TransientState = o.Transient;
