@@ -1031,7 +1031,14 @@ OBJECT_DROPS = st.sampled_from((0.0, 0.0, 0.5, 2.0))
 EXECUTED = st.sampled_from((int(MC.On), int(MC.Off), int(MC.On), int(MC.Twitch1), int(MC.Cheer), HC, NC,
                             int(MC.Dead), int(MC.Sleeping), WALK, TURN, int(MC.Falling), READY_ACTIONS[0]))
 EXECUTE_COUNTS = st.integers(1, 4)
-OBJECT_LATER = st.sampled_from(("none", "none", "gravity", "velocity", "drop", "stick"))
+OBJECT_LATER = st.sampled_from(("none", "none", "gravity", "velocity", "drop", "stick", "stick", "chase"))
+# the mover without a motion table now and then (a creature whose weenie has none: its others have none either, the
+# table being the scene's), so a MoveToObject or TurnToObject at an object makes its MovementManager
+MOVER_TABLELESS = st.sampled_from((False, False, False, True))
+# the mover's flags at a stick_to or a chase's tick: kept (Active), Active cleared (an object at rest: update_object
+# cleared it), that and its Gravity too (enter_default_state's LeaveGround then sets no velocity, so Active stays
+# clear), or Static (MakePositionManager's and the MoveTo block's arms for each)
+MOVER_FLAGS = st.sampled_from(("kept", "inactive", "inactive", "floating", "static"))
 
 
 def draw_motion_objects(draw, clock) -> Scene:
@@ -1051,6 +1058,9 @@ def draw_motion_objects(draw, clock) -> Scene:
     tl, ids = _Timeline(dts), _Ids()
     table, tlabel = draw_motion_table(draw)
     mover = _mover(draw, _spheres(draw), world.position(mx, my), world.z, _pks(draw, "player"))
+    tableless = draw(MOVER_TABLELESS)
+    if tableless:
+        table, tlabel = None, "tableless"
     mover = replace(mover, motion_table=table, transient_state=mover.transient_state | int(TransientState.Active))
     others, tags = [], []
     for k in range(draw(OBJECT_COUNTS)):
@@ -1059,7 +1069,7 @@ def draw_motion_objects(draw, clock) -> Scene:
         at = world.position(mx + 2.0 + 2.5 * k, my + float(draw(st.sampled_from((0.0, 1.0, -1.5)))))
         at = replace(at, frame=Frame((at.frame.origin[0], at.frame.origin[1], to_f32(at.frame.origin[2] + drop))))
         o = _other(draw, ids, weenie, _spheres(draw), at)
-        o = replace(o, state=o.state | GRAVITY, motion_table=draw(OBJECT_TABLES),
+        o = replace(o, state=o.state | GRAVITY, motion_table=draw(OBJECT_TABLES) and not tableless,
                     transient_state=o.transient_state if drop == 0.0 else int(TransientState.Active))
         tag = f"{weenie[0]}{'t' if o.motion_table else ''}{f'^{drop:g}' if drop else ''}"
         rows = tl.of(o.id)
@@ -1078,6 +1088,18 @@ def draw_motion_objects(draw, clock) -> Scene:
             rows[i]["velocity"] = (0.0, 0.0, to_f32(draw(st.sampled_from((1.0, 3.0)))))
         elif later == "stick":
             tl.mover[i]["stick_to"] = o.id
+        elif later == "chase":  # the mover sent after it (Monster_Navigation.StartTurn's calls), or turned to it
+            field = draw(st.sampled_from(("move_to_object", "turn_to_object")))
+            tl.mover[i].setdefault(field, ObjectMoveInput(o.id, MovementParams()))
+        if later in ("stick", "chase"):
+            flags = draw(MOVER_FLAGS)
+            if flags in ("inactive", "floating"):
+                tl.mover[i]["transient_state"] = mover.transient_state & ~int(TransientState.Active)
+            if flags == "floating":
+                tl.mover[i]["state"] = mover.state & ~GRAVITY
+            elif flags == "static":
+                tl.mover[i]["state"] = mover.state | STATIC
+            later += "" if flags == "kept" else f"-{flags}"
         if later != "none":
             tag += f".{later}@{i}"
         others.append(o)
