@@ -197,7 +197,8 @@ def _movers_scene(scene, m):
     """A scene with other movers (scene/8, objects.moving): one of each weenie class at the mover's start (a
     PK player with every optional field), each given every input of a step once, and a child held by the mover
     (objects.children: its parent, the mover's holding location, its sorting sphere); then (objects.targets) the
-    mover's stick_to at the monster and the NPC destroyed; its DAT records drawn (scene/8 drawing)."""
+    mover's stick_to at the monster and the NPC destroyed; the mover's motion table the motion scene's, which the object
+    has too (objects.motion_tables), the server executing On on it; its DAT records drawn (scene/8 drawing)."""
     from dataclasses import replace
 
     from .flags import PhysicsState, PlayerKillerStatus, TransientState
@@ -217,12 +218,18 @@ def _movers_scene(scene, m):
                         sequence_velocity=(0.0, 3.0, 0.0), sequence_omega=(0.0, 0.0, 0.5))
     # the child dropped, then held again by the frame form (part 0 and a frame)
     held = OtherInputs(0x80000004, unparent=True, parent=ChildOf(0x50000001, 0, 0, 0, Frame((0.4, 0.1, 1.0))))
+    # objects.motion_tables: the object has the scene's table (the motion scene's) and the server opens it (a Chest's On)
+    from .motion_enums import MotionCommand
+
+    m = replace(m, motion_table=_motion_scene(scene, m).mover.motion_table)
+    others = others[:3] + (replace(others[3], motion_table=True),) + others[4:]
+    opened = OtherInputs(0x80000003, execute_motion=int(MotionCommand.On))
     return replace(scene, mover=m, name="movers", others=others, drawing=True,
                    ticks=Ticks("update_object", 1000.0, (TickStep(1 / 30, others=(every, OtherInputs(0x80000001))),
                                                           # objects.targets: a melee swing's stick_to, a destroyed NPC
                                                           TickStep(1 / 30, stick_to=0x80000001,
                                                                    others=(OtherInputs(0x80000002, destroy=True),)),
-                                                          TickStep(1 / 30, others=(held,)))))
+                                                          TickStep(1 / 30, others=(held, opened)))))
 
 
 def _missiles_scene(scene, m):
