@@ -903,8 +903,9 @@ class OtherInputs:
     # unset_parent): `unparent` first, then `parent`
     unparent: bool = False
     parent: "ChildOf | None" = None
-    # feature objects.motion_tables, after the setters and before `destroy`: the physics of WorldObject.ExecuteMotion
-    # (a Chest's open or close, an emote's motion, a creature's death) with this motion command -- the Motion's
+    # feature objects.motion_tables, after the setters and before `destroy`: EmoteManager's Motion emote -- skipped when
+    # PhysicsObj.IsMovingTo(), else the physics of WorldObject.ExecuteMotion (the same as a Chest's open or close, which
+    # asks nothing first: no other mover is moving to anything) with this motion command -- the Motion's
     # ForwardCommand, or its Stance when that is Ready (ExecuteMotion runs no physics for Ready): get_minterp, a new
     # RawMotionState (ForwardCommand 0, CurrentHoldKey Run, CurrentStyle the command), UpdateTime when not moving or
     # animating, apply_raw_movement(true, true)

@@ -3,7 +3,7 @@
     python benchmarks/motion_objects_scenes.py N OUT.jsonl.gz
 
 Draws `draw_motion_objects` (strategies/motion.py: a player beside GenericObjects and creatures that have the scene's
-motion table, the server executing motions on them, scene/8 others[].motion_table and execute_motion, feature
+motion table, the server executing motions on them (EmoteManager's Motion emote: IsMovingTo, ExecuteMotion), scene/8 others[].motion_table and execute_motion, feature
 objects.motion_tables) in either engine mode from seed 72 (strategies.fast_draw); writes N scenes as JSON lines for
 `acconform record` (docs/corpus-coverage.md, stop 52).
 """

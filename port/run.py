@@ -898,7 +898,8 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
             apply_inputs(mover, step, mode, lscape)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
-                if inputs.execute_motion is not None:
+                # EmoteManager's Motion emote: an object moving to something (IsMovingTo) is skipped, else ExecuteMotion
+                if inputs.execute_motion is not None and not by_id[inputs.id].is_moving_to():
                     execute_motion(by_id[inputs.id], inputs.execute_motion, mode)
                 parenting.apply_parenting_inputs(by_id[inputs.id], inputs, by_id, lscape)
                 if inputs.destroy:

@@ -1132,7 +1132,8 @@ namespace Acconform.Oracle
             if ((s.Mask & 32) != 0) Jump(obj, (ACE.Server.WorldObjects.Player)other.WorldObject, s.Jump);
             if ((s.Mask & 64) != 0) obj.PartArray.Sequence.SetVelocity(s.SequenceVelocity);
             if ((s.Mask & 128) != 0) obj.PartArray.Sequence.SetOmega(s.SequenceOmega);
-            if ((s.Mask & 2048) != 0) ExecuteMotion(obj, s.ExecuteMotion);
+            // EmoteManager's Motion emote: an object moving to something (IsMovingTo) is skipped, else ExecuteMotion
+            if ((s.Mask & 2048) != 0 && !obj.IsMovingTo()) ExecuteMotion(obj, s.ExecuteMotion);
             // children (issue 41): the client's calls when the server moves a held item, on ACE's own PhysicsObj: a
             // PickupEvent's unset_parent, a ParentEvent's SetPlacementFrame and set_parent (SetParent)
             if ((s.Mask & 512) != 0) obj.unset_parent();
