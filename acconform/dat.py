@@ -78,11 +78,11 @@ node, as in retail's Environments). An `EnvCell` (cell DAT, id = the cell's id; 
 (0x1) and HasStaticObjs (0x2, when it has stabs), no surfaces, the environment's low word, the
 structure index, the frame, the portals (flags, polygon, other cell, other portal), the visible
 cells, and its stabs: the scene's static objects whose position.cell is this cell, in scene order,
-each the id `static_records` gives it and the object's frame (Entity/Stab.cs); no restriction
-object. A `LandblockInfo` (cell DAT, ``0xXXYYFFFE``; FileTypes/LandblockInfo.cs) is written for
+each the id `static_records` gives it and the object's frame (Entity/Stab.cs); then (flag HasRestrictionObj
+0x8, scene/8 `restriction_obj`) its restriction object. A `LandblockInfo` (cell DAT, ``0xXXYYFFFE``; FileTypes/LandblockInfo.cs) is written for
 each landblock that has EnvCells or buildings: NumCells = the number of its EnvCells (ACE's
 AdjustCell loads 0x0100 .. 0x0100 + NumCells - 1 to find the cell holding a point), no objects,
-its buildings, PackMask 0. A landblock's CellLandblock says HasObjects exactly when it has
+its buildings, PackMask 0 (1 with scene/8 `restrictions`: then the RestrictionTables). A landblock's CellLandblock says HasObjects exactly when it has
 buildings (`has_objects`; `cell_landblock` writes it), so ACE's Landblock constructor
 reads the Info of a landblock with buildings and PostInit builds them (init_buildings); a
 dungeon's Info is read only by AdjustCell, as before.
@@ -170,6 +170,7 @@ TAG_PORT = 0x504F5254  # "PORT": a portal node (BSPPortal.cs): both children alw
 # ACE.Entity.Enum.EnvCellFlags
 ENV_CELL_SEEN_OUTSIDE = 0x1
 ENV_CELL_HAS_STATIC_OBJS = 0x2
+ENV_CELL_HAS_RESTRICTION_OBJ = 0x8  # scene/8 env_cells[].restriction_obj
 LANDBLOCK_INFO = 0xFFFE  # a landblock's LandblockInfo is 0xXXYYFFFE in the cell DAT
 
 _u16 = struct.Struct("<H")
@@ -654,7 +655,8 @@ def frame(f) -> bytes:
 def env_cell_record(cell: EnvCell, stabs, drawing: bool = False) -> DatRecord:
     """FileTypes/EnvCell; `stabs` are (id, scene Frame) pairs, the cell's static objects. `drawing` (scene/8): one
     surface, DRAWING_SURFACE's low word (none otherwise)."""
-    flags = (ENV_CELL_SEEN_OUTSIDE if cell.seen_outside else 0) | (ENV_CELL_HAS_STATIC_OBJS if stabs else 0)
+    flags = (ENV_CELL_SEEN_OUTSIDE if cell.seen_outside else 0) | (ENV_CELL_HAS_STATIC_OBJS if stabs else 0) | (
+        ENV_CELL_HAS_RESTRICTION_OBJ if cell.restriction_obj else 0)
     surfaces = (DRAWING_SURFACE & 0xFFFF,) if drawing else ()
     out = [struct.pack(f"<IIIBBH{len(surfaces)}HHH", cell.id, flags, cell.id, len(surfaces), len(cell.portals),
                        len(cell.visible_cells), *surfaces, cell.environment & 0xFFFF, cell.cell_structure), frame(cell.frame)]
@@ -663,6 +665,8 @@ def env_cell_record(cell: EnvCell, stabs, drawing: bool = False) -> DatRecord:
     if stabs:
         out.append(_u32.pack(len(stabs)))
         out += [_u32.pack(did) + frame(f) for did, f in stabs]
+    if cell.restriction_obj:
+        out.append(_u32.pack(cell.restriction_obj))
     return DatRecord(cell.id, "EnvCell", b"".join(out))
 
 
@@ -690,14 +694,19 @@ def building_info(building: Building, index: int, out: list, length: int) -> int
     return length
 
 
-def landblock_info_record(block: int, num_cells: int, buildings=()) -> DatRecord:
+def landblock_info_record(block: int, num_cells: int, buildings=(), restrictions=()) -> DatRecord:
     """FileTypes/LandblockInfo for landblock `block` (its high word): NumCells, no objects, its buildings
-    ((index in the scene, Building) pairs), PackMask 0."""
+    ((index in the scene, Building) pairs), PackMask 0, or 1 with `restrictions` (scene/8 landblocks[].restrictions:
+    (cell id, object id) pairs) and then its RestrictionTables as UnpackPackedHashTable reads one: a ushort count, a
+    ushort bucket size (unread; retail's is a prime, here 89), the pairs."""
     info_id = (block << 16) | LANDBLOCK_INFO
-    out = [struct.pack("<IIIHH", info_id, num_cells, 0, len(buildings), 0)]
+    out = [struct.pack("<IIIHH", info_id, num_cells, 0, len(buildings), 1 if restrictions else 0)]
     length = 16
     for index, building in buildings:
         length = building_info(building, index, out, length)
+    if restrictions:
+        out.append(struct.pack("<HH", len(restrictions), 89))
+        out += [struct.pack("<II", c, o) for c, o in restrictions]
     return DatRecord(info_id, "LandblockInfo", b"".join(out))
 
 
@@ -744,7 +753,9 @@ def cell_dat_records(scene: Scene) -> tuple[DatRecord, ...]:
         buildings.setdefault(b.landblock >> 16, []).append((index, b))
     for block in buildings:
         counts.setdefault(block, 0)
-    records += [landblock_info_record(block, n, buildings.get(block, ())) for block, n in counts.items()]
+    restrictions = {lb.id >> 16: lb.restrictions for lb in scene.landblocks}
+    records += [landblock_info_record(block, n, buildings.get(block, ()), restrictions.get(block, ()))
+                for block, n in counts.items()]
     return tuple(records)
 
 

@@ -142,16 +142,27 @@ class Landblock:
     heights: tuple[int, ...] = NO_TERRAIN  # 81 indices into the land height table, [x * 9 + y]
     terrain: tuple[int, ...] = NO_TERRAIN  # 81 terrain words (road, type, scenery bits); water type comes from them
     has_terrain: bool = True
+    # scene/8: its LandblockInfo's RestrictionTables (PackMask bit 0), (cell id, object id) pairs in table order: a
+    # housing barrier's owner per land cell (Landblock.init_static_objs gives the land cell at the key's land
+    # coordinate the object as its RestrictionObj; a key with none, an EnvCell's, is skipped). Read only for a
+    # landblock with buildings (its CellLandblock's HasObjects)
+    restrictions: tuple[tuple[int, int], ...] = ()
 
     def to_json(self):
+        extra = {"restrictions": [{"cell": write_id(c), "object": write_id(o)} for c, o in self.restrictions]} \
+            if self.restrictions else {}
         if not self.has_terrain:
-            return {"id": write_id(self.id)}
-        return {"id": write_id(self.id), "heights": list(self.heights), "terrain": list(self.terrain)}
+            return {"id": write_id(self.id), **extra}
+        return {"id": write_id(self.id), "heights": list(self.heights), "terrain": list(self.terrain), **extra}
 
     @staticmethod
     def from_json(r: Reader, indoor: bool = True) -> "Landblock":
         """`indoor`: the format may omit heights and terrain (scene/2)."""
-        r.obj({"id", "heights", "terrain"})
+        r.obj({"id", "heights", "terrain", "restrictions"})
+        restrictions = _restrictions(r["restrictions"]) if r.given("restrictions") else ()
+        if restrictions:
+            return replace(Landblock.from_json(Reader({k: v for k, v in r.value.items() if k != "restrictions"}, r.path),
+                                               indoor), restrictions=restrictions)
         lb_id = r["id"].id_()
         if lb_id & 0xFFFF != 0xFFFF:
             r["id"].fail(f"a landblock id ends in FFFF (e.g. 0x{lb_id >> 16:04X}FFFF), got {write_id(lb_id)}")
@@ -164,6 +175,21 @@ class Landblock:
         heights = r["heights"].ints(0, 255, count=81)
         terrain = r["terrain"].ints(0, 0xFFFF, count=81)
         return Landblock(lb_id, heights, terrain)
+
+
+def _restrictions(r: Reader) -> tuple[tuple[int, int], ...]:
+    """A LandblockInfo's RestrictionTables: {cell, object} pairs, each cell once (DatLoader's Dictionary.Add throws on
+    a key it holds), each object not 0 (ObjCell.check_entry_restrictions reads 0 as none)."""
+    pairs = []
+    for i, e in enumerate(r.list(max_count=0xFFFF)):
+        e.obj({"cell", "object"})
+        cell, obj = e["cell"].id_(), e["object"].id_()
+        if any(c == cell for c, _ in pairs):
+            r[i]["cell"].fail(f"cell {write_id(cell)} is restricted twice (DatLoader's Dictionary.Add throws)")
+        if obj == 0:
+            r[i]["object"].fail("a restriction object is not 0 (ObjCell.check_entry_restrictions reads 0 as none)")
+        pairs.append((cell, obj))
+    return tuple(pairs)
 
 
 @dataclass(frozen=True, slots=True)
@@ -492,24 +518,29 @@ class EnvCell:
     portals: tuple[CellPortalRec, ...] = ()
     visible_cells: tuple[int, ...] = ()  # low words of the cells seen from this one
     seen_outside: bool = False
+    # scene/8: its RestrictionObj (flag HasRestrictionObj): a housing barrier's owner, ObjCell.check_entry_restrictions
+    # asks ServerObjectManager for it when a player enters the cell (0: none, no flag)
+    restriction_obj: int = 0
 
     def to_json(self):
+        extra = {"restriction_obj": write_id(self.restriction_obj)} if self.restriction_obj else {}
         return {"id": write_id(self.id), **self.frame.to_json(), "environment": write_id(self.environment),
                 "cell_structure": self.cell_structure, "portals": [p.to_json() for p in self.portals],
-                "visible_cells": [f"0x{c:04X}" for c in self.visible_cells], "seen_outside": self.seen_outside}
+                "visible_cells": [f"0x{c:04X}" for c in self.visible_cells], "seen_outside": self.seen_outside, **extra}
 
     @staticmethod
     def from_json(r: Reader) -> "EnvCell":
         r.obj({"id", "origin", "orientation", "environment", "cell_structure", "portals", "visible_cells",
-               "seen_outside"})
+               "seen_outside", "restriction_obj"})
         cell_id = r["id"].id_()
         if not ENV_CELL_FIRST <= cell_id & 0xFFFF <= ENV_CELL_LAST:
             r["id"].fail(f"an EnvCell id is 0xXXYY{ENV_CELL_FIRST:04X} to 0xXXYY{ENV_CELL_LAST:04X}, got {write_id(cell_id)}")
         frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
         portals = tuple(CellPortalRec.from_json(p) for p in r["portals"].list(max_count=0xFF)) if r.given("portals") else ()
-        visible = _env_cell_words(r["visible_cells"], "a visible cell") if r.given("visible_cells") else ()
+        visible = _env_cell_words(r["visible_cells"], "a visible cell", low=True) if r.given("visible_cells") else ()
         return EnvCell(cell_id, frame, r["environment"].id_(), r["cell_structure"].int_(0, 0xFFFF), portals, visible,
-                       r["seen_outside"].bool_() if r.given("seen_outside") else False)
+                       r["seen_outside"].bool_() if r.given("seen_outside") else False,
+                       r["restriction_obj"].id_() if r.given("restriction_obj") else 0)
 
 
 def _low_word(r: Reader) -> int:
@@ -520,12 +551,21 @@ def _low_word(r: Reader) -> int:
     return v
 
 
-def _env_cell_words(r: Reader, what: str) -> tuple[int, ...]:
-    """A list of EnvCells' low words (visible cells, a building portal's stab list); `what` names one."""
+# scene/8: a visible cell or a building portal's other cell below 0x0100 (what ACE's EnvCell and CBldPortal read as
+# any ushort): LScape.get_landcell gives a LandCell for 0x0001..0x0040 (EnvCell.build_visible_cells' and
+# BldPortal.GetOtherCell's (EnvCell) cast throws InvalidCastException) and null for 0x0000 and 0x0041..0x00FF (no land
+# coordinate: VisibleCells holds null, GetOtherCell answers null)
+OUTDOOR_WORD_LAST = 0x00FF
+
+
+def _env_cell_words(r: Reader, what: str, low: bool = False) -> tuple[int, ...]:
+    """A list of EnvCells' low words (visible cells, a building portal's stab list); `what` names one. `low`: a word
+    0x0000..0x00FF too (OUTDOOR_WORD_LAST)."""
     words = tuple(_low_word(v) for v in r.list(max_count=0xFFFF))
     for i, v in enumerate(words):
-        if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
-            r[i].fail(f"{what} is an EnvCell's low word (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
+        if not (ENV_CELL_FIRST <= v <= ENV_CELL_LAST or low and v <= OUTDOOR_WORD_LAST):
+            r[i].fail(f"{what} is an EnvCell's low word (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X})"
+                      f"{' or 0x0000..0x00FF' if low else ''}, got 0x{v:04X}")
     return words
 
 
@@ -546,9 +586,9 @@ class BuildingPortalRec:
     def from_json(r: Reader) -> "BuildingPortalRec":
         r.obj({"other_cell", "other_portal", "flags", "stab_list"})
         other = _low_word(r["other_cell"])
-        if not ENV_CELL_FIRST <= other <= ENV_CELL_LAST:
+        if not (ENV_CELL_FIRST <= other <= ENV_CELL_LAST or other <= OUTDOOR_WORD_LAST):
             r["other_cell"].fail(f"a building's portal leads into one of its EnvCells "
-                                 f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{other:04X}")
+                                 f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}) or 0x0000..0x00FF, got 0x{other:04X}")
         flags = r["flags"].int_(0, PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT) if r.given("flags") else 0
         stabs = _env_cell_words(r["stab_list"], "a stab") if r.given("stab_list") else ()
         return BuildingPortalRec(other, r["other_portal"].int_(0, 0xFFFF), flags, stabs)
@@ -1718,6 +1758,17 @@ class Scene:
         return self.ticks is not None and any(s.door is not None for s in self.ticks.steps)
 
     @property
+    def has_restrictions(self) -> bool:
+        """scene/8: an EnvCell's restriction_obj or a landblock's restriction table (housing barriers)."""
+        return any(c.restriction_obj for c in self.env_cells) or any(lb.restrictions for lb in self.landblocks)
+
+    @property
+    def has_outdoor_words(self) -> bool:
+        """scene/8: a visible cell or a building portal's other cell below 0x0100 (OUTDOOR_WORD_LAST)."""
+        return any(v <= OUTDOOR_WORD_LAST for c in self.env_cells for v in c.visible_cells) or any(
+            p.other_cell <= OUTDOOR_WORD_LAST for b in self.buildings for p in b.portals)
+
+    @property
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, motion queries, the mover's skills or holding locations, a
         motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
@@ -1726,7 +1777,8 @@ class Scene:
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.motion_queries or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
-                self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or any(
+                self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or self.has_restrictions or (
+                self.has_outdoor_words) or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None or not o.setup.parts) for o in self.objects):
             return FORMAT
@@ -2157,6 +2209,12 @@ def _check_buildings(scene: Scene, path: str, env_cells: dict[int, EnvCell]) -> 
     the scene defines, names one of that cell's portals (or 0xFFFF, none), and its stab list names
     EnvCells of that landblock the scene defines."""
     by_id = {lb.id: lb for lb in scene.landblocks}
+    with_buildings = {b.landblock for b in scene.buildings}
+    for i, lb in enumerate(scene.landblocks):
+        if lb.restrictions and lb.id not in with_buildings:
+            raise InvalidScene(_p(path, f"landblocks[{i}].restrictions"),
+                               f"landblock {lb.id:08X} has no buildings: ACE reads its LandblockInfo (and so the "
+                               f"restriction table) only for a landblock whose CellLandblock has HasObjects")
     for i, b in enumerate(scene.buildings):
         where = _p(path, f"buildings[{i}]")
         lb = by_id.get(b.landblock)
@@ -2167,6 +2225,8 @@ def _check_buildings(scene: Scene, path: str, env_cells: dict[int, EnvCell]) -> 
                                                      f"in one of its outdoor cells (give it heights and terrain)")
         block = b.landblock & 0xFFFF0000
         for k, portal in enumerate(b.portals):
+            if portal.other_cell <= OUTDOOR_WORD_LAST:
+                continue  # scene/8: no EnvCell (OUTDOOR_WORD_LAST)
             cell = env_cells.get(block | portal.other_cell)
             if cell is None:
                 raise InvalidScene(f"{where}.portals[{k}].other_cell",
