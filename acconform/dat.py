@@ -72,7 +72,7 @@ in BSPType.Cell's layout (a node: its tag and splitting plane, then its children
 says which children follow: ``BPIN`` both, ``BPIn`` the front only, ``BpIN`` the back only, and
 ``Bpnn`` none -- a tag DatLoader's switch does not list, so it reads no child (``BPnn`` would read a
 front child); a leaf ``LEAF`` and its pre-order LeafIndex); the physics BSP as a GfxObj's; then
-(hasDrawingBSP 1) a drawing BSP derived from the polygons and portals (`drawing_bsp`: ACE builds
+(hasDrawingBSP 1; 0 and no tree for scene/8 `drawing_bsp: false`) a drawing BSP derived from the polygons and portals (`drawing_bsp`: ACE builds
 CellStruct.DrawingBSP from it and its physics never reads it; every portal polygon is in a ``PORT``
 node, as in retail's Environments). An `EnvCell` (cell DAT, id = the cell's id; FileTypes/EnvCell.cs): flags SeenOutside
 (0x1) and HasStaticObjs (0x2, when it has stabs), no surfaces, the environment's low word, the
@@ -630,8 +630,9 @@ def cell_struct(rec: CellStructRec, out: list, length: int, drawing: bool = Fals
     n = len(rec.polygons)
     tail += [_u16.pack(k) + polygon(p, ids, drawing) for k, (p, ids) in enumerate(zip(rec.physics_polygons, poly_ids[n:]))]
     bsp_node(rec.physics_bsp, tail, [])
-    tail.append(_u32.pack(1))  # hasDrawingBSP
-    drawing_bsp(rec, tail)
+    tail.append(_u32.pack(1 if rec.drawing_bsp else 0))  # hasDrawingBSP (scene/8 drawing_bsp: false writes 0, no tree)
+    if rec.drawing_bsp:
+        drawing_bsp(rec, tail)
     length += sum(map(len, tail))
     out += tail
     return _align(out, length)

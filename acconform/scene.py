@@ -425,29 +425,35 @@ class CellStructRec:
     physics_polygons: tuple[PolygonRec, ...]
     physics_bsp: "BSPNode | BSPLeaf | None"
     cell_bsp: "CellBSPNode | CellBSPLeaf | None"
+    # scene/8: false writes hasDrawingBSP 0 and no drawing tree (DatLoader and ACE's CellStruct leave DrawingBSP null;
+    # the physics never reads it)
+    drawing_bsp: bool = True
 
     def to_json(self):
         return {"polygons": [p.to_json() for p in self.polygons], "portals": list(self.portals),
                 "physics_polygons": [p.to_json() for p in self.physics_polygons],
                 "physics_bsp": None if self.physics_bsp is None else self.physics_bsp.to_json(),
-                "cell_bsp": None if self.cell_bsp is None else self.cell_bsp.to_json()}
+                "cell_bsp": None if self.cell_bsp is None else self.cell_bsp.to_json(),
+                **({} if self.drawing_bsp else {"drawing_bsp": False})}
 
     def json_text(self) -> str:
         return ('{"polygons":[' + ",".join([p.json_text() for p in self.polygons]) + '],"portals":'
                 + ints_text(self.portals) + ',"physics_polygons":['
                 + ",".join([p.json_text() for p in self.physics_polygons]) + '],"physics_bsp":'
                 + ("null" if self.physics_bsp is None else self.physics_bsp.json_text()) + ',"cell_bsp":'
-                + ("null" if self.cell_bsp is None else self.cell_bsp.json_text()) + "}")
+                + ("null" if self.cell_bsp is None else self.cell_bsp.json_text())
+                + ("" if self.drawing_bsp else ',"drawing_bsp":false') + "}")
 
     @staticmethod
     def from_json(r: Reader) -> "CellStructRec":
         """Both trees are required: a DAT CellStruct always holds a cell BSP and a physics BSP."""
-        r.obj({"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"})
+        r.obj({"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp", "drawing_bsp"})
         polys = tuple(PolygonRec.from_json(p) for p in r["polygons"].list(max_count=0xFFFF))
         portals = tuple(p.int_(0, len(polys) - 1) for p in r["portals"].list()) if r.given("portals") else ()
         physics = tuple(PolygonRec.from_json(p) for p in r["physics_polygons"].list(max_count=0xFFFF))
         return CellStructRec(polys, portals, physics, _bsp_from_json(r["physics_bsp"], len(physics)),
-                             _cell_bsp_from_json(r["cell_bsp"]))
+                             _cell_bsp_from_json(r["cell_bsp"]),
+                             r["drawing_bsp"].bool_() if r.given("drawing_bsp") else True)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1763,6 +1769,11 @@ class Scene:
         return any(c.restriction_obj for c in self.env_cells) or any(lb.restrictions for lb in self.landblocks)
 
     @property
+    def has_no_drawing_bsp(self) -> bool:
+        """scene/8: a cell structure written with hasDrawingBSP 0 (CellStructRec.drawing_bsp false)."""
+        return any(not c.drawing_bsp for e in self.environments for c in e.cell_structs)
+
+    @property
     def has_outdoor_words(self) -> bool:
         """scene/8: a visible cell or a building portal's other cell below 0x0100 (OUTDOOR_WORD_LAST)."""
         return any(v <= OUTDOOR_WORD_LAST for c in self.env_cells for v in c.visible_cells) or any(
@@ -1778,7 +1789,7 @@ class Scene:
         if self.others or self.motion_queries or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
                 self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or self.has_restrictions or (
-                self.has_outdoor_words) or any(
+                self.has_outdoor_words) or self.has_no_drawing_bsp or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None or not o.setup.parts) for o in self.objects):
             return FORMAT

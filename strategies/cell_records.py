@@ -12,7 +12,9 @@ building portals naming a low word below 0x0100 (scene/8, acconform.scene.OUTDOO
 - `visible`: an EnvCell sees a low word 0x0000 or 0x0041..0x00FF (VisibleCells holds null) or, rarely, a land
   cell's 0x0001..0x0040 (build_visible_cells' cast throws InvalidCastException);
 - `portal`: a building gets one more portal whose other cell is such a low word (GetOtherCell answers null, or its
-  cast throws).
+  cast throws);
+- `no_drawing_bsp`: some cell structures are written with hasDrawingBSP 0 (scene/8 `drawing_bsp: false`): ACE's
+  CellStruct keeps DrawingBSP null, which its physics never reads.
 
 No campaign kind draws it: a draw added to a kind would move every seeded sample the tests pin.
 """
@@ -29,7 +31,7 @@ from acconform.staging import MOVER_ID
 from .scenes import draw_scene
 from .set_position import with_placement
 
-CELL_RECORD_SHAPES = st.sampled_from(("restriction", "restriction", "visible", "portal"))
+CELL_RECORD_SHAPES = st.sampled_from(("restriction", "restriction", "visible", "portal", "no_drawing_bsp"))
 # ServerObjectManager's answers: the mover (a Player's WeenieObject: CanMoveInto true) or nothing (null: Collided)
 RESTRICTION_OBJECTS = st.sampled_from((MOVER_ID, 0x7ABC0001, 0x7ABC0001))
 # low words with no land coordinate (get_landcell: null) and, one in five, a land cell's (a LandCell: the cast throws)
@@ -66,10 +68,13 @@ def _restrict(draw, scene: Scene) -> Scene:
 def _visible(draw, scene: Scene) -> Scene:
     if not scene.env_cells:
         return scene
-    i = draw(st.integers(0, len(scene.env_cells) - 1))
+    # mostly the mover's begin cell, its null first: a placement's adjust_position meets it in
+    # find_visible_child_cell before the cell that holds the point
+    begin = [k for k, c in enumerate(scene.env_cells) if c.id == scene.mover.begin.cell]
+    i = begin[0] if begin and draw(st.integers(0, 3)) else draw(st.integers(0, len(scene.env_cells) - 1))
     cells = list(scene.env_cells)
     words = list(cells[i].visible_cells)
-    words.insert(draw(st.integers(0, len(words))), _low_word(draw))
+    words.insert(0 if draw(st.booleans()) else draw(st.integers(0, len(words))), _low_word(draw))
     cells[i] = replace(cells[i], visible_cells=tuple(words))
     return scene.replace(env_cells=tuple(cells))
 
@@ -85,9 +90,16 @@ def _portal(draw, scene: Scene) -> Scene:
     return scene.replace(buildings=tuple(buildings))
 
 
+def _no_drawing_bsp(draw, scene: Scene) -> Scene:
+    envs = tuple(replace(e, cell_structs=tuple(replace(c, drawing_bsp=False) if draw(st.integers(0, 3)) else c
+                                               for c in e.cell_structs)) for e in scene.environments)
+    return scene.replace(environments=envs)
+
+
 def draw_cell_records_scene(draw, kind: str = "buildings") -> Scene:
     """A buildings scene with one of the cell-record shapes of the module docstring."""
     scene = with_placement(draw, draw_scene(draw, kind))
     shape = draw(CELL_RECORD_SHAPES)
-    changed = {"restriction": _restrict, "visible": _visible, "portal": _portal}[shape](draw, scene)
+    changed = {"restriction": _restrict, "visible": _visible, "portal": _portal,
+               "no_drawing_bsp": _no_drawing_bsp}[shape](draw, scene)
     return changed.replace(name=f"{scene.name}:{shape}")

@@ -14,11 +14,13 @@ import pytest
 
 from acconform import dat
 from acconform.case import parse_document
+from acconform.codec import compact, dumps_compact
 from acconform.errors import InvalidScene
 from acconform.numerics import EXACT
 from acconform.port.dat.binary_reader import BinaryReader
 from acconform.port.dat.env_cell import ENV_CELL_HAS_RESTRICTION_OBJ
 from acconform.port.dat.env_cell import EnvCell as DatEnvCell
+from acconform.port.dat.environment import Environment
 from acconform.port.dat.landblock_info import LandblockInfo
 from acconform.port.run import run_scene
 from acconform.protocol import scene_features
@@ -100,3 +102,18 @@ def test_visible_cells_and_building_portals_may_name_low_words_below_0x0100_in_s
     doc = s.to_json()
     doc["env_cells"][0]["visible_cells"][-1] = "0x0100"[:2] + "FFFE"
     assert "a visible cell is an EnvCell's low word (0x0100..0xFFFD) or 0x0000..0x00FF, got 0xFFFE" in refused(doc)
+
+
+@pytest.mark.anchor("ACE.DatLoader/Entity/CellStruct.cs:Unpack")
+def test_a_cell_structure_without_a_drawing_bsp_is_scene_8_and_reads_back_with_none_and_the_same_physics():
+    env = BASE.environments[0]
+    bare = replace(env, cell_structs=tuple(replace(c, drawing_bsp=False) for c in env.cell_structs))
+    s = BASE.replace(environments=(bare, *BASE.environments[1:]))
+    assert Scene.loads(s.dumps()) == s and s.to_json()["format"] == FORMAT
+    assert s.to_json()["environments"][0]["cell_structs"][0]["drawing_bsp"] is False
+    assert compact(s.to_json) == dumps_compact(s.to_json())  # the structure's own text (json_text) says it too
+    read, full = (Environment.unpack(BinaryReader(dat.environment_record(e).data, EXACT)) for e in (bare, env))
+    assert all(c.drawing_bsp is None for c in read.cells.values())
+    assert all(c.drawing_bsp is not None for c in full.cells.values())
+    assert run_scene(s) == run_scene(BASE)
+
