@@ -449,7 +449,8 @@ class CellStructRec:
         """Both trees are required: a DAT CellStruct always holds a cell BSP and a physics BSP."""
         r.obj({"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp", "drawing_bsp"})
         polys = tuple(PolygonRec.from_json(p) for p in r["polygons"].list(max_count=0xFFFF))
-        portals = tuple(p.int_(0, len(polys) - 1) for p in r["portals"].list()) if r.given("portals") else ()
+        # a portal past the polygons (scene/8, Scene.has_missing_keys): CellStruct's Polygons[portal] throws
+        portals = tuple(p.int_(0, 0xFFFF) for p in r["portals"].list()) if r.given("portals") else ()
         physics = tuple(PolygonRec.from_json(p) for p in r["physics_polygons"].list(max_count=0xFFFF))
         return CellStructRec(polys, portals, physics, _bsp_from_json(r["physics_bsp"], len(physics)),
                              _cell_bsp_from_json(r["cell_bsp"]),
@@ -1774,6 +1775,22 @@ class Scene:
         return any(not c.drawing_bsp for e in self.environments for c in e.cell_structs)
 
     @property
+    def has_missing_keys(self) -> bool:
+        """scene/8: a key ACE's physics looks up and does not find: an EnvCell's cell_structure past its Environment's
+        structures (CellStructure stays null), an EnvCell portal's polygon or a structure's portal past the structure's
+        polygons (the Polygons indexer throws KeyNotFoundException)."""
+        envs = {e.id: e for e in self.environments}
+        for c in self.env_cells:
+            env = envs.get(c.environment)
+            if env is None:
+                continue
+            if c.cell_structure >= len(env.cell_structs):
+                return True
+            if any(p.polygon >= len(env.cell_structs[c.cell_structure].polygons) for p in c.portals):
+                return True
+        return any(k >= len(c.polygons) for e in self.environments for c in e.cell_structs for k in c.portals)
+
+    @property
     def has_outdoor_words(self) -> bool:
         """scene/8: a visible cell or a building portal's other cell below 0x0100 (OUTDOOR_WORD_LAST)."""
         return any(v <= OUTDOOR_WORD_LAST for c in self.env_cells for v in c.visible_cells) or any(
@@ -1789,7 +1806,7 @@ class Scene:
         if self.others or self.motion_queries or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
                 self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or self.has_restrictions or (
-                self.has_outdoor_words) or self.has_no_drawing_bsp or any(
+                self.has_outdoor_words) or self.has_no_drawing_bsp or self.has_missing_keys or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None or not o.setup.parts) for o in self.objects):
             return FORMAT
@@ -2190,13 +2207,11 @@ def _check_indoor(scene: Scene, path: str, defined: set[int]) -> dict[int, EnvCe
         if env is None:
             raise InvalidScene(f"{where}.environment", f"Environment {c.environment:08X} is not defined in environments")
         if c.cell_structure >= len(env.cell_structs):
-            raise InvalidScene(f"{where}.cell_structure", f"Environment {env.id:08X} has {len(env.cell_structs)} "
-                                                          f"cell structures (0..{len(env.cell_structs) - 1}), got {c.cell_structure}")
+            continue  # scene/8 (Scene.has_missing_keys): ACE's EnvCell finds no CellStruct and leaves CellStructure null
         struct = env.cell_structs[c.cell_structure]
         for k, portal in enumerate(c.portals):
             if portal.polygon >= len(struct.polygons):
-                raise InvalidScene(f"{where}.portals[{k}].polygon", f"the cell structure has {len(struct.polygons)} "
-                                                                    f"polygons, got {portal.polygon}")
+                continue  # scene/8: CellStructure.Polygons[PolygonId] throws KeyNotFoundException where it is read
             if portal.polygon not in struct.portals:
                 raise InvalidScene(f"{where}.portals[{k}].polygon", f"polygon {portal.polygon} is not one of the cell "
                                                                     f"structure's portals {list(struct.portals)}")

@@ -14,7 +14,11 @@ building portals naming a low word below 0x0100 (scene/8, acconform.scene.OUTDOO
 - `portal`: a building gets one more portal whose other cell is such a low word (GetOtherCell answers null, or its
   cast throws);
 - `no_drawing_bsp`: some cell structures are written with hasDrawingBSP 0 (scene/8 `drawing_bsp: false`): ACE's
-  CellStruct keeps DrawingBSP null, which its physics never reads.
+  CellStruct keeps DrawingBSP null, which its physics never reads;
+- `missing_key` (Scene.has_missing_keys): an EnvCell names a cell structure its Environment lacks (CellStructure
+  stays null: the first physics read of it throws NullReferenceException), one of its portals a polygon past its
+  structure's (find_transit_cells' Polygons[PolygonId] throws KeyNotFoundException), or a structure lists a portal
+  past its polygons (CellStruct's constructor throws KeyNotFoundException building the cell).
 
 No campaign kind draws it: a draw added to a kind would move every seeded sample the tests pin.
 """
@@ -31,7 +35,8 @@ from acconform.staging import MOVER_ID
 from .scenes import draw_scene
 from .set_position import with_placement
 
-CELL_RECORD_SHAPES = st.sampled_from(("restriction", "restriction", "visible", "portal", "no_drawing_bsp"))
+CELL_RECORD_SHAPES = st.sampled_from(("restriction", "restriction", "visible", "portal", "no_drawing_bsp", "missing_key"))
+MISSING_KEYS = st.sampled_from(("cell_structure", "cell_portal", "struct_portal"))
 # ServerObjectManager's answers: the mover (a Player's WeenieObject: CanMoveInto true) or nothing (null: Collided)
 RESTRICTION_OBJECTS = st.sampled_from((MOVER_ID, 0x7ABC0001, 0x7ABC0001))
 # low words with no land coordinate (get_landcell: null) and, one in five, a land cell's (a LandCell: the cast throws)
@@ -96,10 +101,34 @@ def _no_drawing_bsp(draw, scene: Scene) -> Scene:
     return scene.replace(environments=envs)
 
 
+def _missing_key(draw, scene: Scene) -> Scene:
+    if not scene.env_cells:
+        return scene
+    which = draw(MISSING_KEYS)
+    begin = [k for k, c in enumerate(scene.env_cells) if c.id == scene.mover.begin.cell]
+    i = begin[0] if begin and draw(st.booleans()) else draw(st.integers(0, len(scene.env_cells) - 1))
+    cells, envs = list(scene.env_cells), {e.id: e for e in scene.environments}
+    env = envs[cells[i].environment]
+    struct = env.cell_structs[cells[i].cell_structure]
+    if which == "cell_structure":
+        cells[i] = replace(cells[i], cell_structure=len(env.cell_structs) + draw(st.integers(0, 2)))
+    elif which == "cell_portal" and cells[i].portals:
+        k = draw(st.integers(0, len(cells[i].portals) - 1))
+        portals = list(cells[i].portals)
+        portals[k] = replace(portals[k], polygon=len(struct.polygons) + draw(st.integers(0, 2)))
+        cells[i] = replace(cells[i], portals=tuple(portals))
+    else:
+        changed = replace(struct, portals=(*struct.portals, len(struct.polygons) + draw(st.integers(0, 2))))
+        structs = tuple(changed if c is struct else c for c in env.cell_structs)
+        return scene.replace(environments=tuple(replace(e, cell_structs=structs) if e.id == env.id else e
+                                                for e in scene.environments))
+    return scene.replace(env_cells=tuple(cells))
+
+
 def draw_cell_records_scene(draw, kind: str = "buildings") -> Scene:
     """A buildings scene with one of the cell-record shapes of the module docstring."""
     scene = with_placement(draw, draw_scene(draw, kind))
     shape = draw(CELL_RECORD_SHAPES)
     changed = {"restriction": _restrict, "visible": _visible, "portal": _portal,
-               "no_drawing_bsp": _no_drawing_bsp}[shape](draw, scene)
+               "no_drawing_bsp": _no_drawing_bsp, "missing_key": _missing_key}[shape](draw, scene)
     return changed.replace(name=f"{scene.name}:{shape}")

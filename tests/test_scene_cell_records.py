@@ -117,3 +117,25 @@ def test_a_cell_structure_without_a_drawing_bsp_is_scene_8_and_reads_back_with_n
     assert all(c.drawing_bsp is not None for c in full.cells.values())
     assert run_scene(s) == run_scene(BASE)
 
+
+
+def _missing(kind: str) -> Scene:
+    env = BASE.environments[0]
+    cells = list(BASE.env_cells)
+    if kind == "cell_structure":
+        cells[0] = replace(cells[0], cell_structure=len(env.cell_structs))
+        return BASE.replace(env_cells=tuple(cells))
+    struct = env.cell_structs[cells[0].cell_structure]
+    changed = replace(struct, portals=(*struct.portals, len(struct.polygons)))
+    env = replace(env, cell_structs=tuple(changed if c is struct else c for c in env.cell_structs))
+    return BASE.replace(environments=(env, *BASE.environments[1:]))
+
+
+@pytest.mark.anchor("EnvCell.cs:EnvCell(DatLoader.FileTypes.EnvCell)")
+@pytest.mark.parametrize("kind, error", [("cell_structure", "NullReferenceException"),
+                                         ("struct_portal", "KeyNotFoundException")])
+def test_a_cell_whose_structure_or_portal_polygon_is_missing_is_scene_8_and_ace_throws_where_it_is_read(kind, error):
+    s = _missing(kind)
+    assert Scene.loads(s.dumps()) == s and s.to_json()["format"] == FORMAT and s.has_missing_keys
+    assert not BASE.has_missing_keys
+    assert run_scene(s).error.startswith(error)
