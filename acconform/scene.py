@@ -275,7 +275,9 @@ def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
     kind = r["type"].str_()
     if kind == "leaf":
         r.obj({"type", "polygons", "solid", "sphere"})
-        polys = r["polygons"].ints(0, npolys - 1)
+        # a polygon id past the shape's (scene/8, Scene.has_missing_keys): ACE's BSPNode throws KeyNotFoundException
+        # building the tree (polys[poly])
+        polys = r["polygons"].ints(0, 0xFFFF)
         solid = r["solid"].bool_() if r.given("solid") else False
         return BSPLeaf(polys, solid, SphereRec.from_json(r["sphere"], bounding=True))
     if kind == "node":
@@ -286,6 +288,15 @@ def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
         return BSPNode(PlaneRec.from_json(r["plane"]), SphereRec.from_json(r["sphere"], bounding=True),
                        _bsp_from_json(r["front"], npolys), _bsp_from_json(r["back"], npolys))
     r["type"].fail(f"unknown BSP element type {kind!r} (known: node, leaf)")
+
+
+def _leaf_past(node, npolys: int) -> bool:
+    """Whether a leaf of the physics tree names a polygon id at or past `npolys` (scene/8)."""
+    if node is None:
+        return False
+    if isinstance(node, BSPLeaf):
+        return any(k >= npolys for k in node.polygons)
+    return _leaf_past(node.front, npolys) or _leaf_past(node.back, npolys)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1788,7 +1799,14 @@ class Scene:
                 return True
             if any(p.polygon >= len(env.cell_structs[c.cell_structure].polygons) for p in c.portals):
                 return True
-        return any(k >= len(c.polygons) for e in self.environments for c in e.cell_structs for k in c.portals)
+        if any(k >= len(c.polygons) for e in self.environments for c in e.cell_structs for k in c.portals):
+            return True
+        shapes = [(len(c.physics_polygons), c.physics_bsp) for e in self.environments for c in e.cell_structs]
+        shapes += [(len(b.shape.polygons), b.shape.root) for b in self.buildings]
+        shapes += [(len(o.shape.polygons), o.shape.root) for o in self.objects if isinstance(o.shape, BSPShape)]
+        shapes += [(len(p.shape.polygons), p.shape.root) for o in (*self.objects, *self.others)
+                   if getattr(o, "setup", None) is not None for p in o.setup.parts]
+        return any(_leaf_past(root, n) for n, root in shapes)
 
     @property
     def has_outdoor_words(self) -> bool:

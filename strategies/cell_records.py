@@ -18,7 +18,9 @@ building portals naming a low word below 0x0100 (scene/8, acconform.scene.OUTDOO
 - `missing_key` (Scene.has_missing_keys): an EnvCell names a cell structure its Environment lacks (CellStructure
   stays null: the first physics read of it throws NullReferenceException), one of its portals a polygon past its
   structure's (find_transit_cells' Polygons[PolygonId] throws KeyNotFoundException), or a structure lists a portal
-  past its polygons (CellStruct's constructor throws KeyNotFoundException building the cell).
+  past its polygons (CellStruct's constructor throws KeyNotFoundException building the cell), or a leaf of a
+  building shell's or a cell structure's physics tree names a polygon past the shape's (BSPNode's constructor throws
+  KeyNotFoundException building the tree: at PostInit's init_buildings, or loading the cell).
 
 No campaign kind draws it: a draw added to a kind would move every seeded sample the tests pin.
 """
@@ -29,14 +31,14 @@ from dataclasses import replace
 
 from hypothesis import strategies as st
 
-from acconform.scene import BuildingPortalRec, Scene
+from acconform.scene import BSPLeaf, BuildingPortalRec, Scene
 from acconform.staging import MOVER_ID
 
 from .scenes import draw_scene
 from .set_position import with_placement
 
 CELL_RECORD_SHAPES = st.sampled_from(("restriction", "restriction", "visible", "portal", "no_drawing_bsp", "missing_key"))
-MISSING_KEYS = st.sampled_from(("cell_structure", "cell_portal", "struct_portal"))
+MISSING_KEYS = st.sampled_from(("cell_structure", "cell_portal", "struct_portal", "shell_leaf", "cell_leaf"))
 # ServerObjectManager's answers: the mover (a Player's WeenieObject: CanMoveInto true) or nothing (null: Collided)
 RESTRICTION_OBJECTS = st.sampled_from((MOVER_ID, 0x7ABC0001, 0x7ABC0001))
 # low words with no land coordinate (get_landcell: null) and, one in five, a land cell's (a LandCell: the cast throws)
@@ -101,10 +103,21 @@ def _no_drawing_bsp(draw, scene: Scene) -> Scene:
     return scene.replace(environments=envs)
 
 
+def _leaf_plus(node, poly: int):
+    """The tree with polygon id `poly` added to its first leaf (pre-order)."""
+    if isinstance(node, BSPLeaf):
+        return replace(node, polygons=(*node.polygons, poly))
+    return replace(node, front=_leaf_plus(node.front, poly))
+
+
 def _missing_key(draw, scene: Scene) -> Scene:
     if not scene.env_cells:
         return scene
     which = draw(MISSING_KEYS)
+    if which == "shell_leaf" and scene.buildings:
+        b = scene.buildings[0]
+        shape = replace(b.shape, root=_leaf_plus(b.shape.root, len(b.shape.polygons) + draw(st.integers(0, 2))))
+        return scene.replace(buildings=(replace(b, shape=shape), *scene.buildings[1:]))
     begin = [k for k, c in enumerate(scene.env_cells) if c.id == scene.mover.begin.cell]
     i = begin[0] if begin and draw(st.booleans()) else draw(st.integers(0, len(scene.env_cells) - 1))
     cells, envs = list(scene.env_cells), {e.id: e for e in scene.environments}
@@ -112,6 +125,11 @@ def _missing_key(draw, scene: Scene) -> Scene:
     struct = env.cell_structs[cells[i].cell_structure]
     if which == "cell_structure":
         cells[i] = replace(cells[i], cell_structure=len(env.cell_structs) + draw(st.integers(0, 2)))
+    elif which == "cell_leaf" and struct.physics_bsp is not None:
+        changed = replace(struct, physics_bsp=_leaf_plus(struct.physics_bsp, len(struct.physics_polygons)))
+        structs = tuple(changed if c is struct else c for c in env.cell_structs)
+        return scene.replace(environments=tuple(replace(e, cell_structs=structs) if e.id == env.id else e
+                                                for e in scene.environments))
     elif which == "cell_portal" and cells[i].portals:
         k = draw(st.integers(0, len(cells[i].portals) - 1))
         portals = list(cells[i].portals)

@@ -27,6 +27,7 @@ from acconform.protocol import scene_features
 from acconform.scene import FORMAT, BuildingPortalRec, Scene
 from acconform.staging import MOVER_ID
 from acconform.strategies import sample_scenes
+from acconform.strategies.cell_records import _leaf_plus
 
 BASE = next(s for s in sample_scenes(("buildings",), 40, 3) if s.name.startswith("building:in") and s.mover.placement is None)
 NOBODY = 0x7ABC0001  # an id ServerObjectManager does not hold
@@ -125,6 +126,10 @@ def _missing(kind: str) -> Scene:
     if kind == "cell_structure":
         cells[0] = replace(cells[0], cell_structure=len(env.cell_structs))
         return BASE.replace(env_cells=tuple(cells))
+    if kind == "shell_leaf":
+        b = BASE.buildings[0]
+        shape = replace(b.shape, root=_leaf_plus(b.shape.root, len(b.shape.polygons)))
+        return BASE.replace(buildings=(replace(b, shape=shape),))
     struct = env.cell_structs[cells[0].cell_structure]
     changed = replace(struct, portals=(*struct.portals, len(struct.polygons)))
     env = replace(env, cell_structs=tuple(changed if c is struct else c for c in env.cell_structs))
@@ -133,8 +138,9 @@ def _missing(kind: str) -> Scene:
 
 @pytest.mark.anchor("EnvCell.cs:EnvCell(DatLoader.FileTypes.EnvCell)")
 @pytest.mark.parametrize("kind, error", [("cell_structure", "NullReferenceException"),
-                                         ("struct_portal", "KeyNotFoundException")])
-def test_a_cell_whose_structure_or_portal_polygon_is_missing_is_scene_8_and_ace_throws_where_it_is_read(kind, error):
+                                         ("struct_portal", "KeyNotFoundException"),
+                                         ("shell_leaf", "KeyNotFoundException")])
+def test_a_missing_structure_portal_polygon_or_leaf_polygon_is_scene_8_and_ace_throws_where_it_is_read(kind, error):
     s = _missing(kind)
     assert Scene.loads(s.dumps()) == s and s.to_json()["format"] == FORMAT and s.has_missing_keys
     assert not BASE.has_missing_keys
