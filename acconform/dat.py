@@ -519,6 +519,8 @@ def cell_bsp_node(node, out: list, leaves: list) -> None:
         return
     front, back = node.front is not None, node.back is not None
     tag = TAG_BPIN if front and back else TAG_BPIn if front else TAG_BpIN if back else TAG_Bpnn
+    if node.portal:  # scene/8: PORT, read as BPIN in a cell tree (both children)
+        tag = TAG_PORT
     out.append(_u32.pack(tag) + _4f.pack(*node.plane.normal, node.plane.d))
     if front:
         cell_bsp_node(node.front, out, leaves)

@@ -390,9 +390,14 @@ class CellBSPNode:
     plane: PlaneRec
     front: "CellBSPNode | CellBSPLeaf | None"
     back: "CellBSPNode | CellBSPLeaf | None"
+    # scene/8: written with the tag PORT (a node with both children): DatLoader reads it as a BSPPortal, in a cell tree
+    # exactly as a BPIN node (no sphere, no polygons), and ACE's physics BSPNode makes the same node of it
+    portal: bool = False
 
     def to_json(self):
         d = {"type": "node", "plane": self.plane.to_json()}
+        if self.portal:
+            d["portal"] = True
         if self.front is not None:
             d["front"] = self.front.to_json()
         if self.back is not None:
@@ -400,7 +405,7 @@ class CellBSPNode:
         return d
 
     def json_text(self) -> str:
-        text = '{"type":"node","plane":' + self.plane.json_text()
+        text = '{"type":"node","plane":' + self.plane.json_text() + (',"portal":true' if self.portal else "")
         if self.front is not None:
             text += ',"front":' + self.front.json_text()
         if self.back is not None:
@@ -416,10 +421,13 @@ def _cell_bsp_from_json(r: Reader) -> "CellBSPNode | CellBSPLeaf":
         r.obj({"type"})
         return CellBSPLeaf()
     if kind == "node":
-        r.obj({"type", "plane", "front", "back"})
+        r.obj({"type", "plane", "front", "back", "portal"})
+        portal = r["portal"].bool_() if r.given("portal") else False
+        if portal and not (r.has("front") and r.has("back")):
+            r["portal"].fail("a portal node (tag PORT) has both children (DatLoader's BSPPortal reads two)")
         return CellBSPNode(PlaneRec.from_json(r["plane"]),
                            _cell_bsp_from_json(r["front"]) if r.has("front") else None,
-                           _cell_bsp_from_json(r["back"]) if r.has("back") else None)
+                           _cell_bsp_from_json(r["back"]) if r.has("back") else None, portal)
     r["type"].fail(f"unknown cell BSP element type {kind!r} (known: node, leaf)")
 
 
@@ -1809,6 +1817,13 @@ class Scene:
         return any(_leaf_past(root, n) for n, root in shapes)
 
     @property
+    def has_cell_bsp_portals(self) -> bool:
+        """scene/8: a cell BSP node written with the tag PORT (CellBSPNode.portal)."""
+        def walk(node) -> bool:
+            return isinstance(node, CellBSPNode) and (node.portal or walk(node.front) or walk(node.back))
+        return any(walk(c.cell_bsp) for e in self.environments for c in e.cell_structs)
+
+    @property
     def has_outdoor_words(self) -> bool:
         """scene/8: a visible cell or a building portal's other cell below 0x0100 (OUTDOOR_WORD_LAST)."""
         return any(v <= OUTDOOR_WORD_LAST for c in self.env_cells for v in c.visible_cells) or any(
@@ -1824,7 +1839,7 @@ class Scene:
         if self.others or self.motion_queries or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
                 self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or self.has_restrictions or (
-                self.has_outdoor_words) or self.has_no_drawing_bsp or self.has_missing_keys or any(
+                self.has_outdoor_words) or self.has_no_drawing_bsp or self.has_missing_keys or self.has_cell_bsp_portals or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None or not o.setup.parts) for o in self.objects):
             return FORMAT

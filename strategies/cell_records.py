@@ -20,7 +20,9 @@ building portals naming a low word below 0x0100 (scene/8, acconform.scene.OUTDOO
   structure's (find_transit_cells' Polygons[PolygonId] throws KeyNotFoundException), or a structure lists a portal
   past its polygons (CellStruct's constructor throws KeyNotFoundException building the cell), or a leaf of a
   building shell's or a cell structure's physics tree names a polygon past the shape's (BSPNode's constructor throws
-  KeyNotFoundException building the tree: at PostInit's init_buildings, or loading the cell).
+  KeyNotFoundException building the tree: at PostInit's init_buildings, or loading the cell);
+- `cell_bsp_portal`: some nodes of the cell structures' cell trees are written with the tag PORT (scene/8 `portal`;
+  a missing child becomes a leaf, as a PORT node has both): DatLoader's BSPPortal reads them as BPIN nodes.
 
 No campaign kind draws it: a draw added to a kind would move every seeded sample the tests pin.
 """
@@ -31,13 +33,14 @@ from dataclasses import replace
 
 from hypothesis import strategies as st
 
-from acconform.scene import BSPLeaf, BuildingPortalRec, Scene
+from acconform.scene import BSPLeaf, BuildingPortalRec, CellBSPLeaf, CellBSPNode, Scene
 from acconform.staging import MOVER_ID
 
 from .scenes import draw_scene
 from .set_position import with_placement
 
-CELL_RECORD_SHAPES = st.sampled_from(("restriction", "restriction", "visible", "portal", "no_drawing_bsp", "missing_key"))
+CELL_RECORD_SHAPES = st.sampled_from(("restriction", "restriction", "visible", "portal", "no_drawing_bsp", "missing_key",
+                                      "cell_bsp_portal"))
 MISSING_KEYS = st.sampled_from(("cell_structure", "cell_portal", "struct_portal", "shell_leaf", "cell_leaf"))
 # ServerObjectManager's answers: the mover (a Player's WeenieObject: CanMoveInto true) or nothing (null: Collided)
 RESTRICTION_OBJECTS = st.sampled_from((MOVER_ID, 0x7ABC0001, 0x7ABC0001))
@@ -143,10 +146,26 @@ def _missing_key(draw, scene: Scene) -> Scene:
     return scene.replace(env_cells=tuple(cells))
 
 
+def _port_nodes(draw, node):
+    """The cell tree with some of its nodes tagged PORT, a missing child made a leaf (a PORT node has both)."""
+    if not isinstance(node, CellBSPNode):
+        return node
+    front, back = _port_nodes(draw, node.front), _port_nodes(draw, node.back)
+    if draw(st.booleans()):
+        return replace(node, front=front or CellBSPLeaf(), back=back or CellBSPLeaf(), portal=True)
+    return replace(node, front=front, back=back)
+
+
+def _cell_bsp_portal(draw, scene: Scene) -> Scene:
+    envs = tuple(replace(e, cell_structs=tuple(replace(c, cell_bsp=_port_nodes(draw, c.cell_bsp)) for c in e.cell_structs))
+                 for e in scene.environments)
+    return scene.replace(environments=envs)
+
+
 def draw_cell_records_scene(draw, kind: str = "buildings") -> Scene:
     """A buildings scene with one of the cell-record shapes of the module docstring."""
     scene = with_placement(draw, draw_scene(draw, kind))
     shape = draw(CELL_RECORD_SHAPES)
     changed = {"restriction": _restrict, "visible": _visible, "portal": _portal,
-               "no_drawing_bsp": _no_drawing_bsp, "missing_key": _missing_key}[shape](draw, scene)
+               "no_drawing_bsp": _no_drawing_bsp, "missing_key": _missing_key, "cell_bsp_portal": _cell_bsp_portal}[shape](draw, scene)
     return changed.replace(name=f"{scene.name}:{shape}")

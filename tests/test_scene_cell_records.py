@@ -145,3 +145,25 @@ def test_a_missing_structure_portal_polygon_or_leaf_polygon_is_scene_8_and_ace_t
     assert Scene.loads(s.dumps()) == s and s.to_json()["format"] == FORMAT and s.has_missing_keys
     assert not BASE.has_missing_keys
     assert run_scene(s).error.startswith(error)
+
+
+@pytest.mark.anchor("ACE.DatLoader/Entity/BSPPortal.cs:Unpack")
+def test_a_cell_tree_node_tagged_port_is_scene_8_reads_as_a_portal_node_and_changes_nothing_ace_reads():
+    from acconform.port.dat.bsp_portal import BSPPortal
+    from acconform.strategies.cell_records import _port_nodes
+
+    class Always:  # every node a PORT one
+        def __call__(self, strategy):
+            return True
+
+    env = BASE.environments[0]
+    ported = replace(env, cell_structs=tuple(replace(c, cell_bsp=_port_nodes(Always(), c.cell_bsp)) for c in env.cell_structs))
+    s = BASE.replace(environments=(ported, *BASE.environments[1:]))
+    assert s.has_cell_bsp_portals and not BASE.has_cell_bsp_portals and s.to_json()["format"] == FORMAT
+    assert Scene.loads(s.dumps()) == s and compact(s.to_json) == dumps_compact(s.to_json())
+    root = Environment.unpack(BinaryReader(dat.environment_record(ported).data, EXACT)).cells[0].cell_bsp.root_node
+    assert isinstance(root, BSPPortal) and root.in_polys is None and root.sphere is None
+    doc = s.to_json()
+    node = doc["environments"][0]["cell_structs"][0]["cell_bsp"]
+    node.pop("back")
+    assert "a portal node (tag PORT) has both children" in refused(doc)
