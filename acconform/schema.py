@@ -153,10 +153,22 @@ def _sample():
     return scenes, [run_scene(s) for s in scenes]
 
 
+def _port_root(node):
+    """The cell tree with its root tagged PORT (scene/8 `portal`; a missing child made a leaf)."""
+    from dataclasses import replace
+
+    from .scene import CellBSPLeaf, CellBSPNode
+
+    if not isinstance(node, CellBSPNode):
+        return node
+    return replace(node, portal=True, front=node.front or CellBSPLeaf(), back=node.back or CellBSPLeaf())
+
+
 def _cell_record_scenes(scenes):
     """A scene/8 variant of the first sampled scene with buildings (strategies/cell_records.py's shapes): every EnvCell
     restricted to the mover and its landblock's restriction table, a visible cell and a building portal below
-    0x0100, its cell structures without a drawing BSP, so each of those fields is written."""
+    0x0100, its cell structures without a drawing BSP and their cell trees' roots tagged PORT, so each of those fields
+    is written."""
     from dataclasses import replace
 
     from .scene import BuildingPortalRec
@@ -170,8 +182,8 @@ def _cell_record_scenes(scenes):
             landblocks = tuple(replace(lb, restrictions=(((b.landblock & 0xFFFF0000) | 1, MOVER_ID),))
                                if lb.id == b.landblock else lb for lb in scene.landblocks)
             building = replace(b, portals=(*b.portals, BuildingPortalRec(0x0000, 0xFFFF)))
-            envs = tuple(replace(e, cell_structs=tuple(replace(c, drawing_bsp=False) for c in e.cell_structs))
-                         for e in scene.environments)
+            envs = tuple(replace(e, cell_structs=tuple(replace(c, drawing_bsp=False, cell_bsp=_port_root(c.cell_bsp))
+                                                       for c in e.cell_structs)) for e in scene.environments)
             return [replace(scene, env_cells=cells, landblocks=landblocks, buildings=(building, *scene.buildings[1:]),
                             environments=envs, name="cell records")]
     return []

@@ -50,6 +50,7 @@ def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(g
     assert set(structure) == {"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp", "drawing_bsp"}
     # scene/8's housing barriers (schema._cell_record_scenes)
     assert "restriction_obj" in cell and "restrictions" in landblock["properties"]
+    assert "portal" in scene["$defs"]["type:node"]["properties"]  # a cell-tree node's tag PORT
 
 
 def test_the_scene_schema_names_every_building_field(generated):
