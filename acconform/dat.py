@@ -72,17 +72,17 @@ in BSPType.Cell's layout (a node: its tag and splitting plane, then its children
 says which children follow: ``BPIN`` both, ``BPIn`` the front only, ``BpIN`` the back only, and
 ``Bpnn`` none -- a tag DatLoader's switch does not list, so it reads no child (``BPnn`` would read a
 front child); a leaf ``LEAF`` and its pre-order LeafIndex); the physics BSP as a GfxObj's; then
-(hasDrawingBSP 1) a drawing BSP derived from the polygons and portals (`drawing_bsp`: ACE builds
+(hasDrawingBSP 1; 0 and no tree for scene/8 `drawing_bsp: false`) a drawing BSP derived from the polygons and portals (`drawing_bsp`: ACE builds
 CellStruct.DrawingBSP from it and its physics never reads it; every portal polygon is in a ``PORT``
 node, as in retail's Environments). An `EnvCell` (cell DAT, id = the cell's id; FileTypes/EnvCell.cs): flags SeenOutside
 (0x1) and HasStaticObjs (0x2, when it has stabs), no surfaces, the environment's low word, the
 structure index, the frame, the portals (flags, polygon, other cell, other portal), the visible
 cells, and its stabs: the scene's static objects whose position.cell is this cell, in scene order,
-each the id `static_records` gives it and the object's frame (Entity/Stab.cs); no restriction
-object. A `LandblockInfo` (cell DAT, ``0xXXYYFFFE``; FileTypes/LandblockInfo.cs) is written for
+each the id `static_records` gives it and the object's frame (Entity/Stab.cs); then (flag HasRestrictionObj
+0x8, scene/8 `restriction_obj`) its restriction object. A `LandblockInfo` (cell DAT, ``0xXXYYFFFE``; FileTypes/LandblockInfo.cs) is written for
 each landblock that has EnvCells or buildings: NumCells = the number of its EnvCells (ACE's
 AdjustCell loads 0x0100 .. 0x0100 + NumCells - 1 to find the cell holding a point), no objects,
-its buildings, PackMask 0. A landblock's CellLandblock says HasObjects exactly when it has
+its buildings, PackMask 0 (1 with scene/8 `restrictions`: then the RestrictionTables). A landblock's CellLandblock says HasObjects exactly when it has
 buildings (`has_objects`; `cell_landblock` writes it), so ACE's Landblock constructor
 reads the Info of a landblock with buildings and PostInit builds them (init_buildings); a
 dungeon's Info is read only by AdjustCell, as before.
@@ -170,6 +170,7 @@ TAG_PORT = 0x504F5254  # "PORT": a portal node (BSPPortal.cs): both children alw
 # ACE.Entity.Enum.EnvCellFlags
 ENV_CELL_SEEN_OUTSIDE = 0x1
 ENV_CELL_HAS_STATIC_OBJS = 0x2
+ENV_CELL_HAS_RESTRICTION_OBJ = 0x8  # scene/8 env_cells[].restriction_obj
 LANDBLOCK_INFO = 0xFFFE  # a landblock's LandblockInfo is 0xXXYYFFFE in the cell DAT
 
 _u16 = struct.Struct("<H")
@@ -518,6 +519,8 @@ def cell_bsp_node(node, out: list, leaves: list) -> None:
         return
     front, back = node.front is not None, node.back is not None
     tag = TAG_BPIN if front and back else TAG_BPIn if front else TAG_BpIN if back else TAG_Bpnn
+    if node.portal:  # scene/8: PORT, read as BPIN in a cell tree (both children)
+        tag = TAG_PORT
     out.append(_u32.pack(tag) + _4f.pack(*node.plane.normal, node.plane.d))
     if front:
         cell_bsp_node(node.front, out, leaves)
@@ -629,8 +632,9 @@ def cell_struct(rec: CellStructRec, out: list, length: int, drawing: bool = Fals
     n = len(rec.polygons)
     tail += [_u16.pack(k) + polygon(p, ids, drawing) for k, (p, ids) in enumerate(zip(rec.physics_polygons, poly_ids[n:]))]
     bsp_node(rec.physics_bsp, tail, [])
-    tail.append(_u32.pack(1))  # hasDrawingBSP
-    drawing_bsp(rec, tail)
+    tail.append(_u32.pack(1 if rec.drawing_bsp else 0))  # hasDrawingBSP (scene/8 drawing_bsp: false writes 0, no tree)
+    if rec.drawing_bsp:
+        drawing_bsp(rec, tail)
     length += sum(map(len, tail))
     out += tail
     return _align(out, length)
@@ -654,7 +658,8 @@ def frame(f) -> bytes:
 def env_cell_record(cell: EnvCell, stabs, drawing: bool = False) -> DatRecord:
     """FileTypes/EnvCell; `stabs` are (id, scene Frame) pairs, the cell's static objects. `drawing` (scene/8): one
     surface, DRAWING_SURFACE's low word (none otherwise)."""
-    flags = (ENV_CELL_SEEN_OUTSIDE if cell.seen_outside else 0) | (ENV_CELL_HAS_STATIC_OBJS if stabs else 0)
+    flags = (ENV_CELL_SEEN_OUTSIDE if cell.seen_outside else 0) | (ENV_CELL_HAS_STATIC_OBJS if stabs else 0) | (
+        ENV_CELL_HAS_RESTRICTION_OBJ if cell.restriction_obj else 0)
     surfaces = (DRAWING_SURFACE & 0xFFFF,) if drawing else ()
     out = [struct.pack(f"<IIIBBH{len(surfaces)}HHH", cell.id, flags, cell.id, len(surfaces), len(cell.portals),
                        len(cell.visible_cells), *surfaces, cell.environment & 0xFFFF, cell.cell_structure), frame(cell.frame)]
@@ -663,6 +668,8 @@ def env_cell_record(cell: EnvCell, stabs, drawing: bool = False) -> DatRecord:
     if stabs:
         out.append(_u32.pack(len(stabs)))
         out += [_u32.pack(did) + frame(f) for did, f in stabs]
+    if cell.restriction_obj:
+        out.append(_u32.pack(cell.restriction_obj))
     return DatRecord(cell.id, "EnvCell", b"".join(out))
 
 
@@ -690,14 +697,19 @@ def building_info(building: Building, index: int, out: list, length: int) -> int
     return length
 
 
-def landblock_info_record(block: int, num_cells: int, buildings=()) -> DatRecord:
+def landblock_info_record(block: int, num_cells: int, buildings=(), restrictions=()) -> DatRecord:
     """FileTypes/LandblockInfo for landblock `block` (its high word): NumCells, no objects, its buildings
-    ((index in the scene, Building) pairs), PackMask 0."""
+    ((index in the scene, Building) pairs), PackMask 0, or 1 with `restrictions` (scene/8 landblocks[].restrictions:
+    (cell id, object id) pairs) and then its RestrictionTables as UnpackPackedHashTable reads one: a ushort count, a
+    ushort bucket size (unread; retail's is a prime, here 89), the pairs."""
     info_id = (block << 16) | LANDBLOCK_INFO
-    out = [struct.pack("<IIIHH", info_id, num_cells, 0, len(buildings), 0)]
+    out = [struct.pack("<IIIHH", info_id, num_cells, 0, len(buildings), 1 if restrictions else 0)]
     length = 16
     for index, building in buildings:
         length = building_info(building, index, out, length)
+    if restrictions:
+        out.append(struct.pack("<HH", len(restrictions), 89))
+        out += [struct.pack("<II", c, o) for c, o in restrictions]
     return DatRecord(info_id, "LandblockInfo", b"".join(out))
 
 
@@ -744,7 +756,9 @@ def cell_dat_records(scene: Scene) -> tuple[DatRecord, ...]:
         buildings.setdefault(b.landblock >> 16, []).append((index, b))
     for block in buildings:
         counts.setdefault(block, 0)
-    records += [landblock_info_record(block, n, buildings.get(block, ())) for block, n in counts.items()]
+    restrictions = {lb.id >> 16: lb.restrictions for lb in scene.landblocks}
+    records += [landblock_info_record(block, n, buildings.get(block, ()), restrictions.get(block, ()))
+                for block, n in counts.items()]
     return tuple(records)
 
 

@@ -118,6 +118,14 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                     "the DAT records carry what a client draws (scene/8: drawing): polygons' UV indices, a BSP GfxObj's "
                     "drawing polygons, drawing BSP (its root sphere is GfxObj.DrawingSphere, a BSP static's "
                     "SortingSphere), surface and degrade table, an EnvCell's surface"),
+    "dat.restrictions": (lambda s: s.has_restrictions,
+                         "housing barriers (scene/8: env_cells[].restriction_obj, landblocks[].restrictions): an "
+                         "EnvCell's RestrictionObj (flag HasRestrictionObj) and a LandblockInfo's RestrictionTables "
+                         "(PackMask 1, given to its land cells by Landblock.init_static_objs), which "
+                         "ObjCell.check_entry_restrictions asks ServerObjectManager for when the player enters the cell"),
+    "dat.outdoor_words": (lambda s: s.has_outdoor_words,
+                          "a visible cell or a building portal's other cell below 0x0100 (scene/8): LScape.get_landcell "
+                          "gives a LandCell (EnvCell's and BldPortal's cast throws) or null (no land coordinate)"),
     "mover.free_heading": (lambda s: s.mover.free_heading,
                            "the mover's Setup has the flag AllowFreeHeading (scene/8: mover.free_heading): "
                            "PhysicsObj.get_object_info sets ObjectInfoState.FreeRotate, so a transition takes the end's "

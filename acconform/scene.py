@@ -143,16 +143,27 @@ class Landblock:
     heights: tuple[int, ...] = NO_TERRAIN  # 81 indices into the land height table, [x * 9 + y]
     terrain: tuple[int, ...] = NO_TERRAIN  # 81 terrain words (road, type, scenery bits); water type comes from them
     has_terrain: bool = True
+    # scene/8: its LandblockInfo's RestrictionTables (PackMask bit 0), (cell id, object id) pairs in table order: a
+    # housing barrier's owner per land cell (Landblock.init_static_objs gives the land cell at the key's land
+    # coordinate the object as its RestrictionObj; a key with none, an EnvCell's, is skipped). Read only for a
+    # landblock with buildings (its CellLandblock's HasObjects)
+    restrictions: tuple[tuple[int, int], ...] = ()
 
     def to_json(self):
+        extra = {"restrictions": [{"cell": write_id(c), "object": write_id(o)} for c, o in self.restrictions]} \
+            if self.restrictions else {}
         if not self.has_terrain:
-            return {"id": write_id(self.id)}
-        return {"id": write_id(self.id), "heights": list(self.heights), "terrain": list(self.terrain)}
+            return {"id": write_id(self.id), **extra}
+        return {"id": write_id(self.id), "heights": list(self.heights), "terrain": list(self.terrain), **extra}
 
     @staticmethod
     def from_json(r: Reader, indoor: bool = True) -> "Landblock":
         """`indoor`: the format may omit heights and terrain (scene/2)."""
-        r.obj({"id", "heights", "terrain"})
+        r.obj({"id", "heights", "terrain", "restrictions"})
+        restrictions = _restrictions(r["restrictions"]) if r.given("restrictions") else ()
+        if restrictions:
+            return replace(Landblock.from_json(Reader({k: v for k, v in r.value.items() if k != "restrictions"}, r.path),
+                                               indoor), restrictions=restrictions)
         lb_id = r["id"].id_()
         if lb_id & 0xFFFF != 0xFFFF:
             r["id"].fail(f"a landblock id ends in FFFF (e.g. 0x{lb_id >> 16:04X}FFFF), got {write_id(lb_id)}")
@@ -165,6 +176,21 @@ class Landblock:
         heights = r["heights"].ints(0, 255, count=81)
         terrain = r["terrain"].ints(0, 0xFFFF, count=81)
         return Landblock(lb_id, heights, terrain)
+
+
+def _restrictions(r: Reader) -> tuple[tuple[int, int], ...]:
+    """A LandblockInfo's RestrictionTables: {cell, object} pairs, each cell once (DatLoader's Dictionary.Add throws on
+    a key it holds), each object not 0 (ObjCell.check_entry_restrictions reads 0 as none)."""
+    pairs = []
+    for i, e in enumerate(r.list(max_count=0xFFFF)):
+        e.obj({"cell", "object"})
+        cell, obj = e["cell"].id_(), e["object"].id_()
+        if any(c == cell for c, _ in pairs):
+            r[i]["cell"].fail(f"cell {write_id(cell)} is restricted twice (DatLoader's Dictionary.Add throws)")
+        if obj == 0:
+            r[i]["object"].fail("a restriction object is not 0 (ObjCell.check_entry_restrictions reads 0 as none)")
+        pairs.append((cell, obj))
+    return tuple(pairs)
 
 
 @dataclass(frozen=True, slots=True)
@@ -250,7 +276,9 @@ def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
     kind = r["type"].str_()
     if kind == "leaf":
         r.obj({"type", "polygons", "solid", "sphere"})
-        polys = r["polygons"].ints(0, npolys - 1)
+        # a polygon id past the shape's (scene/8, Scene.has_missing_keys): ACE's BSPNode throws KeyNotFoundException
+        # building the tree (polys[poly])
+        polys = r["polygons"].ints(0, 0xFFFF)
         solid = r["solid"].bool_() if r.given("solid") else False
         return BSPLeaf(polys, solid, SphereRec.from_json(r["sphere"], bounding=True))
     if kind == "node":
@@ -261,6 +289,15 @@ def _bsp_from_json(r: Reader, npolys: int) -> BSPLeaf | BSPNode:
         return BSPNode(PlaneRec.from_json(r["plane"]), SphereRec.from_json(r["sphere"], bounding=True),
                        _bsp_from_json(r["front"], npolys), _bsp_from_json(r["back"], npolys))
     r["type"].fail(f"unknown BSP element type {kind!r} (known: node, leaf)")
+
+
+def _leaf_past(node, npolys: int) -> bool:
+    """Whether a leaf of the physics tree names a polygon id at or past `npolys` (scene/8)."""
+    if node is None:
+        return False
+    if isinstance(node, BSPLeaf):
+        return any(k >= npolys for k in node.polygons)
+    return _leaf_past(node.front, npolys) or _leaf_past(node.back, npolys)
 
 
 @dataclass(frozen=True, slots=True)
@@ -354,9 +391,14 @@ class CellBSPNode:
     plane: PlaneRec
     front: "CellBSPNode | CellBSPLeaf | None"
     back: "CellBSPNode | CellBSPLeaf | None"
+    # scene/8: written with the tag PORT (a node with both children): DatLoader reads it as a BSPPortal, in a cell tree
+    # exactly as a BPIN node (no sphere, no polygons), and ACE's physics BSPNode makes the same node of it
+    portal: bool = False
 
     def to_json(self):
         d = {"type": "node", "plane": self.plane.to_json()}
+        if self.portal:
+            d["portal"] = True
         if self.front is not None:
             d["front"] = self.front.to_json()
         if self.back is not None:
@@ -364,7 +406,7 @@ class CellBSPNode:
         return d
 
     def json_text(self) -> str:
-        text = '{"type":"node","plane":' + self.plane.json_text()
+        text = '{"type":"node","plane":' + self.plane.json_text() + (',"portal":true' if self.portal else "")
         if self.front is not None:
             text += ',"front":' + self.front.json_text()
         if self.back is not None:
@@ -380,10 +422,13 @@ def _cell_bsp_from_json(r: Reader) -> "CellBSPNode | CellBSPLeaf":
         r.obj({"type"})
         return CellBSPLeaf()
     if kind == "node":
-        r.obj({"type", "plane", "front", "back"})
+        r.obj({"type", "plane", "front", "back", "portal"})
+        portal = r["portal"].bool_() if r.given("portal") else False
+        if portal and not (r.has("front") and r.has("back")):
+            r["portal"].fail("a portal node (tag PORT) has both children (DatLoader's BSPPortal reads two)")
         return CellBSPNode(PlaneRec.from_json(r["plane"]),
                            _cell_bsp_from_json(r["front"]) if r.has("front") else None,
-                           _cell_bsp_from_json(r["back"]) if r.has("back") else None)
+                           _cell_bsp_from_json(r["back"]) if r.has("back") else None, portal)
     r["type"].fail(f"unknown cell BSP element type {kind!r} (known: node, leaf)")
 
 
@@ -400,29 +445,36 @@ class CellStructRec:
     physics_polygons: tuple[PolygonRec, ...]
     physics_bsp: "BSPNode | BSPLeaf | None"
     cell_bsp: "CellBSPNode | CellBSPLeaf | None"
+    # scene/8: false writes hasDrawingBSP 0 and no drawing tree (DatLoader and ACE's CellStruct leave DrawingBSP null;
+    # the physics never reads it)
+    drawing_bsp: bool = True
 
     def to_json(self):
         return {"polygons": [p.to_json() for p in self.polygons], "portals": list(self.portals),
                 "physics_polygons": [p.to_json() for p in self.physics_polygons],
                 "physics_bsp": None if self.physics_bsp is None else self.physics_bsp.to_json(),
-                "cell_bsp": None if self.cell_bsp is None else self.cell_bsp.to_json()}
+                "cell_bsp": None if self.cell_bsp is None else self.cell_bsp.to_json(),
+                **({} if self.drawing_bsp else {"drawing_bsp": False})}
 
     def json_text(self) -> str:
         return ('{"polygons":[' + ",".join([p.json_text() for p in self.polygons]) + '],"portals":'
                 + ints_text(self.portals) + ',"physics_polygons":['
                 + ",".join([p.json_text() for p in self.physics_polygons]) + '],"physics_bsp":'
                 + ("null" if self.physics_bsp is None else self.physics_bsp.json_text()) + ',"cell_bsp":'
-                + ("null" if self.cell_bsp is None else self.cell_bsp.json_text()) + "}")
+                + ("null" if self.cell_bsp is None else self.cell_bsp.json_text())
+                + ("" if self.drawing_bsp else ',"drawing_bsp":false') + "}")
 
     @staticmethod
     def from_json(r: Reader) -> "CellStructRec":
         """Both trees are required: a DAT CellStruct always holds a cell BSP and a physics BSP."""
-        r.obj({"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"})
+        r.obj({"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp", "drawing_bsp"})
         polys = tuple(PolygonRec.from_json(p) for p in r["polygons"].list(max_count=0xFFFF))
-        portals = tuple(p.int_(0, len(polys) - 1) for p in r["portals"].list()) if r.given("portals") else ()
+        # a portal past the polygons (scene/8, Scene.has_missing_keys): CellStruct's Polygons[portal] throws
+        portals = tuple(p.int_(0, 0xFFFF) for p in r["portals"].list()) if r.given("portals") else ()
         physics = tuple(PolygonRec.from_json(p) for p in r["physics_polygons"].list(max_count=0xFFFF))
         return CellStructRec(polys, portals, physics, _bsp_from_json(r["physics_bsp"], len(physics)),
-                             _cell_bsp_from_json(r["cell_bsp"]))
+                             _cell_bsp_from_json(r["cell_bsp"]),
+                             r["drawing_bsp"].bool_() if r.given("drawing_bsp") else True)
 
 
 @dataclass(frozen=True, slots=True)
@@ -493,24 +545,29 @@ class EnvCell:
     portals: tuple[CellPortalRec, ...] = ()
     visible_cells: tuple[int, ...] = ()  # low words of the cells seen from this one
     seen_outside: bool = False
+    # scene/8: its RestrictionObj (flag HasRestrictionObj): a housing barrier's owner, ObjCell.check_entry_restrictions
+    # asks ServerObjectManager for it when a player enters the cell (0: none, no flag)
+    restriction_obj: int = 0
 
     def to_json(self):
+        extra = {"restriction_obj": write_id(self.restriction_obj)} if self.restriction_obj else {}
         return {"id": write_id(self.id), **self.frame.to_json(), "environment": write_id(self.environment),
                 "cell_structure": self.cell_structure, "portals": [p.to_json() for p in self.portals],
-                "visible_cells": [f"0x{c:04X}" for c in self.visible_cells], "seen_outside": self.seen_outside}
+                "visible_cells": [f"0x{c:04X}" for c in self.visible_cells], "seen_outside": self.seen_outside, **extra}
 
     @staticmethod
     def from_json(r: Reader) -> "EnvCell":
         r.obj({"id", "origin", "orientation", "environment", "cell_structure", "portals", "visible_cells",
-               "seen_outside"})
+               "seen_outside", "restriction_obj"})
         cell_id = r["id"].id_()
         if not ENV_CELL_FIRST <= cell_id & 0xFFFF <= ENV_CELL_LAST:
             r["id"].fail(f"an EnvCell id is 0xXXYY{ENV_CELL_FIRST:04X} to 0xXXYY{ENV_CELL_LAST:04X}, got {write_id(cell_id)}")
         frame = Frame.from_json(Reader({k: r.value[k] for k in ("origin", "orientation") if k in r.value}, r.path))
         portals = tuple(CellPortalRec.from_json(p) for p in r["portals"].list(max_count=0xFF)) if r.given("portals") else ()
-        visible = _env_cell_words(r["visible_cells"], "a visible cell") if r.given("visible_cells") else ()
+        visible = _env_cell_words(r["visible_cells"], "a visible cell", low=True) if r.given("visible_cells") else ()
         return EnvCell(cell_id, frame, r["environment"].id_(), r["cell_structure"].int_(0, 0xFFFF), portals, visible,
-                       r["seen_outside"].bool_() if r.given("seen_outside") else False)
+                       r["seen_outside"].bool_() if r.given("seen_outside") else False,
+                       r["restriction_obj"].id_() if r.given("restriction_obj") else 0)
 
 
 def _low_word(r: Reader) -> int:
@@ -521,12 +578,21 @@ def _low_word(r: Reader) -> int:
     return v
 
 
-def _env_cell_words(r: Reader, what: str) -> tuple[int, ...]:
-    """A list of EnvCells' low words (visible cells, a building portal's stab list); `what` names one."""
+# scene/8: a visible cell or a building portal's other cell below 0x0100 (what ACE's EnvCell and CBldPortal read as
+# any ushort): LScape.get_landcell gives a LandCell for 0x0001..0x0040 (EnvCell.build_visible_cells' and
+# BldPortal.GetOtherCell's (EnvCell) cast throws InvalidCastException) and null for 0x0000 and 0x0041..0x00FF (no land
+# coordinate: VisibleCells holds null, GetOtherCell answers null)
+OUTDOOR_WORD_LAST = 0x00FF
+
+
+def _env_cell_words(r: Reader, what: str, low: bool = False) -> tuple[int, ...]:
+    """A list of EnvCells' low words (visible cells, a building portal's stab list); `what` names one. `low`: a word
+    0x0000..0x00FF too (OUTDOOR_WORD_LAST)."""
     words = tuple(_low_word(v) for v in r.list(max_count=0xFFFF))
     for i, v in enumerate(words):
-        if not ENV_CELL_FIRST <= v <= ENV_CELL_LAST:
-            r[i].fail(f"{what} is an EnvCell's low word (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{v:04X}")
+        if not (ENV_CELL_FIRST <= v <= ENV_CELL_LAST or low and v <= OUTDOOR_WORD_LAST):
+            r[i].fail(f"{what} is an EnvCell's low word (0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X})"
+                      f"{' or 0x0000..0x00FF' if low else ''}, got 0x{v:04X}")
     return words
 
 
@@ -547,9 +613,9 @@ class BuildingPortalRec:
     def from_json(r: Reader) -> "BuildingPortalRec":
         r.obj({"other_cell", "other_portal", "flags", "stab_list"})
         other = _low_word(r["other_cell"])
-        if not ENV_CELL_FIRST <= other <= ENV_CELL_LAST:
+        if not (ENV_CELL_FIRST <= other <= ENV_CELL_LAST or other <= OUTDOOR_WORD_LAST):
             r["other_cell"].fail(f"a building's portal leads into one of its EnvCells "
-                                 f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}), got 0x{other:04X}")
+                                 f"(0x{ENV_CELL_FIRST:04X}..0x{ENV_CELL_LAST:04X}) or 0x0000..0x00FF, got 0x{other:04X}")
         flags = r["flags"].int_(0, PORTAL_EXACT_MATCH | PORTAL_SIDE_BIT) if r.given("flags") else 0
         stabs = _env_cell_words(r["stab_list"], "a stab") if r.given("stab_list") else ()
         return BuildingPortalRec(other, r["other_portal"].int_(0, 0xFFFF), flags, stabs)
@@ -1756,6 +1822,52 @@ class Scene:
         return self.ticks is not None and any(s.door is not None for s in self.ticks.steps)
 
     @property
+    def has_restrictions(self) -> bool:
+        """scene/8: an EnvCell's restriction_obj or a landblock's restriction table (housing barriers)."""
+        return any(c.restriction_obj for c in self.env_cells) or any(lb.restrictions for lb in self.landblocks)
+
+    @property
+    def has_no_drawing_bsp(self) -> bool:
+        """scene/8: a cell structure written with hasDrawingBSP 0 (CellStructRec.drawing_bsp false)."""
+        return any(not c.drawing_bsp for e in self.environments for c in e.cell_structs)
+
+    @property
+    def has_missing_keys(self) -> bool:
+        """scene/8: a key ACE's physics looks up and does not find: an EnvCell's cell_structure past its Environment's
+        structures (CellStructure stays null), an EnvCell portal's polygon or a structure's portal past the structure's
+        polygons (the Polygons indexer throws KeyNotFoundException)."""
+        envs = {e.id: e for e in self.environments}
+        for c in self.env_cells:
+            env = envs.get(c.environment)
+            if env is None:
+                continue
+            if c.cell_structure >= len(env.cell_structs):
+                return True
+            if any(p.polygon >= len(env.cell_structs[c.cell_structure].polygons) for p in c.portals):
+                return True
+        if any(k >= len(c.polygons) for e in self.environments for c in e.cell_structs for k in c.portals):
+            return True
+        shapes = [(len(c.physics_polygons), c.physics_bsp) for e in self.environments for c in e.cell_structs]
+        shapes += [(len(b.shape.polygons), b.shape.root) for b in self.buildings]
+        shapes += [(len(o.shape.polygons), o.shape.root) for o in self.objects if isinstance(o.shape, BSPShape)]
+        shapes += [(len(p.shape.polygons), p.shape.root) for o in (*self.objects, *self.others)
+                   if getattr(o, "setup", None) is not None for p in o.setup.parts]
+        return any(_leaf_past(root, n) for n, root in shapes)
+
+    @property
+    def has_cell_bsp_portals(self) -> bool:
+        """scene/8: a cell BSP node written with the tag PORT (CellBSPNode.portal)."""
+        def walk(node) -> bool:
+            return isinstance(node, CellBSPNode) and (node.portal or walk(node.front) or walk(node.back))
+        return any(walk(c.cell_bsp) for e in self.environments for c in e.cell_structs)
+
+    @property
+    def has_outdoor_words(self) -> bool:
+        """scene/8: a visible cell or a building portal's other cell below 0x0100 (OUTDOOR_WORD_LAST)."""
+        return any(v <= OUTDOOR_WORD_LAST for c in self.env_cells for v in c.visible_cells) or any(
+            p.other_cell <= OUTDOOR_WORD_LAST for b in self.buildings for p in b.portals)
+
+    @property
     def format(self) -> str:
         """The oldest format that holds the scene (/8 for other movers, motion queries, the mover's skills or holding locations, a
         motion table's hooks, animations without root motion or DefaultAnimation, a Setup's parent_index,
@@ -1764,7 +1876,8 @@ class Scene:
         ticks, /3 for a placement, /2 indoors, else /1)."""
         if self.others or self.motion_queries or self.mover.skills != DEFAULT_SKILLS or self.mover.holding_locations or (
                 self.mover.motion_table is not None and self.mover.motion_table.needs_v8) or self.mover.default_script or (
-                self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or any(
+                self.mover.resting_frame is not None) or self.mover.free_heading or self.drawing or self.has_restrictions or (
+                self.has_outdoor_words) or self.has_no_drawing_bsp or self.has_missing_keys or self.has_cell_bsp_portals or any(
                 o.setup is not None and (o.setup.default_script or o.setup.parent_index is not None
                                          or o.setup.default_animation is not None or not o.setup.parts) for o in self.objects):
             return FORMAT
@@ -2175,13 +2288,11 @@ def _check_indoor(scene: Scene, path: str, defined: set[int]) -> dict[int, EnvCe
         if env is None:
             raise InvalidScene(f"{where}.environment", f"Environment {c.environment:08X} is not defined in environments")
         if c.cell_structure >= len(env.cell_structs):
-            raise InvalidScene(f"{where}.cell_structure", f"Environment {env.id:08X} has {len(env.cell_structs)} "
-                                                          f"cell structures (0..{len(env.cell_structs) - 1}), got {c.cell_structure}")
+            continue  # scene/8 (Scene.has_missing_keys): ACE's EnvCell finds no CellStruct and leaves CellStructure null
         struct = env.cell_structs[c.cell_structure]
         for k, portal in enumerate(c.portals):
             if portal.polygon >= len(struct.polygons):
-                raise InvalidScene(f"{where}.portals[{k}].polygon", f"the cell structure has {len(struct.polygons)} "
-                                                                    f"polygons, got {portal.polygon}")
+                continue  # scene/8: CellStructure.Polygons[PolygonId] throws KeyNotFoundException where it is read
             if portal.polygon not in struct.portals:
                 raise InvalidScene(f"{where}.portals[{k}].polygon", f"polygon {portal.polygon} is not one of the cell "
                                                                     f"structure's portals {list(struct.portals)}")
@@ -2205,6 +2316,12 @@ def _check_buildings(scene: Scene, path: str, env_cells: dict[int, EnvCell]) -> 
     the scene defines, names one of that cell's portals (or 0xFFFF, none), and its stab list names
     EnvCells of that landblock the scene defines."""
     by_id = {lb.id: lb for lb in scene.landblocks}
+    with_buildings = {b.landblock for b in scene.buildings}
+    for i, lb in enumerate(scene.landblocks):
+        if lb.restrictions and lb.id not in with_buildings:
+            raise InvalidScene(_p(path, f"landblocks[{i}].restrictions"),
+                               f"landblock {lb.id:08X} has no buildings: ACE reads its LandblockInfo (and so the "
+                               f"restriction table) only for a landblock whose CellLandblock has HasObjects")
     for i, b in enumerate(scene.buildings):
         where = _p(path, f"buildings[{i}]")
         lb = by_id.get(b.landblock)
@@ -2215,6 +2332,8 @@ def _check_buildings(scene: Scene, path: str, env_cells: dict[int, EnvCell]) -> 
                                                      f"in one of its outdoor cells (give it heights and terrain)")
         block = b.landblock & 0xFFFF0000
         for k, portal in enumerate(b.portals):
+            if portal.other_cell <= OUTDOOR_WORD_LAST:
+                continue  # scene/8: no EnvCell (OUTDOOR_WORD_LAST)
             cell = env_cells.get(block | portal.other_cell)
             if cell is None:
                 raise InvalidScene(f"{where}.portals[{k}].other_cell",

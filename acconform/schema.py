@@ -149,8 +149,44 @@ def _sample():
     scenes = []
     for kind in GEOMETRY_KINDS:  # tick scenes: _tick_scenes below, every input once
         scenes += list(sample_scenes((kind,), SAMPLE_PER_KIND, SAMPLE_SEED))
-    scenes += _every_optional_field(scenes[0]) + _setup_scenes(scenes)
+    scenes += _every_optional_field(scenes[0]) + _setup_scenes(scenes) + _cell_record_scenes(scenes)
     return scenes, [run_scene(s) for s in scenes]
+
+
+def _port_root(node):
+    """The cell tree with its root tagged PORT (scene/8 `portal`; a missing child made a leaf)."""
+    from dataclasses import replace
+
+    from .scene import CellBSPLeaf, CellBSPNode
+
+    if not isinstance(node, CellBSPNode):
+        return node
+    return replace(node, portal=True, front=node.front or CellBSPLeaf(), back=node.back or CellBSPLeaf())
+
+
+def _cell_record_scenes(scenes):
+    """A scene/8 variant of the first sampled scene with buildings (strategies/cell_records.py's shapes): every EnvCell
+    restricted to the mover and its landblock's restriction table, a visible cell and a building portal below
+    0x0100, its cell structures without a drawing BSP and their cell trees' roots tagged PORT, so each of those fields
+    is written."""
+    from dataclasses import replace
+
+    from .scene import BuildingPortalRec
+    from .staging import MOVER_ID
+
+    for scene in scenes:
+        if scene.buildings and scene.env_cells:
+            b = scene.buildings[0]
+            cells = tuple(replace(c, restriction_obj=MOVER_ID, visible_cells=(*c.visible_cells, 0x0041))
+                          for c in scene.env_cells)
+            landblocks = tuple(replace(lb, restrictions=(((b.landblock & 0xFFFF0000) | 1, MOVER_ID),))
+                               if lb.id == b.landblock else lb for lb in scene.landblocks)
+            building = replace(b, portals=(*b.portals, BuildingPortalRec(0x0000, 0xFFFF)))
+            envs = tuple(replace(e, cell_structs=tuple(replace(c, drawing_bsp=False, cell_bsp=_port_root(c.cell_bsp))
+                                                       for c in e.cell_structs)) for e in scene.environments)
+            return [replace(scene, env_cells=cells, landblocks=landblocks, buildings=(building, *scene.buildings[1:]),
+                            environments=envs, name="cell records")]
+    return []
 
 
 def _setup_scenes(scenes):

@@ -237,6 +237,19 @@ class WeenieObject:
     def on_move_complete(self, status) -> None:
         pass
 
+    @anchor(None, "WeenieObject.cs:CanBypassMoveRestrictions")
+    def can_bypass_move_restrictions(self) -> bool:
+        # acclient checks both of these here (ACE: IgnoreHouseBarriers alone); ObjCell.check_entry_restrictions asks
+        # only a player's, whose WorldObject is its Player
+        return self.world_object.ignore_house_barriers
+
+    @anchor(None, "WeenieObject.cs:CanMoveInto")
+    def can_move_into(self, mover: "WeenieObject") -> bool:
+        """`WorldObject as House` is null for every WorldObject a scene makes (it makes no House: acconform.scene's
+        WEENIE_CLASSES), so ACE logs "couldn't find house" and answers true; the root house and the owner's
+        permissions are never read."""
+        return True
+
 
 # WeenieObject.DummyObject: what a PhysicsObj made without a WorldObject carries
 DUMMY_OBJECT = WeenieObject()

@@ -47,7 +47,10 @@ def test_the_scene_schema_names_the_indoor_fields_and_reads_both_scene_formats(g
     assert {"id", "origin", "orientation", "environment", "cell_structure", "portals", "visible_cells", "seen_outside"} <= set(cell)
     assert {"polygon", "other_cell", "other_portal", "flags"} <= set(cell["portals"]["items"]["properties"])
     structure = props["environments"]["items"]["properties"]["cell_structs"]["items"]["properties"]
-    assert set(structure) == {"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp"}
+    assert set(structure) == {"polygons", "portals", "physics_polygons", "physics_bsp", "cell_bsp", "drawing_bsp"}
+    # scene/8's housing barriers (schema._cell_record_scenes)
+    assert "restriction_obj" in cell and "restrictions" in landblock["properties"]
+    assert "portal" in scene["$defs"]["type:node"]["properties"]  # a cell-tree node's tag PORT
 
 
 def test_the_scene_schema_names_every_building_field(generated):

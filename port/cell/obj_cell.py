@@ -154,8 +154,17 @@ class ObjCell:
         weenie_obj = obj.weenie_obj
         if weenie_obj is not None:
             if obj.is_player:
-                if self.restriction_obj != 0:
-                    raise NotImplementedError("entry restrictions (housing barriers) are not ported")
+                if self.restriction_obj != 0 and not weenie_obj.can_bypass_move_restrictions():
+                    restriction_obj = obj.server_objects.get_object_a(self.restriction_obj)
+
+                    if restriction_obj is None or restriction_obj.weenie_obj is None:
+                        return TransitionState.Collided
+
+                    if not restriction_obj.weenie_obj.can_move_into(weenie_obj):
+                        self.handle_move_restriction(transition)
+                        return TransitionState.Collided
+                    else:
+                        transition.collision_info.verified_restrictions = True
         return TransitionState.OK
 
     @anchor(None, "ObjCell.cs:handle_move_restriction")

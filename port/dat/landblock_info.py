@@ -2,22 +2,19 @@
 
 AdjustCell (port/adjust_cell.py) reads NumCells to know which EnvCells a dungeon has; a
 Landblock whose CellLandblock has HasObjects reads the whole record (DBObj.GetLandblockInfo) and
-builds its buildings from it (Landblock.init_buildings). A scene's record
-(acconform/dat.landblock_info_record) holds PackMask 0: a restriction table (PackMask bit 0, a
-housing barrier's owner per cell) cannot come from a scene, its reader is not ported, and
-reading one is misuse (AcconformError naming it).
+builds its buildings from it (Landblock.init_buildings) and gives its land cells the restriction
+table's objects (PackMask bit 0: a housing barrier's owner per cell; scene/8 landblocks[].restrictions,
+acconform/dat.landblock_info_record).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from acconform.errors import AcconformError
-
 from ..anchors import anchor
 from .build_info import BuildInfo
 from .stab import Stab
-from .unpackable_extensions import unpack_list, unpack_list_fixed
+from .unpackable_extensions import unpack_list, unpack_list_fixed, unpack_packed_hash_table_uint
 
 
 @dataclass(slots=True, eq=False)
@@ -27,6 +24,7 @@ class LandblockInfo:
     objects: list = field(default_factory=list)  # Stab
     pack_mask: int = 0
     buildings: list = field(default_factory=list)  # BuildInfo
+    restriction_tables: dict = field(default_factory=dict)  # cell id -> the restriction object's id
 
 
     @staticmethod
@@ -49,7 +47,6 @@ class LandblockInfo:
 
         i.buildings = unpack_list_fixed(reader, BuildInfo.unpack, num_buildings)
 
-        if (i.pack_mask & 1) == 1:  # ACE: RestrictionTables.UnpackPackedHashTable(reader)
-            raise AcconformError(f"LandblockInfo {i.id:08X} has PackMask {i.pack_mask:#06x}, a restriction table: no scene "
-                                 f"writes one (acconform/dat.landblock_info_record), so its reader is not ported")
+        if (i.pack_mask & 1) == 1:
+            i.restriction_tables = unpack_packed_hash_table_uint(reader)
         return i

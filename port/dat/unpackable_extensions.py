@@ -88,3 +88,15 @@ def unpack_uint_dict_of_dicts(reader, make) -> dict:
         values = unpack_uint_dict(reader, make)
         dictionary_add(value, key, values)
     return value
+
+
+@anchor(None, "ACE.DatLoader/UnpackableExtensions.cs:UnpackPackedHashTable(Dictionary<uint, uint>)")
+def unpack_packed_hash_table_uint(reader) -> dict:
+    value: dict = {}
+    total_objects = reader.read_uint16()
+    reader.read_uint16()  # bucketSize, unused
+
+    for _ in range(total_objects):
+        key = reader.read_uint32()
+        dictionary_add(value, key, reader.read_uint32())
+    return value

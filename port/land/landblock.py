@@ -5,8 +5,8 @@ DAT's CellLandblock (Id, Height bytes, Terrain words); HasObjects is set exactly
 the scene puts buildings on (acconform/dat.has_objects, which acconform/dat.cell_landblock writes),
 and then the constructor reads the landblock's LandblockInfo from the run's cell DAT
 (DBObj.GetLandblockInfo) and PostInit's init_buildings builds its buildings from it. The Info a
-scene writes has no objects and no restriction table, so init_static_objs' Info branch places
-nothing; get_land_scenes (scenery generated from the region DAT) is not ported: a scene lists its
+scene writes has no objects, so init_static_objs' Info branch places nothing (its restriction
+table, scene/8 landblocks[].restrictions, gives land cells their RestrictionObj); get_land_scenes (scenery generated from the region DAT) is not ported: a scene lists its
 objects explicitly (ACE's UseSceneFiles is off in the oracle). OnRoad/IsRoad, IsDungeon and the
 server-object lists are not physics and are left out.
 
@@ -151,9 +151,11 @@ class Landblock(LandblockStruct):
     @anchor("CLandBlock::init_static_objs", "Landblock.cs:init_static_objs")
     def init_static_objs(self, lscape) -> None:
         """At PostInit StaticObjects is empty (a scene's outdoor statics are placed after it, as the
-        oracle places them). With Info, its Objects and RestrictionTables: a scene's Info holds
-        neither (acconform/dat.landblock_info_record), and reading one is refused before here
-        (port/dat/landblock_info.py), so the loops below never run; UseSceneFiles is off."""
+        oracle places them). With Info, its Objects (a scene's Info holds none:
+        acconform/dat.landblock_info_record) and RestrictionTables (scene/8 landblocks[].restrictions):
+        each key with a land coordinate gives the land cell at that coordinate's low three bits its
+        RestrictionObj (a key of another landblock's cell names this landblock's cell at the same
+        place, as ACE's index does). UseSceneFiles is off."""
         if self.side_cell_count != 8:
             return
         if len(self.static_objects) > 0:
@@ -161,6 +163,17 @@ class Landblock(LandblockStruct):
         elif self.info is not None:
             if self.info.objects:
                 raise NotImplementedError("LandblockInfo objects: a scene writes none")
+
+            # RestrictionTables is never null (DatLoader's LandblockInfo makes it empty)
+            for key, value in self.info.restriction_tables.items():
+                lcoord = land_defs.gid_to_lcoord(key)
+
+                if lcoord is None:
+                    continue
+
+                idx = (int(lcoord[1]) & 7) + (int(lcoord[0]) & 7) * self.side_cell_count
+
+                assign_when_built(self.land_cells[idx], "restriction_obj", value)
 
     @harness("init_landcell's work on a lazy landblock's cells, built after PostInit")
     def terrain_generated(self, cells: dict) -> None:

@@ -46,6 +46,7 @@ class WorldObject:
     scatter_pos: object = None  # ScatterPos: none for an object walking in the world
     teleporting: bool = False  # Teleporting
     encumbrance_val: int | None = 0  # EncumbranceVal (an int?; a Container's is 0 from its constructor on)
+    ignore_house_barriers: bool = False  # IgnoreHouseBarriers (PropertyBool; a developer's command sets it)
 
     @anchor(None, "ACE.Server/WorldObjects/WorldObject.cs:OnCollideObject")
     def on_collide_object(self, target: "WorldObject") -> None:

@@ -155,14 +155,19 @@ def test_a_landblock_info_reads_its_cell_count_and_objects_to_its_last_byte():
 
 
 @pytest.mark.anchor("ACE.DatLoader/FileTypes/LandblockInfo.cs:Unpack")
-def test_a_landblock_info_with_a_restriction_table_is_misuse_no_scene_can_make():
+@pytest.mark.anchor("ACE.DatLoader/UnpackableExtensions.cs:UnpackPackedHashTable(Dictionary<uint, uint>)")
+def test_a_landblock_info_reads_its_restriction_table_and_a_key_given_twice_throws_as_dictionary_add_does():
     import struct
-    from acconform.errors import AcconformError
     from acconform.port.dat.landblock_info import LandblockInfo
+    from acconform.port.errors import ArgumentException
 
-    data = struct.pack("<IIIHH", 0xA9B4FFFE, 3, 0, 0, 1) + b"\0" * 64
-    with pytest.raises(AcconformError, match="LandblockInfo A9B4FFFE .*restriction table.*no scene writes"):
-        LandblockInfo.unpack(BinaryReader(data, EXACT))
+    head = struct.pack("<IIIHH", 0xA9B4FFFE, 3, 0, 0, 1)
+    table = struct.pack("<HHIIII", 2, 89, 0xA9B40001, 0x7ABC0001, 0xA9B40100, 0x50000001)
+    info = LandblockInfo.unpack(BinaryReader(head + table, EXACT))
+    assert info.restriction_tables == {0xA9B40001: 0x7ABC0001, 0xA9B40100: 0x50000001}
+    twice = struct.pack("<HHIIII", 2, 89, 0xA9B40001, 0x7ABC0001, 0xA9B40001, 0x50000001)
+    with pytest.raises(ArgumentException):
+        LandblockInfo.unpack(BinaryReader(head + twice, EXACT))
 
 
 @pytest.mark.anchor("Position::get_indoor_cell")
