@@ -13,23 +13,28 @@ namespace Acconform.Oracle
     public static partial class Facade
     {
         // Each tick's states go into fixed-size records, one per mover (the mover, then each other mover in scene
-        // order), with their variable parts in arrays beside them (the ShadowObjects' cell ids, the CollisionTables'
-        // records, the mover's motion layers) and their vectors and ContactPlanes as indices into tables of the
-        // distinct ones (by bits: 0.0 and -0.0 apart). Python then reads all the records in one iter_unpack and makes
-        // one tuple per distinct vector per scene, not one dict lookup per vector per state (oracle/pack.py,
-        // `_tick_states`; docs/oracle.md on the cost).
-        static readonly MemoryStream stateStream = new MemoryStream(1 << 14), cellStream = new MemoryStream(1024),
-            collisionStream = new MemoryStream(256), collisionTableStream = new MemoryStream(256), motionStream = new MemoryStream(1024), vec3Stream = new MemoryStream(256),
-            vec4Stream = new MemoryStream(256), planeStream = new MemoryStream(256);
-        static readonly BinaryWriter stateWriter = new BinaryWriter(stateStream), cellWriter = new BinaryWriter(cellStream),
-            collisionWriter = new BinaryWriter(collisionStream), collisionTableWriter = new BinaryWriter(collisionTableStream),
-            motionWriter = new BinaryWriter(motionStream),
+        // order), their vectors, ContactPlanes, ShadowObjects cell lists and CollisionTables as indices into tables of
+        // the distinct ones of the scene (by bits: 0.0 and -0.0 apart), the mover's motion layers beside them. Python
+        // reads all the records in one iter_unpack and makes each distinct vector, plane, cell list and table once
+        // (oracle/pack.py, `_ticks_and_end`; docs/oracle.md on the cost).
+        static readonly MemoryStream stateStream = new MemoryStream(1 << 14), collisionTableStream = new MemoryStream(256),
+            motionStream = new MemoryStream(1024), vec3Stream = new MemoryStream(256), vec4Stream = new MemoryStream(256),
+            planeStream = new MemoryStream(256);
+        static readonly BinaryWriter stateWriter = new BinaryWriter(stateStream),
+            collisionTableWriter = new BinaryWriter(collisionTableStream), motionWriter = new BinaryWriter(motionStream),
             vec3Writer = new BinaryWriter(vec3Stream), vec4Writer = new BinaryWriter(vec4Stream),
             planeWriter = new BinaryWriter(planeStream);
         static readonly Dictionary<Bits4, int> vec3Index = new Dictionary<Bits4, int>(), vec4Index = new Dictionary<Bits4, int>(),
             planeIndex = new Dictionary<Bits4, int>();
         static readonly Dictionary<CollisionKey, int> collisionIndex = new Dictionary<CollisionKey, int>();
-        static int statesWritten, cellsWritten, collisionsWritten;
+        // the distinct ShadowObjects cell lists and CollisionTables (as indices of their records) a state names by index;
+        // each object's last one is checked first (they mostly stay from tick to tick); table 0 is the empty table
+        static readonly List<uint[]> cellSets = new List<uint[]>();
+        static readonly List<int[]> collisionTables = new List<int[]>();
+        static readonly Dictionary<PhysicsObj, int> lastCells = new Dictionary<PhysicsObj, int>(),
+            lastTable = new Dictionary<PhysicsObj, int>();
+        static readonly List<int> tableScratch = new List<int>();
+        static int statesWritten;
         static byte[] tickError;  // what the last tick threw (it ended the scene), UTF-8; null: none
 
         [StructLayout(LayoutKind.Explicit)]
@@ -64,14 +69,18 @@ namespace Acconform.Oracle
 
         static void ClearTicks()
         {
-            foreach (var s in new[] { stateStream, cellStream, collisionStream, collisionTableStream, motionStream, vec3Stream,
-                                      vec4Stream, planeStream })
+            foreach (var s in new[] { stateStream, collisionTableStream, motionStream, vec3Stream, vec4Stream, planeStream })
                 s.SetLength(0);
             collisionIndex.Clear();
             vec3Index.Clear();
             vec4Index.Clear();
             planeIndex.Clear();
-            statesWritten = cellsWritten = collisionsWritten = 0;
+            cellSets.Clear();
+            collisionTables.Clear();
+            collisionTables.Add(new int[0]);
+            lastCells.Clear();
+            lastTable.Clear();
+            statesWritten = 0;
             tickError = null;
         }
 
@@ -102,6 +111,45 @@ namespace Acconform.Oracle
             return collisionIndex[key] = collisionIndex.Count;
         }
 
+        /// <summary>The index of the object's ShadowObjects cell ids, in their order, among the scene's cell lists.</summary>
+        static int CellsAt(PhysicsObj obj)
+        {
+            var cells = obj.ShadowObjects.Keys;
+            int i;
+            if (lastCells.TryGetValue(obj, out i) && cellSets[i].Length == cells.Count)
+            {
+                var set = cellSets[i];
+                var k = 0;
+                foreach (var cell in cells)
+                    if (set[k++] != cell) { k = -1; break; }
+                if (k == set.Length) return i;
+            }
+            var now = new uint[cells.Count];
+            cells.CopyTo(now, 0);
+            cellSets.Add(now);
+            return lastCells[obj] = cellSets.Count - 1;
+        }
+
+        /// <summary>The index of the object's CollisionTable (its records' indices, in its order) among the scene's
+        /// tables; 0: none or empty.</summary>
+        static int TableAt(PhysicsObj obj)
+        {
+            var table = obj.CollisionTable;
+            if (table == null || table.Count == 0) return 0;
+            tableScratch.Clear();
+            foreach (var kv in table) tableScratch.Add(CollisionAt(kv.Key, kv.Value.TouchedTime, kv.Value.Ethereal));
+            int i;
+            if (lastTable.TryGetValue(obj, out i) && collisionTables[i].Length == tableScratch.Count)
+            {
+                var last = collisionTables[i];
+                var k = 0;
+                while (k < last.Length && last[k] == tableScratch[k]) k++;
+                if (k == last.Length) return i;
+            }
+            collisionTables.Add(tableScratch.ToArray());
+            return lastTable[obj] = collisionTables.Count - 1;
+        }
+
         static int PlaneAt(Vector3 n, float d)
         {
             var key = new Bits4(n.X, n.Y, n.Z, d);
@@ -125,10 +173,9 @@ namespace Acconform.Oracle
         /// <summary>One state record (acconform.outcome.TickState's fields in order): updated (byte), UpdateTime,
         /// Position.ObjCellID, CurCell id (0: none), origin, then the indices of the orientation (w x y z), Velocity,
         /// Acceleration, Omega and CachedVelocity, State, TransientState, ContactPlaneCellID, the ContactPlane's index
-        /// (normal, d), SlidingNormal's index, JumpedThisFrame (byte), how many ShadowObjects cell ids it has in the cell
-        /// array, how many CollisionTable records in the collision array (their indices in the table of distinct ones:
-        /// id, TouchedTime, Ethereal; 0 unless
-        /// `collisions`), and the state's id (another mover's; 0 for the mover).</summary>
+        /// (normal, d), SlidingNormal's index, JumpedThisFrame (byte), the index of its ShadowObjects cell ids among the
+        /// scene's cell lists (CellsAt), of its CollisionTable among the scene's tables (TableAt; 0 unless `collisions`),
+        /// and the state's id (another mover's; 0 for the mover).</summary>
         static void WriteState(PhysicsObj obj, bool updated, bool collisions, uint id)
         {
             var w = stateWriter;
@@ -148,25 +195,17 @@ namespace Acconform.Oracle
             w.Write(PlaneAt(obj.ContactPlane.Normal, obj.ContactPlane.D));
             w.Write(Vec3(obj.SlidingNormal));
             w.Write((byte)(obj.JumpedThisFrame ? 1 : 0));
-            w.Write(obj.ShadowObjects.Count);
-            foreach (var cell in obj.ShadowObjects.Keys) cellWriter.Write(cell);
-            cellsWritten += obj.ShadowObjects.Count;
-            var table = collisions ? obj.CollisionTable : null;
-            w.Write(table != null ? table.Count : 0);
-            if (table != null)
-            {
-                foreach (var kv in table)
-                    collisionWriter.Write(CollisionAt(kv.Key, kv.Value.TouchedTime, kv.Value.Ethereal));
-                collisionsWritten += table.Count;
-            }
+            w.Write(CellsAt(obj));
+            w.Write(collisions ? TableAt(obj) : 0);
             w.Write(id);
             statesWritten++;
         }
 
         /// <summary>The tick block after int ticksRun (when above 0): byte 1 (a scene with other movers) or 0, int k (the
         /// other movers each tick carries), byte 1 (the mover's motion layers follow the collisions) or 0, byte 1 (the last tick threw)
-        /// or 0, then int n and the n state records, int n and the cell ids, int n and the collision records' indices, int n and
-        /// the n distinct collision records (id, TouchedTime, Ethereal), the motion
+        /// or 0, then int n and the n state records, int n and the n cell lists (each int m and m ids), int n
+        /// and the n CollisionTables (each int m and the indices of its m records), int n and the n distinct collision
+        /// records (id, TouchedTime, Ethereal), the motion
         /// layers (one per tick that did not throw), int n and the n distinct vectors (x y z), int n and the n distinct
         /// orientations (w x y z), int n and the n distinct planes (normal, d), and when the last tick threw, int length
         /// and its message.</summary>
@@ -179,10 +218,18 @@ namespace Acconform.Oracle
             w.Write((byte)(tickError != null ? 1 : 0));
             w.Write(statesWritten);
             Append(w, stateStream);
-            w.Write(cellsWritten);
-            Append(w, cellStream);
-            w.Write(collisionsWritten);
-            Append(w, collisionStream);
+            w.Write(cellSets.Count);
+            foreach (var set in cellSets)
+            {
+                w.Write(set.Length);
+                foreach (var cell in set) w.Write(cell);
+            }
+            w.Write(collisionTables.Count);
+            foreach (var t in collisionTables)
+            {
+                w.Write(t.Length);
+                foreach (var i in t) w.Write(i);
+            }
             w.Write(collisionIndex.Count);
             Append(w, collisionTableStream);
             Append(w, motionStream);

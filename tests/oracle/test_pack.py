@@ -194,15 +194,16 @@ def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_
 def _ticks_bytes(ticks):
     """Facade.WriteTicks' bytes (oracle/facade/Ticks.cs), from int ticksRun on: whether the ticks carry other movers
     and how many, whether the mover's motion layers follow, whether the last tick threw, the state records (per tick
-    the mover's, then each other mover's), the cell ids, the CollisionTable records (indices into the distinct ones that follow), the motion layers, the tables of
-    distinct vectors, orientations and planes (by bits), and the last tick's error message."""
+    the mover's, then each other mover's), the cell lists, the CollisionTables (their records' indices), the distinct
+    CollisionTable records, the motion layers, the tables of distinct vectors, orientations and planes (by bits), and
+    the last tick's error message."""
     states = [t for t in ticks if t.error is None]
     threw = bool(ticks) and ticks[-1].error is not None
     with_others = bool(states) and states[0].others is not None
     k = len(states[0].others) if with_others else 0
     with_motion = bool(states) and states[0].motion is not None
     vectors, orientations, planes, distinct = {}, {}, {}, {}  # their bytes (a CollisionState: itself) -> index
-    records, cells, table, motions = [], [], [], []
+    records, cell_lists, tables, motions = [], [], [()], []  # table 0: the empty one
 
     def index(seen, values):
         key = values if seen is distinct else struct.pack(f"<{len(values)}f", *values)
@@ -214,9 +215,10 @@ def _ticks_bytes(ticks):
             index(vectors, t.velocity), index(vectors, t.acceleration), index(vectors, t.omega),
             index(vectors, t.cached_velocity), t.state, t.transient_state, t.contact_plane_cell,
             index(planes, (*t.contact_plane.normal, t.contact_plane.d)), index(vectors, t.sliding_normal),
-            t.jumped_this_frame, len(t.shadow_cells), len(collisions), t.id or 0))
-        cells.extend(t.shadow_cells)
-        table.extend(index(distinct, c) for c in collisions)
+            t.jumped_this_frame, len(cell_lists), len(tables) if collisions else 0, t.id or 0))
+        cell_lists.append(t.shadow_cells)
+        if collisions:
+            tables.append([index(distinct, c) for c in collisions])
 
     for t in states:
         record(t, t.collisions if with_others else ())
@@ -230,7 +232,8 @@ def _ticks_bytes(ticks):
 
     out = (struct.pack("<iBi", len(ticks), with_others, k)
            + struct.pack("<BBi", with_motion, threw, len(records)) + b"".join(records)
-           + struct.pack(f"<i{len(cells)}I", len(cells), *cells) + struct.pack(f"<i{len(table)}i", len(table), *table)
+           + struct.pack("<i", len(cell_lists)) + b"".join(struct.pack(f"<i{len(c)}I", len(c), *c) for c in cell_lists)
+           + struct.pack("<i", len(tables)) + b"".join(struct.pack(f"<i{len(t)}i", len(t), *t) for t in tables)
            + struct.pack("<i", len(distinct)) + b"".join(struct.pack("<IdB", c.id, c.touched_time, c.ethereal) for c in distinct)
            + b"".join(motions) + listed(vectors) + listed(orientations) + listed(planes))
     if threw:
