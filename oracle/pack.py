@@ -303,6 +303,9 @@ def _static_cells(data, pos: int):
 
 
 _PLACED = struct.Struct("<iI3f4fIIi")
+_make_placement = _frozen_maker(PlacementState)
+# a tick scene's Outcome: the transition's fields at their defaults (Outcome's first 17, through `error`), then its own
+_TRANSITION_DEFAULTS = tuple(getattr(Outcome(), f.name) for f in fields(Outcome))[:17]
 
 
 def _placement_at(data, pos: int):
@@ -312,7 +315,7 @@ def _placement_at(data, pos: int):
     v = _PLACED.unpack_from(data, pos + 1)
     at = pos + 1 + _PLACED.size
     shadows = struct.unpack_from(f"<{v[11]}I", data, at)
-    return PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows)), at + 4 * v[11]
+    return _make_placement(v[0], v[1], v[2:5], v[5:9], v[9], v[10], shadows), at + 4 * v[11]
 
 
 # a MotionInterpreter (byte) and its InterpretedState's and RawState's commands, a CurrAnim's Anim (byte) and its ID,
@@ -428,13 +431,15 @@ def _ticks_at(data, pos: int):
 
 
 def _ticks_and_end(data, pos: int):
-    """int n (-1: not a tick scene), then when n > 0 the tick block (oracle/facade/Ticks.cs, WriteTicks): byte 1 (a scene
-    with other movers) or 0, int k (the other movers each tick carries), byte 1 (the mover's motion layers follow) or 0, byte 1
-    (the last tick threw: it ended the scene) or 0, int n and the n state records (`_STATE_RECORD`; per tick the
-    mover's, then each other mover's), int n and the n ShadowObjects cell ids, int n and the n CollisionTable records as
-    indices into the table of distinct ones that follows (int n and n `_COLLISION`), a motion layer per tick that did not throw (`_MOTION_STATE`), int n and the n distinct vectors
-    (x y z), int n and the n distinct orientations (w x y z), int n and the n distinct planes (normal, d), and when the
-    last tick threw, int length and its message. Returns (the TickStates or None, the offset after them)."""
+    """int n (-1: not a tick scene), then when n > 0 the tick block (oracle/facade/Ticks.cs, WriteTicks): byte 1 (a
+    scene with other movers) or 0, int k (the other movers each tick carries), byte 1 (the mover's motion layers
+    follow) or 0, byte 1 (the last tick threw: it ended the scene) or 0, int n and the n state records
+    (`_STATE_RECORD`; per tick the mover's, then each other mover's), the scene's distinct ShadowObjects cell lists
+    (`_lists`), its distinct CollisionTables (`_lists` of indices into the records after them), int n and the n
+    distinct CollisionTable records (`_COLLISION`), a motion layer per tick that did not throw (`_MOTION_STATE`), int n
+    and the n distinct vectors (x y z), int n and the n distinct orientations (w x y z), int n and the n distinct
+    planes (normal, d), and when the last tick threw, int length and its message. Returns (the TickStates or None,
+    the offset after them)."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
     if n < 0:
@@ -523,7 +528,7 @@ def _other_placements_at(data, pos: int):
         pos += _PLACED.size
         shadows = struct.unpack_from(f"<{v[11]}I", data, pos)
         pos += 4 * v[11]
-        out.append(PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows)))
+        out.append(_make_placement(v[0], v[1], v[2:5], v[5:9], v[9], v[10], shadows))
     return tuple(out), pos
 
 
@@ -573,8 +578,7 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         others, at = _other_placements_at(data, at)
         ticks, at = _ticks_and_end(data, at)
         answers = _answers_at(data, at) if tag in (4, b"\x04") else None
-        return (Outcome(static_cells=cells, placement=placement, ticks=ticks, other_placements=others,
-                        motion_answers=answers),
+        return (_make_outcome(*_TRANSITION_DEFAULTS, cells, placement, ticks, others, answers),
                 us, case_us, (built, reused, build_us, trans_us))
     if tag == 2 or tag == b"\x02":
         _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)

@@ -1,5 +1,7 @@
-// acconform's C# facade (GPL-compatible: acconform's own code, compiled against the user's ACE at run time): a tick
-// scene's states, written so Python reads them whole (pack 18). Facade.cs runs the ticks; this file writes them.
+// acconform oracle facade -- MIT licensed, part of acconform (not ACE code).
+//
+// A tick scene's states, written so that Python reads them whole (pack 18): Facade.cs runs the ticks, this file
+// writes them for oracle/pack.py's `_ticks_and_end`.
 using System;
 using System.Collections.Generic;
 using System.IO;
