@@ -18,28 +18,28 @@ are written (untimed), as a campaign's port run leaves them for both sides. Medi
   ratio     ACE / in-rt, per run, then the median (issue 41 asks at most 2x)
   port      the built-in port's run_scene, exact mode (--port), and port/ACE
 
-Measured side by side (2-core machine shared with other jobs, load average 8-9; stop 52): main 7e03fac and pack 18
-alternately, 3 runs each per runtime of --rounds 60 --warmup 20, medians of the runs (ratio: median, and the runs'
-range):
+Measured side by side (2-core machine shared with other jobs, load average 9; stop 52): main 7e03fac ("before")
+and pack 18 alternately, 3 runs each per runtime of --rounds 60 --warmup 20, medians of the runs (ratio: median, and
+the runs' range):
 
   mono 6.8   movers  pack  call in-rt unpack  ratio (runs)       before: unpack  ratio (runs)
-             1       0.10  0.64  0.60  0.12   1.43 (1.40-1.45)           0.18   1.48 (1.47-1.51)
-             2       0.15  0.85  0.81  0.25   1.48 (1.46-1.52)           0.41   1.77 (1.66-1.78)
-             4       0.20  1.37  1.33  0.39   1.41 (1.11-1.46)           0.66   1.65 (1.61-1.68)
-             8       0.34  6.58  6.51  0.70   1.16 (1.11-1.17)           1.22   1.20 (1.16-1.34)
-  .NET 10    1       0.10  0.53  0.47  0.15   1.74 (1.64-1.85)           0.15   1.80 (1.70-1.94)
-             2       0.15  0.44  0.41  0.23   2.05 (2.00-2.21)           0.34   2.58 (2.41-3.04)
-             4       0.19  0.77  0.69  0.38   1.85 (1.81-2.08)           0.59   2.42 (2.29-3.04)
-             8       0.33 12.36 12.28  0.73   1.42 (1.11-1.44)           1.18   2.37 (2.05-2.55)
+             1       0.10  0.66  0.60  0.10   1.36 (1.35-1.39)           0.16   1.44 (1.44-1.49)
+             2       0.13  0.65  0.63  0.18   1.44 (1.39-1.49)           0.39   1.72 (1.71-1.73)
+             4       0.17  1.69  1.66  0.35   1.37 (1.31-1.39)           0.68   1.65 (1.59-1.65)
+             8       0.32 10.32 10.27  0.66   1.11 (1.08-1.17)           1.19   1.17 (1.16-1.19)
+  .NET 10    1       0.08  0.30  0.28  0.07   1.69 (1.65-1.89)           0.14   1.91 (1.76-1.93)
+             2       0.12  0.31  0.30  0.13   1.87 (1.85-2.33)           0.31   2.69 (2.61-2.91)
+             4       0.16  0.59  0.58  0.26   1.69 (1.69-2.19)           0.55   2.58 (2.38-2.74)
+             8       0.29  5.16  5.14  0.54   1.15 (1.14-1.69)           1.21   2.37 (2.22-2.61)
 
 pack 18 (oracle/facade/Ticks.cs, oracle/pack.py `_ticks_and_end`): a tick's states come as fixed records read in
 one iter_unpack, their vectors, planes, cell lists and CollisionTables as indices into the scene's tables of the
 distinct ones, each TickState filled by straight-line code; unpacking is 1.7-2x faster alone (best of 40, one
 process: 1 mover 0.089 -> 0.052 ms, 8 movers 0.72 -> 0.38 ms). The in-rt time is a tailed distribution on this
-machine (8 movers: 0.7-1.0 ms at best, medians 1.5-13 ms from run to run, on either facade; a run with a fast
-median, 1.3 ms, had 8 movers at 2.02). The 2-mover scene on .NET 10 stays the tightest: about 1.3 us of Python per
-mover and tick (pack and unpack; run cold after the .NET call they take about 1.6x their time run twice in a row)
-against 2-3 us of optimised .NET. docs/oracle.md has the discussion.
+machine (8 movers: 0.7-1.0 ms at best, medians 1.5-13 ms from run to run, on either facade; runs with a fast
+median, 1.3-1.8 ms, had 8 movers at 1.7-2.0). The 2-mover scene on .NET 10 stays the tightest: about 1.1 us of
+Python per mover and tick (pack and unpack; run cold after the .NET call they take about 1.6x their time run twice
+in a row) against 2-3 us of optimised .NET. docs/oracle.md has the discussion.
 """
 
 from __future__ import annotations
