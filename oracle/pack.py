@@ -99,60 +99,63 @@ _INPUT_BYTES = {
     "stick_to": "_U32.pack(v)"}
 
 
-def _inputs_packer(names: tuple):
-    """A function of a TickStep or an OtherInputs: (a mask of its inputs present, bit i: names[i]; their values' bytes
-    in that order). Written out per input (a tick scene packs a TickStep, and an OtherInputs per other mover, per
-    tick, and most of their inputs are None). A plain loop over (bit, packer) pairs measured about 3x slower on
-    the inputs (stop 50, side by side in one process: attrgetter and zip, or compress over the present ones), and
-    pack_scene 2.1-2.2x slower on benchmarks/bench_movers.py's scenes (1.0-1.4x on drawn motion, targets and
-    missile scenes, whose DAT records weigh more): the straight-line code stays."""
+def _inputs_packer(names: tuple, head: str, after: str = ""):
+    """A function (r, out, key) of a TickStep or an OtherInputs `r`: appends to `out` `head`.pack(key, a mask of its
+    inputs present, bit i: names[i]) and their values' bytes in that order (`after`: more lines, which may set mask
+    bits and append values). Written out per input, straight into the scene's one list (a tick scene packs a
+    TickStep, and an OtherInputs per other mover, per tick, and most of their inputs are None). A plain loop over
+    (bit, packer) pairs measured about 3x slower on the inputs (stop 50, side by side in one process: attrgetter and
+    zip, or compress over the present ones), and pack_scene 2.1-2.2x slower on benchmarks/bench_movers.py's scenes
+    (1.0-1.4x on drawn motion, targets and missile scenes, whose DAT records weigh more): the straight-line code
+    stays. The head goes in last, where its place was kept (stop 52: no list of values and no tuple per input set)."""
     body = "".join(f"    v = r.{name}\n    if v is not None:\n        mask |= {1 << bit}\n"
                    f"        out.append({_INPUT_BYTES.get(name, '_3f.pack(*v)')})\n" for bit, name in enumerate(names))
     ns: dict = {}
-    exec(f"def inputs(r):\n    mask = 0\n    out = []\n{body}    return mask, out\n", globals(), ns)
+    exec(f"def inputs(r, out, key):\n    at = len(out)\n    out.append(None)\n    mask = 0\n{body}{after}"
+         f"    out[at] = {head}.pack(key, mask)\n", globals(), ns)
     return ns["inputs"]
 
 
-_tick_inputs = _inputs_packer(TICK_INPUTS)
-_other_mover_inputs = _inputs_packer(OTHER_INPUTS)
+# a step's clock value and the mask of its inputs present (bit i: TICK_INPUTS[i])
+_tick_inputs = _inputs_packer(TICK_INPUTS, "_STEP_HEAD")
+# another mover's index in the scene's `others` and the mask of its inputs present (bit i: OTHER_INPUTS[i], then bit 8
+# destroy, bit 9 unparent, bit 10 parent and (pack 18) bit 11 execute_motion)
+_other_mover_inputs = _inputs_packer(OTHER_INPUTS, "_INDEX_MASK", (
+    f"    if r.destroy:\n        mask |= {1 << len(OTHER_INPUTS)}\n"  # no value: destroyed after the setters and the parenting inputs
+    f"    if r.unparent:\n        mask |= {2 << len(OTHER_INPUTS)}\n"  # unset_parent (no value)
+    f"    v = r.parent\n    if v is not None:\n        mask |= {4 << len(OTHER_INPUTS)}\n"  # held anew, as a child's record says it
+    f"        out.append(_child_of(v))\n"
+    f"    v = r.execute_motion\n    if v is not None:\n        mask |= {8 << len(OTHER_INPUTS)}\n"  # WorldObject.ExecuteMotion's physics: its command
+    f"        out.append(_U32.pack(v))\n"))
 
 
-def _other_inputs(step, index: dict) -> list[bytes]:
-    """int n, then per other mover's inputs: its index in the scene's `others`, a mask of the inputs present (bit i:
-    OTHER_INPUTS[i], then bit 8 destroy, bit 9 unparent, bit 10 parent and bit 11 execute_motion) and their values in
-    that order."""
-    out = [_I32.pack(len(step.others))]
-    for inputs in step.others:
-        mask, values = _other_mover_inputs(inputs)
-        if inputs.destroy:  # bit 8, no value: destroyed after the setters and the parenting inputs
-            mask |= 1 << len(OTHER_INPUTS)
-        if inputs.unparent:  # bit 9: unset_parent (no value)
-            mask |= 2 << len(OTHER_INPUTS)
-        if inputs.parent is not None:  # bit 10: held anew, as a child's record says it (_child_of)
-            mask |= 4 << len(OTHER_INPUTS)
-            values.append(_child_of(inputs.parent))
-        if inputs.execute_motion is not None:  # bit 11 (pack 18): WorldObject.ExecuteMotion's physics, its command (uint)
-            mask |= 8 << len(OTHER_INPUTS)
-            values.append(_U32.pack(inputs.execute_motion))
-        out.append(_INDEX_MASK.pack(index[inputs.id], mask))
-        out += values
+def _other_inputs(step, index: dict, out: list | None = None) -> list[bytes]:
+    """int n, then per other mover's inputs (`_other_mover_inputs`; `index`: an id's index in the scene's `others`),
+    appended to `out` (a new list when None), which is returned."""
+    out = [] if out is None else out
+    out.append(_I32.pack(len(step.others)))
+    for r in step.others:
+        _other_mover_inputs(r, out, index[r.id])
     return out
 
 
 def _ticks(ticks: Ticks | None, others=(), queries=()) -> bytes:
     """byte 0 (not a tick scene), or 1 (2: with motion queries, `_queries` after the steps), the driver (its index in scene.DRIVERS), the start clock (double), the
     number of steps, and per step: its absolute clock value from `Ticks.times()` (double, computed once by the
-    record), a mask of the inputs present (bit i: TICK_INPUTS[i]) and their values in that order, then the other
-    movers' inputs (`_other_inputs`; `others`: the scene's)."""
+    record), a mask of the inputs present (bit i: TICK_INPUTS[i]) and their values in that order, then int n and per
+    other mover's inputs its index in the scene's `others`, their mask and values (`_other_inputs`; `others`: the
+    scene's)."""
     if ticks is None:
         return b"\0"
     index = {o.id: k for k, o in enumerate(others)}
     out = [_TICKS_HEAD.pack(2 if queries else 1, DRIVERS.index(ticks.driver), ticks.start, len(ticks.steps))]
+    tick_inputs = _tick_inputs
     for step, time in zip(ticks.steps, ticks.times()):
-        mask, values = _tick_inputs(step)
-        out.append(_STEP_HEAD.pack(time, mask))
-        out += values
-        out += _other_inputs(step, index) if step.others else (_NO_OTHERS,)
+        tick_inputs(step, out, time)
+        if step.others:
+            _other_inputs(step, index, out)
+        else:
+            out.append(_NO_OTHERS)
     if queries:  # byte 2 above: the scene's motion_queries (scene/8) after the steps
         out += _queries(queries)
     return b"".join(out)
@@ -303,6 +306,9 @@ def _static_cells(data, pos: int):
 
 
 _PLACED = struct.Struct("<iI3f4fIIi")
+_make_placement = _frozen_maker(PlacementState)
+# a tick scene's Outcome: the transition's fields at their defaults (Outcome's first 17, through `error`), then its own
+_TRANSITION_DEFAULTS = tuple(getattr(Outcome(), f.name) for f in fields(Outcome))[:17]
 
 
 def _placement_at(data, pos: int):
@@ -312,14 +318,9 @@ def _placement_at(data, pos: int):
     v = _PLACED.unpack_from(data, pos + 1)
     at = pos + 1 + _PLACED.size
     shadows = struct.unpack_from(f"<{v[11]}I", data, at)
-    return PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows)), at + 4 * v[11]
+    return _make_placement(v[0], v[1], v[2:5], v[5:9], v[9], v[10], shadows), at + 4 * v[11]
 
 
-# a tick's state (Facade.WriteTick, after its byte 0): updated, UpdateTime, Position.ObjCellID, CurCell id, origin,
-# orientation (w x y z), Velocity, Acceleration, Omega, CachedVelocity, State, TransientState, ContactPlaneCellID,
-# ContactPlane (normal, d), SlidingNormal, JumpedThisFrame, then int n and the n ShadowObjects cell ids, then
-# Facade.WriteMotion: byte 0 (no motion table), or 1 and the motion layer (_MOTION_STATE)
-_TICK = struct.Struct("<BdII3f4f3f3f3f3fIII3ff3fBi")
 # a MotionInterpreter (byte) and its InterpretedState's and RawState's commands, a CurrAnim's Anim (byte) and its ID,
 # Sequence.FrameNumber, Velocity, Omega, a MoveToManager (byte) and its MovementType, IsMovingTo()
 _MOTION_STATE = struct.Struct("<B" + "IIfIfIf" * 2 + "BIf3f3fBBB")
@@ -327,91 +328,105 @@ _make_command = _frozen_maker(CommandState)
 _make_motion = _frozen_maker(MotionTickState)
 
 
-def _motion_at(data, pos: int):
-    """(the tick's MotionTickState or None, the offset after it)."""
-    if data[pos] in (0, b"\0"):
-        return None, pos + 1
-    v = _MOTION_STATE.unpack_from(data, pos + 1)
+def _motion(v) -> MotionTickState:
+    """A tick's MotionTickState from its `_MOTION_STATE` values."""
     interpreted, raw = (_make_command(*v[1:8]), _make_command(*v[8:15])) if v[0] else (None, None)
-    return (_make_motion(interpreted, raw, v[16] if v[15] else None, v[17], v[18:21], v[21:24],
-                         v[25] if v[24] else None, bool(v[26])),
-            pos + 1 + _MOTION_STATE.size)
+    return _make_motion(interpreted, raw, v[16] if v[15] else None, v[17], v[18:21], v[21:24],
+                        v[25] if v[24] else None, bool(v[26]))
 
 
-_COLLISION = struct.Struct("<IdB")
+_COLLISION = struct.Struct("<IdB")  # a CollisionTable record: the id, TouchedTime (double), Ethereal (byte)
 _make_collision = _frozen_maker(CollisionState)
 
+# A tick scene's states (pack 18: oracle/facade/Ticks.cs) come as fixed-size records, one per mover and tick, read in
+# one iter_unpack: updated, UpdateTime, Position.ObjCellID, CurCell id, origin, the indices of the orientation,
+# Velocity, Acceleration, Omega and CachedVelocity, State, TransientState, ContactPlaneCellID, the ContactPlane's
+# index, SlidingNormal's index, JumpedThisFrame, the indices of its ShadowObjects cell list and of its CollisionTable,
+# and its id (another mover's; 0 for the mover). The indices are into the scene's tables of the distinct ones (by
+# bits), each made into its tuple or record once; every TickState shares them. So a TickState costs one record's
+# unpack and its slots filled (about 0.6 us against 1.5 us for pack 17's unpack and call per state, stop 52).
+_STATE_RECORD = struct.Struct("<?dII3f5iIIIii?iiI")
+_TICK_BLOCK = struct.Struct("<Bi")  # byte 1: a scene with other movers; their count k (per tick)
+_FLAGS = struct.Struct("<BBi")  # the mover's motion layers follow (1), the last tick threw (1), the records' count
 
-def _collisions_at(data, pos: int):
-    """int n, then per CollisionTable record: the id, TouchedTime (double), Ethereal (byte)."""
+
+def _state_maker(var: str, values: str) -> list[str]:
+    """The lines that make the TickState `var` from its record `values` (`_STATE_RECORD`; S: the scene's cell lists,
+    V, Q, P its vectors, orientations and planes), its CollisionTable, motion, others, id and error not set:
+    `_tick_builder` sets them and makes it a TickState."""
+    v = values
+    exprs = {"updated": f"{v}[0]", "update_time": f"{v}[1]", "cell": f"{v}[2]", "cur_cell": f"{v}[3]",
+             "origin": f"{v}[4:7]", "orientation": f"Q[{v}[7]]", "velocity": f"V[{v}[8]]",
+             "acceleration": f"V[{v}[9]]", "omega": f"V[{v}[10]]", "cached_velocity": f"V[{v}[11]]",
+             "state": f"{v}[12]", "transient_state": f"{v}[13]", "contact_plane_cell": f"{v}[14]",
+             "contact_plane": f"P[{v}[15]]", "sliding_normal": f"V[{v}[16]]", "jumped_this_frame": f"{v}[17]"}
+    lines = [f"{var} = _new(_shell)"] + [f"{var}.{name} = {e}" for name, e in exprs.items()]
+    lines.append(f"{var}.shadow_cells = S[{v}[18]]")
+    return lines
+
+
+def _tick_builder():
+    """build(records, S, T, motions, V, Q, P, k, n): the n ticks' TickStates from the state records (an
+    iterator; S, T: the scene's cell lists and CollisionTables), written out straight (no call per TickState: the records' fields go into its slots as
+    `_frozen_maker` does). k: the other movers a tick carries (None: a scene without them, whose mover has no
+    CollisionTable and no others)."""
+    names = [f.name for f in fields(TickState)]
+    shell = type("TickStateShell", (), {"__slots__": tuple(names), "__module__": __name__})
+    probe = object.__new__(shell)
+    probe.__class__ = TickState  # the layouts agree, or a TypeError now
+    mover = _state_maker("o", "v")
+    other = _state_maker("p", "u") + ["p.collisions = T[u[19]]", "p.motion = None",
+                                      "p.others = None", "p.id = u[20]", "p.error = None", "p.__class__ = _cls",
+                                      "others.append(p)"]
+    set_here = {"updated", "update_time", "cell", "cur_cell", "origin", "orientation", "velocity", "acceleration",
+                "omega", "cached_velocity", "state", "transient_state", "contact_plane_cell", "contact_plane",
+                "sliding_normal", "jumped_this_frame", "shadow_cells", "motion", "collisions", "others", "id", "error"}
+    assert set_here == set(names), "every TickState field is set"
+    body = "\n".join(["def build(records, S, T, motions, V, Q, P, k, n):",
+                      "    out = []",
+                      "    for i in range(n):",
+                      "        v = next(records)"]
+                     + ["        " + line for line in mover]
+                     + ["        o.motion = None if motions is None else motions[i]",
+                        "        if k is None:",
+                        "            o.collisions = None",
+                        "            o.others = None",
+                        "        else:",
+                        "            o.collisions = T[v[19]]",
+                        "            others = []",
+                        "            for _ in range(k):",
+                        "                u = next(records)"]
+                     + ["                " + line for line in other]
+                     + ["            o.others = tuple(others)",
+                        "        o.id = None",
+                        "        o.error = None",
+                        "        o.__class__ = _cls",
+                        "        out.append(o)",
+                        "    return out", ""])
+    ns = {"_new": object.__new__, "_shell": shell, "_cls": TickState}
+    exec(body, ns)
+    return ns["build"]
+
+
+_build_ticks = _tick_builder()
+
+
+def _array(data, pos: int, record, count: int):
+    """`count` records of the Struct `record` at `pos` in the byte view `data`: (their values' tuples, the end)."""
+    end = pos + count * record.size
+    return list(record.iter_unpack(data[pos:end])), end
+
+
+def _lists(data, pos: int, kind: str):
+    """int n, then n lists, each int m and m values of the struct format `kind`: (their tuples, the end)."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
-    if not n:  # most ticks: nothing touched
-        return (), pos
-    end = pos + n * _COLLISION.size
-    return tuple([_make_collision(i, t, e != 0) for i, t, e in _COLLISION.iter_unpack(data[pos:end])]), end
-
-
-# A state (Facade.WriteState) is read in one unpack: _TICK's fields, its vectors but the origin as their bytes (the key
-# of the one shared tuple of their floats, by bits as `_RAW`'s: a mover's orientation, velocity, ... mostly stay from
-# tick to tick) and its ContactPlane too (the key of its one PlaneState), then its n ShadowObjects ids and the motion
-# byte: the mover's as `_STATE` + n + "IB"; another mover's with its id before (`_OTHER_AT`) and its CollisionTable's
-# count after (another mover has no motion layer: the byte is 0). One Struct per n and kind, made on first use. So a
-# scene with several movers (one TickState per mover and tick) pays one unpack and one call per TickState.
-_STATE = "BdII3f16s12s12s12s12sIII16s12sBi"
-_N_AT = _TICK.size - 4  # the offset of n in a state
-_OTHER_AT = 1  # where another mover's state starts in its values (after its id)
-_states: dict = {}  # n -> the mover's state Struct
-_other_states: dict = {}  # n -> another mover's
-_vectors: dict = {}  # 12 or 16 bytes -> the tuple of their 3 or 4 floats
-
-
-def _state_struct(n: int):
-    s = _states[n] = struct.Struct(f"<{_STATE}{n}IB")
-    return s
-
-
-def _other_state_struct(n: int):
-    s = _other_states[n] = struct.Struct(f"<I{_STATE}{n}IBi")
-    return s
-
-
-def _plane(key: bytes):
-    v = _parts.get(key)
-    if v is None:
-        if len(_parts) >= _PARTS_LIMIT:
-            _parts.clear()
-        x, y, z, d = _4f.unpack(key)
-        v = _parts[key] = _make_plane((x, y, z), d)
-    return v
-
-
-def _vector(key: bytes) -> tuple:
-    if len(_vectors) >= _PARTS_LIMIT:
-        _vectors.clear()
-    v = _vectors[key] = (_4f if len(key) == 16 else _3f).unpack(key)
-    return v
-
-
-def _tick_maker(at: int):
-    """TickState from a state's values `v` (from index `at`), its n ShadowObjects, its PlaneState, motion layer,
-    CollisionTable, others and id."""
-    def i(k):
-        return f"v[{at + k}]"
-
-    def vec(k):
-        return f"(_vg(v[{at + k}]) or _vector(v[{at + k}]))"
-
-    return _frozen_maker(TickState, "v, n, plane, motion, collisions, others, oid", {
-        "updated": f"{i(0)} != 0", "update_time": i(1), "cell": i(2), "cur_cell": i(3), "origin": f"v[{at + 4}:{at + 7}]",
-        "orientation": vec(7), "velocity": vec(8), "acceleration": vec(9), "omega": vec(10), "cached_velocity": vec(11),
-        "state": i(12), "transient_state": i(13), "contact_plane_cell": i(14), "contact_plane": "plane",
-        "sliding_normal": vec(16), "jumped_this_frame": f"{i(17)} != 0", "shadow_cells": f"v[{at + 19}:{at + 19} + n]",
-        "id": "oid", "error": "None"}, {"_vg": _vectors.get, "_vector": _vector})
-
-
-_mover_tick = _tick_maker(0)
-_other_tick = _tick_maker(_OTHER_AT)
+    out = []
+    for _ in range(n):
+        (m,) = _I32.unpack_from(data, pos)
+        out.append(struct.unpack_from(f"<{m}{kind}", data, pos + 4))
+        pos += 4 + 4 * m
+    return out, pos
 
 
 def _ticks_at(data, pos: int):
@@ -419,48 +434,52 @@ def _ticks_at(data, pos: int):
 
 
 def _ticks_and_end(data, pos: int):
-    """int n (-1: not a tick scene), then per tick byte 0 and its state, or byte 1, int length and the error
-    message (the last tick: an error ends the scene). A state is its fields (`_STATE`), then byte 0, or byte 1
-    (a scene with other movers), its CollisionTable, int n and per other mover its id, state and CollisionTable.
-    Returns the TickStates or None. Each TickState is made once, with all its fields."""
+    """int n (-1: not a tick scene), then when n > 0 the tick block (oracle/facade/Ticks.cs, WriteTicks): byte 1 (a
+    scene with other movers) or 0, int k (the other movers each tick carries), byte 1 (the mover's motion layers
+    follow) or 0, byte 1 (the last tick threw: it ended the scene) or 0, int n and the n state records
+    (`_STATE_RECORD`; per tick the mover's, then each other mover's), the scene's distinct ShadowObjects cell lists
+    (`_lists`), its distinct CollisionTables (`_lists` of indices into the records after them), int n and the n
+    distinct CollisionTable records (`_COLLISION`), a motion layer per tick that did not throw (`_MOTION_STATE`), int n
+    and the n distinct vectors (x y z), int n and the n distinct orientations (w x y z), int n and the n distinct
+    planes (normal, d), and when the last tick threw, int length and its message. Returns (the TickStates or None,
+    the offset after them)."""
     (n,) = _I32.unpack_from(data, pos)
     pos += 4
     if n < 0:
         return None, pos
-    out = []
-    for _ in range(n):
-        if data[pos] not in (0, b"\0"):
-            (k,) = _I32.unpack_from(data, pos + 1)
-            out.append(TickState(error=bytes(data[pos + 5:pos + 5 + k]).decode("utf-8", "replace")))
-            pos += 5 + k
-            continue
-        pos += 1
-        (m,) = _I32.unpack_from(data, pos + _N_AT)
-        s = _states.get(m) or _state_struct(m)
-        v = s.unpack_from(data, pos)
-        pos += s.size
-        motion = None
-        if v[-1]:
-            motion, pos = _motion_at(data, pos - 1)
-        plane = _parts.get(v[15]) or _plane(v[15])
-        if data[pos] in (0, b"\0"):  # no other movers
-            out.append(_mover_tick(v, m, plane, motion, None, None, None))
-            pos += 1
-            continue
-        collisions, pos = _collisions_at(data, pos + 1)
-        (k,) = _I32.unpack_from(data, pos)
-        pos += 4
-        others = []
-        for _ in range(k):
-            (j,) = _I32.unpack_from(data, pos + 4 + _N_AT)
-            s = _other_states.get(j) or _other_state_struct(j)
-            w = s.unpack_from(data, pos)
-            pos += s.size
-            table = ()
-            if w[-1]:
-                table, pos = _collisions_at(data, pos - 4)
-            others.append(_other_tick(w, j, _parts.get(w[16]) or _plane(w[16]), None, table, None, w[0]))
-        out.append(_mover_tick(v, m, plane, motion, collisions, tuple(others), None))
+    if n == 0:
+        return (), pos
+    data = memoryview(data).cast("B")  # ints, whatever the buffer (a ctypes char array's items are bytes)
+    with_others, k = _TICK_BLOCK.unpack_from(data, pos)
+    pos += _TICK_BLOCK.size
+    k = k if with_others else None
+    with_motion, threw, count = _FLAGS.unpack_from(data, pos)
+    pos += _FLAGS.size
+    end = pos + count * _STATE_RECORD.size
+    records = _STATE_RECORD.iter_unpack(data[pos:end])
+    cells, pos = _lists(data, end, "I")
+    tables, pos = _lists(data, pos, "i")
+    (m,) = _I32.unpack_from(data, pos)
+    distinct, pos = _array(data, pos + 4, _COLLISION, m)
+    distinct = [_make_collision(i, t, e != 0) for i, t, e in distinct]
+    tables = [tuple([distinct[i] for i in t]) for t in tables]
+    ticks = n - threw
+    motions = None
+    if with_motion:
+        motions, pos = _array(data, pos, _MOTION_STATE, ticks)
+        motions = [_motion(v) for v in motions]
+    (m,) = _I32.unpack_from(data, pos)
+    vectors, pos = _array(data, pos + 4, _3f, m)
+    (m,) = _I32.unpack_from(data, pos)
+    orientations, pos = _array(data, pos + 4, _4f, m)
+    (m,) = _I32.unpack_from(data, pos)
+    planes, pos = _array(data, pos + 4, _4f, m)
+    planes = [_make_plane((x, y, z), d) for x, y, z, d in planes]
+    out = _build_ticks(records, cells, tables, motions, vectors, orientations, planes, k, ticks)
+    if threw:
+        (m,) = _I32.unpack_from(data, pos)
+        out.append(TickState(error=bytes(data[pos + 4:pos + 4 + m]).decode("utf-8", "replace")))
+        pos += 4 + m
     return tuple(out), pos
 
 
@@ -512,7 +531,7 @@ def _other_placements_at(data, pos: int):
         pos += _PLACED.size
         shadows = struct.unpack_from(f"<{v[11]}I", data, pos)
         pos += 4 * v[11]
-        out.append(PlacementState(v[0], v[1], v[2:5], v[5:9], v[9], v[10], tuple(shadows)))
+        out.append(_make_placement(v[0], v[1], v[2:5], v[5:9], v[9], v[10], shadows))
     return tuple(out), pos
 
 
@@ -562,8 +581,7 @@ def unpack_outcome(data, offset: int = 0) -> tuple[Outcome, float, float, tuple[
         others, at = _other_placements_at(data, at)
         ticks, at = _ticks_and_end(data, at)
         answers = _answers_at(data, at) if tag in (4, b"\x04") else None
-        return (Outcome(static_cells=cells, placement=placement, ticks=ticks, other_placements=others,
-                        motion_answers=answers),
+        return (_make_outcome(*_TRANSITION_DEFAULTS, cells, placement, ticks, others, answers),
                 us, case_us, (built, reused, build_us, trans_us))
     if tag == 2 or tag == b"\x02":
         _tag, vx, vy, vz, us = _NO_TRANSITION.unpack_from(data, offset)

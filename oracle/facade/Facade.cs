@@ -35,7 +35,7 @@ using ACE.Server.Physics.Util;
 
 namespace Acconform.Oracle
 {
-    public static class Facade
+    public static partial class Facade
     {
         public const int PackVersion = 18;
 
@@ -165,8 +165,6 @@ namespace Acconform.Oracle
         static ACE.Server.WorldObjects.Player moverPlayer;  // the mover's WorldObject (the last scene's until the next)
         static uint locationCell;  // the cell of the mover's WorldObject.Location (Player.UpdatePlayerPosition)
         static bool moverMotion;  // the mover has a motion table: each tick also carries its motion layer (WriteMotion)
-        static readonly MemoryStream tickStream = new MemoryStream(4096);
-        static readonly BinaryWriter tickWriter = new BinaryWriter(tickStream);
         static Action<double> setPortalYearTicks;
 
         static readonly List<Tuple<int, int>> tableUsed = new List<Tuple<int, int>>();
@@ -335,7 +333,7 @@ namespace Acconform.Oracle
             othersRead = false;
             sceneOthers.Clear();
             ticksRun = -1;
-            tickStream.SetLength(0);
+            ClearTicks();
             var total = Stopwatch.StartNew();
             try
             {
@@ -371,7 +369,6 @@ namespace Acconform.Oracle
             }
             catch (Exception e)
             {
-                while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
                 staticCells = null;  // an error outcome carries no registration
                 placed = false;  // nor a placement
                 errored = true;  // nor the other movers' placements
@@ -379,7 +376,7 @@ namespace Acconform.Oracle
                 outcome.Position = start;
                 outcome.SetLength(start);
                 w.Write((byte)0xEE);
-                var msg = Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
+                var msg = ErrorBytes(e);
                 w.Write(msg.Length);
                 w.Write(msg);
                 w.Write(fvpMicros);
@@ -395,7 +392,7 @@ namespace Acconform.Oracle
             WritePlacement(w);
             WriteOtherPlacements(w, errored);
             w.Write(ticksRun);
-            if (ticksRun > 0) w.Write(tickStream.GetBuffer(), 0, (int)tickStream.Length);
+            if (ticksRun > 0) WriteTicks(w);
             if (!errored && answersRun >= 0)
             {
                 w.Write(answersRun);
@@ -476,8 +473,7 @@ namespace Acconform.Oracle
                 }
                 catch (Exception e)
                 {
-                    while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
-                    var msg = Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
+                    var msg = ErrorBytes(e);
                     w.Write((byte)0xEE);
                     w.Write(msg.Length);
                     w.Write(msg);
@@ -652,11 +648,7 @@ namespace Acconform.Oracle
                 }
                 catch (Exception e)
                 {
-                    while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
-                    var msg = Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
-                    tickWriter.Write((byte)1);
-                    tickWriter.Write(msg.Length);
-                    tickWriter.Write(msg);
+                    tickError = ErrorBytes(e);  // the last tick (Ticks.cs: WriteTicks)
                     ticksRun++;
                     return;
                 }
@@ -1575,77 +1567,13 @@ namespace Acconform.Oracle
             location.SetValue(player, locationCtor.Invoke(new object[] { begin.ObjCellID, begin.Frame.Origin, begin.Frame.Orientation }));
         }
 
-        /// <summary>byte 0, then the TickState fields (acconform.outcome.TickState, in order), then byte 0, or in a scene
-        /// with other movers byte 1, the mover's CollisionTable, int n and per other mover its id and its TickState's
-        /// fields with its CollisionTable (no motion layer).</summary>
-        static void WriteTick(PhysicsObj obj, bool updated)
-        {
-            var w = tickWriter;
-            w.Write((byte)0);
-            WriteState(w, obj, updated, moverMotion);
-            if (!othersRead) { w.Write((byte)0); return; }
-            w.Write((byte)1);
-            WriteCollisions(w, obj);
-            w.Write(sceneOthers.Count);
-            for (var k = 0; k < sceneOthers.Count; k++)
-            {
-                var o = sceneOthers[k];
-                w.Write(o.Id);
-                WriteState(w, o.Obj, othersUpdated[k], false);
-                WriteCollisions(w, o.Obj);
-            }
-        }
-
-        /// <summary>int n, then per record of the CollisionTable in its order: the object's id, TouchedTime, Ethereal
-        /// (n 0: no table yet).</summary>
-        static void WriteCollisions(BinaryWriter w, PhysicsObj obj)
-        {
-            var table = obj.CollisionTable;
-            if (table == null) { w.Write(0); return; }
-            w.Write(table.Count);
-            foreach (var kv in table)
-            {
-                w.Write(kv.Key);
-                w.Write(kv.Value.TouchedTime);
-                w.Write((byte)(kv.Value.Ethereal ? 1 : 0));
-            }
-        }
-
-        static void WriteState(BinaryWriter w, PhysicsObj obj, bool updated, bool motion)
-        {
-            w.Write((byte)(updated ? 1 : 0));
-            w.Write(obj.UpdateTime);
-            w.Write(obj.Position.ObjCellID);
-            w.Write(obj.CurCell != null ? obj.CurCell.ID : 0u);
-            W3(w, obj.Position.Frame.Origin);
-            var q = obj.Position.Frame.Orientation;
-            w.Write(q.W); w.Write(q.X); w.Write(q.Y); w.Write(q.Z);
-            W3(w, obj.Velocity);
-            W3(w, obj.Acceleration);
-            W3(w, obj.Omega);
-            W3(w, obj.CachedVelocity);
-            w.Write((uint)obj.State);
-            w.Write((uint)obj.TransientState);
-            w.Write(obj.ContactPlaneCellID);
-            W3(w, obj.ContactPlane.Normal);
-            w.Write(obj.ContactPlane.D);
-            W3(w, obj.SlidingNormal);
-            w.Write((byte)(obj.JumpedThisFrame ? 1 : 0));
-            w.Write(obj.ShadowObjects.Count);
-            foreach (var id in obj.ShadowObjects.Keys) w.Write(id);
-            WriteMotion(w, obj, motion);
-        }
-
-        /// <summary>byte 0 (the mover has no motion table), or 1 then the mover's motion layer as it stands
-        /// (acconform.outcome.MotionTickState), read with no call that makes or asks anything (not get_minterp, not
-        /// get_state_velocity): byte (1: a MovementManager with a MotionInterpreter) and the InterpretedState's and the
+        /// <summary>The mover's motion layer as it stands (acconform.outcome.MotionTickState; Ticks.cs writes one per tick),
+        /// read with no call that makes or asks anything (not get_minterp, not get_state_velocity): byte (1: a MovementManager with a MotionInterpreter) and the InterpretedState's and the
         /// RawState's CurrentStyle, ForwardCommand, ForwardSpeed, SideStepCommand, SideStepSpeed, TurnCommand,
         /// TurnSpeed (zeros when none); byte (1: the Sequence has a CurrAnim with an Anim) and that Anim's ID; the
         /// Sequence's FrameNumber, Velocity and Omega; byte (1: a MoveToManager) and its MovementType; IsMovingTo().</summary>
-        static void WriteMotion(BinaryWriter w, PhysicsObj obj, bool motion)
+        static void WriteMotion(BinaryWriter w, PhysicsObj obj)
         {
-            if (!motion) { w.Write((byte)0); return; }
-            w.Write((byte)1);
             var manager = obj.MovementManager;
             var minterp = manager != null ? manager.MotionInterpreter : null;
             w.Write((byte)(minterp != null ? 1 : 0));
@@ -2591,6 +2519,14 @@ namespace Acconform.Oracle
 
         // ------------------------------------------------------------------ outcome
         static void W3(BinaryWriter w, Vector3 v) { w.Write(v.X); w.Write(v.Y); w.Write(v.Z); }
+
+        /// <summary>What an error outcome says of `e`: its type's name and message as UTF-8, of the exception ACE threw
+        /// (a reflective call's TargetInvocationException unwrapped to it).</summary>
+        static byte[] ErrorBytes(Exception e)
+        {
+            while (e is TargetInvocationException && e.InnerException != null) e = e.InnerException;
+            return Encoding.UTF8.GetBytes(e.GetType().Name + ": " + e.Message);
+        }
 
         static void WriteOutcome(BinaryWriter w, bool ok, Transition trans, PhysicsObj obj, double fvpMicros)
         {

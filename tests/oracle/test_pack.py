@@ -191,33 +191,55 @@ def test_a_packed_tick_scene_carries_each_steps_absolute_clock_and_inputs_right_
     assert data[-42 - 32:-42] == struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
 
 
-def _tick_bytes(t):
-    if t.error is not None:
-        msg = t.error.encode()
-        return b"\1" + struct.pack("<i", len(msg)) + msg
-    return b"\0" + _state_bytes(t) + b"\0"  # no other movers
+def _ticks_bytes(ticks):
+    """Facade.WriteTicks' bytes (oracle/facade/Ticks.cs), from int ticksRun on: whether the ticks carry other movers
+    and how many, whether the mover's motion layers follow, whether the last tick threw, the state records (per tick
+    the mover's, then each other mover's), the cell lists, the CollisionTables (their records' indices), the distinct
+    CollisionTable records, the motion layers, the tables of distinct vectors, orientations and planes (by bits), and
+    the last tick's error message."""
+    states = [t for t in ticks if t.error is None]
+    threw = bool(ticks) and ticks[-1].error is not None
+    with_others = bool(states) and states[0].others is not None
+    k = len(states[0].others) if with_others else 0
+    with_motion = bool(states) and states[0].motion is not None
+    vectors, orientations, planes, distinct = {}, {}, {}, {}  # their bytes (a CollisionState: itself) -> index
+    records, cell_lists, tables, motions = [], [], [()], []  # table 0: the empty one
 
+    def index(seen, values):
+        key = values if seen is distinct else struct.pack(f"<{len(values)}f", *values)
+        return seen.setdefault(key, len(seen))
 
-def _state_bytes(t):
-    """Facade.WriteState's bytes."""
-    from acconform.oracle.pack import _TICK
+    def record(t, collisions):
+        records.append(struct.pack(
+            "<?dII3f5iIIIii?iiI", t.updated, t.update_time, t.cell, t.cur_cell, *t.origin, index(orientations, t.orientation),
+            index(vectors, t.velocity), index(vectors, t.acceleration), index(vectors, t.omega),
+            index(vectors, t.cached_velocity), t.state, t.transient_state, t.contact_plane_cell,
+            index(planes, (*t.contact_plane.normal, t.contact_plane.d)), index(vectors, t.sliding_normal),
+            t.jumped_this_frame, len(cell_lists), len(tables) if collisions else 0, t.id or 0))
+        cell_lists.append(t.shadow_cells)
+        if collisions:
+            tables.append([index(distinct, c) for c in collisions])
 
-    return _TICK.pack(t.updated, t.update_time, t.cell, t.cur_cell, *t.origin, *t.orientation, *t.velocity,
-                      *t.acceleration, *t.omega, *t.cached_velocity, t.state, t.transient_state,
-                      t.contact_plane_cell, *t.contact_plane.normal, t.contact_plane.d, *t.sliding_normal,
-                      t.jumped_this_frame, len(t.shadow_cells)) + struct.pack(f"<{len(t.shadow_cells)}I", *t.shadow_cells) \
-        + _motion_bytes(t.motion)
+    for t in states:
+        record(t, t.collisions if with_others else ())
+        if with_motion:
+            motions.append(_motion_bytes(t.motion)[1:])  # no leading byte: every tick has one
+        for o in t.others or ():
+            record(o, o.collisions)
 
+    def listed(seen):
+        return struct.pack("<i", len(seen)) + b"".join(seen)
 
-def _collision_bytes(table):
-    return struct.pack("<i", len(table)) + b"".join(struct.pack("<IdB", c.id, c.touched_time, c.ethereal) for c in table)
-
-
-def _tick_with_others_bytes(t):
-    """Facade.WriteTick's bytes in a scene with other movers: the mover's state and CollisionTable, then per other
-    mover its id, state and CollisionTable."""
-    return (b"\0" + _state_bytes(t) + b"\1" + _collision_bytes(t.collisions) + struct.pack("<i", len(t.others))
-            + b"".join(struct.pack("<I", o.id) + _state_bytes(o) + _collision_bytes(o.collisions) for o in t.others))
+    out = (struct.pack("<iBi", len(ticks), with_others, k)
+           + struct.pack("<BBi", with_motion, threw, len(records)) + b"".join(records)
+           + struct.pack("<i", len(cell_lists)) + b"".join(struct.pack(f"<i{len(c)}I", len(c), *c) for c in cell_lists)
+           + struct.pack("<i", len(tables)) + b"".join(struct.pack(f"<i{len(t)}i", len(t), *t) for t in tables)
+           + struct.pack("<i", len(distinct)) + b"".join(struct.pack("<IdB", c.id, c.touched_time, c.ethereal) for c in distinct)
+           + b"".join(motions) + listed(vectors) + listed(orientations) + listed(planes))
+    if threw:
+        msg = ticks[-1].error.encode()
+        out += struct.pack("<i", len(msg)) + msg
+    return out
 
 
 def _commands(c):
@@ -243,7 +265,7 @@ def test_unpacking_a_tick_scene_reads_every_tick_state_and_the_error_that_ended_
                        PlaneState((0.0, 0.0, 1.0), -20.0), (-0.0, 0.0, 0.0), True, (0xA9B40001, 0xA9B40009)),
              TickState(error="NullReferenceException: no cell"))
     data = (struct.pack("<Bd", 3, 0.0) + struct.pack("<diidd", 9.0, 1, 0, 5.0, 2.5) + _cells(()) + _placement(PLACED)
-            + struct.pack("<i", 2) + b"".join(_tick_bytes(t) for t in ticks))
+            + _ticks_bytes(ticks))
     o, fvp, case, counts = unpack_outcome(data)
     assert o == Outcome(static_cells=(), placement=PLACED, ticks=ticks)
     assert math.copysign(1.0, o.ticks[0].sliding_normal[0]) == -1.0
@@ -268,7 +290,7 @@ def test_unpacking_a_tick_with_other_movers_reads_each_ones_id_state_and_collisi
     mover = replace(base, collisions=(CollisionState(0x80000001, 1000.1, True),), others=(other, quiet))
     ticks = (mover, replace(mover, origin=(12.0, 12.625, 20.0), collisions=(), others=(quiet, other)))
     data = (struct.pack("<Bd", 3, 0.0) + struct.pack("<diidd", 9.0, 1, 0, 5.0, 2.5) + _cells(()) + _placement(None)
-            + struct.pack("<i", 2) + b"".join(_tick_with_others_bytes(t) for t in ticks))
+            + _ticks_bytes(ticks))
     o = unpack_outcome(data)[0]
     assert o.ticks == ticks
     signs = [(math.copysign(1.0, t.velocity[0]), math.copysign(1.0, t.sliding_normal[0]),
@@ -291,7 +313,7 @@ def test_unpacking_a_motion_scenes_ticks_reads_each_ticks_motion_layer_and_the_p
                                                   (0.0, 0.0, -1.5), 7, True)),
              replace(base, motion=MotionTickState(None, None, None, -0.0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), None, False)))
     data = (struct.pack("<Bd", 3, 0.0) + struct.pack("<diidd", 9.0, 1, 0, 5.0, 2.5) + _cells(()) + _placement(None)
-            + struct.pack("<i", 2) + b"".join(_tick_bytes(t) for t in ticks))
+            + _ticks_bytes(ticks))
     o = unpack_outcome(data)[0]
     assert o.ticks == ticks
     assert math.copysign(1.0, o.ticks[1].motion.frame_number) == -1.0
