@@ -1528,6 +1528,10 @@ class OtherMover:
     # without a DefaultScale entry) and cylspheres, as a static's `setup` gives them; its spheres stay `spheres`.
     # None: one empty part, as before
     setup: SetupRec | None = None
+    # scene/8 (feature objects.motion_tables): its WorldObject's MotionTableId is the mover's (mover.motion_table, the
+    # table acconform.motion_scene.MOTION_TABLE_ID): InitPhysicsObj's SetMotionTableID makes its MotionTableManager
+    # and its MovementManager (EnterDefaultState), which its Destroy's exit_world then leaves. False: none (0)
+    motion_table: bool = False
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
@@ -1550,13 +1554,15 @@ class OtherMover:
             d["report_collisions"] = self.report_collisions
         if self.setup is not None:
             d["setup"] = self.setup.to_json()
+        if self.motion_table:
+            d["motion_table"] = True
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch",
-               "report_collisions", "setup"})
+               "report_collisions", "setup", "motion_table"})
         setup = None
         if r.given("setup"):
             setup = SetupRec.from_json(r["setup"], mover=True)
@@ -1613,7 +1619,21 @@ class OtherMover:
             player_killer_status=pks,
             holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
             sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
-            parent=parent, launch=launch, report_collisions=report, setup=setup)
+            parent=parent, launch=launch, report_collisions=report, setup=setup, motion_table=_read_other_table(r, weenie, setup))
+
+
+def _read_other_table(r: Reader, weenie: str, setup) -> bool:
+    """others[].motion_table: a creature's (weenie player, creature or monster) whose Setup is the one-part body the
+    mover's animations move (no `setup`); the scene's check_consistency asks for the mover's motion_table."""
+    if not r.given("motion_table"):
+        return False
+    table = r["motion_table"].bool_()
+    if table and weenie not in ("player", "creature", "monster"):
+        r["motion_table"].fail(f"a MotionTableId that animates a body is a creature's here (weenie player, creature or "
+                               f"monster), not a {weenie}'s")
+    if table and setup is not None:
+        r["motion_table"].fail("the mover's animations move a one-part body: an other with a motion table has no setup")
+    return table
 
 
 ENGINE_MODES = ("server", "client")
@@ -1868,6 +1888,10 @@ def check_consistency(scene: Scene, path: str = "") -> None:
             raise InvalidScene(_p(path, f"landblocks[{i}].id"), f"landblock {lb.id:08X} is defined twice (also landblocks[{seen[lb.id]}])")
         seen[lb.id] = i
     defined = {lb.id >> 16 for lb in scene.landblocks}
+    for i, o in enumerate(scene.others):
+        if o.motion_table and getattr(scene.mover, "motion_table", None) is None:
+            raise InvalidScene(_p(path, f"others[{i}].motion_table"), "an other's motion_table is the mover's table: "
+                                                                      "the mover needs a motion_table")
     env_cells = _check_indoor(scene, path, defined)
     _check_buildings(scene, path, env_cells)
     if scene.ticks is not None:
@@ -2093,7 +2117,9 @@ def _check_launches(scene: Scene, path: str, by_id: dict) -> None:
 
 
 def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> None:
-    """Each RequestPos of a tick scene names a cell the scene defines."""
+    """Each RequestPos of a tick scene names a cell the scene defines, or no cell of a defined landblock (feature
+    ticks.no_cell_requests: a low word of 0x0000 or 0x0041..0x00FF, which Player.ValidateMovement lets through in the
+    player's landblock and LScape.get_landcell answers null for)."""
     if scene.mover.end is not None:
         raise InvalidScene(_p(path, "mover.end"), "a tick scene's mover has no end: its ticks move it (omit end)")
     for i, step in enumerate(scene.ticks.steps):
@@ -2101,6 +2127,9 @@ def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> N
             continue
         where = _p(path, f"ticks.steps[{i}].request_pos.cell")
         cell = step.request_pos.cell
+        if cell & 0xFFFF == 0 or 0x41 <= cell & 0xFFFF <= 0xFF:
+            check_landblock(where, cell)
+            continue  # a RequestPos into no cell (feature ticks.no_cell_requests): get_landcell answers null
         _check_cell_id(where, cell)
         check_landblock(where, cell)
         _check_defined(where, cell, env_cells, "set_current_pos moves the mover into it (LScape.get_landcell)")

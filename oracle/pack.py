@@ -17,7 +17,7 @@ from ..motion_scene import MOTION_TABLE_ID, STOPS
 from ..scene import MOTION_QUERY_FUNCTIONS, SPELL_KINDS, DRIVERS, OTHER_INPUTS, TICK_INPUTS, WEENIE_CLASSES, Position, Frame, Scene, Ticks
 from ..staging import MOVER_ID
 
-PACK_VERSION = 17
+PACK_VERSION = 18
 
 _f = struct.Struct("<f")
 _DOOR = struct.Struct("<IB")  # the door input: the static's id, 1 opens (ethereal) / 0 closes
@@ -177,7 +177,8 @@ _MOVER = struct.Struct("<IIfII3fBI4fB3f" + _POS + _POS + "BiBII" + "IIIIii")
 # then byte 0, or a projectile's launch (pack 14): byte 1, tick, launcher id, target id (0: none, an untargeted spell), speed, origin, orientation
 # (w x y z), lead_target, arc, tracking, alt_solver, rotation_speed (the projectile's RotationSpeed; 0: none), the spell's kind
 # (byte: its index in acconform.scene.SPELL_KINDS); then the WorldObject's ReportCollisions property (byte: 0 unset,
-# 1 false, 2 true)
+# 1 false, 2 true); then (pack 18) its WorldObject's MotionTableId (u32: the mover's table,
+# acconform.motion_scene.MOTION_TABLE_ID, with scene/8 others[].motion_table; 0: none)
 _NO_LAUNCH = b"\0"
 _LAUNCH = struct.Struct("<BiIIf3f4fBBBBfB")
 
@@ -224,6 +225,7 @@ def pack_scene(scene: Scene) -> bytes:
                                 1 if la.alt_solver else 0, la.rotation_speed,
                                 SPELL_KINDS.index(la.spell)))
         out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
+        out.append(struct.pack("<I", MOTION_TABLE_ID if getattr(o, "motion_table", False) else 0))
     return b"".join(out)
 
 

@@ -33,6 +33,7 @@ from acconform.outcome import (AttackFrameState, CollisionState, CommandState, C
                                MotionTickState, NormalState, Outcome, PlacementState, PlaneState, TickState)
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
+from acconform.motion_scene import MOTION_TABLE_ID
 from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, OtherMover, Scene, StaticObject
 
 from .anchors import anchor, harness
@@ -102,7 +103,8 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     """WorldObject.InitPhysicsObj for the other mover's WorldObject (acconform.scene.OtherMover): a
     creature's PhysicsObj by ``new PhysicsObj()`` and makeAnimObject(did, true), a GenericObject's by
     makeObject(did, id, true) (dynamic); set_object_guid(id), set_weenie_obj(new WeenieObject(the
-    WorldObject)), SetMotionTableID(0), SetScaleStatic(scale), State; then TransientState and Velocity as
+    WorldObject)), SetMotionTableID(its MotionTableId: the mover's with others[].motion_table, else 0),
+    SetScaleStatic(scale), State; then TransientState and Velocity as
     the scene gives them, and AddPhysicsObj's physics calls: LScape.get_landcell of the begin cell,
     Position.ObjCellID = its id, enter_world(Position(cell, frame)). Returns the object, its placement
     and whether it is in the world (AddPhysicsObj's success: entered and in a cell); one that is not
@@ -120,7 +122,8 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     obj.set_object_guid(o.id)
     wo = world_object_of(o)
     obj.set_weenie_obj(WeenieObject.of(wo))
-    obj.set_motion_table_id(0)
+    # its WorldObject's MotionTableId: the mover's table (others[].motion_table), else 0
+    obj.set_motion_table_id(MOTION_TABLE_ID if getattr(o, "motion_table", False) else 0)
     obj.set_scale_static(mode.scalar(o.scale))
     obj.state = o.state
     obj.transient_state = o.transient_state
@@ -559,8 +562,9 @@ def handle_action_jump(mover: PhysicsObj, velocity) -> None:
 
 
 @harness("a tick step's inputs, in the scene's order, as the oracle's facade applies them")
-def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) -> None:
-    """The setters and the jump first (TICK_INPUTS begins with OTHER_INPUTS, in their order), then the rest."""
+def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None, others=None) -> None:
+    """The setters and the jump first (TICK_INPUTS begins with OTHER_INPUTS, in their order), then the rest.
+    `others`: the other movers' PhysicsObjs by id (a MoveToObject's target the server destroyed is found there)."""
     apply_other_inputs(mover, step, mode)
     if step.motion is not None:
         move_to_state(mover, step.motion, mode)
@@ -573,7 +577,7 @@ def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) ->
     if step.move_to is not None:
         move_to_position(mover, step.move_to, mode)
     if step.move_to_object is not None:
-        object_move(mover, step.move_to_object, False, mode)
+        object_move(mover, step.move_to_object, False, mode, others)
     if step.turn_to_heading is not None:
         turn_to_heading(mover, step.turn_to_heading, mode)
     if step.turn_to_object is not None:
@@ -700,11 +704,16 @@ def turn_to_heading(mover: PhysicsObj, turn, mode) -> None:
 
 
 @harness("Monster_Navigation.StartTurn's physics calls, as the oracle's facade makes them")
-def object_move(mover: PhysicsObj, move, turn: bool, mode) -> None:
+def object_move(mover: PhysicsObj, move, turn: bool, mode, others=None) -> None:
     """MoveToObject / TurnToObject(the target's PhysicsObj, mvp), then UpdateTime = CurrentTime
-    ("prevent initial snap"). The target is the static the run's ServerObjectManager filed under
-    its id (set_object_guid)."""
+    ("prevent initial snap"). The target is the object the run's ServerObjectManager filed under
+    its id (set_object_guid); a MoveToObject's target the server destroyed (feature objects.gone_targets:
+    out of ServerObjectManager) is its PhysicsObj still, as Monster_Navigation passes AttackTarget.PhysicsObj
+    after the target's Destroy (`others`: the other movers' PhysicsObjs by id). A TurnToObject at one gets
+    None, as the oracle's facade passes it."""
     target = mover.server_objects.get_object_a(move.object)
+    if target is None and not turn and others is not None:
+        target = others.get(move.object)
     mvp = movement_parameters(move.params, mode)
     if turn:
         mover.turn_to_object(target, mvp)
@@ -862,6 +871,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
     location_cell = mover.position.obj_cell_id  # where it entered: its WorldObject's Location (SyncLocation)
     motion = getattr(scene.mover, "motion_table", None) is not None
     by_id = {obj.id: obj for obj, _, _ in movers}
+    other_objs = dict(by_id)  # the other movers alone (a destroyed one stays here: objects.gone_targets)
     by_id[mover.id] = mover
     if statics:
         by_id.update((obj.id, obj) for obj in statics if obj is not None)
@@ -872,7 +882,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
         if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
             trace.recorder.at_tick(index)
         try:
-            apply_inputs(mover, step, mode, lscape)
+            apply_inputs(mover, step, mode, lscape, other_objs)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
                 parenting.apply_parenting_inputs(by_id[inputs.id], inputs, by_id, lscape)

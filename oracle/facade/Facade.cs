@@ -37,7 +37,7 @@ namespace Acconform.Oracle
 {
     public static class Facade
     {
-        public const int PackVersion = 17;
+        public const int PackVersion = 18;
 
         /// <summary>Reuse built landblocks across scenes (keyed by their DAT bytes and the height table).
         /// A landblock's cells get the scene's static objects, which leave them after each scene.</summary>
@@ -110,7 +110,7 @@ namespace Acconform.Oracle
         // whether it entered the world (AddPhysicsObj's success: only then does a tick step it)
         sealed class Other
         {
-            public uint Did, Id;
+            public uint Did, Id, MotionTableId;
             public byte Weenie;  // acconform.scene.WEENIE_CLASSES: 0 player, 1 creature, 2 monster, 3 object
             public PlayerKillerStatus Pks;
             public float Scale;
@@ -1253,6 +1253,10 @@ namespace Acconform.Oracle
         static void ObjectMove(PhysicsObj obj, uint targetId, MovementParameters mvp, bool turn)
         {
             var target = ServerObjectManager.GetObjectA(targetId);
+            // a MoveToObject at another mover the server destroyed (feature objects.gone_targets): its WorldObject keeps
+            // its PhysicsObj after Destroy, which Monster_Navigation.StartTurn still passes (AttackTarget.PhysicsObj)
+            if (target == null && !turn)
+                foreach (var o in sceneOthers) if (o.Id == targetId) target = o.Obj;
             if (turn) obj.TurnToObject(target, mvp);
             else obj.MoveToObject(target, mvp);
             obj.UpdateTime = PhysicsTimer.CurrentTime;
@@ -2294,6 +2298,7 @@ namespace Acconform.Oracle
                     o.SpellKind = r.ReadByte();  // what SpellProjectile.Setup reads of the spell: its name, weenie, SpellType
                 }
                 o.ReportCollisions = r.ReadByte();
+                o.MotionTableId = r.ReadUInt32();  // pack 18: its WorldObject's MotionTableId (others[].motion_table; 0: none)
                 sceneOthers.Add(o);
             }
         }
@@ -2301,7 +2306,7 @@ namespace Acconform.Oracle
         /// <summary>Each other mover, in scene order, made as WorldObject.InitPhysicsObj makes its WorldObject's
         /// PhysicsObj (a creature's by new PhysicsObj() and makeAnimObject(setup, true), a GenericObject's by
         /// makeObject(setup, id, true); set_object_guid, set_weenie_obj(new WeenieObject(the WorldObject)),
-        /// SetMotionTableID(0), SetScaleStatic, State), with the scene's TransientState and Velocity, then entered as
+        /// SetMotionTableID(its MotionTableId: the mover's table with others[].motion_table, else 0), SetScaleStatic, State), with the scene's TransientState and Velocity, then entered as
         /// WorldObject.AddPhysicsObj enters it: LScape.get_landcell of its begin cell, Position.ObjCellID = that cell's
         /// id, enter_world(Position(cell, frame)); it is in the world when that succeeded and left it in a cell. A child
         /// (scene/8 `parent`) is held by its parent instead (SetParent: the mover `mover`, or an earlier other): its
@@ -2328,7 +2333,7 @@ namespace Acconform.Oracle
                 if (o.ReportCollisions != 0)  // the weenie's PropertyBool (no PhysicsObj yet: the property alone; State is the scene's)
                     o.WorldObject.ReportCollisions = o.ReportCollisions == 2;
                 obj.set_weenie_obj(new WeenieObject(o.WorldObject));
-                obj.SetMotionTableID(0);
+                obj.SetMotionTableID(o.MotionTableId);
                 obj.SetScaleStatic(o.Scale);
                 obj.State = o.State;
                 obj.TransientState = o.Transient;
