@@ -97,6 +97,38 @@ def _no_cell(draw, clock) -> Scene | None:
     return None
 
 
+def _destroy_at(scene: Scene, oid: int, at: int) -> Scene:
+    """The scene with other `oid` destroyed at tick `at` (its inputs there replaced, none after)."""
+    from acconform.scene import OtherInputs
+
+    steps = []
+    for i, step in enumerate(scene.ticks.steps):
+        rows = tuple(o for o in step.others if o.id != oid)
+        if i == at:
+            rows += (OtherInputs(oid, destroy=True),)
+        steps.append(replace(step, others=rows) if rows != step.others else step)
+    return scene.replace(ticks=replace(scene.ticks, steps=tuple(steps)))
+
+
+JUMP_UPS = st.sampled_from((1.0, 2.5, 4.0, 0.5))
+
+
+def _jump_at(scene: Scene, oid: int, at: int, up: float) -> Scene:
+    """The scene with player other `oid` jumping straight up at tick `at` (its jump input, a local velocity)."""
+    steps = list(scene.ticks.steps)
+    rows = list(steps[at].others)
+    for k, o in enumerate(rows):
+        if o.id == oid:
+            rows[k] = replace(o, jump=(0.0, 0.0, up))
+            break
+    else:
+        from acconform.scene import OtherInputs
+
+        rows.append(OtherInputs(oid, jump=(0.0, 0.0, up)))
+    steps[at] = replace(steps[at], others=tuple(rows))
+    return scene.replace(ticks=replace(scene.ticks, steps=tuple(steps)))
+
+
 def _table_exit(draw, clock) -> Scene | None:
     from .motion import draw_managed_chase
 
@@ -107,6 +139,18 @@ def _table_exit(draw, clock) -> Scene | None:
             continue
         others = tuple(replace(o, motion_table=True) if o.id == gone[1] else o for o in scene.others)
         scene = scene.replace(others=others, name=f"world:table_exit:gone@{gone[0]}:{scene.name}")
+        target = next(o for o in scene.others if o.id == gone[1])
+        if target.weenie == "player" and gone[0] >= 2 and draw(st.booleans()):
+            # a jump first (Player.HandleActionJump: set_on_walkable(false) -> MotionInterp.LeaveGround), then the
+            # landing (HitGround) moves it back to its interpreted state before the Destroy
+            scene = _jump_at(scene, gone[1], draw(st.integers(0, gone[0] - 1)), draw(JUMP_UPS))
+            scene = scene.replace(name=scene.name + ":jump")
+        elif draw(st.booleans()):
+            # destroyed at once (tick 0 or 1: its EnterDefaultState's animations and motions still pending)
+            early = draw(st.integers(0, min(gone[0], 1)))
+            scene = _destroy_at(scene, gone[1], early)
+            gone = (early, gone[1])
+            scene = scene.replace(name=scene.name + f":early@{early}")
         if draw(st.booleans()):
             steps = list(scene.ticks.steps)
             free = [i for i in range(gone[0] + 1, len(steps)) if steps[i].move_to_object is None]
