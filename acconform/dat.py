@@ -843,6 +843,7 @@ class DatOther:
     parent: ChildOf | None = None  # a child: its parent's id, location and placement
     launch: object = None  # a projectile's acconform.scene.Launch (weenie ammunition or spell_projectile)
     report_collisions: bool | None = None  # the WorldObject's PropertyBool.ReportCollisions (None: unset)
+    motion_table_id: int = 0  # the WorldObject's MotionTableId (scene/8 others[].motion_table: the mover's; 0: none)
 
 
 @dataclass(frozen=True, slots=True)
@@ -876,7 +877,7 @@ def dat_world(scene: Scene) -> DatWorld:
         DatMover(MOVER_ID, written.mover.did, m.scale, m.state, m.transient_state, m.velocity, m.begin, m.end,
                  m.contact_plane, m.sliding_normal, m.placement, m.motion_table_id, m.player_killer_status, m.skills),
         tuple(DatOther(o.id, recs.did, o.weenie, o.scale, o.state, o.transient_state, o.velocity, o.begin,
-                       o.player_killer_status, o.parent, o.launch, o.report_collisions) for o, recs in zip(scene.others, written.others)))
+                       o.player_killer_status, o.parent, o.launch, o.report_collisions, o.motion_table_id) for o, recs in zip(scene.others, written.others)))
 
 
 __all__ = ["building_info", "cell_landblock", "cell_landblock_records", "DatMover", "DatOther", "DatStatic", "DatWorld",

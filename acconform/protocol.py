@@ -316,6 +316,8 @@ def _other_json(o: DatOther) -> dict:
         d["launch"] = o.launch.to_json(o.weenie == "spell_projectile")
     if o.report_collisions is not None:
         d["report_collisions"] = o.report_collisions
+    if o.motion_table_id:
+        d["motion_table_id"] = write_id(o.motion_table_id)
     return d
 
 
@@ -364,7 +366,7 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
     others = []
     for o in (r["others"].list() if r.given("others") else ()):
         o.obj({"id", "did", "weenie", "scale", "state", "transient_state", "velocity", "begin", "player_killer_status",
-               "parent", "launch", "report_collisions"})
+               "parent", "launch", "report_collisions", "motion_table_id"})
         weenie = o["weenie"].str_()
         if weenie not in WEENIE_CLASSES:
             o["weenie"].fail(f"unknown weenie {weenie!r} (known: {', '.join(WEENIE_CLASSES)})")
@@ -383,7 +385,8 @@ def dat_from_json(doc, path: str = "dat") -> DatWorld:
                                None if parent is not None else Position.from_json(o["begin"]),
                                o["player_killer_status"].enum_(PlayerKillerStatus) if o.given("player_killer_status")
                                else PLAYER_KILLER_STATUS_NPK, parent, launch,
-                               o["report_collisions"].bool_() if o.given("report_collisions") else None))
+                               o["report_collisions"].bool_() if o.given("report_collisions") else None,
+                               o["motion_table_id"].id_() if o.given("motion_table_id") else 0))
     return DatWorld(r["land_height_table"].f32s(256),
                     _records_from_json(r["cell"], "cell"), _records_from_json(r["portal"], "portal"),
                     tuple(statics), mover, tuple(others))

@@ -1533,6 +1533,13 @@ class OtherMover:
     # and its MovementManager (EnterDefaultState), which its Destroy's exit_world then leaves. False: none (0)
     motion_table: bool = False
 
+    @property
+    def motion_table_id(self) -> int:
+        """Its WorldObject's MotionTableId: the mover's table (MOTION_TABLE_ID) with motion_table, else 0."""
+        from .motion_scene import MOTION_TABLE_ID
+
+        return MOTION_TABLE_ID if self.motion_table else 0
+
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
              "scale": write_f32(self.scale), "step_up_height": write_f32(self.step_up_height),

@@ -225,7 +225,7 @@ def pack_scene(scene: Scene) -> bytes:
                                 1 if la.alt_solver else 0, la.rotation_speed,
                                 SPELL_KINDS.index(la.spell)))
         out.append(bytes((0 if o.report_collisions is None else 2 if o.report_collisions else 1,)))
-        out.append(struct.pack("<I", MOTION_TABLE_ID if getattr(o, "motion_table", False) else 0))
+        out.append(struct.pack("<I", o.motion_table_id))
     return b"".join(out)
 
 

@@ -33,7 +33,6 @@ from acconform.outcome import (AttackFrameState, CollisionState, CommandState, C
                                MotionTickState, NormalState, Outcome, PlacementState, PlaneState, TickState)
 from acconform import dat, deep
 from acconform.staging import MOVER_ID
-from acconform.motion_scene import MOTION_TABLE_ID
 from acconform.scene import ENV_CELL_FIRST, NO_TERRAIN, Landblock, OtherMover, Scene, StaticObject
 
 from .anchors import anchor, harness
@@ -123,7 +122,7 @@ def build_other(o: OtherMover, did: int, portal_dat: PortalDat, lscape: LScape, 
     wo = world_object_of(o)
     obj.set_weenie_obj(WeenieObject.of(wo))
     # its WorldObject's MotionTableId: the mover's table (others[].motion_table), else 0
-    obj.set_motion_table_id(MOTION_TABLE_ID if getattr(o, "motion_table", False) else 0)
+    obj.set_motion_table_id(o.motion_table_id)
     obj.set_scale_static(mode.scalar(o.scale))
     obj.state = o.state
     obj.transient_state = o.transient_state

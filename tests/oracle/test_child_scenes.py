@@ -126,7 +126,7 @@ def test_a_child_at_a_location_its_parents_setup_lacks_is_a_scene_ace_answers():
 
 
 def test_a_childs_parent_packs_at_the_end_of_its_record_and_the_holding_locations_in_the_setups():
-    assert PACK_VERSION == 17
+    assert PACK_VERSION == 18
     scene = SCENES["monster_walks_carrying_a_child"]
     data = pack_scene(scene)
     child_tail = struct.pack("<3f", 0.0, 0.0, 0.0) + struct.pack("<I3f4f", 0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0) \

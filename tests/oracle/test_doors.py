@@ -70,7 +70,7 @@ def test_a_tick_scene_without_a_door_input_keeps_its_older_format():
 
 def test_a_door_input_packs_its_bit_the_id_and_one_byte():
     bit = {name: 1 << i for i, name in enumerate(TICK_INPUTS)}
-    assert bit["door"] == 131072 and TICK_INPUTS[-2:] == ("door", "stick_to") and PACK_VERSION == 17
+    assert bit["door"] == 131072 and TICK_INPUTS[-2:] == ("door", "stick_to") and PACK_VERSION == 18
     scene = SCENES["closed_door_opens_before_a_player"]
     data = pack_scene(scene)
     at = data.index(struct.pack("<d", scene.ticks.times()[40]), 5 + 14)

@@ -130,7 +130,7 @@ def test_a_static_in_an_env_cell_is_no_target():
 
 
 def test_a_projectiles_launch_packs_after_its_record():
-    assert PACK_VERSION == 17
+    assert PACK_VERSION == 18
     scene = SCENES["arc_spell_at_a_monster"]
     la = scene.others[1].launch
     # ... lead_target, arc, tracking, alt_solver, rotation_speed (none), the spell's kind (plain), then the

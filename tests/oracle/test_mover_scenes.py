@@ -78,7 +78,7 @@ def test_other_movers_need_format_8():
 
 
 def test_an_other_movers_record_and_inputs_pack_after_the_movers():
-    assert PACK_VERSION == 17
+    assert PACK_VERSION == 18
     scene = SCENES[HEAD_ON]
     data = pack_scene(scene)
     o = scene.others[0]

@@ -148,7 +148,7 @@ def test_a_packed_scene_carries_its_indoor_records_after_its_landblocks():
         got.append((kind, ident, bytes(data[pos + 9:pos + 9 + length])))
         pos += 9 + length
     want = dat.environment_records(scene) + dat.cell_dat_records(scene)
-    assert version == PACK_VERSION == 17 and nlb == 1 and ticks == 0
+    assert version == PACK_VERSION == 18 and nlb == 1 and ticks == 0
     assert got == [({"Environment": 2, "EnvCell": 3, "LandblockInfo": 4}[r.kind], r.id, r.data) for r in want]
     assert struct.unpack_from("<i", data, pos) == (1,)  # then the statics, as before
     assert struct.unpack_from("<i", pack_scene(PROBE["flat 1-step walk"]), 6 + 1024 + 4 + 256) == (0,)
