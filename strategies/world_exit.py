@@ -18,6 +18,10 @@ ticks-0073), drawn over strategies/motion.py's draw_managed_chase:
   ground) and exit_world (PartArray.HandleExitWorld, MovementManager.HandleExitWorld, MotionInterp.HandleExitWorld)
   reach its managers; one scene in two moves the target at it after (a gone_chase).
 
+- ``unentered`` (drawn only with `only`: ARMS keeps seed 73's draws): beside a chase, a creature whose Setup has no
+  parts (setup.no_parts: makeObject gives it no PartArray, so its enter_world fails and it never enters the world)
+  that the server destroys at a tick: WorldObject.Destroy of an object on no landblock does nothing to its physics.
+
 A draw that finds no chase to change (no destroyed target; no request_pos driver) is named ``world:<arm>:none:``
 (tests/runner/world_exit_scenes.py leaves those out). No campaign kind draws these: a draw added to the targets
 kind would move every seeded sample the tests pin.
@@ -164,10 +168,33 @@ def _table_exit(draw, clock) -> Scene | None:
     return None
 
 
+def _unentered(draw, clock) -> Scene | None:
+    from acconform.flags import PLAYER_KILLER_STATUS_NPK
+    from acconform.scene import OtherInputs, SetupRec
+
+    from .motion import draw_managed_chase
+
+    scene = draw_managed_chase(draw, clock)
+    target = scene.others[0]
+    (bx, by, bz), (tx, ty, _) = scene.mover.begin.frame.origin, target.begin.frame.origin
+    ghost_id = max(o.id for o in scene.others if o.weenie != "player") + 1 if any(
+        o.weenie != "player" for o in scene.others) else 0x80000100
+    ghost = replace(target, id=ghost_id, weenie="creature", setup=SetupRec(()), motion_table=False,
+                    begin=Position(scene.mover.begin.cell, replace(target.begin.frame, origin=(2 * bx - tx, 2 * by - ty, bz))))
+    if target.weenie == "player":
+        ghost = replace(ghost, player_killer_status=PLAYER_KILLER_STATUS_NPK)  # an NPC's
+    n = len(scene.ticks.steps)
+    at = draw(st.integers(0, n - 1))
+    steps = list(scene.ticks.steps)
+    steps[at] = replace(steps[at], others=steps[at].others + (OtherInputs(ghost.id, destroy=True),))
+    return scene.replace(others=scene.others + (ghost,), ticks=replace(scene.ticks, steps=tuple(steps)),
+                         name=f"world:unentered:gone@{at}:{scene.name}")
+
+
 def draw_world_exit(draw, clock, only: str | None = None) -> Scene:
     """One scene of an arm (`only`, or drawn)."""
     arm = only or draw(st.sampled_from(ARMS))
-    scene = {"gone_chase": _gone_chase, "no_cell": _no_cell, "table_exit": _table_exit}[arm](draw, clock)
+    scene = {"gone_chase": _gone_chase, "no_cell": _no_cell, "table_exit": _table_exit, "unentered": _unentered}[arm](draw, clock)
     if scene is None:
         from .motion import draw_managed_chase
 

@@ -24,7 +24,7 @@ from acconform.protocol import dat_from_json, dat_json, scene_features
 from acconform.scene import Scene, validate_scene
 
 CORPUS = Path(__file__).resolve().parents[1] / "data" / "corpus"
-ARMS = ("gone_chase", "no_cell", "table_exit")
+ARMS = ("gone_chase", "no_cell", "table_exit", "unentered")
 
 
 def _records(runtime: str, per_arm: int = 2) -> dict[str, list[tuple[Scene, Outcome]]]:
