@@ -79,6 +79,24 @@ def _water(scene: Scene) -> bool:
 
 # Scene features an implementation may leave out (it lists the ones it supports in its
 # handshake); a scene needing one it did not list is skipped and counted, never run.
+def _gone_target(scene: Scene) -> bool:
+    """Whether a tick's move_to_object names another mover destroyed at an earlier tick."""
+    if scene.ticks is None:
+        return False
+    gone = set()
+    for step in scene.ticks.steps:
+        if step.move_to_object is not None and step.move_to_object.object in gone:
+            return True
+        gone |= {o.id for o in step.others if o.destroy}
+    return False
+
+
+def _no_cell(cell: int) -> bool:
+    """A cell id LScape.get_landcell answers null for in a loaded landblock (gid_to_lcoord's cell_in_range fails)."""
+    low = cell & 0xFFFF
+    return low == 0 or 0x41 <= low <= 0xFF
+
+
 FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
     "engine.client": (lambda s: s.engine_mode == "client", "the client engine mode (default: server)"),
     "mover.two_spheres": (lambda s: len(s.mover.spheres) == 2, "a mover with two Setup spheres"),
@@ -171,6 +189,23 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                         "(ServerObjectManager, set_object_guid): a MoveTo, a sticky follow or a turn at a moving target, "
                         "TargetManager's voyeur updates between the two PhysicsObjs; and another mover destroyed at a tick "
                         "(scene/8 ticks.steps[].others[].destroy: WorldObject.Destroy's PhysicsObj.DestroyObject)"),
+    "objects.motion_tables": (lambda s: any(o.motion_table for o in s.others),
+                              "another mover (a creature) whose MotionTableId is the mover's table (scene/8: "
+                              "others[].motion_table): InitPhysicsObj's SetMotionTableID makes its MotionTableManager "
+                              "and MovementManager (EnterDefaultState), update_object animates it, and a Destroy's "
+                              "exit_world and leave_world reach them (needs mover.motion and objects.moving)"),
+    "objects.gone_targets": (lambda s: _gone_target(s),
+                             "a move_to_object at another mover the server destroyed at an earlier tick (scene/8 "
+                             "ticks.steps[].move_to_object naming a destroyed other): its WorldObject keeps its "
+                             "PhysicsObj after Destroy, out of ServerObjectManager, and the server still passes it "
+                             "(Monster_Navigation.StartTurn's AttackTarget.PhysicsObj): TargetManager finds no target "
+                             "(needs objects.targets)"),
+    "ticks.no_cell_requests": (lambda s: s.ticks is not None and any(
+                                   step.request_pos is not None and _no_cell(step.request_pos.cell) for step in s.ticks.steps),
+                               "a RequestPos (driver request_pos) into no cell: its id's low word is 0x0000 or "
+                               "0x0041..0x00FF, which Player.ValidateMovement lets through in the mover's landblock and "
+                               "LScape.get_landcell answers null for, so UpdatePlayerPosition makes no update (scene/8 "
+                               "ticks.steps[].request_pos.cell)"),
     "missiles": (lambda s: any(o.launch is not None for o in s.others),
                  "projectiles (scene/8: others[] of weenie ammunition or spell_projectile with a launch): made at the "
                  "start, launched at their step by ACE's launch code (Creature.GetProjectileVelocity or "

@@ -2254,7 +2254,9 @@ def _check_launches(scene: Scene, path: str, by_id: dict) -> None:
 
 
 def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> None:
-    """Each RequestPos of a tick scene names a cell the scene defines."""
+    """Each RequestPos of a tick scene names a cell the scene defines, or no cell of a defined landblock (feature
+    ticks.no_cell_requests: a low word of 0x0000 or 0x0041..0x00FF, which Player.ValidateMovement lets through in the
+    player's landblock and LScape.get_landcell answers null for)."""
     if scene.mover.end is not None:
         raise InvalidScene(_p(path, "mover.end"), "a tick scene's mover has no end: its ticks move it (omit end)")
     for i, step in enumerate(scene.ticks.steps):
@@ -2262,6 +2264,9 @@ def _check_ticks(scene: Scene, path: str, check_landblock, env_cells: dict) -> N
             continue
         where = _p(path, f"ticks.steps[{i}].request_pos.cell")
         cell = step.request_pos.cell
+        if cell & 0xFFFF == 0 or 0x41 <= cell & 0xFFFF <= 0xFF:
+            check_landblock(where, cell)
+            continue  # a RequestPos into no cell (feature ticks.no_cell_requests): get_landcell answers null
         _check_cell_id(where, cell)
         check_landblock(where, cell)
         _check_defined(where, cell, env_cells, "set_current_pos moves the mover into it (LScape.get_landcell)")

@@ -350,8 +350,12 @@ def _motion_scene(scene, m):
                MotionQuery("GetAnimationLength", nc, walk, ready, 1.5), MotionQuery("GetRunSpeed"),
                MotionQuery("GetTurnSpeed"), MotionQuery("Dat.GetAnimationLength", 0, walk),
                MotionQuery("Dat.GetAnimationLength", nc, walk, ready))
+    # another mover with the mover's motion table (scene/8 others[].motion_table, objects.motion_tables)
+    from .scene import OtherMover
+
+    others = (OtherMover(0x80000005, "monster", (SphereRec((0.0, 0.0, 0.5), 0.5),), m.begin, 0.4, 0.4, motion_table=True),)
     return replace(scene, mover=replace(m, motion_table=table, skills=skills), name="motion", objects=objects,
-                   ticks=Ticks("update_object", 1000.0, steps), motion_queries=queries)
+                   ticks=Ticks("update_object", 1000.0, steps), motion_queries=queries, others=others)
 
 
 def _tick_outcomes() -> list:

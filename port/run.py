@@ -559,8 +559,9 @@ def handle_action_jump(mover: PhysicsObj, velocity) -> None:
 
 
 @harness("a tick step's inputs, in the scene's order, as the oracle's facade applies them")
-def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) -> None:
-    """The setters and the jump first (TICK_INPUTS begins with OTHER_INPUTS, in their order), then the rest."""
+def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None, others=None) -> None:
+    """The setters and the jump first (TICK_INPUTS begins with OTHER_INPUTS, in their order), then the rest.
+    `others`: the other movers' PhysicsObjs by id (a MoveToObject's target the server destroyed is found there)."""
     apply_other_inputs(mover, step, mode)
     if step.motion is not None:
         move_to_state(mover, step.motion, mode)
@@ -573,7 +574,7 @@ def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None) ->
     if step.move_to is not None:
         move_to_position(mover, step.move_to, mode)
     if step.move_to_object is not None:
-        object_move(mover, step.move_to_object, False, mode)
+        object_move(mover, step.move_to_object, False, mode, others)
     if step.turn_to_heading is not None:
         turn_to_heading(mover, step.turn_to_heading, mode)
     if step.turn_to_object is not None:
@@ -723,11 +724,16 @@ def turn_to_heading(mover: PhysicsObj, turn, mode) -> None:
 
 
 @harness("Monster_Navigation.StartTurn's physics calls, as the oracle's facade makes them")
-def object_move(mover: PhysicsObj, move, turn: bool, mode) -> None:
+def object_move(mover: PhysicsObj, move, turn: bool, mode, others=None) -> None:
     """MoveToObject / TurnToObject(the target's PhysicsObj, mvp), then UpdateTime = CurrentTime
-    ("prevent initial snap"). The target is the static the run's ServerObjectManager filed under
-    its id (set_object_guid)."""
+    ("prevent initial snap"). The target is the object the run's ServerObjectManager filed under
+    its id (set_object_guid); a MoveToObject's target the server destroyed (feature objects.gone_targets:
+    out of ServerObjectManager) is its PhysicsObj still, as Monster_Navigation passes AttackTarget.PhysicsObj
+    after the target's Destroy (`others`: the other movers' PhysicsObjs by id). A TurnToObject at one gets
+    None, as the oracle's facade passes it."""
     target = mover.server_objects.get_object_a(move.object)
+    if target is None and not turn and others is not None:
+        target = others.get(move.object)
     mvp = movement_parameters(move.params, mode)
     if turn:
         mover.turn_to_object(target, mvp)
@@ -885,6 +891,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
     location_cell = mover.position.obj_cell_id  # where it entered: its WorldObject's Location (SyncLocation)
     motion = getattr(scene.mover, "motion_table", None) is not None
     by_id = {obj.id: obj for obj, _, _ in movers}
+    other_objs = dict(by_id)  # the other movers alone (a destroyed one stays here: objects.gone_targets)
     by_id[mover.id] = mover
     if statics:
         by_id.update((obj.id, obj) for obj in statics if obj is not None)
@@ -895,7 +902,7 @@ def run_ticks(scene: Scene, mover: PhysicsObj, timer: PhysicsTimer, lscape: LSca
         if trace is not None and trace.recorder is not None:  # tracing (port/tracing.py): the tick it is in
             trace.recorder.at_tick(index)
         try:
-            apply_inputs(mover, step, mode, lscape)
+            apply_inputs(mover, step, mode, lscape, other_objs)
             for inputs in step.others:
                 apply_other_inputs(by_id[inputs.id], inputs, mode)
                 # EmoteManager's Motion emote: an object moving to something (IsMovingTo) is skipped, else ExecuteMotion

@@ -1268,6 +1268,10 @@ namespace Acconform.Oracle
         static void ObjectMove(PhysicsObj obj, uint targetId, MovementParameters mvp, bool turn)
         {
             var target = ServerObjectManager.GetObjectA(targetId);
+            // a MoveToObject at another mover the server destroyed (feature objects.gone_targets): its WorldObject keeps
+            // its PhysicsObj after Destroy, which Monster_Navigation.StartTurn still passes (AttackTarget.PhysicsObj)
+            if (target == null && !turn)
+                foreach (var o in sceneOthers) if (o.Id == targetId) target = o.Obj;
             if (turn) obj.TurnToObject(target, mvp);
             else obj.MoveToObject(target, mvp);
             obj.UpdateTime = PhysicsTimer.CurrentTime;
