@@ -26,7 +26,8 @@ monster, or the player, walking at 8-30 m/s toward, away from or across the line
 (lead_target, no alt_solver) launched at tick 1-5. The port runs it once to read what the launch reads at that
 tick (the aim point, the target's CachedVelocity): ACE's and the port's answers agree on them (0 differences), so
 the launch's origin and speed are then set to the arm's numbers, refined by float steps until the port's solver
-(both runtimes' arithmetic) takes the arm's branch.
+(both runtimes' arithmetic) takes the arm's branch. Every other arrow's Setup carries a MissileFlight placement
+(scene/8 `missile_flight`, feature missiles.missile_flight: SetupModel.Unpack's HasMissileFlightPlacement).
 
 Not drawn: v = 2z - p below -1e-9 (no float arithmetic within ACE's reach gives it: tests/data/unreachable-branches.json's
 `ace` entry for solve_quartic's `return 0` after v) and Trajectory2's CachedVelocity under EPSILON and not zero (a
@@ -282,6 +283,9 @@ def main(argv=None) -> int:
                 made = lead_scene(scene, arm, rng)
                 if made is None:
                     continue
+                if kept % 2:  # every other arrow's Setup carries a MissileFlight placement (scene/8 missile_flight)
+                    made = replace(made, others=tuple(replace(o, missile_flight=True) if o.launch is not None else o
+                                                      for o in made.others), name=made.name + ":missile-flight")
                 (a.out / f"s{a.seed}-{arm}-{kept:03d}.json").write_text(json.dumps(made.to_json()))
                 kept += 1
             print(f"{arm}: {kept} of {drawn} drawn kept")
