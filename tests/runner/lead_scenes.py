@@ -19,7 +19,9 @@ p = c2/c0, q = c3/c0, r = c4/c0 in Ferrari's normal form. The arms (ARMS), each 
   z = sqrt(r), so u = z^2 - r is zero;
 - ``v0``: D across v, p^2 > 4r (a target faster than the arrow): the largest root z = p/2, so v = 2z - p is zero;
 - ``num1``: D across v, p = -2 sqrt(r) (s^2 = v^2 - g k + g |D|: the arrow just reaches the target, a tangent):
-  the first quadric's discriminant is zero, one root, and the second quadric is solved twice.
+  the first quadric's discriminant is zero, one root, and the second quadric is solved twice;
+- ``far`` (no solver arm): a 2 cm arrow spawned 22-40 m along its launcher's heading, so IsProjectileVisible's
+  transition back to the launcher needs over FindTransitionalPosition's 1,000 steps and is invalid.
 
 Each scene is a drawn moving-target launch (strategies/missiles.py draw_missile_scene's ``fast_target`` arm: a
 monster, or the player, walking at 8-30 m/s toward, away from or across the line) made an arrow that leads
@@ -46,7 +48,7 @@ from pathlib import Path
 
 import numpy as np
 
-ARMS = ("r0", "triple", "double", "u0", "v0", "num1")
+ARMS = ("r0", "triple", "double", "u0", "v0", "num1", "far")
 WANTED = {"r0": {("trajectory.py", 199, 201)}, "triple": {("trajectory.py", 144, 145)},
           "double": {("trajectory.py", 144, 148)}, "u0": {("trajectory.py", 213, 214)},
           "v0": {("trajectory.py", 220, 221)},
@@ -155,6 +157,44 @@ def _solve(arm: str, dest, velocity, speed0, rng):
     return None
 
 
+def _far(scene, i, proj, rng):
+    """far: the arrow (a sphere of 2 cm) spawned 22-40 m along its launcher's heading, so IsProjectileVisible's
+    transition back to the launcher needs more than Transition.FindTransitionalPosition's 1,000 steps (distance over
+    the sphere's radius) and fails: the launch's OnCollideEnvironment and Destroy. Kept when the port's
+    is_projectile_visible answers false for that reason (its transition invalid)."""
+    import port.missile_launch as ml
+    from acconform.numerics import to_f32
+    from acconform.scene import SphereRec, validate_scene
+    from port.run import run_scene
+
+    launcher = scene.mover if proj.launch.launcher == 0x50000001 else next(o for o in scene.others if o.id == proj.launch.launcher)
+    lx, ly, _ = launcher.begin.frame.origin
+    ox, oy, oz = proj.launch.origin
+    dx, dy = ox - lx, oy - ly
+    norm = math.hypot(dx, dy)
+    if norm == 0.0:
+        return None
+    far = float(rng.uniform(22.0, 40.0))
+    x, y = lx + dx / norm * far, ly + dy / norm * far
+    if not (2.0 < x < 190.0 and 2.0 < y < 190.0):
+        return None
+    launch = replace(proj.launch, origin=(to_f32(x), to_f32(y), oz))
+    made = validate_scene(replace(scene, name=scene.name + ":lead-far", others=scene.others[:i] + (
+        replace(proj, launch=launch, spheres=(SphereRec((0.0, 0.0, 0.0), to_f32(0.02)),)),) + scene.others[i + 1:]))
+    answers, real_visible = [], ml.is_projectile_visible
+
+    def visible(*args, **kw):
+        answers.append(real_visible(*args, **kw))
+        return answers[-1]
+
+    ml.is_projectile_visible = visible
+    try:
+        run_scene(made, runtime="mono")
+    finally:
+        ml.is_projectile_visible = real_visible
+    return made if answers == [False] else None
+
+
 def _first_quadric_disc(origin, dest, speed, velocity) -> float | None:
     """The discriminant the leading solver's first quadric tests with IsZero (SolveQuadric's), or None when
     solve_quartic returns before it."""
@@ -231,6 +271,8 @@ def lead_scene(scene, arm: str, rng):
     i, proj = next((i, o) for i, o in enumerate(scene.others) if o.launch is not None)
     if proj.weenie != "ammunition":
         return None
+    if arm == "far":
+        return _far(scene, i, proj, rng)
     launch = replace(proj.launch, tick=max(proj.launch.tick, 1), alt_solver=False, lead_target=True)
     others = scene.others[:i] + (replace(proj, launch=launch),) + scene.others[i + 1:]
     base = replace(scene, others=others)
