@@ -119,7 +119,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .scene import (DEFAULT_SKILLS, MoverSkills, BSPLeaf, ChildOf, BSPShape, Building, CellBSPLeaf, CellStructRec, ContactPlane, CylSphereShape, EnvCell,
-                    Environment, Landblock, Mover, OtherMover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
+                    Environment, Frame, Landblock, Mover, OtherMover, Placement, PolygonRec, Position, Scene, SetupRec, SphereShape,
                     StaticObject,
                     ENV_CELL_FIRST, newell_normal)
 from .flags import CullMode
@@ -155,6 +155,7 @@ SETUP_HAS_DEFAULT_SCALE = 0x2
 SETUP_ALLOW_FREE_HEADING = 0x4
 DEFAULT_PLACEMENT = 0  # ACE.Entity.Enum.Placement.Default: the key PartArray.SetPlacementFrame falls back to
 RESTING_PLACEMENT = 0x65  # Placement.Resting: the key PartArray.CreateSetup's (and InitObjectEnd's) SetPlacementFrame(0x65) asks for first
+MISSILE_FLIGHT_PLACEMENT = 52  # Placement.MissileFlight: SetupModel.Unpack's HasMissileFlightPlacement (no physics reads it)
 STIPPLING_NO_POS = 0x4
 STIPPLING_NO_NEG = 0x8
 VERTEX_TYPE = 1  # CVertexArray.Unpack reads only type 1
@@ -469,10 +470,13 @@ def other_records(other: OtherMover, index: int) -> ObjectRecords:
         placement = [p.frame for p in rec.parts] if rec.parts and rec.placement else None
         scale = [p.scale for p in rec.parts] if rec.parts and rec.parts[0].scale is not None else None
         cylspheres = [(c.low_point, c.radius, c.height) for c in rec.cylspheres]
+    placement_key = 0
+    if other.missile_flight:  # scene/8: the one part's placement frame keyed MissileFlight (an arrow's Setup)
+        placement, placement_key = [Frame((0.0, 0.0, 0.0))], MISSILE_FLIGHT_PLACEMENT
     body = setup(did, [MOVER_GFX_OBJ_ID] if rec is None else [p.id for p in parts],
                  spheres=[(s.center, s.radius) for s in other.spheres], cylspheres=cylspheres,
                  step_up=other.step_up_height, step_down=other.step_down_height,
-                 placement=placement, default_scale=scale,
+                 placement=placement, placement_key=placement_key, default_scale=scale,
                  holding_locations=holding_location_triples(other.holding_locations),
                  sorting_sphere=((0.0, 0.0, 0.0), 0.0) if sorting is None else (sorting.center, sorting.radius))
     return ObjectRecords(did, parts + (DatRecord(did, "SetupModel", body),))

@@ -220,6 +220,10 @@ FEATURES: dict[str, tuple[Callable[[Scene], bool], str]] = {
                         "a thrown weapon (scene/8: others[] of weenie missile, ACE's Missile): launched as an arrow "
                         "(Creature.LaunchProjectile), it keeps WorldObject's OnCollideObject and OnCollideEnvironment, "
                         "ProjectileCollisionHelper's only with a ProjectileTarget (needs missiles)"),
+    "missiles.missile_flight": (lambda s: any(o.missile_flight for o in s.others),
+                                "an arrow's or thrown weapon's Setup with a placement frame keyed MissileFlight (scene/8: "
+                                "others[].missile_flight): SetupModel.Unpack's HasMissileFlightPlacement, "
+                                "SetProjectilePhysicsState's Placement MissileFlight (needs missiles)"),
     "missiles.untargeted": (lambda s: any(o.launch is not None and o.launch.target is None for o in s.others),
                             "a spell launched at no target (scene/8: a launch without target): "
                             "WorldObject.CalculateProjectileVelocity's forward vector, no ProjectileTarget (needs missiles)"),

@@ -1619,6 +1619,11 @@ class OtherMover:
         from .motion_scene import MOTION_TABLE_ID
 
         return MOTION_TABLE_ID if self.motion_table else 0
+    # scene/8 (feature missiles.missile_flight): an arrow's or a thrown weapon's Setup carries a placement frame keyed
+    # MissileFlight (52; the identity, for its one part), as the Setups of many of ACE's arrows and bolts do: the
+    # DatLoader's SetupModel.Unpack sets HasMissileFlightPlacement and SetProjectilePhysicsState gives the WorldObject
+    # Placement MissileFlight (no physics: the PartArray takes only Resting, 0x65, or Default)
+    missile_flight: bool = False
 
     def to_json(self):
         d = {"id": write_id(self.id), "weenie": self.weenie, "spheres": [s.to_json() for s in self.spheres],
@@ -1643,13 +1648,15 @@ class OtherMover:
             d["setup"] = self.setup.to_json()
         if self.motion_table:  # written only when set: a scene without it means what it meant
             d["motion_table"] = True
+        if self.missile_flight:
+            d["missile_flight"] = True
         return d
 
     @staticmethod
     def from_json(r: Reader) -> "OtherMover":
         r.obj({"id", "weenie", "spheres", "scale", "step_up_height", "step_down_height", "state", "transient_state",
                "velocity", "begin", "player_killer_status", "holding_locations", "sorting_sphere", "parent", "launch",
-               "report_collisions", "setup", "motion_table"})
+               "report_collisions", "setup", "motion_table", "missile_flight"})
         setup = None
         if r.given("setup"):
             setup = SetupRec.from_json(r["setup"], mover=True)
@@ -1697,6 +1704,10 @@ class OtherMover:
             if report != bool(state & PhysicsState.ReportCollisions):
                 r["report_collisions"].fail(f"InitPhysicsObj makes the PhysicsState bit ReportCollisions the property's: "
                                             f"state {'needs' if report else 'has'} ReportCollisions")
+        missile_flight = r["missile_flight"].bool_() if r.given("missile_flight") else False
+        if missile_flight and (weenie not in ("ammunition", "missile") or setup is not None):
+            r["missile_flight"].fail("a MissileFlight placement is an arrow's or a thrown weapon's (weenie ammunition or "
+                                     "missile) Setup of one part: no `setup`")
         return OtherMover(
             id=oid, weenie=weenie, spheres=spheres, begin=None if parent is not None else Position.from_json(r["begin"]),
             step_up_height=up, step_down_height=down, scale=scale,
@@ -1706,7 +1717,7 @@ class OtherMover:
             player_killer_status=pks,
             holding_locations=_read_holding_locations(r["holding_locations"]) if r.given("holding_locations") else (),
             sorting_sphere=SphereRec.from_json(r["sorting_sphere"], bounding=True) if r.given("sorting_sphere") else None,
-            parent=parent, launch=launch, report_collisions=report, setup=setup,
+            parent=parent, launch=launch, report_collisions=report, setup=setup, missile_flight=missile_flight,
             motion_table=_read_other_motion_table(r, weenie))
 
 

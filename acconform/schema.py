@@ -283,11 +283,11 @@ def _missiles_scene(scene, m):
                          launch=Launch(0, 0x80000001, 0x50000001, 20.0, (x, y, z + 1.2), (1.0, 0.0, 0.0, 0.0), False)),
               OtherMover(0x80000011, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), 0.15),), m.begin, 0.0, 0.0,
                          launch=Launch(0, 0x50000001, 0x80000001, 15.0, (x, y, z + 1.2), arc=True, tracking=True, alt_solver=True)),
-              # a thrown weapon that tumbles, a Ring spell 3818 cast at no one, a crate of BSP parts (no spheres) whose
-              # weenie carries ReportCollisions false
+              # a thrown weapon that tumbles (its Setup with a MissileFlight placement), a Ring spell 3818 cast at no
+              # one, a crate of BSP parts (no spheres) whose weenie carries ReportCollisions false
               OtherMover(0x80000012, "missile", (SphereRec((0.0, 0.0, 0.0), 0.1),), m.begin, 0.0, 0.0,
                          launch=Launch(0, 0x80000001, 0x50000001, 12.0, (x, y, z + 1.2), (1.0, 0.0, 0.0, 0.0),
-                                       rotation_speed=1.0)),
+                                       rotation_speed=1.0), missile_flight=True),
               OtherMover(0x80000013, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), 0.15),), m.begin, 0.0, 0.0,
                          launch=Launch(0, 0x50000001, None, 10.0, (x, y, z + 1.2), spell="ring_3818")),
               OtherMover(0x80000014, "object", (), m.begin, 0.0, 0.0, report_collisions=False))

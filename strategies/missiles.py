@@ -484,6 +484,36 @@ def _step_block(lb: int, ux: float, uy: float) -> int:
     return lb + (int(ux) << 8) + int(uy)
 
 
+def _spell_projectile(draw, launch_tick: int, launcher: int, target: int | None, origin, lb: int, x0: float, y0: float,
+                      ground: float) -> OtherMover:
+    """An edge scene's spell projectile (a SpellProjectile of 10-30 cm, made at its launcher's feet): its speed, an
+    arc one time in three when it has a target, tracking half the time, its radius, drawn in that order."""
+    launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, SPELL_SPEEDS)), origin,
+                    arc=target is not None and draw(st.sampled_from((False, False, True))),
+                    tracking=draw(dr.BOOLEANS))
+    return OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(dr.take(draw, SPELL_RADII))),),
+                      Position(_cell(lb, x0, y0), Frame((to_f32(x0), to_f32(y0), to_f32(ground)))), 0.0, 0.0,
+                      state=0, transient_state=0, launch=launch)
+
+
+def _edge_scene(land_ids, h: int, lb: int, mover_at, ux: float, uy: float, monsters: list, projectile: OtherMover,
+                dt: float, n: int, name: str) -> Scene:
+    """An edge scene from its parts (draw_border_scene's, draw_relocation_scene's; nothing drawn here): the player
+    (the mover) entering the world at `mover_at` on landblock `lb`'s flat land facing along (ux, uy), standing
+    for `n` plain ticks of `dt`; the monsters, then the projectile; flat landblocks of height index `h`."""
+    ground = 2.0 * h
+    others = tuple(monsters) + (projectile,)
+    mx, my = mover_at
+    cell = _cell(lb, mx, my)
+    mover = Mover(spheres=BODY, begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(ux, uy))),
+                  end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
+                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"))
+    steps = [TickStep(dt) for _ in range(n)]
+    land = tuple(Landblock(b << 16 | 0xFFFF, (h,) * 81, (0,) * 81) for b in land_ids)
+    return validate_scene(Scene(land, mover, (), engine_mode="server", name=name,
+                                ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))
+
+
 def draw_border_scene(draw, arm: str | None = None) -> Scene:
     """A launch whose spawn point lies across a line from its launcher (BORDER_ARMS, or `arm`), on flat land:
 
@@ -556,26 +586,12 @@ def draw_border_scene(draw, arm: str | None = None) -> Scene:
                                 Position(_cell(lb, x0, y0), Frame((to_f32(x0), to_f32(y0), to_f32(ground)))), 0.0, 0.0,
                                 state=int(PhysicsState.Gravity), transient_state=0, launch=launch)
     else:
-        launch = Launch(launch_tick, launcher, target, to_f32(dr.take(draw, SPELL_SPEEDS)), origin,
-                        arc=target is not None and draw(st.sampled_from((False, False, True))),
-                        tracking=draw(dr.BOOLEANS))
-        projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(dr.take(draw, SPELL_RADII))),),
-                                Position(_cell(lb, x0, y0), Frame((to_f32(x0), to_f32(y0), to_f32(ground)))), 0.0, 0.0,
-                                state=0, transient_state=0, launch=launch)
-    others = tuple(monsters) + (projectile,)
-    mx, my = mover_at
-    cell = _cell(lb, mx, my)
-    mover = Mover(spheres=BODY, begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(ux, uy))),
-                  end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
-                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"))
-    steps = [TickStep(dt) for _ in range(n)]
-    land = tuple(Landblock(b << 16 | 0xFFFF, (h,) * 81, (0,) * 81) for b in land_ids)
+        projectile = _spell_projectile(draw, launch_tick, launcher, target, origin, lb, x0, y0, ground)
     name = (f"missiles:{arm}:{'arrow' if arrow else 'spell'}:{'player' if launcher == PLAYER else 'monster'}"
             f":{'north' if uy > 0.5 else 'south' if uy < -0.5 else 'east' if ux > 0.5 else 'west' if ux < -0.5 else 'slant'}")
     if arm == "block_border" and len(land_ids) == 1:
         name += ":unloaded"
-    return validate_scene(Scene(land, mover, (), engine_mode="server", name=name,
-                                ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))
+    return _edge_scene(land_ids, h, lb, mover_at, ux, uy, monsters, projectile, dt, n, name)
 
 
 # ------------------------------------------------------------------ a projectile flying into the next landblock (issue 41)
@@ -621,21 +637,8 @@ def draw_relocation_scene(draw) -> Scene:
         bx, by = bx - 192.0 * ux if abs(ux) > 0.5 else bx, by - 192.0 * uy if abs(uy) > 0.5 else by
         monsters.append(_monster(MONSTER + 2, nb, bx, by, ground))
     origin = (to_f32(x0 + ux * 0.8), to_f32(y0 + uy * 0.8), to_f32(ground + eye))
-    launch = Launch(launch_tick, launcher, None, to_f32(dr.take(draw, SPELL_SPEEDS)), origin,
-                    tracking=draw(dr.BOOLEANS))
-    projectile = OtherMover(PROJECTILE, "spell_projectile", (SphereRec((0.0, 0.0, 0.0), to_f32(dr.take(draw, SPELL_RADII))),),
-                            Position(_cell(lb, x0, y0), Frame((to_f32(x0), to_f32(y0), to_f32(ground)))), 0.0, 0.0,
-                            state=0, transient_state=0, launch=launch)
-    others = tuple(monsters) + (projectile,)
-    mx, my = mover_at
-    cell = _cell(lb, mx, my)
-    mover = Mover(spheres=BODY, begin=Position(cell, Frame((to_f32(mx), to_f32(my), to_f32(ground)), _heading(ux, uy))),
-                  end=None, step_up_height=0.4, step_down_height=0.4, state=EDGE_SLIDE, transient_state=WALKING,
-                  contact_plane=ContactPlane(cell, PlaneRec((0.0, 0.0, 1.0), -ground)), placement=Placement(via="enter_world"))
-    steps = [TickStep(dt) for _ in range(n)]
-    land = tuple(Landblock(b << 16 | 0xFFFF, (h,) * 81, (0,) * 81) for b in (lb, nb))
+    projectile = _spell_projectile(draw, launch_tick, launcher, None, origin, lb, x0, y0, ground)
     name = (f"missiles:relocate:spell:{'player' if launcher == PLAYER else 'monster'}"
             f":{'north' if uy > 0.5 else 'south' if uy < -0.5 else 'east' if ux > 0.5 else 'west'}"
             + (":blocked" if blocked else ""))
-    return validate_scene(Scene(land, mover, (), engine_mode="server", name=name,
-                                ticks=Ticks("update_object", 1000.0, tuple(steps)), others=others))
+    return _edge_scene((lb, nb), h, lb, mover_at, ux, uy, monsters, projectile, dt, n, name)

@@ -279,3 +279,32 @@ def test_live_ace_answers_a_launch_under_trajectory_alt_solver_as_the_port(live,
 
     scene = _alt_solver(SCENES[name])
     assert compare(run_scene(scene, runtime=live.location.runtime), live.run(scene), "exact") == [], name
+
+
+def test_an_arrows_missile_flight_placement_reads_back_needs_its_feature_and_sets_its_setups_flag():
+    from acconform.dat import scene_records
+    from acconform.numerics import EXACT
+    from acconform.port.dat.binary_reader import BinaryReader
+    from acconform.port.dat.setup_model import SetupModel
+
+    doc = _doc()
+    doc["others"][0]["missile_flight"] = True
+    scene = Scene.from_json(doc)
+    assert scene.others[0].missile_flight and Scene.loads(scene.dumps()) == scene
+    assert "missiles.missile_flight" in scene_features(scene)
+    assert "missiles.missile_flight" not in scene_features(Scene.from_json(_doc()))
+
+    def setup_of(s):
+        rec = next(r for r in scene_records(s).others[0].records if r.kind == "SetupModel")
+        return SetupModel.unpack(BinaryReader(rec.data, EXACT))
+
+    flown, plain = setup_of(scene), setup_of(Scene.from_json(_doc()))
+    assert flown.has_missile_flight_placement and list(flown.placement_frames) == [52]
+    assert not plain.has_missile_flight_placement and not plain.placement_frames
+
+
+def test_a_missile_flight_placement_is_an_arrows_or_a_thrown_weapons():
+    doc = _doc("arc_spell_at_a_monster")
+    doc["others"][1]["missile_flight"] = True
+    with pytest.raises(InvalidScene, match=r"others\[1\]\.missile_flight.*arrow's or a thrown weapon's"):
+        Scene.from_json(doc)

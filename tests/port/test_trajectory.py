@@ -67,6 +67,31 @@ def test_quartic_with_no_real_root_leaves_the_resolvent_cubics_root_in_a_slot():
     assert not (math.isnan(s0) and math.isnan(s1) and math.isnan(s2)), "a slot past num holds a cubic root, as in ACE"
 
 
+@pytest.mark.anchor("Trajectory.cs:SolveCubic")
+def test_cubic_roots_of_a_triple_and_of_a_double_root_and_math_pows_nan_for_a_negative_base():
+    assert trajectory.solve_cubic(1, 0, 0, 0)[:2] == (1, 0.0)  # x^3: one triple root
+    n, s0, s1, _ = trajectory.solve_cubic(1, 0, -3, -2)  # (x + 1)^2 (x - 2): the single root first
+    assert (n, s0, s1) == (2, 2.0, -1.0)
+    n, s0, s1, _ = trajectory.solve_cubic(1, 0, -3, 2)  # (x - 1)^2 (x + 2): Math.Pow(-1, 1/3) is NaN
+    assert n == 2 and math.isnan(s0) and math.isnan(s1)
+
+
+@pytest.mark.anchor("Trajectory.cs:SolveQuartic")
+def test_quartic_of_two_double_roots_solves_its_second_quadric_twice():
+    # (t^2 - 1)^2: the resolvent's root sqrt(r) makes u zero; the first quadric's one root, then the second's
+    # twice (ACE's `if (num == 1)` and `if (num == 2)` both run it), so the root 1 comes back two times
+    assert trajectory.solve_quartic(1, 0, -2, 0, 1)[:4] == (3, -1.0, 1.0, 1.0)
+
+
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(target_velocity)")
+def test_an_arrow_spawned_at_its_moving_targets_aim_point_gets_a_nan_lead():
+    # no absolute term (r = 0): the cubic y (y^2 + p) with p < 0 (the arrow outruns the target) gives 0 and
+    # +-sqrt(-p); the sorted slots read NaN first, so the one "solution" is NaN and LaunchProjectile misfires
+    at = v(100, 100, 16)
+    n, s0, _, time = trajectory.solve_ballistic_arc_moving(at, F(10), at, v(3, 0, 0), F(9.8))
+    assert n == 1 and math.isnan(s0.x) and math.isnan(time)
+
+
 @pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc")
 def test_at_the_maximum_range_the_fixed_target_arc_has_one_solution_at_45_degrees():
     # v = 20, g = 10, x = v^2 / g = 40 at the same height: root = v^4 - g(g x^2) = 160000 - 160000 = 0,
