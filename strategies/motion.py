@@ -1111,10 +1111,10 @@ def draw_motion_objects(draw, clock) -> Scene:
 # stop 52 (shard ticks-0076): a style whose default substate is a command that is a modifier and no substate
 # (StopTurning, Jump: a table's StyleDefaults may name any command), with cycles and modifiers of it in NonCombat and
 # HandCombat. A MoveToState to HandCombat runs GetObjectSequence's style arm, which makes the old style's default
-# (that command) the Substate and re_modify's the modifiers -- among them that command, which the Ready substate
-# pushed there (add_modifier_no_check) -- so its modifier arm meets add_modifier refusing it (MotionState.add_modifier:
-# it is the Substate), StopSequenceMotion finding no modifier to stop and add_modifier refusing it again; a
-# MoveToState's forward key or a DoMotion asks it again
+# (that command) the Substate; that MoveToState's forward key or a DoMotion of the command then reaches the modifier
+# arm: add_modifier refuses it (MotionState.add_modifier: it is the Substate), StopSequenceMotion finds no modifier
+# to stop and add_modifier refuses it again (48 of the shard's 150 scenes: style_forward 29 of 37, style_do 18 of
+# 44, forward_do 1 of 33, style 0 of 36)
 MODIFIER_SUBSTATES = st.sampled_from((int(MC.StopTurning), int(MC.Jump)))
 MODIFIER_ASKS = st.sampled_from(("style", "style_forward", "style_do", "forward_do"))
 
