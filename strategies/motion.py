@@ -1106,3 +1106,44 @@ def draw_motion_objects(draw, clock) -> Scene:
         tags.append(tag)
     name = f"motion_objects:{'+'.join(tags)}:{tlabel}:{clabel}"
     return _finish(draw, start, dts, tl, world.landblocks, mover, tuple(others), (), name, ethereal=False)
+
+
+# stop 52 (shard ticks-0076): a style whose default substate is a command that is a modifier and no substate
+# (StopTurning, Jump: a table's StyleDefaults may name any command), with cycles and modifiers of it in NonCombat and
+# HandCombat. A MoveToState to HandCombat runs GetObjectSequence's style arm, which makes the old style's default
+# (that command) the Substate; that MoveToState's forward key or a DoMotion of the command then reaches the modifier
+# arm: add_modifier refuses it (MotionState.add_modifier: it is the Substate), StopSequenceMotion finds no modifier
+# to stop and add_modifier refuses it again (48 of the shard's 150 scenes: style_forward 29 of 37, style_do 18 of
+# 44, forward_do 1 of 33, style 0 of 36)
+MODIFIER_SUBSTATES = st.sampled_from((int(MC.StopTurning), int(MC.Jump)))
+MODIFIER_ASKS = st.sampled_from(("style", "style_forward", "style_do", "forward_do"))
+
+
+def draw_modifier_substate_ticks(draw, base: Scene, clock) -> Scene:
+    """A motion tick scene (draw_motion_ticks) whose table's NonCombat style defaults to a modifier-only command that
+    HandCombat has a cycle and both styles a modifier of, the first tick a MoveToState to HandCombat mostly."""
+    scene = draw_motion_ticks(draw, base, clock)
+    x = draw(MODIFIER_SUBSTATES)
+    table = scene.mover.motion_table
+    ready = next(c for c in table.cycles if c.style == NC and c.motion == READY).data
+    style_defaults = tuple((s, x if s == NC else m) for s, m in table.style_defaults)
+    if HC not in (s for s, _ in style_defaults):
+        style_defaults += ((HC, READY),)
+    keep = lambda es: tuple(e for e in es if e.motion != x and not (e.style == HC and e.motion == READY))  # noqa: E731
+    cycles = (*keep(table.cycles), MotionEntry(NC, x, ready), MotionEntry(HC, x, ready), MotionEntry(HC, READY, ready))
+    modifiers = (*keep(table.modifiers), MotionEntry(NC, x, ready), MotionEntry(HC, x, ready))
+    table = replace(table, style_defaults=style_defaults, cycles=cycles, modifiers=modifiers)
+    ask = draw(MODIFIER_ASKS)
+    steps = list(scene.ticks.steps)
+    kw = {"hold_key": int(HoldKey.None_)}
+    if ask != "forward_do":
+        kw["style"] = HC
+    if ask in ("style_forward", "forward_do"):
+        kw.update(forward=x, forward_hold_key=int(HoldKey.None_), forward_speed=1.0)
+    steps[0] = replace(steps[0], motion=MotionInput(**kw))
+    if ask in ("style_do", "forward_do"):
+        at = draw(st.integers(0, len(steps) - 1))
+        steps[at] = replace(steps[at], do_motion=CommandInput(x))
+    mover = replace(scene.mover, motion_table=table)
+    return scene.replace(mover=mover, ticks=replace(scene.ticks, steps=tuple(steps)),
+                         name=f"{scene.name}:modsub{x & 0xFF:x}:{ask}")

@@ -172,7 +172,7 @@ class MovementParameters:
             return s(180.0) if moving_away else s(0.0)
         elif motion == MotionCommand.WalkBackwards:
             return s(0.0) if moving_away else s(180.0)
-        return s(0.0)
+        return s(0.0)  # ACE's `default:` (MoveToManager's CurrentCommand is a walk there: unreachable-branches.json)
 
     @anchor("MovementParameters::towards_and_away", "MovementParameters.cs:towards_and_away")
     def towards_and_away(self, dist, heading, command: int, moving_away: bool) -> tuple[int, bool]:

@@ -194,3 +194,15 @@ def test_a_movement_struct_keeps_the_parameters_it_is_given():
     mvs = MovementStruct.create(MovementType.RawCommand, M.WalkForward, p)
     assert mvs.params is p and mvs.type == MovementType.RawCommand
     assert MovementStruct.create(MovementType.StopCompletely).params is None
+
+
+@pytest.mark.anchor("MotionState::add_modifier")
+def test_a_modifier_that_is_the_substate_is_refused_and_not_listed():
+    from acconform.port.animation.motion_state import MotionState
+
+    state = MotionState.create(EXACT)
+    state.substate = int(M.StopTurning)  # a style's default may be a modifier-only command (shard ticks-0076)
+    assert state.add_modifier(int(M.StopTurning), np.float32(1)) is False
+    assert state.modifiers.count == 0
+    assert state.add_modifier(int(M.Jump), np.float32(1)) is True
+    assert [m.id for m in state.modifiers] == [int(M.Jump)]
