@@ -408,10 +408,9 @@ class TracedAce:
     def trace_text(self, scene) -> tuple[Outcome, str]:
         """(ACE's outcome, the recorder's lines as it wrote them)."""
         doc = self._ask("trace", scene)
-        text = self._proc.stdout.read(doc["chars"])  # the lines follow the answer as they are (no JSON string)
+        text = Path(doc["file"]).read_bytes().decode("utf-8")  # the worker's trace file (no string through pythonnet)
         if len(text) != doc["chars"]:
-            self.close()
-            raise InstrumentationUnavailable("the instrumented ACE's worker ended in the middle of a trace")
+            raise InstrumentationUnavailable(f"the instrumented ACE's trace file {doc['file']} is not the trace it wrote")
         return Outcome.from_json(doc["outcome"], "outcome"), text
 
     def close(self) -> None:
@@ -440,7 +439,6 @@ def _serve(assembly: str, runtime: str) -> int:
         out.write(json.dumps(doc) + "\n")
         out.flush()
 
-    from ..scene import Scene
     from .live import LiveOracle
 
     try:
@@ -457,7 +455,27 @@ def _serve(assembly: str, runtime: str) -> int:
     except Exception as e:
         answer({"error": f"{type(e).__name__}: {e}"})
         return 1
+    # a trace goes to the parent through this file (written by .NET, read by the parent: no string of it through
+    # pythonnet and the pipe), removed when the worker ends
+    import tempfile
+
+    fd, trace_file = tempfile.mkstemp(prefix="acconform-trace-", suffix=".txt",
+                                      dir="/dev/shm" if os.path.isdir("/dev/shm") else None)
+    os.close(fd)
     answer({"ready": True})
+    try:
+        _requests(oracle, TraceRecorder, trace_file, answer)
+    finally:
+        try:
+            os.unlink(trace_file)
+        except OSError:
+            pass
+    return 0
+
+
+def _requests(oracle, TraceRecorder, trace_file: str, answer) -> None:
+    from ..scene import Scene
+
     for line in sys.stdin:
         try:
             req = json.loads(line)
@@ -467,10 +485,8 @@ def _serve(assembly: str, runtime: str) -> int:
                 try:
                     outcome = oracle.run(scene)
                 finally:
-                    text = str(TraceRecorder.Take())
-                answer({"outcome": outcome.to_json(), "chars": len(text)})  # then the lines, as they are
-                out.write(text)
-                out.flush()
+                    chars = int(TraceRecorder.TakeTo(trace_file))
+                answer({"outcome": outcome.to_json(), "file": trace_file, "chars": chars})
             elif req["op"] == "count":  # recorder on, the records counted and dropped (benchmarks/instrumented_corpus.py)
                 TraceRecorder.StartCounting()
                 try:
@@ -482,7 +498,6 @@ def _serve(assembly: str, runtime: str) -> int:
                 answer({"outcome": oracle.run(scene).to_json()})
         except Exception as e:
             answer({"error": f"{type(e).__name__}: {e}"})
-    return 0
 
 
 if __name__ == "__main__":
