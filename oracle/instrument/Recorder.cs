@@ -206,18 +206,25 @@ namespace Acconform.Oracle
             if (frame.Places) placing = frame.Outer;
         }
 
-        // the path and the mover are written straight into the record (no string of their own: they are most of
-        // a trace's text)
+        // The snapshots are taken first, into builders of their own: a getter they read may be an instrumented method,
+        // whose records go before this one (and must not land inside it).
         void Write(int id, string ev, string args, string result, Transition path, PhysicsObj mover)
         {
+            string pathText = null, moverText = null;
+            if (path != null)
+            {
+                var b = Borrow();
+                try { if (Path(b, path)) pathText = b.ToString(); } finally { depth--; }
+            }
+            if (mover != null)
+            {
+                var b = Borrow();
+                try { Mover(b, mover); moverText = b.ToString(); } finally { depth--; }
+            }
             var within = Top;
             sb.Append('[').Append(id).Append(",\"").Append(ev).Append("\",").Append(tick).Append(',').Append(step).Append(',')
               .Append(within != null ? within.Id : -1).Append(',').Append(args ?? "null").Append(',').Append(result ?? "null")
-              .Append(',');
-            if (!Path(sb, path)) sb.Append("null");
-            sb.Append(',');
-            if (mover != null) Mover(sb, mover); else sb.Append("null");
-            sb.Append(',').Append(placing).Append("]\n");
+              .Append(',').Append(pathText ?? "null").Append(',').Append(moverText ?? "null").Append(',').Append(placing).Append("]\n");
             Records++;
             if (!keep && sb.Length > Dropped) sb.Clear();
         }
@@ -275,13 +282,22 @@ namespace Acconform.Oracle
         }
 
         // ------------------------------------------------------------------ values, as port/tracing.plain writes them
-        readonly StringBuilder scratch = new StringBuilder(1024);  // Json's, reused (Plain never calls Json)
+        // builders reused, one per depth: writing a value may call an instrumented getter (an ID), which writes records
+        readonly List<StringBuilder> builders = new List<StringBuilder>();
+        int depth;
+
+        StringBuilder Borrow()
+        {
+            if (depth == builders.Count) builders.Add(new StringBuilder(1024));
+            var b = builders[depth++];
+            b.Clear();
+            return b;
+        }
 
         string Json(object v)
         {
-            scratch.Clear();
-            Plain(scratch, v, 0);
-            return scratch.ToString();
+            var b = Borrow();
+            try { Plain(b, v, 0); return b.ToString(); } finally { depth--; }
         }
 
         void Plain(StringBuilder s, object v, int depth)
