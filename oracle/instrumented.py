@@ -17,9 +17,11 @@ port's differ.
 
 from __future__ import annotations
 
+import gc
 import hashlib
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -266,24 +268,72 @@ def _mover(m) -> TickState:
                      jumped_this_frame=bool(m[15]), shadow_cells=tuple(int(x) for x in m[16]))
 
 
+# A record's path (the 8th field: followed by a null mover and the placing) and mover (the 9th: followed by the
+# placing) as Recorder.cs writes them: numbers, booleans and null (a NaN float as a "0x..." string) in a fixed nesting.
+# Most of a trace's text is these snapshots, a few hundred distinct ones written tens of thousands of times (at each
+# entry and exit): `records_from` reads each distinct one once.
+_N = r"[^\[\]]*"  # the scalars between two brackets
+_V = r"\[" + _N + r"\]"  # a vector, quaternion, id list
+_CONTACT = r"\[" + _N + _V + _N + r"\]"  # [valid, cell, water, [normal], d]
+_NORMAL = r"\[" + _N + _V + r"\]"  # [valid, [normal]]
+_PATH = re.compile(r"\[[^\[\],]+," + _V + r",[^\[\],]+," + _V + "," + _V + "," + _CONTACT + "," + _CONTACT + "," + _NORMAL + ","
+                   + _NORMAL + r",(?:null|\[" + _V + _N + r"\])" + _N + r"\](?=,null,-?\d+\]$)", re.M)
+_MOVER = re.compile(r"\[false," + _N + "(?:" + _V + _N + "){6}" + r"\[" + _V + _N + r"\]" + _N + "(?:" + _V + _N + "){2}"
+                    + r"\](?=,-?\d+\]$)", re.M)
+
+
+def _interned(pattern, text: str, build) -> tuple[str, list]:
+    """(text with each match of `pattern` replaced by its index among the distinct matches, the value `build`
+    makes of each distinct match, read once)."""
+    index: dict[str, int] = {}
+
+    def number(m):
+        k = m.group()
+        i = index.get(k)
+        if i is None:
+            i = index[k] = len(index)
+        return str(i)
+
+    text = pattern.sub(number, text)
+    return text, [build(v) for v in json.loads("[" + ",".join(index) + "]")] if index else []
+
+
 def records_from(text: str, ids: dict[int, str], outcome: Outcome | None = None) -> tuple[TraceRecord, ...]:
-    """The recorder's lines as acconform.trace records; a tick record's mover is the outcome's tick."""
+    """The recorder's lines as acconform.trace records; a tick record's mover is the outcome's tick.
+
+    Read at once: the distinct path and mover snapshots first (`_interned`: a record's then holds the index of its
+    snapshot), then every line as one JSON array -- one parse, not one a line. A snapshot the patterns do not
+    match stays in its line and is read there. The collector is off meanwhile: the millions of lists and floats read
+    would set it off again and again, for nothing to collect (it cost more than the reading)."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        return _records_from(text, ids, outcome)
+    finally:
+        if enabled:
+            gc.enable()
+
+
+def _records_from(text: str, ids: dict[int, str], outcome: Outcome | None) -> tuple[TraceRecord, ...]:
     out = []
     ticks = getattr(outcome, "ticks", None) or ()
-    for line in text.splitlines():
-        if not line:
-            continue
-        i, event, tick, step, within, args, result, path, mover, placing = json.loads(line)
+    text, paths = _interned(_PATH, text, _path)
+    text, movers = _interned(_MOVER, text, _mover)
+    body = text.strip("\n").replace("\n", ",")
+    get = ids.get
+    for i, event, tick, step, within, args, result, path, mover, placing in json.loads("[" + body + "]"):
         anchor = FTP if event == "step" else TI if event == "insert" else TICK if event == "tick" else ids[i]
         if event == "tick":
             mover = ticks[tick] if 0 <= tick < len(ticks) else None
             if mover is None or mover.error is not None:
                 continue  # the port writes no tick record after a tick that threw
-        else:
-            mover = _mover(mover) if mover is not None else None
+        elif mover is not None:
+            mover = movers[mover] if mover.__class__ is int else _mover(mover)
+        if path is not None:
+            path = paths[path] if path.__class__ is int else _path(path)
         out.append(TraceRecord(anchor, event, tick if tick >= 0 else None, step if step >= 0 else None,
-                               ids.get(within) if within >= 0 else None, args, result,
-                               _path(path) if path is not None else None, mover, placing if placing >= 0 else None))
+                               get(within) if within >= 0 else None, args, result, path, mover,
+                               placing if placing >= 0 else None))
     return tuple(out)
 
 
@@ -352,9 +402,16 @@ class TracedAce:
         return Outcome.from_json(doc["outcome"], "outcome"), doc["count"]
 
     def trace(self, scene) -> tuple[Outcome, tuple[TraceRecord, ...]]:
+        outcome, text = self.trace_text(scene)
+        return outcome, records_from(text, self.ids, outcome)
+
+    def trace_text(self, scene) -> tuple[Outcome, str]:
+        """(ACE's outcome, the recorder's lines as it wrote them)."""
         doc = self._ask("trace", scene)
-        outcome = Outcome.from_json(doc["outcome"], "outcome")
-        return outcome, records_from(doc["records"], self.ids, outcome)
+        text = Path(doc["file"]).read_bytes().decode("utf-8")  # the worker's trace file (no string through pythonnet)
+        if len(text) != doc["chars"]:
+            raise InstrumentationUnavailable(f"the instrumented ACE's trace file {doc['file']} is not the trace it wrote")
+        return Outcome.from_json(doc["outcome"], "outcome"), text
 
     def close(self) -> None:
         p, self._proc = self._proc, None
@@ -382,7 +439,6 @@ def _serve(assembly: str, runtime: str) -> int:
         out.write(json.dumps(doc) + "\n")
         out.flush()
 
-    from ..scene import Scene
     from .live import LiveOracle
 
     try:
@@ -399,7 +455,27 @@ def _serve(assembly: str, runtime: str) -> int:
     except Exception as e:
         answer({"error": f"{type(e).__name__}: {e}"})
         return 1
+    # a trace goes to the parent through this file (written by .NET, read by the parent: no string of it through
+    # pythonnet and the pipe), removed when the worker ends
+    import tempfile
+
+    fd, trace_file = tempfile.mkstemp(prefix="acconform-trace-", suffix=".txt",
+                                      dir="/dev/shm" if os.path.isdir("/dev/shm") else None)
+    os.close(fd)
     answer({"ready": True})
+    try:
+        _requests(oracle, TraceRecorder, trace_file, answer)
+    finally:
+        try:
+            os.unlink(trace_file)
+        except OSError:
+            pass
+    return 0
+
+
+def _requests(oracle, TraceRecorder, trace_file: str, answer) -> None:
+    from ..scene import Scene
+
     for line in sys.stdin:
         try:
             req = json.loads(line)
@@ -409,10 +485,10 @@ def _serve(assembly: str, runtime: str) -> int:
                 try:
                     outcome = oracle.run(scene)
                 finally:
-                    text = str(TraceRecorder.Take())
-                answer({"outcome": outcome.to_json(), "records": text})
+                    chars = int(TraceRecorder.TakeTo(trace_file))
+                answer({"outcome": outcome.to_json(), "file": trace_file, "chars": chars})
             elif req["op"] == "count":  # recorder on, the records counted and dropped (benchmarks/instrumented_corpus.py)
-                TraceRecorder.Start()
+                TraceRecorder.StartCounting()
                 try:
                     outcome = oracle.run(scene)
                 finally:
@@ -422,7 +498,6 @@ def _serve(assembly: str, runtime: str) -> int:
                 answer({"outcome": oracle.run(scene).to_json()})
         except Exception as e:
             answer({"error": f"{type(e).__name__}: {e}"})
-    return 0
 
 
 if __name__ == "__main__":

@@ -18,6 +18,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Numerics;
 using System.Reflection;
+using System.Runtime.InteropServices;
 using System.Text;
 using ACE.Server.Physics;
 using ACE.Server.Physics.Animation;
@@ -43,6 +44,8 @@ namespace Acconform.Oracle
         long placing = -1;  // the ID of the static object add_obj_to_cell is placing, -1 when none
         Transition transition;
         public int Records;
+        bool keep = true;  // false: the records are counted, their text dropped as it grows (StartCounting)
+        const int Dropped = 1 << 22;  // chars of text a counting run holds at most
 
         /// <summary>table: one line per anchor id, "kind role" (role "-" for none); ids are the instrumenter's.</summary>
         public static void Install(string table)
@@ -61,9 +64,16 @@ namespace Acconform.Oracle
         }
 
         /// <summary>Start recording a run (the records of the previous one are dropped).</summary>
-        public static void Start()
+        public static void Start() { Begin(true); }
+
+        /// <summary>Start a run whose records are written (their whole cost) and counted, their text not kept: a tick
+        /// scene's trace can outgrow what one string holds.</summary>
+        public static void StartCounting() { Begin(false); }
+
+        static void Begin(bool keep)
         {
             var r = instance;
+            r.keep = keep;
             r.sb.Clear();
             r.running.Clear();
             r.tick = r.step = -1;
@@ -78,14 +88,47 @@ namespace Acconform.Oracle
         /// <summary>How many records the last run wrote.</summary>
         public static int Count() => instance.Records;
 
+        /// <summary>Stop recording and write the records, one a line, into the file at `path` (UTF-8): the worker hands a
+        /// trace over that way, with no string made of it for Python. Returns how many characters it wrote.</summary>
+        public static int TakeTo(string path)
+        {
+            var r = Stop();
+            // in pieces through two reused buffers: a trace's text as one string (and its bytes as one array) is a
+            // large-object allocation that set off a full collection of ACE's heap, tens of ms a trace
+            var n = r.sb.Length;
+            var encoder = Utf8.GetEncoder();  // (keeps a surrogate pair cut by a piece's end whole)
+            using (var f = new System.IO.FileStream(path, System.IO.FileMode.Create, System.IO.FileAccess.Write, System.IO.FileShare.Read, 1 << 16))
+            {
+                for (var at = 0; at < n; at += Piece)
+                {
+                    var count = Math.Min(Piece, n - at);
+                    r.sb.CopyTo(at, r.chars, 0, count);
+                    var bytes = encoder.GetBytes(r.chars, 0, count, r.bytes, 0, at + count >= n);
+                    f.Write(r.bytes, 0, bytes);
+                }
+            }
+            return n;
+        }
+
+        const int Piece = 1 << 15;
+        static readonly Encoding Utf8 = new UTF8Encoding(false);
+        readonly char[] chars = new char[Piece];
+        readonly byte[] bytes = new byte[Piece * 3 + 4];  // a char is at most 3 bytes of UTF-8 (a pair 4)
+
         /// <summary>Stop recording and hand over the records, one a line.</summary>
         public static string Take()
+        {
+            var r = Stop();
+            return r.keep ? r.sb.ToString() : "";
+        }
+
+        static TraceRecorder Stop()
         {
             var r = instance;
             Current = null;
             Facade.TickStarted = null;
             if (r.ticksStarted > 0) r.TickDone();
-            return r.sb.ToString();
+            return r;
         }
 
         void OnTick(int index)
@@ -114,18 +157,18 @@ namespace Acconform.Oracle
                 if (kind[1] == 'a' && top != null && kinds[top.Id][1] == 'f')  // a pass of FindTransitionalPosition's loop
                 {
                     step = steps++;
-                    Write(ftpId, "step", null, null, Path(transition), null);
+                    Write(ftpId, "step", null, null, transition, null);
                 }
                 if (kind[1] == 'i' && top != null && kinds[top.Id][1] == 't')  // a TransitionalInsert attempt
-                    Write(tiId, "insert", null, null, Path(transition), null);
+                    Write(tiId, "insert", null, null, transition, null);
                 if (kind[1] == 'f') steps = 0;
-                Write(id, "enter", Json(args), null, Path(transition), null);
+                Write(id, "enter", Json(args), null, transition, null);
             }
             else if (kind[0] == 'm' && args.Length > 0 && args[0] is PhysicsObj && ((PhysicsObj)args[0]).ID == MoverId &&
                      ((PhysicsObj)args[0]).Position != null)
             {
                 frame.Mover = (PhysicsObj)args[0];
-                Write(id, "enter", Json(args), null, null, Mover(frame.Mover));
+                Write(id, "enter", Json(args), null, null, frame.Mover);
             }
             else
                 frame.Args = Json(args);
@@ -154,32 +197,46 @@ namespace Acconform.Oracle
             if (kind[0] == 'p')
             {
                 if (kind[1] == 'f') step = -1;
-                Write(id, "exit", null, answer, Path(transition), null);
+                Write(id, "exit", null, answer, transition, null);
             }
             else if (frame.Mover != null)
-                Write(id, "exit", null, answer, null, Mover(frame.Mover));
+                Write(id, "exit", null, answer, null, frame.Mover);
             else
                 Write(id, "call", frame.Args, answer, null, null);
             if (frame.Places) placing = frame.Outer;
         }
 
-        void Write(int id, string ev, string args, string result, string path, string mover)
+        // The snapshots are taken first, into builders of their own: a getter they read may be an instrumented method,
+        // whose records go before this one (and must not land inside it).
+        void Write(int id, string ev, string args, string result, Transition path, PhysicsObj mover)
         {
+            string pathText = null, moverText = null;
+            if (path != null)
+            {
+                var b = Borrow();
+                try { if (Path(b, path)) pathText = b.ToString(); } finally { depth--; }
+            }
+            if (mover != null)
+            {
+                var b = Borrow();
+                try { Mover(b, mover); moverText = b.ToString(); } finally { depth--; }
+            }
             var within = Top;
             sb.Append('[').Append(id).Append(",\"").Append(ev).Append("\",").Append(tick).Append(',').Append(step).Append(',')
               .Append(within != null ? within.Id : -1).Append(',').Append(args ?? "null").Append(',').Append(result ?? "null")
-              .Append(',').Append(path ?? "null").Append(',').Append(mover ?? "null").Append(',').Append(placing).Append("]\n");
+              .Append(',').Append(pathText ?? "null").Append(',').Append(moverText ?? "null").Append(',').Append(placing).Append("]\n");
             Records++;
+            if (!keep && sb.Length > Dropped) sb.Clear();
         }
 
         // ------------------------------------------------------------------ snapshots
-        /// <summary>acconform.trace.PathState's fields, in order (None when the transition has no path yet).</summary>
-        static string Path(Transition t)
+        /// <summary>acconform.trace.PathState's fields, in order, appended to s; false (nothing written) when the
+        /// transition has no path yet.</summary>
+        static bool Path(StringBuilder s, Transition t)
         {
-            if (t == null || t.SpherePath == null || t.CollisionInfo == null) return null;
+            if (t == null || t.SpherePath == null || t.CollisionInfo == null) return false;
             var sp = t.SpherePath;
             var ci = t.CollisionInfo;
-            var s = new StringBuilder(512);
             s.Append('[').Append(sp.CheckCell != null ? sp.CheckCell.ID : 0u).Append(',');
             V(s, sp.CheckPos != null ? sp.CheckPos.Frame.Origin : Vector3.Zero).Append(',');
             s.Append(sp.CurCell != null ? sp.CurCell.ID : 0u).Append(',');
@@ -195,7 +252,7 @@ namespace Acconform.Oracle
             s.Append(B(sp.StepUp)).Append(',').Append(B(sp.StepDown)).Append(',').Append(B(sp.Collide)).Append(',')
              .Append(B(sp.NegPolyHit)).Append(',').Append(ci.FramesStationaryFall).Append(',')
              .Append(t.ObjectInfo != null ? (uint)t.ObjectInfo.State : 0u).Append(']');
-            return s.ToString();
+            return true;
         }
 
         static StringBuilder Contact(StringBuilder s, bool valid, uint cell, bool water, Plane plane)
@@ -206,9 +263,8 @@ namespace Acconform.Oracle
         }
 
         /// <summary>acconform.outcome.TickState's fields, in order (`updated` false, as tracing.tick_state(obj, False)).</summary>
-        static string Mover(PhysicsObj obj)
+        static void Mover(StringBuilder s, PhysicsObj obj)
         {
-            var s = new StringBuilder(256);
             s.Append("[false,");
             D(s, obj.UpdateTime).Append(',').Append(obj.Position.ObjCellID).Append(',').Append(obj.CurCell != null ? obj.CurCell.ID : 0u).Append(',');
             V(s, obj.Position.Frame.Origin).Append(',');
@@ -222,15 +278,26 @@ namespace Acconform.Oracle
             var first = true;
             if (obj.ShadowObjects != null)
                 foreach (var id in obj.ShadowObjects.Keys) { if (!first) s.Append(','); s.Append(id); first = false; }
-            return s.Append("]]").ToString();
+            s.Append("]]");
         }
 
         // ------------------------------------------------------------------ values, as port/tracing.plain writes them
+        // builders reused, one per depth: writing a value may call an instrumented getter (an ID), which writes records
+        readonly List<StringBuilder> builders = new List<StringBuilder>();
+        int depth;
+
+        StringBuilder Borrow()
+        {
+            if (depth == builders.Count) builders.Add(new StringBuilder(1024));
+            var b = builders[depth++];
+            b.Clear();
+            return b;
+        }
+
         string Json(object v)
         {
-            var s = new StringBuilder(64);
-            Plain(s, v, 0);
-            return s.ToString();
+            var b = Borrow();
+            try { Plain(b, v, 0); return b.ToString(); } finally { depth--; }
         }
 
         void Plain(StringBuilder s, object v, int depth)
@@ -335,27 +402,50 @@ namespace Acconform.Oracle
 
         static string B(bool b) => b ? "true" : "false";
 
+        // A number's text, by its bits: formatting ("G17") is most of the recorder's cost, and a trace writes the same few
+        // values over and over (a path's snapshot at every entry and exit). Bounded: emptied when full.
+        [StructLayout(LayoutKind.Explicit)]
+        struct Bits { [FieldOffset(0)] public float F; [FieldOffset(0)] public int I; [FieldOffset(0)] public double D; [FieldOffset(0)] public long L; }
+
+        const int Remembered = 1 << 18;
+        static readonly Dictionary<int, string> floatText = new Dictionary<int, string>();
+        static readonly Dictionary<long, string> doubleText = new Dictionary<long, string>();
+
         static StringBuilder F(StringBuilder s, float f)
         {
-            if (float.IsNaN(f) || float.IsInfinity(f))
-                return s.Append("\"0x").Append(BitConverter.ToInt32(BitConverter.GetBytes(f), 0).ToString("x8")).Append('"');
-            if (f == 0) return s.Append(BitConverter.ToInt32(BitConverter.GetBytes(f), 0) < 0 ? "-0.0" : "0.0");  // mono prints -0 as "0"
-            return Number(s, ((double)f).ToString("G17", CultureInfo.InvariantCulture));
+            var bits = new Bits { F = f }.I;
+            string text;
+            if (!floatText.TryGetValue(bits, out text))
+            {
+                if (float.IsNaN(f) || float.IsInfinity(f)) text = "\"0x" + bits.ToString("x8") + "\"";
+                else if (f == 0) text = bits < 0 ? "-0.0" : "0.0";  // mono prints -0 as "0"
+                else text = Number(((double)f).ToString("G17", CultureInfo.InvariantCulture));
+                if (floatText.Count >= Remembered) floatText.Clear();
+                floatText[bits] = text;
+            }
+            return s.Append(text);
         }
 
         /// <summary>A float as JSON that reads back as a float: "-0" would read as the integer 0 and lose its sign.</summary>
-        static StringBuilder Number(StringBuilder s, string text)
+        static string Number(string text)
         {
-            s.Append(text);
-            if (text.IndexOf('.') < 0 && text.IndexOf('E') < 0 && text.IndexOf('e') < 0) s.Append(".0");
-            return s;
+            if (text.IndexOf('.') < 0 && text.IndexOf('E') < 0 && text.IndexOf('e') < 0) return text + ".0";
+            return text;
         }
 
         static StringBuilder D(StringBuilder s, double d)
         {
-            if (double.IsNaN(d) || double.IsInfinity(d)) return s.Append("null");
-            if (d == 0) return s.Append(BitConverter.DoubleToInt64Bits(d) < 0 ? "-0.0" : "0.0");
-            return Number(s, d.ToString("G17", CultureInfo.InvariantCulture));
+            var bits = new Bits { D = d }.L;
+            string text;
+            if (!doubleText.TryGetValue(bits, out text))
+            {
+                if (double.IsNaN(d) || double.IsInfinity(d)) text = "null";
+                else if (d == 0) text = bits < 0 ? "-0.0" : "0.0";
+                else text = Number(d.ToString("G17", CultureInfo.InvariantCulture));
+                if (doubleText.Count >= Remembered) doubleText.Clear();
+                doubleText[bits] = text;
+            }
+            return s.Append(text);
         }
 
         static StringBuilder V(StringBuilder s, Vector3 v)
