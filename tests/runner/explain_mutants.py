@@ -1,6 +1,6 @@
 """Print issue 21's figure: for how many planted bugs `explain` names the mutated routine.
 
-    python tests/runner/explain_mutants.py [--runtime coreclr] [--only NAME,...] [--json FILE]
+    python tests/runner/explain_mutants.py [--runtime coreclr] [--only NAME,...] [--json FILE] [--reuse FILE]
 
 Per planted bug (tests/runner/mutants.py): the first record of the fast lane's corpus sample
 (tests/data/corpus/<runtime>/fast-sample.json, in a seeded shuffle, single transitions before tick
@@ -13,6 +13,9 @@ acconform.explain names the first divergence from the port's trace. A hit: the r
 the ACE method of the port function holding the mutated text (a mutant in a constant has none).
 Each case is also triaged as `check` does (the same implementation, after it ran earlier cases'
 scenes and this one untraced): the last line counts the cases where check's group is explain's.
+`--reuse FILE` takes each planted bug's killing record (or that none was found) from an earlier run's `--json`
+instead of searching again: a record that no longer kills it (the port or the corpus changed) is searched
+for anew, as is a planted bug the earlier run did not have.
 """
 
 from __future__ import annotations
@@ -62,12 +65,20 @@ def mutated_routine(m) -> str | None:
     return a.ace if a else None
 
 
+def shard_line(where: str) -> str:
+    """A corpus entry's `where` ("<shard path> line N") without the shard's folder: a run's --json names a
+    record so in any checkout."""
+    return Path(where).name
+
+
 def main() -> int:
     p = argparse.ArgumentParser()
     p.add_argument("--runtime", default="coreclr")
     p.add_argument("--only", default=None)
     p.add_argument("--json", default=None)
     p.add_argument("--sample-only", action="store_true", help="look for a killing record in the fast sample only")
+    p.add_argument("--reuse", default=None, metavar="FILE",
+                   help="an earlier run's --json: its killing records, instead of searching again")
     args = p.parse_args()
     warnings.simplefilter("ignore")
 
@@ -89,6 +100,14 @@ def main() -> int:
     in_sample = {id(e) for e in everything if e.key in keys}  # (an entry's key parses its record: once, not per mutant)
     entries = [e for e in everything if id(e) in in_sample]
     only = set(args.only.split(",")) if args.only else None
+    earlier = {}
+    if args.reuse:
+        try:
+            earlier = {r["name"]: r for r in json.loads(Path(args.reuse).read_text())}
+        except (OSError, ValueError, TypeError, KeyError) as e:
+            print(f"explain_mutants: error: --reuse {args.reuse}: not an earlier run's --json ({e})", file=sys.stderr)
+            return 2
+    by_where = {shard_line(e.where): e for e in everything}
     rows = []
     previous = []  # the killing records so far: the scenes check's implementation would have run before
     for i, m in enumerate(MUTATIONS):
@@ -98,17 +117,28 @@ def main() -> int:
         mutant = load_mutant(i)
         rest = [] if args.sample_only else [e for e in everything if id(e) not in in_sample and e.kind in m.kinds]
         rec, where, rec_where = None, None, None
-        for source, candidates in (("fast sample", entries), ("corpus", rest)):
+
+        def kills(e):
+            r = oracle._record(e)
+            return r if compare(guarded(lambda s: mutant(s, runtime=args.runtime), r.scene), r.outcome, "exact") and \
+                not compare(run_scene(r.scene, runtime=args.runtime), r.outcome, "exact") else None
+
+        before = earlier.get(m.name)
+        reused = before is not None and (not before["killed"] or (
+            shard_line(before["record"] or "") in by_where and kills(by_where[shard_line(before["record"])])))
+        if reused and before["killed"]:
+            e = by_where[shard_line(before["record"])]
+            rec, where, rec_where = oracle._record(e), before["killed_in"], e.where
+        for source, candidates in () if reused else (("fast sample", entries), ("corpus", rest)):
             for e in candidates:
-                r = oracle._record(e)
-                if compare(guarded(lambda s: mutant(s, runtime=args.runtime), r.scene), r.outcome, "exact") and \
-                        not compare(run_scene(r.scene, runtime=args.runtime), r.outcome, "exact"):
+                r = kills(e)
+                if r is not None:
                     rec, where, rec_where = r, source, e.where
                     break
             if rec is not None:
                 break
         row = {"name": m.name, "expected": mutated_routine(m), "killed": rec is not None, "killed_in": where,
-               "record": rec_where}
+               "record": rec_where, **({"reused": True} if reused else {})}
         if rec is not None:
             impl = Implementation(f"{sys.executable} {HERE.parent / 'impl' / 'planted_impl.py'} {m.name} "
                                   f"--kinds {','.join(KINDS)}", timeout=600)
@@ -130,6 +160,8 @@ def main() -> int:
         row["seconds"] = round(time.monotonic() - t0, 1)
         rows.append(row)
         print(json.dumps(row), flush=True)
+        if args.json:  # after each row: a run stopped early leaves what it found, for --reuse
+            Path(args.json).write_text(json.dumps(rows, indent=1))
     named = [r for r in rows if r["killed"] and r["expected"]]
     print(f"explain names the mutated routine for {sum(r['hit'] for r in named)} of {len(named)} planted bugs "
           f"killed by the {args.runtime} corpus whose text lies in an anchored routine "
@@ -138,8 +170,6 @@ def main() -> int:
     traced = [r for r in rows if r["killed"]]
     print(f"check's triage and explain name the same first divergence for {sum(r['check_agrees'] for r in traced)} "
           f"of {len(traced)} cases")
-    if args.json:
-        Path(args.json).write_text(json.dumps(rows, indent=1))
     return 0
 
 

@@ -15,22 +15,13 @@ them alone, or one arm alone.
 
 from __future__ import annotations
 
-import argparse
-import json
-from pathlib import Path
+from scene_writer import scene_arguments, write_scenes
 
 
 def main(argv=None) -> int:
-    from hypothesis import strategies as st
-
-    from acconform.strategies.determinism import pinned_constants
-    from acconform.strategies.fast_draw import FastDrawer
     from acconform.strategies.missiles import draw_border_scene, draw_launch_scene, draw_missile_scene, draw_relocation_scene
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=600)
-    ap.add_argument("--seed", type=int, default=51)
+    ap = scene_arguments(__doc__, n=600, seed=51)
     ap.add_argument("--arms", default=None, help="comma-separated arms to keep (default: every arm)")
     ap.add_argument("--timeouts", type=int, default=None, help="keep at most this many timeout scenes")
     ap.add_argument("--only", default=None, help="draw this arm alone (draw_missile_scene(draw, ARM))")
@@ -38,28 +29,25 @@ def main(argv=None) -> int:
     ap.add_argument("--relocate", action="store_true", help="draw draw_relocation_scene's spells flying into the next landblock")
     a = ap.parse_args(argv)
     arms = None if a.arms is None else set(a.arms.split(","))
-    a.out.mkdir(parents=True, exist_ok=True)
     draw = draw_launch_scene if a.only is None else (lambda d: draw_missile_scene(d, a.only))
     if a.border:
         draw = lambda d: draw_border_scene(d, a.only)  # noqa: E731
     if a.relocate:
         draw = draw_relocation_scene
-    drawer = FastDrawer(st.composite(draw)(), a.seed * 1000003)
-    kept = timeouts = 0
-    with pinned_constants():
-        for i in range(a.n):
-            scene = drawer.draw()[0]
-            arm = scene.name.split(":")[1]
-            if arms is not None and arm not in arms:
-                continue
-            if arm == "timeout":
-                if a.timeouts is not None and timeouts >= a.timeouts:
-                    continue
-                timeouts += 1
-            (a.out / f"s{a.seed}-{i:04d}.json").write_text(json.dumps(scene.to_json()))
-            kept += 1
-    print(f"{kept} of {a.n} scenes in {a.out}")
-    return 0
+    timeouts = 0
+
+    def keep(scene) -> bool:
+        nonlocal timeouts
+        arm = scene.name.split(":")[1]
+        if arms is not None and arm not in arms:
+            return False
+        if arm == "timeout":
+            if a.timeouts is not None and timeouts >= a.timeouts:
+                return False
+            timeouts += 1
+        return True
+
+    return write_scenes(a.out, a.n, a.seed, draw, keep)
 
 
 if __name__ == "__main__":

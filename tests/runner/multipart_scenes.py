@@ -13,38 +13,19 @@ would move every seeded sample the tests pin.
 
 from __future__ import annotations
 
-import argparse
-import json
-from pathlib import Path
+from scene_writer import scene_arguments, write_scenes
 
 
 def main(argv=None) -> int:
-    from hypothesis import strategies as st
-
-    from acconform.strategies.determinism import pinned_constants
-    from acconform.strategies.fast_draw import FastDrawer
     from acconform.strategies.movers import draw_multipart_movers, draw_no_part_child
     from acconform.strategies.ticks import _clock
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=400)
-    ap.add_argument("--seed", type=int, default=70)
+    ap = scene_arguments(__doc__, n=400, seed=70)
     ap.add_argument("--children", action="store_true", help="a carry whose first child has a Setup of no parts")
     a = ap.parse_args(argv)
     draw_scene = draw_no_part_child if a.children else draw_multipart_movers
-    a.out.mkdir(parents=True, exist_ok=True)
-    drawer = FastDrawer(st.composite(lambda d: draw_scene(d, _clock))(), a.seed * 1000003)
-    kept = 0
-    with pinned_constants():
-        for i in range(a.n):
-            scene = drawer.draw()[0]
-            if scene.name.split(":")[1] == "none":
-                continue
-            (a.out / f"{'c' if a.children else 's'}{a.seed}-{i:04d}.json").write_text(json.dumps(scene.to_json()))
-            kept += 1
-    print(f"{kept} of {a.n} scenes in {a.out}")
-    return 0
+    return write_scenes(a.out, a.n, a.seed, lambda d: draw_scene(d, _clock),
+                        keep=lambda scene: scene.name.split(":")[1] != "none", prefix="c" if a.children else "s")
 
 
 if __name__ == "__main__":

@@ -11,7 +11,10 @@ sealed class SamplePort : IPhysicsPort
     public Handshake Hello { get; } = new(
         Name: "sample-port",
         Version: "0.1.0",
-        // every kind and feature: take out what your port does not run yet (those scenes are skipped and counted)
+        // every kind, and the features of a port of the transition, the mover's placement and its plain ticks, with
+        // the DAT records and traces. acconform knows more (docs/protocol.md, "The exchange", lists them all: the
+        // motion layer, doors, other movers, children, targets, missiles, motion queries, ...): add each one your
+        // port runs, take out what it does not run yet. A scene needing a feature not listed is skipped and counted.
         Kinds: ["terrain", "bsp", "obstacles", "indoor", "buildings"],
         Features: ["engine.client", "mover.two_spheres", "mover.scaled", "object.scaled", "water", "indoor.statics",
                    "mover.placement", "mover.enter_world", "ticks", "buildings", "setup.multipart", "dat", "trace"],
