@@ -739,12 +739,18 @@ def main(argv=None) -> int:
         _, w_taken, w_untaken = scope_share(cov, unexplained, world_lines())
         rest_taken = t - m_taken - w_taken
         rest_not_listed = (b - listed) - (m_taken + m_untaken) - (w_taken + w_untaken)
-        print(f"the motion layer (issue 40, being brought into scenes; not yet under the {REACHABLE_GOAL:.0f} % rule): "
-              f"the corpus takes {m_taken} of its {m_taken + m_untaken} branches not listed: "
-              f"{pct(m_taken, m_taken + m_untaken):.1f} %")
-        print(f"the world that moves (issue 41: projectiles, the server's WorldObjects, children; not yet under the "
-              f"{REACHABLE_GOAL:.0f} % rule): the corpus takes {w_taken} of its {w_taken + w_untaken} branches not "
-              f"listed: {pct(w_taken, w_taken + w_untaken):.1f} %")
+        print(f"the motion layer (issue 40): the corpus takes {m_taken} of its {m_taken + m_untaken} branches not "
+              f"listed: {pct(m_taken, m_taken + m_untaken):.1f} %")
+        print(f"the world that moves (issue 41: projectiles, the server's WorldObjects, children): the corpus takes "
+              f"{w_taken} of its {w_taken + w_untaken} branches not listed: {pct(w_taken, w_taken + w_untaken):.1f} %")
+        # issue 40's count: a `scene` entry is a miss (a scene could make ACE take it), only `ace` and `harness` are out
+        counted = b - counts.get("ace", 0) - counts.get("harness", 0)
+        print(f"of the {counted} branches that are no `ace` or `harness` entry (a `scene` entry counts as a miss) the "
+              f"corpus takes {t}: {pct(t, counted):.1f} %")
+        if pct(t, counted) < REACHABLE_GOAL:
+            print(f"FAIL: the corpus takes {pct(t, counted):.1f} % of the branches that are no `ace` or `harness` entry, "
+                  f"below {REACHABLE_GOAL:.0f} % (issue 40); reach them, or list those ACE cannot take with the reason")
+            failed = True
         print(f"the rest of port/: the corpus takes {rest_taken} of {rest_not_listed} branches not listed: "
               f"{pct(rest_taken, rest_not_listed):.1f} %")
         if pct(rest_taken, rest_not_listed) < REACHABLE_GOAL:

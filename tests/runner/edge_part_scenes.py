@@ -1,5 +1,5 @@
 """Scenes of a multi-part static standing at the world's west edge with a part past it (issue 41), for
-`acconform record` (shard ticks-0077).
+`acconform record` (shard bsp-0018).
 
     python tests/runner/edge_part_scenes.py OUT_DIR [-n 120] [--seed 77]
 

@@ -1,5 +1,5 @@
 """tests/runner/edge_part_scenes.py: a multi-part static at the world's west edge with a part past it (shard
-ticks-0077, LandCell.add_all_outside_cells' parts overload refusing a part AdjustToOutside cannot place)."""
+bsp-0018, LandCell.add_all_outside_cells' parts overload refusing a part AdjustToOutside cannot place)."""
 
 import gzip
 import json
