@@ -133,11 +133,11 @@ def _facade_records(scene) -> tuple[bytes, list[tuple[str, int, bytes]]]:
     at += _MOVER.size
     (n,) = struct.unpack_from("<i", packed, at)
     at += 4
-    for _ in range(n):  # the other movers' (scene/8): each one's Setup, then its fixed record, child, launch and
-        record_list()     # ReportCollisions property byte
+    for _ in range(n):  # the other movers' (scene/8): each one's Setup, then its fixed record, child, launch,
+        record_list()     # ReportCollisions property byte and (pack 18) MotionTableId
         at += _OTHER.size + _CHILD.size
         at += _LAUNCH.size if packed[at] else 1
-        at += 1
+        at += 1 + 4
     return table, out
 
 
