@@ -18,7 +18,7 @@ are written (untimed), as a campaign's port run leaves them for both sides. Medi
   ratio     ACE / in-rt, per run, then the median (issue 41 asks at most 2x)
   port      the built-in port's run_scene, exact mode (--port), and port/ACE
 
-Measured side by side (2-core machine shared with other jobs, load average 9; stop 52): main 7e03fac ("before")
+Measured side by side (2-core machine shared with other jobs, load average 9; stop 51): main 7e03fac ("before")
 and pack 18 alternately, 3 runs each per runtime of --rounds 60 --warmup 20, medians of the runs (ratio: median, and
 the runs' range):
 

@@ -1,11 +1,11 @@
-"""The tick scenes of shard ticks-0076: a style defaulting to a modifier (issue 40, stop 52).
+"""The tick scenes of shard ticks-0076: a style defaulting to a modifier (issue 40, stop 51).
 
     python benchmarks/modifier_substate_scenes.py N OUT.jsonl.gz
 
 Draws a motion policy world (strategies/ticks.py's SITES["motion"]) and `draw_modifier_substate_ticks` on it (a
 player's table whose NonCombat style defaults to StopTurning or Jump, a modifier and no substate, then asked for
 it), in either engine mode, from seed 76 (strategies.fast_draw); writes N scenes as JSON lines for
-`acconform record` (docs/corpus-coverage.md, stop 52).
+`acconform record` (docs/corpus-coverage.md, stop 51).
 """
 
 from __future__ import annotations

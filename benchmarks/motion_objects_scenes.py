@@ -1,11 +1,11 @@
-"""The tick scenes of shard ticks-0072: objects with a motion table and the server's ExecuteMotion (issue 40, stop 52).
+"""The tick scenes of shard ticks-0072: objects with a motion table and the server's ExecuteMotion (issue 40, stop 51).
 
     python benchmarks/motion_objects_scenes.py N OUT.jsonl.gz
 
 Draws `draw_motion_objects` (strategies/motion.py: a player beside GenericObjects and creatures that have the scene's
 motion table, the server executing motions on them (EmoteManager's Motion emote: IsMovingTo, ExecuteMotion), scene/8 others[].motion_table and execute_motion, feature
 objects.motion_tables) in either engine mode from seed 72 (strategies.fast_draw); writes N scenes as JSON lines for
-`acconform record` (docs/corpus-coverage.md, stop 52).
+`acconform record` (docs/corpus-coverage.md, stop 51).
 """
 
 from __future__ import annotations

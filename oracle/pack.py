@@ -107,7 +107,7 @@ def _inputs_packer(names: tuple, head: str, after: str = ""):
     (bit, packer) pairs measured about 3x slower on the inputs (stop 50, side by side in one process: attrgetter and
     zip, or compress over the present ones), and pack_scene 2.1-2.2x slower on benchmarks/bench_movers.py's scenes
     (1.0-1.4x on drawn motion, targets and missile scenes, whose DAT records weigh more): the straight-line code
-    stays. The head goes in last, where its place was kept (stop 52: no list of values and no tuple per input set)."""
+    stays. The head goes in last, where its place was kept (stop 51: no list of values and no tuple per input set)."""
     body = "".join(f"    v = r.{name}\n    if v is not None:\n        mask |= {1 << bit}\n"
                    f"        out.append({_INPUT_BYTES.get(name, '_3f.pack(*v)')})\n" for bit, name in enumerate(names))
     ns: dict = {}
@@ -344,7 +344,7 @@ _make_collision = _frozen_maker(CollisionState)
 # index, SlidingNormal's index, JumpedThisFrame, the indices of its ShadowObjects cell list and of its CollisionTable,
 # and its id (another mover's; 0 for the mover). The indices are into the scene's tables of the distinct ones (by
 # bits), each made into its tuple or record once; every TickState shares them. So a TickState costs one record's
-# unpack and its slots filled (about 0.6 us against 1.5 us for pack 17's unpack and call per state, stop 52).
+# unpack and its slots filled (about 0.6 us against 1.5 us for pack 17's unpack and call per state, stop 51).
 _STATE_RECORD = struct.Struct("<?dII3f5iIIIii?iiI")
 _TICK_BLOCK = struct.Struct("<Bi")  # byte 1: a scene with other movers; their count k (per tick)
 _FLAGS = struct.Struct("<BBi")  # the mover's motion layers follow (1), the last tick threw (1), the records' count

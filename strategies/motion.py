@@ -1014,7 +1014,7 @@ def draw_motion_queries(draw, scene: Scene) -> Scene:
     return scene.replace(motion_queries=tuple(queries), name=scene.name + ":" + ".".join(tags))
 
 
-# ---------------------------------------------------------------- objects with a motion table (issue 40, stop 52)
+# ---------------------------------------------------------------- objects with a motion table (issue 40, stop 51)
 
 # the other movers of a motion-objects scene: mostly GenericObjects (a Chest: no creature, so MotionInterp's
 # non-creature arms), else a creature; each with the scene's motion table mostly (its WorldObject's MotionTableId). None
@@ -1108,7 +1108,7 @@ def draw_motion_objects(draw, clock) -> Scene:
     return _finish(draw, start, dts, tl, world.landblocks, mover, tuple(others), (), name, ethereal=False)
 
 
-# stop 52 (shard ticks-0076): a style whose default substate is a command that is a modifier and no substate
+# stop 51 (shard ticks-0076): a style whose default substate is a command that is a modifier and no substate
 # (StopTurning, Jump: a table's StyleDefaults may name any command), with cycles and modifiers of it in NonCombat and
 # HandCombat. A MoveToState to HandCombat runs GetObjectSequence's style arm, which makes the old style's default
 # (that command) the Substate; that MoveToState's forward key or a DoMotion of the command then reaches the modifier
