@@ -10,14 +10,13 @@ has a `default_animation` (strategies/objects.py `_default_animation`); writes t
 
 from __future__ import annotations
 
-import gzip
-import json
 import sys
+
+from scene_lines import arguments_ok, write_lines
 
 
 def main(argv) -> int:
-    if len(argv) != 2 or not argv[0].isdigit() or int(argv[0]) < 1:
-        print("usage: default_animation_scenes.py N OUT.jsonl.gz (N a positive count)", file=sys.stderr)
+    if not arguments_ok(argv, "default_animation_scenes.py N OUT.jsonl.gz (N a positive count)"):
         return 2
     from hypothesis import strategies as st
 
@@ -43,9 +42,7 @@ def main(argv) -> int:
             s = drawer.draw()[0]
             if any(o.setup is not None and o.setup.default_animation is not None for o in s.objects):
                 kept.append(s)
-    with gzip.open(argv[1], "wt", encoding="utf-8") as f:
-        for s in kept:
-            f.write(json.dumps(s.to_json(), separators=(",", ":")) + "\n")
+    write_lines(argv[1], kept)
     print(f"{len(kept)} scenes of {tried} drawn into {argv[1]}")
     return 0
 

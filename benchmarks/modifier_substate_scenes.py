@@ -10,39 +10,19 @@ it), in either engine mode, from seed 76 (strategies.fast_draw); writes N scenes
 
 from __future__ import annotations
 
-import gzip
-import json
 import sys
+
+from scene_lines import draw_all, on_a_motion_site
+
+
+def modsub_ticks(draw):
+    from strategies.motion import draw_modifier_substate_ticks
+
+    return on_a_motion_site(draw, draw_modifier_substate_ticks)
 
 
 def main(argv) -> int:
-    if len(argv) != 2 or not argv[0].isdigit() or int(argv[0]) < 1:
-        print("usage: modifier_substate_scenes.py N OUT.jsonl.gz (N a positive count)", file=sys.stderr)
-        return 2
-    from hypothesis import strategies as st
-
-    from strategies import draws as dr
-    from strategies.determinism import pinned_constants
-    from strategies.fast_draw import FastDrawer
-    from strategies.motion import draw_modifier_substate_ticks
-    from strategies.scenes import draw_scene
-    from strategies.ticks import SITES, _clock
-
-    @st.composite
-    def modsub_ticks(draw):
-        kind, sub = draw(st.sampled_from(SITES["motion"]))
-        base = draw_scene(draw, kind, sub)
-        return draw_modifier_substate_ticks(draw, base, _clock).replace(engine_mode=draw(dr.ENGINE_MODES))
-
-    want = int(argv[0])
-    drawer = FastDrawer(modsub_ticks(), 76 * 1000003)
-    with pinned_constants():
-        kept = [drawer.draw()[0] for _ in range(want)]
-    with gzip.open(argv[1], "wt", encoding="utf-8") as f:
-        for s in kept:
-            f.write(json.dumps(s.to_json(), separators=(",", ":")) + "\n")
-    print(f"{len(kept)} scenes drawn into {argv[1]}")
-    return 0
+    return draw_all(argv, "modifier_substate_scenes.py", 76, modsub_ticks)
 
 
 if __name__ == "__main__":

@@ -10,36 +10,21 @@ objects.motion_tables) in either engine mode from seed 72 (strategies.fast_draw)
 
 from __future__ import annotations
 
-import gzip
-import json
 import sys
 
+from scene_lines import draw_all
 
-def main(argv) -> int:
-    if len(argv) != 2 or not argv[0].isdigit() or int(argv[0]) < 1:
-        print("usage: motion_objects_scenes.py N OUT.jsonl.gz (N a positive count)", file=sys.stderr)
-        return 2
-    from hypothesis import strategies as st
 
+def objects(draw):
     from strategies import draws as dr
-    from strategies.determinism import pinned_constants
-    from strategies.fast_draw import FastDrawer
     from strategies.motion import draw_motion_objects
     from strategies.ticks import _clock
 
-    @st.composite
-    def objects(draw):
-        return draw_motion_objects(draw, _clock).replace(engine_mode=draw(dr.ENGINE_MODES))
+    return draw_motion_objects(draw, _clock).replace(engine_mode=draw(dr.ENGINE_MODES))
 
-    want = int(argv[0])
-    drawer = FastDrawer(objects(), 72 * 1000003)
-    with pinned_constants():
-        kept = [drawer.draw()[0] for _ in range(want)]
-    with gzip.open(argv[1], "wt", encoding="utf-8") as f:
-        for s in kept:
-            f.write(json.dumps(s.to_json(), separators=(",", ":")) + "\n")
-    print(f"{len(kept)} scenes drawn into {argv[1]}")
-    return 0
+
+def main(argv) -> int:
+    return draw_all(argv, "motion_objects_scenes.py", 72, objects)
 
 
 if __name__ == "__main__":

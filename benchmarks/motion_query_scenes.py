@@ -9,22 +9,19 @@ Keeps the scenes with `motion_queries` among `sample_scenes(("motion",), N, SEED
 
 from __future__ import annotations
 
-import gzip
-import json
 import sys
+
+from scene_lines import arguments_ok, write_lines
 
 
 def main(argv) -> int:
-    if len(argv) != 3 or not argv[0].isdigit() or int(argv[0]) < 1 or not argv[1].isdigit():
-        print("usage: motion_query_scenes.py N SEED OUT.jsonl.gz (N a positive count, SEED a non-negative integer)",
-              file=sys.stderr)
+    if not arguments_ok(argv, "motion_query_scenes.py N SEED OUT.jsonl.gz (N a positive count, SEED a non-negative "
+                        "integer)", seeded=True):
         return 2
     from strategies import sample_scenes
 
     kept = [s for s in sample_scenes(("motion",), int(argv[0]), int(argv[1])) if s.motion_queries]
-    with gzip.open(argv[2], "wt", encoding="utf-8") as f:
-        for s in kept:
-            f.write(json.dumps(s.to_json(), separators=(",", ":")) + "\n")
+    write_lines(argv[2], kept)
     print(f"{len(kept)} scenes of {argv[0]} drawn into {argv[2]}")
     return 0
 

@@ -11,17 +11,17 @@ TABLELESS_CHASES); writes them as JSON lines for `acconform record` (docs/corpus
 
 from __future__ import annotations
 
-import gzip
-import json
 import re
 import sys
+
+from scene_lines import arguments_ok, write_lines
 
 AIMS = re.compile(r":(self_move_to_object|self_turn_to_object|self_stick|self_first|turn_at_gone|tableless_\w+|switch)@?")
 
 
 def main(argv) -> int:
-    if len(argv) != 3 or not argv[0].isdigit() or int(argv[0]) < 1 or not argv[1].isdigit():
-        print("usage: target_aim_scenes.py N SEED OUT.jsonl.gz (N a positive count, SEED a number)", file=sys.stderr)
+    if not arguments_ok(argv, "target_aim_scenes.py N SEED OUT.jsonl.gz (N a positive count, SEED a number)",
+                        seeded=True):
         return 2
     from strategies.determinism import pinned_constants
     from strategies.fast_draw import FastDrawer
@@ -31,9 +31,7 @@ def main(argv) -> int:
         drawer = FastDrawer(scenes_of("targets"), int(argv[1]))
         drawn = [drawer.draw()[0] for _ in range(int(argv[0]))]
     kept = [s for s in drawn if AIMS.search(s.name)]
-    with gzip.open(argv[2], "wt", encoding="utf-8") as f:
-        for s in kept:
-            f.write(json.dumps(s.to_json(), separators=(",", ":")) + "\n")
+    write_lines(argv[2], kept)
     print(f"{len(kept)} scenes of {len(drawn)} drawn into {argv[2]}")
     return 0
 

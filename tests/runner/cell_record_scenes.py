@@ -11,31 +11,14 @@ The draw is no campaign kind: a draw added to a kind would move every seeded sam
 
 from __future__ import annotations
 
-import argparse
-import json
-from pathlib import Path
+from scene_writer import scene_arguments, write_scenes
 
 
 def main(argv=None) -> int:
-    from hypothesis import strategies as st
-
     from acconform.strategies.cell_records import draw_cell_records_scene
-    from acconform.strategies.determinism import pinned_constants
-    from acconform.strategies.fast_draw import FastDrawer
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=380)
-    ap.add_argument("--seed", type=int, default=52)
-    a = ap.parse_args(argv)
-    a.out.mkdir(parents=True, exist_ok=True)
-    drawer = FastDrawer(st.composite(draw_cell_records_scene)(), a.seed * 1000003)
-    with pinned_constants():
-        for i in range(a.n):
-            scene = drawer.draw()[0]
-            (a.out / f"s{a.seed}-{i:04d}.json").write_text(json.dumps(scene.to_json()))
-    print(f"{a.n} scenes in {a.out}")
-    return 0
+    a = scene_arguments(__doc__, n=380, seed=52).parse_args(argv)
+    return write_scenes(a.out, a.n, a.seed, draw_cell_records_scene)
 
 
 if __name__ == "__main__":

@@ -16,13 +16,14 @@ calc_cross_cells_static then walks the parts (find_bbox_cell_list: HasPhysicsBSP
 
 from __future__ import annotations
 
-import argparse
 import gzip
 import json
 import math
 import random
 from dataclasses import replace
 from pathlib import Path
+
+from scene_writer import scene_arguments
 
 CORPUS = Path(__file__).resolve().parents[1] / "data" / "corpus" / "coreclr"
 
@@ -91,11 +92,7 @@ def part_past_the_edge(s, i):
 def main(argv=None) -> int:
     from acconform.scene import Scene
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=120)
-    ap.add_argument("--seed", type=int, default=77)
-    a = ap.parse_args(argv)
+    a = scene_arguments(__doc__, n=120, seed=77).parse_args(argv)
     a.out.mkdir(parents=True, exist_ok=True)
     pool = []
     for f in sorted(CORPUS.glob("bsp-*.jsonl.gz")):

@@ -11,37 +11,21 @@ The draw is no campaign kind: a draw added to a kind would move every seeded sam
 
 from __future__ import annotations
 
-import argparse
-import json
-from pathlib import Path
+from scene_writer import scene_arguments, write_scenes
 
 
 def main(argv=None) -> int:
-    from hypothesis import strategies as st
-
-    from acconform.strategies.determinism import pinned_constants
-    from acconform.strategies.fast_draw import FastDrawer
     from acconform.strategies.scenes import draw_drawing_scene, draw_free_heading_scene, draw_many_cylspheres_scene
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=400)
-    ap.add_argument("--seed", type=int, default=17)
+    ap = scene_arguments(__doc__, n=400, seed=17)
     ap.add_argument("--kinds", default="bsp", help="comma-separated transition kinds (a shard holds one kind)")
     ap.add_argument("--drawing", action="store_true", help="draw_drawing_scene in place of draw_free_heading_scene")
     ap.add_argument("--many-cylspheres", action="store_true", help="draw_many_cylspheres_scene (bsp only)")
     a = ap.parse_args(argv)
     kinds = tuple(a.kinds.split(","))
-    a.out.mkdir(parents=True, exist_ok=True)
     draw = (draw_many_cylspheres_scene if a.many_cylspheres
             else lambda d: (draw_drawing_scene if a.drawing else draw_free_heading_scene)(d, kinds))
-    drawer = FastDrawer(st.composite(draw)(), a.seed * 1000003)
-    with pinned_constants():
-        for i in range(a.n):
-            scene = drawer.draw()[0]
-            (a.out / f"s{a.seed}-{i:04d}.json").write_text(json.dumps(scene.to_json()))
-    print(f"{a.n} scenes in {a.out}")
-    return 0
+    return write_scenes(a.out, a.n, a.seed, draw)
 
 
 if __name__ == "__main__":

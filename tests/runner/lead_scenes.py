@@ -39,14 +39,14 @@ ground is placed onto it by enter_world, and one 1-3 float steps above it at the
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import sys
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
+
+from scene_writer import scene_arguments
 
 ARMS = ("r0", "triple", "double", "u0", "v0", "num1", "far")
 WANTED = {"r0": {("trajectory.py", 199, 201)}, "triple": {("trajectory.py", 144, 145)},
@@ -300,10 +300,7 @@ def main(argv=None) -> int:
     from acconform.strategies.fast_draw import FastDrawer
     from acconform.strategies.missiles import draw_missile_scene
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=40, help="scenes to keep per arm")
-    ap.add_argument("--seed", type=int, default=74)
+    ap = scene_arguments(__doc__, n=40, seed=74, n_help="scenes to keep per arm")
     ap.add_argument("--arms", default=",".join(ARMS), help="comma-separated arms (default: every arm)")
     a = ap.parse_args(argv)
     arms = a.arms.split(",")

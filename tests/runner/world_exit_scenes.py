@@ -11,37 +11,18 @@ targets kind would move every seeded sample the tests pin.
 
 from __future__ import annotations
 
-import argparse
-import json
-from pathlib import Path
+from scene_writer import scene_arguments, write_scenes
 
 
 def main(argv=None) -> int:
-    from hypothesis import strategies as st
-
-    from acconform.strategies.determinism import pinned_constants
-    from acconform.strategies.fast_draw import FastDrawer
-    from acconform.strategies.world_exit import draw_world_exit
     from acconform.strategies.ticks import _clock
+    from acconform.strategies.world_exit import draw_world_exit
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out", type=Path)
-    ap.add_argument("-n", type=int, default=300)
-    ap.add_argument("--seed", type=int, default=73)
+    ap = scene_arguments(__doc__, n=300, seed=73)
     ap.add_argument("--only", default=None, help="draw this arm alone")
     a = ap.parse_args(argv)
-    a.out.mkdir(parents=True, exist_ok=True)
-    drawer = FastDrawer(st.composite(lambda d: draw_world_exit(d, _clock, a.only))(), a.seed * 1000003)
-    kept = 0
-    with pinned_constants():
-        for i in range(a.n):
-            scene = drawer.draw()[0]
-            if scene.name.split(":")[2] == "none":
-                continue
-            (a.out / f"s{a.seed}-{i:04d}.json").write_text(json.dumps(scene.to_json()))
-            kept += 1
-    print(f"{kept} of {a.n} scenes in {a.out}")
-    return 0
+    return write_scenes(a.out, a.n, a.seed, lambda d: draw_world_exit(d, _clock, a.only),
+                        keep=lambda scene: scene.name.split(":")[2] != "none")
 
 
 if __name__ == "__main__":
