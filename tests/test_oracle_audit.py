@@ -16,7 +16,7 @@ FACADE = (ROOT / "oracle" / "facade" / "Facade.cs").read_text()
 # (WorldObject, Player, Landblock, LandblockManager, WorldManager) would: each stands for a decision.
 SERVER_SEQUENCES = ("LoadServerLandblock", "MakeServerLandblock", "ClearAdjacents", "InstallDat", "SetClock",
                     "Place", "UpdatePlayerPosition", "MakePlayer", "PrepareServerPlayer", "SetServerPlayerPhysics", "Jump", "MoveToState", "BuildStatic", "BuildMover", "RemoveStatics",
-                    "QuietLog4netStartup", "EnterOthers", "MakeWorldObject", "ApplyOtherInputs", "WriteCollisions",
+                    "QuietLog4netStartup", "EnterOthers", "MakeWorldObject", "ApplyOtherInputs",
                     "SceneLaunch", "FindObj", "ProjectileLocation", "LocationLandblock", "GetProjectileVelocity", "CalculateSpellProjectileVelocity",
                     "SetPhysicsObj", "SetCurrentLandblock", "SetProjectilePhysicsState", "SpellProjectileSetup",
                     "SpellProjectileSetPhysicsState", "AddPhysicsObj", "AddWorldObject", "IsProjectileVisible",
