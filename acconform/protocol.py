@@ -80,12 +80,12 @@ def _water(scene: Scene) -> bool:
 # Scene features an implementation may leave out (it lists the ones it supports in its
 # handshake); a scene needing one it did not list is skipped and counted, never run.
 def _gone_target(scene: Scene) -> bool:
-    """Whether a tick's move_to_object names another mover destroyed at an earlier tick."""
+    """Whether a tick's move_to_object or turn_to_object names another mover destroyed at an earlier tick."""
     if scene.ticks is None:
         return False
     gone = set()
     for step in scene.ticks.steps:
-        if step.move_to_object is not None and step.move_to_object.object in gone:
+        if any(m is not None and m.object in gone for m in (step.move_to_object, step.turn_to_object)):
             return True
         gone |= {o.id for o in step.others if o.destroy}
     return False

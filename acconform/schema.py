@@ -427,14 +427,19 @@ def trace_schema() -> dict:
     TRACE_SAMPLE_PER_KIND seeded scenes of every kind and the tick scenes made from the first."""
     from .port.run import traced_run
     from .strategies import ALL_KINDS, sample_scenes
-    from .trace import FORMAT, trace_to_json
+    from .trace import FORMAT, OPTIONAL_PATH_FLAGS, trace_to_json
 
     scenes = []
     for kind in ALL_KINDS:
         scenes += list(sample_scenes((kind,), TRACE_SAMPLE_PER_KIND, SAMPLE_SEED))
     scenes += _tick_scenes(scenes[0])
     t = _Inferrer(nonfinite_floats=True)
-    return t.finish(t._plain([trace_to_json(traced_run(s)[1]) for s in scenes]), "acconform trace", FORMAT)
+    schema = t.finish(t._plain([trace_to_json(traced_run(s)[1]) for s in scenes]), "acconform trace", FORMAT)
+    path = schema["properties"]["records"]["items"]["properties"]["path"]
+    for node in path.get("anyOf", [path]):
+        if node.get("type") == "object":  # the port writes SpherePath's optional flags always; a trace may leave them out
+            node["required"] = [name for name in node["required"] if name not in OPTIONAL_PATH_FLAGS]
+    return schema
 
 
 def dat_schema() -> dict:

@@ -33,6 +33,7 @@ FORMAT = "acconform.trace/1"
 EVENTS = ("enter", "exit", "call", "step", "insert", "tick")
 Vec3 = tuple[float, float, float]
 PARTS = ("args", "result", "path", "mover")  # a record's compared parts, in comparison order
+OPTIONAL_PATH_FLAGS = frozenset({"placement_allows_sliding", "building_check", "hits_interior_cell"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -56,11 +57,18 @@ class PathState:
     neg_poly_hit: bool
     frames_stationary_fall: int
     object_info_state: int
+    # SpherePath's flags that only a placement or a building sets; optional (None: not recorded), so a trace written
+    # before they were added still reads, and a side that leaves them out is not compared on them
+    placement_allows_sliding: bool | None = None
+    building_check: bool | None = None
+    hits_interior_cell: bool | None = None
 
     def to_json(self):
         d = {}
         for f in fields(self):
             v = getattr(self, f.name)
+            if v is None and f.name in OPTIONAL_PATH_FLAGS:
+                continue
             if f.name in ("check_cell", "cur_cell"):
                 v = write_id(v)
             elif f.name in ("check_pos", "cur_pos", "global_offset"):
@@ -76,6 +84,10 @@ class PathState:
         r.obj(set(names))
         kw = {}
         for name in names:
+            if name in OPTIONAL_PATH_FLAGS:
+                if r.given(name):
+                    kw[name] = r[name].bool_()
+                continue
             x = r[name]
             if name in ("check_cell", "cur_cell"):
                 kw[name] = x.id_()
@@ -326,6 +338,8 @@ def first_divergence(reference, other, anchors=None, reference_kinds=None, shape
             vb = fb.get(name)
             if shapes == "ace" and not name.startswith(("path", "mover")) and not comparable(name in fb, va, vb):
                 continue
+            if (va is None or vb is None) and name.startswith("path.") and name[5:] in OPTIONAL_PATH_FLAGS:
+                continue  # a side that does not record SpherePath's optional flags is not compared on them
             same = _same_double if name.rsplit(".", 1)[-1] in DOUBLE_LEAVES else _same
             if name not in fb or not same(va, vb):
                 routine = a.anchor if a.event in ("exit", "call") and not name.startswith("args") else inner

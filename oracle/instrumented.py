@@ -62,10 +62,10 @@ def anchors() -> list[str]:
 
 def kind(anchor: str) -> str:
     """What the port's tracing writes for a routine of this anchor (port/tracing.py `_wrap`): p, m or c."""
-    from ..port.tracing import MOVER_FILE, PATH_FILES
+    from ..port.tracing import MOVER_FILE, writes_path
 
     file = anchor.split(":", 1)[0]
-    return "p" if file in PATH_FILES else "m" if file == MOVER_FILE else "c"
+    return "p" if writes_path(anchor) else "m" if file == MOVER_FILE else "c"
 
 
 def _hash(*parts) -> str:
@@ -255,7 +255,8 @@ def _path(p) -> PathState:
     return PathState(int(p[0]), _v(p[1]), int(p[2]), _v(p[3]), _v(p[4]), contact(p[5]), contact(p[6]),
                      NormalState(bool(p[7][0]), _v(p[7][1])), NormalState(bool(p[8][0]), _v(p[8][1])),
                      PlaneState(_v(p[9][0]), float(p[9][1])) if p[9] is not None else None,
-                     bool(p[10]), bool(p[11]), bool(p[12]), bool(p[13]), int(p[14]), int(p[15]))
+                     bool(p[10]), bool(p[11]), bool(p[12]), bool(p[13]), int(p[14]), int(p[15]),
+                     *(bool(x) for x in p[16:19]))
 
 
 def _mover(m) -> TickState:

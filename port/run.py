@@ -727,12 +727,11 @@ def turn_to_heading(mover: PhysicsObj, turn, mode) -> None:
 def object_move(mover: PhysicsObj, move, turn: bool, mode, others=None) -> None:
     """MoveToObject / TurnToObject(the target's PhysicsObj, mvp), then UpdateTime = CurrentTime
     ("prevent initial snap"). The target is the object the run's ServerObjectManager filed under
-    its id (set_object_guid); a MoveToObject's target the server destroyed (feature objects.gone_targets:
-    out of ServerObjectManager) is its PhysicsObj still, as Monster_Navigation passes AttackTarget.PhysicsObj
-    after the target's Destroy (`others`: the other movers' PhysicsObjs by id). A TurnToObject at one gets
-    None, as the oracle's facade passes it."""
+    its id (set_object_guid); a MoveToObject's or TurnToObject's target the server destroyed (feature
+    objects.gone_targets: out of ServerObjectManager) is its PhysicsObj still, as Monster_Navigation passes
+    AttackTarget.PhysicsObj to either after the target's Destroy (`others`: the other movers' PhysicsObjs by id)."""
     target = mover.server_objects.get_object_a(move.object)
-    if target is None and not turn and others is not None:
+    if target is None and others is not None:
         target = others.get(move.object)
     mvp = movement_parameters(move.params, mode)
     if turn:

@@ -9,7 +9,7 @@ every routine of the anchor registry (anchors.FUNCTIONS) for the length of that 
 class that holds it (a method) and in every port module whose globals call it by name; it puts the
 originals back afterwards. What a wrapper writes depends on the routine's ACE file:
 
-- a transition routine (`PATH_FILES`): ``enter`` and ``exit`` records with a `PathState` of the
+- a transition routine (`PATH_FILES`, and `PATH_ROUTINES` outside them): ``enter`` and ``exit`` records with a `PathState` of the
   run's current Transition (the last one a routine was handed) and, at the exit, the result;
 - a PhysicsObj routine on the mover, or a server routine of `MOVER_ROUTINES` (Player.HandleActionJump): ``enter``
   and ``exit`` with the mover as a TickState;
@@ -45,6 +45,10 @@ from .anchors import FUNCTIONS, REGISTRY, REMEMBERING, harness, load_all
 # routines whose entry and exit snapshot the transition (the rest of the registry writes a `call`)
 PATH_FILES = frozenset({"Transition.cs", "SpherePath.cs", "ObjectInfo.cs", "BSPTree.cs", "BSPNode.cs", "BSPLeaf.cs",
                         "Sphere.cs", "CylSphere.cs", "ObjCell.cs", "LandCell.cs", "EnvCell.cs", "SortCell.cs"})
+# routines outside those files that are handed the transition and hand it on: a building's or a part's collision test
+# (what a building sets in the path, BuildingCheck, is seen at the part's entry, in find_building_collisions' body)
+PATH_ROUTINES = frozenset({"BuildingObj.cs:find_building_collisions", "PartArray.cs:FindObjCollisions",
+                           "PhysicsPart.cs:FindObjCollisions"})
 MOVER_FILE = "PhysicsObj.cs"
 # routines of the server's WorldObjects whose first argument is the mover, traced as PhysicsObj's are (the mover's
 # state at entry and exit): what they change of the mover (a jump's UpdateTime) is named there, not a tick later
@@ -55,6 +59,11 @@ TICK = "PhysicsObj.cs:update_object"
 PLACE = "PhysicsObj.cs:add_obj_to_cell"  # a static object's placement: the records it writes are labelled `placing`
 _ZERO = (0.0, 0.0, 0.0)
 _lock = threading.Lock()  # one traced run at a time in a process: the wrappers are the classes' own
+
+
+def writes_path(ace: str) -> bool:
+    """Whether a routine's records snapshot the transition (enter and exit with a PathState)."""
+    return ace.split(":", 1)[0] in PATH_FILES or ace in PATH_ROUTINES
 
 
 def _vec(v) -> tuple[float, float, float]:
@@ -88,7 +97,8 @@ def path_state(t) -> PathState | None:
         NormalState(bool(ci.sliding_normal_valid), _vec(ci.sliding_normal)),
         PlaneState(_vec(walkable.normal), float(walkable.d)) if walkable is not None else None,
         bool(sp.step_up), bool(sp.step_down), bool(sp.collide), bool(sp.neg_poly_hit),
-        int(ci.frames_stationary_fall), int(oi.state) if oi is not None else 0)
+        int(ci.frames_stationary_fall), int(oi.state) if oi is not None else 0,
+        bool(sp.placement_allows_sliding), bool(sp.building_check), bool(sp.hits_interior_cell))
 
 
 def _num(x):
@@ -212,7 +222,7 @@ def _run(recorder: Recorder, ace: str, fn, args, kw):
 def _wrap(fn, anchor, recorder: Recorder, transition_type):
     ace = anchor.ace
     file = ace.split(":", 1)[0]
-    if file in PATH_FILES:
+    if writes_path(ace):
         resets_step = ace == FTP
 
         def traced(*args, **kw):
@@ -277,7 +287,7 @@ def record_kinds() -> frozenset:
     kinds = {(FTP, "step"), (TI, "insert"), (TICK, "tick")}
     for a in load_all().values():
         file = a.ace.split(":", 1)[0]
-        events = ("enter", "exit") if file in PATH_FILES else ("enter", "exit", "call") if file == MOVER_FILE \
+        events = ("enter", "exit") if writes_path(a.ace) else ("enter", "exit", "call") if file == MOVER_FILE \
             or a.ace in MOVER_ROUTINES \
             else ("call",)
         kinds.update((a.ace, e) for e in events)

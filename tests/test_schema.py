@@ -95,7 +95,7 @@ def test_the_outcome_schema_names_every_field_of_a_ticks_motion_layer(generated)
 
 def test_the_trace_schema_names_every_field_a_trace_record_and_its_snapshot_write():
     from acconform.schema import trace_schema
-    from acconform.trace import FORMAT, PathState, TraceRecord
+    from acconform.trace import FORMAT, OPTIONAL_PATH_FLAGS, PathState, TraceRecord
 
     schema = trace_schema()
     assert schema["properties"]["format"] == {"const": FORMAT}
@@ -105,6 +105,7 @@ def test_the_trace_schema_names_every_field_a_trace_record_and_its_snapshot_writ
     path = next(o for o in record["properties"]["path"].get("anyOf", [record["properties"]["path"]])
                 if o.get("type") == "object")
     assert set(path["properties"]) == {f.name for f in fields(PathState)}
+    assert set(path["required"]) == {f.name for f in fields(PathState)} - OPTIONAL_PATH_FLAGS
 
 
 def test_the_scene_schema_names_a_statics_setup_and_every_field_of_its_parts(generated):

@@ -1268,9 +1268,10 @@ namespace Acconform.Oracle
         static void ObjectMove(PhysicsObj obj, uint targetId, MovementParameters mvp, bool turn)
         {
             var target = ServerObjectManager.GetObjectA(targetId);
-            // a MoveToObject at another mover the server destroyed (feature objects.gone_targets): its WorldObject keeps
-            // its PhysicsObj after Destroy, which Monster_Navigation.StartTurn still passes (AttackTarget.PhysicsObj)
-            if (target == null && !turn)
+            // a MoveToObject or TurnToObject at another mover the server destroyed (feature objects.gone_targets): its
+            // WorldObject keeps its PhysicsObj after Destroy, which Monster_Navigation.StartTurn still passes to either
+            // (AttackTarget.PhysicsObj)
+            if (target == null)
                 foreach (var o in sceneOthers) if (o.Id == targetId) target = o.Obj;
             if (turn) obj.TurnToObject(target, mvp);
             else obj.MoveToObject(target, mvp);

@@ -251,7 +251,9 @@ namespace Acconform.Oracle
             else s.Append("null,");
             s.Append(B(sp.StepUp)).Append(',').Append(B(sp.StepDown)).Append(',').Append(B(sp.Collide)).Append(',')
              .Append(B(sp.NegPolyHit)).Append(',').Append(ci.FramesStationaryFall).Append(',')
-             .Append(t.ObjectInfo != null ? (uint)t.ObjectInfo.State : 0u).Append(']');
+             .Append(t.ObjectInfo != null ? (uint)t.ObjectInfo.State : 0u).Append(',')
+             .Append(B(sp.PlacementAllowsSliding)).Append(',').Append(B(sp.BuildingCheck)).Append(',')
+             .Append(B(sp.HitsInteriorCell)).Append(']');
             return true;
         }
 

@@ -72,13 +72,18 @@ def test_a_request_pos_into_no_cell_of_a_landblock_the_scene_lacks_is_refused():
         validate_scene(scene.replace(ticks=replace(scene.ticks, steps=tuple(steps))))
 
 
-def test_a_move_to_object_at_a_destroyed_other_needs_objects_gone_targets():
+def test_a_move_to_object_or_turn_to_object_at_a_destroyed_other_needs_objects_gone_targets():
     scene = _scene("gone_chase")
     assert "objects.gone_targets" in scene_features(scene)
     gone = {o.id for s in scene.ticks.steps for o in s.others if o.destroy}
     kept = tuple(replace(s, move_to_object=None) if s.move_to_object is not None and s.move_to_object.object in gone
                  else s for s in scene.ticks.steps)
     assert "objects.gone_targets" not in scene_features(scene.replace(ticks=replace(scene.ticks, steps=kept)))
+    # a TurnToObject at it is the same call with the same target (Monster_Navigation.StartTurn passes the destroyed
+    # WorldObject's PhysicsObj to either), so it needs the feature too
+    turned = tuple(replace(s, turn_to_object=s.move_to_object, move_to_object=None) if s.move_to_object is not None
+                   and s.move_to_object.object in gone else s for s in scene.ticks.steps)
+    assert "objects.gone_targets" in scene_features(scene.replace(ticks=replace(scene.ticks, steps=turned)))
 
 
 def test_an_others_motion_table_reads_back_and_needs_objects_motion_tables():

@@ -163,6 +163,28 @@ def test_the_first_divergence_names_the_record_the_field_both_values_and_the_ulp
     assert d.routine == "Transition.cs:StepDown"
 
 
+def test_a_trace_without_sphere_paths_optional_flags_reads_and_is_not_compared_on_them():
+    from acconform.trace import OPTIONAL_PATH_FLAGS
+
+    _, records = traced_run(scene_of("placement_wall_push"))
+    bare = tuple(replace(r, path=replace(r.path, **dict.fromkeys(OPTIONAL_PATH_FLAGS))) if r.path else r
+                 for r in records)
+    doc = json.loads(json.dumps(trace_to_json(bare)))
+    assert not any(OPTIONAL_PATH_FLAGS & set(r.get("path", {})) for r in doc["records"])
+    assert trace_from_json(doc) == bare
+    assert first_divergence(records, bare) is None and first_divergence(bare, records) is None
+
+
+@pytest.mark.anchor("CPhysicsObj::CheckPositionInternal")
+def test_a_path_whose_placement_sliding_flag_differs_parts_on_that_flag():
+    _, records = traced_run(scene_of("placement_wall_push"))
+    i = next(i for i, r in enumerate(records) if r.path is not None and not r.path.placement_allows_sliding)
+    other = list(records)
+    other[i] = replace(records[i], path=replace(records[i].path, placement_allows_sliding=True))
+    d = first_divergence(records, other)
+    assert (d.index, d.field, d.a_value, d.b_value) == (i, "path.placement_allows_sliding", False, True)
+
+
 def test_a_trace_at_the_grain_of_steps_parts_from_the_port_at_the_first_differing_step():
     _, records = traced_run(scene_of("cliff_edge_slide"))
     steps = [r for r in records if r.event == "step"]

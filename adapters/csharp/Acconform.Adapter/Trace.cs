@@ -65,6 +65,10 @@ public sealed record PathState
     public bool NegPolyHit { get; init; }
     public int FramesStationaryFall { get; init; }
     public int ObjectInfoState { get; init; }  // the bits, not names
+    // SpherePath's flags a placement or a building sets; optional: a port that leaves them null is not compared on them
+    [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)] public bool? PlacementAllowsSliding { get; init; }
+    [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)] public bool? BuildingCheck { get; init; }
+    [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)] public bool? HitsInteriorCell { get; init; }
 }
 
 /// <summary>The answer's "trace".</summary>
