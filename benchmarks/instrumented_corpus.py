@@ -11,9 +11,9 @@ the counts, and the first few scenes that differ.
 
 The whole corpus takes hours a runtime, so a run is resumable: each scene answered exactly as the plain ACE is
 entered in a ledger (--ledger FILE, default $XDG_CACHE_HOME/acconform/instrumented-verified.json), keyed by the
-plain ACE build's hash (its ACE.Server.dll and ACE.DatLoader.dll), the runtime and the shard's SHA-256; a later run
-skips what the ledger holds for the same build, runtime and shard (a changed shard or build starts over), --fresh
-ignores it (and replaces what it checks). A scene that differs is entered as such and run again next time. At the
+plain ACE build's hash (the assemblies the instrumenter rewrites) with the instrumentation's (instrumenter, recorder,
+anchors), the runtime and the shard's SHA-256; a later run skips what the ledger holds for the same build, runtime
+and shard (a changed shard, build or instrumentation starts over), --fresh ignores it (and replaces what it checks). A scene that differs is entered as such and run again next time. At the
 end (and with --status, which runs nothing) it prints how much of the corpus is verified, by shard."""
 
 from __future__ import annotations
@@ -31,10 +31,14 @@ LEDGER_VERSION = 1
 
 
 def build_hash(assembly: Path) -> str:
-    """The plain ACE build's hash: its two physics assemblies (what the instrumenter rewrites)."""
+    """The plain ACE build's hash (the assemblies the instrumenter rewrites) with the instrumentation's own (the
+    instrumenter's and recorder's source and the anchors): a change of either is another instrumented ACE to verify."""
+    from acconform.oracle.instrumented import REWRITTEN, instrumentation_hash
+
     h = hashlib.sha256()
-    for name in ("ACE.DatLoader.dll", "ACE.Server.dll"):
+    for name in REWRITTEN:
         h.update((assembly.parent / name).read_bytes())
+    h.update(instrumentation_hash().encode())
     return h.hexdigest()[:20]
 
 

@@ -1,8 +1,8 @@
 """The instrumented ACE: ACE's own trace at the port's grain, from a rewritten copy of the user's build.
 
 At run time, acconform's instrumenter (oracle/instrument/Instrument.cs, our own C#, built once into
-the user cache against Mono.Cecil from NuGet) writes a copy of the user's ACE.DatLoader.dll and
-ACE.Server.dll in which every method the port anchors (port/anchors.py) calls a recorder at its
+the user cache against Mono.Cecil from NuGet) writes a copy of the user's ACE.Entity.dll,
+ACE.DatLoader.dll and ACE.Server.dll in which every method the port anchors (port/anchors.py) calls a recorder at its
 entry and its returns. The copy lives in ``$XDG_CACHE_HOME/acconform/instrumented/<key>`` (key: the
 ACE assemblies' hash, the instrumenter's and recorder's source, the anchors, the runtime), beside the
 build's other files (links to them); nothing of ACE enters the repository. The recorder
@@ -39,7 +39,7 @@ SOURCE_DIR = Path(__file__).with_name("instrument")
 INSTRUMENTER = SOURCE_DIR / "Instrument.cs"
 RECORDER = SOURCE_DIR / "Recorder.cs"
 CECIL = ("Mono.Cecil", "0.11.6")  # the instrumenter's one package (MIT), from the user's NuGet
-REWRITTEN = ("ACE.DatLoader.dll", "ACE.Server.dll")
+REWRITTEN = ("ACE.Entity.dll", "ACE.DatLoader.dll", "ACE.Server.dll")
 FTP = "Transition.cs:FindTransitionalPosition"
 TI = "Transition.cs:TransitionalInsert"
 TICK = "PhysicsObj.cs:update_object"
@@ -66,6 +66,12 @@ def kind(anchor: str) -> str:
 
     file = anchor.split(":", 1)[0]
     return "p" if writes_path(anchor) else "m" if file == MOVER_FILE else "c"
+
+
+def instrumentation_hash() -> str:
+    """What makes one instrumented copy of a build differ from another: the instrumenter's and the recorder's source
+    and the anchors it instruments."""
+    return _hash(INSTRUMENTER.read_bytes(), RECORDER.read_bytes(), "\n".join(anchors()))
 
 
 def _hash(*parts) -> str:

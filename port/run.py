@@ -578,7 +578,7 @@ def apply_inputs(mover: PhysicsObj, step, mode, lscape: LScape | None = None, ot
     if step.turn_to_heading is not None:
         turn_to_heading(mover, step.turn_to_heading, mode)
     if step.turn_to_object is not None:
-        object_move(mover, step.turn_to_object, True, mode)
+        object_move(mover, step.turn_to_object, True, mode, others)
     if step.door is not None:
         door(mover.server_objects.get_object_a(step.door.object), step.door.ethereal, lscape)
     if step.stick_to is not None:  # a melee swing's stick (Monster_Melee.MeleeAttack, Player_Melee.DoSwingMotion)

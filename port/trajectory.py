@@ -319,7 +319,8 @@ def solve_ballistic_arc(proj_pos: Vector3, proj_speed, target: Vector3, gravity,
     return num_solutions, s0, s1, t0, t1
 
 
-@anchor(None, "Trajectory.cs:solve_ballistic_arc(target_velocity)", "the moving-target overload (s0, s1, time)")
+@anchor(None, "Trajectory.cs:solve_ballistic_arc(Vector3, float, Vector3, Vector3, float, out Vector3, out Vector3, out float)",
+        "the moving-target overload (s0, s1, time)")
 def solve_ballistic_arc_moving(proj_pos: Vector3, proj_speed, target_pos: Vector3, target_velocity: Vector3, gravity,
                                runtime: Runtime = MONO):
     """Firing solutions to a target moving at constant velocity: (num, s0, s1, time), the quartic
@@ -447,7 +448,9 @@ def solve_ballistic_arc_lateral_max_height(proj_pos: Vector3, lateral_speed, tar
     return True, fire_velocity, gravity
 
 
-@anchor(None, "Trajectory.cs:solve_ballistic_arc_lateral(target_velocity)", "the moving-target overload (fire_velocity, time, impact_point)")
+@anchor(None,
+        "Trajectory.cs:solve_ballistic_arc_lateral(Vector3, float, Vector3, Vector3, float, out Vector3, out float, out Vector3)",
+        "the moving-target overload (fire_velocity, time, impact_point)")
 def solve_ballistic_arc_lateral(proj_pos: Vector3, lateral_speed, target: Vector3, target_velocity: Vector3, gravity):
     """(ok, fire_velocity, time, impact_point) at `lateral_speed` along the ground to a target
     moving at `target_velocity`, under `gravity` (ACE passes PhysicsGlobals.Gravity, -9.8, for an

@@ -1,19 +1,20 @@
-// acconform's instrumenter (MIT): writes a copy of the user's ACE.DatLoader.dll and ACE.Server.dll in which
+// acconform's instrumenter (MIT): writes a copy of the user's ACE.Entity.dll, ACE.DatLoader.dll and ACE.Server.dll in which
 // every method the port anchors (port/anchors.py) calls a recorder at its entry and at each of its returns.
 //
 //     Instrument <ace dir> <out dir> <anchors file> <map file>
 //
 // <anchors file>: one anchor a line, as the port registers it ("Transition.cs:CliffSlide",
 // "AFrame.cs:Rotate(Quaternion)", "ACE.DatLoader/Entity/Polygon.cs:Unpack"). Each is resolved to the ACE
-// methods it names (module: ACE.DatLoader for an "ACE.DatLoader/..." anchor, else ACE.Server; type: the file's
-// name; method: the name, the constructors when it is the type's name, or the property getter; overloads: the
+// methods it names (module: ACE.DatLoader for an "ACE.DatLoader/..." anchor, ACE.Entity for an "ACE.Entity/..." one,
+// else ACE.Server; type: the file's name, or for a partial class's file named Type_Part.cs (Player_Move.cs) the
+// part before the underscore when no type has the whole name; method: the name, the constructors when it is the type's name, or the property getter; overloads: the
 // parameter list when given -- or, when no method has that list, the overloads no other anchor claims whose list is
 // the anchor's with trailing parameters added or dropped (a build before or after a fix that added one, as ACE's #2547
 // gave add_all_outside_cells its `uint id`) -- else every overload no anchor with a parameter list claims). <map file> gets one
 // line per instrumented method: "id<TAB>anchor<TAB>Type::Method(params)<TAB>flags" (flags: s static, c
 // constructor), then "unresolved<TAB>anchor" for each anchor that names no method of this build.
 //
-// The hooks: a type Acconform.Trace.Hooks injected into ACE.DatLoader (ACE.Server references it), with
+// The hooks: a type Acconform.Trace.Hooks injected into ACE.Entity (ACE.DatLoader and ACE.Server reference it), with
 //     public static Hooks Current;
 //     public abstract void Enter(int id, object[] args);              // this (null in a constructor), the parameters
 //     public abstract void Exit(int id, object result, object[] refs); // the answer (a constructor's: this); with ref or
@@ -45,10 +46,11 @@ static class Instrument
         var resolver = new DefaultAssemblyResolver();
         resolver.AddSearchDirectory(aceDir);
         var rp = new ReaderParameters { AssemblyResolver = resolver, ReadSymbols = false, InMemory = true };
+        var entity = AssemblyDefinition.ReadAssembly(Path.Combine(aceDir, "ACE.Entity.dll"), rp);
         var dat = AssemblyDefinition.ReadAssembly(Path.Combine(aceDir, "ACE.DatLoader.dll"), rp);
         var server = AssemblyDefinition.ReadAssembly(Path.Combine(aceDir, "ACE.Server.dll"), rp);
 
-        var hooks = InjectHooks(dat.MainModule);
+        var hooks = InjectHooks(entity.MainModule);
         var map = new List<string>();
         var id = 0;
         var claimed = new HashSet<MethodDefinition>();
@@ -58,7 +60,8 @@ static class Instrument
         foreach (var pass in new[] { 0, 1, 2 })
         foreach (var anchor in anchors.Where(a => pending.Contains(a) && (a.Contains("(") ? pass < 2 : pass == 2)))
         {
-            var module = anchor.StartsWith("ACE.DatLoader/") ? dat.MainModule : server.MainModule;
+            var module = anchor.StartsWith("ACE.DatLoader/") ? dat.MainModule
+                       : anchor.StartsWith("ACE.Entity/") ? entity.MainModule : server.MainModule;
             var methods = Resolve(module, anchor, pass == 1).Where(m => m.HasBody && !claimed.Contains(m)).ToList();
             if (methods.Count == 0 && pass == 0) continue;  // tried again by its trailing parameters
             pending.Remove(anchor);
@@ -78,6 +81,7 @@ static class Instrument
             }
         }
         Directory.CreateDirectory(outDir);
+        entity.Write(Path.Combine(outDir, "ACE.Entity.dll"));
         dat.Write(Path.Combine(outDir, "ACE.DatLoader.dll"));
         server.Write(Path.Combine(outDir, "ACE.Server.dll"));
         File.WriteAllLines(argv[3], map);
@@ -142,10 +146,15 @@ static class Instrument
             className = method.Substring(0, dot);
             method = method.Substring(dot + 1);
         }
+        Func<TypeDefinition, bool> inFile = t => ns != null ? t.Namespace == ns
+                                                     : t.Namespace.StartsWith("ACE.Server.Physics", StringComparison.Ordinal);
+        var underscore = className.IndexOf('_');
+        if (underscore > 0 && !AllTypes(module).Any(t => t.Name == className && inFile(t)))
+            className = className.Substring(0, underscore);  // Player_Move.cs: a part of the partial class Player
         foreach (var t in AllTypes(module))
         {
             if (t.Name != className) continue;
-            if (ns != null ? t.Namespace != ns : !t.Namespace.StartsWith("ACE.Server.Physics", StringComparison.Ordinal)) continue;
+            if (!inFile(t)) continue;
             foreach (var m in t.Methods)
             {
                 var named = method == className ? m.IsConstructor && !m.IsStatic

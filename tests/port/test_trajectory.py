@@ -83,7 +83,7 @@ def test_quartic_of_two_double_roots_solves_its_second_quadric_twice():
     assert trajectory.solve_quartic(1, 0, -2, 0, 1)[:4] == (3, -1.0, 1.0, 1.0)
 
 
-@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(target_velocity)")
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(Vector3, float, Vector3, Vector3, float, out Vector3, out Vector3, out float)")
 def test_an_arrow_spawned_at_its_moving_targets_aim_point_gets_a_nan_lead():
     # no absolute term (r = 0): the cubic y (y^2 + p) with p < 0 (the arrow outruns the target) gives 0 and
     # +-sqrt(-p); the sorted slots read NaN first, so the one "solution" is NaN and LaunchProjectile misfires
@@ -114,7 +114,7 @@ def test_fixed_target_arc_gives_nothing_out_of_reach_on_the_same_point_or_withou
     assert trajectory.solve_ballistic_arc(v(0, 0, 0), F(20), v(10, 0, 0), F(0))[0] == 0
 
 
-@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(target_velocity)")
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(Vector3, float, Vector3, Vector3, float, out Vector3, out Vector3, out float)")
 def test_moving_target_arc_reads_nan_slots_when_the_quartic_has_fewer_than_four_roots():
     # A 50 m/s shot from 10 m up at a target 2 m ahead on the ground running away at 50 m/s and
     # falling at 10 m/s: the quartic in time has two real roots; .NET's Array.Sort puts the two NaN
@@ -127,7 +127,7 @@ def test_moving_target_arc_reads_nan_slots_when_the_quartic_has_fewer_than_four_
     assert math.isnan(velocity.x)
 
 
-@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(target_velocity)")
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(Vector3, float, Vector3, Vector3, float, out Vector3, out Vector3, out float)")
 def test_a_catchable_moving_target_gets_the_earliest_positive_time():
     # a target 10 m ahead walking sideways at 2 m/s, shot at 20 m/s: four real roots, two negative;
     # the first positive one is the time, and the solution leads the target (positive Y)
@@ -137,7 +137,7 @@ def test_a_catchable_moving_target_gets_the_earliest_positive_time():
     assert s0.y == F(2.0)
 
 
-@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc_lateral(target_velocity)")
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc_lateral(Vector3, float, Vector3, Vector3, float, out Vector3, out float, out Vector3)")
 def test_lateral_arc_to_a_still_target_without_gravity_flies_straight_at_the_lateral_speed():
     # diffXY = (30, 40): c0 = -100, c1 = 0, c2 = 2500 -> t = 5; fire = Normalize(30, 40, 0) * 10 = (6, 8, 0);
     # Z: (2a - 2c + 0) / (2t) * -1 = (0 - 2*5) / 10 * -1 = 1
@@ -146,7 +146,7 @@ def test_lateral_arc_to_a_still_target_without_gravity_flies_straight_at_the_lat
     assert fire == v(F(30) / F(50) * F(10), F(40) / F(50) * F(10), 1.0)
 
 
-@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc_lateral(target_velocity)")
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc_lateral(Vector3, float, Vector3, Vector3, float, out Vector3, out float, out Vector3)")
 def test_lateral_arc_fails_on_the_same_point_and_on_a_target_it_cannot_catch():
     assert trajectory.solve_ballistic_arc_lateral(v(1, 1, 1), F(10), v(1, 1, 1), v(0, 0, 0), F(-9.8))[0] is False
     # running away at 20 m/s from a 10 m/s shot: no positive time

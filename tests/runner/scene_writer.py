@@ -14,8 +14,11 @@ from pathlib import Path
 
 
 def scene_arguments(doc: str, n: int, seed: int, n_help: str | None = None) -> argparse.ArgumentParser:
-    """A parser for OUT_DIR [-n N] [--seed S], described by the first line of the writer's docstring."""
-    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    """A parser for OUT_DIR [-n N] [--seed S], described by the first line of the writer's docstring; a bad
+    argument is one line and exit 2, as acconform's own commands answer it."""
+    from acconform.cli import _Parser
+
+    ap = _Parser(description=doc.splitlines()[0])
     ap.add_argument("out", type=Path)
     ap.add_argument("-n", type=int, default=n, help=n_help)
     ap.add_argument("--seed", type=int, default=seed)

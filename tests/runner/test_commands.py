@@ -128,3 +128,16 @@ def test_a_tick_case_and_show_put_the_first_differing_tick_on_top(tmp_path, caps
     assert lines[1].startswith("first differing tick: 4 of 40: ticks[4].jumped_this_frame: port=")
     assert "  ticks: 40 by update_object, clock from 1000.0 to 1001.5999999999985" in lines
     assert any(line.startswith("  tick 9: updated at") and "25)" in line for line in lines)
+
+
+def test_a_scene_writers_bad_count_is_one_line_and_exit_2(capsys):
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from scene_writer import scene_arguments
+
+    with pytest.raises(SystemExit) as e:
+        scene_arguments("writes scenes", 10, 1).parse_args(["/tmp/out", "-n", "ten"])
+    err = capsys.readouterr().err
+    assert e.value.code == 2 and err.count("\n") == 1 and "argument -n: invalid int value: 'ten'" in err

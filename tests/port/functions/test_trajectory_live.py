@@ -144,7 +144,7 @@ def test_fixed_target_arc_is_aces_bit_for_bit(ace, runtime):
         ace.solve_ballistic_arc)
 
 
-@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(target_velocity)")
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc(Vector3, float, Vector3, Vector3, float, out Vector3, out Vector3, out float)")
 def test_moving_target_arc_is_aces_bit_for_bit_nan_answers_included(ace, runtime):
     nan_answers = 0
 
@@ -163,7 +163,7 @@ def test_moving_target_arc_is_aces_bit_for_bit_nan_answers_included(ace, runtime
     assert nan_answers > 0, "no input reached ACE's NaN slots: the generator lost that case"
 
 
-@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc_lateral(target_velocity)")
+@pytest.mark.anchor("Trajectory.cs:solve_ballistic_arc_lateral(Vector3, float, Vector3, Vector3, float, out Vector3, out float, out Vector3)")
 def test_lateral_arc_to_a_moving_target_is_aces_bit_for_bit(ace):
     def make(rng):
         o, t = launch_pair(rng)
