@@ -122,15 +122,22 @@ def _against_ace(scene, ace: Outcome, ace_source: str, backend, mode: str, runti
                if not getattr(backend, "traces", False) else f"the implementation gave no trace ({theirs_outcome.error})")
         return Explanation(name, reference, differs, None, why, ace_records, (), theirs_outcome, None, "ACE")
     d = against_ace(ace_records, theirs, traced_ace.kinds, scene.ticks is not None, traced_ace.overloaded)
-    known = None
-    if d is not None:
-        from .divergences import known_for
-
-        known = known_for(d)
-        # positions in the whole traces, for the records shown before it
+    known = known_here(d, backend)
+    if d is not None:  # positions in the whole traces, for the records shown before it
         d = _positioned(d, ace_records, theirs)
     note = "" if d is not None else "the traces agree at the grain both write"
     return Explanation(name, reference, differs, d, note, ace_records, theirs, theirs_outcome, known, "ACE")
+
+
+def known_here(d: Divergence | None, backend):
+    """The known divergence (ACE versus retail) a first divergence from ACE's own trace falls in, for an
+    implementation that may follow retail; None for the built-in port, which follows ACE: when it parts from an
+    ACE, that ACE is not the one the port follows (a re-bugged build), whatever row the routine is in."""
+    if d is None or getattr(backend, "command", None) is None:
+        return None
+    from .divergences import known_for
+
+    return known_for(d)
 
 
 def _positioned(d: Divergence, a_records, b_records) -> Divergence:
@@ -158,11 +165,7 @@ def _against_ace_steps(scene, live, name, ours, ours_outcome) -> Explanation:
         return Explanation(name, "none: ACE's stepped trace was refused", True, None,
                            f"ACE's stepped trace refused: {e}", (), ours, ours_outcome)
     d = first_divergence(steps, ours)
-    known = None
-    if d is not None:
-        from .divergences import known_for
-
-        known = known_for(d)
+    known = None  # `ours` is the port's trace, which follows ACE (known_here)
     return Explanation(name, "ACE's stepped trace (checked: the stepped run ends in ACE's own outcome), compared "
                        "at its grain: each pass of FindTransitionalPosition's loop", True, d,
                        "" if d is not None else "the port's steps are ACE's: they part after the last step",

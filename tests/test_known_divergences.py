@@ -73,3 +73,14 @@ def test_a_quantum_handed_on_by_update_object_is_max_quantum_but_another_callee_
     # the stepped-first mover mutant parts at update_object's `anchor` (another mover's sub-step called first)
     assert known_for(_divergence("PhysicsObj.cs:update_object", "args[1]")).name == "max_quantum"
     assert known_for(_divergence("PhysicsObj.cs:update_object", "anchor")) is None
+
+
+def test_a_divergence_from_aces_trace_is_known_for_an_implementation_but_never_for_the_port_which_follows_ace():
+    from types import SimpleNamespace
+
+    from acconform.explain import known_here
+
+    d = _divergence("EnvCell.cs:find_transit_cells(int, List<PhysicsPart>, CellArray)", "args[0][0]")
+    assert known_here(d, SimpleNamespace(command="python my_port.py")).name == "static_cell_search"
+    assert known_here(d, SimpleNamespace()) is None  # the built-in port: that ACE is not the one it follows
+    assert known_here(None, SimpleNamespace(command="python my_port.py")) is None
