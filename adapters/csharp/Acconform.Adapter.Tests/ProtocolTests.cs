@@ -156,6 +156,7 @@ public class ProtocolTests
         {
             r.Tracer!.Anchors = ["Polygon.cs:hits_sphere"];
             r.Tracer.Step(0, new PathState { CurCell = 0xA9B40001, Walkable = new Plane(0, 0, 1, -20) });
+            r.Tracer.Step(1, new PathState { CurCell = 0xA9B40001, PlacementAllowsSliding = false, HitsInteriorCell = true });
             r.Tracer.Enter("Polygon.cs:hits_sphere", Tracer.Value(-0f), Tracer.Value(float.NaN));
             r.Tracer.Exit("Polygon.cs:hits_sphere", true);
             return new Outcome();
@@ -164,12 +165,17 @@ public class ProtocolTests
         Assert.Equal("acconform.trace/1", (string)trace["format"]!);
         Assert.Equal("""["Polygon.cs:hits_sphere"]""", trace["anchors"]!.ToJsonString());
         var records = trace["records"]!.AsArray();
-        Assert.Equal(["step", "enter", "exit"], records.Select(r => (string)r!["event"]!));
+        Assert.Equal(["step", "step", "enter", "exit"], records.Select(r => (string)r!["event"]!));
         Assert.Equal(("Transition.cs:FindTransitionalPosition", 0), ((string)records[0]!["anchor"]!, (int)records[0]!["step"]!));
         Assert.Equal("0xA9B40001", (string)records[0]!["path"]!["cur_cell"]!);
         Assert.Equal("""{"normal":[0,0,1],"d":-20}""", records[0]!["path"]!["walkable"]!.ToJsonString());
-        Assert.Equal("""[-0,"0xffc00000"]""", records[1]!["args"]!.ToJsonString());
-        Assert.False(records[1]!.AsObject().ContainsKey("path"));
+        // SpherePath's optional flags: left null, not written (and not compared); given, written by their snake_case names
+        Assert.False(records[0]!["path"]!.AsObject().ContainsKey("building_check"));
+        var flags = records[1]!["path"]!.AsObject();
+        Assert.Equal((false, true), ((bool)flags["placement_allows_sliding"]!, (bool)flags["hits_interior_cell"]!));
+        Assert.False(flags.ContainsKey("building_check"));
+        Assert.Equal("""[-0,"0xffc00000"]""", records[2]!["args"]!.ToJsonString());
+        Assert.False(records[2]!.AsObject().ContainsKey("path"));
     }
 
     [Fact]
