@@ -61,6 +61,7 @@ _ZERO = (0.0, 0.0, 0.0)
 _lock = threading.Lock()  # one traced run at a time in a process: the wrappers are the classes' own
 
 
+@harness("whether a traced routine's records snapshot the transition (a transition file's routine, or PATH_ROUTINES)")
 def writes_path(ace: str) -> bool:
     """Whether a routine's records snapshot the transition (enter and exit with a PathState)."""
     return ace.split(":", 1)[0] in PATH_FILES or ace in PATH_ROUTINES
