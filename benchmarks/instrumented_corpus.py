@@ -13,12 +13,14 @@ The whole corpus takes hours a runtime, so a run is resumable: each scene answer
 entered in a ledger (--ledger FILE, default $XDG_CACHE_HOME/acconform/instrumented-verified.json), keyed by the
 plain ACE build's hash (the assemblies the instrumenter rewrites) with the instrumentation's (instrumenter, recorder,
 anchors), the runtime and the shard's SHA-256; a later run skips what the ledger holds for the same build, runtime
-and shard (a changed shard, build or instrumentation starts over), --fresh ignores it (and replaces what it checks). A scene that differs is entered as such and run again next time. At the
-end (and with --status, which runs nothing) it prints how much of the corpus is verified, by shard."""
+and shard (a changed shard, build or instrumentation starts over), --fresh ignores it (and replaces what it checks).
+A scene that differs is entered as such and run again next time. Two runs, one a runtime, can share the ledger. At
+the end (and with --status, which runs nothing) it prints how much of the corpus is verified, by shard."""
 
 from __future__ import annotations
 
 import argparse
+import fcntl
 import fnmatch
 import hashlib
 import json
@@ -90,24 +92,28 @@ class Ledger:
         self.touched.add(key)
 
     def save(self) -> None:
-        entries = self.entries
-        if not self.fresh:  # another run's entries since this one read the file: kept (this run's verdicts win)
-            for k, v in self._read().items():
-                mine = entries.get(k)
-                if mine is None:
-                    entries[k] = v
-                elif k in self.touched:
-                    mine["verified"] |= v["verified"] - mine["differ"]
-                    mine["differ"] |= v["differ"] - mine["verified"]
-        self.fresh = False  # from now on a save merges with what this run wrote
-        doc = {"version": LEDGER_VERSION, "entries": {
-            k: {"shard": v["shard"], "verified": sorted(v["verified"]), "differ": sorted(v["differ"])}
-            for k, v in sorted(entries.items())}}
+        """Merge with the file and write it, under a lock: two runs (one a runtime) share the ledger. A key this run
+        has not touched takes the file's version (another run's progress); a touched one is the union, this run's
+        verdicts winning."""
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = self.path.with_name(self.path.name + f".tmp-{os.getpid()}")
-        tmp.write_text(json.dumps(doc, separators=(",", ":")) + "\n")
-        tmp.replace(self.path)
-
+        with open(self.path.with_name(self.path.name + ".lock"), "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            entries = self.entries
+            if not self.fresh:
+                for k, v in self._read().items():
+                    mine = entries.get(k)
+                    if mine is None or k not in self.touched:
+                        entries[k] = v
+                    else:
+                        mine["verified"] |= v["verified"] - mine["differ"]
+                        mine["differ"] |= v["differ"] - mine["verified"]
+            self.fresh = False  # from now on a save merges with what this run wrote
+            doc = {"version": LEDGER_VERSION, "entries": {
+                k: {"shard": v["shard"], "verified": sorted(v["verified"]), "differ": sorted(v["differ"])}
+                for k, v in sorted(entries.items())}}
+            tmp = self.path.with_name(self.path.name + f".tmp-{os.getpid()}")
+            tmp.write_text(json.dumps(doc, separators=(",", ":")) + "\n")
+            tmp.replace(self.path)
 
 def status(ledger: Ledger, prefix: str, entries, corpus_dir: Path) -> tuple[int, int, int]:
     """Print the verified share of each shard of the corpus, and the totals; -> (verified, differ, scenes)."""

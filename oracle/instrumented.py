@@ -21,7 +21,6 @@ import gc
 import hashlib
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -275,43 +274,13 @@ def _mover(m) -> TickState:
                      jumped_this_frame=bool(m[15]), shadow_cells=tuple(int(x) for x in m[16]))
 
 
-# A record's path (the 8th field: followed by a null mover and the placing) and mover (the 9th: followed by the
-# placing) as Recorder.cs writes them: numbers, booleans and null (a NaN float as a "0x..." string) in a fixed nesting.
-# Most of a trace's text is these snapshots, a few hundred distinct ones written tens of thousands of times (at each
-# entry and exit): `records_from` reads each distinct one once.
-_N = r"[^\[\]]*"  # the scalars between two brackets
-_V = r"\[" + _N + r"\]"  # a vector, quaternion, id list
-_CONTACT = r"\[" + _N + _V + _N + r"\]"  # [valid, cell, water, [normal], d]
-_NORMAL = r"\[" + _N + _V + r"\]"  # [valid, [normal]]
-_PATH = re.compile(r"\[[^\[\],]+," + _V + r",[^\[\],]+," + _V + "," + _V + "," + _CONTACT + "," + _CONTACT + "," + _NORMAL + ","
-                   + _NORMAL + r",(?:null|\[" + _V + _N + r"\])" + _N + r"\](?=,null,-?\d+\]$)", re.M)
-_MOVER = re.compile(r"\[false," + _N + "(?:" + _V + _N + "){6}" + r"\[" + _V + _N + r"\]" + _N + "(?:" + _V + _N + "){2}"
-                    + r"\](?=,-?\d+\]$)", re.M)
-
-
-def _interned(pattern, text: str, build) -> tuple[str, list]:
-    """(text with each match of `pattern` replaced by its index among the distinct matches, the value `build`
-    makes of each distinct match, read once)."""
-    index: dict[str, int] = {}
-
-    def number(m):
-        k = m.group()
-        i = index.get(k)
-        if i is None:
-            i = index[k] = len(index)
-        return str(i)
-
-    text = pattern.sub(number, text)
-    return text, [build(v) for v in json.loads("[" + ",".join(index) + "]")] if index else []
-
-
 def records_from(text: str, ids: dict[int, str], outcome: Outcome | None = None) -> tuple[TraceRecord, ...]:
     """The recorder's lines as acconform.trace records; a tick record's mover is the outcome's tick.
 
-    Read at once: the distinct path and mover snapshots first (`_interned`: a record's then holds the index of its
-    snapshot), then every line as one JSON array -- one parse, not one a line. A snapshot the patterns do not
-    match stays in its line and is read there. The collector is off meanwhile: the millions of lists and floats read
-    would set it off again and again, for nothing to collect (it cost more than the reading)."""
+    A record's path and mover are indices of the snapshots the recorder defines once each ("#p" and "#m" lines,
+    Recorder.cs): each is read once, then every record line as one JSON array -- one parse, not one a line. The
+    collector is off meanwhile: the many lists and floats read would set it off again and again, for nothing to
+    collect (it cost more than the reading)."""
     enabled = gc.isenabled()
     gc.disable()
     try:
@@ -324,20 +293,25 @@ def records_from(text: str, ids: dict[int, str], outcome: Outcome | None = None)
 def _records_from(text: str, ids: dict[int, str], outcome: Outcome | None) -> tuple[TraceRecord, ...]:
     out = []
     ticks = getattr(outcome, "ticks", None) or ()
-    text, paths = _interned(_PATH, text, _path)
-    text, movers = _interned(_MOVER, text, _mover)
-    body = text.strip("\n").replace("\n", ",")
+    lines = text.split("\n")
+    if lines and not lines[-1]:
+        lines.pop()
+    defined = [ln for ln in lines if ln[:1] == "#"]
+    if defined:
+        lines = [ln for ln in lines if ln[:1] != "#"]
+    paths = [_path(p) for p in json.loads("[" + ",".join(ln[3:] for ln in defined if ln[1] == "p") + "]")]
+    movers = [_mover(m) for m in json.loads("[" + ",".join(ln[3:] for ln in defined if ln[1] == "m") + "]")]
     get = ids.get
-    for i, event, tick, step, within, args, result, path, mover, placing in json.loads("[" + body + "]"):
+    for i, event, tick, step, within, args, result, path, mover, placing in json.loads("[" + ",".join(lines) + "]"):
         anchor = FTP if event == "step" else TI if event == "insert" else TICK if event == "tick" else ids[i]
         if event == "tick":
             mover = ticks[tick] if 0 <= tick < len(ticks) else None
             if mover is None or mover.error is not None:
                 continue  # the port writes no tick record after a tick that threw
         elif mover is not None:
-            mover = movers[mover] if mover.__class__ is int else _mover(mover)
+            mover = movers[mover]
         if path is not None:
-            path = paths[path] if path.__class__ is int else _path(path)
+            path = paths[path]
         out.append(TraceRecord(anchor, event, tick if tick >= 0 else None, step if step >= 0 else None,
                                get(within) if within >= 0 else None, args, result, path, mover,
                                placing if placing >= 0 else None))

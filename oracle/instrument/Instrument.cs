@@ -20,6 +20,8 @@
 //     public abstract void Exit(int id, object result, object[] refs); // the answer (a constructor's: this); with ref or
 //         out parameters, refs: their values, after the answer when the method has one
 // An instrumented method does nothing more while Current is null: a test of a static field at its entry and exit.
+// Every type's static initializer (.cctor) in the three assemblies runs with Current null (`Quiet`): it runs once a
+// process, and its records would land in whichever trace happened to come first.
 // Nothing of ACE is written anywhere but <out dir>, the user's cache.
 using System;
 using System.Collections.Generic;
@@ -80,6 +82,12 @@ static class Instrument
                 id++;
             }
         }
+        foreach (var module in new[] { entity.MainModule, dat.MainModule, server.MainModule })
+            foreach (var t in AllTypes(module).ToList())
+            {
+                var cctor = t.Methods.FirstOrDefault(x => x.IsConstructor && x.IsStatic && x.HasBody);
+                if (cctor != null) Quiet(cctor, hooks);
+            }
         Directory.CreateDirectory(outDir);
         entity.Write(Path.Combine(outDir, "ACE.Entity.dll"));
         dat.Write(Path.Combine(outDir, "ACE.DatLoader.dll"));
@@ -358,6 +366,35 @@ static class Instrument
         tail.Add(final);
         if (!isVoid) tail.Add(il.Create(OpCodes.Ret));
         foreach (var ins in tail) il.Append(ins);
+        body.OptimizeMacros();
+    }
+
+    // A type's static initializer runs once a process, where the runtime first needs it: its records (ObjCell.EmptyCell's
+    // `new ObjCell()`, PhysicsGlobals.DummySphere's Sphere) would land in whichever trace came first, wherever its JIT ran
+    // it. It runs with the recorder off: { var saved = Hooks.Current; Hooks.Current = null; ...; Hooks.Current = saved; }
+    static void Quiet(MethodDefinition cctor, HookRefs hooks)
+    {
+        var current = cctor.Module.ImportReference(hooks.Current);
+        var body = cctor.Body;
+        body.SimplifyMacros();
+        var il = body.GetILProcessor();
+        var saved = new VariableDefinition(current.FieldType);
+        body.Variables.Add(saved);
+        body.InitLocals = true;
+        var first = body.Instructions[0];
+        il.InsertBefore(first, il.Create(OpCodes.Ldsfld, current));
+        il.InsertBefore(first, il.Create(OpCodes.Stloc, saved));
+        il.InsertBefore(first, il.Create(OpCodes.Ldnull));
+        il.InsertBefore(first, il.Create(OpCodes.Stsfld, current));
+        var epilogue = il.Create(OpCodes.Ldloc, saved);
+        foreach (var ret in body.Instructions.Where(i => i.OpCode == OpCodes.Ret).ToList())
+        {
+            ret.OpCode = OpCodes.Br;
+            ret.Operand = epilogue;
+        }
+        il.Append(epilogue);
+        il.Append(il.Create(OpCodes.Stsfld, current));
+        il.Append(il.Create(OpCodes.Ret));
         body.OptimizeMacros();
     }
 

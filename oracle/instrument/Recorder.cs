@@ -2,7 +2,8 @@
 // the instrumented methods call it at their entry and exits (Acconform.Trace.Hooks, injected by Instrument.cs), and it
 // writes the records the port's tracing writes (port/tracing.py), one JSON array a line:
 //     [anchor id, event, tick, step, within id, args, result, path, mover, placing]
-// (-1 or null where the port's record leaves the field out). acconform/oracle/instrumented.py turns them into
+// (-1 or null where the port's record leaves the field out; path and mover: the index of a snapshot, defined by a
+// line "#p <json>" or "#m <json>" before the first record that refers to it). acconform/oracle/instrumented.py turns them into
 // acconform.trace records. What a record holds follows the port's rules, by the kind of the anchor's ACE file
 // (the table Install is given): a transition routine ("p") writes enter and exit with the run's current Transition
 // (the last one a routine was handed); a PhysicsObj routine ("m") on the mover writes enter and exit with the mover
@@ -16,6 +17,7 @@ using System;
 using System.Collections;
 using System.Collections.Generic;
 using System.Globalization;
+using System.Linq.Expressions;
 using System.Numerics;
 using System.Reflection;
 using System.Runtime.InteropServices;
@@ -81,6 +83,8 @@ namespace Acconform.Oracle
             r.steps = r.ticksStarted = 0;
             r.transition = null;
             r.Records = 0;
+            r.paths.Clear();
+            r.movers.Clear();
             Facade.TickStarted = r.OnTick;
             Current = r;
         }
@@ -140,14 +144,30 @@ namespace Acconform.Oracle
         }
 
         // the "tick" record after a tick: its mover is the tick's TickState, filled in from the outcome by the Python side
-        void TickDone() { Write(tickId, "tick", null, null, null, null); }
+        void TickDone() { Write(tickId, Ev.Tick, null, null, null, null); }
 
         Frame Top => running.Count > 0 ? running[running.Count - 1] : null;
+
+        enum Ev { Enter, Exit, Call, Step, Insert, Tick }
+        static readonly string[] Events = { "enter", "exit", "call", "step", "insert", "tick" };
+        string[] prefixes = new string[0];
+        readonly Stack<Frame> spare = new Stack<Frame>();  // frames reused: one a record was most of what a run allocated
+
+        Frame NewFrame(int id)
+        {
+            var f = spare.Count > 0 ? spare.Pop() : new Frame();
+            f.Id = id;
+            f.Args = null;
+            f.Mover = null;
+            f.Places = false;
+            f.Outer = 0;
+            return f;
+        }
 
         public override void Enter(int id, object[] args)
         {
             var kind = kinds[id];
-            var frame = new Frame { Id = id };
+            var frame = NewFrame(id);
             if (kind[0] == 'p')
             {
                 foreach (var a in args)
@@ -157,18 +177,18 @@ namespace Acconform.Oracle
                 if (kind[1] == 'a' && top != null && kinds[top.Id][1] == 'f')  // a pass of FindTransitionalPosition's loop
                 {
                     step = steps++;
-                    Write(ftpId, "step", null, null, transition, null);
+                    Write(ftpId, Ev.Step, null, null, transition, null);
                 }
                 if (kind[1] == 'i' && top != null && kinds[top.Id][1] == 't')  // a TransitionalInsert attempt
-                    Write(tiId, "insert", null, null, transition, null);
+                    Write(tiId, Ev.Insert, null, null, transition, null);
                 if (kind[1] == 'f') steps = 0;
-                Write(id, "enter", Json(args), null, transition, null);
+                Write(id, Ev.Enter, Json(args), null, transition, null);
             }
             else if (kind[0] == 'm' && args.Length > 0 && args[0] is PhysicsObj && ((PhysicsObj)args[0]).ID == MoverId &&
                      ((PhysicsObj)args[0]).Position != null)
             {
                 frame.Mover = (PhysicsObj)args[0];
-                Write(id, "enter", Json(args), null, null, frame.Mover);
+                Write(id, Ev.Enter, Json(args), null, null, frame.Mover);
             }
             else
                 frame.Args = Json(args);
@@ -189,98 +209,217 @@ namespace Acconform.Oracle
             while (at >= 0 && running[at].Id != id) at--;
             if (at < 0) return;
             var frame = running[at];
-            for (var k = at + 1; k < running.Count; k++)  // a placement left by an exception ends with it
-                if (running[k].Places) { placing = running[k].Outer; break; }
+            var left = false;
+            for (var k = at + 1; k < running.Count; k++)
+            {
+                if (running[k].Places && !left) { placing = running[k].Outer; left = true; }  // a placement left by an exception ends with it
+                spare.Push(running[k]);
+            }
             running.RemoveRange(at, running.Count - at);
             var kind = kinds[id];
             var answer = refs == null ? Json(result) : Json(refs);
             if (kind[0] == 'p')
             {
                 if (kind[1] == 'f') step = -1;
-                Write(id, "exit", null, answer, transition, null);
+                Write(id, Ev.Exit, null, answer, transition, null);
             }
             else if (frame.Mover != null)
-                Write(id, "exit", null, answer, null, frame.Mover);
+                Write(id, Ev.Exit, null, answer, null, frame.Mover);
             else
-                Write(id, "call", frame.Args, answer, null, null);
+                Write(id, Ev.Call, frame.Args, answer, null, null);
             if (frame.Places) placing = frame.Outer;
+            spare.Push(frame);
         }
 
-        // The snapshots are taken first, into builders of their own: a getter they read may be an instrumented method,
-        // whose records go before this one (and must not land inside it).
-        void Write(int id, string ev, string args, string result, Transition path, PhysicsObj mover)
+        // The snapshots are taken first, each into a token buffer of its own depth: a getter they read may be an
+        // instrumented method, whose records go before this one (and must not land inside it).
+        void Write(int id, Ev ev, string args, string result, Transition path, PhysicsObj mover)
         {
-            string pathText = null, moverText = null;
+            int pathRef = -1, moverRef = -1;
             if (path != null)
             {
-                var b = Borrow();
-                try { if (Path(b, path)) pathText = b.ToString(); } finally { depth--; }
+                var t = BorrowTokens();
+                try { if (Path(t, path)) pathRef = paths.Find(t, sb); } finally { tokenDepth--; }
             }
             if (mover != null)
             {
-                var b = Borrow();
-                try { Mover(b, mover); moverText = b.ToString(); } finally { depth--; }
+                var t = BorrowTokens();
+                try { Mover(t, mover); moverRef = movers.Find(t, sb); } finally { tokenDepth--; }
             }
             var within = Top;
-            sb.Append('[').Append(id).Append(",\"").Append(ev).Append("\",").Append(tick).Append(',').Append(step).Append(',')
-              .Append(within != null ? within.Id : -1).Append(',').Append(args ?? "null").Append(',').Append(result ?? "null")
-              .Append(',').Append(pathText ?? "null").Append(',').Append(moverText ?? "null").Append(',').Append(placing).Append("]\n");
+            var key = id * Events.Length + (int)ev;  // "[id,\"event\"," made once per anchor and event
+            if (key >= prefixes.Length) Array.Resize(ref prefixes, Math.Max(key + 1, prefixes.Length * 2));
+            var prefix = key >= 0 ? prefixes[key] : null;
+            if (prefix == null)
+            {
+                prefix = "[" + id.ToString(CultureInfo.InvariantCulture) + ",\"" + Events[(int)ev] + "\",";
+                if (key >= 0) prefixes[key] = prefix;
+            }
+            sb.Append(prefix);
+            N(sb, tick).Append(',');
+            N(sb, step).Append(',');
+            N(sb, within != null ? within.Id : -1).Append(',').Append(args ?? "null").Append(',').Append(result ?? "null").Append(',');
+            if (pathRef >= 0) N(sb, pathRef); else sb.Append("null");
+            sb.Append(',');
+            if (moverRef >= 0) N(sb, moverRef); else sb.Append("null");
+            sb.Append(',');
+            N(sb, placing).Append("]\n");
             Records++;
             if (!keep && sb.Length > Dropped) sb.Clear();
         }
 
         // ------------------------------------------------------------------ snapshots
-        /// <summary>acconform.trace.PathState's fields, in order, appended to s; false (nothing written) when the
-        /// transition has no path yet.</summary>
-        static bool Path(StringBuilder s, Transition t)
+        // A trace's tens of thousands of snapshots (a path at every entry and exit) are a few hundred distinct ones. A
+        // snapshot is read as tokens (a kind and its raw bits) and looked up among the run's snapshots by value; a new
+        // one is formatted once, into a definition line ("#p " or "#m " and its JSON) before the first record that
+        // refers to it by its index. Formatting every snapshot was most of the recorder's cost.
+        const byte TOpen = 1, TClose = 2, TFloat = 3, TDouble = 4, TUint = 5, TInt = 6, TBool = 7, TNull = 8;
+
+        sealed class Tokens
+        {
+            public long[] V = new long[96];
+            public byte[] K = new byte[96];
+            public int N;
+
+            public Tokens Add(byte kind, long value)
+            {
+                if (N == V.Length) { Array.Resize(ref V, N * 2); Array.Resize(ref K, N * 2); }
+                K[N] = kind;
+                V[N++] = value;
+                return this;
+            }
+
+            public Tokens Open() => Add(TOpen, 0);
+            public Tokens Close() => Add(TClose, 0);
+            public Tokens F(float f) => Add(TFloat, new Bits { F = f }.I);
+            public Tokens D(double d) => Add(TDouble, new Bits { D = d }.L);
+            public Tokens U(uint u) => Add(TUint, u);
+            public Tokens I(int i) => Add(TInt, i);
+            public Tokens B(bool b) => Add(TBool, b ? 1 : 0);
+            public Tokens V3(Vector3 v) => Open().F(v.X).F(v.Y).F(v.Z).Close();
+        }
+
+        /// <summary>One kind's snapshots of the run, by value; `Find` gives a snapshot's index, defining it first.</summary>
+        sealed class Snapshots
+        {
+            readonly string prefix;
+            readonly Dictionary<long, int> first = new Dictionary<long, int>();  // by hash: the first snapshot with it
+            readonly List<long[]> values = new List<long[]>();
+            readonly List<byte[]> kinds = new List<byte[]>();
+            readonly List<int> next = new List<int>();  // the next snapshot with the same hash, -1 for none
+
+            public Snapshots(string prefix) { this.prefix = prefix; }
+
+            public void Clear() { first.Clear(); values.Clear(); kinds.Clear(); next.Clear(); }
+
+            public int Find(Tokens t, StringBuilder sb)
+            {
+                long h = t.N;
+                for (var i = 0; i < t.N; i++) h = (h ^ t.V[i] ^ ((long)t.K[i] << 56)) * 0x100000001b3L;
+                int at, last = -1;
+                if (first.TryGetValue(h, out at))
+                    for (; at >= 0; last = at, at = next[at])
+                        if (Same(values[at], kinds[at], t)) return at;
+                var v = new long[t.N];
+                var k = new byte[t.N];
+                Array.Copy(t.V, v, t.N);
+                Array.Copy(t.K, k, t.N);
+                var index = values.Count;
+                values.Add(v);
+                kinds.Add(k);
+                next.Add(-1);
+                if (last >= 0) next[last] = index; else first[h] = index;
+                sb.Append(prefix);
+                Format(sb, t);
+                sb.Append('\n');
+                return index;
+            }
+
+            static bool Same(long[] v, byte[] k, Tokens t)
+            {
+                if (v.Length != t.N) return false;
+                for (var i = 0; i < v.Length; i++)
+                    if (v[i] != t.V[i] || k[i] != t.K[i]) return false;
+                return true;
+            }
+        }
+
+        readonly Snapshots paths = new Snapshots("#p "), movers = new Snapshots("#m ");
+        readonly List<Tokens> tokenBuffers = new List<Tokens>();
+        int tokenDepth;
+
+        Tokens BorrowTokens()
+        {
+            if (tokenDepth == tokenBuffers.Count) tokenBuffers.Add(new Tokens());
+            var t = tokenBuffers[tokenDepth++];
+            t.N = 0;
+            return t;
+        }
+
+        /// <summary>Tokens as JSON: the text the snapshot functions wrote before they wrote tokens.</summary>
+        static void Format(StringBuilder s, Tokens t)
+        {
+            var first = true;
+            for (var i = 0; i < t.N; i++)
+            {
+                var kind = t.K[i];
+                if (kind == TClose) { s.Append(']'); first = false; continue; }
+                if (!first) s.Append(',');
+                first = false;
+                switch (kind)
+                {
+                    case TOpen: s.Append('['); first = true; break;
+                    case TFloat: F(s, new Bits { I = (int)t.V[i] }.F); break;
+                    case TDouble: D(s, new Bits { L = t.V[i] }.D); break;
+                    case TUint: N(s, (uint)t.V[i]); break;
+                    case TInt: N(s, (int)t.V[i]); break;
+                    case TBool: s.Append(t.V[i] != 0 ? "true" : "false"); break;
+                    default: s.Append("null"); break;
+                }
+            }
+        }
+
+        /// <summary>acconform.trace.PathState's fields, in order; false (nothing written) when the transition has no
+        /// path yet.</summary>
+        static bool Path(Tokens s, Transition t)
         {
             if (t == null || t.SpherePath == null || t.CollisionInfo == null) return false;
             var sp = t.SpherePath;
             var ci = t.CollisionInfo;
-            s.Append('[').Append(sp.CheckCell != null ? sp.CheckCell.ID : 0u).Append(',');
-            V(s, sp.CheckPos != null ? sp.CheckPos.Frame.Origin : Vector3.Zero).Append(',');
-            s.Append(sp.CurCell != null ? sp.CurCell.ID : 0u).Append(',');
-            V(s, sp.CurPos != null ? sp.CurPos.Frame.Origin : Vector3.Zero).Append(',');
-            V(s, sp.GlobalOffset).Append(',');
-            Contact(s, ci.ContactPlaneValid, ci.ContactPlaneCellID, ci.ContactPlaneIsWater, ci.ContactPlane).Append(',');
+            s.Open().U(sp.CheckCell != null ? sp.CheckCell.ID : 0u).V3(sp.CheckPos != null ? sp.CheckPos.Frame.Origin : Vector3.Zero)
+             .U(sp.CurCell != null ? sp.CurCell.ID : 0u).V3(sp.CurPos != null ? sp.CurPos.Frame.Origin : Vector3.Zero)
+             .V3(sp.GlobalOffset);
+            Contact(s, ci.ContactPlaneValid, ci.ContactPlaneCellID, ci.ContactPlaneIsWater, ci.ContactPlane);
             Contact(s, ci.LastKnownContactPlaneValid, ci.LastKnownContactPlaneCellID, ci.LastKnownContactPlaneIsWater,
-                    ci.LastKnownContactPlane).Append(',');
-            s.Append('[').Append(B(ci.CollisionNormalValid)).Append(','); V(s, ci.CollisionNormal).Append("],");
-            s.Append('[').Append(B(ci.SlidingNormalValid)).Append(','); V(s, ci.SlidingNormal).Append("],");
-            if (sp.Walkable != null) { s.Append('['); V(s, sp.Walkable.Plane.Normal).Append(','); F(s, sp.Walkable.Plane.D).Append("],"); }
-            else s.Append("null,");
-            s.Append(B(sp.StepUp)).Append(',').Append(B(sp.StepDown)).Append(',').Append(B(sp.Collide)).Append(',')
-             .Append(B(sp.NegPolyHit)).Append(',').Append(ci.FramesStationaryFall).Append(',')
-             .Append(t.ObjectInfo != null ? (uint)t.ObjectInfo.State : 0u).Append(',')
-             .Append(B(sp.PlacementAllowsSliding)).Append(',').Append(B(sp.BuildingCheck)).Append(',')
-             .Append(B(sp.HitsInteriorCell)).Append(']');
+                    ci.LastKnownContactPlane);
+            s.Open().B(ci.CollisionNormalValid).V3(ci.CollisionNormal).Close();
+            s.Open().B(ci.SlidingNormalValid).V3(ci.SlidingNormal).Close();
+            if (sp.Walkable != null) s.Open().V3(sp.Walkable.Plane.Normal).F(sp.Walkable.Plane.D).Close();
+            else s.Add(TNull, 0);
+            s.B(sp.StepUp).B(sp.StepDown).B(sp.Collide).B(sp.NegPolyHit).I(ci.FramesStationaryFall)
+             .U(t.ObjectInfo != null ? (uint)t.ObjectInfo.State : 0u)
+             .B(sp.PlacementAllowsSliding).B(sp.BuildingCheck).B(sp.HitsInteriorCell).Close();
             return true;
         }
 
-        static StringBuilder Contact(StringBuilder s, bool valid, uint cell, bool water, Plane plane)
+        static void Contact(Tokens s, bool valid, uint cell, bool water, Plane plane)
         {
-            s.Append('[').Append(B(valid)).Append(',').Append(cell).Append(',').Append(B(water)).Append(',');
-            V(s, plane.Normal).Append(',');
-            return F(s, plane.D).Append(']');
+            s.Open().B(valid).U(cell).B(water).V3(plane.Normal).F(plane.D).Close();
         }
 
         /// <summary>acconform.outcome.TickState's fields, in order (`updated` false, as tracing.tick_state(obj, False)).</summary>
-        static void Mover(StringBuilder s, PhysicsObj obj)
+        static void Mover(Tokens s, PhysicsObj obj)
         {
-            s.Append("[false,");
-            D(s, obj.UpdateTime).Append(',').Append(obj.Position.ObjCellID).Append(',').Append(obj.CurCell != null ? obj.CurCell.ID : 0u).Append(',');
-            V(s, obj.Position.Frame.Origin).Append(',');
             var q = obj.Position.Frame.Orientation;
-            s.Append('['); F(s, q.W).Append(','); F(s, q.X).Append(','); F(s, q.Y).Append(','); F(s, q.Z).Append("],");
-            V(s, obj.Velocity).Append(','); V(s, obj.Acceleration).Append(','); V(s, obj.Omega).Append(',');
-            V(s, obj.CachedVelocity).Append(',');
-            s.Append((uint)obj.State).Append(',').Append((uint)obj.TransientState).Append(',').Append(obj.ContactPlaneCellID).Append(',');
-            s.Append('['); V(s, obj.ContactPlane.Normal).Append(','); F(s, obj.ContactPlane.D).Append("],");
-            V(s, obj.SlidingNormal).Append(',').Append(B(obj.JumpedThisFrame)).Append(",[");
-            var first = true;
+            s.Open().B(false).D(obj.UpdateTime).U(obj.Position.ObjCellID).U(obj.CurCell != null ? obj.CurCell.ID : 0u)
+             .V3(obj.Position.Frame.Origin).Open().F(q.W).F(q.X).F(q.Y).F(q.Z).Close()
+             .V3(obj.Velocity).V3(obj.Acceleration).V3(obj.Omega).V3(obj.CachedVelocity)
+             .U((uint)obj.State).U((uint)obj.TransientState).U(obj.ContactPlaneCellID)
+             .Open().V3(obj.ContactPlane.Normal).F(obj.ContactPlane.D).Close()
+             .V3(obj.SlidingNormal).B(obj.JumpedThisFrame).Open();
             if (obj.ShadowObjects != null)
-                foreach (var id in obj.ShadowObjects.Keys) { if (!first) s.Append(','); s.Append(id); first = false; }
-            s.Append("]]");
+                foreach (var id in obj.ShadowObjects.Keys) s.U(id);
+            s.Close().Close();
         }
 
         // ------------------------------------------------------------------ values, as port/tracing.plain writes them
@@ -302,79 +441,145 @@ namespace Acconform.Oracle
             try { Plain(b, v, 0); return b.ToString(); } finally { depth--; }
         }
 
+        // what Plain writes a value of a type as, found once a type (the type tests in port/tracing.plain's order)
+        enum Shape : byte { Bool, String, Enum, Float, Double, SByte, Byte, Short, UShort, Int, UInt, Long, ULong, Quaternion,
+                            Vector3, Vector2, Sphere, Plane, AFrame, BBox, Position, List, Other }
+
+        readonly Dictionary<Type, Shape> shapes = new Dictionary<Type, Shape>();
+        readonly Dictionary<Type, string> typeNames = new Dictionary<Type, string>();  // an object with no ID, as JSON
+
+        static Shape ShapeOf(object v)
+        {
+            if (v is bool) return Shape.Bool;
+            if (v is string) return Shape.String;
+            if (v is Enum) return Shape.Enum;
+            if (v is float) return Shape.Float;
+            if (v is double) return Shape.Double;
+            if (v is sbyte) return Shape.SByte;
+            if (v is byte) return Shape.Byte;
+            if (v is short) return Shape.Short;
+            if (v is ushort) return Shape.UShort;
+            if (v is int) return Shape.Int;
+            if (v is uint) return Shape.UInt;
+            if (v is long) return Shape.Long;
+            if (v is ulong) return Shape.ULong;
+            if (v is Quaternion) return Shape.Quaternion;
+            if (v is Vector3) return Shape.Vector3;
+            if (v is Vector2) return Shape.Vector2;
+            if (v is Sphere) return Shape.Sphere;
+            if (v is Plane) return Shape.Plane;
+            if (v is AFrame) return Shape.AFrame;
+            if (v is BBox) return Shape.BBox;
+            if (v is Position) return Shape.Position;
+            if (v is IList) return Shape.List;
+            return Shape.Other;
+        }
+
         void Plain(StringBuilder s, object v, int depth)
         {
             // (if and casts, not a type switch: mono's mcs does not parse type patterns)
             if (v == null) { s.Append("null"); return; }
-            if (v is bool) { s.Append(B((bool)v)); return; }
-            if (v is string) { Str(s, (string)v); return; }
-            if (v is Enum) { s.Append(Convert.ToInt64(v, CultureInfo.InvariantCulture)); return; }
-            if (v is float) { F(s, (float)v); return; }
-            if (v is double) { D(s, (double)v); return; }
-            if (v is int || v is uint || v is short || v is ushort || v is byte || v is sbyte || v is long || v is ulong)
+            var type = v.GetType();
+            Shape shape;
+            if (!shapes.TryGetValue(type, out shape)) shapes[type] = shape = ShapeOf(v);
+            switch (shape)
             {
-                s.Append(Convert.ToString(v, CultureInfo.InvariantCulture));
-                return;
-            }
-            if (v is Quaternion)
-            {
-                var q = (Quaternion)v;
-                s.Append('['); F(s, q.W).Append(','); F(s, q.X).Append(','); F(s, q.Y).Append(','); F(s, q.Z).Append(']');
-                return;
-            }
-            if (v is Vector3) { V(s, (Vector3)v); return; }
-            if (v is Vector2) { var w = (Vector2)v; s.Append('['); F(s, w.X).Append(','); F(s, w.Y).Append(']'); return; }
-            var sph = v as Sphere;
-            if (sph != null)
-            {
-                s.Append('['); F(s, sph.Center.X).Append(','); F(s, sph.Center.Y).Append(','); F(s, sph.Center.Z).Append(',');
-                F(s, sph.Radius).Append(']');
-                return;
-            }
-            if (v is Plane)
-            {
-                var p = (Plane)v;
-                s.Append('['); F(s, p.Normal.X).Append(','); F(s, p.Normal.Y).Append(','); F(s, p.Normal.Z).Append(','); F(s, p.D).Append(']');
-                return;
-            }
-            var fr = v as AFrame;
-            if (fr != null)
-            {
-                s.Append('['); F(s, fr.Origin.X).Append(','); F(s, fr.Origin.Y).Append(','); F(s, fr.Origin.Z).Append(',');
-                F(s, fr.Orientation.W).Append(','); F(s, fr.Orientation.X).Append(','); F(s, fr.Orientation.Y).Append(',');
-                F(s, fr.Orientation.Z).Append(']');
-                return;
-            }
-            var box = v as BBox;
-            if (box != null)
-            {
-                s.Append('['); F(s, box.Min.X).Append(','); F(s, box.Min.Y).Append(','); F(s, box.Min.Z).Append(',');
-                F(s, box.Max.X).Append(','); F(s, box.Max.Y).Append(','); F(s, box.Max.Z).Append(']');
-                return;
-            }
-            var pos = v as Position;
-            if (pos != null)
-            {
-                s.Append('[').Append(pos.ObjCellID).Append(','); F(s, pos.Frame.Origin.X).Append(','); F(s, pos.Frame.Origin.Y)
-                 .Append(','); F(s, pos.Frame.Origin.Z).Append(']');
-                return;
-            }
-            var list = v as IList;
-            if (list != null)
-            {
-                if (depth >= 3) { s.Append('"').Append(list.Count).Append(" items\""); return; }
-                s.Append('[');
-                for (var k = 0; k < list.Count && k < 16; k++)
+                case Shape.Bool: s.Append(B((bool)v)); return;
+                case Shape.String: Str(s, (string)v); return;
+                case Shape.Enum: N(s, Convert.ToInt64(v, CultureInfo.InvariantCulture)); return;
+                case Shape.Float: F(s, (float)v); return;
+                case Shape.Double: D(s, (double)v); return;
+                case Shape.SByte: N(s, (sbyte)v); return;
+                case Shape.Byte: N(s, (byte)v); return;
+                case Shape.Short: N(s, (short)v); return;
+                case Shape.UShort: N(s, (ushort)v); return;
+                case Shape.Int: N(s, (int)v); return;
+                case Shape.UInt: N(s, (uint)v); return;
+                case Shape.Long: N(s, (long)v); return;
+                case Shape.ULong: s.Append(((ulong)v).ToString(CultureInfo.InvariantCulture)); return;
+                case Shape.Quaternion:
                 {
-                    if (k > 0) s.Append(',');
-                    Plain(s, list[k], depth + 1);
+                    var q = (Quaternion)v;
+                    s.Append('['); F(s, q.W).Append(','); F(s, q.X).Append(','); F(s, q.Y).Append(','); F(s, q.Z).Append(']');
+                    return;
                 }
-                s.Append(']');
-                return;
+                case Shape.Vector3: V(s, (Vector3)v); return;
+                case Shape.Vector2: { var w = (Vector2)v; s.Append('['); F(s, w.X).Append(','); F(s, w.Y).Append(']'); return; }
+                case Shape.Sphere:
+                {
+                    var sph = (Sphere)v;
+                    s.Append('['); F(s, sph.Center.X).Append(','); F(s, sph.Center.Y).Append(','); F(s, sph.Center.Z).Append(',');
+                    F(s, sph.Radius).Append(']');
+                    return;
+                }
+                case Shape.Plane:
+                {
+                    var p = (Plane)v;
+                    s.Append('['); F(s, p.Normal.X).Append(','); F(s, p.Normal.Y).Append(','); F(s, p.Normal.Z).Append(','); F(s, p.D).Append(']');
+                    return;
+                }
+                case Shape.AFrame:
+                {
+                    var fr = (AFrame)v;
+                    s.Append('['); F(s, fr.Origin.X).Append(','); F(s, fr.Origin.Y).Append(','); F(s, fr.Origin.Z).Append(',');
+                    F(s, fr.Orientation.W).Append(','); F(s, fr.Orientation.X).Append(','); F(s, fr.Orientation.Y).Append(',');
+                    F(s, fr.Orientation.Z).Append(']');
+                    return;
+                }
+                case Shape.BBox:
+                {
+                    var box = (BBox)v;
+                    s.Append('['); F(s, box.Min.X).Append(','); F(s, box.Min.Y).Append(','); F(s, box.Min.Z).Append(',');
+                    F(s, box.Max.X).Append(','); F(s, box.Max.Y).Append(','); F(s, box.Max.Z).Append(']');
+                    return;
+                }
+                case Shape.Position:
+                {
+                    var pos = (Position)v;
+                    s.Append('[');
+                    N(s, pos.ObjCellID).Append(','); F(s, pos.Frame.Origin.X).Append(','); F(s, pos.Frame.Origin.Y)
+                     .Append(','); F(s, pos.Frame.Origin.Z).Append(']');
+                    return;
+                }
+                case Shape.List:
+                {
+                    var list = (IList)v;
+                    if (depth >= 3) { s.Append('"'); N(s, list.Count).Append(" items\""); return; }
+                    s.Append('[');
+                    for (var k = 0; k < list.Count && k < 16; k++)
+                    {
+                        if (k > 0) s.Append(',');
+                        Plain(s, list[k], depth + 1);
+                    }
+                    s.Append(']');
+                    return;
+                }
             }
             var id = IdOf(v);
             if (id != null) { Plain(s, id, depth + 1); return; }
-            Str(s, v.GetType().Name);
+            string name;
+            if (!typeNames.TryGetValue(type, out name))
+            {
+                var b = new StringBuilder();
+                Str(b, type.Name);
+                typeNames[type] = name = b.ToString();
+            }
+            s.Append(name);
+        }
+
+        /// <summary>An integer's digits, appended without a string made of them (mono's Append(int) makes one, with the
+        /// current culture's lookup, for every number of every record).</summary>
+        static readonly char[] digits = new char[20];  // (the recorder runs on one thread)
+
+        static StringBuilder N(StringBuilder s, long n)
+        {
+            if (n >= 0 && n < 10) return s.Append((char)('0' + n));
+            var neg = n < 0;
+            var u = neg ? (ulong)(-(n + 1)) + 1 : (ulong)n;
+            var at = digits.Length;
+            do { digits[--at] = (char)('0' + (int)(u % 10)); u /= 10; } while (u != 0);
+            if (neg) s.Append('-');
+            return s.Append(digits, at, digits.Length - at);
         }
 
         /// <summary>A cell or object by its ID, a polygon by its PolyID, a BSP leaf by its LeafIdx, a BSP node by its
@@ -393,8 +598,11 @@ namespace Acconform.Oracle
                     var ft = f != null ? f.FieldType : p?.PropertyType;
                     if (ft == null) continue;
                     if (name != "SplittingPlane" && !(ft == typeof(uint) || ft == typeof(int) || ft == typeof(ushort) || ft == typeof(short))) continue;
-                    if (f != null) get = o => f.GetValue(o);
-                    else get = o => p.GetValue(o, null);
+                    // compiled, not reflection's GetValue: mono's costs a microsecond, on most arguments of most calls
+                    var o = Expression.Parameter(typeof(object), "o");
+                    var typed = Expression.Convert(o, type);
+                    var member = f != null ? Expression.Field(typed, f) : Expression.Property(typed, p);
+                    get = Expression.Lambda<Func<object, object>>(Expression.Convert(member, typeof(object)), o).Compile();
                     break;
                 }
                 idOf[type] = get;

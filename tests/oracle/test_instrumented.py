@@ -47,6 +47,30 @@ def test_an_instrumented_ace_answers_each_scene_of_a_corpus_sample_exactly_as_th
     assert {"ticks", "terrain", "obstacles"} <= kinds
 
 
+def test_aces_trace_of_a_scene_is_the_same_first_in_a_fresh_worker_as_after_other_scenes(live, sample):
+    """A trace is a function of the scene alone: ACE's type initializers (ObjCell.EmptyCell's `new ObjCell()`,
+    PhysicsGlobals.DummySphere's Sphere) run once a process, wherever its JIT first needs them, and write no record.
+    Outside a tick scene the mover's clock is the wall clock (compared as 0)."""
+    from dataclasses import replace
+
+    from acconform.oracle.instrumented import TracedAce
+
+    def steady(records):
+        return [r if r.mover is None or r.tick is not None else replace(r, mover=replace(r.mover, update_time=0.0))
+                for r in records]
+
+    scenes = sample[:4]
+    for order in (scenes, scenes[::-1]):
+        fresh = TracedAce(live.location.assembly, live.location.runtime, say=None)
+        try:
+            first = [steady(fresh.trace(scene)[1]) for scene in order]
+            again = [steady(fresh.trace(scene)[1]) for scene in order[::-1]][::-1]
+        finally:
+            fresh.close()
+        for scene, a, b in zip(order, first, again):
+            assert a == b, f"{scene_kind(scene)}: {len(a)} records first, {len(b)} after the others"
+
+
 def test_aces_own_trace_and_the_ports_agree_on_the_sample_at_the_grain_both_write(live, traced, sample):
     """Buildings too: a landblock with buildings is built, its buildings placed, before the run on both sides (the
     facade's BuildScene, the port's LScape), and the EnvCells behind a building's portal load in the same order."""

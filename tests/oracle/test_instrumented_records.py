@@ -25,6 +25,11 @@ def line(*fields):
     return json.dumps(list(fields))
 
 
+def defined(kind: str, snapshot) -> str:
+    """The recorder's definition of a snapshot ("#p" a path, "#m" a mover), which records then name by its index."""
+    return f"#{kind} " + json.dumps(snapshot) + "\n"
+
+
 def path(**kw) -> PathState:
     base = PathState(1, (0.0, 0.0, 0.0), 1, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), ContactPlaneState(), ContactPlaneState(),
                      NormalState(), NormalState(), None, False, False, False, False, 0, 0)
@@ -32,7 +37,7 @@ def path(**kw) -> PathState:
 
 
 def test_a_recorder_line_becomes_the_record_the_port_writes_with_its_transition_snapshot():
-    text = line(2, "enter", -1, 1, 0, [0, [0.5, -0.0, 1.0]], None, PATH, None, -1) + "\n"
+    text = defined("p", PATH) + line(2, "enter", -1, 1, 0, [0, [0.5, -0.0, 1.0]], None, 0, None, -1) + "\n"
     (r,) = records_from(text, IDS)
     assert (r.anchor, r.event, r.tick, r.step, r.within) == ("Transition.cs:CliffSlide", "enter", None, 1, FTP)
     assert r.args == [0, [0.5, -0.0, 1.0]] and str(r.args[1][1]) == "-0.0"
@@ -43,14 +48,24 @@ def test_a_recorder_line_becomes_the_record_the_port_writes_with_its_transition_
 
 
 def test_a_step_record_is_named_after_find_transitional_position_whatever_method_opened_it():
-    (r,) = records_from(line(1, "step", -1, 0, 0, None, None, PATH, None, -1), IDS)
+    (r,) = records_from(defined("p", PATH) + line(1, "step", -1, 0, 0, None, None, 0, None, -1), IDS)
     assert (r.anchor, r.event, r.step) == (FTP, "step", 0)
 
 
 def test_a_mover_routine_carries_the_mover_as_a_tick_state():
-    (r,) = records_from(line(3, "enter", 0, -1, -1, [0x50000001], None, None, MOVER, -1), IDS)
+    (r,) = records_from(defined("m", MOVER) + line(3, "enter", 0, -1, -1, [0x50000001], None, None, 0, -1), IDS)
     assert isinstance(r.mover, TickState) and r.mover.acceleration == (0.0, 0.0, -9.8)
     assert r.mover.shadow_cells == (0x0A240008,) and r.within is None
+
+
+def test_records_name_each_snapshot_by_its_index_among_the_definitions_of_its_kind():
+    other = [0x0A240009] + PATH[1:]
+    text = (defined("p", PATH) + defined("m", MOVER) + line(2, "enter", -1, -1, -1, [], None, 0, None, -1) + "\n"
+            + defined("p", other) + line(2, "exit", -1, -1, -1, None, None, 1, None, -1) + "\n"
+            + line(3, "exit", -1, -1, -1, None, None, None, 0, -1) + "\n" + line(2, "enter", -1, -1, -1, [], None, 0, None, -1))
+    a, b, c, d = records_from(text, IDS)
+    assert (a.path.check_cell, b.path.check_cell, d.path) == (0x0A240008, 0x0A240009, a.path)
+    assert c.mover.cell == 0x0A240008 and c.path is None
 
 
 def test_a_record_written_while_a_static_is_placed_carries_the_statics_id():
