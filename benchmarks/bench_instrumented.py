@@ -93,11 +93,11 @@ def main() -> int:
     print(f"{runtime}: {len(scenes)} scenes ({', '.join(sorted({scene_kind(s) for s in scenes}))}), best of {args.repeat}, "
           f"{records / len(scenes):.0f} records a scene")
     ms["handed"] = ms["trace"] - ms["read"]
-    print(f"{'run':<42} {'ms/scene':>9} {'x plain':>8}")
+    print(f"{'run':<46} {'ms/scene':>9} {'x plain':>8}")
     for k, label in (("plain", "plain ACE"), ("run", "instrumented, recorder off"),
                      ("count", "instrumented, recorder on (count)"), ("handed", "instrumented, traced (the trace handed over)"),
                      ("read", "reading it into trace records (Python)"), ("trace", "traced and read (what explain pays)")):
-        print(f"{label:<42} {ms[k]:>9.1f} {ms[k] / ms['plain']:>7.1f}x")
+        print(f"{label:<46} {ms[k]:>9.1f} {ms[k] / ms['plain']:>7.1f}x")
     return 0
 
 
