@@ -115,6 +115,7 @@ class Ledger:
             tmp.write_text(json.dumps(doc, separators=(",", ":")) + "\n")
             tmp.replace(self.path)
 
+
 def status(ledger: Ledger, prefix: str, entries, corpus_dir: Path) -> tuple[int, int, int]:
     """Print the verified share of each shard of the corpus, and the totals; -> (verified, differ, scenes)."""
     total: dict[Path, int] = {}
